@@ -1,0 +1,203 @@
+//! `axcheck eval`: the parameters of one measurement file and its per-target table.
+
+use super::text::{left, right};
+use axcheck::evaluate::{Evaluation, StandardId};
+use axcheck::units::{Direction, fmt_fixed, fmt_position};
+use std::fmt::Write;
+
+/// Targets per block of the per-target table (keeps lines under 90 columns).
+const TARGETS_PER_BLOCK: usize = 5;
+const LABEL: usize = 14;
+const CELL: usize = 7;
+
+/// The report printed by `axcheck eval`.
+pub fn render(file: &str, e: &Evaluation) -> String {
+    let mut out = String::new();
+    let unit = e.kind.deviation_symbol();
+    let pos = e.kind.position_symbol();
+    let (first, last) = (
+        e.targets[0].position,
+        e.targets[e.targets.len() - 1].position,
+    );
+    let _ = writeln!(out, "{file}");
+    let _ = writeln!(
+        out,
+        "{} · {} axis · {} targets {} … {} {pos} · n = {} per direction · coverage factor {}",
+        e.standard.title(),
+        e.kind,
+        e.targets.len(),
+        fmt_position(first),
+        fmt_position(last),
+        e.n,
+        e.coverage_factor
+    );
+    let _ = writeln!(out, "\nAxis parameters");
+    let lines: Vec<(String, String, String)> = e
+        .parameters
+        .iter()
+        .map(|p| {
+            let head = format!("{} = {} {unit}", p.label, fmt_fixed(p.value, 2));
+            let mut where_ = String::new();
+            if let Some(i) = p.at_target {
+                where_ = format!(
+                    "at i = {} ({} {pos})",
+                    i + 1,
+                    fmt_position(e.targets[i].position)
+                );
+            } else if let Some((hi, lo)) = p.span {
+                where_ = format!("{} − ({})", fmt_fixed(hi, 2), fmt_fixed(lo, 2));
+            }
+            (head, format!("{} [{}]", p.name, p.clause), where_)
+        })
+        .collect();
+    let w_head = lines
+        .iter()
+        .map(|l| super::text::width(&l.0))
+        .max()
+        .unwrap_or(0);
+    let w_name = lines
+        .iter()
+        .map(|l| super::text::width(&l.1))
+        .max()
+        .unwrap_or(0);
+    for (head, name, where_) in &lines {
+        let _ = writeln!(
+            out,
+            "  {}  {}  {}",
+            left(head, w_head),
+            left(name, w_name),
+            where_
+        )
+        .map(|_| ());
+    }
+    let missing = not_applicable(e);
+    if !missing.is_empty() {
+        let _ = writeln!(out, "  not applicable: {}", missing.join(", "));
+    }
+    for note in &e.notes {
+        let _ = writeln!(out, "  note: {note}");
+    }
+    let _ = writeln!(
+        out,
+        "\nPer-target results ({unit}), in the layout of ISO 230-2 Table 2"
+    );
+    for block in (0..e.targets.len())
+        .collect::<Vec<_>>()
+        .chunks(TARGETS_PER_BLOCK)
+    {
+        out.push('\n');
+        table_block(&mut out, e, block);
+    }
+    out
+}
+
+/// Symbols of the standard's parameters that this result leaves out (n = 1).
+fn not_applicable(e: &Evaluation) -> Vec<&'static str> {
+    let all: &[&str] = match e.standard {
+        StandardId::Iso230_2 | StandardId::Gbt17421_2 => &[
+            "A", "A↑", "A↓", "E", "E↑", "E↓", "M", "R", "R↑", "R↓", "B", "B̄",
+        ],
+        StandardId::Gost27843 => &["A", "A↑", "A↓", "R_max", "R↑", "R↓", "R̄", "B_max", "B̄"],
+        _ => &[],
+    };
+    all.iter()
+        .copied()
+        .filter(|label| !e.parameters.iter().any(|p| p.label == *label))
+        .collect()
+}
+
+fn table_block(out: &mut String, e: &Evaluation, block: &[usize]) {
+    let k = e.coverage_factor;
+    let s_name = match e.standard {
+        StandardId::Vdi3441 | StandardId::Nmtba => "σ",
+        _ => "S",
+    };
+    let pair = 2 * CELL + 1;
+    let mut row = |label: &str, cells: Vec<String>| {
+        let mut line = left(label, LABEL);
+        for c in cells {
+            line.push(' ');
+            line.push_str(&c);
+        }
+        let _ = writeln!(out, "{}", line.trim_end());
+    };
+    row(
+        "i",
+        block
+            .iter()
+            .map(|&i| right(&(i + 1).to_string(), pair))
+            .collect(),
+    );
+    row(
+        &format!("P_i / {}", e.kind.position_symbol()),
+        block
+            .iter()
+            .map(|&i| right(&fmt_position(e.targets[i].position), pair))
+            .collect(),
+    );
+    let both = |f: &dyn Fn(&axcheck::evaluate::DirectionResult) -> Option<f64>| -> Vec<String> {
+        block
+            .iter()
+            .map(|&i| {
+                let t = &e.targets[i];
+                Direction::BOTH
+                    .iter()
+                    .map(|&d| {
+                        right(
+                            &f(t.direction(d)).map_or("–".into(), |v| fmt_fixed(v, 2)),
+                            CELL,
+                        )
+                    })
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            })
+            .collect()
+    };
+    row(
+        "direction",
+        block
+            .iter()
+            .map(|_| format!("{} {}", right("↑", CELL), right("↓", CELL)))
+            .collect(),
+    );
+    for j in 0..e.n {
+        row(
+            &format!("j = {}", j + 1),
+            both(&|d| d.deviations.get(j).copied()),
+        );
+    }
+    row("X̄i↑, X̄i↓", both(&|d| Some(d.mean)));
+    if e.n > 1 {
+        row(&format!("{s_name}i"), both(&|d| d.s));
+        row(&format!("{k}{s_name}i"), both(&|d| d.s.map(|s| k * s)));
+        row(&format!("X̄i + {k}{s_name}i"), both(&|d| d.upper));
+        row(&format!("X̄i − {k}{s_name}i"), both(&|d| d.lower));
+        row(
+            &format!("Ri↑↓ = {}{s_name}", 2.0 * k),
+            both(&|d| d.repeatability),
+        );
+    }
+    let single = |f: &dyn Fn(&axcheck::evaluate::TargetResult) -> Option<f64>| -> Vec<String> {
+        block
+            .iter()
+            .map(|&i| {
+                right(
+                    &f(&e.targets[i]).map_or("–".into(), |v| fmt_fixed(v, 2)),
+                    pair,
+                )
+            })
+            .collect()
+    };
+    row("Bi", single(&|t| Some(t.reversal)));
+    if e.targets.iter().any(|t| t.repeatability.is_some()) {
+        row("Ri", single(&|t| t.repeatability));
+    }
+    row("X̄i", single(&|t| Some(t.mean)));
+    let extras: Vec<&'static str> = e.targets[0].extra.iter().map(|(k, _)| *k).collect();
+    for key in extras {
+        row(
+            key,
+            single(&|t| t.extra.iter().find(|(k, _)| *k == key).map(|(_, v)| *v)),
+        );
+    }
+}

@@ -1,0 +1,5 @@
+//! Command-line front end: parses arguments, calls the library, prints results.
+
+pub mod eval;
+pub mod simulate;
+pub mod text;

@@ -1,0 +1,167 @@
+//! ISO 230-2:1997 (= GB/T 17421.2-2000 with amendment No. 1): coverage factor 2.
+//!
+//! Per target (clause 5.1): X̄i↑, X̄i↓ (2.10), X̄i (2.11), Bi (2.12), Si↑, Si↓ (2.15), the
+//! limit deviations X̄ ± 2S, Ri↑ = 4Si↑, Ri↓ (2.16), Ri (2.17). Per axis (7.2.1): A (2.23),
+//! A↑ and A↓ (2.22; A↓ as corrected by amendment No. 1 of GB/T 17421.2:
+//! `A↓ = max(X̄i↓ + 2Si↓) − min(X̄i↓ − 2Si↓)`), E (2.20), E↑, E↓ (2.19), M (2.21),
+//! R (2.18), R↑, R↓ (2.18), B (2.13), B̄ (2.14). With n = 1 (clause 5.2, 7.2.2) only E,
+//! E↑, E↓, M, B and B̄ apply.
+
+use super::band;
+use super::stats::sample_sd;
+use super::{Evaluation, Parameter, Standard, StandardId};
+use crate::measurement::AxisData;
+use crate::units::Direction::{Down, Up};
+
+/// Coverage factor (clause 2.16: "coverage factor of 2").
+pub const K: f64 = 2.0;
+
+/// The ISO 230-2 evaluator; `id` chooses whether results are labelled ISO or GB/T.
+pub struct Iso230_2 {
+    pub id: StandardId,
+}
+
+impl Standard for Iso230_2 {
+    fn id(&self) -> StandardId {
+        self.id
+    }
+
+    fn evaluate(&self, data: &AxisData) -> Evaluation {
+        let targets = band::per_target(data, K, sample_sd);
+        let mut p = Vec::new();
+        let span = |key, label, name, clause, (value, hi, lo): (f64, f64, f64)| Parameter {
+            key,
+            label,
+            name,
+            clause,
+            value,
+            at_target: None,
+            span: Some((hi, lo)),
+        };
+        let at = |key, label, name, clause, (i, value): (usize, f64)| Parameter {
+            key,
+            label,
+            name,
+            clause,
+            value,
+            at_target: Some(i),
+            span: None,
+        };
+        if let Some(a) = band::accuracy(&targets, &[Up, Down]) {
+            p.push(span(
+                "A",
+                "A",
+                "bidirectional accuracy of positioning",
+                "ISO 230-2 2.23",
+                a,
+            ));
+        }
+        if let Some(a) = band::accuracy(&targets, &[Up]) {
+            p.push(span(
+                "A_up",
+                "A↑",
+                "unidirectional accuracy of positioning ↑",
+                "ISO 230-2 2.22",
+                a,
+            ));
+        }
+        if let Some(a) = band::accuracy(&targets, &[Down]) {
+            p.push(span(
+                "A_down",
+                "A↓",
+                "unidirectional accuracy of positioning ↓",
+                "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
+                a,
+            ));
+        }
+        p.push(span(
+            "E",
+            "E",
+            "bidirectional systematic positional deviation",
+            "ISO 230-2 2.20",
+            band::systematic(&targets, &[Up, Down]),
+        ));
+        p.push(span(
+            "E_up",
+            "E↑",
+            "unidirectional systematic positional deviation ↑",
+            "ISO 230-2 2.19",
+            band::systematic(&targets, &[Up]),
+        ));
+        p.push(span(
+            "E_down",
+            "E↓",
+            "unidirectional systematic positional deviation ↓",
+            "ISO 230-2 2.19",
+            band::systematic(&targets, &[Down]),
+        ));
+        p.push(span(
+            "M",
+            "M",
+            "range of the mean bidirectional positional deviation",
+            "ISO 230-2 2.21",
+            band::spread(targets.iter().map(|t| t.mean)),
+        ));
+        if let Some(r) = band::max_repeatability(&targets) {
+            p.push(at(
+                "R",
+                "R",
+                "bidirectional repeatability of positioning",
+                "ISO 230-2 2.18 (2.17)",
+                r,
+            ));
+        }
+        if let Some(r) = band::max_repeatability_in(&targets, Up) {
+            p.push(at(
+                "R_up",
+                "R↑",
+                "unidirectional repeatability of positioning ↑",
+                "ISO 230-2 2.18 (2.16)",
+                r,
+            ));
+        }
+        if let Some(r) = band::max_repeatability_in(&targets, Down) {
+            p.push(at(
+                "R_down",
+                "R↓",
+                "unidirectional repeatability of positioning ↓",
+                "ISO 230-2 2.18 (2.16)",
+                r,
+            ));
+        }
+        p.push(at(
+            "B",
+            "B",
+            "reversal value of the axis",
+            "ISO 230-2 2.13",
+            band::max_reversal(&targets),
+        ));
+        p.push(Parameter {
+            key: "B_mean",
+            label: "B̄",
+            name: "mean reversal value of the axis",
+            clause: "ISO 230-2 2.14",
+            value: band::mean_reversal(&targets),
+            at_target: None,
+            span: None,
+        });
+        let mut notes = Vec::new();
+        if data.runs() == 1 {
+            notes.push("n = 1: S, R and A are not applicable (ISO 230-2 clause 5.2)".to_string());
+        } else if data.runs() < 5 {
+            notes.push(format!(
+                "n = {}: the standard asks for 5 approaches per direction (clause 4.3.2)",
+                data.runs()
+            ));
+        }
+        Evaluation {
+            standard: self.id,
+            kind: data.kind,
+            n: data.runs(),
+            coverage_factor: K,
+            parameters: p,
+            targets,
+            notes,
+        }
+    }
+}

@@ -1,0 +1,128 @@
+//! The `axcheck` command.
+
+mod cli;
+
+use anyhow::{Context, Result, bail};
+use axcheck::evaluate::{Standard, StandardId, gost27843};
+use axcheck::measurement;
+use clap::{Parser, Subcommand};
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Positioning accuracy and repeatability of NC machine-tool axes (ISO 230-2 / GB/T
+/// 17421.2, GOST 27843, VDI 3441, NMTBA).
+#[derive(Parser)]
+#[command(name = "axcheck", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Evaluate one measurement file: the axis parameters and the per-target table.
+    Eval {
+        /// Measurement file (long CSV or key=value layout, chosen by content).
+        file: PathBuf,
+        /// Standard: iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba.
+        #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
+        standard: StandardId,
+        /// GOST 27843 only: estimate S from the ranges, formula (6), instead of formula (5).
+        #[arg(long)]
+        s_from_ranges: bool,
+        /// Print JSON (a stable interface) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Simulate a positioning test from an error model and a test plan (YAML).
+    Simulate {
+        /// Simulation file: kind, seed, model terms and plan.
+        model: PathBuf,
+        /// Output CSV (default: standard output).
+        #[arg(long, short)]
+        output: Option<PathBuf>,
+        /// Seed overriding the file's.
+        #[arg(long)]
+        seed: Option<u64>,
+    },
+}
+
+fn parse_standard(text: &str) -> Result<StandardId, String> {
+    StandardId::parse(text).ok_or_else(|| {
+        format!(
+            "unknown standard `{text}`; expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba"
+        )
+    })
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("axcheck: error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<ExitCode> {
+    match cli.command {
+        Command::Eval {
+            file,
+            standard,
+            s_from_ranges,
+            json,
+        } => {
+            if s_from_ranges && standard != StandardId::Gost27843 {
+                bail!("--s-from-ranges applies to --standard gost27843 only");
+            }
+            let data = measurement::read_file(&file)?;
+            let evaluation = if s_from_ranges {
+                gost27843::Gost27843 {
+                    s_method: gost27843::SMethod::Ranges,
+                }
+                .evaluate(&data)
+            } else {
+                axcheck::evaluate::evaluate(&data, standard)
+            };
+            let name = file.display().to_string();
+            let text = if json {
+                let mut value = evaluation.to_json();
+                if let Some(map) = value.as_object_mut() {
+                    map.insert("file".into(), serde_json::json!(name));
+                }
+                serde_json::to_string_pretty(&value)? + "\n"
+            } else {
+                cli::eval::render(&name, &evaluation)
+            };
+            print(&text)?;
+        }
+        Command::Simulate {
+            model,
+            output,
+            seed,
+        } => {
+            let csv = cli::simulate::run(&model, seed)?;
+            match output {
+                Some(path) => {
+                    axcheck::atomic::write(&path, csv.as_bytes())
+                        .with_context(|| format!("cannot write {}", path.display()))?;
+                    eprintln!("axcheck: wrote {}", path.display());
+                }
+                None => print(&csv)?,
+            }
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Prints to stdout; a closed pipe (`| head`) is not an error.
+fn print(text: &str) -> Result<()> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => Ok(other?),
+    }
+}

@@ -1,0 +1,450 @@
+//! The canonical long CSV layout: one row per reading, units in the column names.
+//!
+//! ```text
+//! target_mm,direction,run,deviation_um,time_s,temp_table_c
+//! 6.711,up,1,-1.2,12.0,20.4
+//! ```
+//! Columns: `target_mm` or `target_deg`; one of `deviation_um`, `deviation_nm`,
+//! `deviation_mm`, `deviation_arcsec`, `deviation_deg`, `actual_mm`, `actual_deg` (an
+//! actual position P_ij gives X_ij = P_ij − P_i, ISO 230-2 clause 2.5); `direction`;
+//! `run` (approach index j, 1-based); optional `time_s` and `temp_<name>_c`. Separators
+//! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
+
+use super::error::{Location, ReadError, ReadErrorKind, did_you_mean};
+use super::{AxisData, Lines, MAX_READINGS, NumberError, RawReading, parse_number};
+use crate::units::{AxisKind, Direction, fmt_fixed};
+use std::io::BufRead;
+
+/// What a column holds.
+#[derive(Debug, Clone, PartialEq)]
+enum Column {
+    Target(AxisKind),
+    /// Deviation with the factor to µm or arcsec.
+    Deviation(AxisKind, f64),
+    /// Actual position with the factor to µm or arcsec.
+    Actual(AxisKind, f64),
+    Direction,
+    Run,
+    TimeS,
+    Temperature(usize),
+}
+
+const KNOWN: &[&str] = &[
+    "target_mm",
+    "target_deg",
+    "deviation_um",
+    "deviation_nm",
+    "deviation_mm",
+    "deviation_arcsec",
+    "deviation_deg",
+    "actual_mm",
+    "actual_deg",
+    "direction",
+    "run",
+    "time_s",
+];
+
+fn classify(name: &str, temps: &mut Vec<String>) -> Result<Column, ReadErrorKind> {
+    use AxisKind::{Linear, Rotary};
+    let column = match name {
+        "target_mm" => Column::Target(Linear),
+        "target_deg" => Column::Target(Rotary),
+        "deviation_um" => Column::Deviation(Linear, 1.0),
+        "deviation_nm" => Column::Deviation(Linear, 0.001),
+        "deviation_mm" => Column::Deviation(Linear, 1000.0),
+        "deviation_arcsec" => Column::Deviation(Rotary, 1.0),
+        "deviation_deg" => Column::Deviation(Rotary, 3600.0),
+        "actual_mm" => Column::Actual(Linear, 1000.0),
+        "actual_deg" => Column::Actual(Rotary, 3600.0),
+        "direction" => Column::Direction,
+        "run" => Column::Run,
+        "time_s" => Column::TimeS,
+        _ => {
+            if let Some(inner) = name.strip_prefix("temp_") {
+                if let Some(sensor) = inner.strip_suffix("_c").filter(|s| !s.is_empty()) {
+                    temps.push(sensor.to_string());
+                    return Ok(Column::Temperature(temps.len() - 1));
+                }
+                return Err(ReadErrorKind::MissingUnit {
+                    name: name.into(),
+                    expected: format!("`temp_{inner}_c` (°C)"),
+                });
+            }
+            let missing = |expected: &str| ReadErrorKind::MissingUnit {
+                name: name.into(),
+                expected: expected.into(),
+            };
+            return Err(match name {
+                "target" | "position" | "target_position" => {
+                    missing("`target_mm` (linear) or `target_deg` (rotary)")
+                }
+                "deviation" | "error" | "dev" => {
+                    missing("`deviation_um`, `deviation_mm`, `deviation_arcsec` or `deviation_deg`")
+                }
+                "actual" | "actual_position" | "reading" => missing("`actual_mm` or `actual_deg`"),
+                "time" | "t" => missing("`time_s` (seconds from the start of the test)"),
+                _ => ReadErrorKind::UnknownColumn {
+                    name: name.into(),
+                    suggestion: did_you_mean(name, KNOWN).map(str::to_string),
+                },
+            });
+        }
+    };
+    Ok(column)
+}
+
+/// Splits one line at `sep`, honouring double quotes; returns each field with its
+/// 1-based character column.
+fn split_fields(line: &str, sep: char) -> Vec<(usize, String)> {
+    let mut fields = Vec::new();
+    let mut field = String::new();
+    let mut start = 1;
+    let mut in_quotes = false;
+    let mut chars = line.chars().enumerate().peekable();
+    while let Some((k, c)) = chars.next() {
+        if in_quotes {
+            if c == '"' {
+                if chars.peek().map(|&(_, c)| c) == Some('"') {
+                    field.push('"');
+                    chars.next();
+                } else {
+                    in_quotes = false;
+                }
+            } else {
+                field.push(c);
+            }
+        } else if c == '"' {
+            in_quotes = true;
+        } else if c == sep {
+            fields.push((start, std::mem::take(&mut field)));
+            start = k + 2;
+        } else {
+            field.push(c);
+        }
+    }
+    fields.push((start, field));
+    fields
+}
+
+fn detect_separator(header: &str) -> char {
+    if header.contains(';') {
+        ';'
+    } else if header.contains('\t') {
+        '\t'
+    } else {
+        ','
+    }
+}
+
+/// Parses the long CSV layout.
+pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
+    let mut lines = Lines::new(reader, file);
+    let err =
+        |line: usize, column: usize, kind| ReadError::new(Location::at(file, line, column), kind);
+
+    // Header: the first line that is neither blank nor a comment.
+    let (header_line, header) = loop {
+        match lines.next_line()? {
+            None => return Err(ReadError::new(Location::file(file), ReadErrorKind::Empty)),
+            Some((_, text)) if text.trim().is_empty() || text.trim_start().starts_with('#') => {}
+            Some((number, text)) => break (number, text.to_string()),
+        }
+    };
+    let sep = detect_separator(&header);
+    let decimal_comma = sep != ',';
+
+    let mut temps = Vec::new();
+    let mut columns: Vec<Column> = Vec::new();
+    let mut names: Vec<String> = Vec::new();
+    for (col, raw_name) in split_fields(&header, sep) {
+        let name = raw_name.trim().to_ascii_lowercase();
+        let column = classify(&name, &mut temps).map_err(|k| err(header_line, col, k))?;
+        if names.contains(&name) {
+            return Err(err(
+                header_line,
+                col,
+                ReadErrorKind::DuplicateColumn { name },
+            ));
+        }
+        columns.push(column);
+        names.push(name);
+    }
+    let find = |pred: &dyn Fn(&Column) -> bool| -> Vec<usize> {
+        columns
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| pred(c))
+            .map(|(k, _)| k)
+            .collect()
+    };
+    let header_err = |kind| ReadError::new(Location::line(file, header_line), kind);
+    let one = |found: Vec<usize>, what: &str, expected: &str| -> Result<usize, ReadError> {
+        match found.as_slice() {
+            [] => Err(header_err(ReadErrorKind::MissingColumn {
+                expected: expected.into(),
+            })),
+            [k] => Ok(*k),
+            [a, b, ..] => Err(header_err(ReadErrorKind::ConflictingColumns {
+                first: names[*a].clone(),
+                second: names[*b].clone(),
+                what: what.into(),
+            })),
+        }
+    };
+    let target_col = one(
+        find(&|c| matches!(c, Column::Target(_))),
+        "target position",
+        "`target_mm` or `target_deg`",
+    )?;
+    let value_col = one(
+        find(&|c| matches!(c, Column::Deviation(..) | Column::Actual(..))),
+        "deviation",
+        "`deviation_um` (or deviation_mm, deviation_arcsec, deviation_deg, actual_mm, actual_deg)",
+    )?;
+    let direction_col = one(
+        find(&|c| *c == Column::Direction),
+        "direction",
+        "`direction`",
+    )?;
+    let run_col = one(find(&|c| *c == Column::Run), "run", "`run`")?;
+    let time_col = find(&|c| *c == Column::TimeS).first().copied();
+
+    let Column::Target(kind) = columns[target_col] else {
+        unreachable!("target column classified above")
+    };
+    let (value_kind, factor, is_actual) = match columns[value_col] {
+        Column::Deviation(k, f) => (k, f, false),
+        Column::Actual(k, f) => (k, f, true),
+        _ => unreachable!("value column classified above"),
+    };
+    if value_kind != kind {
+        let describe = |k: AxisKind| match k {
+            AxisKind::Linear => "a length".to_string(),
+            AxisKind::Rotary => "an angle".to_string(),
+        };
+        return Err(header_err(ReadErrorKind::MixedUnits {
+            target: names[target_col].clone(),
+            target_kind: describe(kind),
+            deviation: names[value_col].clone(),
+            deviation_kind: describe(value_kind),
+        }));
+    }
+
+    let mut raw = Vec::new();
+    while let Some((number, text)) = lines.next_line()? {
+        let trimmed = text.trim();
+        if trimmed.is_empty() || trimmed.starts_with('#') {
+            continue;
+        }
+        if raw.len() >= MAX_READINGS {
+            return Err(ReadError::new(
+                Location::line(file, number),
+                ReadErrorKind::TooManyReadings {
+                    limit: MAX_READINGS,
+                },
+            ));
+        }
+        let fields = split_fields(text, sep);
+        if fields.len() != columns.len() {
+            return Err(err(
+                number,
+                1,
+                ReadErrorKind::FieldCount {
+                    expected: columns.len(),
+                    found: fields.len(),
+                },
+            ));
+        }
+        let number_at = |k: usize| -> Result<f64, ReadError> {
+            let (col, text) = &fields[k];
+            parse_number(text, decimal_comma).map_err(|e| {
+                let column = names[k].clone();
+                let found = text.trim().to_string();
+                err(
+                    number,
+                    *col,
+                    match e {
+                        NumberError::NotANumber => ReadErrorKind::NotANumber { column, found },
+                        NumberError::NonFinite => ReadErrorKind::NonFinite { column, found },
+                    },
+                )
+            })
+        };
+        let target = number_at(target_col)? + 0.0; // normalise -0.0
+        let value = number_at(value_col)?;
+        let deviation = if is_actual {
+            // Subtract in the file's unit first, then scale: keeps 0.1 µm exact-ish.
+            (value - target) * factor
+        } else {
+            value * factor
+        };
+        let (dcol, dtext) = &fields[direction_col];
+        let direction = Direction::parse(dtext).ok_or_else(|| {
+            err(
+                number,
+                *dcol,
+                ReadErrorKind::UnknownDirection {
+                    found: dtext.trim().to_string(),
+                },
+            )
+        })?;
+        let (rcol, rtext) = &fields[run_col];
+        let run = parse_run(rtext).ok_or_else(|| {
+            err(
+                number,
+                *rcol,
+                ReadErrorKind::InvalidRun {
+                    found: rtext.trim().to_string(),
+                },
+            )
+        })?;
+        let time_s = time_col.map(number_at).transpose()?;
+        let mut temps_c = vec![0.0; temps.len()];
+        for (k, column) in columns.iter().enumerate() {
+            if let Column::Temperature(t) = column {
+                temps_c[*t] = number_at(k)?;
+            }
+        }
+        raw.push(RawReading {
+            target,
+            direction,
+            run,
+            deviation,
+            time_s,
+            temps_c,
+            line: number,
+        });
+    }
+    if raw.is_empty() {
+        return Err(ReadError::new(
+            Location::line(file, header_line),
+            ReadErrorKind::NoReadings,
+        ));
+    }
+    AxisData::from_raw(kind, raw, temps, file)
+}
+
+/// A run number: a positive integer (`3`, ` 3 `, `3.0`).
+fn parse_run(text: &str) -> Option<u32> {
+    let t = text.trim();
+    let t = t.strip_suffix(".0").unwrap_or(t);
+    t.parse::<u32>().ok().filter(|&r| r >= 1)
+}
+
+/// Writes `data` in the long CSV layout, readings in measurement order; `comments` become
+/// leading `#` lines. Deviations with 4 decimals, times with 3: the same input always
+/// gives the same bytes.
+pub fn write(data: &AxisData, comments: &[String]) -> String {
+    let kind = data.kind;
+    let mut out = String::with_capacity(64 * data.readings.len() + 256);
+    for c in comments {
+        for line in c.lines() {
+            out.push_str("# ");
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    let times = data.has_times();
+    out.push_str(&format!(
+        "target_{},direction,run,deviation_{}",
+        kind.position_unit(),
+        kind.deviation_unit()
+    ));
+    if times {
+        out.push_str(",time_s");
+    }
+    for name in &data.temperature_names {
+        out.push_str(&format!(",temp_{name}_c"));
+    }
+    out.push('\n');
+    for (k, r) in data.readings.iter().enumerate() {
+        out.push_str(&crate::units::fmt_position(data.targets[r.target]));
+        out.push(',');
+        out.push_str(r.direction.name());
+        out.push(',');
+        out.push_str(&data.run_labels[r.run].to_string());
+        out.push(',');
+        out.push_str(&fmt_fixed(r.deviation, 4));
+        if times {
+            out.push(',');
+            out.push_str(&fmt_fixed(r.time_s.unwrap_or(0.0), 3));
+        }
+        for t in &data.temperatures_c[k] {
+            out.push(',');
+            out.push_str(&fmt_fixed(*t, 3));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_str(text: &str) -> Result<AxisData, ReadError> {
+        parse(text.as_bytes(), "t.csv")
+    }
+
+    const SMALL: &str = "target_mm,direction,run,deviation_um\n\
+        0,up,1,1.0\n0,down,1,2.0\n10,up,1,3.0\n10,down,1,4.0\n\
+        0,up,2,1.5\n0,down,2,2.5\n10,up,2,3.5\n10,down,2,4.5\n";
+
+    #[test]
+    fn reads_the_canonical_layout() {
+        let d = parse_str(SMALL).unwrap();
+        assert_eq!(d.kind, AxisKind::Linear);
+        assert_eq!(d.targets, vec![0.0, 10.0]);
+        assert_eq!(d.runs(), 2);
+        assert_eq!(d.deviations(1, Direction::Down), &[4.0, 4.5]);
+        assert_eq!(d.readings.len(), 8);
+        assert_eq!(d.readings[0].line, 2);
+    }
+
+    #[test]
+    fn semicolons_decimal_commas_bom_crlf_and_comments() {
+        let text = "\u{feff}# GOST table\r\ntarget_mm;direction;run;deviation_um\r\n\
+            0;↑;1;-2,6\r\n0;↓;1;2,3\r\n# mid comment\r\n150,71;+;1;0,2\r\n150,71;-;1;5,4\r\n";
+        let d = parse_str(text).unwrap();
+        assert_eq!(d.targets, vec![0.0, 150.71]);
+        assert_eq!(d.deviations(0, Direction::Up), &[-2.6]);
+        assert_eq!(d.deviations(1, Direction::Down), &[5.4]);
+    }
+
+    #[test]
+    fn actual_positions_and_unit_scaling() {
+        let text = "target_deg,direction,run,actual_deg\n90,up,1,90.001\n90,down,1,89.999\n";
+        let d = parse_str(text).unwrap();
+        assert_eq!(d.kind, AxisKind::Rotary);
+        assert!((d.deviation(0, Direction::Up, 0) - 3.6).abs() < 1e-6);
+        assert!((d.deviation(0, Direction::Down, 0) + 3.6).abs() < 1e-6);
+        let text = "target_mm,direction,run,deviation_mm\n5,up,1,0.0012\n5,down,1,-0.0005\n";
+        let d = parse_str(text).unwrap();
+        assert!((d.deviation(0, Direction::Up, 0) - 1.2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn quoted_header_and_time_and_temperatures() {
+        let text = "\"target_mm\",\"direction\",\"run\",\"deviation_um\",time_s,temp_screw_c\n\
+            0,up,1,1,0.5,20.1\n0,down,1,2,9.5,20.2\n";
+        let d = parse_str(text).unwrap();
+        assert_eq!(d.temperature_names, vec!["screw".to_string()]);
+        assert_eq!(d.temperatures_c[1], vec![20.2]);
+        assert_eq!(d.readings[1].time_s, Some(9.5));
+        assert!(d.has_times());
+    }
+
+    #[test]
+    fn round_trips_through_the_writer() {
+        let d = parse_str(SMALL).unwrap();
+        let text = write(&d, &["made by a test".into()]);
+        let again = parse_str(&text).unwrap();
+        assert_eq!(d.targets, again.targets);
+        for i in 0..2 {
+            for dir in Direction::BOTH {
+                assert_eq!(d.deviations(i, dir), again.deviations(i, dir));
+            }
+        }
+        assert!(text.starts_with("# made by a test\ntarget_mm,direction,run,deviation_um\n"));
+    }
+}

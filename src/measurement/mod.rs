@@ -1,0 +1,410 @@
+//! Measurement files: the data of one positioning test of one axis.
+//!
+//! Readers parse text from any `BufRead` (they never open files themselves; [`read_file`]
+//! is the one place that does) and build an [`AxisData`]: the validated, dense grid of
+//! deviations X_ij (ISO 230-2 clause 2.5) with every reading's order, time and temperatures
+//! kept for the diagnosis.
+
+pub mod csv;
+pub mod error;
+pub mod keyvalue;
+
+pub use error::{Location, ReadError, ReadErrorKind};
+
+use crate::units::{AxisKind, Direction, fmt_position};
+use std::collections::HashMap;
+use std::io::BufRead;
+use std::path::Path;
+
+/// Most readings one file may hold (about 50 MB of CSV); beyond this the file is refused
+/// rather than exhausting memory.
+pub const MAX_READINGS: usize = 2_000_000;
+/// Longest line a reader accepts.
+pub const MAX_LINE_BYTES: usize = 64 * 1024;
+
+/// One reading as parsed, before validation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RawReading {
+    /// Target position P_i, mm or deg.
+    pub target: f64,
+    pub direction: Direction,
+    /// Approach index j as written in the file (1-based).
+    pub run: u32,
+    /// Positional deviation X_ij in µm or arcsec.
+    pub deviation: f64,
+    /// Seconds from the start of the test, when the file gives them.
+    pub time_s: Option<f64>,
+    /// Temperatures (°C) in the order of [`AxisData::temperature_names`].
+    pub temps_c: Vec<f64>,
+    /// 1-based line in the source file (0 when generated).
+    pub line: usize,
+}
+
+/// One validated reading, in measurement order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reading {
+    /// Index i of the target (0-based) in [`AxisData::targets`].
+    pub target: usize,
+    pub direction: Direction,
+    /// Index j of the run (0-based) in [`AxisData::run_labels`].
+    pub run: usize,
+    /// X_ij in µm or arcsec.
+    pub deviation: f64,
+    pub time_s: Option<f64>,
+    pub line: usize,
+}
+
+/// A validated positioning test: m targets, n runs per direction, both directions at
+/// every target.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisData {
+    pub kind: AxisKind,
+    /// Target positions P_i (clause 2.3), ascending, mm or deg.
+    pub targets: Vec<f64>,
+    /// Run labels as written in the file, ascending; n = `run_labels.len()`.
+    pub run_labels: Vec<u32>,
+    /// Every reading in file order (the order of measurement).
+    pub readings: Vec<Reading>,
+    /// Names of the `temp_<name>_c` columns.
+    pub temperature_names: Vec<String>,
+    /// Temperatures per reading (same order as `readings`), °C.
+    pub temperatures_c: Vec<Vec<f64>>,
+    /// Dense deviations: `grid[direction][i * n + j]`.
+    grid: [Vec<f64>; 2],
+}
+
+impl AxisData {
+    /// Validates raw readings (duplicates, one-direction targets, ragged runs) and builds
+    /// the dense grid. `file` names the source in errors.
+    pub fn from_raw(
+        kind: AxisKind,
+        raw: Vec<RawReading>,
+        temperature_names: Vec<String>,
+        file: &str,
+    ) -> Result<AxisData, ReadError> {
+        if raw.is_empty() {
+            return Err(ReadError::new(
+                Location::file(file),
+                ReadErrorKind::NoReadings,
+            ));
+        }
+        let mut targets: Vec<f64> = raw.iter().map(|r| r.target).collect();
+        targets.sort_by(f64::total_cmp);
+        targets.dedup();
+        let mut run_labels: Vec<u32> = raw.iter().map(|r| r.run).collect();
+        run_labels.sort_unstable();
+        run_labels.dedup();
+        let n = run_labels.len();
+        let m = targets.len();
+        let target_index = |t: f64| {
+            targets
+                .binary_search_by(|p| p.total_cmp(&t))
+                .expect("target collected above")
+        };
+        let run_index = |r: u32| run_labels.binary_search(&r).expect("run collected above");
+
+        // First line of each (target, direction, run), to report duplicates.
+        let mut seen: HashMap<(usize, usize, usize), usize> = HashMap::with_capacity(raw.len());
+        let mut grid = [vec![f64::NAN; m * n], vec![f64::NAN; m * n]];
+        let mut readings = Vec::with_capacity(raw.len());
+        let mut temperatures_c = Vec::with_capacity(raw.len());
+        for r in raw {
+            let i = target_index(r.target);
+            let j = run_index(r.run);
+            let d = r.direction.index();
+            if let Some(first_line) = seen.insert((i, d, j), r.line) {
+                return Err(ReadError::new(
+                    Location::line(file, r.line),
+                    ReadErrorKind::DuplicateReading {
+                        target: fmt_target(kind, r.target),
+                        direction: r.direction.name().into(),
+                        run: r.run,
+                        first_line,
+                    },
+                ));
+            }
+            grid[d][i * n + j] = r.deviation;
+            readings.push(Reading {
+                target: i,
+                direction: r.direction,
+                run: j,
+                deviation: r.deviation,
+                time_s: r.time_s,
+                line: r.line,
+            });
+            temperatures_c.push(r.temps_c);
+        }
+
+        for (i, &target) in targets.iter().enumerate() {
+            let filled = |d: Direction| {
+                (0..n)
+                    .filter(|&j| !grid[d.index()][i * n + j].is_nan())
+                    .collect::<Vec<_>>()
+            };
+            let up = filled(Direction::Up);
+            let down = filled(Direction::Down);
+            let first_line = readings
+                .iter()
+                .find(|r| r.target == i)
+                .map_or(0, |r| r.line);
+            let location = Location::line(file, first_line);
+            if up.is_empty() || down.is_empty() {
+                let present = if up.is_empty() { "down" } else { "up" };
+                return Err(ReadError::new(
+                    location,
+                    ReadErrorKind::OneDirection {
+                        target: fmt_target(kind, target),
+                        present: present.into(),
+                    },
+                ));
+            }
+            for (d, have) in [(Direction::Up, up), (Direction::Down, down)] {
+                if have.len() != n {
+                    let labels: Vec<u32> = have.iter().map(|&j| run_labels[j]).collect();
+                    return Err(ReadError::new(
+                        location,
+                        ReadErrorKind::RaggedRuns {
+                            target: fmt_target(kind, target),
+                            direction: d.name().into(),
+                            has: list(&labels),
+                            expected: list(&run_labels),
+                        },
+                    ));
+                }
+            }
+        }
+
+        Ok(AxisData {
+            kind,
+            targets,
+            run_labels,
+            readings,
+            temperature_names,
+            temperatures_c,
+            grid,
+        })
+    }
+
+    /// n: approaches per direction at every target.
+    pub fn runs(&self) -> usize {
+        self.run_labels.len()
+    }
+
+    /// m: number of target positions.
+    pub fn target_count(&self) -> usize {
+        self.targets.len()
+    }
+
+    /// X_ij for target i, all runs j, in one direction (µm or arcsec).
+    pub fn deviations(&self, target: usize, direction: Direction) -> &[f64] {
+        let n = self.runs();
+        &self.grid[direction.index()][target * n..(target + 1) * n]
+    }
+
+    /// X_ij of one reading.
+    pub fn deviation(&self, target: usize, direction: Direction, run: usize) -> f64 {
+        self.grid[direction.index()][target * self.runs() + run]
+    }
+
+    /// Measurement travel: first and last target (clause 2.2).
+    pub fn measurement_travel(&self) -> (f64, f64) {
+        (self.targets[0], self.targets[self.targets.len() - 1])
+    }
+
+    /// True when every reading carries a time stamp.
+    pub fn has_times(&self) -> bool {
+        self.readings.iter().all(|r| r.time_s.is_some())
+    }
+
+    /// A copy with every deviation replaced by `f(reading, deviation)`; used to remove a
+    /// diagnosed effect or to apply an NDE correction.
+    pub fn map_deviations(&self, mut f: impl FnMut(&Reading) -> f64) -> AxisData {
+        let mut out = self.clone();
+        let n = self.runs();
+        for r in &mut out.readings {
+            let value = f(r);
+            r.deviation = value;
+            out.grid[r.direction.index()][r.target * n + r.run] = value;
+        }
+        out
+    }
+}
+
+fn list(values: &[u32]) -> String {
+    values
+        .iter()
+        .map(u32::to_string)
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// A target position with its unit, for messages: `353.834 mm`, `90 deg`.
+pub fn fmt_target(kind: AxisKind, position: f64) -> String {
+    format!("{} {}", fmt_position(position), kind.position_unit())
+}
+
+/// The layouts axcheck reads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// One row per reading with unit-carrying column names.
+    LongCsv,
+    /// `KEY=VALUE` lines with `TGT_DATA[i]`, `REF_DATA_FWD[i,j]`, `REF_DATA_BWD[i,j]`.
+    KeyValue,
+}
+
+/// Chooses the layout from the content: the first line that is neither blank nor a
+/// comment decides (`NAME=…` or `NAME[…]=…` means key=value).
+pub fn detect_format(head: &[u8]) -> Format {
+    let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(head);
+    for line in head.split(|&b| b == b'\n') {
+        let line = line.trim_ascii();
+        if line.is_empty() || line.starts_with(b"#") {
+            continue;
+        }
+        return if keyvalue::looks_like_key_value(line) {
+            Format::KeyValue
+        } else {
+            Format::LongCsv
+        };
+    }
+    Format::LongCsv
+}
+
+/// Reads a measurement in either layout from `reader`, choosing the layout by content.
+pub fn read<R: BufRead>(mut reader: R, file: &str) -> Result<AxisData, ReadError> {
+    let head = reader
+        .fill_buf()
+        .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
+    match detect_format(head) {
+        Format::LongCsv => csv::parse(reader, file),
+        Format::KeyValue => keyvalue::parse(reader, file),
+    }
+}
+
+/// Opens and reads a measurement file (the one place this module touches the file system).
+pub fn read_file(path: &Path) -> Result<AxisData, ReadError> {
+    let name = path.display().to_string();
+    let file = std::fs::File::open(path)
+        .map_err(|e| ReadError::new(Location::file(&name), ReadErrorKind::Io(e.to_string())))?;
+    read(std::io::BufReader::with_capacity(64 * 1024, file), &name)
+}
+
+/// Reads lines of at most [`MAX_LINE_BYTES`] as UTF-8 text with their 1-based numbers,
+/// stripping a leading BOM and the line ending.
+pub(crate) struct Lines<R> {
+    reader: R,
+    file: String,
+    number: usize,
+    buf: Vec<u8>,
+}
+
+impl<R: BufRead> Lines<R> {
+    pub(crate) fn new(reader: R, file: &str) -> Lines<R> {
+        Lines {
+            reader,
+            file: file.to_string(),
+            number: 0,
+            buf: Vec::with_capacity(256),
+        }
+    }
+
+    /// The next line, or `None` at the end of the input.
+    pub(crate) fn next_line(&mut self) -> Result<Option<(usize, &str)>, ReadError> {
+        use std::io::Read;
+        self.buf.clear();
+        let limit = MAX_LINE_BYTES as u64 + 1;
+        let read = (&mut self.reader)
+            .take(limit)
+            .read_until(b'\n', &mut self.buf)
+            .map_err(|e| {
+                ReadError::new(
+                    Location::line(&self.file, self.number + 1),
+                    ReadErrorKind::Io(e.to_string()),
+                )
+            })?;
+        if read == 0 {
+            return Ok(None);
+        }
+        self.number += 1;
+        if self.buf.len() > MAX_LINE_BYTES {
+            return Err(ReadError::new(
+                Location::line(&self.file, self.number),
+                ReadErrorKind::LineTooLong {
+                    limit: MAX_LINE_BYTES,
+                },
+            ));
+        }
+        let mut bytes = self.buf.as_slice();
+        if self.number == 1 {
+            bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+        }
+        while let [rest @ .., b'\n' | b'\r'] = bytes {
+            bytes = rest;
+        }
+        let text = std::str::from_utf8(bytes).map_err(|_| {
+            ReadError::new(
+                Location::line(&self.file, self.number),
+                ReadErrorKind::InvalidUtf8,
+            )
+        })?;
+        Ok(Some((self.number, text)))
+    }
+}
+
+/// Parses a number as written in measurement files: `.` or (with `decimal_comma`) `,`
+/// as decimal mark, a Unicode minus accepted; rejects NaN and infinities.
+pub(crate) fn parse_number(text: &str, decimal_comma: bool) -> Result<f64, NumberError> {
+    let t = text.trim();
+    let owned;
+    let t = if decimal_comma || t.contains('−') {
+        owned = t.replace('−', "-");
+        if decimal_comma {
+            owned.replace(',', ".")
+        } else {
+            owned
+        }
+    } else {
+        t.to_string()
+    };
+    // Rust accepts `inf`, `nan` and `infinity`; a measurement never holds them.
+    let value: f64 = t.parse().map_err(|_| NumberError::NotANumber)?;
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(NumberError::NonFinite)
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum NumberError {
+    NotANumber,
+    NonFinite,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn detects_layout_by_content() {
+        assert_eq!(detect_format(b"# c\nUNIT=mm\n"), Format::KeyValue);
+        assert_eq!(detect_format(b"TGT_DATA[1]=3\n"), Format::KeyValue);
+        assert_eq!(
+            detect_format(b"\xEF\xBB\xBFtarget_mm,direction,run,deviation_um\n"),
+            Format::LongCsv
+        );
+        assert_eq!(detect_format(b""), Format::LongCsv);
+    }
+
+    #[test]
+    fn numbers() {
+        assert_eq!(parse_number(" -1.5 ", false), Ok(-1.5));
+        assert_eq!(parse_number("-1,5", true), Ok(-1.5));
+        assert_eq!(parse_number("−2.5", false), Ok(-2.5));
+        assert_eq!(parse_number("-.047", false), Ok(-0.047));
+        assert_eq!(parse_number("NaN", false), Err(NumberError::NonFinite));
+        assert_eq!(parse_number("inf", false), Err(NumberError::NonFinite));
+        assert_eq!(parse_number("1,5", false), Err(NumberError::NotANumber));
+        assert_eq!(parse_number("", false), Err(NumberError::NotANumber));
+    }
+}

@@ -1,0 +1,234 @@
+//! The axis simulator: an error model and a test plan produce a measurement.
+//!
+//! It is the project's model of an axis; `axcheck diagnose` fits it to measured data.
+//! Output is deterministic for a seed: each random term draws from its own stream.
+
+pub mod model;
+pub mod plan;
+pub mod rng;
+mod yaml;
+
+pub use model::{ErrorModel, Outlier, PeriodicTerm};
+pub use plan::{Cycle, TargetSpacing, TestPlan, Visit};
+
+use crate::measurement::{AxisData, RawReading};
+use crate::units::AxisKind;
+use rng::Rng;
+use serde::{Deserialize, Serialize};
+
+/// A simulation file: axis kind, seed, error model and test plan.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Simulation {
+    pub kind: AxisKind,
+    #[serde(default)]
+    pub seed: u64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+    #[serde(default)]
+    pub model: ErrorModel,
+    pub plan: TestPlan,
+}
+
+/// A simulation file that cannot be used.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{file}: {message}")]
+pub struct SimulationError {
+    pub file: String,
+    pub message: String,
+}
+
+/// Decimals kept in simulated deviations (as the CSV writer writes them).
+const DECIMALS: i32 = 4;
+
+impl Simulation {
+    /// Parses and checks a simulation file; `file` names it in errors.
+    pub fn from_yaml(text: &str, file: &str) -> Result<Simulation, SimulationError> {
+        let err = |message: String| SimulationError {
+            file: file.to_string(),
+            message,
+        };
+        let value: serde_norway::Value =
+            serde_norway::from_str(text).map_err(|e| err(e.to_string()))?;
+        let kind = match value.get("kind").and_then(|k| k.as_str()) {
+            Some("linear") => AxisKind::Linear,
+            Some("rotary") => AxisKind::Rotary,
+            Some(other) => {
+                return Err(err(format!(
+                    "kind: expected `linear` or `rotary`, found `{other}`"
+                )));
+            }
+            None => return Err(err("missing `kind: linear` or `kind: rotary`".into())),
+        };
+        yaml::check_keys(&value, kind).map_err(err)?;
+        let sim: Simulation = serde_norway::from_str(text).map_err(|e| err(e.to_string()))?;
+        sim.validate().map_err(err)?;
+        Ok(sim)
+    }
+
+    /// The simulation file text, keys spelled with the kind's units.
+    pub fn to_yaml(&self) -> String {
+        let value = serde_norway::to_value(self).expect("a simulation serialises");
+        let value = yaml::externalize(value, self.kind);
+        serde_norway::to_string(&value).expect("a YAML value serialises")
+    }
+
+    pub fn validate(&self) -> Result<(), String> {
+        self.plan.validate()?;
+        let m = match (&self.plan.target_list, &self.plan.targets) {
+            (Some(l), _) => l.len(),
+            (None, Some(t)) => t.count,
+            _ => 0,
+        };
+        self.model.validate(self.plan.runs, m)
+    }
+
+    /// Runs the simulation with `seed` (the file's seed unless overridden).
+    pub fn run(&self, seed: u64) -> AxisData {
+        let kind = self.kind;
+        let plan = &self.plan;
+        let model = &self.model;
+        let targets = plan.target_positions(seed);
+        let travel = (targets[0], targets[targets.len() - 1]);
+        let visits = plan.schedule(&targets);
+
+        let mut offsets_rng = Rng::new(seed, 2);
+        let run_offsets: Vec<f64> = (0..plan.runs)
+            .map(|j| {
+                let fixed = model.run_offsets.get(j).copied().unwrap_or(0.0);
+                let random = if model.run_offset_sd > 0.0 {
+                    model.run_offset_sd * offsets_rng.normal()
+                } else {
+                    0.0
+                };
+                fixed + random
+            })
+            .collect();
+        let mut scatter_rng = Rng::new(seed, 3);
+        let mut outlier_rng = Rng::new(seed, 4);
+        let scale = 10f64.powi(DECIMALS);
+        let raw = visits
+            .iter()
+            .map(|v| {
+                let position = targets[v.target];
+                let mut x = model.expected(kind, position, v.direction, v.time_s, travel)
+                    + run_offsets[v.run];
+                // Draw for every reading, whatever σ, so streams stay aligned across models.
+                x += model.scatter_at(position, travel) * scatter_rng.normal();
+                let (hit, sign) = (outlier_rng.uniform(), outlier_rng.uniform());
+                if hit < model.outlier_rate {
+                    x += if sign < 0.5 {
+                        -model.outlier_size
+                    } else {
+                        model.outlier_size
+                    };
+                }
+                for o in &model.outliers {
+                    if o.run as usize == v.run + 1
+                        && o.target == v.target + 1
+                        && o.direction == v.direction
+                    {
+                        x += o.size;
+                    }
+                }
+                if model.resolution > 0.0 {
+                    x = (x / model.resolution).round() * model.resolution;
+                }
+                RawReading {
+                    target: position,
+                    direction: v.direction,
+                    run: v.run as u32 + 1,
+                    deviation: (x * scale).round() / scale + 0.0,
+                    time_s: Some((v.time_s * 1000.0).round() / 1000.0),
+                    temps_c: Vec::new(),
+                    line: 0,
+                }
+            })
+            .collect();
+        AxisData::from_raw(kind, raw, Vec::new(), "simulation")
+            .expect("a simulated plan visits every target in both directions in every run")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::units::Direction;
+
+    const LINEAR: &str = "
+kind: linear
+seed: 11
+model:
+  scale_um_per_m: 10
+  reversal_um: 4
+  scatter_um: 0.5
+  periodic:
+    - {pitch_mm: 10, amplitude_um: 1.0, phase_deg: 30}
+plan:
+  targets: {start_mm: 0, end_mm: 1000, count: 11, jitter_mm: 5}
+  runs: 5
+  cycle: standard
+  feed_mm_per_min: 2000
+  dwell_s: 3
+";
+
+    #[test]
+    fn parses_runs_and_round_trips() {
+        let sim = Simulation::from_yaml(LINEAR, "m.yaml").unwrap();
+        let data = sim.run(sim.seed);
+        assert_eq!(data.target_count(), 11);
+        assert_eq!(data.runs(), 5);
+        assert_eq!(data.readings.len(), 110);
+        assert!(data.has_times());
+        assert_eq!(data, sim.run(sim.seed), "deterministic");
+        let text = sim.to_yaml();
+        assert!(text.contains("reversal_um: 4"), "{text}");
+        assert!(text.contains("pitch_mm: 10"), "{text}");
+        let again = Simulation::from_yaml(&text, "again.yaml").unwrap();
+        assert_eq!(again, sim);
+    }
+
+    #[test]
+    fn reversal_sign_follows_clause_2_12() {
+        let sim = Simulation::from_yaml(
+            "kind: linear\nmodel: {reversal_um: 4}\nplan: {targets_mm: [0, 100], runs: 2}\n",
+            "m.yaml",
+        )
+        .unwrap();
+        let d = sim.run(0);
+        assert_eq!(d.deviation(0, Direction::Up, 0), 2.0);
+        assert_eq!(d.deviation(0, Direction::Down, 0), -2.0);
+    }
+
+    #[test]
+    fn unit_keys_must_match_the_kind() {
+        let e = Simulation::from_yaml(
+            "kind: rotary\nmodel: {reversal_um: 4}\nplan: {targets_deg: [0, 90]}\n",
+            "r.yaml",
+        )
+        .unwrap_err();
+        assert!(
+            e.message.contains("write `model.reversal_arcsec`")
+                || e.message.contains("reversal_arcsec"),
+            "{e}"
+        );
+        let e = Simulation::from_yaml(
+            "kind: linear\nmodel: {reversal: 4}\nplan: {targets_mm: [0, 90]}\n",
+            "l.yaml",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("has no unit"), "{e}");
+        let e = Simulation::from_yaml(
+            "kind: linear\nmodel: {revrsal_um: 4}\nplan: {targets_mm: [0, 90]}\n",
+            "l.yaml",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("did you mean `reversal_um`"), "{e}");
+        let e = Simulation::from_yaml(
+            "kind: linear\nmodel: {scatter_um: abc}\nplan: {targets_mm: [0, 90]}\n",
+            "l.yaml",
+        )
+        .unwrap_err();
+        assert!(e.to_string().contains("line 2"), "{e}");
+    }
+}

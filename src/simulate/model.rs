@@ -1,0 +1,292 @@
+//! The axis error model: what the deviation X_ij of one reading is made of.
+//!
+//! Terms (seed 003, Hemingray et al.: progressive and periodic error, lost motion, drift,
+//! thermal growth, scatter): a linear scale error, a smooth systematic shape, periodic
+//! errors, a reversal value (constant or varying linearly along the axis), a drift in
+//! time uniform along the axis, a thermal growth proportional to position × time,
+//! per-run offsets, random scatter (constant or varying along the axis) and outliers.
+//! Deviations in the axis's deviation unit (µm or arcsec), positions in mm or deg.
+
+use crate::units::{AxisKind, Direction};
+use serde::{Deserialize, Serialize};
+
+/// A periodic error along the axis, e.g. lead-screw pitch error (seed 003, section 4).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PeriodicTerm {
+    /// Period, mm or deg.
+    #[serde(alias = "pitch_mm", alias = "pitch_deg")]
+    pub pitch: f64,
+    /// Amplitude (half peak-to-peak), µm or arcsec.
+    #[serde(alias = "amplitude_um", alias = "amplitude_arcsec")]
+    pub amplitude: f64,
+    /// Phase at position 0, degrees of the period.
+    #[serde(default)]
+    pub phase_deg: f64,
+}
+
+/// One reading made an outlier on purpose.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Outlier {
+    /// Run j, 1-based.
+    pub run: u32,
+    pub direction: Direction,
+    /// Target index i, 1-based.
+    pub target: usize,
+    /// Added deviation, µm or arcsec.
+    #[serde(alias = "size_um", alias = "size_arcsec")]
+    pub size: f64,
+}
+
+/// The error model. Every term defaults to zero (absent).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ErrorModel {
+    /// Linear scale error, ppm (µm/m on a linear axis).
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "scale_um_per_m")]
+    pub scale_ppm: f64,
+    /// Smooth systematic shape: knots [position, deviation], interpolated by a C¹ cubic.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub shape: Vec<[f64; 2]>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub periodic: Vec<PeriodicTerm>,
+    /// Reversal value B = X↑ − X↓ at the start of the travel (or everywhere).
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "reversal_um", alias = "reversal_arcsec")]
+    pub reversal: f64,
+    /// Reversal value at the end of the travel; linear in between.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(alias = "reversal_end_um", alias = "reversal_end_arcsec")]
+    pub reversal_end: Option<f64>,
+    /// Drift in time, uniform along the axis, per hour.
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "drift_um_per_h", alias = "drift_arcsec_per_h")]
+    pub drift_per_h: f64,
+    /// Thermal growth, ppm per hour (µm/m per hour): error = rate · t · (P − origin).
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "thermal_growth_um_per_m_per_h")]
+    pub thermal_growth_ppm_per_h: f64,
+    /// Fixed end of the thermal growth (position where it is zero).
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "thermal_origin_mm", alias = "thermal_origin_deg")]
+    pub thermal_origin: f64,
+    /// Offset of each whole run, in run order.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(alias = "run_offsets_um", alias = "run_offsets_arcsec")]
+    pub run_offsets: Vec<f64>,
+    /// Standard deviation of random run offsets.
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "run_offset_sd_um", alias = "run_offset_sd_arcsec")]
+    pub run_offset_sd: f64,
+    /// Standard deviation of the random scatter at the start of the travel (or everywhere).
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "scatter_um", alias = "scatter_arcsec")]
+    pub scatter: f64,
+    /// Scatter at the end of the travel; linear in between.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(alias = "scatter_end_um", alias = "scatter_end_arcsec")]
+    pub scatter_end: Option<f64>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub outliers: Vec<Outlier>,
+    /// Probability that a reading is an outlier.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub outlier_rate: f64,
+    /// Size of random outliers (random sign).
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "outlier_size_um", alias = "outlier_size_arcsec")]
+    pub outlier_size: f64,
+    /// Instrument resolution: readings are rounded to multiples of it (0: none).
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "resolution_um", alias = "resolution_arcsec")]
+    pub resolution: f64,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
+
+/// Linear interpolation weight of `position` between the ends of the travel.
+fn along(position: f64, travel: (f64, f64)) -> f64 {
+    let (a, b) = travel;
+    if b > a {
+        ((position - a) / (b - a)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    }
+}
+
+impl ErrorModel {
+    /// The systematic (direction-free, time-free) deviation at `position`.
+    pub fn systematic(&self, kind: AxisKind, position: f64) -> f64 {
+        let mut value =
+            kind.ppm_to_deviation(self.scale_ppm, position) + interpolate(&self.shape, position);
+        for p in &self.periodic {
+            let phase = p.phase_deg.to_radians();
+            value += p.amplitude * (std::f64::consts::TAU * position / p.pitch + phase).sin();
+        }
+        value
+    }
+
+    /// The reversal value B at `position`.
+    pub fn reversal_at(&self, position: f64, travel: (f64, f64)) -> f64 {
+        match self.reversal_end {
+            Some(end) => self.reversal + (end - self.reversal) * along(position, travel),
+            None => self.reversal,
+        }
+    }
+
+    /// The scatter σ at `position`.
+    pub fn scatter_at(&self, position: f64, travel: (f64, f64)) -> f64 {
+        match self.scatter_end {
+            Some(end) => self.scatter + (end - self.scatter) * along(position, travel),
+            None => self.scatter,
+        }
+    }
+
+    /// The deterministic part of a reading: systematic + reversal/2 + drift + thermal
+    /// growth (without run offsets, scatter and outliers).
+    pub fn expected(
+        &self,
+        kind: AxisKind,
+        position: f64,
+        direction: Direction,
+        time_s: f64,
+        travel: (f64, f64),
+    ) -> f64 {
+        let hours = time_s / 3600.0;
+        self.systematic(kind, position)
+            + direction.sign() * self.reversal_at(position, travel) / 2.0
+            + self.drift_per_h * hours
+            + kind.ppm_to_deviation(
+                self.thermal_growth_ppm_per_h * hours,
+                position - self.thermal_origin,
+            )
+    }
+
+    /// Checks values a simulation cannot use.
+    pub fn validate(&self, runs: usize, targets: usize) -> Result<(), String> {
+        let nonneg = [
+            ("scatter", self.scatter),
+            ("scatter_end", self.scatter_end.unwrap_or(0.0)),
+            ("run_offset_sd", self.run_offset_sd),
+            ("outlier_size", self.outlier_size),
+            ("resolution", self.resolution),
+        ];
+        for (name, v) in nonneg {
+            if !(v >= 0.0 && v.is_finite()) {
+                return Err(format!(
+                    "model.{name} must be a finite number ≥ 0, found {v}"
+                ));
+            }
+        }
+        if !(0.0..=1.0).contains(&self.outlier_rate) {
+            return Err(format!(
+                "model.outlier_rate must be between 0 and 1, found {}",
+                self.outlier_rate
+            ));
+        }
+        for p in &self.periodic {
+            if !(p.pitch > 0.0 && p.pitch.is_finite()) {
+                return Err(format!(
+                    "model.periodic: pitch must be > 0, found {}",
+                    p.pitch
+                ));
+            }
+        }
+        if !self.run_offsets.is_empty() && self.run_offsets.len() != runs {
+            return Err(format!(
+                "model.run_offsets has {} values but the plan has {runs} runs",
+                self.run_offsets.len()
+            ));
+        }
+        for o in &self.outliers {
+            if o.run == 0 || o.run as usize > runs || o.target == 0 || o.target > targets {
+                return Err(format!(
+                    "model.outliers: run {} target {} is outside the plan ({runs} runs, {targets} targets)",
+                    o.run, o.target
+                ));
+            }
+        }
+        let mut last = f64::NEG_INFINITY;
+        for k in &self.shape {
+            if k[0].partial_cmp(&last) != Some(std::cmp::Ordering::Greater) {
+                return Err("model.shape: knot positions must increase".into());
+            }
+            last = k[0];
+        }
+        Ok(())
+    }
+}
+
+/// C¹ cubic Hermite interpolation through `knots` with finite-difference slopes;
+/// constant beyond the ends; 0 without knots.
+pub fn interpolate(knots: &[[f64; 2]], x: f64) -> f64 {
+    match knots {
+        [] => 0.0,
+        [only] => only[1],
+        _ => {
+            let last = knots.len() - 1;
+            if x <= knots[0][0] {
+                return knots[0][1];
+            }
+            if x >= knots[last][0] {
+                return knots[last][1];
+            }
+            let k = knots.partition_point(|p| p[0] <= x) - 1;
+            let slope =
+                |a: usize, b: usize| (knots[b][1] - knots[a][1]) / (knots[b][0] - knots[a][0]);
+            let tangent = |i: usize| {
+                if i == 0 {
+                    slope(0, 1)
+                } else if i == last {
+                    slope(last - 1, last)
+                } else {
+                    (slope(i - 1, i) + slope(i, i + 1)) / 2.0
+                }
+            };
+            let (x0, y0) = (knots[k][0], knots[k][1]);
+            let (x1, y1) = (knots[k + 1][0], knots[k + 1][1]);
+            let h = x1 - x0;
+            let t = (x - x0) / h;
+            let (t2, t3) = (t * t, t * t * t);
+            (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+                + (t3 - 2.0 * t2 + t) * h * tangent(k)
+                + (-2.0 * t3 + 3.0 * t2) * y1
+                + (t3 - t2) * h * tangent(k + 1)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn interpolation_passes_through_knots() {
+        let knots = [[0.0, 1.0], [100.0, 3.0], [300.0, -2.0]];
+        for k in knots {
+            assert!((interpolate(&knots, k[0]) - k[1]).abs() < 1e-12);
+        }
+        assert_eq!(interpolate(&knots, -5.0), 1.0);
+        assert_eq!(interpolate(&knots, 400.0), -2.0);
+        let mid = interpolate(&knots, 50.0);
+        assert!(mid > 1.0 && mid < 3.5, "{mid}");
+    }
+
+    #[test]
+    fn expected_combines_terms() {
+        let m = ErrorModel {
+            scale_ppm: 10.0,
+            reversal: 4.0,
+            drift_per_h: 2.0,
+            ..ErrorModel::default()
+        };
+        let travel = (0.0, 1000.0);
+        let up = m.expected(AxisKind::Linear, 1000.0, Direction::Up, 1800.0, travel);
+        let down = m.expected(AxisKind::Linear, 1000.0, Direction::Down, 1800.0, travel);
+        assert!((up - (10.0 + 2.0 + 1.0)).abs() < 1e-12);
+        assert!((up - down - 4.0).abs() < 1e-12);
+    }
+}

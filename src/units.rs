@@ -1,0 +1,194 @@
+//! Axis kinds, approach directions and the unit conventions that follow from them.
+//!
+//! A linear axis has target positions in mm and deviations in µm; a rotary axis has
+//! target positions in degrees and deviations in arcseconds (ISO 230-2:1997 clause 1:
+//! "applies equally to linear and rotary axes"). Every deviation value inside axcheck is
+//! in the axis's deviation unit; every position in its position unit.
+
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// Linear or rotary axis (ISO 230-2 clause 2.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum AxisKind {
+    Linear,
+    Rotary,
+}
+
+impl AxisKind {
+    /// Unit of target positions: `mm` or `deg`.
+    pub fn position_unit(self) -> &'static str {
+        match self {
+            AxisKind::Linear => "mm",
+            AxisKind::Rotary => "deg",
+        }
+    }
+
+    /// Unit of deviations: `um` (µm) or `arcsec`.
+    pub fn deviation_unit(self) -> &'static str {
+        match self {
+            AxisKind::Linear => "um",
+            AxisKind::Rotary => "arcsec",
+        }
+    }
+
+    /// Deviation unit for people: `µm` or `″`-free `arcsec`.
+    pub fn deviation_symbol(self) -> &'static str {
+        match self {
+            AxisKind::Linear => "µm",
+            AxisKind::Rotary => "arcsec",
+        }
+    }
+
+    /// Position unit for people: `mm` or `°`.
+    pub fn position_symbol(self) -> &'static str {
+        match self {
+            AxisKind::Linear => "mm",
+            AxisKind::Rotary => "°",
+        }
+    }
+
+    /// How many deviation units one position unit holds (1 mm = 1000 µm, 1° = 3600″).
+    pub fn deviation_units_per_position_unit(self) -> f64 {
+        match self {
+            AxisKind::Linear => 1000.0,
+            AxisKind::Rotary => 3600.0,
+        }
+    }
+
+    /// A relative (ppm) error at `position` expressed in deviation units: 1 ppm of 1 m is
+    /// 1 µm; 1 ppm of 1° is 0.0036″.
+    pub fn ppm_to_deviation(self, ppm: f64, position: f64) -> f64 {
+        ppm * 1e-6 * position * self.deviation_units_per_position_unit()
+    }
+}
+
+impl fmt::Display for AxisKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            AxisKind::Linear => "linear",
+            AxisKind::Rotary => "rotary",
+        })
+    }
+}
+
+/// Approach direction (ISO 230-2 clause 2.6): `Up` (↑) is an approach moving in the
+/// positive direction, i.e. from the negative side; `Down` (↓) the opposite.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Direction {
+    Up,
+    Down,
+}
+
+impl Direction {
+    pub const BOTH: [Direction; 2] = [Direction::Up, Direction::Down];
+
+    /// Parses the spellings found in measurement files: `up`/`down`, `+`/`-`, `↑`/`↓`,
+    /// `fwd`/`bwd`, `forward`/`reverse`/`backward`, `pos`/`neg`, `positive`/`negative`.
+    pub fn parse(text: &str) -> Option<Direction> {
+        let t = text.trim();
+        let lower = t.to_ascii_lowercase();
+        match lower.as_str() {
+            "up" | "+" | "↑" | "fwd" | "forward" | "pos" | "positive" => Some(Direction::Up),
+            "down" | "-" | "−" | "↓" | "bwd" | "backward" | "reverse" | "rev" | "neg"
+            | "negative" => Some(Direction::Down),
+            _ => None,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Direction::Up => "up",
+            Direction::Down => "down",
+        }
+    }
+
+    pub fn arrow(self) -> &'static str {
+        match self {
+            Direction::Up => "↑",
+            Direction::Down => "↓",
+        }
+    }
+
+    /// +1 for up, −1 for down.
+    pub fn sign(self) -> f64 {
+        match self {
+            Direction::Up => 1.0,
+            Direction::Down => -1.0,
+        }
+    }
+
+    pub fn index(self) -> usize {
+        match self {
+            Direction::Up => 0,
+            Direction::Down => 1,
+        }
+    }
+
+    pub fn opposite(self) -> Direction {
+        match self {
+            Direction::Up => Direction::Down,
+            Direction::Down => Direction::Up,
+        }
+    }
+}
+
+impl fmt::Display for Direction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Formats `value` with `decimals` places, never printing `-0.000`.
+pub fn fmt_fixed(value: f64, decimals: usize) -> String {
+    let s = format!("{value:.decimals$}");
+    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+        s[1..].to_string()
+    } else {
+        s
+    }
+}
+
+/// Formats a position without trailing zeros (at most 6 decimals): `6.711`, `0`, `-20`.
+pub fn fmt_position(value: f64) -> String {
+    let s = fmt_fixed(value, 6);
+    if s.contains('.') {
+        let t = s.trim_end_matches('0').trim_end_matches('.');
+        t.to_string()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_direction_spellings() {
+        for s in ["up", "UP", "+", "↑", "fwd", "Forward", "positive"] {
+            assert_eq!(Direction::parse(s), Some(Direction::Up), "{s}");
+        }
+        for s in ["down", "-", "↓", "bwd", "reverse", "BACKWARD", "neg"] {
+            assert_eq!(Direction::parse(s), Some(Direction::Down), "{s}");
+        }
+        assert_eq!(Direction::parse("dwon"), None);
+    }
+
+    #[test]
+    fn fixed_format_has_no_negative_zero() {
+        assert_eq!(fmt_fixed(-0.00001, 3), "0.000");
+        assert_eq!(fmt_fixed(-1.23456, 3), "-1.235");
+        assert_eq!(fmt_position(6.711), "6.711");
+        assert_eq!(fmt_position(-20.0), "-20");
+        assert_eq!(fmt_position(1750.92), "1750.92");
+    }
+
+    #[test]
+    fn ppm_conversion() {
+        assert!((AxisKind::Linear.ppm_to_deviation(10.0, 1000.0) - 10.0).abs() < 1e-12);
+        assert!((AxisKind::Rotary.ppm_to_deviation(1.0, 360.0) - 1.296).abs() < 1e-12);
+    }
+}

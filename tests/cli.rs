@@ -1,0 +1,177 @@
+//! The `axcheck` command as a user runs it.
+use std::path::PathBuf;
+use std::process::Command;
+
+fn axcheck(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_axcheck"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("axcheck runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let (code, out, err) = axcheck(args);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}\n{out}"))
+}
+
+#[test]
+fn eval_prints_the_table_2_parameters() {
+    let (code, out, err) = axcheck(&["eval", "tests/data/iso230-2_table2.csv"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("A = 9.59 µm"), "{out}");
+    assert!(out.contains("R = 6.55 µm"), "{out}");
+    assert!(out.contains("at i = 9 (1408.462 mm)"), "{out}");
+    assert!(
+        out.contains("B̄ = -3.69 µm") || out.contains("B̄ = -3.70 µm"),
+        "{out}"
+    );
+    assert!(out.contains("X̄i + 2Si"), "{out}");
+    assert!(out.contains("1750.92"), "{out}");
+}
+
+#[test]
+fn eval_json_is_the_stable_interface() {
+    let v = json(&["eval", "tests/data/iso230-2_table2.csv", "--json"]);
+    assert_eq!(v["standard"], "iso230-2:1997");
+    assert_eq!(v["kind"], "linear");
+    assert_eq!(v["unit"], "um");
+    assert_eq!(v["n"], 5);
+    let a = v["parameters"]["A"].as_f64().unwrap();
+    assert!((a - 9.586).abs() < 0.001);
+    for key in [
+        "A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B", "B_mean",
+    ] {
+        assert!(v["parameters"][key].is_number(), "{key}");
+    }
+    assert_eq!(v["at_target"]["R"], 9);
+    assert_eq!(v["targets"].as_array().unwrap().len(), 11);
+    assert_eq!(
+        v["targets"][0]["up"]["deviations"]
+            .as_array()
+            .unwrap()
+            .len(),
+        5
+    );
+
+    let g = json(&[
+        "eval",
+        "tests/data/gost27843_example.csv",
+        "--standard",
+        "gost27843",
+        "--json",
+    ]);
+    assert_eq!(g["standard"], "gost27843-88");
+    for key in [
+        "A", "A_up", "A_down", "R_max", "R_up", "R_down", "R_mean", "B_max", "B_mean",
+    ] {
+        assert!(g["parameters"][key].is_number(), "{key}");
+    }
+    assert!(g["parameters"].get("E").is_none());
+}
+
+#[test]
+fn key_value_and_csv_versions_of_real_data_agree() {
+    for name in ["ess_bifrost_slit_axis1", "ess_muts_target_x"] {
+        let kv = json(&["eval", &format!("tests/data/{name}.dat"), "--json"]);
+        let csv = json(&["eval", &format!("tests/data/{name}.csv"), "--json"]);
+        for (key, value) in csv["parameters"].as_object().unwrap() {
+            let a = value.as_f64().unwrap();
+            let b = kv["parameters"][key].as_f64().unwrap();
+            // The CSV copies round the deviations to 0.001 µm.
+            assert!((a - b).abs() < 0.005, "{name} {key}: {a} vs {b}");
+        }
+    }
+}
+
+#[test]
+fn every_standard_evaluates_the_reference_data() {
+    for standard in ["iso230-2", "gbt17421.2", "gost27843", "vdi3441", "nmtba"] {
+        for file in [
+            "iso230-2_table2.csv",
+            "gost27843_example.csv",
+            "ess_muts_target_x.dat",
+        ] {
+            let (code, out, err) =
+                axcheck(&["eval", &format!("tests/data/{file}"), "-s", standard]);
+            assert_eq!(code, 0, "{standard} {file}: {err}");
+            assert!(out.contains("Per-target results"), "{out}");
+        }
+    }
+}
+
+#[test]
+fn errors_name_the_file_and_exit_2() {
+    let dir = std::env::temp_dir().join(format!("axcheck-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, "target_mm,direction,run,deviation_um\n0,up,1,x\n").unwrap();
+    let (code, _, err) = axcheck(&["eval", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("bad.csv:2:8:"), "{err}");
+    let (code, _, err) = axcheck(&["eval", "tests/data/nope.csv"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("nope.csv"), "{err}");
+    let (code, _, err) = axcheck(&["eval", "tests/data/iso230-2_table2.csv", "-s", "iso9999"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown standard"), "{err}");
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn simulate_then_eval_closes_the_loop() {
+    let dir = std::env::temp_dir().join(format!("axcheck-sim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = dir.join("m.yaml");
+    std::fs::write(
+        &model,
+        "kind: linear\nseed: 4\nmodel: {scale_um_per_m: 12, reversal_um: 3, scatter_um: 0.3}\nplan:\n  targets: {start_mm: 0, end_mm: 800, count: 9, jitter_mm: 10}\n  runs: 5\n",
+    )
+    .unwrap();
+    let out: PathBuf = dir.join("out/data.csv");
+    let (code, _, err) = axcheck(&[
+        "simulate",
+        model.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let first = std::fs::read(&out).unwrap();
+    let (code, _, _) = axcheck(&[
+        "simulate",
+        model.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(first, std::fs::read(&out).unwrap(), "same seed, same bytes");
+    let v = json(&["eval", out.to_str().unwrap(), "--json"]);
+    let b = v["parameters"]["B_mean"].as_f64().unwrap();
+    assert!((b - 3.0).abs() < 0.5, "B̄ = {b}");
+    let (_, other, _) = axcheck(&["simulate", model.to_str().unwrap(), "--seed", "5"]);
+    assert_ne!(
+        other.as_bytes(),
+        first.as_slice(),
+        "another seed, other data"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn help_on_every_command() {
+    for cmd in [
+        vec!["--help"],
+        vec!["eval", "--help"],
+        vec!["simulate", "--help"],
+    ] {
+        let (code, out, _) = axcheck(&cmd);
+        assert_eq!(code, 0);
+        assert!(out.contains("Usage"), "{out}");
+    }
+}
