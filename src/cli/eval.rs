@@ -173,7 +173,7 @@ fn table_block(out: &mut String, e: &Evaluation, block: &[usize]) {
         row(&format!("X̄i + {k}{s_name}i"), both(&|d| d.upper));
         row(&format!("X̄i − {k}{s_name}i"), both(&|d| d.lower));
         row(
-            &format!("Ri↑↓ = {}{s_name}", 2.0 * k),
+            &format!("Ri↑↓ = {}{s_name}i", 2.0 * k),
             both(&|d| d.repeatability),
         );
     }
