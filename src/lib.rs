@@ -1,11 +1,19 @@
 //! axcheck: positioning accuracy and repeatability of numerically controlled axes.
 //!
-//! The pipeline, one module per stage: [`measurement`] reads test files, [`evaluate`]
-//! computes the parameters of a standard (pure, no I/O), [`simulate`] is the axis error
-//! model that produces test data.
+//! The pipeline, one module per stage: [`campaign`] loads and validates campaign files,
+//! [`measurement`] reads test files, [`rules`] checks each test plan against the standard,
+//! [`evaluate`] computes the parameters of a standard (pure, no I/O), [`judge`] compares
+//! them with tolerance limits, [`batch`] runs a whole campaign in parallel and [`export`]
+//! writes its outputs. [`simulate`] is the axis error model that produces test data.
 
 pub mod atomic;
+pub mod batch;
+pub mod campaign;
 pub mod evaluate;
+pub mod export;
+pub mod judge;
 pub mod measurement;
+pub mod nde;
+pub mod rules;
 pub mod simulate;
 pub mod units;

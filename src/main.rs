@@ -35,6 +35,27 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Evaluate a whole campaign and write its outputs (exit 0: all pass, 1: any axis
+    /// fails, is noncompliant or has an error, 2: the campaign cannot be read).
+    Run {
+        /// Campaign file (YAML).
+        campaign: PathBuf,
+        /// Output folder.
+        #[arg(long, short, default_value = "out")]
+        out: PathBuf,
+        /// Worker threads (default: all cores).
+        #[arg(long, short, default_value_t = 0)]
+        jobs: usize,
+    },
+    /// The CI gate: evaluate a campaign and write nothing (exit 0: every axis passes,
+    /// 1: any axis fails, is noncompliant or has an error, 2: the campaign cannot be read).
+    Check {
+        /// Campaign file (YAML).
+        campaign: PathBuf,
+        /// Worker threads (default: all cores).
+        #[arg(long, short, default_value_t = 0)]
+        jobs: usize,
+    },
     /// Simulate a positioning test from an error model and a test plan (YAML).
     Simulate {
         /// Simulation file: kind, seed, model terms and plan.
@@ -98,6 +119,16 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 cli::eval::render(&name, &evaluation)
             };
             print(&text)?;
+        }
+        Command::Run {
+            campaign,
+            out,
+            jobs,
+        } => {
+            return Ok(ExitCode::from(cli::campaign::run(&campaign, &out, jobs)?));
+        }
+        Command::Check { campaign, jobs } => {
+            return Ok(ExitCode::from(cli::campaign::check(&campaign, jobs)?));
         }
         Command::Simulate {
             model,

@@ -1,5 +1,6 @@
 //! Command-line front end: parses arguments, calls the library, prints results.
 
+pub mod campaign;
 pub mod eval;
 pub mod simulate;
 pub mod text;

@@ -1,0 +1,385 @@
+//! Evaluating a whole campaign: every axis in parallel, each test of each axis read,
+//! corrected, rule-checked, evaluated and judged. A broken file or axis fails that axis
+//! with its message; the rest of the campaign completes.
+
+use crate::campaign::{AxisSpec, Campaign, CampaignInfo, MachineInfo, SensorKind};
+use crate::evaluate::gost27843::{Gost27843, SMethod};
+use crate::evaluate::{Evaluation, Standard, StandardId};
+use crate::judge::{self, Judgement, Limits, Spec, Verdict};
+use crate::measurement::{self, AxisData};
+use crate::nde::{self, NdeCorrection};
+use crate::rules::{self, Finding, PlanContext, Severity};
+use crate::units::AxisKind;
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+use std::path::{Component, Path};
+use std::sync::Arc;
+
+/// The result of one test of one axis: one row of the summary.
+#[derive(Debug, Clone)]
+pub struct AxisTest {
+    pub machine: Arc<MachineInfo>,
+    pub axis: String,
+    /// The axis as the campaign gives it (absent when it could not be read).
+    pub spec: Option<Arc<AxisSpec>>,
+    /// Measurement file, relative to the campaign's folder, `/`-separated.
+    pub file: Option<String>,
+    /// Index of this test among the axis's tests (1-based) and their number.
+    pub test: usize,
+    pub tests: usize,
+    pub verdict: Verdict,
+    pub error: Option<String>,
+    pub data: Option<AxisData>,
+    pub evaluation: Option<Evaluation>,
+    pub judgement: Option<Judgement>,
+    pub findings: Vec<Finding>,
+    pub nde: Option<NdeCorrection>,
+}
+
+impl AxisTest {
+    pub fn kind(&self) -> Option<AxisKind> {
+        self.spec.as_ref().map(|s| s.raw.kind)
+    }
+
+    pub fn standard(&self) -> Option<StandardId> {
+        self.spec.as_ref().map(|s| s.standard)
+    }
+
+    /// `VMC-07 X` or `VMC-07 X (2/3)`.
+    pub fn label(&self) -> String {
+        if self.tests > 1 {
+            format!(
+                "{} {} ({}/{})",
+                self.machine.id, self.axis, self.test, self.tests
+            )
+        } else {
+            format!("{} {}", self.machine.id, self.axis)
+        }
+    }
+
+    /// True when no tolerance applied to this test.
+    pub fn no_tolerance(&self) -> bool {
+        self.judgement.as_ref().is_none_or(|j| j.limits.is_empty())
+    }
+}
+
+/// A whole campaign's results.
+#[derive(Debug, Clone)]
+pub struct CampaignResult {
+    pub info: CampaignInfo,
+    /// The campaign file's name (not its full path: outputs stay the same across checkouts).
+    pub file_name: String,
+    pub standard: StandardId,
+    pub tests: Vec<AxisTest>,
+}
+
+impl CampaignResult {
+    /// Number of tests per verdict.
+    pub fn counts(&self) -> BTreeMap<Verdict, usize> {
+        let mut counts = BTreeMap::from([
+            (Verdict::Pass, 0),
+            (Verdict::Fail, 0),
+            (Verdict::Noncompliant, 0),
+            (Verdict::Error, 0),
+        ]);
+        for t in &self.tests {
+            *counts.entry(t.verdict).or_default() += 1;
+        }
+        counts
+    }
+
+    /// True when every test passes.
+    pub fn all_pass(&self) -> bool {
+        self.tests.iter().all(|t| t.verdict == Verdict::Pass)
+    }
+}
+
+/// Options of a batch run.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Options {
+    /// Worker threads (0: all cores).
+    pub jobs: usize,
+}
+
+/// Evaluates every axis of `campaign`; `progress` is called once per finished test.
+pub fn run(
+    campaign: &Campaign,
+    options: Options,
+    progress: &(dyn Fn(&AxisTest) + Sync),
+) -> CampaignResult {
+    let specs = load_specs(campaign);
+    let work: Vec<(Arc<MachineInfo>, &crate::campaign::AxisEntry)> = campaign
+        .machines
+        .iter()
+        .flat_map(|m| {
+            let info = Arc::new(m.info.clone());
+            m.axes.iter().map(move |a| (info.clone(), a))
+        })
+        .collect();
+    let evaluate_all = || -> Vec<AxisTest> {
+        work.par_iter()
+            .flat_map_iter(|(machine, entry)| {
+                let tests = run_axis(campaign, machine, entry, &specs);
+                for t in &tests {
+                    progress(t);
+                }
+                tests
+            })
+            .collect()
+    };
+    let tests = match rayon::ThreadPoolBuilder::new()
+        .num_threads(options.jobs)
+        .build()
+    {
+        Ok(pool) => pool.install(evaluate_all),
+        Err(_) => evaluate_all(),
+    };
+    CampaignResult {
+        info: campaign.info.clone(),
+        file_name: campaign
+            .file
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default(),
+        standard: campaign.standard,
+        tests,
+    }
+}
+
+/// Every spec the campaign names, loaded once: `specs/NAME.yaml` beside the campaign, a
+/// path to a `.yaml` file, or a spec built into axcheck.
+fn load_specs(campaign: &Campaign) -> BTreeMap<String, Result<Arc<Spec>, String>> {
+    let mut specs = BTreeMap::new();
+    for (_, entry) in campaign.axes() {
+        if let Ok(axis) = &entry.spec
+            && let Some(name) = &axis.spec
+            && !specs.contains_key(name)
+        {
+            specs.insert(name.clone(), load_spec(&campaign.dir, name).map(Arc::new));
+        }
+    }
+    specs
+}
+
+fn load_spec(dir: &Path, name: &str) -> Result<Spec, String> {
+    let is_path = name.ends_with(".yaml") || name.ends_with(".yml");
+    let candidate = if is_path {
+        dir.join(name)
+    } else {
+        dir.join("specs").join(format!("{name}.yaml"))
+    };
+    if candidate.is_file() {
+        let text = std::fs::read_to_string(&candidate)
+            .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;
+        return Spec::from_yaml(&text, &candidate.display().to_string());
+    }
+    if !is_path && let Some((_, text)) = judge::BUILTIN_SPECS.iter().find(|(n, _)| *n == name) {
+        return Spec::from_yaml(text, &format!("built-in spec {name}"));
+    }
+    let builtin: Vec<&str> = judge::BUILTIN_SPECS.iter().map(|(n, _)| *n).collect();
+    Err(format!(
+        "spec `{name}` not found: no {} and no built-in spec of that name (built in: {})",
+        candidate.display(),
+        builtin.join(", ")
+    ))
+}
+
+/// Which test of which axis a result belongs to.
+#[derive(Clone)]
+struct Slot {
+    machine: Arc<MachineInfo>,
+    axis: String,
+    spec: Option<Arc<AxisSpec>>,
+    file: Option<String>,
+    test: usize,
+    tests: usize,
+}
+
+impl Slot {
+    /// A result with `verdict` and no evaluation yet.
+    fn outcome(self, verdict: Verdict, error: Option<String>) -> AxisTest {
+        AxisTest {
+            machine: self.machine,
+            axis: self.axis,
+            spec: self.spec,
+            file: self.file,
+            test: self.test,
+            tests: self.tests,
+            verdict,
+            error,
+            data: None,
+            evaluation: None,
+            judgement: None,
+            findings: Vec::new(),
+            nde: None,
+        }
+    }
+
+    fn error(self, message: String) -> AxisTest {
+        self.outcome(Verdict::Error, Some(message))
+    }
+}
+
+fn run_axis(
+    campaign: &Campaign,
+    machine: &Arc<MachineInfo>,
+    entry: &crate::campaign::AxisEntry,
+    specs: &BTreeMap<String, Result<Arc<Spec>, String>>,
+) -> Vec<AxisTest> {
+    let slot = Slot {
+        machine: machine.clone(),
+        axis: entry.name.clone(),
+        spec: None,
+        file: None,
+        test: 1,
+        tests: 1,
+    };
+    let axis = match &entry.spec {
+        Ok(axis) => Arc::new(axis.clone()),
+        Err(message) => return vec![slot.error(message.clone())],
+    };
+    let slot = Slot {
+        spec: Some(axis.clone()),
+        ..slot
+    };
+    let files = match axis
+        .data
+        .resolve(&campaign.dir, campaign.info.allow_outside_paths)
+    {
+        Ok(files) => files,
+        Err(message) => {
+            let at = format!("{}:{}", campaign.file.display(), axis.line);
+            return vec![slot.error(format!("{at}: {}: data: {message}", entry.name))];
+        }
+    };
+    let spec = match axis.spec.as_ref().map(|name| specs.get(name).cloned()) {
+        None => Ok(None),
+        Some(Some(Ok(spec))) => Ok(Some(spec)),
+        Some(Some(Err(e))) => Err(e),
+        Some(None) => Err("spec not loaded".to_string()),
+    };
+    let tests = files.len();
+    files
+        .iter()
+        .enumerate()
+        .map(|(k, path)| {
+            let slot = Slot {
+                file: Some(relative_name(&campaign.dir, path)),
+                test: k + 1,
+                tests,
+                ..slot.clone()
+            };
+            match &spec {
+                Err(e) => slot.error(e.clone()),
+                Ok(spec) => run_test(slot, &axis, spec.as_deref(), path),
+            }
+        })
+        .collect()
+}
+
+/// `path` relative to the campaign folder with `/` separators (stable across systems).
+fn relative_name(base: &Path, path: &Path) -> String {
+    let rel = path.strip_prefix(base).unwrap_or(path);
+    rel.components()
+        .filter(|c| !matches!(c, Component::CurDir))
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect::<Vec<_>>()
+        .join("/")
+}
+
+fn run_test(slot: Slot, axis: &AxisSpec, spec: Option<&Spec>, path: &Path) -> AxisTest {
+    let data = match measurement::read_file(path) {
+        Ok(d) => d,
+        Err(e) => return slot.error(e.to_string()),
+    };
+    if data.kind != axis.raw.kind {
+        let message = format!(
+            "{}: the file holds a {} axis (target_{}) but the campaign declares axis `{}` {}",
+            path.display(),
+            data.kind,
+            data.kind.position_unit(),
+            slot.axis,
+            axis.raw.kind
+        );
+        return slot.error(message);
+    }
+    let (data, nde) = apply_nde(axis, data);
+    let ctx = PlanContext {
+        kind: axis.raw.kind,
+        standard: axis.standard,
+        axis_travel: axis.raw.travel,
+        measurement_travel: axis.raw.measurement_travel,
+        pitch: axis.raw.pitch,
+    };
+    let findings = rules::check(&ctx, &data);
+    let evaluation = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
+        Gost27843 {
+            s_method: SMethod::Ranges,
+        }
+        .evaluate(&data)
+    } else {
+        crate::evaluate::evaluate(&data, axis.standard)
+    };
+    let (first, last) = data.measurement_travel();
+    let (verdict, error, judgement) =
+        match Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
+            Err(e) => (Verdict::Error, Some(e), None),
+            Ok(limits) => {
+                let judgement = judge::judge(&evaluation, &limits);
+                let verdict = if findings.iter().any(|f| f.severity == Severity::Error) {
+                    Verdict::Noncompliant
+                } else if judgement.failed().next().is_some() {
+                    Verdict::Fail
+                } else {
+                    Verdict::Pass
+                };
+                (verdict, None, Some(judgement))
+            }
+        };
+    AxisTest {
+        data: Some(data),
+        evaluation: Some(evaluation),
+        judgement,
+        findings,
+        nde,
+        ..slot.outcome(verdict, error)
+    }
+}
+
+/// Applies the NDE correction when the campaign gives the coefficient and temperatures
+/// and the data are not already corrected (clause 3.1).
+fn apply_nde(axis: &AxisSpec, data: AxisData) -> (AxisData, Option<NdeCorrection>) {
+    let Some(nde) = &axis.raw.conditions.nde else {
+        return (data, None);
+    };
+    let Some(alpha) = nde.coefficient_um_per_m_c else {
+        return (data, None);
+    };
+    if nde.corrected {
+        return (data, None);
+    }
+    let temperature = if data
+        .temperature_names
+        .iter()
+        .any(|n| !n.to_ascii_lowercase().contains("air"))
+    {
+        Some(nde::Temperature::PerReading)
+    } else {
+        let readings: Vec<f64> = axis
+            .raw
+            .conditions
+            .temperature_sensors
+            .iter()
+            .filter(|s| s.kind == SensorKind::Material)
+            .flat_map(|s| [s.start_c, s.end_c])
+            .flatten()
+            .collect();
+        (!readings.is_empty()).then(|| {
+            nde::Temperature::Constant(readings.iter().sum::<f64>() / readings.len() as f64)
+        })
+    };
+    match temperature.and_then(|t| nde::correct(&data, alpha, t)) {
+        Some((corrected, info)) => (corrected, Some(info)),
+        None => (data, None),
+    }
+}

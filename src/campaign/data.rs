@@ -1,0 +1,184 @@
+//! Where an axis's measurement files are: one file, a list, or a folder and a glob.
+//!
+//! Paths are relative to the campaign file's folder. A path that is absolute or climbs out
+//! of that folder with `..` is refused unless the campaign sets `allow_outside_paths:
+//! true`: a campaign copied between machines should not silently read other files.
+
+use std::path::{Component, Path, PathBuf};
+
+/// The `data:` of an axis.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DataSource {
+    /// One file or a list of files: several files are several tests of the axis.
+    Files(Vec<String>),
+    /// Every file under `dir` whose path relative to `dir` matches `glob`.
+    Glob { dir: String, glob: String },
+}
+
+impl DataSource {
+    pub fn from_value(value: &serde_norway::Value) -> Result<DataSource, String> {
+        use serde_norway::Value;
+        match value {
+            Value::String(s) if !s.trim().is_empty() => Ok(DataSource::Files(vec![s.clone()])),
+            Value::Sequence(items) if !items.is_empty() => items
+                .iter()
+                .map(|v| v.as_str().map(str::to_string).ok_or(()))
+                .collect::<Result<Vec<_>, _>>()
+                .map(DataSource::Files)
+                .map_err(|_| "expected a list of file paths".to_string()),
+            Value::Mapping(map) => {
+                let mut dir = None;
+                let mut glob = None;
+                for (k, v) in map {
+                    match (k.as_str(), v.as_str()) {
+                        (Some("dir"), Some(d)) => dir = Some(d.to_string()),
+                        (Some("glob"), Some(g)) => glob = Some(g.to_string()),
+                        (Some(other), _) => {
+                            return Err(format!(
+                                "unknown key `{other}`; expected {{dir: FOLDER, glob: PATTERN}}"
+                            ));
+                        }
+                        _ => return Err("expected {dir: FOLDER, glob: PATTERN}".into()),
+                    }
+                }
+                match (dir, glob) {
+                    (Some(dir), Some(glob)) => Ok(DataSource::Glob { dir, glob }),
+                    _ => Err(
+                        "expected both `dir` and `glob`, e.g. {dir: data/vmc07, glob: \"x-*.csv\"}"
+                            .into(),
+                    ),
+                }
+            }
+            _ => {
+                Err("expected a file path, a list of paths, or {dir: FOLDER, glob: PATTERN}".into())
+            }
+        }
+    }
+
+    /// The files, resolved against `base` and sorted (a glob's matches by path).
+    pub fn resolve(&self, base: &Path, allow_outside: bool) -> Result<Vec<PathBuf>, String> {
+        match self {
+            DataSource::Files(files) => files
+                .iter()
+                .map(|f| inside(base, f, allow_outside))
+                .collect(),
+            DataSource::Glob { dir, glob } => {
+                let root = inside(base, dir, allow_outside)?;
+                if !root.is_dir() {
+                    return Err(format!("data folder {} does not exist", root.display()));
+                }
+                let matcher = globset::Glob::new(glob)
+                    .map_err(|e| format!("bad glob `{glob}`: {e}"))?
+                    .compile_matcher();
+                let hidden_ok = glob.starts_with('.');
+                let mut found = Vec::new();
+                // Symbolic links are not followed: a link loop cannot hang the walk.
+                for entry in walkdir::WalkDir::new(&root)
+                    .follow_links(false)
+                    .sort_by_file_name()
+                {
+                    let entry =
+                        entry.map_err(|e| format!("cannot list {}: {e}", root.display()))?;
+                    if !entry.file_type().is_file() {
+                        continue;
+                    }
+                    let rel = entry.path().strip_prefix(&root).unwrap_or(entry.path());
+                    let hidden = rel
+                        .components()
+                        .any(|c| c.as_os_str().to_string_lossy().starts_with('.'));
+                    if (hidden_ok || !hidden) && matcher.is_match(rel) {
+                        found.push(entry.path().to_path_buf());
+                    }
+                }
+                if found.is_empty() {
+                    return Err(format!("no file in {} matches `{glob}`", root.display()));
+                }
+                found.sort();
+                Ok(found)
+            }
+        }
+    }
+}
+
+/// `base/relative`, refusing absolute paths and paths that leave `base` unless allowed.
+fn inside(base: &Path, relative: &str, allow_outside: bool) -> Result<PathBuf, String> {
+    if relative.contains('\0') {
+        return Err(format!(
+            "path `{}` contains a NUL byte",
+            relative.escape_debug()
+        ));
+    }
+    let rel = Path::new(relative);
+    if !allow_outside {
+        if rel.is_absolute() || rel.has_root() {
+            return Err(format!(
+                "path `{relative}` is absolute; data paths are relative to the campaign's folder (set campaign.allow_outside_paths: true to allow it)"
+            ));
+        }
+        let mut depth: i64 = 0;
+        for c in rel.components() {
+            match c {
+                Component::ParentDir => depth -= 1,
+                Component::Normal(_) => depth += 1,
+                _ => {}
+            }
+            if depth < 0 {
+                return Err(format!(
+                    "path `{relative}` leaves the campaign's folder; set campaign.allow_outside_paths: true to allow it"
+                ));
+            }
+        }
+    }
+    Ok(base.join(rel))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paths_stay_inside_unless_allowed() {
+        let base = Path::new("camp");
+        assert_eq!(
+            inside(base, "data/x.csv", false).unwrap(),
+            Path::new("camp/data/x.csv")
+        );
+        assert_eq!(
+            inside(base, "data/../x.csv", false).unwrap(),
+            Path::new("camp/data/../x.csv")
+        );
+        assert!(
+            inside(base, "../x.csv", false)
+                .unwrap_err()
+                .contains("leaves the campaign")
+        );
+        assert!(inside(base, "data/../../x.csv", false).is_err());
+        assert!(
+            inside(base, "/etc/passwd", false)
+                .unwrap_err()
+                .contains("absolute")
+        );
+        assert!(inside(base, "../x.csv", true).is_ok());
+    }
+
+    #[test]
+    fn data_forms() {
+        let v: serde_norway::Value = serde_norway::from_str("{dir: d, glob: \"*.csv\"}").unwrap();
+        assert_eq!(
+            DataSource::from_value(&v).unwrap(),
+            DataSource::Glob {
+                dir: "d".into(),
+                glob: "*.csv".into()
+            }
+        );
+        let v: serde_norway::Value = serde_norway::from_str("{dir: d}").unwrap();
+        assert!(DataSource::from_value(&v).unwrap_err().contains("both"));
+        let v: serde_norway::Value = serde_norway::from_str("[a.csv, b.csv]").unwrap();
+        assert_eq!(
+            DataSource::from_value(&v).unwrap(),
+            DataSource::Files(vec!["a.csv".into(), "b.csv".into()])
+        );
+        let v: serde_norway::Value = serde_norway::from_str("12").unwrap();
+        assert!(DataSource::from_value(&v).is_err());
+    }
+}

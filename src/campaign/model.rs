@@ -1,0 +1,238 @@
+//! The campaign file's types. Core keys are fixed (scripts write them); everything a
+//! test report needs by ISO 230-2 clause 7.1 has a key of its own.
+
+use crate::simulate::Cycle;
+use crate::units::AxisKind;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// The `campaign:` block.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CampaignInfo {
+    pub name: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub site: Option<String>,
+    /// `periodic`, `acceptance`, `comparison`, `type`, `compensation` … (ISO 230-2 clause 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub purpose: Option<String>,
+    /// Test date, YYYY-MM-DD; also the date printed in reports.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub date: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inspector: Option<String>,
+    /// Default standard for every axis (`iso230-2` when absent).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub standard: Option<String>,
+    /// Default acceptance spec for every axis.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spec: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+    /// Allow data paths that are absolute or leave the campaign's folder.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub allow_outside_paths: bool,
+    #[serde(default)]
+    pub output: OutputOptions,
+}
+
+/// `campaign.output`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OutputOptions {
+    /// Write PDF reports in `run`.
+    pub pdf: bool,
+    /// Model check and diagnosis of every axis.
+    pub diagnose: bool,
+}
+
+impl Default for OutputOptions {
+    fn default() -> Self {
+        OutputOptions {
+            pdf: true,
+            diagnose: true,
+        }
+    }
+}
+
+/// A machine (clause 7.1: model, name, type, axis travels).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MachineInfo {
+    pub id: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub serial: Option<String>,
+    /// E.g. "vertical machining centre".
+    #[serde(rename = "type", default, skip_serializing_if = "Option::is_none")]
+    pub machine_type: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub location: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub notes: Option<String>,
+    /// The axes as written; taken out and parsed one by one by the loader.
+    #[serde(default, skip_serializing)]
+    pub axes: serde_norway::Value,
+}
+
+/// Axis travel: a length (`1200`) or the coordinates of its ends (`[-600, 600]`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum Travel {
+    Length(f64),
+    Range([f64; 2]),
+}
+
+impl Travel {
+    pub fn length(self) -> f64 {
+        match self {
+            Travel::Length(l) => l,
+            Travel::Range([a, b]) => (b - a).abs(),
+        }
+    }
+}
+
+/// An axis as written in the campaign.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AxisRaw {
+    pub name: String,
+    pub kind: AxisKind,
+    /// Axis travel (clause 2.1), mm or deg.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub travel: Option<Travel>,
+    /// Measurement travel (clause 2.2), [first, last], mm or deg.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub measurement_travel: Option<[f64; 2]>,
+    /// One file, a list, or `{dir, glob}`.
+    pub data: serde_norway::Value,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub standard: Option<String>,
+    /// Acceptance spec (overrides the campaign's); `none` for no spec.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spec: Option<String>,
+    /// Per-parameter limits, µm (linear) or arcsec (rotary), overriding the spec.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub tolerances: BTreeMap<String, f64>,
+    /// Lead-screw or encoder pitch, mm or deg.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pitch: Option<f64>,
+    /// GOST 27843 only: S from ranges, formula (6).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub s_from_ranges: bool,
+    #[serde(default)]
+    pub conditions: Conditions,
+}
+
+/// The test conditions clause 7.1 asks the report to state.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Conditions {
+    /// Measuring instrument and its position (4.3.1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub instrument: Option<Instrument>,
+    /// Test equipment: maker, model and serial of laser head, optics, sensors.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub equipment: Vec<String>,
+    /// Type of positioning element (ball screw and rotary encoder, glass scale, …).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub positioning_element: Option<String>,
+    /// Temperature sensors on machine parts and in the air, start and end readings.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub temperature_sensors: Vec<TemperatureSensor>,
+    /// Air temperature, pressure and humidity at start and end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub air: Option<Air>,
+    /// Nominal differential expansion correction (3.1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub nde: Option<Nde>,
+    #[serde(
+        default,
+        alias = "feed_deg_per_min",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub feed_mm_per_min: Option<f64>,
+    /// Dwell at each target, s.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dwell_s: Option<f64>,
+    /// Compensation active during the test (3.2), e.g. "reversal and lead screw" or "none".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compensation: Option<String>,
+    /// Positions of the axes not under test (3.2), e.g. "Y = 300 mm, Z = 350 mm".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub other_axes: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tool_offset: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub workpiece_offset: Option<String>,
+    /// Warm-up before the test (3.3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub warm_up: Option<String>,
+    /// Test cycle: standard, step or pilgrim.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cycle: Option<Cycle>,
+    /// Pressure of air or oil where used (7.1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fluid_pressure: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub notes: Option<String>,
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Instrument {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub serial: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub position: Option<String>,
+}
+
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SensorKind {
+    #[default]
+    Material,
+    Air,
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TemperatureSensor {
+    pub name: String,
+    #[serde(default)]
+    pub kind: SensorKind,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub position: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub end_c: Option<f64>,
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Air {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature_start_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature_end_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pressure_kpa: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub humidity_pct: Option<f64>,
+}
+
+/// NDE correction (clause 3.1).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Nde {
+    /// The data are already corrected to 20 °C (by the instrument).
+    #[serde(default)]
+    pub corrected: bool,
+    /// Effective expansion coefficient of the positioning system, µm/(m·°C).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coefficient_um_per_m_c: Option<f64>,
+}

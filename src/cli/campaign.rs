@@ -1,0 +1,183 @@
+//! `axcheck run` and `axcheck check`: a whole campaign.
+
+use anyhow::{Context, Result, bail};
+use axcheck::batch::{self, AxisTest, CampaignResult};
+use axcheck::campaign::Campaign;
+use axcheck::export;
+use axcheck::judge::Verdict;
+use axcheck::units::fmt_fixed;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+/// Exit status of a campaign: 0 when every axis passes, 1 otherwise.
+pub fn exit_code(result: &CampaignResult) -> u8 {
+    u8::from(!result.all_pass())
+}
+
+/// Evaluates a campaign, reporting progress on stderr.
+pub fn evaluate(campaign: &Campaign, jobs: usize) -> CampaignResult {
+    let total: usize = campaign.axes().count();
+    let done = AtomicUsize::new(0);
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let bar = indicatif::ProgressBar::new(total as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} {pos}/{len} axes {wide_bar} {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let progress = |t: &AxisTest| {
+        let k = done.fetch_add(1, Ordering::Relaxed) + 1;
+        match &bar {
+            Some(bar) => {
+                bar.set_position(k.min(total) as u64);
+                bar.set_message(format!("{} {}", t.label(), t.verdict));
+            }
+            None => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
+        }
+    };
+    let result = batch::run(campaign, batch::Options { jobs }, &progress);
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    result
+}
+
+/// Refuses an output folder that is a file, or is (or lies inside) a folder holding the
+/// campaign's data, so outputs never mix with or overwrite measurements.
+pub fn check_output_dir(campaign: &Campaign, out: &Path) -> Result<()> {
+    if out.exists() && !out.is_dir() {
+        bail!(
+            "the output folder {} is a file; choose a folder with --out",
+            out.display()
+        );
+    }
+    let canonical = |p: &Path| std::fs::canonicalize(p).ok();
+    let Some(out_abs) = canonical(out).or_else(|| {
+        let parent = out
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        canonical(parent).map(|p| p.join(out.file_name().unwrap_or_default()))
+    }) else {
+        return Ok(());
+    };
+    for (_, entry) in campaign.axes() {
+        let Ok(axis) = &entry.spec else { continue };
+        let folders: Vec<PathBuf> = match &axis.data {
+            axcheck::campaign::data::DataSource::Files(files) => files
+                .iter()
+                .filter_map(|f| campaign.dir.join(f).parent().map(Path::to_path_buf))
+                .collect(),
+            axcheck::campaign::data::DataSource::Glob { dir, .. } => vec![campaign.dir.join(dir)],
+        };
+        for folder in folders {
+            if let Some(data) = canonical(&folder)
+                && out_abs.starts_with(&data)
+            {
+                bail!(
+                    "the output folder {} is inside the data folder {} of {} {}; choose another --out",
+                    out.display(),
+                    folder.display(),
+                    entry.name,
+                    axis.raw.name
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// One line per test that did not pass, for the terminal.
+pub fn problems(result: &CampaignResult) -> Vec<String> {
+    let width = result
+        .tests
+        .iter()
+        .map(|t| t.label().chars().count())
+        .max()
+        .unwrap_or(0);
+    result
+        .tests
+        .iter()
+        .filter(|t| t.verdict != Verdict::Pass)
+        .map(|t| {
+            let unit = t.kind().map_or("", |k| k.deviation_symbol());
+            let why = match t.verdict {
+                Verdict::Error => t.error.clone().unwrap_or_default(),
+                Verdict::Noncompliant => t
+                    .findings
+                    .iter()
+                    .filter(|f| f.severity == axcheck::rules::Severity::Error)
+                    .map(|f| format!("{} ({}): {}", f.id, f.clause, f.message))
+                    .collect::<Vec<_>>()
+                    .join("; "),
+                _ => t
+                    .judgement
+                    .iter()
+                    .flat_map(|j| j.failed())
+                    .map(|c| {
+                        format!(
+                            "{} = {} {unit} > {} {unit}",
+                            c.key,
+                            fmt_fixed(c.value.abs(), 2),
+                            fmt_fixed(c.limit, 2)
+                        )
+                    })
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            };
+            format!(
+                "  {:<12} {:<width$}  {why}",
+                t.verdict.name().to_uppercase(),
+                t.label()
+            )
+        })
+        .collect()
+}
+
+/// The one-line count of verdicts.
+pub fn counts_line(result: &CampaignResult) -> String {
+    let c = result.counts();
+    format!(
+        "{}: {} tests: {} pass, {} fail, {} noncompliant, {} error",
+        result.info.name,
+        result.tests.len(),
+        c[&Verdict::Pass],
+        c[&Verdict::Fail],
+        c[&Verdict::Noncompliant],
+        c[&Verdict::Error]
+    )
+}
+
+/// `axcheck run`.
+pub fn run(path: &Path, out: &Path, jobs: usize) -> Result<u8> {
+    let start = Instant::now();
+    let campaign = Campaign::load(path)?;
+    check_output_dir(&campaign, out)?;
+    let result = evaluate(&campaign, jobs);
+    let written = export::write_all(&result, &export::table_exporters(), out)
+        .with_context(|| format!("writing the outputs to {}", out.display()))?;
+    println!("{}", counts_line(&result));
+    for line in problems(&result) {
+        println!("{line}");
+    }
+    println!(
+        "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.parquet, results.json, junit.xml",
+        out.display(),
+        written.len(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(exit_code(&result))
+}
+
+/// `axcheck check`: the CI gate; writes nothing.
+pub fn check(path: &Path, jobs: usize) -> Result<u8> {
+    let result = evaluate(&Campaign::load(path)?, jobs);
+    println!("{}", counts_line(&result));
+    for line in problems(&result) {
+        println!("{line}");
+    }
+    Ok(exit_code(&result))
+}

@@ -1,0 +1,148 @@
+//! `junit.xml`: one test case per axis test, so CI servers show the campaign as tests.
+//! A failing parameter or a broken rule is a `<failure>` naming parameter, value, limit
+//! and rule ids; an axis that could not be evaluated is an `<error>`.
+
+use super::{ExportError, Exporter, OutputFile};
+use crate::batch::CampaignResult;
+use crate::judge::Verdict;
+use crate::rules::Severity;
+use crate::units::fmt_fixed;
+use std::fmt::Write;
+
+pub struct Junit;
+
+/// Escapes text for XML attributes and content; drops characters XML 1.0 forbids.
+pub fn escape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            '\t' | '\n' | '\r' => out.push(c),
+            c if (c as u32) < 0x20 || c == '\u{FFFE}' || c == '\u{FFFF}' => {}
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+impl Exporter for Junit {
+    fn name(&self) -> &'static str {
+        "junit"
+    }
+
+    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+        let count = |v: Verdict| result.tests.iter().filter(|t| t.verdict == v).count();
+        let failures = count(Verdict::Fail) + count(Verdict::Noncompliant);
+        let errors = count(Verdict::Error);
+        let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+        let _ = writeln!(
+            out,
+            "<testsuites name=\"{}\" tests=\"{}\" failures=\"{failures}\" errors=\"{errors}\">",
+            escape(&result.info.name),
+            result.tests.len()
+        );
+        // One suite per machine, in campaign order.
+        let mut machines: Vec<&str> = Vec::new();
+        for t in &result.tests {
+            if !machines.contains(&t.machine.id.as_str()) {
+                machines.push(&t.machine.id);
+            }
+        }
+        for machine in machines {
+            let tests: Vec<_> = result
+                .tests
+                .iter()
+                .filter(|t| t.machine.id == machine)
+                .collect();
+            let f = tests
+                .iter()
+                .filter(|t| matches!(t.verdict, Verdict::Fail | Verdict::Noncompliant))
+                .count();
+            let e = tests.iter().filter(|t| t.verdict == Verdict::Error).count();
+            let _ = writeln!(
+                out,
+                "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{f}\" errors=\"{e}\" skipped=\"0\">",
+                escape(machine),
+                tests.len()
+            );
+            for t in tests {
+                let name = match &t.file {
+                    Some(file) if t.tests > 1 => format!("{} [{file}]", t.axis),
+                    _ => t.axis.clone(),
+                };
+                let _ = write!(
+                    out,
+                    "    <testcase classname=\"{}.{}\" name=\"{}\"",
+                    escape(&result.info.name),
+                    escape(machine),
+                    escape(&name)
+                );
+                if let Some(file) = &t.file {
+                    let _ = write!(out, " file=\"{}\"", escape(file));
+                }
+                let unit = t.kind().map_or("", |k| k.deviation_symbol());
+                let mut body = Vec::new();
+                if let Some(j) = &t.judgement {
+                    for c in j.failed() {
+                        body.push(format!(
+                            "{} = {} {unit} over its limit {} {unit} (margin {})",
+                            c.key,
+                            fmt_fixed(c.value, 3),
+                            fmt_fixed(c.limit, 3),
+                            fmt_fixed(c.margin, 3)
+                        ));
+                    }
+                }
+                for finding in t.findings.iter().filter(|f| f.severity == Severity::Error) {
+                    body.push(format!(
+                        "rule {} ({}): {}",
+                        finding.id, finding.clause, finding.message
+                    ));
+                }
+                match t.verdict {
+                    Verdict::Pass => out.push_str("/>\n"),
+                    Verdict::Fail | Verdict::Noncompliant => {
+                        let message = body.first().cloned().unwrap_or_default();
+                        let _ = write!(
+                            out,
+                            ">\n      <failure type=\"{}\" message=\"{}\">{}</failure>\n    </testcase>\n",
+                            t.verdict,
+                            escape(&message),
+                            escape(&body.join("\n"))
+                        );
+                    }
+                    Verdict::Error => {
+                        let message = t.error.clone().unwrap_or_default();
+                        let _ = write!(
+                            out,
+                            ">\n      <error type=\"error\" message=\"{}\">{}</error>\n    </testcase>\n",
+                            escape(&message),
+                            escape(&message)
+                        );
+                    }
+                }
+            }
+            out.push_str("  </testsuite>\n");
+        }
+        out.push_str("</testsuites>\n");
+        Ok(vec![OutputFile {
+            path: "junit.xml".into(),
+            bytes: out.into_bytes(),
+        }])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn escapes_markup_and_control_characters() {
+        assert_eq!(
+            super::escape("a<b>&\"c'\u{1}"),
+            "a&lt;b&gt;&amp;&quot;c&apos;"
+        );
+    }
+}

@@ -1,0 +1,69 @@
+//! `summary.parquet`: the summary table through polars, typed columns (text, integer,
+//! float; empty cells are nulls).
+
+use super::table::{Cell, ColumnKind, columns, rows};
+use super::{ExportError, Exporter, OutputFile};
+use crate::batch::CampaignResult;
+use polars::prelude::*;
+
+pub struct Parquet;
+
+impl Exporter for Parquet {
+    fn name(&self) -> &'static str {
+        "parquet"
+    }
+
+    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+        let err = |e: PolarsError| ExportError::Format {
+            format: "parquet",
+            message: e.to_string(),
+        };
+        let rows = rows(result);
+        let height = rows.len();
+        let cols: Vec<Column> = columns()
+            .into_iter()
+            .enumerate()
+            .map(|(k, (name, kind))| {
+                let cells = rows.iter().map(|r| &r[k]);
+                match kind {
+                    ColumnKind::Text => Column::new(
+                        name.into(),
+                        cells
+                            .map(|c| match c {
+                                Cell::Text(s) => Some(s.clone()),
+                                _ => None,
+                            })
+                            .collect::<Vec<Option<String>>>(),
+                    ),
+                    ColumnKind::Int => Column::new(
+                        name.into(),
+                        cells
+                            .map(|c| match c {
+                                Cell::Int(i) => Some(*i),
+                                _ => None,
+                            })
+                            .collect::<Vec<Option<i64>>>(),
+                    ),
+                    ColumnKind::Number => Column::new(
+                        name.into(),
+                        cells
+                            .map(|c| match c {
+                                Cell::Number(x) if x.is_finite() => Some(*x),
+                                _ => None,
+                            })
+                            .collect::<Vec<Option<f64>>>(),
+                    ),
+                }
+            })
+            .collect();
+        let mut df = DataFrame::new(height, cols).map_err(err)?;
+        let mut bytes = Vec::new();
+        ParquetWriter::new(&mut bytes)
+            .finish(&mut df)
+            .map_err(err)?;
+        Ok(vec![OutputFile {
+            path: "summary.parquet".into(),
+            bytes,
+        }])
+    }
+}
