@@ -14,6 +14,7 @@ pub mod export;
 pub mod judge;
 pub mod measurement;
 pub mod nde;
+pub mod report;
 pub mod rules;
 pub mod simulate;
 pub mod units;

@@ -46,6 +46,12 @@ enum Command {
         /// Worker threads (default: all cores).
         #[arg(long, short, default_value_t = 0)]
         jobs: usize,
+        /// Write no PDF reports.
+        #[arg(long)]
+        no_pdf: bool,
+        /// Folder with a customised copy of the report templates (templates/).
+        #[arg(long)]
+        templates: Option<PathBuf>,
     },
     /// The CI gate: evaluate a campaign and write nothing (exit 0: every axis passes,
     /// 1: any axis fails, is noncompliant or has an error, 2: the campaign cannot be read).
@@ -124,8 +130,16 @@ fn run(cli: Cli) -> Result<ExitCode> {
             campaign,
             out,
             jobs,
+            no_pdf,
+            templates,
         } => {
-            return Ok(ExitCode::from(cli::campaign::run(&campaign, &out, jobs)?));
+            let options = cli::campaign::RunOptions {
+                out: &out,
+                jobs,
+                no_pdf,
+                templates: templates.as_deref(),
+            };
+            return Ok(ExitCode::from(cli::campaign::run(&campaign, &options)?));
         }
         Command::Check { campaign, jobs } => {
             return Ok(ExitCode::from(cli::campaign::check(&campaign, jobs)?));

@@ -146,6 +146,24 @@ fn exit_codes_of_check() {
     std::fs::remove_dir_all(dir).unwrap();
 }
 
+/// Every file under `dir`, relative, sorted.
+fn files(dir: &Path) -> Vec<PathBuf> {
+    fn walk(base: &Path, dir: &Path, out: &mut Vec<PathBuf>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(base, &p, out);
+            } else {
+                out.push(p.strip_prefix(base).unwrap().to_path_buf());
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(dir, dir, &mut out);
+    out.sort();
+    out
+}
+
 /// Minimal RFC 4180 reader for the test.
 fn read_csv(text: &str) -> Vec<Vec<String>> {
     let mut rows = Vec::new();
@@ -190,12 +208,12 @@ fn outputs_agree_and_are_deterministic() {
         assert_eq!(code, 1, "the example has a failing axis: {stdout}{stderr}");
         assert!(stdout.contains("Outputs in"), "{stdout}");
     }
-    let mut names: Vec<_> = std::fs::read_dir(&a)
-        .unwrap()
-        .map(|e| e.unwrap().file_name())
-        .collect();
-    names.sort();
-    assert_eq!(names.len(), 5, "{names:?}");
+    let names = files(&a);
+    assert_eq!(files(&b), names);
+    assert!(
+        names.len() >= 6 + 19,
+        "tables, summary.pdf and one report per test: {names:?}"
+    );
     for name in &names {
         assert_eq!(
             std::fs::read(a.join(name)).unwrap(),

@@ -17,7 +17,7 @@ pub fn exit_code(result: &CampaignResult) -> u8 {
 }
 
 /// Evaluates a campaign, reporting progress on stderr.
-pub fn evaluate(campaign: &Campaign, jobs: usize) -> CampaignResult {
+pub fn evaluate_with(campaign: &Campaign, jobs: usize) -> CampaignResult {
     let total: usize = campaign.axes().count();
     let done = AtomicUsize::new(0);
     let bar = std::io::stderr().is_terminal().then(|| {
@@ -151,30 +151,52 @@ pub fn counts_line(result: &CampaignResult) -> String {
     )
 }
 
+/// Options of `axcheck run`.
+pub struct RunOptions<'a> {
+    pub out: &'a Path,
+    pub jobs: usize,
+    /// Write no PDFs (also `campaign.output.pdf: false`).
+    pub no_pdf: bool,
+    /// A customised copy of `templates/`.
+    pub templates: Option<&'a Path>,
+}
+
 /// `axcheck run`.
-pub fn run(path: &Path, out: &Path, jobs: usize) -> Result<u8> {
+pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let start = Instant::now();
+    let out = options.out;
     let campaign = Campaign::load(path)?;
     check_output_dir(&campaign, out)?;
-    let result = evaluate(&campaign, jobs);
-    let written = export::write_all(&result, &export::table_exporters(), out)
+    let mut exporters = export::table_exporters();
+    let pdf = !options.no_pdf && campaign.info.output.pdf;
+    if pdf {
+        let reports = axcheck::report::Reports::new(options.templates)?;
+        exporters.push(Box::new(export::pdf::Pdf { reports }));
+    }
+    let result = evaluate_with(&campaign, options.jobs);
+    let written = export::write_all(&result, &exporters, out)
         .with_context(|| format!("writing the outputs to {}", out.display()))?;
     println!("{}", counts_line(&result));
     for line in problems(&result) {
         println!("{line}");
     }
     println!(
-        "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.parquet, results.json, junit.xml",
+        "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.parquet, results.json, junit.xml{}",
         out.display(),
         written.len(),
-        start.elapsed().as_secs_f64()
+        start.elapsed().as_secs_f64(),
+        if pdf {
+            ", summary.pdf, reports/MACHINE/AXIS.pdf"
+        } else {
+            ""
+        }
     );
     Ok(exit_code(&result))
 }
 
 /// `axcheck check`: the CI gate; writes nothing.
 pub fn check(path: &Path, jobs: usize) -> Result<u8> {
-    let result = evaluate(&Campaign::load(path)?, jobs);
+    let result = evaluate_with(&Campaign::load(path)?, jobs);
     println!("{}", counts_line(&result));
     for line in problems(&result) {
         println!("{line}");

@@ -6,6 +6,7 @@ pub mod json;
 pub mod junit;
 pub mod markdown;
 pub mod parquet;
+pub mod pdf;
 pub mod table;
 
 use crate::batch::CampaignResult;

@@ -1,0 +1,1835 @@
+//! Report charts drawn with `plotters` into SVG strings held in memory.
+//!
+//! Every function here is pure: the same input gives the same bytes, nothing touches the file
+//! system, and no input makes it panic (a chart that cannot be drawn comes back as a small SVG
+//! that says so). Charts name only `Style::font_family` in their text, so the PDF renderer can
+//! use the face it embeds.
+//!
+//! Sizes are in SVG pixels and the text sizes are fixed, chosen for a chart about 900 px wide
+//! shown about 16 cm wide: 900 × 420 for [`bidirectional`], 900 × 600 for [`unidirectional`]
+//! (two panels stacked), and 900 × [`ratio_chart_height`] for [`tolerance_usage`].
+
+use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// Style shared by all charts. `font_family` is the family name of the sans-serif face the
+/// PDF renderer embeds ("Inter"); charts must only ever name this family in SVG text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Style {
+    pub font_family: String,
+    pub width_px: u32,
+    pub height_px: u32,
+}
+
+/// One approach direction's per-target statistics. All deviation values in the axis's
+/// deviation unit (µm or arcsec).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DirectionSeries {
+    /// X̄i↑ (or ↓) per target
+    pub mean: Vec<f64>,
+    /// X̄i + kSi per target (None when n = 1)
+    pub upper: Option<Vec<f64>>,
+    /// X̄i − kSi per target
+    pub lower: Option<Vec<f64>>,
+    /// the n individual readings at each target
+    pub deviations: Vec<Vec<f64>>,
+}
+
+/// A range-type axis parameter to mark on the chart, e.g. A = max(upper) − min(lower).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Span {
+    pub label: String,
+    pub upper: f64,
+    pub lower: f64,
+}
+
+/// Everything the two axis charts show.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct AxisChart {
+    /// target positions P_i, ascending (mm or deg)
+    pub positions: Vec<f64>,
+    /// e.g. "Target position Pi / mm"
+    pub position_label: String,
+    /// e.g. "Positional deviation / µm"
+    pub deviation_label: String,
+    pub up: DirectionSeries,
+    pub down: DirectionSeries,
+    /// bidirectional mean X̄i per target
+    pub mean: Vec<f64>,
+    /// e.g. "X̄ ± 2S" (ISO) or "X̄ ± 3S" (GOST)
+    pub band_label: String,
+    /// e.g. A, E, M for the bidirectional chart
+    pub spans: Vec<Span>,
+}
+
+/// One bar of the campaign summary chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RatioBar {
+    pub label: String,
+    pub parameter: String,
+    pub ratio: f64,
+    pub pass: bool,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Look
+
+const UP: RGBColor = RGBColor(0x1F, 0x3A, 0x6E);
+const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
+const DOWN: RGBColor = RGBColor(0x8E, 0x1B, 0x1B);
+const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
+const INK: RGBColor = RGBColor(0x1A, 0x1A, 0x1A);
+const MUTED: RGBColor = RGBColor(0x55, 0x55, 0x55);
+const GRID: RGBColor = RGBColor(0xE2, 0xE2, 0xE2);
+const GUIDE: RGBColor = RGBColor(0xC4, 0xC4, 0xC4);
+const FRAME: RGBColor = RGBColor(0x9A, 0x9A, 0x9A);
+const STRIPE: RGBColor = RGBColor(0xF3, 0xF3, 0xF3);
+const BAR_OK: RGBColor = RGBColor(0x9D, 0xAF, 0xC8);
+const BAR_OK_EDGE: RGBColor = RGBColor(0x5F, 0x73, 0x8F);
+const BAR_OVER: RGBColor = RGBColor(0x6E, 0x14, 0x14);
+
+/// Text sizes in SVG pixels (the `font-size` written into the SVG).
+const TICK_PX: f64 = 14.0;
+const DESC_PX: f64 = 15.5;
+const LEGEND_PX: f64 = 14.0;
+const SPAN_PX: f64 = 14.0;
+
+/// Dash patterns in pixels: on, off, on, off …
+const SOLID: &[f64] = &[];
+const DASHED: &[f64] = &[10.0, 5.0];
+const DASHED_THIN: &[f64] = &[6.0, 4.0];
+const DASH_DOT: &[f64] = &[9.0, 3.5, 2.0, 3.5];
+
+/// Ratios above this are drawn clipped at it, with an arrow marker.
+const RATIO_CLIP: f64 = 3.0;
+
+#[derive(Clone, Copy)]
+struct Stroke {
+    color: RGBColor,
+    width: u32,
+    dash: &'static [f64],
+}
+
+#[derive(Clone, Copy)]
+enum Marker {
+    /// Filled circle of the given radius.
+    Dot(u32),
+    /// Open (white-filled) triangle with the given half size.
+    Triangle(i32),
+    /// Outline-only triangle with the given half size (for the many readings).
+    TriangleOutline(i32),
+}
+
+struct LegendItem {
+    stroke: Option<Stroke>,
+    marker: Option<(Marker, RGBColor)>,
+    text: String,
+}
+
+const MEAN_UP: Stroke = Stroke {
+    color: UP,
+    width: 2,
+    dash: SOLID,
+};
+const MEAN_DOWN: Stroke = Stroke {
+    color: DOWN,
+    width: 2,
+    dash: DASHED,
+};
+const LIMIT_UP: Stroke = Stroke {
+    color: UP_LIGHT,
+    width: 1,
+    dash: SOLID,
+};
+const LIMIT_DOWN: Stroke = Stroke {
+    color: DOWN_LIGHT,
+    width: 1,
+    dash: DASHED_THIN,
+};
+const MEAN_BIDIR: Stroke = Stroke {
+    color: INK,
+    width: 1,
+    dash: DASH_DOT,
+};
+const MARK_MEAN_UP: (Marker, RGBColor) = (Marker::Dot(4), UP);
+const MARK_MEAN_DOWN: (Marker, RGBColor) = (Marker::Triangle(5), DOWN);
+const MARK_READ_UP: (Marker, RGBColor) = (Marker::Dot(2), UP_LIGHT);
+const MARK_READ_DOWN: (Marker, RGBColor) = (Marker::TriangleOutline(3), DOWN_LIGHT);
+
+// ---------------------------------------------------------------------------------------------
+// Errors and the SVG frame
+
+/// A drawing step failed; the chart falls back to a message.
+struct Failed;
+
+impl<E: std::error::Error + Send + Sync> From<DrawingAreaErrorKind<E>> for Failed {
+    fn from(_: DrawingAreaErrorKind<E>) -> Self {
+        Failed
+    }
+}
+
+type Area<'b> = DrawingArea<SVGBackend<'b>, Shift>;
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+fn dims(style: &Style) -> (u32, u32) {
+    (
+        style.width_px.clamp(240, 10_000),
+        style.height_px.clamp(140, 20_000),
+    )
+}
+
+/// Draws with `paint` on a white SVG of the style's size; a failure gives a message chart.
+fn render(style: &Style, paint: impl FnOnce(&Area) -> Result<(), Failed>) -> String {
+    let size = dims(style);
+    let mut buf = String::new();
+    let ok = {
+        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
+        let drawn = root
+            .fill(&WHITE)
+            .map_err(Failed::from)
+            .and_then(|_| paint(&root));
+        let presented = root.present().map_err(Failed::from);
+        drawn.is_ok() && presented.is_ok()
+    };
+    if ok {
+        buf
+    } else {
+        message_chart(style, "This chart could not be drawn.")
+    }
+}
+
+/// A chart holding only a centred message (for empty or unusable input).
+fn message_chart(style: &Style, message: &str) -> String {
+    let size = dims(style);
+    let mut buf = String::new();
+    let ok = {
+        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
+        let drawn = root.fill(&WHITE).is_ok()
+            && root
+                .draw(&Text::new(
+                    message.to_string(),
+                    (size.0 as i32 / 2, size.1 as i32 / 2),
+                    text_style(style, DESC_PX, false, MUTED, HPos::Center, VPos::Center),
+                ))
+                .is_ok();
+        drawn && root.present().is_ok()
+    };
+    if ok {
+        buf
+    } else {
+        format!(
+            "<svg width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" xmlns=\"http://www.w3.org/2000/svg\">\n</svg>\n",
+            size.0, size.1
+        )
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Text
+
+/// Plotters writes `font-size = size / 1.24`; find the size that writes exactly `px` (the text
+/// sizes above are chosen so that one exists), else the plain product.
+fn plotters_size(px: f64) -> f64 {
+    let guess = px * 1.24;
+    let bits = guess.to_bits();
+    (0..16u64)
+        .flat_map(|step| [bits.wrapping_add(step), bits.wrapping_sub(step)])
+        .map(f64::from_bits)
+        .find(|s| s.is_finite() && *s / 1.24 == px)
+        .unwrap_or(guess)
+}
+
+fn font<'a>(style: &'a Style, px: f64, bold: bool) -> FontDesc<'a> {
+    let face = if bold {
+        FontStyle::Bold
+    } else {
+        FontStyle::Normal
+    };
+    FontDesc::new(
+        FontFamily::Name(&style.font_family),
+        plotters_size(px),
+        face,
+    )
+}
+
+fn text_style<'a>(
+    style: &'a Style,
+    px: f64,
+    bold: bool,
+    color: RGBColor,
+    h: HPos,
+    v: VPos,
+) -> TextStyle<'a> {
+    font(style, px, bold).color(&color).pos(Pos::new(h, v))
+}
+
+/// Rough advance width of `text` in Inter at `px` (slightly generous, for layout only).
+fn text_width(text: &str, px: f64) -> f64 {
+    let em: f64 = text
+        .chars()
+        .map(|c| match c {
+            '\u{0300}'..='\u{036F}' => 0.0,
+            ' ' => 0.28,
+            'i' | 'l' | 'j' | 'I' | '.' | ',' | ':' | ';' | '\'' | '|' | '!' => 0.3,
+            'f' | 't' | 'r' | '(' | ')' | '/' | '[' | ']' => 0.4,
+            'm' | 'w' | 'M' | 'W' | '%' => 0.88,
+            '0'..='9' => 0.62,
+            'A'..='Z' => 0.7,
+            'a'..='z' => 0.57,
+            '↑' | '↓' => 0.7,
+            '−' | '±' | '+' | '=' | '×' => 0.66,
+            _ => 0.7,
+        })
+        .sum();
+    em * px
+}
+
+/// Cut `text` to fit `max_w` pixels, ending with an ellipsis when cut.
+fn fit_text(text: &str, px: f64, max_w: f64) -> String {
+    if text_width(text, px) <= max_w {
+        return text.to_string();
+    }
+    let mut out = String::new();
+    for c in text.chars() {
+        out.push(c);
+        if text_width(&out, px) + text_width("…", px) > max_w {
+            out.pop();
+            break;
+        }
+    }
+    out.push('…');
+    out
+}
+
+// ---------------------------------------------------------------------------------------------
+// Numbers
+
+/// `v` with `decimals` places, a true minus sign and no "−0" (huge values in e-notation).
+fn fmt_fixed(v: f64, decimals: usize) -> String {
+    if !v.is_finite() {
+        return if v.is_nan() {
+            "n/a".to_string()
+        } else if v > 0.0 {
+            "∞".to_string()
+        } else {
+            "−∞".to_string()
+        };
+    }
+    if v.abs() >= 1e9 {
+        return format!("{v:.2e}").replace('-', "−");
+    }
+    let s = format!("{:.*}", decimals, v);
+    let is_zero = s
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.');
+    match s.strip_prefix('-') {
+        Some(rest) if is_zero => rest.to_string(),
+        Some(rest) => format!("−{rest}"),
+        None => s,
+    }
+}
+
+/// Three significant digits, at most nine decimals.
+fn fmt_sig(v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return fmt_fixed(v, 2);
+    }
+    let mag = v.abs().log10().floor();
+    let decimals = (2.0 - mag).clamp(0.0, 9.0) as usize;
+    fmt_fixed(v, decimals)
+}
+
+/// The tick values plotters will label, and the decimals they need.
+fn ticks(range: (f64, f64), max_points: usize) -> (Vec<f64>, usize) {
+    let points = RangedCoordf64::from(range.0..range.1).key_points(max_points);
+    let step = points
+        .windows(2)
+        .map(|w| (w[1] - w[0]).abs())
+        .find(|d| *d > 0.0)
+        .unwrap_or((range.1 - range.0).abs() / 4.0);
+    let decimals = if step.is_finite() && step > 0.0 {
+        (-(step.log10() + 1e-9).floor()).clamp(0.0, 12.0) as usize
+    } else {
+        2
+    };
+    (points, decimals)
+}
+
+/// Smallest and largest of the finite values, if any.
+fn extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        })
+}
+
+/// The x range: the targets with a small margin; a single target gets a window around it.
+fn x_range(positions: &[f64]) -> Option<(f64, f64)> {
+    let (lo, hi) = extent(positions.iter().copied())?;
+    let span = hi - lo;
+    let scale = lo.abs().max(hi.abs()).max(1.0);
+    let (lo, hi) = if span <= scale * 1e-9 {
+        let half = (scale * 0.05).max(1.0);
+        (lo - half, hi + half)
+    } else {
+        (lo - span * 0.04, hi + span * 0.04)
+    };
+    (lo.is_finite() && hi.is_finite() && hi > lo).then_some((lo, hi))
+}
+
+/// The y range: every value and zero, padded by 8 %.
+fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    let (lo, hi) = extent(values.into_iter().chain([0.0]))?;
+    let span = hi - lo;
+    // Zero is inside, so only data that is all (practically) zero has no extent.
+    let (lo, hi) = if span < 1e-9 {
+        (lo - 1.0, hi + 1.0)
+    } else {
+        (lo - span * 0.08, hi + span * 0.08)
+    };
+    (lo.is_finite() && hi.is_finite() && hi > lo).then_some((lo, hi))
+}
+
+// ---------------------------------------------------------------------------------------------
+// Drawing primitives (in backend pixels, on the root area)
+
+type Px = (f64, f64);
+
+fn to_px(c: (i32, i32)) -> Px {
+    (c.0 as f64, c.1 as f64)
+}
+
+fn round_px(p: Px) -> (i32, i32) {
+    (p.0.round() as i32, p.1.round() as i32)
+}
+
+/// Splits a polyline into the dashes of `pattern` (on, off, on, off … in pixels).
+fn dashes(points: &[Px], pattern: &[f64]) -> Vec<Vec<(i32, i32)>> {
+    let mut out = Vec::new();
+    let Some(first) = points.first() else {
+        return out;
+    };
+    if pattern.is_empty() || pattern.iter().any(|d| d.is_nan() || *d <= 0.0) {
+        out.push(points.iter().map(|p| round_px(*p)).collect());
+        return out;
+    }
+    let mut idx = 0;
+    let mut left = pattern[0];
+    let mut on = true;
+    let mut current: Vec<Px> = vec![*first];
+    for w in points.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let len = (b.0 - a.0).hypot(b.1 - a.1);
+        if !len.is_finite() {
+            continue;
+        }
+        let mut done = 0.0;
+        while len - done > left {
+            done += left;
+            let t = done / len;
+            let p = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
+            current.push(p);
+            if on {
+                out.push(current.iter().map(|p| round_px(*p)).collect());
+            }
+            current = vec![p];
+            on = !on;
+            idx = (idx + 1) % pattern.len();
+            left = pattern[idx];
+        }
+        left -= len - done;
+        current.push(b);
+    }
+    if on && current.len() >= 2 {
+        out.push(current.iter().map(|p| round_px(*p)).collect());
+    }
+    out
+}
+
+fn draw_line(root: &Area, points: &[Px], stroke: Stroke) -> Result<(), Failed> {
+    if points.len() < 2 {
+        return Ok(());
+    }
+    let shape = ShapeStyle::from(&stroke.color).stroke_width(stroke.width);
+    for dash in dashes(points, stroke.dash) {
+        if dash.len() >= 2 {
+            root.draw(&PathElement::new(dash, shape))?;
+        }
+    }
+    Ok(())
+}
+
+fn triangle(c: (i32, i32), half: i32) -> Vec<(i32, i32)> {
+    let h = half;
+    vec![
+        (c.0, c.1 - h - 1),
+        (c.0 + h, c.1 + h - 1),
+        (c.0 - h, c.1 + h - 1),
+    ]
+}
+
+fn draw_marker(root: &Area, at: (i32, i32), marker: Marker, color: RGBColor) -> Result<(), Failed> {
+    match marker {
+        Marker::Dot(r) => root.draw(&Circle::new(at, r, color.filled()))?,
+        Marker::Triangle(h) => {
+            let pts = triangle(at, h);
+            root.draw(&Polygon::new(pts.clone(), WHITE.filled()))?;
+            let mut closed = pts;
+            closed.push(closed[0]);
+            root.draw(&PathElement::new(closed, color.stroke_width(2)))?;
+        }
+        Marker::TriangleOutline(h) => {
+            let mut closed = triangle(at, h);
+            closed.push(closed[0]);
+            root.draw(&PathElement::new(closed, color.stroke_width(1)))?;
+        }
+    }
+    Ok(())
+}
+
+fn draw_text(root: &Area, text: &str, at: (i32, i32), style: TextStyle) -> Result<(), Failed> {
+    if text.is_empty() {
+        return Ok(());
+    }
+    root.draw(&Text::new(text.to_string(), at, style))?;
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------------------------
+// Legend (a band above the plot, wrapped into rows)
+
+const LEGEND_SAMPLE_W: i32 = 34;
+const LEGEND_ROW_H: i32 = 22;
+const LEGEND_GAP: i32 = 22;
+
+fn legend_item_width(item: &LegendItem) -> i32 {
+    LEGEND_SAMPLE_W + 7 + text_width(&item.text, LEGEND_PX).ceil() as i32
+}
+
+/// Rows of item indices that fit `avail` pixels.
+fn legend_rows(items: &[LegendItem], avail: i32) -> Vec<Vec<usize>> {
+    let mut rows: Vec<Vec<usize>> = Vec::new();
+    let mut used = 0;
+    for (i, item) in items.iter().enumerate() {
+        let w = legend_item_width(item);
+        match rows.last_mut() {
+            Some(row) if used + LEGEND_GAP + w <= avail => {
+                row.push(i);
+                used += LEGEND_GAP + w;
+            }
+            _ => {
+                rows.push(vec![i]);
+                used = w;
+            }
+        }
+    }
+    rows
+}
+
+/// Height of the legend band; 0 (no legend) when it would take over a quarter of the chart.
+fn legend_height(items: &[LegendItem], avail: i32, chart_h: i32) -> i32 {
+    let rows = legend_rows(items, avail).len() as i32;
+    let h = if rows == 0 {
+        0
+    } else {
+        rows * LEGEND_ROW_H + 10
+    };
+    if h * 4 > chart_h { 0 } else { h }
+}
+
+/// Draws the legend rows centred between `left` and `right`, starting at `top`.
+fn draw_legend(
+    root: &Area,
+    style: &Style,
+    items: &[LegendItem],
+    left: i32,
+    right: i32,
+    top: i32,
+) -> Result<(), Failed> {
+    let avail = right - left;
+    for (r, row) in legend_rows(items, avail).iter().enumerate() {
+        let widths: Vec<i32> = row.iter().map(|&i| legend_item_width(&items[i])).collect();
+        let total: i32 = widths.iter().sum::<i32>() + LEGEND_GAP * (row.len() as i32 - 1);
+        let mut x = left + ((avail - total) / 2).max(0);
+        let y = top + 6 + r as i32 * LEGEND_ROW_H + LEGEND_ROW_H / 2;
+        for (&i, w) in row.iter().zip(&widths) {
+            let item = &items[i];
+            if let Some(stroke) = item.stroke {
+                draw_line(
+                    root,
+                    &[
+                        (x as f64, y as f64),
+                        ((x + LEGEND_SAMPLE_W) as f64, y as f64),
+                    ],
+                    stroke,
+                )?;
+            }
+            if let Some((marker, color)) = item.marker {
+                draw_marker(root, (x + LEGEND_SAMPLE_W / 2, y), marker, color)?;
+            }
+            draw_text(
+                root,
+                &item.text,
+                (x + LEGEND_SAMPLE_W + 7, y),
+                text_style(style, LEGEND_PX, false, INK, HPos::Left, VPos::Center),
+            )?;
+            x += w + LEGEND_GAP;
+        }
+    }
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------------------------
+// Axis charts
+
+/// Left margin holding the rotated deviation label.
+const Y_DESC_W: u32 = 26;
+/// Height of the x tick label row, and of the row holding the x description below it.
+const X_TICK_H: u32 = 26;
+const X_DESC_H: u32 = 24;
+
+/// One panel's frame: ranges, margins and whether it carries the x description.
+struct PanelFrame<'s> {
+    x: (f64, f64),
+    y: (f64, f64),
+    top: u32,
+    right: u32,
+    x_desc: Option<&'s str>,
+}
+
+/// Width of the y tick label column for a y range.
+fn y_tick_width(y: (f64, f64), panel_h: u32) -> u32 {
+    let (points, decimals) = ticks(y, y_tick_count(panel_h));
+    let widest = points
+        .iter()
+        .map(|v| text_width(&fmt_fixed(*v, decimals), TICK_PX))
+        .fold(0.0, f64::max);
+    (widest.ceil() as u32 + 14).clamp(30, 160)
+}
+
+fn y_tick_count(plot_h: u32) -> usize {
+    ((plot_h / 30) as usize).clamp(3, 12)
+}
+
+fn x_tick_count(plot_w: u32) -> usize {
+    ((plot_w / 85) as usize).clamp(3, 12)
+}
+
+/// Builds one panel's chart with grid, ticks, frame and zero line.
+fn build_panel<'a, 'b>(
+    area: &'a Area<'b>,
+    style: &Style,
+    frame: &PanelFrame,
+    y_label_w: u32,
+) -> Result<Chart<'a, 'b>, Failed> {
+    let (w, h) = area.dim_in_pixel();
+    let x_label_h = X_TICK_H + if frame.x_desc.is_some() { X_DESC_H } else { 0 };
+    let plot_w = w.saturating_sub(Y_DESC_W + y_label_w + frame.right).max(10);
+    let plot_h = h.saturating_sub(frame.top + x_label_h + 6).max(10);
+    let mut chart = ChartBuilder::on(area)
+        .margin_top(frame.top)
+        .margin_right(frame.right)
+        .margin_left(Y_DESC_W)
+        .margin_bottom(6)
+        .x_label_area_size(x_label_h)
+        .y_label_area_size(y_label_w)
+        .build_cartesian_2d(frame.x.0..frame.x.1, frame.y.0..frame.y.1)?;
+
+    let nx = x_tick_count(plot_w);
+    let ny = y_tick_count(plot_h);
+    let (_, x_dec) = ticks(frame.x, nx);
+    let (_, y_dec) = ticks(frame.y, ny);
+    let x_fmt = move |v: &f64| fmt_fixed(*v, x_dec);
+    let y_fmt = move |v: &f64| fmt_fixed(*v, y_dec);
+    let tick_font = font(style, TICK_PX, false).color(&INK);
+    let desc_font = font(style, DESC_PX, false).color(&INK);
+    let mut mesh = chart.configure_mesh();
+    mesh.x_labels(nx)
+        .y_labels(ny)
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&y_fmt)
+        .x_label_style(tick_font.clone())
+        .y_label_style(tick_font)
+        .axis_desc_style(desc_font)
+        .bold_line_style(GRID.stroke_width(1))
+        .light_line_style(TRANSPARENT)
+        .axis_style(FRAME.stroke_width(1))
+        .set_all_tick_mark_size(4);
+    if let Some(desc) = frame.x_desc {
+        mesh.x_desc(desc);
+    }
+    mesh.draw()?;
+
+    // Frame on the top and right, and the zero line.
+    // (`area` draws in its own pixels; the chart reports backend pixels.)
+    let (bx, by) = area.get_base_pixel();
+    let (xr, yr) = chart.plotting_area().get_pixel_range();
+    let (l, r, t, b) = (
+        xr.start - bx,
+        xr.end - 1 - bx,
+        yr.start - by,
+        yr.end - 1 - by,
+    );
+    area.draw(&PathElement::new(
+        vec![(l, t), (r, t), (r, b)],
+        FRAME.stroke_width(1),
+    ))?;
+    let zero = chart.backend_coord(&(frame.x.0, 0.0)).1 - by;
+    area.draw(&PathElement::new(
+        vec![(l, zero), (r, zero)],
+        MUTED.stroke_width(1),
+    ))?;
+    Ok(chart)
+}
+
+/// What of a direction to draw; drawn in this order so means stay on top.
+#[derive(Clone, Copy, PartialEq)]
+enum Layer {
+    Limits,
+    Readings,
+    Mean,
+}
+
+/// Draws one layer of one direction.
+fn draw_direction(
+    root: &Area,
+    chart: &Chart,
+    positions: &[f64],
+    series: &DirectionSeries,
+    up: bool,
+    layer: Layer,
+) -> Result<(), Failed> {
+    let (mean_stroke, limit_stroke, mean_mark, read_mark) = if up {
+        (MEAN_UP, LIMIT_UP, MARK_MEAN_UP, MARK_READ_UP)
+    } else {
+        (MEAN_DOWN, LIMIT_DOWN, MARK_MEAN_DOWN, MARK_READ_DOWN)
+    };
+    match layer {
+        Layer::Limits => {
+            for limit in [&series.upper, &series.lower].into_iter().flatten() {
+                draw_line(root, &curve(chart, positions, limit), limit_stroke)?;
+            }
+        }
+        Layer::Readings if has_readings(series) => {
+            for (x, readings) in positions.iter().zip(&series.deviations) {
+                for v in readings {
+                    if x.is_finite() && v.is_finite() {
+                        let at = chart.backend_coord(&(*x, *v));
+                        draw_marker(root, at, read_mark.0, read_mark.1)?;
+                    }
+                }
+            }
+        }
+        Layer::Readings => {}
+        Layer::Mean => {
+            let mean = curve(chart, positions, &series.mean);
+            draw_line(root, &mean, mean_stroke)?;
+            for p in &mean {
+                draw_marker(root, round_px(*p), mean_mark.0, mean_mark.1)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Pixel points of a per-target curve (non-finite values are skipped).
+fn curve(chart: &Chart, positions: &[f64], values: &[f64]) -> Vec<Px> {
+    positions
+        .iter()
+        .zip(values)
+        .filter(|(x, v)| x.is_finite() && v.is_finite())
+        .map(|(x, v)| to_px(chart.backend_coord(&(*x, *v))))
+        .collect()
+}
+
+/// Every value a direction draws.
+fn direction_values<'a>(
+    positions: &'a [f64],
+    s: &'a DirectionSeries,
+) -> impl Iterator<Item = f64> + 'a {
+    let n = positions.len();
+    let limits = [&s.upper, &s.lower]
+        .into_iter()
+        .flatten()
+        .flat_map(move |v| v.iter().take(n).copied());
+    s.mean
+        .iter()
+        .take(n)
+        .copied()
+        .chain(limits)
+        .chain(s.deviations.iter().take(n).flatten().copied())
+}
+
+fn span_values(spans: &[Span]) -> impl Iterator<Item = f64> + '_ {
+    spans
+        .iter()
+        .filter(|s| s.upper.is_finite() && s.lower.is_finite())
+        .flat_map(|s| [s.upper, s.lower])
+}
+
+/// Column widths of the span brackets at the right edge.
+fn span_columns(spans: &[Span]) -> Vec<u32> {
+    spans
+        .iter()
+        .filter(|s| s.upper.is_finite() && s.lower.is_finite())
+        .map(|s| {
+            let label = text_width(&s.label, SPAN_PX);
+            let value = text_width(&fmt_sig((s.upper - s.lower).abs()), SPAN_PX);
+            (label.max(value).ceil() as u32 + 22).clamp(34, 140)
+        })
+        .collect()
+}
+
+/// Right margin that holds the span brackets (a small gap when there are none).
+fn span_margin(spans: &[Span], width: u32) -> u32 {
+    let cols: u32 = span_columns(spans).iter().sum();
+    if cols == 0 {
+        18
+    } else {
+        (cols + 12).min(width * 2 / 5)
+    }
+}
+
+/// Draws each span as a bracket in its own column right of the plot, with guides to the
+/// plot edge, its label and its value.
+fn draw_spans(root: &Area, style: &Style, chart: &Chart, spans: &[Span]) -> Result<(), Failed> {
+    let (xr, _) = chart.plotting_area().get_pixel_range();
+    let plot_right = xr.end - 1;
+    let x_any = chart.as_coord_spec().get_x_range().start;
+    let finite: Vec<&Span> = spans
+        .iter()
+        .filter(|s| s.upper.is_finite() && s.lower.is_finite())
+        .collect();
+    let mut x = plot_right + 14;
+    // Squeeze the columns when more spans come than the margin was allowed to hold.
+    let columns = span_columns(spans);
+    let total: u32 = columns.iter().sum();
+    let room = (root.dim_in_pixel().0 as i32 - x).max(1) as f64;
+    let squeeze = (room / total.max(1) as f64).min(1.0);
+    for (span, col) in finite.iter().zip(columns) {
+        let y_hi = chart.backend_coord(&(x_any, span.upper.max(span.lower))).1;
+        let y_lo = chart.backend_coord(&(x_any, span.upper.min(span.lower))).1;
+        for y in [y_hi, y_lo] {
+            root.draw(&PathElement::new(
+                vec![(plot_right + 1, y), (x - 7, y)],
+                GUIDE.stroke_width(1),
+            ))?;
+        }
+        root.draw(&PathElement::new(
+            vec![(x - 6, y_hi), (x, y_hi), (x, y_lo), (x - 6, y_lo)],
+            INK.stroke_width(2),
+        ))?;
+        let mid = (y_hi + y_lo) / 2;
+        let tx = x + 5;
+        draw_text(
+            root,
+            &span.label,
+            (tx, mid - 1),
+            text_style(style, SPAN_PX, true, INK, HPos::Left, VPos::Bottom),
+        )?;
+        draw_text(
+            root,
+            &fmt_sig((span.upper - span.lower).abs()),
+            (tx, mid + 1),
+            text_style(style, SPAN_PX, false, INK, HPos::Left, VPos::Top),
+        )?;
+        x += (col as f64 * squeeze).round() as i32;
+    }
+    Ok(())
+}
+
+/// The rotated deviation label, centred on pixel rows `top..bottom`.
+fn draw_y_desc(
+    root: &Area,
+    style: &Style,
+    text: &str,
+    top: i32,
+    bottom: i32,
+) -> Result<(), Failed> {
+    // Centred on the plot, it may reach past it as far as the chart's own edges.
+    let centre = (top + bottom) / 2;
+    let height = root.dim_in_pixel().1 as i32;
+    let len = (2 * centre.min(height - centre) - 8).max(20) as f64;
+    let text = fit_text(text, DESC_PX, len);
+    let st = text_style(style, DESC_PX, false, INK, HPos::Center, VPos::Top)
+        .transform(FontTransform::Rotate270);
+    draw_text(root, &text, (4, (top + bottom) / 2), st)
+}
+
+fn band_text(chart: &AxisChart) -> &str {
+    if chart.band_label.trim().is_empty() {
+        "X̄ ± kS"
+    } else {
+        chart.band_label.trim()
+    }
+}
+
+fn has_limits(s: &DirectionSeries) -> bool {
+    s.upper.as_ref().is_some_and(|v| !v.is_empty())
+        || s.lower.as_ref().is_some_and(|v| !v.is_empty())
+}
+
+/// Readings are worth showing when some target has more than one (with n = 1 each reading is
+/// its mean and hides under the mean's marker).
+fn has_readings(s: &DirectionSeries) -> bool {
+    s.deviations.iter().any(|r| r.len() > 1)
+}
+
+/// The legend entries a direction actually draws.
+fn direction_legend(chart: &AxisChart, up: bool) -> Vec<LegendItem> {
+    let (series, arrow, mean, limit, mean_mark, read_mark) = if up {
+        (
+            &chart.up,
+            '↑',
+            MEAN_UP,
+            LIMIT_UP,
+            MARK_MEAN_UP,
+            MARK_READ_UP,
+        )
+    } else {
+        (
+            &chart.down,
+            '↓',
+            MEAN_DOWN,
+            LIMIT_DOWN,
+            MARK_MEAN_DOWN,
+            MARK_READ_DOWN,
+        )
+    };
+    let mut items = Vec::new();
+    if !series.mean.is_empty() {
+        items.push(LegendItem {
+            stroke: Some(mean),
+            marker: Some(mean_mark),
+            text: format!("mean X̄i{arrow}"),
+        });
+    }
+    if has_limits(series) {
+        items.push(LegendItem {
+            stroke: Some(limit),
+            marker: None,
+            text: format!("{} {arrow}", band_text(chart)),
+        });
+    }
+    if has_readings(series) {
+        items.push(LegendItem {
+            stroke: None,
+            marker: Some(read_mark),
+            text: format!("readings {arrow}"),
+        });
+    }
+    items
+}
+
+/// Like ISO 230-2 Fig. 2a (bidirectional): X̄i↑ and X̄i↓ joined by lines, the X̄ ± kS limit
+/// curves of each direction, the bidirectional mean X̄i, the individual readings as small
+/// markers, and the spans (A, E, M …) marked as labelled vertical brackets at the right edge.
+///
+/// ↑ is dark blue, solid, filled circles; ↓ is dark red, dashed, open triangles; the
+/// bidirectional mean is a thin black dash-dot line. The legend sits in a band above the plot.
+/// Designed for 900 × 420 px.
+pub fn bidirectional(chart: &AxisChart, style: &Style) -> String {
+    let n = chart.positions.len();
+    let Some(x) = x_range(&chart.positions) else {
+        return message_chart(style, "No target positions to plot.");
+    };
+    let values = direction_values(&chart.positions, &chart.up)
+        .chain(direction_values(&chart.positions, &chart.down))
+        .chain(chart.mean.iter().take(n).copied())
+        .chain(span_values(&chart.spans));
+    let Some(y) = y_range(values) else {
+        return message_chart(style, "The deviations are out of range.");
+    };
+    render(style, |root| {
+        let (w, h) = root.dim_in_pixel();
+        let mut items = direction_legend(chart, true);
+        items.extend(direction_legend(chart, false));
+        if !chart.mean.is_empty() {
+            items.push(LegendItem {
+                stroke: Some(MEAN_BIDIR),
+                marker: None,
+                text: "mean X̄i (bidirectional)".to_string(),
+            });
+        }
+        let legend_h = legend_height(&items, w as i32 - 20, h as i32) as u32;
+        let right = span_margin(&chart.spans, w);
+        let top = legend_h + 8;
+        let plot_h = h.saturating_sub(top + X_TICK_H + X_DESC_H + 6);
+        let frame = PanelFrame {
+            x,
+            y,
+            top,
+            right,
+            x_desc: Some(chart.position_label.as_str()).filter(|d| !d.trim().is_empty()),
+        };
+        let cp = build_panel(root, style, &frame, y_tick_width(y, plot_h))?;
+        if legend_h > 0 {
+            draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+        }
+        let (_, yr) = cp.plotting_area().get_pixel_range();
+        draw_y_desc(root, style, &chart.deviation_label, yr.start, yr.end)?;
+
+        for layer in [Layer::Limits, Layer::Readings] {
+            draw_direction(root, &cp, &chart.positions, &chart.up, true, layer)?;
+            draw_direction(root, &cp, &chart.positions, &chart.down, false, layer)?;
+        }
+        draw_line(root, &curve(&cp, &chart.positions, &chart.mean), MEAN_BIDIR)?;
+        draw_direction(root, &cp, &chart.positions, &chart.up, true, Layer::Mean)?;
+        draw_direction(root, &cp, &chart.positions, &chart.down, false, Layer::Mean)?;
+        draw_spans(root, style, &cp, &chart.spans)?;
+        Ok(())
+    })
+}
+
+/// Like ISO 230-2 Fig. 2b (unidirectional): ↑ and ↓ in two panels stacked (↑ on top), each
+/// with its mean line, its X̄ ± kS curves and its readings; spans given per panel via
+/// `up_spans` / `down_spans` (e.g. A↑, E↑, R↑ …). Both panels share the x and y scales.
+/// Designed for 900 × 600 px.
+pub fn unidirectional(
+    chart: &AxisChart,
+    up_spans: &[Span],
+    down_spans: &[Span],
+    style: &Style,
+) -> String {
+    let Some(x) = x_range(&chart.positions) else {
+        return message_chart(style, "No target positions to plot.");
+    };
+    let values = direction_values(&chart.positions, &chart.up)
+        .chain(direction_values(&chart.positions, &chart.down))
+        .chain(span_values(up_spans))
+        .chain(span_values(down_spans));
+    let Some(y) = y_range(values) else {
+        return message_chart(style, "The deviations are out of range.");
+    };
+    render(style, |root| {
+        let (w, h) = root.dim_in_pixel();
+        let mut items = direction_legend(chart, true);
+        items.extend(direction_legend(chart, false));
+        let legend_h = legend_height(&items, w as i32 - 20, h as i32) as u32;
+        let right = span_margin(up_spans, w).max(span_margin(down_spans, w));
+        let body_h = h.saturating_sub(legend_h);
+        let top_h = (body_h.saturating_sub(X_DESC_H)) / 2;
+        let (_, body) = root.split_vertically(legend_h);
+        let (upper_area, lower_area) = body.split_vertically(top_h);
+        let heading = 24;
+        let plot_h = top_h.saturating_sub(heading + X_TICK_H + 6);
+        let y_label_w = y_tick_width(y, plot_h);
+
+        let panels = [
+            (&upper_area, &chart.up, up_spans, true, "Approach ↑", None),
+            (
+                &lower_area,
+                &chart.down,
+                down_spans,
+                false,
+                "Approach ↓",
+                Some(chart.position_label.as_str()).filter(|d| !d.trim().is_empty()),
+            ),
+        ];
+        let mut plot_rows = (i32::MAX, i32::MIN);
+        for (area, series, spans, up, title, x_desc) in panels {
+            let frame = PanelFrame {
+                x,
+                y,
+                top: heading,
+                right,
+                x_desc,
+            };
+            let cp = build_panel(area, style, &frame, y_label_w)?;
+            let (xr, yr) = cp.plotting_area().get_pixel_range();
+            plot_rows = (plot_rows.0.min(yr.start), plot_rows.1.max(yr.end));
+            let color = if up { UP } else { DOWN };
+            draw_text(
+                root,
+                title,
+                (xr.start, yr.start - 5),
+                text_style(style, DESC_PX, true, color, HPos::Left, VPos::Bottom),
+            )?;
+            for layer in [Layer::Limits, Layer::Readings, Layer::Mean] {
+                draw_direction(root, &cp, &chart.positions, series, up, layer)?;
+            }
+            draw_spans(root, style, &cp, spans)?;
+        }
+        if legend_h > 0 {
+            draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+        }
+        draw_y_desc(
+            root,
+            style,
+            &chart.deviation_label,
+            plot_rows.0,
+            plot_rows.1,
+        )?;
+        Ok(())
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tolerance usage
+
+const RATIO_TOP: u32 = 44;
+const RATIO_BOTTOM: u32 = 56;
+
+fn ratio_row_height(bars: usize) -> u32 {
+    match bars {
+        0..=20 => 24,
+        21..=40 => 20,
+        _ => 18,
+    }
+}
+
+/// Height in pixels that fits `bars` rows of [`tolerance_usage`] at 900 px wide.
+pub fn ratio_chart_height(bars: usize) -> u32 {
+    let bars = bars.clamp(1, 500) as u32;
+    (RATIO_TOP + RATIO_BOTTOM + bars * ratio_row_height(bars as usize) + 10).max(170)
+}
+
+/// Horizontal bars: each axis's worst parameter as a fraction of its tolerance
+/// (ratio = |value| / limit), a vertical reference line at 1.0 labelled "limit", bars over
+/// 1.0 (or not passing) in a dark tone with a bold label, so they read in grey print, the
+/// parameter name and ratio printed at the bar's end (e.g. "B 2.60"). Ratios above 3 are
+/// clipped at the axis end with an arrow marker and keep their true value in the label.
+/// Size the height with [`ratio_chart_height`].
+pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
+    if bars.is_empty() {
+        return message_chart(style, "No axes to summarise.");
+    }
+    let shown = |r: f64| if r.is_nan() { 0.0 } else { r.max(0.0) };
+    let max_ratio = bars
+        .iter()
+        .map(|b| shown(b.ratio).min(RATIO_CLIP))
+        .fold(0.0, f64::max);
+    let x_max = (max_ratio * 1.04).max(1.2);
+    let clipped = bars.iter().any(|b| shown(b.ratio) > RATIO_CLIP);
+    let n = bars.len();
+
+    render(style, |root| {
+        let (w, _) = root.dim_in_pixel();
+        let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
+        let label_w = labels
+            .iter()
+            .map(|l| text_width(l, TICK_PX))
+            .fold(0.0, f64::max)
+            .ceil()
+            .clamp(20.0, w as f64 * 0.3) as u32
+            + 14;
+        let value_texts: Vec<String> = bars
+            .iter()
+            .map(|b| {
+                let value = fmt_fixed(b.ratio, 2);
+                if b.parameter.trim().is_empty() {
+                    value
+                } else {
+                    format!("{} {}", b.parameter.trim(), value)
+                }
+            })
+            .collect();
+        let value_w = value_texts
+            .iter()
+            .map(|t| text_width(t, TICK_PX))
+            .fold(0.0, f64::max)
+            .ceil() as u32;
+        let right = (value_w + if clipped { 30 } else { 16 }).min(w / 3);
+
+        let mut chart = ChartBuilder::on(root)
+            .margin_top(RATIO_TOP)
+            .margin_right(right)
+            .margin_left(8)
+            .margin_bottom(6)
+            .x_label_area_size(RATIO_BOTTOM - 6)
+            .y_label_area_size(label_w)
+            .build_cartesian_2d(0.0..x_max, 0.0..n as f64)?;
+        let plot_w = w.saturating_sub(label_w + right + 8);
+        let nx = x_tick_count(plot_w);
+        let (_, x_dec) = ticks((0.0, x_max), nx);
+        let x_fmt = move |v: &f64| fmt_fixed(*v, x_dec);
+        let (xr, yr) = chart.plotting_area().get_pixel_range();
+        let (l, r, t, b) = (xr.start, xr.end - 1, yr.start, yr.end - 1);
+
+        // Stripes behind every other row (only when there are many rows).
+        let rows: Vec<(i32, i32)> = (0..n)
+            .map(|i| {
+                let top = chart.backend_coord(&(0.0, (n - i) as f64)).1;
+                let bottom = chart.backend_coord(&(0.0, (n - i - 1) as f64)).1;
+                (top, bottom)
+            })
+            .collect();
+        if n > 6 {
+            for &(rt, rb) in rows.iter().skip(1).step_by(2) {
+                root.draw(&Rectangle::new([(l, rt), (r, rb)], STRIPE.filled()))?;
+            }
+        }
+        chart
+            .configure_mesh()
+            .x_labels(nx)
+            .y_labels(0)
+            .disable_y_mesh()
+            .x_label_formatter(&x_fmt)
+            .x_label_style(font(style, TICK_PX, false).color(&INK))
+            .y_label_style(font(style, TICK_PX, false).color(&INK))
+            .axis_desc_style(font(style, DESC_PX, false).color(&INK))
+            .x_desc("Worst parameter / tolerance")
+            .bold_line_style(GRID.stroke_width(1))
+            .light_line_style(TRANSPARENT)
+            .axis_style(FRAME.stroke_width(1))
+            .set_all_tick_mark_size(4)
+            .draw()?;
+        root.draw(&PathElement::new(
+            vec![(l, t), (r, t), (r, b)],
+            FRAME.stroke_width(1),
+        ))?;
+
+        let row_h = ((b - t) as f64 / n as f64).max(1.0);
+        let thickness = ((row_h * 0.62).round() as i32).clamp(2, 28);
+        let label_style = |bold: bool, color: RGBColor, h: HPos| {
+            text_style(style, TICK_PX, bold, color, h, VPos::Center)
+        };
+        // Bars first, then the limit line over them, then the texts on small backgrounds.
+        let mut texts = Vec::with_capacity(n);
+        for (i, ((bar, value_text), &(rt, rb))) in
+            bars.iter().zip(&value_texts).zip(&rows).enumerate()
+        {
+            let mid = (rt + rb) / 2;
+            let ratio = shown(bar.ratio);
+            let over = !bar.pass || bar.ratio > 1.0;
+            let end_x = chart
+                .backend_coord(&(ratio.min(RATIO_CLIP).min(x_max), 0.0))
+                .0;
+            let (bt, bb) = (mid - thickness / 2, mid - thickness / 2 + thickness);
+            if end_x > l {
+                if over {
+                    root.draw(&Rectangle::new([(l, bt), (end_x, bb)], BAR_OVER.filled()))?;
+                } else {
+                    root.draw(&Rectangle::new([(l, bt), (end_x, bb)], BAR_OK.filled()))?;
+                    root.draw(&Rectangle::new(
+                        [(l, bt), (end_x, bb)],
+                        BAR_OK_EDGE.stroke_width(1),
+                    ))?;
+                }
+            }
+            let mut text_x = end_x + 6;
+            if ratio > RATIO_CLIP {
+                // Clipped: an arrow head past the bar's end points on.
+                let half = (thickness / 2 + 2).max(4);
+                root.draw(&Polygon::new(
+                    vec![
+                        (end_x + 1, mid - half),
+                        (end_x + 1 + half + 2, mid),
+                        (end_x + 1, mid + half),
+                    ],
+                    INK.filled(),
+                ))?;
+                text_x = end_x + half + 8;
+            }
+            let background = if n > 6 && i % 2 == 1 { STRIPE } else { WHITE };
+            texts.push((bar, value_text, mid, text_x, over, background));
+        }
+
+        // The limit line at 1.0, labelled above the plot.
+        let limit_x = chart.backend_coord(&(1.0, 0.0)).0;
+        root.draw(&PathElement::new(
+            vec![(limit_x, t - 4), (limit_x, b)],
+            INK.stroke_width(2),
+        ))?;
+        draw_text(
+            root,
+            "limit",
+            (limit_x, t - 6),
+            text_style(style, TICK_PX, true, INK, HPos::Center, VPos::Bottom),
+        )?;
+
+        let text_h = (TICK_PX as i32 + 2).min(row_h as i32).max(4);
+        for (bar, value_text, mid, text_x, over, background) in texts {
+            let label = fit_text(&bar.label, TICK_PX, label_w as f64 - 12.0);
+            draw_text(
+                root,
+                &label,
+                (l - 8, mid),
+                label_style(false, INK, HPos::Right),
+            )?;
+            let (bold, color) = if over { (true, BAR_OVER) } else { (false, INK) };
+            let tw = text_width(value_text, TICK_PX).ceil() as i32;
+            // The background stops at the plot's frame; past it the margin is white anyway.
+            let bg_right = (text_x + tw + 2).min(r - 1);
+            if bg_right > text_x {
+                root.draw(&Rectangle::new(
+                    [
+                        (text_x - 2, mid - text_h / 2),
+                        (bg_right, mid - text_h / 2 + text_h),
+                    ],
+                    background.filled(),
+                ))?;
+            }
+            draw_text(
+                root,
+                value_text,
+                (text_x, mid),
+                label_style(bold, color, HPos::Left),
+            )?;
+        }
+
+        // Key on its own row above the "limit" label: what the two tones mean.
+        let key_y = 14;
+        let mut kx = 10;
+        for (fill, edge, text) in [
+            (BAR_OK, Some(BAR_OK_EDGE), "within tolerance"),
+            (BAR_OVER, None, "over tolerance"),
+        ] {
+            let swatch = [(kx, key_y - 6), (kx + 22, key_y + 6)];
+            root.draw(&Rectangle::new(swatch, fill.filled()))?;
+            if let Some(edge) = edge {
+                root.draw(&Rectangle::new(swatch, edge.stroke_width(1)))?;
+            }
+            draw_text(
+                root,
+                text,
+                (kx + 28, key_y),
+                label_style(false, INK, HPos::Left),
+            )?;
+            kx += 28 + text_width(text, TICK_PX).ceil() as i32 + 22;
+        }
+        if clipped {
+            let note = format!("▶ ratio above {}, bar clipped", fmt_fixed(RATIO_CLIP, 0));
+            draw_text(
+                root,
+                &note,
+                (kx, key_y),
+                label_style(false, MUTED, HPos::Left),
+            )?;
+        }
+        Ok(())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn style() -> Style {
+        Style {
+            font_family: "Inter".to_string(),
+            width_px: 900,
+            height_px: 420,
+        }
+    }
+
+    /// The ISO 230-2 Table 2 example: 11 targets, n = 5, k = 2.
+    fn iso_example() -> AxisChart {
+        let positions = vec![
+            6.711, 175.077, 340.251, 509.912, 674.140, 843.192, 1009.475, 1175.001, 1342.648,
+            1510.000, 1750.920,
+        ];
+        let up = [
+            -1.60, -0.70, -0.34, -0.94, -2.16, -3.34, -4.14, -4.28, -4.10, -3.72, -3.96,
+        ];
+        let down = [
+            2.26, 3.42, 3.42, 2.78, 1.44, 0.24, -0.60, -0.62, -0.20, -0.30, -0.48,
+        ];
+        let s_up = [
+            0.35, 0.42, 0.50, 0.30, 0.62, 0.55, 0.70, 0.65, 0.50, 0.45, 0.75,
+        ];
+        let s_down = [
+            0.60, 0.45, 0.30, 0.52, 0.40, 0.66, 0.38, 0.71, 0.55, 0.48, 0.35,
+        ];
+        let offsets = [-1.2, -0.4, 0.3, 0.5, 0.8];
+        let series = |m: &[f64], s: &[f64]| DirectionSeries {
+            mean: m.to_vec(),
+            upper: Some(m.iter().zip(s).map(|(a, b)| a + 2.0 * b).collect()),
+            lower: Some(m.iter().zip(s).map(|(a, b)| a - 2.0 * b).collect()),
+            deviations: m
+                .iter()
+                .zip(s)
+                .map(|(a, b)| offsets.iter().map(|o| a + o * b).collect())
+                .collect(),
+        };
+        AxisChart {
+            mean: up.iter().zip(&down).map(|(a, b)| (a + b) / 2.0).collect(),
+            positions,
+            position_label: "Target position Pi / mm".to_string(),
+            deviation_label: "Positional deviation / µm".to_string(),
+            up: series(&up, &s_up),
+            down: series(&down, &s_down),
+            band_label: "X̄ ± 2S".to_string(),
+            spans: vec![
+                span("A", 4.01, -5.58),
+                span("E", 3.42, -4.28),
+                span("M", 1.54, -2.45),
+            ],
+        }
+    }
+
+    fn span(label: &str, upper: f64, lower: f64) -> Span {
+        Span {
+            label: label.to_string(),
+            upper,
+            lower,
+        }
+    }
+
+    /// An axis measured once per target (n = 1): no limit curves.
+    fn single_run(targets: usize) -> AxisChart {
+        let positions: Vec<f64> = (0..targets).map(|i| 20.0 + 100.0 * i as f64).collect();
+        let up: Vec<f64> = (0..targets).map(|i| (i as f64 * 0.4).sin() * 3.0).collect();
+        let down: Vec<f64> = up.iter().map(|v| v + 2.0).collect();
+        let series = |m: &[f64]| DirectionSeries {
+            mean: m.to_vec(),
+            upper: None,
+            lower: None,
+            deviations: m.iter().map(|v| vec![*v]).collect(),
+        };
+        AxisChart {
+            mean: up.iter().zip(&down).map(|(a, b)| (a + b) / 2.0).collect(),
+            positions,
+            position_label: "Target position Pi / mm".to_string(),
+            deviation_label: "Positional deviation / µm".to_string(),
+            up: series(&up),
+            down: series(&down),
+            band_label: "X̄ ± 3S".to_string(),
+            spans: Vec::new(),
+        }
+    }
+
+    fn bars(n: usize) -> Vec<RatioBar> {
+        (0..n)
+            .map(|i| {
+                let ratio = match i % 20 {
+                    3 => 2.6,
+                    7 => 1.15,
+                    12 => 5.4,
+                    _ => 0.1 + ((i * 37) % 90) as f64 / 100.0,
+                };
+                RatioBar {
+                    label: format!("Machine {} / {}", i / 5, ["X", "Y", "Z", "B", "C"][i % 5]),
+                    parameter: ["A", "B", "E", "M"][i % 4].to_string(),
+                    ratio,
+                    pass: ratio <= 1.0,
+                }
+            })
+            .collect()
+    }
+
+    /// The text content of every `<text>` element.
+    fn texts(svg: &str) -> Vec<String> {
+        svg.split("<text")
+            .skip(1)
+            .filter_map(|t| {
+                let start = t.find('>')? + 1;
+                let end = t.find("</text>")?;
+                Some(t[start..end].trim().to_string())
+            })
+            .collect()
+    }
+
+    /// The opening tag of the `<text>` element holding exactly `content`.
+    fn text_tag<'a>(svg: &'a str, content: &str) -> Option<&'a str> {
+        svg.split("<text").skip(1).find_map(|t| {
+            let start = t.find('>')?;
+            let end = t.find("</text>")?;
+            (t[start + 1..end].trim() == content).then_some(&t[..start])
+        })
+    }
+
+    fn attr_values<'a>(svg: &'a str, attr: &str) -> Vec<&'a str> {
+        let key = format!(" {attr}=\"");
+        svg.match_indices(&key)
+            .filter_map(|(i, _)| {
+                let rest = &svg[i + key.len()..];
+                rest.find('"').map(|end| &rest[..end])
+            })
+            .collect()
+    }
+
+    fn assert_well_formed(svg: &str) {
+        assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+        assert!(svg.trim_end().ends_with("</svg>"));
+        assert_eq!(svg.matches("<text").count(), svg.matches("</text>").count());
+        assert_eq!(svg.matches("<svg").count(), 1);
+        assert!(!svg.contains("NaN") && !svg.contains("inf\""));
+    }
+
+    fn all_charts(chart: &AxisChart, style: &Style) -> Vec<String> {
+        let ups = [span("A↑", 0.66, -5.58), span("R↑", 3.0, 0.0)];
+        let downs = [span("A↓", 4.01, -1.9)];
+        vec![
+            bidirectional(chart, style),
+            unidirectional(chart, &ups, &downs, style),
+            tolerance_usage(&bars(20), style),
+        ]
+    }
+
+    #[test]
+    fn bidirectional_shows_labels_legend_and_spans() {
+        let svg = bidirectional(&iso_example(), &style());
+        assert_well_formed(&svg);
+        let t = texts(&svg);
+        for want in [
+            "Target position Pi / mm",
+            "Positional deviation / µm",
+            "mean X̄i↑",
+            "mean X̄i↓",
+            "X̄ ± 2S ↑",
+            "X̄ ± 2S ↓",
+            "readings ↑",
+            "readings ↓",
+            "mean X̄i (bidirectional)",
+            "A",
+            "9.59",
+            "E",
+            "7.70",
+            "M",
+            "3.99",
+        ] {
+            assert!(
+                t.iter().any(|x| x == want),
+                "missing text {want:?} in {t:?}"
+            );
+        }
+        // Tick labels use a true minus sign.
+        assert!(t.iter().any(|x| x.starts_with('−')), "{t:?}");
+        // ↑ and ↓ differ in marker shape: filled circles and white-filled triangles.
+        assert!(svg.contains("<circle"));
+        assert!(svg.contains("<polygon opacity=\"1\" fill=\"#FFFFFF\""));
+    }
+
+    #[test]
+    fn unidirectional_shows_both_panels_and_their_spans() {
+        let chart = iso_example();
+        let ups = [span("A↑", 0.66, -5.58), span("E↑", -0.34, -4.28)];
+        let downs = [span("A↓", 4.01, -1.9), span("R↓", 2.84, 0.0)];
+        let svg = unidirectional(&chart, &ups, &downs, &style());
+        assert_well_formed(&svg);
+        let t = texts(&svg);
+        for want in [
+            "Approach ↑",
+            "Approach ↓",
+            "A↑",
+            "E↑",
+            "A↓",
+            "R↓",
+            "6.24",
+            "Target position Pi / mm",
+            "Positional deviation / µm",
+            "mean X̄i↑",
+            "mean X̄i↓",
+        ] {
+            assert!(
+                t.iter().any(|x| x == want),
+                "missing text {want:?} in {t:?}"
+            );
+        }
+        // The bidirectional mean belongs to Fig. 2a only.
+        assert!(!t.iter().any(|x| x.contains("bidirectional")));
+        // One x description (bottom panel) and one y description (shared).
+        assert_eq!(
+            t.iter().filter(|x| *x == "Target position Pi / mm").count(),
+            1
+        );
+        assert_eq!(
+            t.iter()
+                .filter(|x| *x == "Positional deviation / µm")
+                .count(),
+            1
+        );
+    }
+
+    #[test]
+    fn only_the_given_font_family_is_named() {
+        let style = Style {
+            font_family: "Test Face".to_string(),
+            ..style()
+        };
+        let mut svgs = all_charts(&iso_example(), &style);
+        svgs.push(bidirectional(&AxisChart::default(), &style));
+        svgs.push(tolerance_usage(&[], &style));
+        for svg in svgs {
+            let families = attr_values(&svg, "font-family");
+            assert!(!families.is_empty());
+            assert!(families.iter().all(|f| *f == "Test Face"), "{families:?}");
+            assert!(!svg.contains("sans-serif") && !svg.contains("serif\""));
+            assert_eq!(families.len(), svg.matches("<text").count());
+        }
+    }
+
+    #[test]
+    fn font_sizes_are_plain_numbers() {
+        for svg in all_charts(&iso_example(), &style()) {
+            for size in attr_values(&svg, "font-size") {
+                let decimals = size.split('.').nth(1).map_or(0, str::len);
+                assert!(decimals <= 2, "font-size {size}");
+            }
+        }
+    }
+
+    #[test]
+    fn same_input_gives_same_bytes() {
+        let a = all_charts(&iso_example(), &style());
+        let b = all_charts(&iso_example(), &style());
+        assert_eq!(a, b);
+        assert_eq!(
+            tolerance_usage(&bars(60), &style()),
+            tolerance_usage(&bars(60), &style())
+        );
+    }
+
+    #[test]
+    fn unicode_and_markup_survive_escaped() {
+        let mut chart = iso_example();
+        chart.position_label = "Target position Pi / °".to_string();
+        chart.deviation_label = "Angle / ″ <arcsec> & \"x\"".to_string();
+        let svg = bidirectional(&chart, &style());
+        assert_well_formed(&svg);
+        assert!(svg.contains("Target position Pi / °"));
+        assert!(svg.contains("&lt;arcsec&gt; &amp; &quot;x&quot;"));
+        assert!(!svg.contains("<arcsec>"));
+        assert!(svg.contains("X̄ ± 2S ↑"));
+    }
+
+    #[test]
+    fn n1_has_no_limit_curves_and_no_readings_entry() {
+        let chart = single_run(40);
+        for svg in [
+            bidirectional(&chart, &style()),
+            unidirectional(&chart, &[], &[], &style()),
+        ] {
+            assert_well_formed(&svg);
+            let t = texts(&svg);
+            assert!(t.iter().any(|x| x == "mean X̄i↑"));
+            assert!(!t.iter().any(|x| x.contains("X̄ ± 3S")), "{t:?}");
+            assert!(!t.iter().any(|x| x.starts_with("readings")), "{t:?}");
+        }
+    }
+
+    #[test]
+    fn degenerate_inputs_do_not_panic() {
+        let flat = |v: f64| DirectionSeries {
+            mean: vec![v; 3],
+            upper: Some(vec![v; 3]),
+            lower: Some(vec![v; 3]),
+            deviations: vec![vec![v; 2]; 3],
+        };
+        let mut cases = vec![
+            AxisChart::default(),
+            single_run(1),
+            single_run(2),
+            AxisChart {
+                positions: vec![5.0; 3],
+                up: flat(0.0),
+                down: flat(0.0),
+                mean: vec![0.0; 3],
+                ..AxisChart::default()
+            },
+            AxisChart {
+                positions: vec![0.0, 1.0, 2.0],
+                up: flat(7.25),
+                down: flat(7.25),
+                spans: vec![span("A", 7.25, 7.25)],
+                ..AxisChart::default()
+            },
+            AxisChart {
+                positions: vec![0.0, 1e-12, 2e-12],
+                up: flat(1e-300),
+                down: flat(-1e-300),
+                ..AxisChart::default()
+            },
+            AxisChart {
+                positions: vec![1.0, 2.0, 3.0],
+                up: flat(1e-6),
+                down: flat(1.000001e-6),
+                ..AxisChart::default()
+            },
+        ];
+        // Ragged and hostile data: lengths that disagree, non-finite values, huge values.
+        let mut ragged = iso_example();
+        ragged.up.mean.truncate(4);
+        ragged.down.upper = Some(vec![1.0]);
+        ragged.down.deviations.push(vec![f64::NAN, f64::INFINITY]);
+        ragged.mean = vec![f64::NAN, 2.0, f64::NEG_INFINITY];
+        ragged.spans.push(span("Z", f64::INFINITY, 0.0));
+        ragged.spans.push(span("W", -1.0, 2.0));
+        cases.push(ragged);
+        let mut huge = iso_example();
+        huge.up.mean[0] = 1e300;
+        huge.down.mean[0] = -1e300;
+        cases.push(huge);
+        let mut far = iso_example();
+        far.positions = vec![-1e300, 1e300];
+        cases.push(far);
+        let mut many_spans = iso_example();
+        many_spans.spans = (0..25)
+            .map(|i| span(&format!("Span number {i}"), i as f64, -(i as f64)))
+            .collect();
+        cases.push(many_spans);
+
+        let styles = [
+            style(),
+            Style {
+                font_family: String::new(),
+                width_px: 0,
+                height_px: 0,
+            },
+            Style {
+                font_family: "Inter".to_string(),
+                width_px: 300,
+                height_px: 150,
+            },
+        ];
+        for chart in &cases {
+            for st in &styles {
+                for svg in all_charts(chart, st) {
+                    assert_well_formed(&svg);
+                }
+                let svg = unidirectional(chart, &chart.spans, &chart.spans, st);
+                assert_well_formed(&svg);
+            }
+        }
+    }
+
+    #[test]
+    fn y_range_covers_everything_with_padding() {
+        let (lo, hi) = y_range([-5.58, 4.36, 1.0]).expect("range");
+        let span = 4.36 + 5.58;
+        assert!((lo - (-5.58 - 0.08 * span)).abs() < 1e-9);
+        assert!((hi - (4.36 + 0.08 * span)).abs() < 1e-9);
+        // Zero is always inside.
+        let (lo, hi) = y_range([3.0, 4.0]).expect("range");
+        assert!(lo < 0.0 && hi > 4.0);
+        // All equal (zero) still gives a usable range.
+        let (lo, hi) = y_range([0.0, 0.0]).expect("range");
+        assert!(lo < 0.0 && hi > 0.0);
+        // Non-finite values are ignored.
+        let (lo, hi) = y_range([f64::NAN, f64::INFINITY, 2.0]).expect("range");
+        assert!(lo < 0.0 && hi > 2.0 && hi < 3.0);
+        // A single target gets a window around it.
+        let (lo, hi) = x_range(&[6.711]).expect("range");
+        assert!(lo < 6.711 && hi > 6.711);
+        assert!(x_range(&[]).is_none());
+    }
+
+    #[test]
+    fn numbers_are_formatted_for_print() {
+        assert_eq!(fmt_fixed(-1.5, 2), "−1.50");
+        assert_eq!(fmt_fixed(-0.001, 2), "0.00");
+        assert_eq!(fmt_fixed(1750.0, 0), "1750");
+        assert_eq!(fmt_fixed(f64::INFINITY, 2), "∞");
+        assert_eq!(fmt_fixed(-2.5e300, 0), "−2.50e300");
+        assert_eq!(fmt_sig(9.59), "9.59");
+        assert_eq!(fmt_sig(12.34), "12.3");
+        assert_eq!(fmt_sig(0.0123), "0.0123");
+        assert_eq!(fmt_sig(1234.0), "1234");
+        assert_eq!(ticks((-6.0, 5.0), 8).1, 0);
+        assert_eq!(ticks((-0.6, 0.5), 8).1, 1);
+        assert_eq!(ticks((0.0, 3.12), 12).1, 1);
+    }
+
+    #[test]
+    fn dashes_follow_the_pattern() {
+        let solid = dashes(&[(0.0, 0.0), (100.0, 0.0)], SOLID);
+        assert_eq!(solid, vec![vec![(0, 0), (100, 0)]]);
+        let dashed = dashes(&[(0.0, 0.0), (50.0, 0.0), (100.0, 0.0)], &[10.0, 5.0]);
+        assert_eq!(dashed.len(), 7);
+        assert_eq!(dashed[0], vec![(0, 0), (10, 0)]);
+        // A dash running over a corner keeps the corner.
+        assert!(dashed.iter().any(|d| d.contains(&(50, 0)) && d.len() == 3));
+        assert!(dashes(&[], DASHED).is_empty());
+    }
+
+    #[test]
+    fn tolerance_usage_marks_bars_over_the_limit() {
+        let bars = bars(20);
+        let style = Style {
+            height_px: ratio_chart_height(bars.len()),
+            ..style()
+        };
+        let svg = tolerance_usage(&bars, &style);
+        assert_well_formed(&svg);
+        let t = texts(&svg);
+        for want in [
+            "limit",
+            "within tolerance",
+            "over tolerance",
+            "Worst parameter / tolerance",
+        ] {
+            assert!(t.iter().any(|x| x == want), "missing {want:?}");
+        }
+        // Over the limit: bold, dark label ...
+        let over = text_tag(&svg, "M 2.60").expect("label of the bar at 2.60");
+        assert!(over.contains("font-weight=\"bold\"") && over.contains("#6E1414"));
+        let ok = text_tag(&svg, "A 0.47").or_else(|| text_tag(&svg, "B 0.47"));
+        let ok = ok.expect("label of a bar within tolerance");
+        assert!(!ok.contains("font-weight"));
+        // ... a dark bar (key swatch plus three bars) ...
+        let dark = svg.matches("fill=\"#6E1414\" stroke=\"none\"").count();
+        assert_eq!(dark, 1 + 3);
+        // ... and the clipped one keeps its value and gets the arrow and the note.
+        assert!(t.iter().any(|x| x == "A 5.40"), "{t:?}");
+        assert!(t.iter().any(|x| x.contains("clipped")));
+        // Every bar has its axis label.
+        for b in &bars {
+            assert!(t.contains(&b.label), "missing {}", b.label);
+        }
+    }
+
+    #[test]
+    fn tolerance_usage_without_failures_has_no_dark_bar() {
+        let bars: Vec<RatioBar> = bars(5)
+            .into_iter()
+            .map(|mut b| {
+                b.ratio = b.ratio.min(0.9);
+                b.pass = true;
+                b
+            })
+            .collect();
+        let svg = tolerance_usage(&bars, &style());
+        assert_eq!(svg.matches("fill=\"#6E1414\" stroke=\"none\"").count(), 1);
+        assert!(!svg.contains("clipped"));
+        assert!(texts(&svg).iter().any(|x| x == "limit"));
+    }
+
+    #[test]
+    fn tolerance_usage_handles_1_to_60_bars_and_odd_ratios() {
+        for n in [1, 2, 20, 40, 60] {
+            let style = Style {
+                height_px: ratio_chart_height(n),
+                ..style()
+            };
+            let svg = tolerance_usage(&bars(n), &style);
+            assert_well_formed(&svg);
+            assert!(svg.len() < 80_000, "{n} bars: {} bytes", svg.len());
+        }
+        assert!(ratio_chart_height(60) > ratio_chart_height(20));
+        assert!(ratio_chart_height(1) >= 170);
+        let odd = [f64::NAN, f64::INFINITY, -2.0, 0.0, 1e300]
+            .into_iter()
+            .map(|ratio| RatioBar {
+                label: String::new(),
+                parameter: String::new(),
+                ratio,
+                pass: false,
+            })
+            .collect::<Vec<_>>();
+        assert_well_formed(&tolerance_usage(&odd, &style()));
+        // Too little height for 60 rows still draws.
+        assert_well_formed(&tolerance_usage(&bars(60), &style()));
+        let empty = tolerance_usage(&[], &style());
+        assert_well_formed(&empty);
+        assert!(texts(&empty).iter().any(|x| x.contains("No axes")));
+    }
+
+    #[test]
+    fn axis_charts_stay_small() {
+        for svg in all_charts(&iso_example(), &style())
+            .into_iter()
+            .chain([bidirectional(&single_run(40), &style())])
+        {
+            let elements = svg.matches('<').count();
+            assert!(svg.len() < 80_000, "{} bytes", svg.len());
+            assert!(elements < 1_000, "{elements} elements");
+        }
+    }
+}

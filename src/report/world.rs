@@ -1,0 +1,145 @@
+//! The Typst `World` behind every report: all I/O of the typesetter goes through it.
+//!
+//! [`Typesetter`] holds what every document shares — the standard library, the font book
+//! and the fonts (typst-assets' faces plus the embedded Inter) and the templates — and is
+//! built once per process. [`DocumentWorld`] adds one document's files (its main
+//! template, `/data.json`, chart SVGs), all in memory: a template can read nothing from
+//! the disk, and report data reach it only as data.
+
+use std::collections::HashMap;
+use typst::diag::{FileError, FileResult};
+use typst::foundations::{Bytes, Datetime};
+use typst::syntax::{FileId, RootedPath, Source, VirtualPath, VirtualRoot};
+use typst::text::{Font, FontBook};
+use typst::utils::LazyHash;
+use typst::{Library, LibraryExt, World};
+
+/// The sans-serif face embedded for body text and charts.
+pub const SANS_FAMILY: &str = "Inter";
+
+const INTER: [&[u8]; 4] = [
+    include_bytes!("../../templates/fonts/Inter-Regular.otf"),
+    include_bytes!("../../templates/fonts/Inter-Italic.otf"),
+    include_bytes!("../../templates/fonts/Inter-SemiBold.otf"),
+    include_bytes!("../../templates/fonts/Inter-Bold.otf"),
+];
+
+/// Shared, read-only typesetting state.
+pub struct Typesetter {
+    library: LazyHash<Library>,
+    book: LazyHash<FontBook>,
+    fonts: Vec<Font>,
+    /// Template sources by virtual path (`/axis-report.typ` …).
+    templates: HashMap<String, String>,
+}
+
+impl Typesetter {
+    /// Loads the fonts and the library; `templates` maps file names to Typst sources.
+    pub fn new(templates: HashMap<String, String>) -> Typesetter {
+        let fonts: Vec<Font> = typst_assets::fonts()
+            .chain(INTER)
+            .flat_map(|data| Font::iter(Bytes::new(data)))
+            .collect();
+        Typesetter {
+            library: LazyHash::new(Library::default()),
+            book: LazyHash::new(FontBook::from_fonts(&fonts)),
+            fonts,
+            templates,
+        }
+    }
+
+    /// Number of font faces loaded.
+    pub fn font_count(&self) -> usize {
+        self.fonts.len()
+    }
+
+    pub fn template(&self, name: &str) -> Option<&str> {
+        self.templates.get(name).map(String::as_str)
+    }
+}
+
+/// A virtual path's file id.
+pub fn file_id(path: &str) -> Option<FileId> {
+    VirtualPath::new(path)
+        .ok()
+        .map(|vpath| RootedPath::new(VirtualRoot::Project, vpath).intern())
+}
+
+/// One document: its main template and its data files.
+pub struct DocumentWorld<'a> {
+    typesetter: &'a Typesetter,
+    main: FileId,
+    /// Every file the document may read: templates and data, by id.
+    sources: HashMap<FileId, Source>,
+    files: HashMap<FileId, Bytes>,
+    today: Option<Datetime>,
+}
+
+impl<'a> DocumentWorld<'a> {
+    /// A document whose entry point is the template `main` (e.g. `/axis-report.typ`),
+    /// with `files` (virtual path → bytes) and the date `today` as (year, month, day).
+    pub fn new(
+        typesetter: &'a Typesetter,
+        main: &str,
+        files: Vec<(String, Vec<u8>)>,
+        today: Option<(i32, u8, u8)>,
+    ) -> Option<DocumentWorld<'a>> {
+        let mut sources = HashMap::new();
+        for (name, text) in &typesetter.templates {
+            let id = file_id(name)?;
+            sources.insert(id, Source::new(id, text.clone()));
+        }
+        let files = files
+            .into_iter()
+            .filter_map(|(path, bytes)| Some((file_id(&path)?, Bytes::new(bytes))))
+            .collect();
+        Some(DocumentWorld {
+            typesetter,
+            main: file_id(main)?,
+            sources,
+            files,
+            today: today.and_then(|(y, m, d)| Datetime::from_ymd(y, m, d)),
+        })
+    }
+}
+
+impl World for DocumentWorld<'_> {
+    fn library(&self) -> &LazyHash<Library> {
+        &self.typesetter.library
+    }
+
+    fn book(&self) -> &LazyHash<FontBook> {
+        &self.typesetter.book
+    }
+
+    fn main(&self) -> FileId {
+        self.main
+    }
+
+    fn source(&self, id: FileId) -> FileResult<Source> {
+        self.sources
+            .get(&id)
+            .cloned()
+            .ok_or_else(|| FileError::NotFound(id.get().vpath().get_with_slash().into()))
+    }
+
+    fn file(&self, id: FileId) -> FileResult<Bytes> {
+        if let Some(bytes) = self.files.get(&id) {
+            return Ok(bytes.clone());
+        }
+        if let Some(source) = self.sources.get(&id) {
+            return Ok(Bytes::from_string(source.text().to_string()));
+        }
+        Err(FileError::NotFound(
+            id.get().vpath().get_with_slash().into(),
+        ))
+    }
+
+    fn font(&self, index: usize) -> Option<Font> {
+        self.typesetter.fonts.get(index).cloned()
+    }
+
+    fn today(&self, _offset: Option<typst::foundations::Duration>) -> Option<Datetime> {
+        self.today
+    }
+}

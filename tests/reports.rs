@@ -1,0 +1,269 @@
+//! PDF reports: valid, readable, deterministic, injection-safe, warning-free.
+use axcheck::batch;
+use axcheck::campaign::Campaign;
+use axcheck::report::Reports;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn axcheck(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_axcheck"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("axcheck runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Page count and text of a PDF.
+fn read_pdf(path: &Path) -> (usize, String) {
+    let bytes = std::fs::read(path).unwrap();
+    assert!(bytes.starts_with(b"%PDF-"), "{}: not a PDF", path.display());
+    assert!(
+        bytes.trim_ascii_end().ends_with(b"%%EOF"),
+        "{}: truncated",
+        path.display()
+    );
+    let doc =
+        lopdf::Document::load_mem(&bytes).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let pages: Vec<u32> = doc.get_pages().keys().copied().collect();
+    let text = doc
+        .extract_text(&pages)
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    (pages.len(), text)
+}
+
+fn pdfs(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for entry in walkdir_like(dir) {
+        if entry.extension().is_some_and(|e| e == "pdf") {
+            out.push(entry);
+        }
+    }
+    out.sort();
+    out
+}
+
+fn walkdir_like(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            out.extend(walkdir_like(&p));
+        } else {
+            out.push(p);
+        }
+    }
+    out
+}
+
+/// Text extraction splits lines and may insert spaces; compare without whitespace.
+fn squash(s: &str) -> String {
+    s.chars().filter(|c| !c.is_whitespace()).collect()
+}
+
+#[test]
+fn every_pdf_of_the_example_campaign() {
+    let out = std::env::temp_dir().join(format!("axcheck-pdf-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        "example-campaign/campaign.yaml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    let results: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
+    let axes = results["axes"].as_array().unwrap();
+    let files = pdfs(&out);
+    assert_eq!(
+        files.len(),
+        axes.len() + 1,
+        "one report per axis test and the summary"
+    );
+
+    let (pages, text) = read_pdf(&out.join("summary.pdf"));
+    assert_eq!(pages, 2, "summary: table, then chart and lists");
+    let text = squash(&text);
+    assert!(text.contains("Plant2annualinspection"));
+    for axis in axes {
+        assert!(
+            text.contains(&squash(axis["machine"].as_str().unwrap())),
+            "{}",
+            axis["machine"]
+        );
+    }
+
+    for axis in axes {
+        let machine = axis["machine"].as_str().unwrap();
+        let name = axis["axis"].as_str().unwrap();
+        let file = if axis["tests"].as_u64() == Some(1) {
+            format!("{}.pdf", name.replace(' ', "_"))
+        } else {
+            format!("{}-test{}.pdf", name, axis["test"])
+        };
+        let path = out.join("reports").join(machine).join(file);
+        let (pages, text) = read_pdf(&path);
+        // Page 1: header, conditions and results; page 2: the two figures; page 3: the
+        // per-target blocks of six targets and the findings.
+        let expected = 3;
+        assert_eq!(pages, expected, "{machine} {name}: {pages} pages");
+        let text = squash(&text);
+        assert!(text.contains(&squash(machine)), "{machine} {name}");
+        assert!(
+            text.contains(&squash(&format!("axis {name}"))),
+            "{machine} {name}"
+        );
+        let verdict = axis["verdict"].as_str().unwrap().to_uppercase();
+        assert!(
+            text.contains(&verdict),
+            "{machine} {name}: verdict {verdict}"
+        );
+        if let Some(a) = axis["parameters"].get("A").and_then(|v| v.as_f64()) {
+            let shown = format!("{a:.2}").replace('-', "−");
+            assert!(
+                text.contains(&shown),
+                "{machine} {name}: A = {shown} not in the text"
+            );
+        } else {
+            assert!(
+                text.contains("notapplicable"),
+                "{machine} {name}: n = 1 rows say not applicable"
+            );
+        }
+    }
+    let (_, iso) = read_pdf(&out.join("reports/REF-ISO/X.pdf"));
+    let iso = squash(&iso);
+    for want in [
+        "9.59",
+        "7.70",
+        "3.99",
+        "6.55",
+        "4.12",
+        "−3.69",
+        "ati=9(1408.462mm)",
+        "Y=300mm;Z=350mm;C=0°",
+        "102.4kPa",
+    ] {
+        assert!(
+            iso.contains(want),
+            "{want} missing from the ISO Table 2 report"
+        );
+    }
+    std::fs::remove_dir_all(out).unwrap();
+}
+
+#[test]
+fn user_text_is_data_not_markup() {
+    let dir = std::env::temp_dir().join(format!("axcheck-inject-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("data")).unwrap();
+    std::fs::copy(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/iso230-2_table2.csv"),
+        dir.join("data/x.csv"),
+    )
+    .unwrap();
+    let evil = r#"#read("/etc/passwd") *bold* $x$ ]] #panic("no")"#;
+    let campaign = dir.join("c.yaml");
+    std::fs::write(
+        &campaign,
+        format!(
+            "campaign: {{name: '{evil}'}}\nmachines:\n  - id: '{evil}'\n    model: '<script>alert(1)</script> & \\u0000'\n    axes:\n      - {{name: 'X {evil}', kind: linear, data: data/x.csv}}\n"
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let files = pdfs(&out);
+    assert_eq!(files.len(), 2, "{files:?}");
+    for f in &files {
+        let (_, text) = read_pdf(f);
+        let text = squash(&text);
+        assert!(
+            text.contains(&squash(evil)),
+            "{}: the name must appear literally",
+            f.display()
+        );
+        assert!(
+            !text.contains("root:x:0:0"),
+            "{}: nothing may be read",
+            f.display()
+        );
+    }
+    // The file name is sanitised.
+    assert!(files.iter().all(|f| f.starts_with(&out)));
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn templates_compile_without_warnings_and_identically() {
+    let campaign = Campaign::load(Path::new("example-campaign/campaign.yaml")).unwrap();
+    let result = batch::run(&campaign, batch::Options { jobs: 2 }, &|_| {});
+    let reports = Reports::new(None).unwrap();
+    for t in &result.tests {
+        let first = reports.axis(&result, t).unwrap();
+        assert!(
+            first.warnings.is_empty(),
+            "{}: {:?}",
+            t.label(),
+            first.warnings
+        );
+        let second = reports.axis(&result, t).unwrap();
+        assert_eq!(
+            first.pdf,
+            second.pdf,
+            "{}: same input, same bytes",
+            t.label()
+        );
+    }
+    let summary = reports.summary(&result).unwrap();
+    assert!(summary.warnings.is_empty(), "{:?}", summary.warnings);
+    assert_eq!(summary.pdf, reports.summary(&result).unwrap().pdf);
+}
+
+#[test]
+fn a_customised_template_folder() {
+    let dir = std::env::temp_dir().join(format!("axcheck-tpl-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    for (name, text) in axcheck::report::TEMPLATES {
+        let text = text.replace(
+            "Positioning accuracy campaign summary",
+            "ACME Works quality report",
+        );
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+    let out = dir.join("out");
+    let (code, _, stderr) = axcheck(&[
+        "run",
+        "example-campaign/campaign.yaml",
+        "--out",
+        out.to_str().unwrap(),
+        "--templates",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{stderr}");
+    let (_, text) = read_pdf(&out.join("summary.pdf"));
+    assert!(squash(&text).contains("ACMEWORKSQUALITYREPORT"), "{text}");
+    let (code, _, stderr) = axcheck(&[
+        "run",
+        "example-campaign/campaign.yaml",
+        "--out",
+        out.to_str().unwrap(),
+        "--templates",
+        "/nonexistent",
+    ]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("templates"), "{stderr}");
+    std::fs::remove_dir_all(dir).unwrap();
+}
