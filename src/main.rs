@@ -62,13 +62,18 @@ enum Command {
         #[arg(long, short, default_value_t = 0)]
         jobs: usize,
     },
-    /// Simulate a positioning test from an error model and a test plan (YAML).
+    /// Simulate a positioning test from an error model and a test plan (YAML), or with
+    /// --fleet a whole synthetic campaign for benchmarks.
     Simulate {
         /// Simulation file: kind, seed, model terms and plan.
-        model: PathBuf,
-        /// Output CSV (default: standard output).
-        #[arg(long, short)]
+        #[arg(required_unless_present = "fleet")]
+        model: Option<PathBuf>,
+        /// Output CSV (default: standard output); with --fleet the output folder.
+        #[arg(long, short, visible_alias = "out")]
         output: Option<PathBuf>,
+        /// Write a campaign of this many axes with their data files into --out.
+        #[arg(long, conflicts_with = "model", requires = "output")]
+        fleet: Option<usize>,
         /// Seed overriding the file's.
         #[arg(long)]
         seed: Option<u64>,
@@ -95,6 +100,15 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<ExitCode> {
+    // One pool for the whole process, so --jobs bounds evaluation and typesetting alike.
+    if let Command::Run { jobs, .. } | Command::Check { jobs, .. } = &cli.command
+        && *jobs > 0
+    {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(*jobs)
+            .build_global()
+            .context("cannot start the worker threads")?;
+    }
     match cli.command {
         Command::Eval {
             file,
@@ -147,8 +161,16 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Simulate {
             model,
             output,
+            fleet,
             seed,
         } => {
+            if let (Some(axes), Some(dir)) = (fleet, &output) {
+                cli::simulate::fleet(axes, seed.unwrap_or(1), dir)?;
+                return Ok(ExitCode::SUCCESS);
+            }
+            let Some(model) = model else {
+                bail!("give a simulation file, or --fleet N --out DIR");
+            };
             let csv = cli::simulate::run(&model, seed)?;
             match output {
                 Some(path) => {

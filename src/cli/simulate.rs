@@ -26,3 +26,28 @@ pub fn run(model: &Path, seed: Option<u64>) -> Result<String> {
     }
     Ok(csv::write(&data, &comments))
 }
+
+/// Writes a synthetic fleet campaign into `dir`.
+pub fn fleet(axes: usize, seed: u64, dir: &Path) -> Result<()> {
+    if axes == 0 {
+        anyhow::bail!("--fleet needs at least one axis");
+    }
+    let start = std::time::Instant::now();
+    let fleet = axcheck::simulate::fleet::generate(axes, seed);
+    for f in &fleet.files {
+        let path = dir.join(&f.path);
+        axcheck::atomic::write(&path, f.text.as_bytes())
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    let campaign = dir.join("campaign.yaml");
+    axcheck::atomic::write(&campaign, fleet.campaign_yaml.as_bytes())
+        .with_context(|| format!("cannot write {}", campaign.display()))?;
+    eprintln!(
+        "axcheck: wrote {} ({} axes, {} readings) in {:.1} s",
+        campaign.display(),
+        fleet.axes,
+        fleet.readings,
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
+}

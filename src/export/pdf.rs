@@ -11,6 +11,9 @@ pub struct Pdf {
     pub reports: Reports,
 }
 
+/// Reports typeset between two evictions of Typst's caches.
+const REPORTS_PER_CHUNK: usize = 32;
+
 /// A file-name part from user text: ASCII letters, digits, `-`, `_` and `.` kept, anything
 /// else (`/`, `..`, NUL, spaces, non-ASCII) becomes `_`; no leading dot; Windows' reserved
 /// device names get a trailing `_`; at most 64 characters.
@@ -90,17 +93,23 @@ impl Exporter for Pdf {
             message: e.to_string(),
         };
         let paths = report_paths(result);
-        let mut files: Vec<OutputFile> = result
-            .tests
-            .par_iter()
-            .zip(paths)
-            .map(|(t, path)| {
-                Ok(OutputFile {
-                    path,
-                    bytes: self.reports.axis(result, t).map_err(err)?.pdf,
+        let work: Vec<_> = result.tests.iter().zip(paths).collect();
+        let mut files: Vec<OutputFile> = Vec::with_capacity(work.len() + 1);
+        // In chunks, evicting Typst's memo caches between them: memory stays bounded
+        // however many reports a campaign has.
+        for chunk in work.chunks(REPORTS_PER_CHUNK) {
+            let rendered = chunk
+                .par_iter()
+                .map(|(t, path)| {
+                    Ok(OutputFile {
+                        path: path.clone(),
+                        bytes: self.reports.axis(result, t).map_err(err)?.pdf,
+                    })
                 })
-            })
-            .collect::<Result<_, ExportError>>()?;
+                .collect::<Result<Vec<_>, ExportError>>()?;
+            files.extend(rendered);
+            report::evict_caches();
+        }
         files.push(OutputFile {
             path: "summary.pdf".into(),
             bytes: self.reports.summary(result).map_err(err)?.pdf,

@@ -3,6 +3,7 @@
 //! It is the project's model of an axis; `axcheck diagnose` fits it to measured data.
 //! Output is deterministic for a seed: each random term draws from its own stream.
 
+pub mod fleet;
 pub mod model;
 pub mod plan;
 pub mod rng;

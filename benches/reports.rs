@@ -1,0 +1,66 @@
+//! `cargo bench --bench reports`: time per axis report, split into charts, typesetting and
+//! PDF export, on one core. Uses the example campaign.
+use axcheck::batch;
+use axcheck::campaign::Campaign;
+use axcheck::report::{Reports, charts, data};
+use std::path::Path;
+use std::time::Instant;
+
+fn main() {
+    let campaign =
+        Campaign::load(Path::new("example-campaign/campaign.yaml")).expect("example campaign");
+    let result = batch::run(&campaign, batch::Options { jobs: 1 }, &|_| {});
+    let reports = Reports::new(None).expect("templates");
+    let tests: Vec<_> = result
+        .tests
+        .iter()
+        .filter(|t| t.evaluation.is_some())
+        .collect();
+    // Warm up: fonts, library, caches.
+    for t in &tests {
+        reports.axis(&result, t).expect("report");
+    }
+    let rounds = 5;
+    let start = Instant::now();
+    let mut charts_s = 0.0;
+    for _ in 0..rounds {
+        for t in &tests {
+            let c0 = Instant::now();
+            let (chart, up, down) = data::axis_chart(t.evaluation.as_ref().unwrap());
+            let style = charts::Style {
+                font_family: "Inter".into(),
+                width_px: 900,
+                height_px: 420,
+            };
+            let a = charts::bidirectional(&chart, &style);
+            let b = charts::unidirectional(&chart, &up, &down, &style);
+            charts_s += c0.elapsed().as_secs_f64();
+            std::hint::black_box((a, b));
+        }
+    }
+    let charts_ms = charts_s * 1000.0 / (rounds * tests.len()) as f64;
+    let total = Instant::now();
+    let mut bytes = 0usize;
+    for _ in 0..rounds {
+        for t in &tests {
+            bytes += reports.axis(&result, t).expect("report").pdf.len();
+        }
+        axcheck::report::evict_caches();
+    }
+    let per_report = total.elapsed().as_secs_f64() * 1000.0 / (rounds * tests.len()) as f64;
+    let s = Instant::now();
+    for _ in 0..rounds {
+        reports.summary(&result).expect("summary");
+    }
+    let summary_ms = s.elapsed().as_secs_f64() * 1000.0 / rounds as f64;
+    println!(
+        "axis reports: {} per round, {rounds} rounds, {:.1} s total",
+        tests.len(),
+        start.elapsed().as_secs_f64()
+    );
+    println!(
+        "per axis report (3 pages): {per_report:.1} ms on one core, of which charts {charts_ms:.1} ms; mean PDF {} KB",
+        bytes / (rounds * tests.len()) / 1024
+    );
+    println!("summary report: {summary_ms:.1} ms");
+}
