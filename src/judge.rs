@@ -296,6 +296,16 @@ pub enum Verdict {
 }
 
 impl Verdict {
+    /// Order for lists that put what needs attention first: fail, noncompliant, error, pass.
+    pub fn attention_rank(self) -> u8 {
+        match self {
+            Verdict::Fail => 0,
+            Verdict::Noncompliant => 1,
+            Verdict::Error => 2,
+            Verdict::Pass => 3,
+        }
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             Verdict::Pass => "pass",

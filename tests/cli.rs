@@ -1,19 +1,8 @@
 //! The `axcheck` command as a user runs it.
-use std::path::PathBuf;
-use std::process::Command;
+mod common;
 
-fn axcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_axcheck"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("axcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::axcheck;
+use std::path::PathBuf;
 
 fn json(args: &[&str]) -> serde_json::Value {
     let (code, out, err) = axcheck(args);

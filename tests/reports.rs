@@ -1,22 +1,11 @@
 //! PDF reports: valid, readable, deterministic, injection-safe, warning-free.
+mod common;
+
 use axcheck::batch;
 use axcheck::campaign::Campaign;
 use axcheck::report::Reports;
+use common::axcheck;
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn axcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_axcheck"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("axcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 /// Page count and text of a PDF.
 fn read_pdf(path: &Path) -> (usize, String) {

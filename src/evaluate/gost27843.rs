@@ -85,33 +85,9 @@ impl Standard for Gost27843 {
             }
         });
         let mut p = Vec::new();
-        let span = |key, label, name, clause, (value, hi, lo): (f64, f64, f64)| Parameter {
-            key,
-            label,
-            name,
-            clause,
-            value,
-            at_target: None,
-            span: Some((hi, lo)),
-        };
-        let at = |key, label, name, clause, (i, value): (usize, f64)| Parameter {
-            key,
-            label,
-            name,
-            clause,
-            value,
-            at_target: Some(i),
-            span: None,
-        };
-        let plain = |key, label, name, clause, value| Parameter {
-            key,
-            label,
-            name,
-            clause,
-            value,
-            at_target: None,
-            span: None,
-        };
+        let span = Parameter::spanned;
+        let at = Parameter::located;
+        let plain = Parameter::plain;
         if let Some(a) = band::accuracy(&targets, &[Up, Down]) {
             p.push(span(
                 "A",

@@ -29,24 +29,8 @@ impl Standard for Iso230_2 {
     fn evaluate(&self, data: &AxisData) -> Evaluation {
         let targets = band::per_target(data, K, sample_sd);
         let mut p = Vec::new();
-        let span = |key, label, name, clause, (value, hi, lo): (f64, f64, f64)| Parameter {
-            key,
-            label,
-            name,
-            clause,
-            value,
-            at_target: None,
-            span: Some((hi, lo)),
-        };
-        let at = |key, label, name, clause, (i, value): (usize, f64)| Parameter {
-            key,
-            label,
-            name,
-            clause,
-            value,
-            at_target: Some(i),
-            span: None,
-        };
+        let span = Parameter::spanned;
+        let at = Parameter::located;
         if let Some(a) = band::accuracy(&targets, &[Up, Down]) {
             p.push(span(
                 "A",

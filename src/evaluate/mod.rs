@@ -149,6 +149,55 @@ pub struct Parameter {
     pub span: Option<(f64, f64)>,
 }
 
+impl Parameter {
+    /// A parameter with no location.
+    pub fn plain(
+        key: &'static str,
+        label: &'static str,
+        name: &'static str,
+        clause: &'static str,
+        value: f64,
+    ) -> Parameter {
+        Parameter {
+            key,
+            label,
+            name,
+            clause,
+            value,
+            at_target: None,
+            span: None,
+        }
+    }
+
+    /// A range-type parameter, `max − min`, from (value, upper term, lower term).
+    pub fn spanned(
+        key: &'static str,
+        label: &'static str,
+        name: &'static str,
+        clause: &'static str,
+        (value, hi, lo): (f64, f64, f64),
+    ) -> Parameter {
+        Parameter {
+            span: Some((hi, lo)),
+            ..Parameter::plain(key, label, name, clause, value)
+        }
+    }
+
+    /// A maximum over targets, from (target index, value).
+    pub fn located(
+        key: &'static str,
+        label: &'static str,
+        name: &'static str,
+        clause: &'static str,
+        (i, value): (usize, f64),
+    ) -> Parameter {
+        Parameter {
+            at_target: Some(i),
+            ..Parameter::plain(key, label, name, clause, value)
+        }
+    }
+}
+
 /// Per-target, per-direction results.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DirectionResult {

@@ -75,14 +75,14 @@ impl Standard for Nmtba {
                 }
             })
             .collect();
-        let plain = |key, label, name, value| Parameter {
-            key,
-            label,
-            name,
-            clause: "NMTBA (Hemingray et al. 1971, 3.1)",
-            value,
-            at_target: None,
-            span: None,
+        let plain = |key, label, name, value| {
+            Parameter::plain(
+                key,
+                label,
+                name,
+                "NMTBA (Hemingray et al. 1971, 3.1)",
+                value,
+            )
         };
         let mut p = Vec::new();
         let mut notes = Vec::new();

@@ -100,14 +100,14 @@ impl Standard for Vdi3441 {
             })
             .collect();
         let (_, x_max, x_min) = band::systematic(&targets, &[Direction::Up, Direction::Down]);
-        let plain = |key, label, name, value| Parameter {
-            key,
-            label,
-            name,
-            clause: "VDI 3441 (Hemingray et al. 1971, 3.2)",
-            value,
-            at_target: None,
-            span: None,
+        let plain = |key, label, name, value| {
+            Parameter::plain(
+                key,
+                label,
+                name,
+                "VDI 3441 (Hemingray et al. 1971, 3.2)",
+                value,
+            )
         };
         let mut p = vec![
             plain("X_max", "X̄max", "largest mean deviation", x_max),

@@ -425,14 +425,8 @@ pub fn axis_report(result: &CampaignResult, t: &AxisTest) -> Value {
 
 /// Summary rows sorted so that what needs attention comes first.
 pub fn summary(result: &CampaignResult) -> Value {
-    let order = |v: Verdict| match v {
-        Verdict::Fail => 0,
-        Verdict::Noncompliant => 1,
-        Verdict::Error => 2,
-        Verdict::Pass => 3,
-    };
     let mut tests: Vec<&AxisTest> = result.tests.iter().collect();
-    tests.sort_by_key(|t| order(t.verdict));
+    tests.sort_by_key(|t| t.verdict.attention_rank());
     let rows: Vec<Value> = tests
         .iter()
         .map(|t| {

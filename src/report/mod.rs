@@ -146,12 +146,7 @@ impl Reports {
         let data = data::summary(result);
         let bars: Vec<charts::RatioBar> = {
             let mut tests: Vec<&AxisTest> = result.tests.iter().collect();
-            tests.sort_by_key(|t| match t.verdict {
-                crate::judge::Verdict::Fail => 0,
-                crate::judge::Verdict::Noncompliant => 1,
-                crate::judge::Verdict::Error => 2,
-                crate::judge::Verdict::Pass => 3,
-            });
+            tests.sort_by_key(|t| t.verdict.attention_rank());
             tests
                 .iter()
                 .filter_map(|t| {
