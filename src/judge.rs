@@ -87,7 +87,7 @@ impl Spec {
     pub fn from_yaml(text: &str, file: &str) -> Result<Spec, String> {
         let index = crate::campaign::yaml::LocationIndex::new(text);
         let value: serde_norway::Value = serde_norway::from_str(text)
-            .map_err(|e| crate::campaign::yaml::syntax_error(&e, file))?;
+            .map_err(|e| crate::campaign::yaml::syntax_error(&e, file, text))?;
         let spec: Spec = crate::campaign::yaml::deserialize_at(value, "", &index)
             .map_err(|e| e.in_file(file))?;
         for (group, bands) in [("linear", &spec.linear), ("rotary", &spec.rotary)] {

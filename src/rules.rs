@@ -326,6 +326,28 @@ pub fn check(ctx: &PlanContext, data: &AxisData) -> Vec<Finding> {
     if let Some(f) = thermal_trend(data) {
         push("iso-3.3-thermal", "ISO 230-2 3.3", Warning, f);
     }
+
+    // A column in the wrong unit: mm written into a µm column (or degrees into arcsec)
+    // leaves every deviation a thousand (3600) times too small.
+    let largest = data
+        .readings
+        .iter()
+        .map(|r| r.deviation.abs())
+        .fold(0.0, f64::max);
+    let (tiny, wrong, right) = match ctx.kind {
+        AxisKind::Linear => (0.05, "mm", "µm"),
+        AxisKind::Rotary => (0.01, "degrees", "arcsec"),
+    };
+    if largest > 0.0 && largest < tiny {
+        push(
+            "data-unit",
+            "ISO 230-2 2.5",
+            Warning,
+            format!(
+                "every deviation is below {tiny} {right}: were the values written in {wrong} into a {right} column? Check the column's unit (deviation_um / deviation_mm, deviation_arcsec / deviation_deg)"
+            ),
+        );
+    }
     out
 }
 

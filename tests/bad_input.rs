@@ -217,6 +217,63 @@ fn key_value_layout_errors() {
     );
 }
 
+#[test]
+fn direction_typos_get_a_suggestion() {
+    expect(
+        &with_rows("0,up,1,1\n0,dwon,1,2\n"),
+        "bad.csv:3:3:",
+        &["unknown direction `dwon` (did you mean `down`?)"],
+    );
+}
+
+#[test]
+fn implausible_values_are_refused() {
+    expect(
+        &with_rows("0,up,1,1e308\n"),
+        "bad.csv:2:8:",
+        &[
+            "1e308 is not a plausible deviation",
+            "check the column's unit",
+        ],
+    );
+    let e = measurement::read(
+        "target_mm,direction,run,actual_mm\n0,up,1,250\n".as_bytes(),
+        "bad.csv",
+    )
+    .unwrap_err();
+    assert!(
+        e.to_string().contains("250 is not a plausible deviation"),
+        "{e}"
+    );
+}
+
+#[test]
+fn key_value_targets_must_increase_with_their_index() {
+    let e = measurement::read("TGT_DATA[1]=20\nTGT_DATA[2]=10\n".as_bytes(), "k.dat")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("k.dat:2:1:") && e.contains("does not increase"),
+        "{e}"
+    );
+    let e = measurement::read("TGT_DATA[1]=20\nTGT_DATA[2]=20\n".as_bytes(), "k.dat")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("TGT_DATA[2] = 20 does not increase"), "{e}");
+}
+
+#[test]
+fn too_many_readings_stop_early() {
+    let mut text = String::from(HEADER);
+    for k in 0..=measurement::MAX_READINGS {
+        text.push_str(&format!("{},up,1,0.5\n", k));
+    }
+    let e = measurement::read(text.as_bytes(), "big.csv")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("more than 100000 readings"), "{e}");
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(500))]
 

@@ -259,6 +259,14 @@ fn thermal_drift_over_runs_warns() {
 }
 
 #[test]
+fn deviations_in_the_wrong_unit_warn() {
+    let d = data(AxisKind::Linear, &spread(0.0, 1000.0, 6), 5);
+    let in_mm = d.map_deviations(|r| r.deviation / 1000.0);
+    assert_eq!(ids(&ctx(AxisKind::Linear), &in_mm), vec!["data-unit"]);
+    assert!(ids(&ctx(AxisKind::Linear), &d).is_empty());
+}
+
+#[test]
 fn gost_profile() {
     let mut c = ctx(AxisKind::Linear);
     c.standard = StandardId::Gost27843;

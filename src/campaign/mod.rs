@@ -79,7 +79,7 @@ impl Campaign {
     pub fn parse(text: &str, path: &Path) -> Result<Campaign, CampaignError> {
         let file = path.display().to_string();
         let value: serde_norway::Value = serde_norway::from_str(text)
-            .map_err(|e| CampaignError(yaml::syntax_error(&e, &file)))?;
+            .map_err(|e| CampaignError(yaml::syntax_error(&e, &file, text)))?;
         let index = LocationIndex::new(text);
         let fail = |located: yaml::Located| CampaignError(located.in_file(&file));
         let serde_norway::Value::Mapping(mut top) = value else {
@@ -462,6 +462,11 @@ machines:
         let e = parse("campaign: {name: x}\nmachine: []\n").unwrap_err();
         assert!(
             e.0.contains("2:1: unknown key `machine` (did you mean `machines`?)"),
+            "{e}"
+        );
+        let e = parse("campaign:\n\tname: x\nmachines: []\n").unwrap_err();
+        assert!(
+            e.0.starts_with("plant/campaign.yaml:2:1:") && e.0.contains("indented with a tab"),
             "{e}"
         );
         let e = parse("campaign: {name: x\n").unwrap_err();

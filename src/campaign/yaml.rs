@@ -208,15 +208,24 @@ impl Located {
     }
 }
 
-/// serde_norway's own errors carry a location; turn them into `file:line:col: message`.
-pub fn syntax_error(e: &serde_norway::Error, file: &str) -> String {
+/// serde_norway's own errors carry a location; turn them into `file:line:col: message`,
+/// with a hint when the line is indented with a tab (YAML allows only spaces).
+pub fn syntax_error(e: &serde_norway::Error, file: &str, text: &str) -> String {
     match e.location() {
         Some(loc) => {
             let message = e.to_string();
             let message = message
                 .rsplit_once(" at line ")
                 .map_or(message.clone(), |(head, _)| head.to_string());
-            format!("{file}:{}:{}: {message}", loc.line(), loc.column())
+            let line = text.lines().nth(loc.line().saturating_sub(1)).unwrap_or("");
+            let hint = if line.trim_end().starts_with([' ', '\t']) && line.contains('\t')
+                || line.starts_with('\t')
+            {
+                " (the line is indented with a tab; YAML indents with spaces only)"
+            } else {
+                ""
+            };
+            format!("{file}:{}:{}: {message}{hint}", loc.line(), loc.column())
         }
         None => format!("{file}: {e}"),
     }

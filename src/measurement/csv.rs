@@ -278,14 +278,29 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
         } else {
             value * factor
         };
+        if deviation.abs() > super::MAX_DEVIATION {
+            let (col, text) = &fields[value_col];
+            return Err(err(
+                number,
+                *col,
+                ReadErrorKind::Implausible {
+                    column: names[value_col].clone(),
+                    value: text.trim().to_string(),
+                    limit: format!("{}", super::MAX_DEVIATION),
+                    unit: kind.deviation_unit().to_string(),
+                },
+            ));
+        }
         let (dcol, dtext) = &fields[direction_col];
         let direction = Direction::parse(dtext).ok_or_else(|| {
+            let found = dtext.trim().to_string();
+            let suggestion =
+                did_you_mean(&found, &["up", "down", "forward", "reverse", "fwd", "bwd"])
+                    .map(str::to_string);
             err(
                 number,
                 *dcol,
-                ReadErrorKind::UnknownDirection {
-                    found: dtext.trim().to_string(),
-                },
+                ReadErrorKind::UnknownDirection { found, suggestion },
             )
         })?;
         let (rcol, rtext) = &fields[run_col];

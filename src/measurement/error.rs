@@ -123,9 +123,22 @@ pub enum ReadErrorKind {
     #[error("column `{column}`: expected a finite number, found `{found}`")]
     NonFinite { column: String, found: String },
     #[error(
-        "column `direction`: unknown direction `{found}`; expected up/down (or +/-, ↑/↓, fwd/bwd, forward/reverse)"
+        "column `direction`: unknown direction `{found}`{}; expected up/down (or +/-, ↑/↓, fwd/bwd, forward/reverse)",
+        suggestion_text(suggestion)
     )]
-    UnknownDirection { found: String },
+    UnknownDirection {
+        found: String,
+        suggestion: Option<String>,
+    },
+    #[error(
+        "column `{column}`: {value} is not a plausible deviation (more than {limit} {unit}); check the column's unit"
+    )]
+    Implausible {
+        column: String,
+        value: String,
+        limit: String,
+        unit: String,
+    },
     #[error("column `run`: expected a run number 1, 2, 3 …, found `{found}`")]
     InvalidRun { found: String },
     #[error(

@@ -245,20 +245,23 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
             }
         }
     }
-    // Duplicate target values would merge two positions into one.
-    let mut seen_values: Vec<(f64, usize)> = Vec::new();
-    for entry in targets.values() {
-        if let Some((_, first)) = seen_values.iter().find(|(v, _)| *v == entry.value) {
+    // FWD means moving through the positions in index order, so the targets must increase
+    // with their index (a repeated value would also merge two positions into one).
+    let mut previous: Option<(usize, &Entry)> = None;
+    for (&i, entry) in &targets {
+        if let Some((p, prev)) = previous
+            && entry.value.partial_cmp(&prev.value) != Some(std::cmp::Ordering::Greater)
+        {
             return Err(fail(
                 entry.line,
                 1,
                 format!(
-                    "target {} is given twice (first on line {first}); every TGT_DATA must differ",
-                    entry.value
+                    "TGT_DATA[{i}] = {} does not increase from TGT_DATA[{p}] = {} (line {}); targets must increase with their index, because REF_DATA_FWD runs through them in that order",
+                    entry.value, prev.value, prev.line
                 ),
             ));
         }
-        seen_values.push((entry.value, entry.line));
+        previous = Some((i, entry));
     }
 
     // Measurement order of the toolchain: cycle j forward over the positions, then backward.
@@ -285,11 +288,30 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
             for i in ids {
                 if let Some(entry) = map.get(&(i, j)) {
                     let target = targets[&i].value + 0.0;
+                    let deviation = (entry.value - target) * factor;
+                    if deviation.abs() > super::MAX_DEVIATION {
+                        return Err(ReadError::new(
+                            Location::at(file, entry.line, 1),
+                            ReadErrorKind::Implausible {
+                                column: format!(
+                                    "REF_DATA_{}[{i},{j}]",
+                                    if direction == Direction::Up {
+                                        "FWD"
+                                    } else {
+                                        "BWD"
+                                    }
+                                ),
+                                value: entry.value.to_string(),
+                                limit: format!("{}", super::MAX_DEVIATION),
+                                unit: kind.deviation_unit().to_string(),
+                            },
+                        ));
+                    }
                     raw.push(RawReading {
                         target,
                         direction,
                         run: u32::try_from(j).unwrap_or(u32::MAX),
-                        deviation: (entry.value - target) * factor,
+                        deviation,
                         time_s: None,
                         temps_c: Vec::new(),
                         line: entry.line,

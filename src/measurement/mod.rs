@@ -16,9 +16,14 @@ use std::collections::HashMap;
 use std::io::BufRead;
 use std::path::Path;
 
-/// Most readings one file may hold (about 50 MB of CSV); beyond this the file is refused
-/// rather than exhausting memory.
-pub const MAX_READINGS: usize = 2_000_000;
+/// Most readings one file may hold. A positioning test has a few hundred to a few
+/// thousand (1 000 targets × 2 directions × 50 runs is 100 000); beyond this the file is
+/// refused after reading that far, so memory stays bounded whatever its size.
+pub const MAX_READINGS: usize = 100_000;
+
+/// Largest plausible |deviation| in µm or arcsec (100 mm, or 27.8°): anything larger is a
+/// unit mistake or a corrupt value, not a positioning error.
+pub const MAX_DEVIATION: f64 = 1e5;
 /// Longest line a reader accepts.
 pub const MAX_LINE_BYTES: usize = 64 * 1024;
 
