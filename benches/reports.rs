@@ -9,7 +9,14 @@ use std::time::Instant;
 fn main() {
     let campaign =
         Campaign::load(Path::new("example-campaign/campaign.yaml")).expect("example campaign");
-    let result = batch::run(&campaign, batch::Options { jobs: 1 }, &|_| {});
+    let result = batch::run(
+        &campaign,
+        batch::Options {
+            jobs: 1,
+            diagnose: true,
+        },
+        &|_| {},
+    );
     let reports = Reports::new(None).expect("templates");
     let tests: Vec<_> = result
         .tests

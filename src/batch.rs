@@ -34,6 +34,8 @@ pub struct AxisTest {
     pub judgement: Option<Judgement>,
     pub findings: Vec<Finding>,
     pub nde: Option<NdeCorrection>,
+    /// Model check and diagnosis, when the run asked for it.
+    pub diagnosis: Option<crate::diagnose::Diagnosis>,
 }
 
 impl AxisTest {
@@ -99,6 +101,8 @@ impl CampaignResult {
 pub struct Options {
     /// Worker threads (0: all cores).
     pub jobs: usize,
+    /// Run the model check and diagnosis of every axis test.
+    pub diagnose: bool,
 }
 
 /// Evaluates every axis of `campaign`; `progress` is called once per finished test.
@@ -119,7 +123,7 @@ pub fn run(
     let evaluate_all = || -> Vec<AxisTest> {
         work.par_iter()
             .flat_map_iter(|(machine, entry)| {
-                let tests = run_axis(campaign, machine, entry, &specs);
+                let tests = run_axis(campaign, machine, entry, &specs, options.diagnose);
                 for t in &tests {
                     progress(t);
                 }
@@ -212,6 +216,7 @@ impl Slot {
             judgement: None,
             findings: Vec::new(),
             nde: None,
+            diagnosis: None,
         }
     }
 
@@ -225,6 +230,7 @@ fn run_axis(
     machine: &Arc<MachineInfo>,
     entry: &crate::campaign::AxisEntry,
     specs: &BTreeMap<String, Result<Arc<Spec>, String>>,
+    diagnose: bool,
 ) -> Vec<AxisTest> {
     let slot = Slot {
         machine: machine.clone(),
@@ -271,7 +277,7 @@ fn run_axis(
             };
             match &spec {
                 Err(e) => slot.error(e.clone()),
-                Ok(spec) => run_test(slot, &axis, spec.as_deref(), path),
+                Ok(spec) => run_test(slot, &axis, spec.as_deref(), path, diagnose),
             }
         })
         .collect()
@@ -287,7 +293,13 @@ fn relative_name(base: &Path, path: &Path) -> String {
         .join("/")
 }
 
-fn run_test(slot: Slot, axis: &AxisSpec, spec: Option<&Spec>, path: &Path) -> AxisTest {
+fn run_test(
+    slot: Slot,
+    axis: &AxisSpec,
+    spec: Option<&Spec>,
+    path: &Path,
+    diagnose: bool,
+) -> AxisTest {
     let data = match measurement::read_file(path) {
         Ok(d) => d,
         Err(e) => return slot.error(e.to_string()),
@@ -336,7 +348,18 @@ fn run_test(slot: Slot, axis: &AxisSpec, spec: Option<&Spec>, path: &Path) -> Ax
                 (verdict, None, Some(judgement))
             }
         };
+    let diagnosis = diagnose.then(|| {
+        crate::diagnose::diagnose(
+            &data,
+            &crate::diagnose::Options {
+                pitch: axis.raw.pitch,
+                standard: axis.standard,
+                ..crate::diagnose::Options::default()
+            },
+        )
+    });
     AxisTest {
+        diagnosis,
         data: Some(data),
         evaluation: Some(evaluation),
         judgement,

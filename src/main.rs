@@ -49,6 +49,9 @@ enum Command {
         /// Write no PDF reports.
         #[arg(long)]
         no_pdf: bool,
+        /// Skip the model check and diagnosis of each axis.
+        #[arg(long)]
+        no_diagnose: bool,
         /// Folder with a customised copy of the report templates (templates/).
         #[arg(long)]
         templates: Option<PathBuf>,
@@ -61,6 +64,34 @@ enum Command {
         /// Worker threads (default: all cores).
         #[arg(long, short, default_value_t = 0)]
         jobs: usize,
+        /// Also run the model check and diagnosis (slower; `run` does it by default).
+        #[arg(long)]
+        diagnose: bool,
+    },
+    /// Model check and diagnosis of one measurement file: what the standard's model of the
+    /// axis gets wrong (drift, thermal growth, run offsets, periodic error, reversal or
+    /// scatter varying along the axis, outliers), with evidence and the held-out gain.
+    Diagnose {
+        /// Measurement file (long CSV or key=value layout).
+        file: PathBuf,
+        /// Standard for the parameters shown as measured and with effects removed.
+        #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
+        standard: StandardId,
+        /// Lead-screw or encoder pitch (mm or deg), tested as a candidate period.
+        #[arg(long)]
+        pitch: Option<f64>,
+        /// Tests simulated from the fitted base model for the model check.
+        #[arg(long, default_value_t = 200)]
+        simulations: usize,
+        /// Seed of the simulations.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// Write the extended model as a simulation file that `axcheck simulate` accepts.
+        #[arg(long)]
+        write_model: Option<PathBuf>,
+        /// Print JSON (a stable interface) instead of text.
+        #[arg(long)]
+        json: bool,
     },
     /// Simulate a positioning test from an error model and a test plan (YAML), or with
     /// --fleet a whole synthetic campaign for benchmarks.
@@ -145,18 +176,60 @@ fn run(cli: Cli) -> Result<ExitCode> {
             out,
             jobs,
             no_pdf,
+            no_diagnose,
             templates,
         } => {
             let options = cli::campaign::RunOptions {
                 out: &out,
                 jobs,
                 no_pdf,
+                no_diagnose,
                 templates: templates.as_deref(),
             };
             return Ok(ExitCode::from(cli::campaign::run(&campaign, &options)?));
         }
-        Command::Check { campaign, jobs } => {
-            return Ok(ExitCode::from(cli::campaign::check(&campaign, jobs)?));
+        Command::Check {
+            campaign,
+            jobs,
+            diagnose,
+        } => {
+            return Ok(ExitCode::from(cli::campaign::check(
+                &campaign, jobs, diagnose,
+            )?));
+        }
+        Command::Diagnose {
+            file,
+            standard,
+            pitch,
+            simulations,
+            seed,
+            write_model,
+            json,
+        } => {
+            let data = measurement::read_file(&file)?;
+            let options = axcheck::diagnose::Options {
+                pitch,
+                simulations,
+                seed,
+                standard,
+            };
+            let diagnosis = axcheck::diagnose::diagnose(&data, &options);
+            if let Some(path) = &write_model {
+                axcheck::atomic::write(path, diagnosis.extended_model.to_yaml().as_bytes())
+                    .with_context(|| format!("cannot write {}", path.display()))?;
+                eprintln!("axcheck: wrote the extended model to {}", path.display());
+            }
+            let name = file.display().to_string();
+            let text = if json {
+                let mut value = diagnosis.to_json();
+                if let Some(map) = value.as_object_mut() {
+                    map.insert("file".into(), serde_json::json!(name));
+                }
+                serde_json::to_string_pretty(&value)? + "\n"
+            } else {
+                cli::diagnose::render(&name, &diagnosis)
+            };
+            print(&text)?;
         }
         Command::Simulate {
             model,

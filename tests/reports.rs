@@ -98,14 +98,19 @@ fn every_pdf_of_the_example_campaign() {
         let path = out.join("reports").join(machine).join(file);
         let (pages, text) = read_pdf(&path);
         // Page 1: header, conditions and results; page 2: the two figures; page 3: the
-        // per-target blocks of six targets and the findings.
-        let expected = 3;
+        // per-target blocks of six targets, the findings and the start of the diagnosis;
+        // page 4: the diagnosis charts.
+        let expected = 4;
         assert_eq!(pages, expected, "{machine} {name}: {pages} pages");
         let text = squash(&text);
         assert!(text.contains(&squash(machine)), "{machine} {name}");
         assert!(
             text.contains(&squash(&format!("axis {name}"))),
             "{machine} {name}"
+        );
+        assert!(
+            text.contains("Modelcheckanddiagnosis"),
+            "{machine} {name}: diagnosis section"
         );
         let verdict = axis["verdict"].as_str().unwrap().to_uppercase();
         assert!(
@@ -197,7 +202,14 @@ fn user_text_is_data_not_markup() {
 #[test]
 fn templates_compile_without_warnings_and_identically() {
     let campaign = Campaign::load(Path::new("example-campaign/campaign.yaml")).unwrap();
-    let result = batch::run(&campaign, batch::Options { jobs: 2 }, &|_| {});
+    let result = batch::run(
+        &campaign,
+        batch::Options {
+            jobs: 2,
+            diagnose: true,
+        },
+        &|_| {},
+    );
     let reports = Reports::new(None).unwrap();
     for t in &result.tests {
         let first = reports.axis(&result, t).unwrap();

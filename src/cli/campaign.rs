@@ -17,7 +17,7 @@ pub fn exit_code(result: &CampaignResult) -> u8 {
 }
 
 /// Evaluates a campaign, reporting progress on stderr.
-pub fn evaluate_with(campaign: &Campaign, jobs: usize) -> CampaignResult {
+pub fn evaluate_with(campaign: &Campaign, jobs: usize, diagnose: bool) -> CampaignResult {
     let total: usize = campaign.axes().count();
     let done = AtomicUsize::new(0);
     let bar = std::io::stderr().is_terminal().then(|| {
@@ -38,7 +38,7 @@ pub fn evaluate_with(campaign: &Campaign, jobs: usize) -> CampaignResult {
             None => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
         }
     };
-    let result = batch::run(campaign, batch::Options { jobs }, &progress);
+    let result = batch::run(campaign, batch::Options { jobs, diagnose }, &progress);
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
@@ -159,6 +159,8 @@ pub struct RunOptions<'a> {
     pub no_pdf: bool,
     /// A customised copy of `templates/`.
     pub templates: Option<&'a Path>,
+    /// Skip the model check and diagnosis (also `campaign.output.diagnose: false`).
+    pub no_diagnose: bool,
 }
 
 /// `axcheck run`.
@@ -173,7 +175,11 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         let reports = axcheck::report::Reports::new(options.templates)?;
         exporters.push(Box::new(export::pdf::Pdf { reports }));
     }
-    let result = evaluate_with(&campaign, options.jobs);
+    let result = evaluate_with(
+        &campaign,
+        options.jobs,
+        campaign.info.output.diagnose && !options.no_diagnose,
+    );
     let written = export::write_all(&result, &exporters, out)
         .with_context(|| format!("writing the outputs to {}", out.display()))?;
     println!("{}", counts_line(&result));
@@ -195,8 +201,8 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
 }
 
 /// `axcheck check`: the CI gate; writes nothing.
-pub fn check(path: &Path, jobs: usize) -> Result<u8> {
-    let result = evaluate_with(&Campaign::load(path)?, jobs);
+pub fn check(path: &Path, jobs: usize, diagnose: bool) -> Result<u8> {
+    let result = evaluate_with(&Campaign::load(path)?, jobs, diagnose);
     println!("{}", counts_line(&result));
     for line in problems(&result) {
         println!("{line}");

@@ -89,6 +89,9 @@ pub fn test_json(t: &AxisTest) -> Value {
         "nde".into(),
         serde_json::to_value(&t.nde).unwrap_or(Value::Null),
     );
+    if let Some(d) = &t.diagnosis {
+        m.insert("diagnosis".into(), d.to_json());
+    }
     if let Some(e) = &t.error {
         m.insert("error".into(), json!(e));
     }

@@ -67,6 +67,7 @@ pub fn columns() -> Vec<(String, ColumnKind)> {
             ("worst_ratio", Number),
             ("failed", Text),
             ("rules", Text),
+            ("diagnosis", Text),
             ("error", Text),
         ]
         .iter()
@@ -115,6 +116,10 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     cells.push(Cell::text(failed.join(" ")));
     let rules: Vec<&str> = t.findings.iter().map(|f| f.id).collect();
     cells.push(Cell::text(rules.join(" ")));
+    cells.push(match &t.diagnosis {
+        Some(d) => Cell::text(diagnosis_label(d)),
+        None => Cell::Empty,
+    });
     cells.push(Cell::opt_text(t.error.clone()));
     cells
 }
@@ -140,3 +145,14 @@ pub fn spec_label(limits: &crate::judge::Limits) -> String {
 
 /// What the summary says of a test judged against no limit.
 pub const NO_TOLERANCE: &str = "no tolerance applied";
+
+/// The effects a diagnosis names, e.g. `drift outlier`, or `none`.
+pub fn diagnosis_label(d: &crate::diagnose::Diagnosis) -> String {
+    let mut effects: Vec<&str> = d.findings.iter().map(|f| f.effect.name()).collect();
+    effects.dedup();
+    if effects.is_empty() {
+        "none".to_string()
+    } else {
+        effects.join(" ")
+    }
+}

@@ -8,6 +8,7 @@
 
 pub mod charts;
 pub mod data;
+pub mod diagnosis_charts;
 pub mod world;
 
 use crate::batch::{AxisTest, CampaignResult};
@@ -127,6 +128,31 @@ impl Reports {
                 "/charts/unidirectional.svg".into(),
                 charts::unidirectional(&chart, &up, &down, &tall).into_bytes(),
             ));
+            if let Some(d) = &test.diagnosis {
+                let (checks, in_time, along, periodogram) = data::diagnosis_charts(d);
+                let style = |height_px| diagnosis_charts::Style {
+                    font_family: SANS_FAMILY.to_string(),
+                    width_px: CHART_WIDTH_PX,
+                    height_px,
+                };
+                let height = diagnosis_charts::model_checks_height(checks.len());
+                files.push((
+                    "/charts/checks.svg".into(),
+                    diagnosis_charts::model_checks(&checks, &style(height)).into_bytes(),
+                ));
+                files.push((
+                    "/charts/residuals-time.svg".into(),
+                    diagnosis_charts::residuals(&in_time, &style(340)).into_bytes(),
+                ));
+                files.push((
+                    "/charts/residuals-position.svg".into(),
+                    diagnosis_charts::residuals(&along, &style(340)).into_bytes(),
+                ));
+                files.push((
+                    "/charts/periodogram.svg".into(),
+                    diagnosis_charts::periodogram(&periodogram, &style(300)).into_bytes(),
+                ));
+            }
         }
         let ident = format!(
             "axcheck/{}/{}/{}/{}",

@@ -1,0 +1,237 @@
+//! Distribution functions for the diagnosis tests: Student t, F and χ² tails from the
+//! regularised incomplete beta and gamma functions (continued fractions, Numerical
+//! Recipes §6.2 and §6.4), accurate in the far tails where the tests decide.
+
+/// ln Γ(x).
+fn ln_gamma(x: f64) -> f64 {
+    libm::lgamma(x)
+}
+
+/// Regularised incomplete beta function I_x(a, b).
+pub fn beta_inc(a: f64, b: f64, x: f64) -> f64 {
+    if x.is_nan() || a.is_nan() || b.is_nan() {
+        return f64::NAN;
+    }
+    if x <= 0.0 {
+        return 0.0;
+    }
+    if x >= 1.0 {
+        return 1.0;
+    }
+    let ln_front = ln_gamma(a + b) - ln_gamma(a) - ln_gamma(b) + a * x.ln() + b * (1.0 - x).ln();
+    let front = ln_front.exp();
+    if x < (a + 1.0) / (a + b + 2.0) {
+        (front * beta_cf(a, b, x) / a).clamp(0.0, 1.0)
+    } else {
+        (1.0 - front * beta_cf(b, a, 1.0 - x) / b).clamp(0.0, 1.0)
+    }
+}
+
+/// Continued fraction for the incomplete beta function (modified Lentz).
+fn beta_cf(a: f64, b: f64, x: f64) -> f64 {
+    const TINY: f64 = 1e-300;
+    const EPS: f64 = 1e-15;
+    let qab = a + b;
+    let qap = a + 1.0;
+    let qam = a - 1.0;
+    let mut c = 1.0;
+    let mut d = 1.0 - qab * x / qap;
+    if d.abs() < TINY {
+        d = TINY;
+    }
+    d = 1.0 / d;
+    let mut h = d;
+    for m in 1..=1000 {
+        let m = m as f64;
+        let m2 = 2.0 * m;
+        let aa = m * (b - m) * x / ((qam + m2) * (a + m2));
+        d = 1.0 + aa * d;
+        if d.abs() < TINY {
+            d = TINY;
+        }
+        c = 1.0 + aa / c;
+        if c.abs() < TINY {
+            c = TINY;
+        }
+        d = 1.0 / d;
+        h *= d * c;
+        let aa = -(a + m) * (qab + m) * x / ((a + m2) * (qap + m2));
+        d = 1.0 + aa * d;
+        if d.abs() < TINY {
+            d = TINY;
+        }
+        c = 1.0 + aa / c;
+        if c.abs() < TINY {
+            c = TINY;
+        }
+        d = 1.0 / d;
+        let del = d * c;
+        h *= del;
+        if (del - 1.0).abs() < EPS {
+            break;
+        }
+    }
+    h
+}
+
+/// Regularised upper incomplete gamma function Q(a, x).
+pub fn gamma_q(a: f64, x: f64) -> f64 {
+    if x.is_nan() || a.is_nan() {
+        return f64::NAN;
+    }
+    if x <= 0.0 {
+        return 1.0;
+    }
+    if x < a + 1.0 {
+        // Series for P(a, x).
+        let mut sum = 1.0 / a;
+        let mut del = sum;
+        let mut ap = a;
+        for _ in 0..1000 {
+            ap += 1.0;
+            del *= x / ap;
+            sum += del;
+            if del.abs() < sum.abs() * 1e-16 {
+                break;
+            }
+        }
+        let p = sum * (-x + a * x.ln() - ln_gamma(a)).exp();
+        (1.0 - p).clamp(0.0, 1.0)
+    } else {
+        // Continued fraction for Q(a, x).
+        const TINY: f64 = 1e-300;
+        let mut b = x + 1.0 - a;
+        let mut c = 1.0 / TINY;
+        let mut d = 1.0 / b;
+        let mut h = d;
+        for i in 1..=1000 {
+            let an = -(i as f64) * (i as f64 - a);
+            b += 2.0;
+            d = an * d + b;
+            if d.abs() < TINY {
+                d = TINY;
+            }
+            c = b + an / c;
+            if c.abs() < TINY {
+                c = TINY;
+            }
+            d = 1.0 / d;
+            let del = d * c;
+            h *= del;
+            if (del - 1.0).abs() < 1e-16 {
+                break;
+            }
+        }
+        ((-x + a * x.ln() - ln_gamma(a)).exp() * h).clamp(0.0, 1.0)
+    }
+}
+
+/// Two-sided p-value of a Student t statistic with `df` degrees of freedom.
+pub fn t_two_sided(t: f64, df: f64) -> f64 {
+    if !t.is_finite() {
+        return if t.is_nan() { f64::NAN } else { 0.0 };
+    }
+    if df <= 0.0 {
+        return f64::NAN;
+    }
+    beta_inc(df / 2.0, 0.5, df / (df + t * t))
+}
+
+/// Upper tail P(F ≥ f) of the F distribution with (d1, d2) degrees of freedom.
+pub fn f_upper(f: f64, d1: f64, d2: f64) -> f64 {
+    if f.is_nan() || d1 <= 0.0 || d2 <= 0.0 {
+        return f64::NAN;
+    }
+    if f <= 0.0 {
+        return 1.0;
+    }
+    if f.is_infinite() {
+        return 0.0;
+    }
+    beta_inc(d2 / 2.0, d1 / 2.0, d2 / (d2 + d1 * f))
+}
+
+/// Upper tail P(X ≥ x) of the χ² distribution with `k` degrees of freedom.
+pub fn chi2_upper(x: f64, k: f64) -> f64 {
+    if x.is_nan() || k <= 0.0 {
+        return f64::NAN;
+    }
+    if x.is_infinite() {
+        return 0.0;
+    }
+    gamma_q(k / 2.0, x / 2.0)
+}
+
+/// The probability that the largest of `m` independent statistics, each with tail
+/// probability `p`, is at least as large: 1 − (1 − p)^m (Scargle 1982's false-alarm
+/// probability), computed without cancellation for small `p`.
+pub fn max_of(p: f64, m: f64) -> f64 {
+    if p.is_nan() {
+        f64::NAN
+    } else if p >= 1.0 {
+        1.0
+    } else if p <= 0.0 {
+        0.0
+    } else {
+        (-(m.max(1.0) * (-p).ln_1p()).exp_m1()).min(1.0)
+    }
+}
+
+/// The q-quantile (0 ≤ q ≤ 1) of `values` by linear interpolation between order
+/// statistics (type 7); NaN for no values.
+pub fn quantile(values: &[f64], q: f64) -> f64 {
+    let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    v.sort_by(f64::total_cmp);
+    let h = (v.len() - 1) as f64 * q.clamp(0.0, 1.0);
+    let lo = h.floor() as usize;
+    let hi = h.ceil() as usize;
+    v[lo] + (v[hi] - v[lo]) * (h - lo as f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64, rel: f64) -> bool {
+        (a - b).abs() <= rel * b.abs().max(1e-300)
+    }
+
+    #[test]
+    fn t_tails() {
+        // t = 2.0, df = 10: two-sided p = 0.07339
+        assert!(close(t_two_sided(2.0, 10.0), 0.073_388, 1e-4));
+        // t = 4.0, df = 5: p = 0.010 323
+        assert!(close(t_two_sided(4.0, 5.0), 0.010_323, 1e-4));
+        // far tail: df = 100, t = 8: p ≈ 2.2e-12
+        let p = t_two_sided(8.0, 100.0);
+        assert!(p > 1e-13 && p < 1e-11, "{p}");
+        assert!(close(t_two_sided(0.0, 7.0), 1.0, 1e-12));
+    }
+
+    #[test]
+    fn f_and_chi2_tails() {
+        // F(2, 10) at 4.10: p ≈ 0.0501
+        assert!(close(f_upper(4.10, 2.0, 10.0), 0.0501, 1e-2));
+        // F(1, 20) = t² with df 20
+        assert!(close(f_upper(9.0, 1.0, 20.0), t_two_sided(3.0, 20.0), 1e-9));
+        // χ²₂ tail is exp(−x/2)
+        assert!(close(chi2_upper(10.0, 2.0), (-5.0f64).exp(), 1e-9));
+        // χ²₁ at 3.841: 0.05
+        assert!(close(chi2_upper(3.841_459, 1.0), 0.05, 1e-5));
+        // χ²₁₀ at 23.209: 0.01
+        assert!(close(chi2_upper(23.209_25, 10.0), 0.01, 1e-4));
+    }
+
+    #[test]
+    fn helpers() {
+        assert!(close(max_of(0.01, 1.0), 0.01, 1e-12));
+        assert!(close(max_of(1e-6, 100.0), 1e-4, 1e-3));
+        assert_eq!(max_of(1.0, 5.0), 1.0);
+        assert_eq!(quantile(&[3.0, 1.0, 2.0], 0.5), 2.0);
+        assert_eq!(quantile(&[1.0, 2.0], 0.25), 1.25);
+        assert!(quantile(&[], 0.5).is_nan());
+    }
+}

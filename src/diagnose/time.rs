@@ -1,0 +1,369 @@
+//! Effects in time: drift, thermal growth and run offsets.
+//!
+//! Every fit has a fixed effect per cell (target, direction), so only what changes
+//! *between the approaches of one cell* identifies a time effect; the systematic
+//! deviation, the reversal and any periodic error are absorbed by the cell effects.
+//! Terms (seed 003 §5.4 and conclusion 1; ISO 230-2 clause 3.3):
+//!
+//! * drift: `β·t`, uniform along the axis;
+//! * thermal growth: `γ·(P − P̄)·t`, proportional to position;
+//! * run offsets: one constant per run (zero-point instability).
+//!
+//! With the standard test cycle and regular timing a drift *is* a linear trend of the run
+//! effects, so the two are told apart by a decomposition of the between-run variation:
+//! its linear part in time (drift, 1 degree of freedom) and what a straight line leaves
+//! (run offsets, n − 2 degrees of freedom), each tested against the pure scatter.
+//! When the run offsets are real, a drift is judged against the run-to-run variation
+//! instead (random run effects: only a trend larger than the zero shifts is a drift).
+
+use super::linalg::{LeastSquares, least_squares};
+use super::prep::Prep;
+use super::stats::{f_upper, t_two_sided};
+
+/// Which time terms a fit has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct Terms {
+    pub thermal: bool,
+    pub runs: bool,
+    pub drift: bool,
+}
+
+/// A fit of the time model with cell fixed effects.
+#[derive(Debug, Clone)]
+pub(crate) struct TimeFit {
+    pub ls: LeastSquares,
+    /// Row indices (into `Prep::rows`) in fit order.
+    pub rows: Vec<usize>,
+    /// Drift rate β per time unit (0 when absent or collinear).
+    pub beta: f64,
+    /// Thermal coefficient γ: deviation per position unit per time unit (about P̄).
+    pub gamma: f64,
+    /// Run effects, run 0 the reference (0).
+    pub alpha: Vec<f64>,
+    /// Column of each term in `ls`.
+    pub thermal_col: Option<usize>,
+    pub drift_col: Option<usize>,
+    /// Residual degrees of freedom: active rows − cells with rows − rank.
+    pub df: f64,
+    /// Residual sum of squares in scaled units.
+    pub rss: f64,
+    /// Per-cell intercept: mean of (value − time effect) over the cell's active rows.
+    pub intercepts: Vec<f64>,
+    /// Residual per row (unscaled; NaN for inactive rows).
+    pub residuals: Vec<f64>,
+}
+
+impl TimeFit {
+    /// The time effect (without the cell intercept) at a row.
+    pub fn effect(&self, prep: &Prep, k: usize) -> f64 {
+        let r = &prep.rows[k];
+        let t = r.t - prep.tbar;
+        let mut e = self.beta * t + self.gamma * (prep.positions[r.i] - prep.pbar) * t;
+        if r.run > 0 && !self.alpha.is_empty() {
+            e += self.alpha[r.run];
+        }
+        e
+    }
+
+    /// σ² estimate (scaled units): RSS/df.
+    pub fn sigma2(&self) -> f64 {
+        if self.df > 0.0 {
+            self.rss / self.df
+        } else {
+            f64::NAN
+        }
+    }
+}
+
+/// Fits `values` (one per row) over the `active` rows with cell effects and `terms`;
+/// `scale` is a relative scatter per cell (rows are weighted by 1/scale²).
+pub(crate) fn fit(
+    prep: &Prep,
+    values: &[f64],
+    active: &[bool],
+    scale: &[f64],
+    terms: Terms,
+) -> TimeFit {
+    let cells = prep.cells();
+    let rows: Vec<usize> = (0..prep.rows.len()).filter(|&k| active[k]).collect();
+    // Raw regressors per row.
+    let mut raw: Vec<Vec<f64>> = Vec::new();
+    let mut thermal_col = None;
+    let mut drift_col = None;
+    let mut run_cols = Vec::new();
+    let t_of = |k: usize| prep.rows[k].t - prep.tbar;
+    if terms.thermal {
+        thermal_col = Some(raw.len());
+        raw.push(
+            rows.iter()
+                .map(|&k| (prep.positions[prep.rows[k].i] - prep.pbar) * t_of(k))
+                .collect(),
+        );
+    }
+    if terms.runs {
+        for j in 1..prep.n {
+            run_cols.push(raw.len());
+            raw.push(
+                rows.iter()
+                    .map(|&k| if prep.rows[k].run == j { 1.0 } else { 0.0 })
+                    .collect(),
+            );
+        }
+    }
+    if terms.drift {
+        drift_col = Some(raw.len());
+        raw.push(rows.iter().map(|&k| t_of(k)).collect());
+    }
+    // Demean within cells, then weight.
+    let cell_of: Vec<usize> = rows.iter().map(|&k| prep.cell(&prep.rows[k])).collect();
+    let mut count = vec![0usize; cells];
+    for &c in &cell_of {
+        count[c] += 1;
+    }
+    let demean = |v: &[f64]| -> Vec<f64> {
+        let mut sum = vec![0.0; cells];
+        for (x, &c) in v.iter().zip(&cell_of) {
+            sum[c] += x;
+        }
+        v.iter()
+            .zip(&cell_of)
+            .map(|(x, &c)| (x - sum[c] / count[c] as f64) / scale[c])
+            .collect()
+    };
+    let y: Vec<f64> = rows.iter().map(|&k| values[k]).collect();
+    let cols: Vec<Vec<f64>> = raw.iter().map(|c| demean(c)).collect();
+    let ls = least_squares(&cols, &demean(&y));
+    let cells_used = count.iter().filter(|&&c| c > 0).count();
+    let df = rows.len() as f64 - cells_used as f64 - ls.rank as f64;
+    let beta = drift_col.map_or(0.0, |c| ls.coef[c]);
+    let gamma = thermal_col.map_or(0.0, |c| ls.coef[c]);
+    let mut alpha = Vec::new();
+    if terms.runs {
+        alpha = vec![0.0; prep.n];
+        for (j, &c) in run_cols.iter().enumerate() {
+            alpha[j + 1] = ls.coef[c];
+        }
+    }
+    // Intercepts and residuals.
+    let mut fitted_raw = vec![0.0; rows.len()];
+    for (col, b) in raw.iter().zip(&ls.coef) {
+        for (f, x) in fitted_raw.iter_mut().zip(col) {
+            *f += b * x;
+        }
+    }
+    let mut sum = vec![0.0; cells];
+    for ((yv, f), &c) in y.iter().zip(&fitted_raw).zip(&cell_of) {
+        sum[c] += yv - f;
+    }
+    let intercepts: Vec<f64> = (0..cells)
+        .map(|c| {
+            if count[c] > 0 {
+                sum[c] / count[c] as f64
+            } else {
+                f64::NAN
+            }
+        })
+        .collect();
+    let mut residuals = vec![f64::NAN; prep.rows.len()];
+    for (idx, &k) in rows.iter().enumerate() {
+        residuals[k] = ls.residuals[idx] * scale[cell_of[idx]];
+    }
+    let rss = ls.rss;
+    TimeFit {
+        ls,
+        rows,
+        beta,
+        gamma,
+        alpha,
+        thermal_col,
+        drift_col,
+        df,
+        rss,
+        intercepts,
+        residuals,
+    }
+}
+
+/// A coefficient's test.
+#[derive(Debug, Clone)]
+pub(crate) struct CoefTest {
+    pub estimate: f64,
+    pub se: f64,
+    pub t: f64,
+    pub p: f64,
+    pub df: f64,
+}
+
+/// Run offsets beyond a linear drift.
+#[derive(Debug, Clone)]
+pub(crate) struct RunTest {
+    pub f: f64,
+    pub df1: f64,
+    pub df2: f64,
+    pub p: f64,
+    /// Run effects after the drift fit, centred (mean 0), per run.
+    pub offsets: Vec<f64>,
+}
+
+/// Drift, after thermal growth.
+#[derive(Debug, Clone)]
+pub(crate) struct DriftTest {
+    pub test: CoefTest,
+    /// The thermal origin chosen when thermal growth is present: the drift is the time
+    /// effect there.
+    pub origin: Option<f64>,
+    /// What the drift was tested against: `scatter` or `run-to-run variation`.
+    pub against: &'static str,
+}
+
+/// The time tests on the active rows.
+#[derive(Debug, Clone)]
+pub(crate) struct TimeTests {
+    /// Full model: thermal + run effects + drift (the pure-error reference).
+    pub full: TimeFit,
+    /// Thermal + drift, no run effects.
+    pub trend: TimeFit,
+    pub sigma2: f64,
+    pub df: f64,
+    pub thermal: Option<CoefTest>,
+    pub runs: Option<RunTest>,
+    pub drift: Option<DriftTest>,
+}
+
+/// Runs the tests at level `alpha` each; a significant thermal growth decides how the
+/// drift is read (see [`DriftTest::origin`]).
+pub(crate) fn tests(
+    prep: &Prep,
+    values: &[f64],
+    active: &[bool],
+    scale: &[f64],
+    alpha: f64,
+) -> TimeTests {
+    let all = Terms {
+        thermal: true,
+        runs: true,
+        drift: true,
+    };
+    let full = fit(prep, values, active, scale, all);
+    let trend = fit(
+        prep,
+        values,
+        active,
+        scale,
+        Terms {
+            thermal: true,
+            runs: false,
+            drift: true,
+        },
+    );
+    let df = full.df;
+    let sigma2 = full.sigma2();
+    let mut out = TimeTests {
+        thermal: None,
+        runs: None,
+        drift: None,
+        sigma2,
+        df,
+        full: full.clone(),
+        trend: trend.clone(),
+    };
+    if !(df >= 1.0 && sigma2 > 0.0) {
+        return out;
+    }
+    // Thermal growth: γ in the full model, against the pure scatter.
+    if let Some(c) = full.thermal_col.filter(|&c| full.ls.kept[c]) {
+        let se = (sigma2 * full.ls.cov[c][c]).sqrt();
+        let t = full.gamma / se;
+        out.thermal = Some(CoefTest {
+            estimate: full.gamma,
+            se,
+            t,
+            p: t_two_sided(t, df),
+            df,
+        });
+    }
+    // Run offsets: what the trend model leaves to the run effects.
+    let df_lof = full.ls.rank as f64 - trend.ls.rank as f64;
+    let mut runs_real = false;
+    if df_lof >= 1.0 {
+        let ms = (trend.rss - full.rss).max(0.0) / df_lof;
+        let f = ms / sigma2;
+        let p = f_upper(f, df_lof, df);
+        runs_real = p < alpha;
+        // Run effects after the drift: mean residual of the trend model per run.
+        let mut sum = vec![0.0; prep.n];
+        let mut count = vec![0usize; prep.n];
+        for &k in &trend.rows {
+            sum[prep.rows[k].run] += trend.residuals[k];
+            count[prep.rows[k].run] += 1;
+        }
+        let mut offsets: Vec<f64> = sum
+            .iter()
+            .zip(&count)
+            .map(|(s, &c)| if c > 0 { s / c as f64 } else { 0.0 })
+            .collect();
+        let mean = offsets.iter().sum::<f64>() / offsets.len() as f64;
+        for o in &mut offsets {
+            *o -= mean;
+        }
+        out.runs = Some(RunTest {
+            f,
+            df1: df_lof,
+            df2: df,
+            p,
+            offsets,
+        });
+    }
+    // Drift: the trend model's β (with γ), against the scatter or, when the run
+    // offsets are real, against the run-to-run variation.
+    let Some(bc) = trend.drift_col.filter(|&c| trend.ls.kept[c]) else {
+        return out;
+    };
+    let (err_ms, err_df, against) = if runs_real {
+        let df_lof_v = out.runs.as_ref().map_or(1.0, |r| r.df1);
+        (
+            (trend.rss - full.rss).max(0.0) / df_lof_v,
+            df_lof_v,
+            "run-to-run variation",
+        )
+    } else {
+        (sigma2, df, "scatter")
+    };
+    let thermal_found = out.thermal.as_ref().is_some_and(|t| t.p < alpha);
+    let tc = trend.thermal_col.filter(|&c| trend.ls.kept[c]);
+    let (estimate, var, origin) = match (thermal_found, tc) {
+        (true, Some(gc)) if trend.gamma != 0.0 => {
+            // The position where the time effect vanishes; a screw's fixed end lies at
+            // (or near) the measured travel, so within a quarter of the travel beyond its
+            // ends the effect is all thermal growth.
+            let p0 = prep.pbar - trend.beta / trend.gamma;
+            let margin = 0.25 * prep.length();
+            let o = p0.clamp(prep.lo - margin, prep.hi + margin);
+            let a = o - prep.pbar;
+            let est = trend.beta + trend.gamma * a;
+            let cov = &trend.ls.cov;
+            let v = cov[bc][bc] + a * a * cov[gc][gc] + 2.0 * a * cov[bc][gc];
+            (est, v, Some(o))
+        }
+        _ => (trend.beta, trend.ls.cov[bc][bc], None),
+    };
+    let se = (err_ms * var).sqrt();
+    let (t, p) = if estimate == 0.0 {
+        (0.0, 1.0)
+    } else {
+        let t = estimate / se;
+        (t, t_two_sided(t, err_df))
+    };
+    out.drift = Some(DriftTest {
+        test: CoefTest {
+            estimate,
+            se,
+            t,
+            p,
+            df: err_df,
+        },
+        origin,
+        against,
+    });
+    out
+}
