@@ -164,3 +164,48 @@ fn help_on_every_command() {
         assert!(out.contains("Usage"), "{out}");
     }
 }
+
+#[test]
+fn diagnose_json_and_the_extended_model_close_the_loop() {
+    let dir = std::env::temp_dir().join(format!("axcheck-diag-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = dir.join("extended.yaml");
+    let v = json(&[
+        "diagnose",
+        "tests/data/iso230-2_table2.csv",
+        "--json",
+        "--write-model",
+        model.to_str().unwrap(),
+    ]);
+    for key in ["findings", "base", "extended", "gain_pct"] {
+        assert!(v.get(key).is_some(), "{key}");
+    }
+    let effects: Vec<&str> = v["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["effect"].as_str().unwrap())
+        .collect();
+    assert!(effects.contains(&"run_offset"), "{effects:?}");
+    for f in v["findings"].as_array().unwrap() {
+        assert!(f["params"].is_object() || f["params"].is_array(), "{f}");
+        assert!(f["evidence"].is_object(), "{f}");
+    }
+    assert!(
+        v["extended"]["heldout_rms"].as_f64().unwrap() < v["base"]["heldout_rms"].as_f64().unwrap()
+    );
+    // The written model is a simulation file that `axcheck simulate` accepts.
+    let (code, csv, err) = axcheck(&["simulate", model.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        csv.contains("target_mm,direction,run,deviation_um"),
+        "{csv}"
+    );
+    let (code, text, _) = axcheck(&["diagnose", "tests/data/ess_muts_target_x.dat"]);
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("drift") && text.contains("Held-out error"),
+        "{text}"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
