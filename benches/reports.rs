@@ -66,7 +66,7 @@ fn main() {
         start.elapsed().as_secs_f64()
     );
     println!(
-        "per axis report (3 pages): {per_report:.1} ms on one core, of which charts {charts_ms:.1} ms; mean PDF {} KB",
+        "per axis report (4 pages with the diagnosis): {per_report:.1} ms on one core, of which charts {charts_ms:.1} ms; mean PDF {} KB",
         bytes / (rounds * tests.len()) / 1024
     );
     println!("summary report: {summary_ms:.1} ms");
