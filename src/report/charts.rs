@@ -9,19 +9,16 @@
 //! shown about 16 cm wide: 900 × 420 for [`bidirectional`], 900 × 600 for [`unidirectional`]
 //! (two panels stacked), and 900 × [`ratio_chart_height`] for [`tolerance_usage`].
 
-use plotters::coord::Shift;
-use plotters::coord::types::RangedCoordf64;
+use super::chart_kit::{
+    Area, AxesSpec, Chart, Conventions, DASHED, DESC_PX, DOWN, FRAME, Failed, GRID, GUIDE, INK,
+    LegendItem, MUTED, Marker, Px, SOLID, STRIPE, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H,
+    build_axes, draw_frame_edges, draw_marker, draw_text, extent, fmt_fixed, font, message_chart,
+    render, round_px, sig_decimals, text_style, ticks, x_tick_count,
+};
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters::style::text_anchor::{HPos, VPos};
 
-/// Style shared by all charts. `font_family` is the family name of the sans-serif face the
-/// PDF renderer embeds ("Inter"); charts must only ever name this family in SVG text.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Style {
-    pub font_family: String,
-    pub width_px: u32,
-    pub height_px: u32,
-}
+pub use super::chart_kit::Style;
 
 /// One approach direction's per-target statistics. All deviation values in the axis's
 /// deviation unit (µm or arcsec).
@@ -76,57 +73,27 @@ pub struct RatioBar {
 // ---------------------------------------------------------------------------------------------
 // Look
 
-const UP: RGBColor = RGBColor(0x1F, 0x3A, 0x6E);
 const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
-const DOWN: RGBColor = RGBColor(0x8E, 0x1B, 0x1B);
 const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
-const INK: RGBColor = RGBColor(0x1A, 0x1A, 0x1A);
-const MUTED: RGBColor = RGBColor(0x55, 0x55, 0x55);
-const GRID: RGBColor = RGBColor(0xE2, 0xE2, 0xE2);
-const GUIDE: RGBColor = RGBColor(0xC4, 0xC4, 0xC4);
-const FRAME: RGBColor = RGBColor(0x9A, 0x9A, 0x9A);
-const STRIPE: RGBColor = RGBColor(0xF3, 0xF3, 0xF3);
 const BAR_OK: RGBColor = RGBColor(0x9D, 0xAF, 0xC8);
 const BAR_OK_EDGE: RGBColor = RGBColor(0x5F, 0x73, 0x8F);
 const BAR_OVER: RGBColor = RGBColor(0x6E, 0x14, 0x14);
 
-/// Text sizes in SVG pixels (the `font-size` written into the SVG).
-const TICK_PX: f64 = 14.0;
-const DESC_PX: f64 = 15.5;
-const LEGEND_PX: f64 = 14.0;
+/// Text size of the span labels, in SVG pixels (the `font-size` written into the SVG).
 const SPAN_PX: f64 = 14.0;
 
 /// Dash patterns in pixels: on, off, on, off …
-const SOLID: &[f64] = &[];
-const DASHED: &[f64] = &[10.0, 5.0];
 const DASHED_THIN: &[f64] = &[6.0, 4.0];
 const DASH_DOT: &[f64] = &[9.0, 3.5, 2.0, 3.5];
 
+/// How these charts measure text and draw lines (see [`Conventions`]).
+const KIT: Conventions = Conventions {
+    narrow_superscripts: false,
+    dedup_pixels: false,
+};
+
 /// Ratios above this are drawn clipped at it, with an arrow marker.
 const RATIO_CLIP: f64 = 3.0;
-
-#[derive(Clone, Copy)]
-struct Stroke {
-    color: RGBColor,
-    width: u32,
-    dash: &'static [f64],
-}
-
-#[derive(Clone, Copy)]
-enum Marker {
-    /// Filled circle of the given radius.
-    Dot(u32),
-    /// Open (white-filled) triangle with the given half size.
-    Triangle(i32),
-    /// Outline-only triangle with the given half size (for the many readings).
-    TriangleOutline(i32),
-}
-
-struct LegendItem {
-    stroke: Option<Stroke>,
-    marker: Option<(Marker, RGBColor)>,
-    text: String,
-}
 
 const MEAN_UP: Stroke = Stroke {
     color: UP,
@@ -159,214 +126,11 @@ const MARK_READ_UP: (Marker, RGBColor) = (Marker::Dot(2), UP_LIGHT);
 const MARK_READ_DOWN: (Marker, RGBColor) = (Marker::TriangleOutline(3), DOWN_LIGHT);
 
 // ---------------------------------------------------------------------------------------------
-// Errors and the SVG frame
-
-/// A drawing step failed; the chart falls back to a message.
-struct Failed;
-
-impl<E: std::error::Error + Send + Sync> From<DrawingAreaErrorKind<E>> for Failed {
-    fn from(_: DrawingAreaErrorKind<E>) -> Self {
-        Failed
-    }
-}
-
-type Area<'b> = DrawingArea<SVGBackend<'b>, Shift>;
-type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
-
-fn dims(style: &Style) -> (u32, u32) {
-    (
-        style.width_px.clamp(240, 10_000),
-        style.height_px.clamp(140, 20_000),
-    )
-}
-
-/// Draws with `paint` on a white SVG of the style's size; a failure gives a message chart.
-fn render(style: &Style, paint: impl FnOnce(&Area) -> Result<(), Failed>) -> String {
-    let size = dims(style);
-    let mut buf = String::new();
-    let ok = {
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
-        let drawn = root
-            .fill(&WHITE)
-            .map_err(Failed::from)
-            .and_then(|_| paint(&root));
-        let presented = root.present().map_err(Failed::from);
-        drawn.is_ok() && presented.is_ok()
-    };
-    if ok {
-        buf
-    } else {
-        message_chart(style, "This chart could not be drawn.")
-    }
-}
-
-/// A chart holding only a centred message (for empty or unusable input).
-fn message_chart(style: &Style, message: &str) -> String {
-    let size = dims(style);
-    let mut buf = String::new();
-    let ok = {
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
-        let drawn = root.fill(&WHITE).is_ok()
-            && root
-                .draw(&Text::new(
-                    message.to_string(),
-                    (size.0 as i32 / 2, size.1 as i32 / 2),
-                    text_style(style, DESC_PX, false, MUTED, HPos::Center, VPos::Center),
-                ))
-                .is_ok();
-        drawn && root.present().is_ok()
-    };
-    if ok {
-        buf
-    } else {
-        format!(
-            "<svg width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" xmlns=\"http://www.w3.org/2000/svg\">\n</svg>\n",
-            size.0, size.1
-        )
-    }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Text
-
-/// Plotters writes `font-size = size / 1.24`; find the size that writes exactly `px` (the text
-/// sizes above are chosen so that one exists), else the plain product.
-fn plotters_size(px: f64) -> f64 {
-    let guess = px * 1.24;
-    let bits = guess.to_bits();
-    (0..16u64)
-        .flat_map(|step| [bits.wrapping_add(step), bits.wrapping_sub(step)])
-        .map(f64::from_bits)
-        .find(|s| s.is_finite() && *s / 1.24 == px)
-        .unwrap_or(guess)
-}
-
-fn font<'a>(style: &'a Style, px: f64, bold: bool) -> FontDesc<'a> {
-    let face = if bold {
-        FontStyle::Bold
-    } else {
-        FontStyle::Normal
-    };
-    FontDesc::new(
-        FontFamily::Name(&style.font_family),
-        plotters_size(px),
-        face,
-    )
-}
-
-fn text_style<'a>(
-    style: &'a Style,
-    px: f64,
-    bold: bool,
-    color: RGBColor,
-    h: HPos,
-    v: VPos,
-) -> TextStyle<'a> {
-    font(style, px, bold).color(&color).pos(Pos::new(h, v))
-}
-
-/// Rough advance width of `text` in Inter at `px` (slightly generous, for layout only).
-fn text_width(text: &str, px: f64) -> f64 {
-    let em: f64 = text
-        .chars()
-        .map(|c| match c {
-            '\u{0300}'..='\u{036F}' => 0.0,
-            ' ' => 0.28,
-            'i' | 'l' | 'j' | 'I' | '.' | ',' | ':' | ';' | '\'' | '|' | '!' => 0.3,
-            'f' | 't' | 'r' | '(' | ')' | '/' | '[' | ']' => 0.4,
-            'm' | 'w' | 'M' | 'W' | '%' => 0.88,
-            '0'..='9' => 0.62,
-            'A'..='Z' => 0.7,
-            'a'..='z' => 0.57,
-            '↑' | '↓' => 0.7,
-            '−' | '±' | '+' | '=' | '×' => 0.66,
-            _ => 0.7,
-        })
-        .sum();
-    em * px
-}
-
-/// Cut `text` to fit `max_w` pixels, ending with an ellipsis when cut.
-fn fit_text(text: &str, px: f64, max_w: f64) -> String {
-    if text_width(text, px) <= max_w {
-        return text.to_string();
-    }
-    let mut out = String::new();
-    for c in text.chars() {
-        out.push(c);
-        if text_width(&out, px) + text_width("…", px) > max_w {
-            out.pop();
-            break;
-        }
-    }
-    out.push('…');
-    out
-}
-
-// ---------------------------------------------------------------------------------------------
 // Numbers
-
-/// `v` with `decimals` places, a true minus sign and no "−0" (huge values in e-notation).
-fn fmt_fixed(v: f64, decimals: usize) -> String {
-    if !v.is_finite() {
-        return if v.is_nan() {
-            "n/a".to_string()
-        } else if v > 0.0 {
-            "∞".to_string()
-        } else {
-            "−∞".to_string()
-        };
-    }
-    if v.abs() >= 1e9 {
-        return format!("{v:.2e}").replace('-', "−");
-    }
-    let s = format!("{:.*}", decimals, v);
-    let is_zero = s
-        .trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.');
-    match s.strip_prefix('-') {
-        Some(rest) if is_zero => rest.to_string(),
-        Some(rest) => format!("−{rest}"),
-        None => s,
-    }
-}
 
 /// Three significant digits, at most nine decimals.
 fn fmt_sig(v: f64) -> String {
-    if !v.is_finite() || v == 0.0 {
-        return fmt_fixed(v, 2);
-    }
-    let mag = v.abs().log10().floor();
-    let decimals = (2.0 - mag).clamp(0.0, 9.0) as usize;
-    fmt_fixed(v, decimals)
-}
-
-/// The tick values plotters will label, and the decimals they need.
-fn ticks(range: (f64, f64), max_points: usize) -> (Vec<f64>, usize) {
-    let points = RangedCoordf64::from(range.0..range.1).key_points(max_points);
-    let step = points
-        .windows(2)
-        .map(|w| (w[1] - w[0]).abs())
-        .find(|d| *d > 0.0)
-        .unwrap_or((range.1 - range.0).abs() / 4.0);
-    let decimals = if step.is_finite() && step > 0.0 {
-        (-(step.log10() + 1e-9).floor()).clamp(0.0, 12.0) as usize
-    } else {
-        2
-    };
-    (points, decimals)
-}
-
-/// Smallest and largest of the finite values, if any.
-fn extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
-    values
-        .into_iter()
-        .filter(|v| v.is_finite())
-        .fold(None, |acc, v| match acc {
-            None => Some((v, v)),
-            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
-        })
+    fmt_fixed(v, sig_decimals(v))
 }
 
 /// The x range: the targets with a small margin; a single target gets a window around it.
@@ -399,287 +163,27 @@ fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
 // ---------------------------------------------------------------------------------------------
 // Drawing primitives (in backend pixels, on the root area)
 
-type Px = (f64, f64);
-
 fn to_px(c: (i32, i32)) -> Px {
     (c.0 as f64, c.1 as f64)
-}
-
-fn round_px(p: Px) -> (i32, i32) {
-    (p.0.round() as i32, p.1.round() as i32)
-}
-
-/// Splits a polyline into the dashes of `pattern` (on, off, on, off … in pixels).
-fn dashes(points: &[Px], pattern: &[f64]) -> Vec<Vec<(i32, i32)>> {
-    let mut out = Vec::new();
-    let Some(first) = points.first() else {
-        return out;
-    };
-    if pattern.is_empty() || pattern.iter().any(|d| d.is_nan() || *d <= 0.0) {
-        out.push(points.iter().map(|p| round_px(*p)).collect());
-        return out;
-    }
-    let mut idx = 0;
-    let mut left = pattern[0];
-    let mut on = true;
-    let mut current: Vec<Px> = vec![*first];
-    for w in points.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let len = (b.0 - a.0).hypot(b.1 - a.1);
-        if !len.is_finite() {
-            continue;
-        }
-        let mut done = 0.0;
-        while len - done > left {
-            done += left;
-            let t = done / len;
-            let p = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
-            current.push(p);
-            if on {
-                out.push(current.iter().map(|p| round_px(*p)).collect());
-            }
-            current = vec![p];
-            on = !on;
-            idx = (idx + 1) % pattern.len();
-            left = pattern[idx];
-        }
-        left -= len - done;
-        current.push(b);
-    }
-    if on && current.len() >= 2 {
-        out.push(current.iter().map(|p| round_px(*p)).collect());
-    }
-    out
-}
-
-fn draw_line(root: &Area, points: &[Px], stroke: Stroke) -> Result<(), Failed> {
-    if points.len() < 2 {
-        return Ok(());
-    }
-    let shape = ShapeStyle::from(&stroke.color).stroke_width(stroke.width);
-    for dash in dashes(points, stroke.dash) {
-        if dash.len() >= 2 {
-            root.draw(&PathElement::new(dash, shape))?;
-        }
-    }
-    Ok(())
-}
-
-fn triangle(c: (i32, i32), half: i32) -> Vec<(i32, i32)> {
-    let h = half;
-    vec![
-        (c.0, c.1 - h - 1),
-        (c.0 + h, c.1 + h - 1),
-        (c.0 - h, c.1 + h - 1),
-    ]
-}
-
-fn draw_marker(root: &Area, at: (i32, i32), marker: Marker, color: RGBColor) -> Result<(), Failed> {
-    match marker {
-        Marker::Dot(r) => root.draw(&Circle::new(at, r, color.filled()))?,
-        Marker::Triangle(h) => {
-            let pts = triangle(at, h);
-            root.draw(&Polygon::new(pts.clone(), WHITE.filled()))?;
-            let mut closed = pts;
-            closed.push(closed[0]);
-            root.draw(&PathElement::new(closed, color.stroke_width(2)))?;
-        }
-        Marker::TriangleOutline(h) => {
-            let mut closed = triangle(at, h);
-            closed.push(closed[0]);
-            root.draw(&PathElement::new(closed, color.stroke_width(1)))?;
-        }
-    }
-    Ok(())
-}
-
-fn draw_text(root: &Area, text: &str, at: (i32, i32), style: TextStyle) -> Result<(), Failed> {
-    if text.is_empty() {
-        return Ok(());
-    }
-    root.draw(&Text::new(text.to_string(), at, style))?;
-    Ok(())
-}
-
-// ---------------------------------------------------------------------------------------------
-// Legend (a band above the plot, wrapped into rows)
-
-const LEGEND_SAMPLE_W: i32 = 34;
-const LEGEND_ROW_H: i32 = 22;
-const LEGEND_GAP: i32 = 22;
-
-fn legend_item_width(item: &LegendItem) -> i32 {
-    LEGEND_SAMPLE_W + 7 + text_width(&item.text, LEGEND_PX).ceil() as i32
-}
-
-/// Rows of item indices that fit `avail` pixels.
-fn legend_rows(items: &[LegendItem], avail: i32) -> Vec<Vec<usize>> {
-    let mut rows: Vec<Vec<usize>> = Vec::new();
-    let mut used = 0;
-    for (i, item) in items.iter().enumerate() {
-        let w = legend_item_width(item);
-        match rows.last_mut() {
-            Some(row) if used + LEGEND_GAP + w <= avail => {
-                row.push(i);
-                used += LEGEND_GAP + w;
-            }
-            _ => {
-                rows.push(vec![i]);
-                used = w;
-            }
-        }
-    }
-    rows
-}
-
-/// Height of the legend band; 0 (no legend) when it would take over a quarter of the chart.
-fn legend_height(items: &[LegendItem], avail: i32, chart_h: i32) -> i32 {
-    let rows = legend_rows(items, avail).len() as i32;
-    let h = if rows == 0 {
-        0
-    } else {
-        rows * LEGEND_ROW_H + 10
-    };
-    if h * 4 > chart_h { 0 } else { h }
-}
-
-/// Draws the legend rows centred between `left` and `right`, starting at `top`.
-fn draw_legend(
-    root: &Area,
-    style: &Style,
-    items: &[LegendItem],
-    left: i32,
-    right: i32,
-    top: i32,
-) -> Result<(), Failed> {
-    let avail = right - left;
-    for (r, row) in legend_rows(items, avail).iter().enumerate() {
-        let widths: Vec<i32> = row.iter().map(|&i| legend_item_width(&items[i])).collect();
-        let total: i32 = widths.iter().sum::<i32>() + LEGEND_GAP * (row.len() as i32 - 1);
-        let mut x = left + ((avail - total) / 2).max(0);
-        let y = top + 6 + r as i32 * LEGEND_ROW_H + LEGEND_ROW_H / 2;
-        for (&i, w) in row.iter().zip(&widths) {
-            let item = &items[i];
-            if let Some(stroke) = item.stroke {
-                draw_line(
-                    root,
-                    &[
-                        (x as f64, y as f64),
-                        ((x + LEGEND_SAMPLE_W) as f64, y as f64),
-                    ],
-                    stroke,
-                )?;
-            }
-            if let Some((marker, color)) = item.marker {
-                draw_marker(root, (x + LEGEND_SAMPLE_W / 2, y), marker, color)?;
-            }
-            draw_text(
-                root,
-                &item.text,
-                (x + LEGEND_SAMPLE_W + 7, y),
-                text_style(style, LEGEND_PX, false, INK, HPos::Left, VPos::Center),
-            )?;
-            x += w + LEGEND_GAP;
-        }
-    }
-    Ok(())
 }
 
 // ---------------------------------------------------------------------------------------------
 // Axis charts
 
-/// Left margin holding the rotated deviation label.
-const Y_DESC_W: u32 = 26;
-/// Height of the x tick label row, and of the row holding the x description below it.
-const X_TICK_H: u32 = 26;
-const X_DESC_H: u32 = 24;
-
-/// One panel's frame: ranges, margins and whether it carries the x description.
-struct PanelFrame<'s> {
-    x: (f64, f64),
-    y: (f64, f64),
-    top: u32,
-    right: u32,
-    x_desc: Option<&'s str>,
-}
-
-/// Width of the y tick label column for a y range.
-fn y_tick_width(y: (f64, f64), panel_h: u32) -> u32 {
-    let (points, decimals) = ticks(y, y_tick_count(panel_h));
-    let widest = points
-        .iter()
-        .map(|v| text_width(&fmt_fixed(*v, decimals), TICK_PX))
-        .fold(0.0, f64::max);
-    (widest.ceil() as u32 + 14).clamp(30, 160)
-}
-
-fn y_tick_count(plot_h: u32) -> usize {
-    ((plot_h / 30) as usize).clamp(3, 12)
-}
-
-fn x_tick_count(plot_w: u32) -> usize {
-    ((plot_w / 85) as usize).clamp(3, 12)
-}
-
 /// Builds one panel's chart with grid, ticks, frame and zero line.
 fn build_panel<'a, 'b>(
     area: &'a Area<'b>,
     style: &Style,
-    frame: &PanelFrame,
+    frame: &AxesSpec,
     y_label_w: u32,
 ) -> Result<Chart<'a, 'b>, Failed> {
-    let (w, h) = area.dim_in_pixel();
-    let x_label_h = X_TICK_H + if frame.x_desc.is_some() { X_DESC_H } else { 0 };
-    let plot_w = w.saturating_sub(Y_DESC_W + y_label_w + frame.right).max(10);
-    let plot_h = h.saturating_sub(frame.top + x_label_h + 6).max(10);
-    let mut chart = ChartBuilder::on(area)
-        .margin_top(frame.top)
-        .margin_right(frame.right)
-        .margin_left(Y_DESC_W)
-        .margin_bottom(6)
-        .x_label_area_size(x_label_h)
-        .y_label_area_size(y_label_w)
-        .build_cartesian_2d(frame.x.0..frame.x.1, frame.y.0..frame.y.1)?;
+    let chart = build_axes(area, style, frame, y_label_w)?;
 
-    let nx = x_tick_count(plot_w);
-    let ny = y_tick_count(plot_h);
-    let (_, x_dec) = ticks(frame.x, nx);
-    let (_, y_dec) = ticks(frame.y, ny);
-    let x_fmt = move |v: &f64| fmt_fixed(*v, x_dec);
-    let y_fmt = move |v: &f64| fmt_fixed(*v, y_dec);
-    let tick_font = font(style, TICK_PX, false).color(&INK);
-    let desc_font = font(style, DESC_PX, false).color(&INK);
-    let mut mesh = chart.configure_mesh();
-    mesh.x_labels(nx)
-        .y_labels(ny)
-        .x_label_formatter(&x_fmt)
-        .y_label_formatter(&y_fmt)
-        .x_label_style(tick_font.clone())
-        .y_label_style(tick_font)
-        .axis_desc_style(desc_font)
-        .bold_line_style(GRID.stroke_width(1))
-        .light_line_style(TRANSPARENT)
-        .axis_style(FRAME.stroke_width(1))
-        .set_all_tick_mark_size(4);
-    if let Some(desc) = frame.x_desc {
-        mesh.x_desc(desc);
-    }
-    mesh.draw()?;
-
-    // Frame on the top and right, and the zero line.
+    // The zero line.
     // (`area` draws in its own pixels; the chart reports backend pixels.)
     let (bx, by) = area.get_base_pixel();
-    let (xr, yr) = chart.plotting_area().get_pixel_range();
-    let (l, r, t, b) = (
-        xr.start - bx,
-        xr.end - 1 - bx,
-        yr.start - by,
-        yr.end - 1 - by,
-    );
-    area.draw(&PathElement::new(
-        vec![(l, t), (r, t), (r, b)],
-        FRAME.stroke_width(1),
-    ))?;
+    let (xr, _) = chart.plotting_area().get_pixel_range();
+    let (l, r) = (xr.start - bx, xr.end - 1 - bx);
     let zero = chart.backend_coord(&(frame.x.0, 0.0)).1 - by;
     area.draw(&PathElement::new(
         vec![(l, zero), (r, zero)],
@@ -713,7 +217,7 @@ fn draw_direction(
     match layer {
         Layer::Limits => {
             for limit in [&series.upper, &series.lower].into_iter().flatten() {
-                draw_line(root, &curve(chart, positions, limit), limit_stroke)?;
+                KIT.draw_line(root, &curve(chart, positions, limit), limit_stroke)?;
             }
         }
         Layer::Readings if has_readings(series) => {
@@ -729,7 +233,7 @@ fn draw_direction(
         Layer::Readings => {}
         Layer::Mean => {
             let mean = curve(chart, positions, &series.mean);
-            draw_line(root, &mean, mean_stroke)?;
+            KIT.draw_line(root, &mean, mean_stroke)?;
             for p in &mean {
                 draw_marker(root, round_px(*p), mean_mark.0, mean_mark.1)?;
             }
@@ -779,8 +283,8 @@ fn span_columns(spans: &[Span]) -> Vec<u32> {
         .iter()
         .filter(|s| s.upper.is_finite() && s.lower.is_finite())
         .map(|s| {
-            let label = text_width(&s.label, SPAN_PX);
-            let value = text_width(&fmt_sig((s.upper - s.lower).abs()), SPAN_PX);
+            let label = KIT.text_width(&s.label, SPAN_PX);
+            let value = KIT.text_width(&fmt_sig((s.upper - s.lower).abs()), SPAN_PX);
             (label.max(value).ceil() as u32 + 22).clamp(34, 140)
         })
         .collect()
@@ -844,24 +348,6 @@ fn draw_spans(root: &Area, style: &Style, chart: &Chart, spans: &[Span]) -> Resu
     Ok(())
 }
 
-/// The rotated deviation label, centred on pixel rows `top..bottom`.
-fn draw_y_desc(
-    root: &Area,
-    style: &Style,
-    text: &str,
-    top: i32,
-    bottom: i32,
-) -> Result<(), Failed> {
-    // Centred on the plot, it may reach past it as far as the chart's own edges.
-    let centre = (top + bottom) / 2;
-    let height = root.dim_in_pixel().1 as i32;
-    let len = (2 * centre.min(height - centre) - 8).max(20) as f64;
-    let text = fit_text(text, DESC_PX, len);
-    let st = text_style(style, DESC_PX, false, INK, HPos::Center, VPos::Top)
-        .transform(FontTransform::Rotate270);
-    draw_text(root, &text, (4, (top + bottom) / 2), st)
-}
-
 fn band_text(chart: &AxisChart) -> &str {
     if chart.band_label.trim().is_empty() {
         "X̄ ± kS"
@@ -907,6 +393,7 @@ fn direction_legend(chart: &AxisChart, up: bool) -> Vec<LegendItem> {
         items.push(LegendItem {
             stroke: Some(mean),
             marker: Some(mean_mark),
+            swatch: None,
             text: format!("mean X̄i{arrow}"),
         });
     }
@@ -914,6 +401,7 @@ fn direction_legend(chart: &AxisChart, up: bool) -> Vec<LegendItem> {
         items.push(LegendItem {
             stroke: Some(limit),
             marker: None,
+            swatch: None,
             text: format!("{} {arrow}", band_text(chart)),
         });
     }
@@ -921,6 +409,7 @@ fn direction_legend(chart: &AxisChart, up: bool) -> Vec<LegendItem> {
         items.push(LegendItem {
             stroke: None,
             marker: Some(read_mark),
+            swatch: None,
             text: format!("readings {arrow}"),
         });
     }
@@ -954,32 +443,34 @@ pub fn bidirectional(chart: &AxisChart, style: &Style) -> String {
             items.push(LegendItem {
                 stroke: Some(MEAN_BIDIR),
                 marker: None,
+                swatch: None,
                 text: "mean X̄i (bidirectional)".to_string(),
             });
         }
-        let legend_h = legend_height(&items, w as i32 - 20, h as i32) as u32;
+        let legend_h = KIT.legend_height(&items, w as i32 - 20, h as i32) as u32;
         let right = span_margin(&chart.spans, w);
         let top = legend_h + 8;
         let plot_h = h.saturating_sub(top + X_TICK_H + X_DESC_H + 6);
-        let frame = PanelFrame {
+        let frame = AxesSpec {
             x,
             y,
             top,
             right,
             x_desc: Some(chart.position_label.as_str()).filter(|d| !d.trim().is_empty()),
+            own_x_ticks: false,
         };
-        let cp = build_panel(root, style, &frame, y_tick_width(y, plot_h))?;
+        let cp = build_panel(root, style, &frame, KIT.y_tick_width(y, plot_h))?;
         if legend_h > 0 {
-            draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
         }
         let (_, yr) = cp.plotting_area().get_pixel_range();
-        draw_y_desc(root, style, &chart.deviation_label, yr.start, yr.end)?;
+        KIT.draw_y_desc(root, style, &chart.deviation_label, yr.start, yr.end)?;
 
         for layer in [Layer::Limits, Layer::Readings] {
             draw_direction(root, &cp, &chart.positions, &chart.up, true, layer)?;
             draw_direction(root, &cp, &chart.positions, &chart.down, false, layer)?;
         }
-        draw_line(root, &curve(&cp, &chart.positions, &chart.mean), MEAN_BIDIR)?;
+        KIT.draw_line(root, &curve(&cp, &chart.positions, &chart.mean), MEAN_BIDIR)?;
         draw_direction(root, &cp, &chart.positions, &chart.up, true, Layer::Mean)?;
         draw_direction(root, &cp, &chart.positions, &chart.down, false, Layer::Mean)?;
         draw_spans(root, style, &cp, &chart.spans)?;
@@ -1011,7 +502,7 @@ pub fn unidirectional(
         let (w, h) = root.dim_in_pixel();
         let mut items = direction_legend(chart, true);
         items.extend(direction_legend(chart, false));
-        let legend_h = legend_height(&items, w as i32 - 20, h as i32) as u32;
+        let legend_h = KIT.legend_height(&items, w as i32 - 20, h as i32) as u32;
         let right = span_margin(up_spans, w).max(span_margin(down_spans, w));
         let body_h = h.saturating_sub(legend_h);
         let top_h = (body_h.saturating_sub(X_DESC_H)) / 2;
@@ -1019,7 +510,7 @@ pub fn unidirectional(
         let (upper_area, lower_area) = body.split_vertically(top_h);
         let heading = 24;
         let plot_h = top_h.saturating_sub(heading + X_TICK_H + 6);
-        let y_label_w = y_tick_width(y, plot_h);
+        let y_label_w = KIT.y_tick_width(y, plot_h);
 
         let panels = [
             (&upper_area, &chart.up, up_spans, true, "Approach ↑", None),
@@ -1034,12 +525,13 @@ pub fn unidirectional(
         ];
         let mut plot_rows = (i32::MAX, i32::MIN);
         for (area, series, spans, up, title, x_desc) in panels {
-            let frame = PanelFrame {
+            let frame = AxesSpec {
                 x,
                 y,
                 top: heading,
                 right,
                 x_desc,
+                own_x_ticks: false,
             };
             let cp = build_panel(area, style, &frame, y_label_w)?;
             let (xr, yr) = cp.plotting_area().get_pixel_range();
@@ -1057,9 +549,9 @@ pub fn unidirectional(
             draw_spans(root, style, &cp, spans)?;
         }
         if legend_h > 0 {
-            draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
         }
-        draw_y_desc(
+        KIT.draw_y_desc(
             root,
             style,
             &chart.deviation_label,
@@ -1114,7 +606,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
         let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
         let label_w = labels
             .iter()
-            .map(|l| text_width(l, TICK_PX))
+            .map(|l| KIT.text_width(l, TICK_PX))
             .fold(0.0, f64::max)
             .ceil()
             .clamp(20.0, w as f64 * 0.3) as u32
@@ -1132,7 +624,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
             .collect();
         let value_w = value_texts
             .iter()
-            .map(|t| text_width(t, TICK_PX))
+            .map(|t| KIT.text_width(t, TICK_PX))
             .fold(0.0, f64::max)
             .ceil() as u32;
         let right = (value_w + if clipped { 30 } else { 16 }).min(w / 3);
@@ -1180,10 +672,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
             .axis_style(FRAME.stroke_width(1))
             .set_all_tick_mark_size(4)
             .draw()?;
-        root.draw(&PathElement::new(
-            vec![(l, t), (r, t), (r, b)],
-            FRAME.stroke_width(1),
-        ))?;
+        draw_frame_edges(root, &chart)?;
 
         let row_h = ((b - t) as f64 / n as f64).max(1.0);
         let thickness = ((row_h * 0.62).round() as i32).clamp(2, 28);
@@ -1246,7 +735,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
 
         let text_h = (TICK_PX as i32 + 2).min(row_h as i32).max(4);
         for (bar, value_text, mid, text_x, over, background) in texts {
-            let label = fit_text(&bar.label, TICK_PX, label_w as f64 - 12.0);
+            let label = KIT.fit_text(&bar.label, TICK_PX, label_w as f64 - 12.0);
             draw_text(
                 root,
                 &label,
@@ -1254,7 +743,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
                 label_style(false, INK, HPos::Right),
             )?;
             let (bold, color) = if over { (true, BAR_OVER) } else { (false, INK) };
-            let tw = text_width(value_text, TICK_PX).ceil() as i32;
+            let tw = KIT.text_width(value_text, TICK_PX).ceil() as i32;
             // The background stops at the plot's frame; past it the margin is white anyway.
             let bg_right = (text_x + tw + 2).min(r - 1);
             if bg_right > text_x {
@@ -1292,7 +781,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
                 (kx + 28, key_y),
                 label_style(false, INK, HPos::Left),
             )?;
-            kx += 28 + text_width(text, TICK_PX).ceil() as i32 + 22;
+            kx += 28 + KIT.text_width(text, TICK_PX).ceil() as i32 + 22;
         }
         if clipped {
             let note = format!("▶ ratio above {}, bar clipped", fmt_fixed(RATIO_CLIP, 0));
@@ -1310,6 +799,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::chart_kit::dashes;
 
     fn style() -> Style {
         Style {

@@ -10,21 +10,17 @@
 //! shown about 16 cm wide: 900 × 360 for [`residuals`], 900 × 320 for [`periodogram`] and
 //! 900 × [`model_checks_height`] for [`model_checks`].
 
-use plotters::coord::Shift;
-use plotters::coord::types::RangedCoordf64;
+use super::chart_kit::{
+    Area, AxesSpec, Chart, Conventions, DASHED, DOWN, FRAME, Failed, GRID, GUIDE, INK, LEGEND_PX,
+    LegendItem, MUTED, Marker, Px, SOLID, STRIPE, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H,
+    Y_DESC_W, draw_marker, draw_text, extent, fmt_fixed, message_chart, render, round_px,
+    sig_decimals, text_style, ticks, x_tick_count,
+};
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters::style::text_anchor::{HPos, VPos};
 use std::collections::HashSet;
 
-/// Style of the charts (same shape as the other report charts' style). `font_family` is the
-/// family name of the sans-serif face the PDF renderer embeds ("Inter"); charts only ever name
-/// this family in SVG text.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Style {
-    pub font_family: String,
-    pub width_px: u32,
-    pub height_px: u32,
-}
+pub use super::chart_kit::Style;
 
 /// Residuals of the fitted base model (reading minus model), in µm or arcsec.
 ///
@@ -81,16 +77,8 @@ pub struct CheckBar {
 // ---------------------------------------------------------------------------------------------
 // Look (the tones of the report's other charts)
 
-const UP: RGBColor = RGBColor(0x1F, 0x3A, 0x6E);
 /// ↓ readings: a lighter tone than ↑ so the two also differ in grey print.
 const DOWN_MID: RGBColor = RGBColor(0xB4, 0x4E, 0x4E);
-const DOWN: RGBColor = RGBColor(0x8E, 0x1B, 0x1B);
-const INK: RGBColor = RGBColor(0x1A, 0x1A, 0x1A);
-const MUTED: RGBColor = RGBColor(0x55, 0x55, 0x55);
-const GRID: RGBColor = RGBColor(0xE2, 0xE2, 0xE2);
-const GUIDE: RGBColor = RGBColor(0xC4, 0xC4, 0xC4);
-const FRAME: RGBColor = RGBColor(0x9A, 0x9A, 0x9A);
-const STRIPE: RGBColor = RGBColor(0xF3, 0xF3, 0xF3);
 /// Light bands: the ±2σ band, the unresolvable region, the simulated 95 % band.
 const BAND: RGBColor = RGBColor(0xE8, 0xE8, 0xE8);
 const SHADE: RGBColor = RGBColor(0xE4, 0xE4, 0xE4);
@@ -98,39 +86,8 @@ const CHECK_BAND: RGBColor = RGBColor(0xDD, 0xDD, 0xDD);
 const CURVE: RGBColor = RGBColor(0x1F, 0x3A, 0x6E);
 const OUTSIDE: RGBColor = RGBColor(0x6E, 0x14, 0x14);
 
-/// Text sizes in SVG pixels (the `font-size` written into the SVG).
-const TICK_PX: f64 = 14.0;
-const DESC_PX: f64 = 15.5;
-const LEGEND_PX: f64 = 14.0;
+/// Text size of the notes, in SVG pixels (the `font-size` written into the SVG).
 const NOTE_PX: f64 = 12.5;
-
-/// Dash patterns in pixels: on, off, on, off …
-const SOLID: &[f64] = &[];
-const DASHED: &[f64] = &[10.0, 5.0];
-
-#[derive(Clone, Copy)]
-struct Stroke {
-    color: RGBColor,
-    width: u32,
-    dash: &'static [f64],
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-enum Marker {
-    /// Filled circle of the given radius.
-    Dot(u32),
-    /// Outline-only triangle (pointing up) with the given half size.
-    OpenTriangle(i32),
-    /// Filled diamond with the given half size.
-    Diamond(i32),
-}
-
-struct LegendItem {
-    stroke: Option<Stroke>,
-    marker: Option<(Marker, RGBColor)>,
-    swatch: Option<RGBColor>,
-    text: String,
-}
 
 const FIT: Stroke = Stroke {
     color: INK,
@@ -157,155 +114,18 @@ const MARK_DOWN: (Marker, RGBColor) = (Marker::OpenTriangle(4), DOWN_MID);
 const MARK_INSIDE: (Marker, RGBColor) = (Marker::Dot(5), INK);
 const MARK_OUTSIDE: (Marker, RGBColor) = (Marker::Diamond(7), OUTSIDE);
 
-// ---------------------------------------------------------------------------------------------
-// Errors and the SVG frame
-
-/// A drawing step failed; the chart falls back to a message.
-struct Failed;
-
-impl<E: std::error::Error + Send + Sync> From<DrawingAreaErrorKind<E>> for Failed {
-    fn from(_: DrawingAreaErrorKind<E>) -> Self {
-        Failed
-    }
-}
-
-type Area<'b> = DrawingArea<SVGBackend<'b>, Shift>;
-type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
-
-fn dims(style: &Style) -> (u32, u32) {
-    (
-        style.width_px.clamp(240, 10_000),
-        style.height_px.clamp(140, 20_000),
-    )
-}
-
-/// Draws with `paint` on a white SVG of the style's size; a failure gives a message chart.
-fn render(style: &Style, paint: impl FnOnce(&Area) -> Result<(), Failed>) -> String {
-    let size = dims(style);
-    let mut buf = String::new();
-    let ok = {
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
-        let drawn = root
-            .fill(&WHITE)
-            .map_err(Failed::from)
-            .and_then(|_| paint(&root));
-        let presented = root.present().map_err(Failed::from);
-        drawn.is_ok() && presented.is_ok()
-    };
-    if ok {
-        buf
-    } else {
-        message_chart(style, "This chart could not be drawn.")
-    }
-}
-
-/// A chart holding only a centred message (for empty or unusable input).
-fn message_chart(style: &Style, message: &str) -> String {
-    let size = dims(style);
-    let mut buf = String::new();
-    let ok = {
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
-        let drawn = root.fill(&WHITE).is_ok()
-            && root
-                .draw(&Text::new(
-                    message.to_string(),
-                    (size.0 as i32 / 2, size.1 as i32 / 2),
-                    text_style(style, DESC_PX, false, MUTED, HPos::Center, VPos::Center),
-                ))
-                .is_ok();
-        drawn && root.present().is_ok()
-    };
-    if ok {
-        buf
-    } else {
-        format!(
-            "<svg width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" xmlns=\"http://www.w3.org/2000/svg\">\n</svg>\n",
-            size.0, size.1
-        )
-    }
-}
+/// How these charts measure text and draw lines (see [`Conventions`]).
+const KIT: Conventions = Conventions {
+    narrow_superscripts: true,
+    dedup_pixels: true,
+};
 
 // ---------------------------------------------------------------------------------------------
 // Text
 
-/// Plotters writes `font-size = size / 1.24`; find the size that writes exactly `px` (the text
-/// sizes above are chosen so that one exists), else the plain product.
-fn plotters_size(px: f64) -> f64 {
-    let guess = px * 1.24;
-    let bits = guess.to_bits();
-    (0..16u64)
-        .flat_map(|step| [bits.wrapping_add(step), bits.wrapping_sub(step)])
-        .map(f64::from_bits)
-        .find(|s| s.is_finite() && *s / 1.24 == px)
-        .unwrap_or(guess)
-}
-
-fn font<'a>(style: &'a Style, px: f64, bold: bool) -> FontDesc<'a> {
-    let face = if bold {
-        FontStyle::Bold
-    } else {
-        FontStyle::Normal
-    };
-    FontDesc::new(
-        FontFamily::Name(&style.font_family),
-        plotters_size(px),
-        face,
-    )
-}
-
-fn text_style<'a>(
-    style: &'a Style,
-    px: f64,
-    bold: bool,
-    color: RGBColor,
-    h: HPos,
-    v: VPos,
-) -> TextStyle<'a> {
-    font(style, px, bold).color(&color).pos(Pos::new(h, v))
-}
-
-/// Rough advance width of `text` in Inter at `px` (slightly generous, for layout only).
-fn text_width(text: &str, px: f64) -> f64 {
-    let em: f64 = text
-        .chars()
-        .map(|c| match c {
-            '\u{0300}'..='\u{036F}' => 0.0,
-            ' ' => 0.28,
-            'i' | 'l' | 'j' | 'I' | '.' | ',' | ':' | ';' | '\'' | '|' | '!' => 0.3,
-            'f' | 't' | 'r' | '(' | ')' | '/' | '[' | ']' => 0.4,
-            'm' | 'w' | 'M' | 'W' | '%' => 0.88,
-            '0'..='9' => 0.62,
-            'A'..='Z' => 0.7,
-            'a'..='z' => 0.57,
-            '↑' | '↓' => 0.7,
-            '−' | '±' | '+' | '=' | '×' => 0.66,
-            '⁰'..='⁹' | '¹' | '²' | '³' | '⁻' => 0.4,
-            _ => 0.7,
-        })
-        .sum();
-    em * px
-}
-
 /// Bold text runs about 6 % wider.
 fn bold_width(text: &str, px: f64) -> f64 {
-    text_width(text, px) * 1.06
-}
-
-/// Cut `text` to fit `max_w` pixels, ending with an ellipsis when cut.
-fn fit_text(text: &str, px: f64, max_w: f64) -> String {
-    if text_width(text, px) <= max_w {
-        return text.to_string();
-    }
-    let mut out = String::new();
-    for c in text.chars() {
-        out.push(c);
-        if text_width(&out, px) + text_width("…", px) > max_w {
-            out.pop();
-            break;
-        }
-    }
-    out.push('…');
-    out
+    KIT.text_width(text, px) * 1.06
 }
 
 /// The unit of an axis description "Quantity / unit" (empty when there is none).
@@ -316,41 +136,6 @@ fn unit_of(label: &str) -> &str {
 // ---------------------------------------------------------------------------------------------
 // Numbers
 
-/// `v` with `decimals` places, a true minus sign and no "−0" (huge values in e-notation).
-fn fmt_fixed(v: f64, decimals: usize) -> String {
-    if !v.is_finite() {
-        return if v.is_nan() {
-            "n/a".to_string()
-        } else if v > 0.0 {
-            "∞".to_string()
-        } else {
-            "−∞".to_string()
-        };
-    }
-    if v.abs() >= 1e9 {
-        return format!("{v:.2e}").replace('-', "−");
-    }
-    let s = format!("{:.*}", decimals, v);
-    let is_zero = s
-        .trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.');
-    match s.strip_prefix('-') {
-        Some(rest) if is_zero => rest.to_string(),
-        Some(rest) => format!("−{rest}"),
-        None => s,
-    }
-}
-
-/// Decimals that show three significant digits of `v` (at most nine).
-fn sig_decimals(v: f64) -> usize {
-    if !v.is_finite() || v == 0.0 {
-        return 2;
-    }
-    let mag = v.abs().log10().floor();
-    (2.0 - mag).clamp(0.0, 9.0) as usize
-}
-
 /// Up to three significant digits, trailing zeros dropped ("0.35", "12.3", "1750").
 fn fmt_short(v: f64) -> String {
     let s = fmt_fixed(v, sig_decimals(v));
@@ -359,33 +144,6 @@ fn fmt_short(v: f64) -> String {
     } else {
         s
     }
-}
-
-/// The tick values plotters will label, and the decimals they need.
-fn ticks(range: (f64, f64), max_points: usize) -> (Vec<f64>, usize) {
-    let points = RangedCoordf64::from(range.0..range.1).key_points(max_points);
-    let step = points
-        .windows(2)
-        .map(|w| (w[1] - w[0]).abs())
-        .find(|d| *d > 0.0)
-        .unwrap_or((range.1 - range.0).abs() / 4.0);
-    let decimals = if step.is_finite() && step > 0.0 {
-        (-(step.log10() + 1e-9).floor()).clamp(0.0, 12.0) as usize
-    } else {
-        2
-    };
-    (points, decimals)
-}
-
-/// Smallest and largest of the finite values, if any.
-fn extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
-    values
-        .into_iter()
-        .filter(|v| v.is_finite())
-        .fold(None, |acc, v| match acc {
-            None => Some((v, v)),
-            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
-        })
 }
 
 /// A range over the values with a small margin; a single value gets a window around it.
@@ -513,12 +271,6 @@ fn linear_log_ticks(lo: f64, hi: f64, max_n: usize) -> Vec<(f64, String)> {
 // ---------------------------------------------------------------------------------------------
 // Drawing primitives (in backend pixels, on the root area)
 
-type Px = (f64, f64);
-
-fn round_px(p: Px) -> (i32, i32) {
-    (p.0.round() as i32, p.1.round() as i32)
-}
-
 /// The plot rectangle of a chart and the data ranges it shows; maps data to pixels in f64 so
 /// far-out values can be clipped before they are rounded.
 #[derive(Clone, Copy)]
@@ -620,104 +372,10 @@ fn clip_polyline(points: &[Px], f: &Frame) -> Vec<Vec<Px>> {
     out
 }
 
-/// Splits a polyline into the dashes of `pattern` (on, off, on, off … in pixels).
-fn dashes(points: &[Px], pattern: &[f64]) -> Vec<Vec<(i32, i32)>> {
-    let mut out = Vec::new();
-    let Some(first) = points.first() else {
-        return out;
-    };
-    if pattern.is_empty() || pattern.iter().any(|d| d.is_nan() || *d <= 0.0) {
-        out.push(points.iter().map(|p| round_px(*p)).collect());
-        return out;
-    }
-    let mut idx = 0;
-    let mut left = pattern[0];
-    let mut on = true;
-    let mut current: Vec<Px> = vec![*first];
-    for w in points.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let len = (b.0 - a.0).hypot(b.1 - a.1);
-        if !len.is_finite() {
-            continue;
-        }
-        let mut done = 0.0;
-        while len - done > left {
-            done += left;
-            let t = done / len;
-            let p = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
-            current.push(p);
-            if on {
-                out.push(current.iter().map(|p| round_px(*p)).collect());
-            }
-            current = vec![p];
-            on = !on;
-            idx = (idx + 1) % pattern.len();
-            left = pattern[idx];
-        }
-        left -= len - done;
-        current.push(b);
-    }
-    if on && current.len() >= 2 {
-        out.push(current.iter().map(|p| round_px(*p)).collect());
-    }
-    out
-}
-
-/// Drops points that round to the pixel of the point before (keeps polylines short).
-fn dedup_pixels(points: Vec<(i32, i32)>) -> Vec<(i32, i32)> {
-    let mut out: Vec<(i32, i32)> = Vec::with_capacity(points.len());
-    for p in points {
-        if out.last() != Some(&p) {
-            out.push(p);
-        }
-    }
-    out
-}
-
-fn draw_line(root: &Area, points: &[Px], stroke: Stroke) -> Result<(), Failed> {
-    if points.len() < 2 {
-        return Ok(());
-    }
-    let shape = ShapeStyle::from(&stroke.color).stroke_width(stroke.width);
-    for dash in dashes(points, stroke.dash) {
-        let dash = dedup_pixels(dash);
-        if dash.len() >= 2 {
-            root.draw(&PathElement::new(dash, shape))?;
-        }
-    }
-    Ok(())
-}
-
 /// Draws a polyline clipped to the frame.
 fn draw_clipped(root: &Area, points: &[Px], frame: &Frame, stroke: Stroke) -> Result<(), Failed> {
     for piece in clip_polyline(points, frame) {
-        draw_line(root, &piece, stroke)?;
-    }
-    Ok(())
-}
-
-fn draw_marker(root: &Area, at: (i32, i32), marker: Marker, color: RGBColor) -> Result<(), Failed> {
-    match marker {
-        Marker::Dot(r) => root.draw(&Circle::new(at, r, color.filled()))?,
-        Marker::OpenTriangle(h) => {
-            // Start mid-base so the path closes on a straight edge (no notch at a corner).
-            let (x, y) = at;
-            let path = vec![
-                (x, y + h),
-                (x + h + 1, y + h),
-                (x, y - h - 1),
-                (x - h - 1, y + h),
-                (x, y + h),
-            ];
-            root.draw(&PathElement::new(path, color.stroke_width(2)))?;
-        }
-        Marker::Diamond(h) => {
-            let (x, y) = at;
-            root.draw(&Polygon::new(
-                vec![(x, y - h), (x + h, y), (x, y + h), (x - h, y)],
-                color.filled(),
-            ))?;
-        }
+        KIT.draw_line(root, &piece, stroke)?;
     }
     Ok(())
 }
@@ -738,14 +396,6 @@ fn draw_arrow(
     Ok(())
 }
 
-fn draw_text(root: &Area, text: &str, at: (i32, i32), style: TextStyle) -> Result<(), Failed> {
-    if text.is_empty() {
-        return Ok(());
-    }
-    root.draw(&Text::new(text.to_string(), at, style))?;
-    Ok(())
-}
-
 fn fill_rect(root: &Area, a: (i32, i32), b: (i32, i32), color: RGBColor) -> Result<(), Failed> {
     if a.0 != b.0 && a.1 != b.1 {
         root.draw(&Rectangle::new([a, b], color.filled()))?;
@@ -754,131 +404,7 @@ fn fill_rect(root: &Area, a: (i32, i32), b: (i32, i32), color: RGBColor) -> Resu
 }
 
 // ---------------------------------------------------------------------------------------------
-// Legend (a band above the plot, wrapped into rows)
-
-const LEGEND_SAMPLE_W: i32 = 34;
-const LEGEND_ROW_H: i32 = 22;
-const LEGEND_GAP: i32 = 22;
-
-fn legend_item_width(item: &LegendItem) -> i32 {
-    LEGEND_SAMPLE_W + 7 + text_width(&item.text, LEGEND_PX).ceil() as i32
-}
-
-/// Rows of item indices that fit `avail` pixels.
-fn legend_rows(items: &[LegendItem], avail: i32) -> Vec<Vec<usize>> {
-    let mut rows: Vec<Vec<usize>> = Vec::new();
-    let mut used = 0;
-    for (i, item) in items.iter().enumerate() {
-        let w = legend_item_width(item);
-        match rows.last_mut() {
-            Some(row) if used + LEGEND_GAP + w <= avail => {
-                row.push(i);
-                used += LEGEND_GAP + w;
-            }
-            _ => {
-                rows.push(vec![i]);
-                used = w;
-            }
-        }
-    }
-    rows
-}
-
-/// Height of the legend band; 0 (no legend) when it would take over a quarter of the chart.
-fn legend_height(items: &[LegendItem], avail: i32, chart_h: i32) -> i32 {
-    let rows = legend_rows(items, avail).len() as i32;
-    let h = if rows == 0 {
-        0
-    } else {
-        rows * LEGEND_ROW_H + 10
-    };
-    if h * 4 > chart_h { 0 } else { h }
-}
-
-/// Draws the legend rows centred between `left` and `right`, starting at `top`.
-fn draw_legend(
-    root: &Area,
-    style: &Style,
-    items: &[LegendItem],
-    left: i32,
-    right: i32,
-    top: i32,
-) -> Result<(), Failed> {
-    let avail = right - left;
-    for (r, row) in legend_rows(items, avail).iter().enumerate() {
-        let widths: Vec<i32> = row.iter().map(|&i| legend_item_width(&items[i])).collect();
-        let total: i32 = widths.iter().sum::<i32>() + LEGEND_GAP * (row.len() as i32 - 1);
-        let mut x = left + ((avail - total) / 2).max(0);
-        let y = top + 6 + r as i32 * LEGEND_ROW_H + LEGEND_ROW_H / 2;
-        for (&i, w) in row.iter().zip(&widths) {
-            let item = &items[i];
-            if let Some(fill) = item.swatch {
-                let (a, b) = ((x + 2, y - 7), (x + LEGEND_SAMPLE_W - 2, y + 7));
-                root.draw(&Rectangle::new([a, b], fill.filled()))?;
-                root.draw(&Rectangle::new([a, b], GUIDE.stroke_width(1)))?;
-            }
-            if let Some(stroke) = item.stroke {
-                draw_line(
-                    root,
-                    &[
-                        (x as f64, y as f64),
-                        ((x + LEGEND_SAMPLE_W) as f64, y as f64),
-                    ],
-                    stroke,
-                )?;
-            }
-            if let Some((marker, color)) = item.marker {
-                draw_marker(root, (x + LEGEND_SAMPLE_W / 2, y), marker, color)?;
-            }
-            draw_text(
-                root,
-                &item.text,
-                (x + LEGEND_SAMPLE_W + 7, y),
-                text_style(style, LEGEND_PX, false, INK, HPos::Left, VPos::Center),
-            )?;
-            x += w + LEGEND_GAP;
-        }
-    }
-    Ok(())
-}
-
-// ---------------------------------------------------------------------------------------------
 // Axes
-
-/// Left margin holding the rotated y description.
-const Y_DESC_W: u32 = 26;
-/// Height of the x tick label row, and of the row holding the x description below it.
-const X_TICK_H: u32 = 26;
-const X_DESC_H: u32 = 24;
-
-/// One plot's frame: ranges, margins, the x description and who draws the x ticks.
-struct AxesSpec<'s> {
-    x: (f64, f64),
-    y: (f64, f64),
-    top: u32,
-    right: u32,
-    x_desc: Option<&'s str>,
-    /// x ticks and vertical grid drawn by the caller (log axis)
-    own_x_ticks: bool,
-}
-
-fn y_tick_count(plot_h: u32) -> usize {
-    ((plot_h / 30) as usize).clamp(3, 12)
-}
-
-fn x_tick_count(plot_w: u32) -> usize {
-    ((plot_w / 85) as usize).clamp(3, 12)
-}
-
-/// Width of the y tick label column for a y range.
-fn y_tick_width(y: (f64, f64), plot_h: u32) -> u32 {
-    let (points, decimals) = ticks(y, y_tick_count(plot_h));
-    let widest = points
-        .iter()
-        .map(|v| text_width(&fmt_fixed(*v, decimals), TICK_PX))
-        .fold(0.0, f64::max);
-    (widest.ceil() as u32 + 14).clamp(30, 160)
-}
 
 /// Builds the chart with grid, ticks and frame (no zero line: callers draw bands first).
 fn build_axes<'a, 'b>(
@@ -887,88 +413,9 @@ fn build_axes<'a, 'b>(
     spec: &AxesSpec,
     y_label_w: u32,
 ) -> Result<(Chart<'a, 'b>, Frame), Failed> {
-    let (w, h) = area.dim_in_pixel();
-    let x_label_h = X_TICK_H + if spec.x_desc.is_some() { X_DESC_H } else { 0 };
-    let plot_w = w.saturating_sub(Y_DESC_W + y_label_w + spec.right).max(10);
-    let plot_h = h.saturating_sub(spec.top + x_label_h + 6).max(10);
-    let mut chart = ChartBuilder::on(area)
-        .margin_top(spec.top)
-        .margin_right(spec.right)
-        .margin_left(Y_DESC_W)
-        .margin_bottom(6)
-        .x_label_area_size(x_label_h)
-        .y_label_area_size(y_label_w)
-        .build_cartesian_2d(spec.x.0..spec.x.1, spec.y.0..spec.y.1)?;
-
-    let nx = if spec.own_x_ticks {
-        0
-    } else {
-        x_tick_count(plot_w)
-    };
-    let ny = y_tick_count(plot_h);
-    let (_, x_dec) = ticks(spec.x, nx.max(1));
-    let (_, y_dec) = ticks(spec.y, ny);
-    let x_fmt = move |v: &f64| fmt_fixed(*v, x_dec);
-    let y_fmt = move |v: &f64| fmt_fixed(*v, y_dec);
-    let tick_font = font(style, TICK_PX, false).color(&INK);
-    let desc_font = font(style, DESC_PX, false).color(&INK);
-    let mut mesh = chart.configure_mesh();
-    mesh.x_labels(nx)
-        .y_labels(ny)
-        .x_label_formatter(&x_fmt)
-        .y_label_formatter(&y_fmt)
-        .x_label_style(tick_font.clone())
-        .y_label_style(tick_font)
-        .axis_desc_style(desc_font)
-        .bold_line_style(GRID.stroke_width(1))
-        .light_line_style(TRANSPARENT)
-        .axis_style(FRAME.stroke_width(1))
-        .set_all_tick_mark_size(4);
-    if spec.own_x_ticks {
-        mesh.disable_x_mesh();
-    }
-    if let Some(desc) = spec.x_desc {
-        mesh.x_desc(desc);
-    }
-    mesh.draw()?;
+    let chart = super::chart_kit::build_axes(area, style, spec, y_label_w)?;
     let frame = Frame::of(&chart, spec.x, spec.y);
-    draw_frame_edges(area, &chart)?;
     Ok((chart, frame))
-}
-
-/// The frame's top and right edges (the axes draw the left and bottom ones).
-fn draw_frame_edges(area: &Area, chart: &Chart) -> Result<(), Failed> {
-    let (bx, by) = area.get_base_pixel();
-    let (xr, yr) = chart.plotting_area().get_pixel_range();
-    let (l, r, t, b) = (
-        xr.start - bx,
-        xr.end - 1 - bx,
-        yr.start - by,
-        yr.end - 1 - by,
-    );
-    area.draw(&PathElement::new(
-        vec![(l, t), (r, t), (r, b)],
-        FRAME.stroke_width(1),
-    ))?;
-    Ok(())
-}
-
-/// The rotated y description, centred on pixel rows `top..bottom`.
-fn draw_y_desc(
-    root: &Area,
-    style: &Style,
-    text: &str,
-    top: i32,
-    bottom: i32,
-) -> Result<(), Failed> {
-    // Centred on the plot, it may reach past it as far as the chart's own edges.
-    let centre = (top + bottom) / 2;
-    let height = root.dim_in_pixel().1 as i32;
-    let len = (2 * centre.min(height - centre) - 8).max(20) as f64;
-    let text = fit_text(text.trim(), DESC_PX, len);
-    let st = text_style(style, DESC_PX, false, INK, HPos::Center, VPos::Top)
-        .transform(FontTransform::Rotate270);
-    draw_text(root, &text, (4, centre), st)
 }
 
 fn non_empty(text: &str) -> Option<&str> {
@@ -1048,7 +495,7 @@ pub fn residuals(r: &Residuals, style: &Style) -> String {
                 text: "fitted effect".to_string(),
             });
         }
-        let legend_h = legend_height(&items, w as i32 - 20, h as i32) as u32;
+        let legend_h = KIT.legend_height(&items, w as i32 - 20, h as i32) as u32;
         let top = legend_h + 8;
         let spec = AxesSpec {
             x,
@@ -1059,11 +506,17 @@ pub fn residuals(r: &Residuals, style: &Style) -> String {
             own_x_ticks: false,
         };
         let plot_h = h.saturating_sub(top + X_TICK_H + X_DESC_H + 6);
-        let (_, frame) = build_axes(root, style, &spec, y_tick_width(y, plot_h))?;
+        let (_, frame) = build_axes(root, style, &spec, KIT.y_tick_width(y, plot_h))?;
         if legend_h > 0 {
-            draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
         }
-        draw_y_desc(root, style, &r.y_label, frame.t as i32, frame.b as i32)?;
+        KIT.draw_y_desc(
+            root,
+            style,
+            r.y_label.trim(),
+            frame.t as i32,
+            frame.b as i32,
+        )?;
 
         let (l, rt) = (frame.l.round() as i32 + 1, frame.r.round() as i32 - 1);
         if let Some(b) = band {
@@ -1195,7 +648,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
         let (w, h) = root.dim_in_pixel();
         let mark_row = if marked.is_some() { MARK_ROW_H } else { 0 };
         let note = "not resolvable";
-        let note_w = text_width(note, NOTE_PX);
+        let note_w = KIT.text_width(note, NOTE_PX);
         let mut items = vec![LegendItem {
             stroke: Some(POWER),
             marker: None,
@@ -1210,9 +663,9 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
                 text: format!("false-alarm level ({})", fmt_short(t)),
             });
         }
-        let legend_h0 = legend_height(&items, w as i32 - 20, h as i32) as u32;
+        let legend_h0 = KIT.legend_height(&items, w as i32 - 20, h as i32) as u32;
         let plot_h0 = h.saturating_sub(legend_h0 + mark_row + 8 + X_TICK_H + X_DESC_H + 6);
-        let y_label_w = y_tick_width(y, plot_h0);
+        let y_label_w = KIT.y_tick_width(y, plot_h0);
 
         // Where the unresolvable region's label goes: inside it when it fits, else the legend.
         let region_w = unresolved.map_or(0.0, |u| {
@@ -1229,7 +682,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
                 text: note.to_string(),
             });
         }
-        let legend_h = legend_height(&items, w as i32 - 20, h as i32) as u32;
+        let legend_h = KIT.legend_height(&items, w as i32 - 20, h as i32) as u32;
         let top = legend_h + mark_row + 8;
         let spec = AxesSpec {
             x,
@@ -1241,9 +694,9 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
         };
         let (_, frame) = build_axes(root, style, &spec, y_label_w)?;
         if legend_h > 0 {
-            draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
         }
-        draw_y_desc(
+        KIT.draw_y_desc(
             root,
             style,
             "Normalised power",
@@ -1276,7 +729,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
                 FRAME.stroke_width(1),
             ))?;
             // Labels at the plot's ends stay inside the chart.
-            let half = (text_width(&label, TICK_PX) / 2.0).ceil() as i32;
+            let half = (KIT.text_width(&label, TICK_PX) / 2.0).ceil() as i32;
             let lx = px.clamp(2 + half, (w as i32 - 2 - half).max(2 + half));
             draw_text(root, &label, (lx, b + 9), tick_font(HPos::Center))?;
         }
@@ -1311,7 +764,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
         // The detected period: a line through the plot, a pointer and its label above.
         if let Some((m, label)) = &marked {
             let xm = frame.px(*m, 0.0).0.round() as i32;
-            draw_line(
+            KIT.draw_line(
                 root,
                 &[(xm as f64, (t + 1) as f64), (xm as f64, (b - 1) as f64)],
                 MARKED,
@@ -1332,7 +785,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
 
         if let Some(th) = threshold {
             let yy = frame.px(x.0, th).1;
-            draw_line(root, &[(frame.l + 1.0, yy), (frame.r - 1.0, yy)], THRESHOLD)?;
+            KIT.draw_line(root, &[(frame.l + 1.0, yy), (frame.r - 1.0, yy)], THRESHOLD)?;
         }
         let curve: Vec<Px> = points.iter().map(|q| frame.px(q.0, q.1)).collect();
         if let [only] = curve[..] {
@@ -1474,7 +927,7 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
         let col_w = |head: &str, texts: &mut dyn Iterator<Item = &String>| {
             texts
                 .map(|t| bold_width(t, TICK_PX))
-                .fold(text_width(head, TICK_PX), f64::max)
+                .fold(KIT.text_width(head, TICK_PX), f64::max)
                 .ceil()
                 .min(wi as f64 / 3.0) as i32
         };
@@ -1542,7 +995,7 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
                 Sample::Mark((m, c)) => draw_marker(root, (kx + 11, key_y), m, c)?,
                 Sample::Arrow => draw_arrow(root, (kx + 18, key_y), 1, 6, INK)?,
             }
-            let text = fit_text(text, LEGEND_PX, (wi - kx - 38).max(0) as f64);
+            let text = KIT.fit_text(text, LEGEND_PX, (wi - kx - 38).max(0) as f64);
             if text != "…" {
                 draw_text(
                     root,
@@ -1551,7 +1004,7 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
                     text_style(style, LEGEND_PX, false, INK, HPos::Left, VPos::Center),
                 )?;
             }
-            kx += 28 + text_width(&text, LEGEND_PX).ceil() as i32 + 24;
+            kx += 28 + KIT.text_width(&text, LEGEND_PX).ceil() as i32 + 24;
         }
         let head_y = top - 8;
         let head = |h| text_style(style, TICK_PX, true, INK, h, VPos::Bottom);
@@ -1563,7 +1016,7 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
         )?;
         draw_text(root, band_head, (band_right, head_y), head(HPos::Right))?;
         let scale_note = "each statistic on its own scale";
-        if text_width(scale_note, NOTE_PX) <= (sx1 - sx0) as f64 {
+        if KIT.text_width(scale_note, NOTE_PX) <= (sx1 - sx0) as f64 {
             draw_text(
                 root,
                 scale_note,
@@ -1613,15 +1066,15 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
             } else {
                 (false, INK)
             };
-            let label = fit_text(&c.label, TICK_PX, label_w as f64);
+            let label = KIT.fit_text(&c.label, TICK_PX, label_w as f64);
             draw_text(
                 root,
                 &label,
                 (label_right, mid),
                 text_style(style, TICK_PX, bold, ink, HPos::Right, VPos::Center),
             )?;
-            let measured = fit_text(measured, TICK_PX, measured_w as f64);
-            let band = fit_text(band, TICK_PX, band_w as f64);
+            let measured = KIT.fit_text(measured, TICK_PX, measured_w as f64);
+            let band = KIT.fit_text(band, TICK_PX, band_w as f64);
             draw_text(
                 root,
                 &measured,
@@ -1642,6 +1095,7 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::chart_kit::dashes;
 
     fn style(height_px: u32) -> Style {
         Style {

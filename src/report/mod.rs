@@ -6,6 +6,7 @@
 //! printed as those characters. Every document uses the same virtual paths, so Typst's
 //! global file-id table does not grow with the number of reports.
 
+pub(crate) mod chart_kit;
 pub mod charts;
 pub mod data;
 pub mod diagnosis_charts;
