@@ -26,13 +26,12 @@ pub fn looks_like_key_value(line: &[u8]) -> bool {
         return false;
     };
     let key = line[..eq].trim_ascii();
+    // `NAME[` counts even without its `]`, so the key=value reader can say what is wrong.
     let name_end = key.iter().position(|&b| b == b'[').unwrap_or(key.len());
     let name = &key[..name_end];
-    let bracket_ok = name_end == key.len() || key.ends_with(b"]");
     !name.is_empty()
         && name[0].is_ascii_alphabetic()
         && name.iter().all(|b| b.is_ascii_alphanumeric() || *b == b'_')
-        && bracket_ok
 }
 
 struct Entry {
