@@ -295,3 +295,32 @@ proptest! {
         let _ = measurement::read(bytes.as_slice(), "fuzz");
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    /// The campaign loader returns a campaign or an error for any mutation of a real
+    /// campaign file, and never panics.
+    #[test]
+    fn mutated_campaigns_never_panic(pos in 0usize..20_000, byte in any::<u8>(), cut in any::<bool>()) {
+        let text = include_str!("../example-campaign/campaign.yaml");
+        let mut bytes = text.as_bytes().to_vec();
+        let k = pos % bytes.len();
+        if cut {
+            bytes.truncate(k);
+        } else {
+            bytes[k] = byte;
+        }
+        let text = String::from_utf8_lossy(&bytes);
+        let _ = axcheck::campaign::Campaign::parse(&text, std::path::Path::new("fuzz.yaml"));
+    }
+
+    /// Specs too.
+    #[test]
+    fn mutated_specs_never_panic(pos in 0usize..5_000, byte in any::<u8>()) {
+        let mut bytes = include_bytes!("../specs/general.yaml").to_vec();
+        let k = pos % bytes.len();
+        bytes[k] = byte;
+        let _ = axcheck::judge::Spec::from_yaml(&String::from_utf8_lossy(&bytes), "fuzz.yaml");
+    }
+}
