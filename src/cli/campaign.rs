@@ -23,7 +23,7 @@ pub fn evaluate_with(campaign: &Campaign, jobs: usize, diagnose: bool) -> Campai
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(total as u64);
         bar.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} {pos}/{len} axes {wide_bar} {msg}")
+            indicatif::ProgressStyle::with_template("{spinner} {pos}/{len} tests {wide_bar} {msg}")
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
         bar
@@ -32,7 +32,11 @@ pub fn evaluate_with(campaign: &Campaign, jobs: usize, diagnose: bool) -> Campai
         let k = done.fetch_add(1, Ordering::Relaxed) + 1;
         match &bar {
             Some(bar) => {
-                bar.set_position(k.min(total) as u64);
+                // An axis with several data files is several tests: grow the bar.
+                if k > total {
+                    bar.set_length(k as u64);
+                }
+                bar.set_position(k as u64);
                 bar.set_message(format!("{} {}", t.label(), t.verdict));
             }
             None => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
