@@ -486,6 +486,20 @@ pub fn diagnosis_charts(
     (checks, in_time, along, periodogram)
 }
 
+/// The campaign header both templates show (absent items as empty strings).
+fn campaign_json(result: &CampaignResult) -> Value {
+    let info = &result.info;
+    json!({
+        "name": info.name,
+        "site": info.site.clone().unwrap_or_default(),
+        "purpose": info.purpose.clone().unwrap_or_default(),
+        "date": info.date.clone().unwrap_or_default(),
+        "inspector": info.inspector.clone().unwrap_or_default(),
+        "file": result.file_name,
+        "standard": result.standard.title(),
+    })
+}
+
 /// The data of one axis report.
 pub fn axis_report(result: &CampaignResult, t: &AxisTest) -> Value {
     let info = &result.info;
@@ -543,13 +557,7 @@ pub fn axis_report(result: &CampaignResult, t: &AxisTest) -> Value {
     fact("Inspector", info.inspector.clone());
     let conditions = t.spec.as_ref().map(|s| &s.raw.conditions);
     json!({
-        "campaign": {
-            "name": info.name,
-            "site": info.site.clone().unwrap_or_default(),
-            "purpose": info.purpose.clone().unwrap_or_default(),
-            "date": info.date.clone().unwrap_or_default(),
-            "inspector": info.inspector.clone().unwrap_or_default(),
-        },
+        "campaign": campaign_json(result),
         "title": format!("{} — axis {}", m.id, t.axis),
         "facts": facts,
         "verdict": verdict_json(t),
@@ -613,17 +621,8 @@ pub fn summary(result: &CampaignResult) -> Value {
         })
         .collect();
     let counts = result.counts();
-    let info = &result.info;
     json!({
-        "campaign": {
-            "name": info.name,
-            "site": info.site.clone().unwrap_or_default(),
-            "purpose": info.purpose.clone().unwrap_or_default(),
-            "date": info.date.clone().unwrap_or_default(),
-            "inspector": info.inspector.clone().unwrap_or_default(),
-            "file": result.file_name,
-            "standard": result.standard.title(),
-        },
+        "campaign": campaign_json(result),
         "counts": {
             "total": result.tests.len(),
             "pass": counts[&Verdict::Pass],
