@@ -103,6 +103,9 @@ pub struct Options {
     pub jobs: usize,
     /// Run the model check and diagnosis of every axis test.
     pub diagnose: bool,
+    /// Drop each test's readings once it is evaluated (the CI gate needs only the
+    /// verdicts; reports need the readings). Keeps memory flat on large fleets.
+    pub drop_data: bool,
 }
 
 /// Evaluates every axis of `campaign`; `progress` is called once per finished test.
@@ -123,9 +126,12 @@ pub fn run(
     let evaluate_all = || -> Vec<AxisTest> {
         work.par_iter()
             .flat_map_iter(|(machine, entry)| {
-                let tests = run_axis(campaign, machine, entry, &specs, options.diagnose);
-                for t in &tests {
+                let mut tests = run_axis(campaign, machine, entry, &specs, options.diagnose);
+                for t in &mut tests {
                     progress(t);
+                    if options.drop_data {
+                        t.data = None;
+                    }
                 }
                 tests
             })

@@ -17,7 +17,7 @@ pub fn exit_code(result: &CampaignResult) -> u8 {
 }
 
 /// Evaluates a campaign, reporting progress on stderr.
-pub fn evaluate_with(campaign: &Campaign, jobs: usize, diagnose: bool) -> CampaignResult {
+pub fn evaluate_with(campaign: &Campaign, options: batch::Options) -> CampaignResult {
     let total: usize = campaign.axes().count();
     let done = AtomicUsize::new(0);
     let bar = std::io::stderr().is_terminal().then(|| {
@@ -42,7 +42,7 @@ pub fn evaluate_with(campaign: &Campaign, jobs: usize, diagnose: bool) -> Campai
             None => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
         }
     };
-    let result = batch::run(campaign, batch::Options { jobs, diagnose }, &progress);
+    let result = batch::run(campaign, options, &progress);
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
@@ -181,8 +181,11 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     }
     let result = evaluate_with(
         &campaign,
-        options.jobs,
-        campaign.info.output.diagnose && !options.no_diagnose,
+        batch::Options {
+            jobs: options.jobs,
+            diagnose: campaign.info.output.diagnose && !options.no_diagnose,
+            drop_data: false,
+        },
     );
     let written = export::write_all(&result, &exporters, out)
         .with_context(|| format!("writing the outputs to {}", out.display()))?;
@@ -206,7 +209,12 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
 
 /// `axcheck check`: the CI gate; writes nothing.
 pub fn check(path: &Path, jobs: usize, diagnose: bool) -> Result<u8> {
-    let result = evaluate_with(&Campaign::load(path)?, jobs, diagnose);
+    let options = batch::Options {
+        jobs,
+        diagnose,
+        drop_data: true,
+    };
+    let result = evaluate_with(&Campaign::load(path)?, options);
     println!("{}", counts_line(&result));
     for line in problems(&result) {
         println!("{line}");
