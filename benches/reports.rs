@@ -14,6 +14,7 @@ fn main() {
         batch::Options {
             jobs: 1,
             diagnose: true,
+            drop_data: false,
         },
         &|_| {},
     );

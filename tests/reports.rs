@@ -207,6 +207,7 @@ fn templates_compile_without_warnings_and_identically() {
         batch::Options {
             jobs: 2,
             diagnose: true,
+            drop_data: false,
         },
         &|_| {},
     );
