@@ -78,9 +78,12 @@ impl Campaign {
     /// Parses campaign `text` read from `path`.
     pub fn parse(text: &str, path: &Path) -> Result<Campaign, CampaignError> {
         let file = path.display().to_string();
-        let value: serde_norway::Value = serde_norway::from_str(text)
-            .map_err(|e| CampaignError(yaml::syntax_error(&e, &file, text)))?;
-        let index = LocationIndex::new(text);
+        // Two independent passes over the text: the values and their locations.
+        let (value, index) = rayon::join(
+            || serde_norway::from_str::<serde_norway::Value>(text),
+            || LocationIndex::new(text),
+        );
+        let value = value.map_err(|e| CampaignError(yaml::syntax_error(&e, &file, text)))?;
         let fail = |located: yaml::Located| CampaignError(located.in_file(&file));
         let serde_norway::Value::Mapping(mut top) = value else {
             return Err(CampaignError(format!(
@@ -132,11 +135,22 @@ impl Campaign {
             }));
         };
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        let mut machines = Vec::with_capacity(machine_values.len());
-        for (m, value) in machine_values.into_iter().enumerate() {
-            let base = format!("machines[{m}]");
-            machines.push(load_machine(value, &base, &index, &file, &info, standard));
-        }
+        // Machines are independent: load them in parallel (a fleet has thousands of axes).
+        use rayon::prelude::*;
+        let machines: Vec<Machine> = machine_values
+            .into_par_iter()
+            .enumerate()
+            .map(|(m, value)| {
+                load_machine(
+                    value,
+                    &format!("machines[{m}]"),
+                    &index,
+                    &file,
+                    &info,
+                    standard,
+                )
+            })
+            .collect();
         let campaign = Campaign {
             file: path.to_path_buf(),
             dir,
@@ -205,7 +219,15 @@ fn load_machine(
         .get("id")
         .and_then(|v| v.as_str())
         .map_or_else(|| base.to_string(), str::to_string);
-    let axes_value = value.get("axes").cloned();
+    // Only a broken machine needs its axes' names; take them, not a copy of the axes.
+    let axis_names: Vec<String> = match value.get("axes") {
+        Some(serde_norway::Value::Sequence(items)) => items
+            .iter()
+            .enumerate()
+            .map(|(a, v)| axis_name(v, a))
+            .collect(),
+        _ => Vec::new(),
+    };
     match deserialize_at::<MachineInfo>(value, base, index) {
         Ok(mut info) => {
             let axes = match std::mem::take(&mut info.axes) {
@@ -238,18 +260,10 @@ fn load_machine(
         Err(e) => {
             // The machine is broken: each of its axes reports why (or one entry if none).
             let message = e.in_file(file);
-            let names: Vec<String> = match axes_value {
-                Some(serde_norway::Value::Sequence(items)) => items
-                    .iter()
-                    .enumerate()
-                    .map(|(a, v)| axis_name(v, a))
-                    .collect(),
-                _ => Vec::new(),
-            };
-            let names = if names.is_empty() {
+            let names = if axis_names.is_empty() {
                 vec!["(all axes)".to_string()]
             } else {
-                names
+                axis_names
             };
             Machine {
                 info: MachineInfo {
