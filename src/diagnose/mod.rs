@@ -1129,12 +1129,7 @@ fn smooth_trend(positions: &[f64], y: &[f64]) -> Vec<f64> {
     if m == 0 {
         return Vec::new();
     }
-    let (a, b) = (positions[0], positions[m - 1]);
-    let half = ((b - a) / 2.0).max(f64::MIN_POSITIVE);
-    let z: Vec<f64> = positions
-        .iter()
-        .map(|p| (p - (a + b) / 2.0) / half)
-        .collect();
+    let z = stats::to_unit_interval(positions);
     let degree = 3.min(m.saturating_sub(2));
     let cols: Vec<Vec<f64>> = (0..=degree)
         .map(|k| z.iter().map(|zi| zi.powi(k as i32)).collect())

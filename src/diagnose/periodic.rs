@@ -18,7 +18,7 @@
 //! of two resolves nothing, and the diagnosis says which plan would (seed 003: a short
 //! travel of about 25 mm with about 0.5 mm steps).
 
-use super::stats::{chi2_upper, f_upper, max_of};
+use super::stats::{chi2_upper, f_upper, max_of, to_unit_interval};
 use std::f64::consts::TAU;
 
 /// Degree of the smooth (progressive) trend.
@@ -125,12 +125,7 @@ impl Scanner {
         let sw: Vec<f64> = (0..m)
             .map(|i| var.map_or(1.0, |v| 1.0 / v[i].sqrt()))
             .collect();
-        let (a, b) = (positions[0], positions[m - 1]);
-        let half = ((b - a) / 2.0).max(f64::MIN_POSITIVE);
-        let z: Vec<f64> = positions
-            .iter()
-            .map(|p| (p - (a + b) / 2.0) / half)
-            .collect();
+        let z = to_unit_interval(positions);
         let degree = TREND_DEGREE.min(m.saturating_sub(1));
         let mut basis: Vec<Vec<f64>> = Vec::new();
         for k in 0..=degree {
