@@ -1,23 +1,8 @@
 //! Campaigns end to end: `axcheck run` and `axcheck check`.
 mod common;
 
-use common::axcheck;
+use common::{axcheck, copy_data, scratch};
 use std::path::{Path, PathBuf};
-
-/// A fresh folder for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("axcheck-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(dir.join("data")).unwrap();
-    dir
-}
-
-fn copy_data(dir: &Path, name: &str) {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data")
-        .join(name);
-    std::fs::copy(src, dir.join("data").join(name)).unwrap();
-}
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()

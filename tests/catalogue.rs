@@ -2,8 +2,7 @@
 //! line/column where there is one), and the rest of the campaign is still evaluated.
 mod common;
 
-use common::axcheck;
-use std::path::Path;
+use common::{axcheck, data_path, scratch};
 
 const HEADER: &str = "target_mm,direction,run,deviation_um\n";
 
@@ -182,14 +181,9 @@ fn broken_files() -> Vec<(&'static str, Vec<u8>, &'static str)> {
 
 #[test]
 fn every_broken_input_fails_alone_with_a_clear_error() {
-    let dir = std::env::temp_dir().join(format!("axcheck-catalogue-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = scratch("catalogue");
     std::fs::create_dir_all(dir.join("data/empty-dir")).unwrap();
-    std::fs::copy(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/iso230-2_table2.csv"),
-        dir.join("data/good.csv"),
-    )
-    .unwrap();
+    std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
     // A folder whose symbolic link points back at itself: globbing must not loop.
     #[cfg(unix)]
     {
@@ -369,9 +363,7 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
 
 #[test]
 fn a_campaign_that_cannot_be_read_exits_2_with_its_location() {
-    let dir = std::env::temp_dir().join(format!("axcheck-catalogue-yaml-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch("catalogue-yaml");
     let mut laughs = String::from(
         "campaign: {name: x}\na: &a [\"lol\",\"lol\",\"lol\",\"lol\",\"lol\",\"lol\",\"lol\",\"lol\",\"lol\"]\n",
     );

@@ -4,7 +4,7 @@ mod common;
 use axcheck::batch;
 use axcheck::campaign::Campaign;
 use axcheck::report::Reports;
-use common::axcheck;
+use common::{axcheck, data_path, scratch};
 use std::path::{Path, PathBuf};
 
 /// Page count and text of a PDF.
@@ -153,14 +153,8 @@ fn every_pdf_of_the_example_campaign() {
 
 #[test]
 fn user_text_is_data_not_markup() {
-    let dir = std::env::temp_dir().join(format!("axcheck-inject-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(dir.join("data")).unwrap();
-    std::fs::copy(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/iso230-2_table2.csv"),
-        dir.join("data/x.csv"),
-    )
-    .unwrap();
+    let dir = scratch("inject");
+    std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/x.csv")).unwrap();
     let evil = r#"#read("/etc/passwd") *bold* $x$ ]] #panic("no")"#;
     let campaign = dir.join("c.yaml");
     std::fs::write(

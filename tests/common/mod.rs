@@ -34,3 +34,16 @@ pub fn axcheck(args: &[&str]) -> (i32, String, String) {
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
 }
+
+/// A fresh folder for one test, with an empty `data/` inside.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("axcheck-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("data")).unwrap();
+    dir
+}
+
+/// Copies `tests/data/NAME` into `DIR/data/NAME`.
+pub fn copy_data(dir: &std::path::Path, name: &str) {
+    std::fs::copy(data_path(name), dir.join("data").join(name)).unwrap();
+}
