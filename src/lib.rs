@@ -15,6 +15,7 @@ pub mod export;
 pub mod judge;
 pub mod measurement;
 pub mod nde;
+#[cfg(feature = "pdf")]
 pub mod report;
 pub mod rules;
 pub mod simulate;

@@ -5,7 +5,9 @@ pub mod csv;
 pub mod json;
 pub mod junit;
 pub mod markdown;
+#[cfg(feature = "parquet")]
 pub mod parquet;
+#[cfg(feature = "pdf")]
 pub mod pdf;
 pub mod table;
 
@@ -47,6 +49,7 @@ pub fn table_exporters() -> Vec<Box<dyn Exporter>> {
     vec![
         Box::new(json::Json),
         Box::new(csv::Csv),
+        #[cfg(feature = "parquet")]
         Box::new(parquet::Parquet),
         Box::new(markdown::Markdown),
         Box::new(junit::Junit),
