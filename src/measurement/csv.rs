@@ -11,7 +11,9 @@
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
 
 use super::error::{Location, ReadError, ReadErrorKind, did_you_mean};
-use super::{AxisData, Lines, MAX_READINGS, NumberError, RawReading, parse_number};
+use super::{
+    AxisData, Lines, MAX_READINGS, MAX_TEMPERATURES, NumberError, RawReading, parse_number,
+};
 use crate::units::{AxisKind, Direction, fmt_fixed};
 use std::io::BufRead;
 
@@ -62,6 +64,11 @@ fn classify(name: &str, temps: &mut Vec<String>) -> Result<Column, ReadErrorKind
         _ => {
             if let Some(inner) = name.strip_prefix("temp_") {
                 if let Some(sensor) = inner.strip_suffix("_c").filter(|s| !s.is_empty()) {
+                    if temps.len() >= MAX_TEMPERATURES {
+                        return Err(ReadErrorKind::TooManyTemperatures {
+                            limit: MAX_TEMPERATURES,
+                        });
+                    }
                     temps.push(sensor.to_string());
                     return Ok(Column::Temperature(temps.len() - 1));
                 }

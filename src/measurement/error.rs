@@ -97,6 +97,10 @@ pub enum ReadErrorKind {
     },
     #[error("column `{name}` has no unit; write {expected}")]
     MissingUnit { name: String, expected: String },
+    #[error(
+        "more than {limit} temperature columns (temp_<name>_c); keep the sensors of this test, at most {limit}"
+    )]
+    TooManyTemperatures { limit: usize },
     #[error("column `{name}` appears twice; keep one")]
     DuplicateColumn { name: String },
     #[error("missing column {expected}")]

@@ -264,60 +264,50 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
     }
 
     // Measurement order of the toolchain: cycle j forward over the positions, then backward.
-    let max_cycle = fwd
-        .keys()
-        .chain(bwd.keys())
-        .map(|&(_, j)| j)
-        .max()
-        .unwrap_or(0);
-    let mut raw = Vec::with_capacity(fwd.len() + bwd.len());
-    for j in 1..=max_cycle {
-        for (direction, map, ids) in [
-            (
-                Direction::Up,
-                &fwd,
-                targets.keys().copied().collect::<Vec<_>>(),
-            ),
-            (
-                Direction::Down,
-                &bwd,
-                targets.keys().rev().copied().collect(),
-            ),
-        ] {
-            for i in ids {
-                if let Some(entry) = map.get(&(i, j)) {
-                    let target = targets[&i].value + 0.0;
-                    let deviation = (entry.value - target) * factor;
-                    if deviation.abs() > super::MAX_DEVIATION {
-                        return Err(ReadError::new(
-                            Location::at(file, entry.line, 1),
-                            ReadErrorKind::Implausible {
-                                column: format!(
-                                    "REF_DATA_{}[{i},{j}]",
-                                    if direction == Direction::Up {
-                                        "FWD"
-                                    } else {
-                                        "BWD"
-                                    }
-                                ),
-                                value: entry.value.to_string(),
-                                limit: format!("{}", super::MAX_DEVIATION),
-                                unit: kind.deviation_unit().to_string(),
-                            },
-                        ));
-                    }
-                    raw.push(RawReading {
-                        target,
-                        direction,
-                        run: u32::try_from(j).unwrap_or(u32::MAX),
-                        deviation,
-                        time_s: None,
-                        temps_c: Vec::new(),
-                        line: entry.line,
-                    });
-                }
-            }
+    // Sorted from the entries themselves, so the work grows with the readings, never with
+    // the largest index written (REF_DATA_FWD[1,4000000000] is one reading, not 4e9 cycles).
+    // Sort key: (cycle, forward first, position ascending forward and descending backward).
+    type Ordered<'a> = ((usize, u8, usize), usize, Direction, &'a Entry);
+    let mut order: Vec<Ordered> = fwd
+        .iter()
+        .map(|(&(i, j), e)| ((j, 0, i), i, Direction::Up, e))
+        .chain(
+            bwd.iter()
+                .map(|(&(i, j), e)| ((j, 1, usize::MAX - i), i, Direction::Down, e)),
+        )
+        .collect();
+    order.sort_unstable_by_key(|&(key, ..)| key);
+    let mut raw = Vec::with_capacity(order.len());
+    for ((j, ..), i, direction, entry) in order {
+        let target = targets[&i].value + 0.0;
+        let deviation = (entry.value - target) * factor;
+        if deviation.abs() > super::MAX_DEVIATION {
+            return Err(ReadError::new(
+                Location::at(file, entry.line, 1),
+                ReadErrorKind::Implausible {
+                    column: format!(
+                        "REF_DATA_{}[{i},{j}]",
+                        if direction == Direction::Up {
+                            "FWD"
+                        } else {
+                            "BWD"
+                        }
+                    ),
+                    value: entry.value.to_string(),
+                    limit: format!("{}", super::MAX_DEVIATION),
+                    unit: kind.deviation_unit().to_string(),
+                },
+            ));
         }
+        raw.push(RawReading {
+            target,
+            direction,
+            run: u32::try_from(j).unwrap_or(u32::MAX),
+            deviation,
+            time_s: None,
+            temps_c: Vec::new(),
+            line: entry.line,
+        });
     }
     AxisData::from_raw(kind, raw, Vec::new(), file)
 }
@@ -375,5 +365,19 @@ mod tests {
         assert!(e.to_string().contains("k.dat:2:1: unknown key"), "{e}");
         let e = parse("UNIT=inch\nTGT_DATA[1]=1\n".as_bytes(), "k.dat").unwrap_err();
         assert!(e.to_string().contains("unknown unit"), "{e}");
+    }
+
+    /// A cycle index of 3·10^9 is one reading: the reader must not walk every cycle up to
+    /// it (that took minutes), only the entries it has.
+    #[test]
+    fn huge_cycle_index_is_one_reading() {
+        let text = "TGT_DATA[1]=0\nTGT_DATA[2]=1\nREF_DATA_FWD[1,1]=0\nREF_DATA_BWD[1,1]=0\n\
+            REF_DATA_FWD[2,1]=1\nREF_DATA_BWD[2,1]=1\nREF_DATA_FWD[1,3000000000]=0\n";
+        let e = parse(text.as_bytes(), "k.dat").unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("has runs 1, but the test has runs 1,3000000000"),
+            "{e}"
+        );
     }
 }

@@ -24,6 +24,9 @@ pub const MAX_READINGS: usize = 100_000;
 /// Largest plausible |deviation| in µm or arcsec (100 mm, or 27.8°): anything larger is a
 /// unit mistake or a corrupt value, not a positioning error.
 pub const MAX_DEVIATION: f64 = 1e5;
+/// Most `temp_<name>_c` columns a CSV file may have: with [`MAX_READINGS`] this bounds
+/// the temperatures kept (64 × 100 000 × 8 bytes = 51 MB) whatever the file holds.
+pub const MAX_TEMPERATURES: usize = 64;
 /// Longest line a reader accepts.
 pub const MAX_LINE_BYTES: usize = 64 * 1024;
 
@@ -108,12 +111,14 @@ impl AxisData {
         };
         let run_index = |r: u32| run_labels.binary_search(&r).expect("run collected above");
 
-        // First line of each (target, direction, run), to report duplicates.
+        // First line of each (target, direction, run), to report duplicates, and the count
+        // of readings per target and direction. The dense grid is built only once every
+        // target has n runs in both directions (2·m·n = readings): m distinct targets times
+        // n distinct runs could otherwise ask for m·n ≈ 10^10 cells from a 2 MB file.
         let mut seen: HashMap<(usize, usize, usize), usize> = HashMap::with_capacity(raw.len());
-        let mut grid = [vec![f64::NAN; m * n], vec![f64::NAN; m * n]];
-        let mut readings = Vec::with_capacity(raw.len());
-        let mut temperatures_c = Vec::with_capacity(raw.len());
-        for r in raw {
+        let mut counts = vec![[0usize; 2]; m];
+        let mut indices = Vec::with_capacity(raw.len());
+        for r in &raw {
             let i = target_index(r.target);
             let j = run_index(r.run);
             let d = r.direction.index();
@@ -128,33 +133,24 @@ impl AxisData {
                     },
                 ));
             }
-            grid[d][i * n + j] = r.deviation;
-            readings.push(Reading {
-                target: i,
-                direction: r.direction,
-                run: j,
-                deviation: r.deviation,
-                time_s: r.time_s,
-                line: r.line,
-            });
-            temperatures_c.push(r.temps_c);
+            counts[i][d] += 1;
+            indices.push((i, j));
         }
+        drop(seen);
 
         for (i, &target) in targets.iter().enumerate() {
-            let filled = |d: Direction| {
-                (0..n)
-                    .filter(|&j| !grid[d.index()][i * n + j].is_nan())
-                    .collect::<Vec<_>>()
-            };
-            let up = filled(Direction::Up);
-            let down = filled(Direction::Down);
-            let first_line = readings
+            let [up, down] = counts[i];
+            if up == n && down == n {
+                continue;
+            }
+            let first_line = raw
                 .iter()
-                .find(|r| r.target == i)
-                .map_or(0, |r| r.line);
+                .zip(&indices)
+                .find(|(_, (t, _))| *t == i)
+                .map_or(0, |(r, _)| r.line);
             let location = Location::line(file, first_line);
-            if up.is_empty() || down.is_empty() {
-                let present = if up.is_empty() { "down" } else { "up" };
+            if up == 0 || down == 0 {
+                let present = if up == 0 { "down" } else { "up" };
                 return Err(ReadError::new(
                     location,
                     ReadErrorKind::OneDirection {
@@ -163,9 +159,15 @@ impl AxisData {
                     },
                 ));
             }
-            for (d, have) in [(Direction::Up, up), (Direction::Down, down)] {
-                if have.len() != n {
-                    let labels: Vec<u32> = have.iter().map(|&j| run_labels[j]).collect();
+            for d in Direction::BOTH {
+                if counts[i][d.index()] != n {
+                    let mut labels: Vec<u32> = raw
+                        .iter()
+                        .zip(&indices)
+                        .filter(|(r, (t, _))| *t == i && r.direction == d)
+                        .map(|(r, _)| r.run)
+                        .collect();
+                    labels.sort_unstable();
                     return Err(ReadError::new(
                         location,
                         ReadErrorKind::RaggedRuns {
@@ -177,6 +179,23 @@ impl AxisData {
                     ));
                 }
             }
+        }
+
+        // Every (target, direction) has its n distinct runs: the grid has one cell per reading.
+        let mut grid = [vec![f64::NAN; m * n], vec![f64::NAN; m * n]];
+        let mut readings = Vec::with_capacity(raw.len());
+        let mut temperatures_c = Vec::with_capacity(raw.len());
+        for (r, (i, j)) in raw.into_iter().zip(indices) {
+            grid[r.direction.index()][i * n + j] = r.deviation;
+            readings.push(Reading {
+                target: i,
+                direction: r.direction,
+                run: j,
+                deviation: r.deviation,
+                time_s: r.time_s,
+                line: r.line,
+            });
+            temperatures_c.push(r.temps_c);
         }
 
         Ok(AxisData {
@@ -235,12 +254,38 @@ impl AxisData {
     }
 }
 
+/// Run labels for messages: `1,2,4`; long lists as ranges (`1-65`), and at most 12 items
+/// with the count, so a file of 100 000 runs does not make a 600 kB message.
 fn list(values: &[u32]) -> String {
-    values
-        .iter()
-        .map(u32::to_string)
-        .collect::<Vec<_>>()
-        .join(",")
+    const MAX_ITEMS: usize = 12;
+    if values.len() <= MAX_ITEMS {
+        return values
+            .iter()
+            .map(u32::to_string)
+            .collect::<Vec<_>>()
+            .join(",");
+    }
+    let mut items: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < values.len() {
+        let start = values[k];
+        let mut end = start;
+        while k + 1 < values.len() && values[k + 1] == end.saturating_add(1) {
+            k += 1;
+            end = values[k];
+        }
+        items.push(match end - start {
+            0 => start.to_string(),
+            1 => format!("{start},{end}"),
+            _ => format!("{start}-{end}"),
+        });
+        k += 1;
+    }
+    if items.len() > MAX_ITEMS {
+        items.truncate(MAX_ITEMS);
+        items.push(format!("… ({} runs)", values.len()));
+    }
+    items.join(",")
 }
 
 /// A target position with its unit, for messages: `353.834 mm`, `90 deg`.
@@ -411,5 +456,40 @@ mod tests {
         assert_eq!(parse_number("inf", false), Err(NumberError::NonFinite));
         assert_eq!(parse_number("1,5", false), Err(NumberError::NotANumber));
         assert_eq!(parse_number("", false), Err(NumberError::NotANumber));
+    }
+
+    #[test]
+    fn long_run_lists_are_abbreviated() {
+        assert_eq!(list(&[1, 2, 4]), "1,2,4");
+        let all: Vec<u32> = (1..=100_000).collect();
+        assert_eq!(list(&all), "1-100000");
+        let odd: Vec<u32> = (0..1000).map(|k| 2 * k + 1).collect();
+        assert_eq!(list(&odd), "1,3,5,7,9,11,13,15,17,19,21,23,… (1000 runs)");
+        let mixed: Vec<u32> = (1..=20).chain([30, 31, 40]).collect();
+        assert_eq!(list(&mixed), "1-20,30,31,40");
+    }
+
+    /// Every reading at its own target and its own run: m = n = 50 000, so a dense grid
+    /// built before validation would ask for 2 · 2.5·10^9 cells and abort the process.
+    #[test]
+    fn distinct_targets_and_runs_are_refused_without_a_huge_grid() {
+        let raw: Vec<RawReading> = (0..50_000u32)
+            .flat_map(|k| {
+                [Direction::Up, Direction::Down].map(|direction| RawReading {
+                    target: f64::from(k),
+                    direction,
+                    run: k + 1,
+                    deviation: 0.5,
+                    time_s: None,
+                    temps_c: Vec::new(),
+                    line: 2 * k as usize + 2,
+                })
+            })
+            .collect();
+        let e = AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "d.csv").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "d.csv:2: ragged runs: target 0 mm direction up has runs 1, but the test has runs 1-50000; every target needs the same runs in both directions"
+        );
     }
 }
