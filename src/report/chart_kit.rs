@@ -9,6 +9,7 @@ use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::cell::RefCell;
 
 /// Style shared by all charts. `font_family` is the family name of the sans-serif face the
 /// PDF renderer embeds ("Inter"); charts must only ever name this family in SVG text.
@@ -104,10 +105,20 @@ pub(crate) fn dims(style: &Style) -> (u32, u32) {
     )
 }
 
+thread_local! {
+    /// The dashed lines of the chart being drawn on this thread, as finished SVG elements.
+    static DASHED_LINES: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Font family of the placeholder text that stands for a dashed line until [`render`]
+/// replaces it (charts name no other family than the style's, so it cannot clash).
+const DASHED_LINE_PLACEHOLDER: &str = "axcheck-dashed-line";
+
 /// Draws with `paint` on a white SVG of the style's size; a failure gives a message chart.
 pub(crate) fn render(style: &Style, paint: impl FnOnce(&Area) -> Result<(), Failed>) -> String {
     let size = dims(style);
     let mut buf = String::new();
+    DASHED_LINES.with_borrow_mut(Vec::clear);
     let ok = {
         let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
         let drawn = root
@@ -117,8 +128,10 @@ pub(crate) fn render(style: &Style, paint: impl FnOnce(&Area) -> Result<(), Fail
         let presented = root.present().map_err(Failed::from);
         drawn.is_ok() && presented.is_ok()
     };
+    let dashed = DASHED_LINES.with_borrow_mut(std::mem::take);
     if ok {
-        buf
+        insert_dashed_lines(&buf, &dashed)
+            .unwrap_or_else(|| message_chart(style, "This chart could not be drawn."))
     } else {
         message_chart(style, "This chart could not be drawn.")
     }
@@ -304,47 +317,44 @@ pub(crate) fn round_px(p: Px) -> (i32, i32) {
     (p.0.round() as i32, p.1.round() as i32)
 }
 
-/// Splits a polyline into the dashes of `pattern` (on, off, on, off … in pixels).
-pub(crate) fn dashes(points: &[Px], pattern: &[f64]) -> Vec<Vec<(i32, i32)>> {
-    let mut out = Vec::new();
-    let Some(first) = points.first() else {
-        return out;
-    };
-    if pattern.is_empty() || pattern.iter().any(|d| d.is_nan() || *d <= 0.0) {
-        out.push(points.iter().map(|p| round_px(*p)).collect());
-        return out;
+/// Whether `pattern` draws gaps (an empty or invalid pattern draws a solid line).
+fn is_dashed(pattern: &[f64]) -> bool {
+    !pattern.is_empty() && pattern.iter().all(|d| d.is_finite() && *d > 0.0)
+}
+
+/// One SVG polyline with a dash pattern, in the attribute layout plotters writes.
+fn dashed_polyline(points: &[(i32, i32)], stroke: Stroke) -> String {
+    let RGBColor(r, g, b) = stroke.color;
+    let pattern: Vec<String> = stroke.dash.iter().map(f64::to_string).collect();
+    let mut out = format!(
+        "<polyline fill=\"none\" opacity=\"1\" stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"{}\" stroke-dasharray=\"{}\" points=\"",
+        stroke.width,
+        pattern.join(" ")
+    );
+    for (x, y) in points {
+        out.push_str(&format!("{x},{y} "));
     }
-    let mut idx = 0;
-    let mut left = pattern[0];
-    let mut on = true;
-    let mut current: Vec<Px> = vec![*first];
-    for w in points.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let len = (b.0 - a.0).hypot(b.1 - a.1);
-        if !len.is_finite() {
-            continue;
-        }
-        let mut done = 0.0;
-        while len - done > left {
-            done += left;
-            let t = done / len;
-            let p = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
-            current.push(p);
-            if on {
-                out.push(current.iter().map(|p| round_px(*p)).collect());
-            }
-            current = vec![p];
-            on = !on;
-            idx = (idx + 1) % pattern.len();
-            left = pattern[idx];
-        }
-        left -= len - done;
-        current.push(b);
-    }
-    if on && current.len() >= 2 {
-        out.push(current.iter().map(|p| round_px(*p)).collect());
-    }
+    out.push_str("\"/>");
     out
+}
+
+/// Replaces each dashed-line placeholder in `svg` by its polyline, keeping the drawing
+/// order; `None` if a placeholder is malformed or unknown (never expected).
+fn insert_dashed_lines(svg: &str, lines: &[String]) -> Option<String> {
+    let marker = format!("font-family=\"{DASHED_LINE_PLACEHOLDER}\"");
+    let mut out = String::with_capacity(svg.len());
+    let mut rest = svg;
+    while let Some(at) = rest.find(&marker) {
+        let start = rest[..at].rfind("<text")?;
+        let close = at + rest[at..].find("</text>")?;
+        let open_end = at + rest[at..close].find('>')? + 1;
+        let index: usize = rest[open_end..close].trim().parse().ok()?;
+        out.push_str(&rest[..start]);
+        out.push_str(lines.get(index)?);
+        rest = &rest[close + "</text>".len()..];
+    }
+    out.push_str(rest);
+    Some(out)
 }
 
 /// Drops points that round to the pixel of the point before (keeps polylines short).
@@ -368,17 +378,35 @@ impl Conventions {
         if points.len() < 2 {
             return Ok(());
         }
-        let shape = ShapeStyle::from(&stroke.color).stroke_width(stroke.width);
-        for dash in dashes(points, stroke.dash) {
-            let dash = if self.dedup_pixels {
-                dedup_pixels(dash)
-            } else {
-                dash
-            };
-            if dash.len() >= 2 {
-                root.draw(&PathElement::new(dash, shape))?;
-            }
+        let points: Vec<(i32, i32)> = points.iter().map(|p| round_px(*p)).collect();
+        let points = if self.dedup_pixels {
+            dedup_pixels(points)
+        } else {
+            points
+        };
+        if points.len() < 2 {
+            return Ok(());
         }
+        if !is_dashed(stroke.dash) {
+            let shape = ShapeStyle::from(&stroke.color).stroke_width(stroke.width);
+            root.draw(&PathElement::new(points, shape))?;
+            return Ok(());
+        }
+        // Plotters draws only solid paths; one polyline per dash made hundreds of elements
+        // per chart for the PDF to convert. Leave a placeholder that `render` replaces by
+        // one polyline with `stroke-dasharray`, in place so the drawing order is kept.
+        let (dx, dy) = root.get_base_pixel();
+        let absolute: Vec<(i32, i32)> = points.iter().map(|(x, y)| (x + dx, y + dy)).collect();
+        let index = DASHED_LINES.with_borrow_mut(|lines| {
+            lines.push(dashed_polyline(&absolute, stroke));
+            lines.len() - 1
+        });
+        let placeholder = FontDesc::new(
+            FontFamily::Name(DASHED_LINE_PLACEHOLDER),
+            1.0,
+            FontStyle::Normal,
+        );
+        root.draw(&Text::new(index.to_string(), (0, 0), placeholder))?;
         Ok(())
     }
 }
@@ -672,4 +700,60 @@ pub(crate) fn draw_frame_edges(area: &Area, chart: &Chart) -> Result<(), Failed>
         FRAME.stroke_width(1),
     ))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn style() -> Style {
+        Style {
+            font_family: "Inter".into(),
+            width_px: 300,
+            height_px: 200,
+        }
+    }
+
+    const KIT: Conventions = Conventions {
+        narrow_superscripts: false,
+        dedup_pixels: true,
+    };
+
+    #[test]
+    fn a_dashed_line_is_one_polyline_with_its_pattern_in_drawing_order() {
+        let dashed = Stroke {
+            color: DOWN,
+            width: 2,
+            dash: &[9.0, 3.5, 2.0, 3.5],
+        };
+        let solid = Stroke {
+            color: UP,
+            width: 1,
+            dash: SOLID,
+        };
+        let svg = render(&style(), |root| {
+            // A sub-area: the dashed line is written in the SVG's own coordinates.
+            let (_, right) = root.split_horizontally(100);
+            KIT.draw_line(&right, &[(0.0, 10.0), (50.0, 10.4), (120.0, 60.0)], dashed)?;
+            draw_marker(root, (5, 5), Marker::Dot(3), UP)?;
+            KIT.draw_line(root, &[(0.0, 0.0), (30.0, 0.0)], solid)
+        });
+        assert!(!svg.contains(DASHED_LINE_PLACEHOLDER), "{svg}");
+        let dashed_line = "<polyline fill=\"none\" opacity=\"1\" stroke=\"#8E1B1B\" stroke-width=\"2\" stroke-dasharray=\"9 3.5 2 3.5\" points=\"100,10 150,10 220,60 \"/>";
+        let at = svg.find(dashed_line).expect(&svg);
+        assert!(
+            at < svg.find("<circle").expect("marker"),
+            "drawing order kept"
+        );
+        assert_eq!(svg.matches("stroke-dasharray").count(), 1);
+        assert!(svg.contains("points=\"0,0 30,0 \""));
+    }
+
+    #[test]
+    fn an_unknown_placeholder_is_refused() {
+        let svg = "<svg><text x=\"0\" font-family=\"axcheck-dashed-line\">3</text></svg>";
+        assert_eq!(insert_dashed_lines(svg, &["<polyline/>".into()]), None);
+        let one = insert_dashed_lines(svg.replace('3', "0").as_str(), &["<polyline/>".into()]);
+        assert_eq!(one.as_deref(), Some("<svg><polyline/></svg>"));
+    }
 }

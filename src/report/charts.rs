@@ -799,7 +799,6 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::chart_kit::dashes;
 
     fn style() -> Style {
         Style {
@@ -1215,18 +1214,6 @@ mod tests {
         assert_eq!(ticks((-6.0, 5.0), 8).1, 0);
         assert_eq!(ticks((-0.6, 0.5), 8).1, 1);
         assert_eq!(ticks((0.0, 3.12), 12).1, 1);
-    }
-
-    #[test]
-    fn dashes_follow_the_pattern() {
-        let solid = dashes(&[(0.0, 0.0), (100.0, 0.0)], SOLID);
-        assert_eq!(solid, vec![vec![(0, 0), (100, 0)]]);
-        let dashed = dashes(&[(0.0, 0.0), (50.0, 0.0), (100.0, 0.0)], &[10.0, 5.0]);
-        assert_eq!(dashed.len(), 7);
-        assert_eq!(dashed[0], vec![(0, 0), (10, 0)]);
-        // A dash running over a corner keeps the corner.
-        assert!(dashed.iter().any(|d| d.contains(&(50, 0)) && d.len() == 3));
-        assert!(dashes(&[], DASHED).is_empty());
     }
 
     #[test]

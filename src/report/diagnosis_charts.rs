@@ -1095,7 +1095,6 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::chart_kit::dashes;
 
     fn style(height_px: u32) -> Style {
         Style {
@@ -1450,8 +1449,14 @@ mod tests {
         // The detected period's label is bold.
         let mark = text_tag(&svg, "10.0 mm").expect("marked label");
         assert!(mark.contains("font-weight=\"bold\""));
-        // The threshold is dashed: many short dark red pieces (plus the legend sample's).
-        assert!(polylines_in(&svg, "#8E1B1B") > 20);
+        // The threshold is dashed: one dark red polyline with a dash pattern, and the legend
+        // sample's.
+        let threshold = svg
+            .split("<polyline")
+            .filter(|p| p.contains("stroke=\"#8E1B1B\""))
+            .filter(|p| p.contains("stroke-dasharray=\"10 5\""))
+            .count();
+        assert_eq!(threshold, 2);
         // The unresolvable region is shaded.
         assert!(svg.contains("fill=\"#E4E4E4\" stroke=\"none\""));
     }
@@ -1965,14 +1970,5 @@ mod tests {
         assert_eq!(d(0.0, 1.0, 0.5), 1);
         assert_eq!(d(1000.0, 1000.5, 1000.2), 1);
         assert_eq!(d(1000.0, 1000.5, 1000.25), 2);
-    }
-
-    #[test]
-    fn dashes_follow_the_pattern() {
-        let dashed = dashes(&[(0.0, 0.0), (50.0, 0.0), (100.0, 0.0)], &[10.0, 5.0]);
-        assert_eq!(dashed.len(), 7);
-        assert_eq!(dashed[0], vec![(0, 0), (10, 0)]);
-        assert!(dashes(&[], DASHED).is_empty());
-        assert_eq!(dashes(&[(0.0, 0.0), (9.0, 0.0)], SOLID).len(), 1);
     }
 }
