@@ -1,0 +1,240 @@
+//! What each fuzz target does with its input, in one place: the cargo-fuzz targets in
+//! `fuzz_targets/` call these functions, and `tests/fuzz_corpus.rs` (which includes this
+//! file with `#[path]`) replays the committed corpus through them under `cargo test`.
+//!
+//! Every function takes arbitrary bytes and must return without panicking, overflowing,
+//! hanging or allocating without bound: an error from axcheck is a fine outcome, a panic is
+//! a bug. The parsed values are then pushed through everything downstream that reads them
+//! (evaluation by every standard, the test-plan rules, judging, the JSON and CSV writers),
+//! because values that parse are exactly the ones that reach those functions.
+//!
+//! Uses only the library without its default features (no Typst, no polars).
+
+use axcheck::campaign::{Campaign, SensorKind, Travel};
+use axcheck::evaluate::gost27843::{Gost27843, SMethod};
+use axcheck::evaluate::{self, Standard, StandardId};
+use axcheck::judge::{self, Limits, Spec};
+use axcheck::measurement::{self, AxisData};
+use axcheck::nde;
+use axcheck::rules::{self, PlanContext};
+use axcheck::units::AxisKind;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+/// The long CSV reader.
+pub fn csv(data: &[u8]) {
+    if let Ok(axis) = measurement::csv::parse(data, "fuzz.csv") {
+        check_data(&axis);
+    }
+}
+
+/// The ecmc key=value reader.
+pub fn keyvalue(data: &[u8]) {
+    if let Ok(axis) = measurement::keyvalue::parse(data, "fuzz.dat") {
+        check_data(&axis);
+    }
+}
+
+/// The layout-detecting reader, then everything that consumes a test: each standard's
+/// evaluation and JSON, the rules, judging against the built-in specs, the NDE correction
+/// and the CSV writer (whose output is read again).
+pub fn evaluate(data: &[u8]) {
+    let Ok(axis) = measurement::read(data, "fuzz") else {
+        return;
+    };
+    check_data(&axis);
+    for standard in StandardId::ALL {
+        let e = evaluate::evaluate(&axis, standard);
+        let _ = e.to_json();
+        let _ = e.parameters_json();
+        let (first, last) = axis.measurement_travel();
+        for (_, spec) in builtin_specs() {
+            let limits = Limits::new(Some(spec), &BTreeMap::new(), axis.kind, last - first);
+            if let Ok(limits) = limits {
+                let j = judge::judge(&e, &limits);
+                let _ = j.worst();
+            }
+        }
+        let ctx = PlanContext {
+            kind: axis.kind,
+            standard,
+            axis_travel: Some(Travel::Range([first - 1.0, last + 1.0])),
+            measurement_travel: Some([first, last]),
+            pitch: Some(5.0),
+        };
+        let _ = rules::check(&ctx, &axis);
+    }
+    let _ = Gost27843 {
+        s_method: SMethod::Ranges,
+    }
+    .evaluate(&axis);
+    let _ = nde::correct(&axis, 11.5, nde::Temperature::PerReading);
+    let _ = nde::correct(&axis, 11.5, nde::Temperature::Constant(23.0));
+    let text = measurement::csv::write(&axis, &["written by the fuzz target".into()]);
+    // Rounding in the writer may merge targets, so the copy need not be valid; it must not
+    // panic either way.
+    let _ = measurement::read(text.as_bytes(), "fuzz-copy.csv");
+}
+
+/// Cheap checks of any test a reader accepted: the invariants the evaluation relies on.
+fn check_data(axis: &AxisData) {
+    let m = axis.target_count();
+    let n = axis.runs();
+    assert!(m >= 1 && n >= 1, "an accepted test has targets and runs");
+    assert_eq!(
+        axis.readings.len(),
+        2 * m * n,
+        "dense: both directions, every run"
+    );
+    assert!(
+        axis.targets.windows(2).all(|w| w[0] < w[1]),
+        "targets ascend"
+    );
+    for r in &axis.readings {
+        assert!(r.deviation.is_finite());
+        assert_eq!(axis.deviation(r.target, r.direction, r.run), r.deviation);
+    }
+}
+
+/// The campaign loader: `Campaign::parse` of the text as `campaign.yaml` in a fixed
+/// scratch folder, then for each axis that loaded: its data paths resolved in that folder
+/// (a glob walks it), and its plan, tolerances, NDE settings and standard applied to a
+/// fixed test of the axis's kind (the numbers of the YAML reach the rules and the judge).
+///
+/// Paths are always resolved with `allow_outside_paths` off, whatever the campaign says:
+/// the fuzzer must not walk the machine's file system.
+pub fn campaign(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return; // Campaign::load refuses files that are not UTF-8 before parsing
+    };
+    let dir = scratch();
+    let Ok(campaign) = Campaign::parse(text, &dir.join("campaign.yaml")) else {
+        return;
+    };
+    for (_, entry) in campaign.axes() {
+        let Ok(axis) = &entry.spec else { continue };
+        let _ = axis.data.resolve(&campaign.dir, false);
+        let data = match axis.raw.kind {
+            AxisKind::Linear => &fixtures().0,
+            AxisKind::Rotary => &fixtures().1,
+        };
+        let corrected;
+        let data = match axis.raw.conditions.nde.as_ref() {
+            Some(n) if !n.corrected && n.coefficient_um_per_m_c.is_some() => {
+                let alpha = n.coefficient_um_per_m_c.unwrap_or_default();
+                let readings: Vec<f64> = axis
+                    .raw
+                    .conditions
+                    .temperature_sensors
+                    .iter()
+                    .filter(|s| s.kind == SensorKind::Material)
+                    .flat_map(|s| [s.start_c, s.end_c])
+                    .flatten()
+                    .collect();
+                let t = readings.iter().sum::<f64>() / readings.len().max(1) as f64;
+                corrected = nde::correct(data, alpha, nde::Temperature::Constant(t));
+                corrected.as_ref().map_or(data, |(d, _)| d)
+            }
+            _ => data,
+        };
+        let ctx = PlanContext {
+            kind: axis.raw.kind,
+            standard: axis.standard,
+            axis_travel: axis.raw.travel,
+            measurement_travel: axis.raw.measurement_travel,
+            pitch: axis.raw.pitch,
+        };
+        let _ = rules::check(&ctx, data);
+        let e = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
+            Gost27843 {
+                s_method: SMethod::Ranges,
+            }
+            .evaluate(data)
+        } else {
+            evaluate::evaluate(data, axis.standard)
+        };
+        let spec = axis
+            .spec
+            .as_deref()
+            .and_then(|name| builtin_specs().iter().find(|(n, _)| *n == name))
+            .map(|(_, s)| s);
+        let (first, last) = data.measurement_travel();
+        if let Ok(limits) = Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
+            let _ = judge::judge(&e, &limits);
+        }
+    }
+}
+
+/// The acceptance-spec loader, then each band lookup and a judgement against it.
+pub fn spec(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(spec) = Spec::from_yaml(text, "fuzz-spec.yaml") else {
+        return;
+    };
+    let (linear, rotary) = fixtures();
+    for (data, e) in [(linear, &evaluations().0), (rotary, &evaluations().1)] {
+        for travel in [0.0, 1.0, 360.0, 999.9, 1000.0, 1e6, f64::INFINITY] {
+            let _ = spec.band(data.kind, travel);
+            if let Ok(limits) = Limits::new(Some(&spec), &BTreeMap::new(), data.kind, travel) {
+                let _ = judge::judge(e, &limits).worst();
+            }
+        }
+    }
+}
+
+/// A linear (ISO 230-2 Table 2) and a rotary test, read once.
+fn fixtures() -> &'static (AxisData, AxisData) {
+    static DATA: OnceLock<(AxisData, AxisData)> = OnceLock::new();
+    DATA.get_or_init(|| {
+        let read = |text: &str| measurement::read(text.as_bytes(), "fixture.csv").unwrap();
+        (read(LINEAR), read(ROTARY))
+    })
+}
+
+fn evaluations() -> &'static (evaluate::Evaluation, evaluate::Evaluation) {
+    static EVALUATIONS: OnceLock<(evaluate::Evaluation, evaluate::Evaluation)> = OnceLock::new();
+    EVALUATIONS.get_or_init(|| {
+        let (linear, rotary) = fixtures();
+        (
+            evaluate::evaluate(linear, StandardId::Iso230_2),
+            evaluate::evaluate(rotary, StandardId::Iso230_2),
+        )
+    })
+}
+
+fn builtin_specs() -> &'static [(&'static str, Spec)] {
+    static SPECS: OnceLock<Vec<(&'static str, Spec)>> = OnceLock::new();
+    SPECS.get_or_init(|| {
+        judge::BUILTIN_SPECS
+            .iter()
+            .map(|(name, text)| (*name, Spec::from_yaml(text, name).unwrap()))
+            .collect()
+    })
+}
+
+const LINEAR: &str = include_str!("../../tests/data/iso230-2_table2.csv");
+const ROTARY: &str = include_str!("../../example-campaign/data/rotary-c.csv");
+
+/// A fixed folder the campaign target resolves data paths in: `data/` with a few files
+/// (one in a subfolder, one hidden) and `specs/`. Made once per process.
+fn scratch() -> &'static Path {
+    static DIR: OnceLock<PathBuf> = OnceLock::new();
+    DIR.get_or_init(|| {
+        let dir = std::env::temp_dir().join(format!("axcheck-fuzz-{}", std::process::id()));
+        for (path, text) in [
+            ("data/x.csv", LINEAR),
+            ("data/c.csv", ROTARY),
+            ("data/sub/y.csv", LINEAR),
+            ("data/.hidden.csv", LINEAR),
+            ("specs/general.yaml", judge::BUILTIN_SPECS[0].1),
+        ] {
+            let file = dir.join(path);
+            std::fs::create_dir_all(file.parent().unwrap()).unwrap();
+            std::fs::write(file, text).unwrap();
+        }
+        dir
+    })
+}

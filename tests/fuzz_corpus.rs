@@ -1,0 +1,51 @@
+//! Replays the committed fuzz corpus (`fuzz/corpus/<target>/*`) through the same functions
+//! the cargo-fuzz targets call, so `cargo test` checks every seed and every regression input
+//! without cargo-fuzz or a nightly compiler.
+
+#[path = "../fuzz/src/lib.rs"]
+mod targets;
+
+use std::path::PathBuf;
+
+fn replay(target: &str, run: fn(&[u8])) {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("fuzz/corpus")
+        .join(target);
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|entry| entry.unwrap().path())
+        .filter(|p| p.is_file())
+        .collect();
+    files.sort();
+    assert!(!files.is_empty(), "no corpus in {}", dir.display());
+    for file in &files {
+        let bytes = std::fs::read(file).unwrap();
+        let outcome = std::panic::catch_unwind(|| run(&bytes));
+        assert!(outcome.is_ok(), "{target}: {} panics", file.display());
+    }
+}
+
+#[test]
+fn csv_corpus() {
+    replay("csv", targets::csv);
+}
+
+#[test]
+fn keyvalue_corpus() {
+    replay("keyvalue", targets::keyvalue);
+}
+
+#[test]
+fn evaluate_corpus() {
+    replay("evaluate", targets::evaluate);
+}
+
+#[test]
+fn campaign_corpus() {
+    replay("campaign", targets::campaign);
+}
+
+#[test]
+fn spec_corpus() {
+    replay("spec", targets::spec);
+}
