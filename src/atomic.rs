@@ -1,8 +1,28 @@
-//! Atomic file output: write beside the target, then rename over it, so a reader (or a
-//! run killed part-way) sees the old complete file or the new complete one.
+//! Safe file output.
+//!
+//! [`write`] is atomic: the bytes go to a temporary file beside the target
+//! (`.NAME.axcheck-tmp-PID`), are synced, then renamed over it, so a reader (or a run
+//! killed part-way) sees the old complete file or the new complete one, never a part.
+//!
+//! [`OutputDir`] is an output folder axcheck shares with its user. It records what axcheck
+//! wrote in a manifest ([`MANIFEST`], one relative path per line, written atomically) and
+//! replaces or removes only what that lists: an existing file at an output path that is not
+//! listed is refused before anything is written. The protocol keeps the manifest a
+//! superset of axcheck's files on disk at every moment, so a kill anywhere never turns
+//! axcheck's own file into a "foreign" one:
+//!
+//! 1. [`OutputDir::open`] reads the manifest of the previous run;
+//! 2. [`OutputDir::check`] refuses any path in the way (foreign file, folder, link);
+//! 3. [`OutputDir::prepare`] removes stale temporary files of killed runs and writes the
+//!    manifest as previous ∪ new, before any output;
+//! 4. [`OutputDir::write`] writes each file atomically;
+//! 5. [`OutputDir::finish`] removes the previous run's outputs this run no longer produces
+//!    (an axis taken out of the campaign, PDFs after `--no-pdf`), then writes the manifest
+//!    with exactly this run's outputs.
 
+use std::collections::BTreeSet;
 use std::io::Write;
-use std::path::Path;
+use std::path::{Component, Path, PathBuf};
 
 /// Writes `bytes` to `path` atomically, creating parent folders.
 pub fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
@@ -15,7 +35,7 @@ pub fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "output".into());
-    let tmp = dir.join(format!(".{name}.axcheck-tmp-{}", std::process::id()));
+    let tmp = dir.join(temp_name(&name, std::process::id()));
     let result = (|| {
         let mut file = std::fs::File::create(&tmp)?;
         file.write_all(bytes)?;
@@ -28,17 +48,489 @@ pub fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     result
 }
 
+const TEMP_MARK: &str = ".axcheck-tmp-";
+
+/// The temporary name [`write`] uses for `name` in process `pid`.
+fn temp_name(name: &str, pid: u32) -> String {
+    format!(".{name}{TEMP_MARK}{pid}")
+}
+
+/// The output name and process id of a temporary file name of [`write`].
+fn parse_temp_name(file_name: &str) -> Option<(&str, u32)> {
+    let rest = file_name.strip_prefix('.')?;
+    let at = rest.rfind(TEMP_MARK)?;
+    let pid = &rest[at + TEMP_MARK.len()..];
+    if pid.is_empty() || !pid.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    Some((&rest[..at], pid.parse().ok()?))
+}
+
+/// True when process `pid` still runs (Linux: `/proc/PID`); elsewhere assumed gone.
+fn process_alive(pid: u32) -> bool {
+    if pid == std::process::id() {
+        // Our own writes have not started: a file with our id is from an earlier process.
+        return false;
+    }
+    cfg!(target_os = "linux") && Path::new("/proc").join(pid.to_string()).exists()
+}
+
+/// The manifest of an output folder: what axcheck wrote there.
+pub const MANIFEST: &str = ".axcheck-outputs";
+const MANIFEST_HEADER: &str = "# axcheck output manifest: the files (and folders, ending in /) that `axcheck run` wrote in this folder.\n# axcheck replaces or removes only what is listed here; do not edit.\n";
+const MANIFEST_MAGIC: &str = "# axcheck output manifest";
+
+/// Why an output folder cannot take this run's outputs.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    #[error(
+        "{path} already exists and was not written by axcheck (it is not listed in {manifest}); axcheck never replaces a file it did not create: remove or move it, or choose another --out"
+    )]
+    Foreign { path: PathBuf, manifest: PathBuf },
+    #[error(
+        "{path} is in the way of the output {output}: it is {what}, and axcheck writes only files into real folders; remove or move it, or choose another --out"
+    )]
+    InTheWay {
+        path: PathBuf,
+        output: PathBuf,
+        what: &'static str,
+    },
+    #[error(
+        "{path} is not a valid axcheck output manifest (line {line}: {problem}); remove it only if every file it lists may be replaced, or choose another --out"
+    )]
+    BadManifest {
+        path: PathBuf,
+        line: usize,
+        problem: String,
+    },
+    #[error("cannot write {path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+fn io_error(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
+    move |source| OutputError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+/// An output folder and what axcheck wrote there before (see the module notes).
+#[derive(Debug)]
+pub struct OutputDir {
+    root: PathBuf,
+    /// Files listed in the manifest of the previous run.
+    owned_files: BTreeSet<PathBuf>,
+    /// Folders axcheck created, from the same manifest.
+    owned_dirs: BTreeSet<PathBuf>,
+    /// This run's outputs, once [`OutputDir::prepare`]d.
+    new_files: BTreeSet<PathBuf>,
+    new_dirs: BTreeSet<PathBuf>,
+}
+
+/// What is at a path, without following a final symbolic link.
+enum Entry {
+    Missing,
+    File,
+    Dir,
+    Other(&'static str),
+}
+
+fn entry(path: &Path) -> Result<Entry, OutputError> {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.file_type().is_symlink() => Ok(Entry::Other("a symbolic link")),
+        Ok(m) if m.is_file() => Ok(Entry::File),
+        Ok(m) if m.is_dir() => Ok(Entry::Dir),
+        Ok(_) => Ok(Entry::Other("not a regular file")),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(Entry::Missing),
+        Err(e) => Err(io_error(path)(e)),
+    }
+}
+
+/// A manifest entry: a relative path of plain names (no `..`, `.`, root or prefix).
+fn clean_relative(text: &str) -> Option<PathBuf> {
+    let path = PathBuf::from(text);
+    (!text.is_empty()
+        && !text.contains('\\')
+        && !text.contains('\0')
+        && path.components().all(|c| matches!(c, Component::Normal(_))))
+    .then_some(path)
+}
+
+/// `path` as a manifest line: `/`-separated whatever the platform.
+fn manifest_line(path: &Path) -> String {
+    path.components()
+        .map(|c| c.as_os_str().to_string_lossy())
+        .collect::<Vec<_>>()
+        .join("/")
+}
+
+/// The folders between the root and `path` (exclusive of both), outermost first.
+fn ancestors(path: &Path) -> Vec<PathBuf> {
+    let mut dirs: Vec<PathBuf> = path
+        .ancestors()
+        .skip(1)
+        .filter(|p| !p.as_os_str().is_empty())
+        .map(Path::to_path_buf)
+        .collect();
+    dirs.reverse();
+    dirs
+}
+
+impl OutputDir {
+    /// Reads the manifest of `root` (none when the folder or the manifest does not
+    /// exist yet); writes nothing.
+    pub fn open(root: &Path) -> Result<OutputDir, OutputError> {
+        let mut dir = OutputDir {
+            root: root.to_path_buf(),
+            owned_files: BTreeSet::new(),
+            owned_dirs: BTreeSet::new(),
+            new_files: BTreeSet::new(),
+            new_dirs: BTreeSet::new(),
+        };
+        let path = dir.manifest_path();
+        match entry(&path)? {
+            Entry::Missing => return Ok(dir),
+            Entry::File => {}
+            Entry::Dir => {
+                return Err(OutputError::InTheWay {
+                    output: path.clone(),
+                    path,
+                    what: "a folder",
+                });
+            }
+            Entry::Other(what) => {
+                return Err(OutputError::InTheWay {
+                    output: path.clone(),
+                    path,
+                    what,
+                });
+            }
+        }
+        let bad = |line: usize, problem: &str| OutputError::BadManifest {
+            path: path.clone(),
+            line,
+            problem: problem.to_string(),
+        };
+        let bytes = std::fs::read(&path).map_err(io_error(&path))?;
+        let text = String::from_utf8(bytes).map_err(|_| bad(1, "not UTF-8 text"))?;
+        if !text.starts_with(MANIFEST_MAGIC) {
+            return Err(bad(1, "it does not start with `# axcheck output manifest`"));
+        }
+        for (k, line) in text.lines().enumerate() {
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let (text, is_dir) = match line.strip_suffix('/') {
+                Some(d) => (d, true),
+                None => (line, false),
+            };
+            let entry = clean_relative(text).ok_or_else(|| {
+                bad(
+                    k + 1,
+                    &format!("`{line}` is not a relative path inside the folder"),
+                )
+            })?;
+            if is_dir {
+                dir.owned_dirs.insert(entry);
+            } else {
+                dir.owned_files.insert(entry);
+            }
+        }
+        Ok(dir)
+    }
+
+    fn manifest_path(&self) -> PathBuf {
+        self.root.join(MANIFEST)
+    }
+
+    /// Refuses the first of `outputs` (relative paths) that would replace a file axcheck
+    /// did not write, or whose place is taken by a folder, a link or something else.
+    pub fn check<'a>(
+        &self,
+        outputs: impl IntoIterator<Item = &'a Path>,
+    ) -> Result<(), OutputError> {
+        for output in outputs {
+            let Some(relative) = clean_relative(&output.to_string_lossy()) else {
+                return Err(OutputError::Io {
+                    path: self.root.join(output),
+                    source: std::io::Error::other("not a relative path inside the output folder"),
+                });
+            };
+            for dir in ancestors(&relative) {
+                let path = self.root.join(&dir);
+                match entry(&path)? {
+                    Entry::Missing => break,
+                    Entry::Dir => {}
+                    Entry::File => {
+                        return Err(OutputError::InTheWay {
+                            path,
+                            output: self.root.join(&relative),
+                            what: "a file",
+                        });
+                    }
+                    Entry::Other(what) => {
+                        return Err(OutputError::InTheWay {
+                            path,
+                            output: self.root.join(&relative),
+                            what,
+                        });
+                    }
+                }
+            }
+            let path = self.root.join(&relative);
+            match entry(&path)? {
+                Entry::Missing => {}
+                Entry::File if self.owned_files.contains(&relative) => {}
+                Entry::File => {
+                    return Err(OutputError::Foreign {
+                        path,
+                        manifest: self.manifest_path(),
+                    });
+                }
+                Entry::Dir => {
+                    return Err(OutputError::InTheWay {
+                        output: path.clone(),
+                        path,
+                        what: "a folder",
+                    });
+                }
+                Entry::Other(what) => {
+                    return Err(OutputError::InTheWay {
+                        output: path.clone(),
+                        path,
+                        what,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Before writing `outputs` (already [`check`](OutputDir::check)ed): removes the
+    /// temporary files that killed runs left beside axcheck's outputs, and records the
+    /// previous and the new outputs in the manifest.
+    pub fn prepare<'a>(
+        &mut self,
+        outputs: impl IntoIterator<Item = &'a Path>,
+    ) -> Result<(), OutputError> {
+        self.new_files = outputs.into_iter().map(Path::to_path_buf).collect();
+        self.new_dirs = self
+            .new_files
+            .iter()
+            .flat_map(|p| ancestors(p))
+            .filter(|d| {
+                // Folders this run creates, and those an earlier run created.
+                self.owned_dirs.contains(d) || !self.root.join(d).exists()
+            })
+            .collect();
+        std::fs::create_dir_all(&self.root).map_err(io_error(&self.root))?;
+        self.remove_stale_temporaries()?;
+        let files: BTreeSet<&PathBuf> = self.owned_files.iter().chain(&self.new_files).collect();
+        let dirs: BTreeSet<&PathBuf> = self.owned_dirs.iter().chain(&self.new_dirs).collect();
+        self.write_manifest(&files, &dirs)
+    }
+
+    /// Writes one output (a relative path given to [`prepare`](OutputDir::prepare)).
+    pub fn write(&self, output: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+        let path = self.root.join(output);
+        write(&path, bytes).map_err(io_error(&path))
+    }
+
+    /// After every output is written: removes the previous run's outputs this run did not
+    /// produce (and the folders axcheck created for them, when empty), and records exactly
+    /// this run's outputs.
+    pub fn finish(self) -> Result<(), OutputError> {
+        for stale in self.owned_files.difference(&self.new_files) {
+            let path = self.root.join(stale);
+            // Only a regular file inside real folders: never through a link.
+            let inside = ancestors(stale)
+                .iter()
+                .all(|d| matches!(entry(&self.root.join(d)), Ok(Entry::Dir)));
+            if inside && matches!(entry(&path)?, Entry::File) {
+                std::fs::remove_file(&path).map_err(io_error(&path))?;
+            }
+        }
+        // Deepest first; a folder that is not empty (a user's file in it) stays.
+        let unused: Vec<&PathBuf> = self.owned_dirs.difference(&self.new_dirs).collect();
+        for dir in unused.into_iter().rev() {
+            let path = self.root.join(dir);
+            if matches!(entry(&path)?, Entry::Dir) {
+                let _ = std::fs::remove_dir(&path);
+            }
+        }
+        let files: BTreeSet<&PathBuf> = self.new_files.iter().collect();
+        let dirs: BTreeSet<&PathBuf> = self.new_dirs.iter().collect();
+        self.write_manifest(&files, &dirs)
+    }
+
+    fn write_manifest(
+        &self,
+        files: &BTreeSet<&PathBuf>,
+        dirs: &BTreeSet<&PathBuf>,
+    ) -> Result<(), OutputError> {
+        let mut lines: Vec<String> = files
+            .iter()
+            .map(|p| manifest_line(p))
+            .chain(dirs.iter().map(|d| format!("{}/", manifest_line(d))))
+            .collect();
+        lines.sort();
+        let mut text = String::from(MANIFEST_HEADER);
+        for line in lines {
+            text.push_str(&line);
+            text.push('\n');
+        }
+        let path = self.manifest_path();
+        write(&path, text.as_bytes()).map_err(io_error(&path))
+    }
+
+    /// Removes `.NAME.axcheck-tmp-PID` files of processes that no longer run, where NAME
+    /// is one of axcheck's outputs (previous or new) in that folder, or the manifest.
+    fn remove_stale_temporaries(&self) -> Result<(), OutputError> {
+        let mut names: BTreeSet<(PathBuf, String)> = BTreeSet::new();
+        names.insert((PathBuf::new(), MANIFEST.to_string()));
+        for file in self.owned_files.iter().chain(&self.new_files) {
+            if let Some(name) = file.file_name() {
+                let dir = file.parent().map(Path::to_path_buf).unwrap_or_default();
+                names.insert((dir, name.to_string_lossy().into_owned()));
+            }
+        }
+        let dirs: BTreeSet<&PathBuf> = names.iter().map(|(d, _)| d).collect();
+        for dir in dirs {
+            let inside = ancestors(&dir.join("x"))
+                .iter()
+                .all(|d| matches!(entry(&self.root.join(d)), Ok(Entry::Dir)));
+            let folder = self.root.join(dir);
+            let Ok(list) = std::fs::read_dir(&folder) else {
+                continue;
+            };
+            if !inside {
+                continue;
+            }
+            for item in list.flatten() {
+                let file_name = item.file_name();
+                let Some((name, pid)) = file_name.to_str().and_then(parse_temp_name) else {
+                    continue;
+                };
+                let path = item.path();
+                if names.contains(&(dir.clone(), name.to_string()))
+                    && matches!(entry(&path)?, Entry::File)
+                    && !process_alive(pid)
+                {
+                    std::fs::remove_file(&path).map_err(io_error(&path))?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("axcheck-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
     #[test]
     fn replaces_content() {
-        let dir = std::env::temp_dir().join(format!("axcheck-atomic-{}", std::process::id()));
+        let dir = scratch("atomic");
         let path = dir.join("sub/out.txt");
-        super::write(&path, b"one").unwrap();
-        super::write(&path, b"two").unwrap();
+        write(&path, b"one").unwrap();
+        write(&path, b"two").unwrap();
         assert_eq!(std::fs::read(&path).unwrap(), b"two");
         let leftovers = std::fs::read_dir(dir.join("sub")).unwrap().count();
         assert_eq!(leftovers, 1);
         std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn temporary_names() {
+        assert_eq!(temp_name("a.pdf", 42), ".a.pdf.axcheck-tmp-42");
+        assert_eq!(
+            parse_temp_name(".a.pdf.axcheck-tmp-42"),
+            Some(("a.pdf", 42))
+        );
+        assert_eq!(parse_temp_name("a.pdf.axcheck-tmp-42"), None);
+        assert_eq!(parse_temp_name(".a.pdf.axcheck-tmp-"), None);
+        assert_eq!(parse_temp_name(".a.pdf.axcheck-tmp-4x"), None);
+    }
+
+    #[test]
+    fn manifest_entries_stay_inside_the_folder() {
+        assert!(clean_relative("reports/M/X.pdf").is_some());
+        for bad in ["", "/etc/passwd", "../x", "a/../../x", "./a", "a\\b"] {
+            assert!(clean_relative(bad).is_none(), "{bad}");
+        }
+    }
+
+    fn run(root: &Path, outputs: &[(&str, &str)]) -> Result<(), OutputError> {
+        let mut dir = OutputDir::open(root)?;
+        let paths: Vec<&Path> = outputs.iter().map(|(p, _)| Path::new(*p)).collect();
+        dir.check(paths.iter().copied())?;
+        dir.prepare(paths.iter().copied())?;
+        for (p, text) in outputs {
+            dir.write(Path::new(p), text.as_bytes())?;
+        }
+        dir.finish()
+    }
+
+    #[test]
+    fn owns_what_it_wrote_and_nothing_else() {
+        let root = scratch("owned");
+        run(
+            &root,
+            &[("a.txt", "1"), ("r/m/x.pdf", "1"), ("r/n/y.pdf", "1")],
+        )
+        .unwrap();
+        let manifest = std::fs::read_to_string(root.join(MANIFEST)).unwrap();
+        assert!(
+            manifest.ends_with("a.txt\nr/\nr/m/\nr/m/x.pdf\nr/n/\nr/n/y.pdf\n"),
+            "{manifest}"
+        );
+        // A user's files: one beside, one in a folder axcheck made.
+        std::fs::write(root.join("notes.txt"), "mine").unwrap();
+        std::fs::write(root.join("r/n/mine.txt"), "mine").unwrap();
+        // Re-run without r/m and r/n outputs: they are removed, r/m with its folder; r/n
+        // stays because it holds the user's file.
+        run(&root, &[("a.txt", "2")]).unwrap();
+        assert_eq!(std::fs::read_to_string(root.join("a.txt")).unwrap(), "2");
+        assert!(!root.join("r/m").exists());
+        assert!(!root.join("r/n/y.pdf").exists());
+        assert!(root.join("r/n/mine.txt").exists());
+        assert_eq!(
+            std::fs::read_to_string(root.join("notes.txt")).unwrap(),
+            "mine"
+        );
+        // A user's file at an output path is refused, untouched.
+        let e = run(&root, &[("a.txt", "3"), ("notes.txt", "3")]).unwrap_err();
+        assert!(matches!(e, OutputError::Foreign { .. }), "{e}");
+        assert_eq!(
+            std::fs::read_to_string(root.join("notes.txt")).unwrap(),
+            "mine"
+        );
+        assert_eq!(std::fs::read_to_string(root.join("a.txt")).unwrap(), "2");
+        std::fs::remove_dir_all(root).unwrap();
+    }
+
+    #[test]
+    fn a_tampered_manifest_is_refused() {
+        let root = scratch("tampered");
+        std::fs::create_dir_all(&root).unwrap();
+        std::fs::write(
+            root.join(MANIFEST),
+            "# axcheck output manifest\n../../etc/passwd\n",
+        )
+        .unwrap();
+        let e = OutputDir::open(&root).unwrap_err();
+        assert!(e.to_string().contains("line 2"), "{e}");
+        std::fs::write(root.join(MANIFEST), "results.json\n").unwrap();
+        assert!(OutputDir::open(&root).is_err());
+        std::fs::remove_dir_all(root).unwrap();
     }
 }

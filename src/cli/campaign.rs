@@ -173,6 +173,9 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let out = options.out;
     let campaign = Campaign::load(path)?;
     check_output_dir(&campaign, out)?;
+    // A broken manifest is refused before the evaluation; the output paths themselves are
+    // checked by `write_all` before anything is written.
+    axcheck::atomic::OutputDir::open(out)?;
     let mut exporters = export::table_exporters();
     let pdf = !options.no_pdf && campaign.info.output.pdf;
     if pdf {

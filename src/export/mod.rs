@@ -27,6 +27,10 @@ pub enum ExportError {
         path: PathBuf,
         source: std::io::Error,
     },
+    /// The output folder cannot take the outputs (a file axcheck did not write is in the
+    /// way), or writing it failed.
+    #[error(transparent)]
+    Output(#[from] crate::atomic::OutputError),
 }
 
 /// One file an exporter produces, its path relative to the output folder.
@@ -57,21 +61,32 @@ pub fn table_exporters() -> Vec<Box<dyn Exporter>> {
 }
 
 /// Produces and writes the outputs of `exporters` into `dir`; returns the written paths.
+///
+/// Nothing is written until every output is produced and every output path is checked:
+/// a file at an output path that axcheck did not write (not in the folder's manifest,
+/// [`crate::atomic::MANIFEST`]) is refused. Each exporter's paths are checked as soon as it
+/// has produced them, so a refused table output fails before the PDFs are typeset. Then
+/// stale temporary files of killed runs are removed, each file is written atomically, and
+/// outputs of the previous run that this run no longer produces are removed (see
+/// [`crate::atomic::OutputDir`]).
 pub fn write_all(
     result: &CampaignResult,
     exporters: &[Box<dyn Exporter>],
     dir: &Path,
 ) -> Result<Vec<PathBuf>, ExportError> {
-    let mut written = Vec::new();
+    let mut out = crate::atomic::OutputDir::open(dir)?;
+    let mut files = Vec::new();
     for exporter in exporters {
-        for file in exporter.export(result)? {
-            let path = dir.join(&file.path);
-            crate::atomic::write(&path, &file.bytes).map_err(|source| ExportError::Write {
-                path: path.clone(),
-                source,
-            })?;
-            written.push(path);
-        }
+        let produced = exporter.export(result)?;
+        out.check(produced.iter().map(|f| f.path.as_path()))?;
+        files.extend(produced);
     }
+    out.prepare(files.iter().map(|f| f.path.as_path()))?;
+    let mut written = Vec::with_capacity(files.len());
+    for file in files {
+        out.write(&file.path, &file.bytes)?;
+        written.push(dir.join(&file.path));
+    }
+    out.finish()?;
     Ok(written)
 }
