@@ -3,9 +3,9 @@
 //! bootstrap). A measured value outside the simulated 2.5–97.5 % band is something the
 //! standard's model does not explain.
 
-use super::periodic::{self, Scanner};
+use super::periodic::{self, Grid, Trend};
 use super::prep::Prep;
-use super::stats::quantile;
+use super::stats::quantile_sorted;
 use crate::measurement::AxisData;
 use crate::simulate::Simulation;
 use crate::simulate::rng::Rng;
@@ -44,103 +44,254 @@ pub(crate) fn describe(name: &str) -> &'static str {
 
 /// The statistics of one test (NaN where one does not apply).
 pub(crate) fn statistics(data: &AxisData) -> [f64; 8] {
-    let prep = Prep::new(data);
-    let (m, n) = (prep.m, prep.n);
-    let all = vec![true; prep.rows.len()];
-    let x: Vec<f64> = prep.rows.iter().map(|r| r.x).collect();
-    let (means, _) = prep.cell_means(&x, &all);
-    let resid: Vec<f64> = prep
-        .rows
-        .iter()
-        .zip(&x)
-        .map(|(r, v)| v - means[prep.cell(r)])
-        .collect();
-    let mut ss = vec![0.0; prep.cells()];
-    for (r, e) in prep.rows.iter().zip(&resid) {
-        ss[prep.cell(r)] += e * e;
-    }
-    let nan = f64::NAN;
-    let mut out = [nan; 8];
-    let b: Vec<f64> = (0..m).map(|i| means[2 * i] - means[2 * i + 1]).collect();
-    if n >= 2 {
-        let s: Vec<f64> = ss.iter().map(|v| (v / (n - 1) as f64).sqrt()).collect();
-        out[0] = (0..m)
-            .map(|i| {
-                let (su, sd) = (s[2 * i], s[2 * i + 1]);
-                (2.0 * su + 2.0 * sd + b[i].abs())
-                    .max(4.0 * su)
-                    .max(4.0 * sd)
-            })
-            .fold(f64::NEG_INFINITY, f64::max);
-        let mut run_sum = vec![0.0; n];
-        for (r, e) in prep.rows.iter().zip(&resid) {
-            run_sum[r.run] += e;
+    let layout = Layout::new(data);
+    let x: Vec<f64> = layout.prep.rows.iter().map(|r| r.x).collect();
+    layout.statistics(&x)
+}
+
+/// What [`statistics`] needs of a test besides its deviations: the cells, runs and time
+/// order of its readings, the trend basis and the periodogram grid of its targets. Tests
+/// simulated from one plan share it, so it is built once for all of them.
+struct Layout {
+    prep: Prep,
+    /// Row indices in time order.
+    by_order: Vec<usize>,
+    /// Per target: whether it lies in the lower half of the travel.
+    lower_half: Vec<bool>,
+    /// The trend basis (m ≥ 5) and the grid of the periodogram (when applicable).
+    trend: Option<Trend>,
+    grid: Option<Grid>,
+}
+
+impl Layout {
+    fn new(data: &AxisData) -> Layout {
+        let prep = Prep::new(data);
+        let mut by_order: Vec<usize> = (0..prep.rows.len()).collect();
+        by_order.sort_by_key(|&k| prep.rows[k].order);
+        let mid = (prep.lo + prep.hi) / 2.0;
+        let lower_half = prep.positions.iter().map(|p| *p < mid).collect();
+        let res = periodic::resolution(&prep.positions);
+        let trend = (prep.m >= 5).then(|| Trend::new(&prep.positions, None));
+        let grid = trend
+            .as_ref()
+            .filter(|_| res.applicable)
+            .map(|t| t.grid(1.0 / res.p_max, 1.0 / res.p_min, res.length));
+        Layout {
+            prep,
+            by_order,
+            lower_half,
+            trend,
+            grid,
         }
-        let per = (2 * m) as f64;
-        let (lo, hi) = run_sum
+    }
+
+    /// The statistics of the deviations `x` (one per row).
+    fn statistics(&self, x: &[f64]) -> [f64; 8] {
+        let prep = &self.prep;
+        let (m, n) = (prep.m, prep.n);
+        let cells = prep.cells();
+        let mut sum = vec![0.0; cells];
+        let mut count = vec![0usize; cells];
+        for (r, v) in prep.rows.iter().zip(x) {
+            let c = prep.cell(r);
+            sum[c] += v;
+            count[c] += 1;
+        }
+        let means: Vec<f64> = sum
             .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
-                (a.min(v / per), c.max(v / per))
-            });
-        out[1] = hi - lo;
-        let mut ordered: Vec<(usize, f64)> = prep
+            .zip(&count)
+            .map(|(s, &c)| if c > 0 { s / c as f64 } else { f64::NAN })
+            .collect();
+        let resid: Vec<f64> = prep
             .rows
             .iter()
-            .map(|r| r.order)
-            .zip(resid.iter().copied())
+            .zip(x)
+            .map(|(r, v)| v - means[prep.cell(r)])
             .collect();
-        ordered.sort_by_key(|&(o, _)| o);
-        let den: f64 = ordered.iter().map(|(_, e)| e * e).sum();
-        if den > 0.0 {
-            out[2] = ordered.windows(2).map(|w| w[0].1 * w[1].1).sum::<f64>() / den;
+        let mut ss = vec![0.0; cells];
+        for (r, e) in prep.rows.iter().zip(&resid) {
+            ss[prep.cell(r)] += e * e;
         }
-        let pooled = ss.iter().sum::<f64>() / (prep.rows.len() - prep.cells()) as f64;
-        if n >= 3 && pooled > 0.0 {
-            let k = (pooled * (n - 1) as f64 / n as f64).sqrt();
-            out[3] = resid.iter().fold(0.0f64, |a, e| a.max(e.abs() / k));
-        }
-        if m >= 2 {
-            let mid = (prep.lo + prep.hi) / 2.0;
-            let (mut lo_ss, mut lo_c, mut hi_ss, mut hi_c) = (0.0, 0usize, 0.0, 0usize);
-            for (c, v) in ss.iter().enumerate() {
-                if prep.positions[c / 2] < mid {
-                    lo_ss += v;
-                    lo_c += n - 1;
-                } else {
-                    hi_ss += v;
-                    hi_c += n - 1;
+        let nan = f64::NAN;
+        let mut out = [nan; 8];
+        let b: Vec<f64> = (0..m).map(|i| means[2 * i] - means[2 * i + 1]).collect();
+        if n >= 2 {
+            let s: Vec<f64> = ss.iter().map(|v| (v / (n - 1) as f64).sqrt()).collect();
+            out[0] = (0..m)
+                .map(|i| {
+                    let (su, sd) = (s[2 * i], s[2 * i + 1]);
+                    (2.0 * su + 2.0 * sd + b[i].abs())
+                        .max(4.0 * su)
+                        .max(4.0 * sd)
+                })
+                .fold(f64::NEG_INFINITY, f64::max);
+            let mut run_sum = vec![0.0; n];
+            for (r, e) in prep.rows.iter().zip(&resid) {
+                run_sum[r.run] += e;
+            }
+            let per = (2 * m) as f64;
+            let (lo, hi) = run_sum
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
+                    (a.min(v / per), c.max(v / per))
+                });
+            out[1] = hi - lo;
+            let den: f64 = self.by_order.iter().map(|&k| resid[k] * resid[k]).sum();
+            if den > 0.0 {
+                out[2] = self
+                    .by_order
+                    .windows(2)
+                    .map(|w| resid[w[0]] * resid[w[1]])
+                    .sum::<f64>()
+                    / den;
+            }
+            let pooled = ss.iter().sum::<f64>() / (prep.rows.len() - cells) as f64;
+            if n >= 3 && pooled > 0.0 {
+                let k = (pooled * (n - 1) as f64 / n as f64).sqrt();
+                out[3] = resid.iter().fold(0.0f64, |a, e| a.max(e.abs() / k));
+            }
+            if m >= 2 {
+                let (mut lo_ss, mut lo_c, mut hi_ss, mut hi_c) = (0.0, 0usize, 0.0, 0usize);
+                for (c, v) in ss.iter().enumerate() {
+                    if self.lower_half[c / 2] {
+                        lo_ss += v;
+                        lo_c += n - 1;
+                    } else {
+                        hi_ss += v;
+                        hi_c += n - 1;
+                    }
+                }
+                if lo_c > 0 && hi_c > 0 && lo_ss > 0.0 {
+                    out[5] = ((hi_ss / hi_c as f64) / (lo_ss / lo_c as f64)).sqrt();
                 }
             }
-            if lo_c > 0 && hi_c > 0 && lo_ss > 0.0 {
-                out[5] = ((hi_ss / hi_c as f64) / (lo_ss / lo_c as f64)).sqrt();
+        }
+        if m >= 2 {
+            let (lo, hi) = b
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
+                    (a.min(*v), c.max(*v))
+                });
+            out[4] = hi - lo;
+        }
+        if let Some(trend) = &self.trend {
+            let bidir: Vec<f64> = (0..m)
+                .map(|i| (means[2 * i] + means[2 * i + 1]) / 2.0)
+                .collect();
+            let scanner = trend.scanner(&bidir);
+            let r = scanner.trend_residuals();
+            let dof = scanner.trend_dof();
+            if dof > 0.0 {
+                out[7] = (r.iter().map(|v| v * v).sum::<f64>() / dof).sqrt();
+            }
+            if let Some(grid) = &self.grid {
+                let (f, _) = scanner.best(grid);
+                out[6] = scanner.f_stat(f);
             }
         }
+        out
     }
-    if m >= 2 {
-        let (lo, hi) = b
+}
+
+/// Tests simulated from a simulation whose plan lists its targets, without building each
+/// test's [`AxisData`]: the targets, the schedule, the expected deviation and the scatter
+/// of every reading are the same in every test, only the scatter's draws differ. Built
+/// only for models without random run offsets and outliers (the base model never has
+/// them), and checked against [`Simulation::run`] on the first test.
+struct FastSim {
+    layout: Layout,
+    /// Expected deviation (with the run's fixed offset) per reading, in visit order.
+    expected: Vec<f64>,
+    /// Scatter σ per reading.
+    sigma: Vec<f64>,
+    resolution: f64,
+}
+
+/// Decimals the simulator keeps (`simulate::DECIMALS`; a difference fails the check in
+/// [`FastSim::new`], and the tests then go through [`Simulation::run`]).
+const SIM_SCALE: f64 = 1e4;
+
+/// The seed of simulated test `s`.
+fn sim_seed(seed: u64, s: usize) -> u64 {
+    Rng::new(seed, 0xC4EC + s as u64).next_u64()
+}
+
+impl FastSim {
+    fn new(sim: &Simulation, seed: u64, strip_times: bool) -> Option<FastSim> {
+        let (model, plan) = (&sim.model, &sim.plan);
+        if plan.target_list.is_none()
+            || model.run_offset_sd != 0.0
+            || model.outlier_rate != 0.0
+            || !model.outliers.is_empty()
+        {
+            return None;
+        }
+        let seed0 = sim_seed(seed, 0);
+        let targets = plan.target_positions(seed0);
+        let first = sim_test(sim, seed0, strip_times);
+        if first.targets != targets || first.run_labels.len() != plan.runs {
+            return None;
+        }
+        let travel = (targets[0], targets[targets.len() - 1]);
+        let visits = plan.schedule(&targets);
+        if visits.len() != first.readings.len() {
+            return None;
+        }
+        let mut expected = Vec::with_capacity(visits.len());
+        let mut sigma = Vec::with_capacity(visits.len());
+        for (v, r) in visits.iter().zip(&first.readings) {
+            if (r.target, r.direction, r.run) != (v.target, v.direction, v.run) {
+                return None;
+            }
+            let position = targets[v.target];
+            let offset = model.run_offsets.get(v.run).copied().unwrap_or(0.0) + 0.0;
+            expected
+                .push(model.expected(sim.kind, position, v.direction, v.time_s, travel) + offset);
+            sigma.push(model.scatter_at(position, travel));
+        }
+        let fast = FastSim {
+            layout: Layout::new(&first),
+            expected,
+            sigma,
+            resolution: model.resolution,
+        };
+        let same = fast
+            .deviations(seed0)
             .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
-                (a.min(*v), c.max(*v))
-            });
-        out[4] = hi - lo;
+            .zip(&first.readings)
+            .all(|(x, r)| x.to_bits() == r.deviation.to_bits());
+        same.then_some(fast)
     }
-    let bidir: Vec<f64> = (0..m)
-        .map(|i| (means[2 * i] + means[2 * i + 1]) / 2.0)
-        .collect();
-    let res = periodic::resolution(&prep.positions);
-    if m >= 5 {
-        let scanner = Scanner::new(&prep.positions, &bidir, None);
-        let r = scanner.trend_residuals();
-        let dof = scanner.trend_dof();
-        if dof > 0.0 {
-            out[7] = (r.iter().map(|v| v * v).sum::<f64>() / dof).sqrt();
-        }
-        if res.applicable {
-            let (f, _) = scanner.best(1.0 / res.p_max, 1.0 / res.p_min, res.length);
-            out[6] = scanner.f_stat(f);
+
+    /// The deviations of the test with `seed`, in reading order (as [`Simulation::run`]
+    /// draws and rounds them).
+    fn deviations(&self, seed: u64) -> Vec<f64> {
+        let mut scatter_rng = Rng::new(seed, 3);
+        self.expected
+            .iter()
+            .zip(&self.sigma)
+            .map(|(e, s)| {
+                let mut x = *e;
+                x += s * scatter_rng.normal();
+                if self.resolution > 0.0 {
+                    x = (x / self.resolution).round() * self.resolution;
+                }
+                (x * SIM_SCALE).round() / SIM_SCALE + 0.0
+            })
+            .collect()
+    }
+}
+
+/// One simulated test, as the measurement it stands for (without time stamps when it
+/// had none).
+fn sim_test(sim: &Simulation, seed: u64, strip_times: bool) -> AxisData {
+    let mut data = sim.run(seed);
+    if strip_times {
+        for r in &mut data.readings {
+            r.time_s = None;
         }
     }
-    out
+    data
 }
 
 /// One model check.
@@ -172,27 +323,26 @@ pub(crate) fn run(
     if count == 0 {
         return Vec::new();
     }
-    let sims: Vec<[f64; 8]> = (0..count)
-        .into_par_iter()
-        .map(|s| {
-            let mut rng = Rng::new(seed, 0xC4EC + s as u64);
-            let mut data = sim.run(rng.next_u64());
-            if strip_times {
-                for r in &mut data.readings {
-                    r.time_s = None;
-                }
-            }
-            statistics(&data)
-        })
-        .collect();
+    let sims: Vec<[f64; 8]> = match FastSim::new(sim, seed, strip_times) {
+        Some(fast) => (0..count)
+            .into_par_iter()
+            .map(|s| fast.layout.statistics(&fast.deviations(sim_seed(seed, s))))
+            .collect(),
+        None => (0..count)
+            .into_par_iter()
+            .map(|s| statistics(&sim_test(sim, sim_seed(seed, s), strip_times)))
+            .collect(),
+    };
     let mut out = Vec::new();
     for (k, name) in NAMES.iter().enumerate() {
         if !measured[k].is_finite() {
             continue;
         }
-        let values: Vec<f64> = sims.iter().map(|s| s[k]).collect();
-        let low = quantile(&values, 0.025);
-        let high = quantile(&values, 0.975);
+        let mut values: Vec<f64> = sims.iter().map(|s| s[k]).collect();
+        values.retain(|v| v.is_finite());
+        values.sort_by(f64::total_cmp);
+        let low = quantile_sorted(&values, 0.025);
+        let high = quantile_sorted(&values, 0.975);
         if !(low.is_finite() && high.is_finite()) {
             continue;
         }
@@ -212,4 +362,93 @@ pub(crate) fn run(
         });
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::simulate::{Cycle, ErrorModel, PeriodicTerm, TestPlan};
+    use crate::units::AxisKind;
+
+    fn simulation(cycle: Cycle, model: ErrorModel) -> Simulation {
+        // Uneven targets, fine enough for the periodogram (m = 21, spacing ≈ 5).
+        let targets = (0..21)
+            .map(|i| i as f64 * 5.0 + 0.37 * ((i * 7 % 5) as f64))
+            .collect();
+        Simulation {
+            kind: AxisKind::Linear,
+            seed: 0,
+            description: None,
+            model,
+            plan: TestPlan {
+                targets: None,
+                target_list: Some(targets),
+                runs: 5,
+                cycle,
+                feed_per_min: 1000.0,
+                dwell_s: 4.0,
+                overrun: 5.0,
+            },
+        }
+    }
+
+    fn base_like() -> ErrorModel {
+        ErrorModel {
+            shape: vec![[0.0, 0.3], [50.0, -1.2], [101.0, 0.8]],
+            periodic: vec![PeriodicTerm {
+                pitch: 12.5,
+                amplitude: 0.4,
+                phase_deg: 20.0,
+            }],
+            reversal: 2.5,
+            reversal_end: Some(3.5),
+            scatter: 0.5,
+            scatter_end: Some(0.9),
+            ..ErrorModel::default()
+        }
+    }
+
+    /// The shortcut gives, to the bit, the statistics of the tests [`Simulation::run`]
+    /// simulates.
+    #[test]
+    fn fast_tests_are_the_simulators_tests() {
+        let quantised = ErrorModel {
+            resolution: 0.1,
+            run_offsets: vec![0.0, 0.5, -0.3, 0.2, -0.1],
+            ..base_like()
+        };
+        for model in [base_like(), quantised] {
+            for cycle in [Cycle::Standard, Cycle::Pilgrim, Cycle::Step] {
+                for strip in [false, true] {
+                    let sim = simulation(cycle, model.clone());
+                    let fast = FastSim::new(&sim, 7, strip).expect("the shortcut applies");
+                    assert!(fast.layout.grid.is_some());
+                    for s in 0..12 {
+                        let seed = sim_seed(7, s);
+                        let a = fast.layout.statistics(&fast.deviations(seed));
+                        let b = statistics(&sim_test(&sim, seed, strip));
+                        let bits = |v: [f64; 8]| v.map(f64::to_bits);
+                        assert_eq!(bits(a), bits(b), "{cycle:?} strip {strip} test {s}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn random_terms_take_the_simulator() {
+        for model in [
+            ErrorModel {
+                run_offset_sd: 0.3,
+                ..base_like()
+            },
+            ErrorModel {
+                outlier_rate: 0.01,
+                outlier_size: 5.0,
+                ..base_like()
+            },
+        ] {
+            assert!(FastSim::new(&simulation(Cycle::Standard, model), 7, false).is_none());
+        }
+    }
 }

@@ -19,6 +19,7 @@
 //! travel of about 25 mm with about 0.5 mm steps).
 
 use super::stats::{chi2_upper, f_upper, max_of, to_unit_interval};
+use std::cell::RefCell;
 use std::f64::consts::TAU;
 
 /// Degree of the smooth (progressive) trend.
@@ -87,20 +88,70 @@ pub(crate) struct Peak {
     pub p_chi2: Option<f64>,
 }
 
-/// The systematic deviation along the axis, ready for trial periods.
+/// The smooth trend's basis at fixed positions and weights: what every test of the same
+/// plan shares, so that many tests (the Monte-Carlo checks) are scanned without
+/// rebuilding it.
 #[derive(Debug, Clone)]
-pub(crate) struct Scanner {
+pub(crate) struct Trend {
     positions: Vec<f64>,
     /// √weight per target.
     sw: Vec<f64>,
     /// Orthonormal basis (weighted) of the trend.
     basis: Vec<Vec<f64>>,
+    /// True when the weights are 1/variance (the scatter known).
+    absolute: bool,
+}
+
+/// The systematic deviation along the axis, ready for trial periods.
+#[derive(Debug)]
+pub(crate) struct Scanner<'a> {
+    trend: &'a Trend,
     /// Weighted residual of the trend.
     resid: Vec<f64>,
     pub rss_trend: f64,
-    /// True when the weights are 1/variance (the scatter known).
-    absolute: bool,
     dof: f64,
+    /// Scratch for the projected sine and cosine of a trial frequency.
+    scratch: RefCell<(Vec<f64>, Vec<f64>)>,
+}
+
+/// The projected sine and cosine columns of one trial frequency and their products:
+/// everything of a fit that does not depend on the data.
+#[derive(Debug, Clone)]
+struct Column {
+    s: Vec<f64>,
+    c: Vec<f64>,
+    ss: f64,
+    sc: f64,
+    cc: f64,
+    det: f64,
+    /// False when the two columns are (nearly) collinear after the trend: no fit.
+    ok: bool,
+}
+
+impl Column {
+    fn new(s: Vec<f64>, c: Vec<f64>) -> Column {
+        let (ss, sc, cc) = (dot(&s, &s), dot(&s, &c), dot(&c, &c));
+        let det = ss * cc - sc * sc;
+        let scale = ss.max(cc);
+        let ok = !(scale.is_nan() || scale <= 0.0 || det.is_nan() || det <= 1e-10 * scale * scale);
+        Column {
+            s,
+            c,
+            ss,
+            sc,
+            cc,
+            det,
+            ok,
+        }
+    }
+}
+
+/// A frequency grid over [f_lo, f_hi] with its projected columns, for the scans of all
+/// tests of one plan.
+#[derive(Debug, Clone)]
+pub(crate) struct Grid {
+    freqs: Vec<f64>,
+    columns: Vec<Column>,
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
@@ -118,9 +169,27 @@ fn project_out(basis: &[Vec<f64>], v: &mut [f64]) {
     }
 }
 
-impl Scanner {
-    /// `y` at `positions`, with variances `var` (None: equal weights, unknown scatter).
-    pub fn new(positions: &[f64], y: &[f64], var: Option<&[f64]>) -> Scanner {
+/// The least-squares sinusoid a·sin + b·cos of the residual `resid` given the projected
+/// columns (shared by the cached grid and the on-the-fly fits, so both agree to the bit).
+fn solve(
+    s: &[f64],
+    c: &[f64],
+    ss: f64,
+    sc: f64,
+    cc: f64,
+    det: f64,
+    resid: &[f64],
+) -> (f64, f64, f64) {
+    let (sy, cy) = (dot(s, resid), dot(c, resid));
+    let a = (cc * sy - sc * cy) / det;
+    let b = (ss * cy - sc * sy) / det;
+    ((a * sy + b * cy).max(0.0), a, b)
+}
+
+impl Trend {
+    /// The trend basis at `positions` with variances `var` (None: equal weights,
+    /// unknown scatter).
+    pub fn new(positions: &[f64], var: Option<&[f64]>) -> Trend {
         let m = positions.len();
         let sw: Vec<f64> = (0..m)
             .map(|i| var.map_or(1.0, |v| 1.0 / v[i].sqrt()))
@@ -143,26 +212,75 @@ impl Scanner {
                 basis.push(v);
             }
         }
-        let mut resid: Vec<f64> = y.iter().zip(&sw).map(|(yi, s)| s * yi).collect();
-        project_out(&basis, &mut resid);
-        let rss_trend = dot(&resid, &resid);
-        let dof = m as f64 - basis.len() as f64 - 2.0;
-        Scanner {
+        Trend {
             positions: positions.to_vec(),
             sw,
             basis,
-            resid,
-            rss_trend,
             absolute: var.is_some(),
-            dof,
         }
     }
 
+    /// The values `y` (one per position) scanned against this trend.
+    pub fn scanner(&self, y: &[f64]) -> Scanner<'_> {
+        let m = self.positions.len();
+        let mut resid: Vec<f64> = y.iter().zip(&self.sw).map(|(yi, s)| s * yi).collect();
+        project_out(&self.basis, &mut resid);
+        let rss_trend = dot(&resid, &resid);
+        let dof = m as f64 - self.basis.len() as f64 - 2.0;
+        Scanner {
+            trend: self,
+            resid,
+            rss_trend,
+            dof,
+            scratch: RefCell::new((Vec::with_capacity(m), Vec::with_capacity(m))),
+        }
+    }
+
+    /// The weighted sine and cosine of frequency `f` at the positions, with the trend
+    /// projected out, into `s` and `c`.
+    fn project(&self, f: f64, s: &mut Vec<f64>, c: &mut Vec<f64>) {
+        s.clear();
+        c.clear();
+        s.extend(
+            self.positions
+                .iter()
+                .zip(&self.sw)
+                .map(|(p, w)| w * (TAU * f * p).sin()),
+        );
+        c.extend(
+            self.positions
+                .iter()
+                .zip(&self.sw)
+                .map(|(p, w)| w * (TAU * f * p).cos()),
+        );
+        project_out(&self.basis, s);
+        project_out(&self.basis, c);
+    }
+
+    /// The grid of [`Scanner::best`] over [f_lo, f_hi] with its columns.
+    pub fn grid(&self, f_lo: f64, f_hi: f64, length: f64) -> Grid {
+        let step = 1.0 / (OVERSAMPLE * length);
+        let count = (((f_hi - f_lo) / step).ceil() as usize + 1).clamp(2, MAX_GRID);
+        let step = (f_hi - f_lo) / (count - 1) as f64;
+        let freqs: Vec<f64> = (0..count).map(|k| f_lo + k as f64 * step).collect();
+        let columns = freqs
+            .iter()
+            .map(|&f| {
+                let (mut s, mut c) = (Vec::new(), Vec::new());
+                self.project(f, &mut s, &mut c);
+                Column::new(s, c)
+            })
+            .collect();
+        Grid { freqs, columns }
+    }
+}
+
+impl Scanner<'_> {
     /// The trend's residual per target, unweighted.
     pub fn trend_residuals(&self) -> Vec<f64> {
         self.resid
             .iter()
-            .zip(&self.sw)
+            .zip(&self.trend.sw)
             .map(|(r, s)| r / s)
             .collect()
     }
@@ -175,30 +293,26 @@ impl Scanner {
     /// The sinusoid of frequency `f` fitted jointly with the trend: (ΔRSS, a, b) with
     /// a·sin + b·cos.
     fn fit(&self, f: f64) -> (f64, f64, f64) {
-        let mut s: Vec<f64> = self
-            .positions
-            .iter()
-            .zip(&self.sw)
-            .map(|(p, w)| w * (TAU * f * p).sin())
-            .collect();
-        let mut c: Vec<f64> = self
-            .positions
-            .iter()
-            .zip(&self.sw)
-            .map(|(p, w)| w * (TAU * f * p).cos())
-            .collect();
-        project_out(&self.basis, &mut s);
-        project_out(&self.basis, &mut c);
-        let (ss, sc, cc) = (dot(&s, &s), dot(&s, &c), dot(&c, &c));
-        let (sy, cy) = (dot(&s, &self.resid), dot(&c, &self.resid));
+        let mut guard = self.scratch.borrow_mut();
+        let (s, c) = &mut *guard;
+        self.trend.project(f, s, c);
+        let (ss, sc, cc) = (dot(s, s), dot(s, c), dot(c, c));
         let det = ss * cc - sc * sc;
         let scale = ss.max(cc);
         if scale.is_nan() || scale <= 0.0 || det.is_nan() || det <= 1e-10 * scale * scale {
             return (0.0, 0.0, 0.0);
         }
-        let a = (cc * sy - sc * cy) / det;
-        let b = (ss * cy - sc * sy) / det;
-        ((a * sy + b * cy).max(0.0), a, b)
+        solve(s, c, ss, sc, cc, det, &self.resid)
+    }
+
+    /// [`Scanner::fit`] at the `k`-th frequency of `grid` (built from this scanner's
+    /// trend), from its cached columns.
+    fn fit_grid(&self, grid: &Grid, k: usize) -> (f64, f64, f64) {
+        let col = &grid.columns[k];
+        if !col.ok {
+            return (0.0, 0.0, 0.0);
+        }
+        solve(&col.s, &col.c, col.ss, col.sc, col.cc, col.det, &self.resid)
     }
 
     /// The F-statistic at frequency `f`.
@@ -229,30 +343,29 @@ impl Scanner {
             } else {
                 1.0
             },
-            p_chi2: self.absolute.then(|| chi2_upper(delta, 2.0)),
+            p_chi2: self.trend.absolute.then(|| chi2_upper(delta, 2.0)),
         }
     }
 
-    /// The highest F over frequencies [f_lo, f_hi] (grid, then a golden-section refine).
-    pub fn best(&self, f_lo: f64, f_hi: f64, length: f64) -> (f64, Vec<(f64, f64)>) {
-        let step = 1.0 / (OVERSAMPLE * length);
-        let count = (((f_hi - f_lo) / step).ceil() as usize + 1).clamp(2, MAX_GRID);
-        let step = (f_hi - f_lo) / (count - 1) as f64;
-        let grid: Vec<(f64, f64)> = (0..count)
+    /// The highest F over the frequencies of `grid` (see [`Trend::grid`]), then a
+    /// golden-section refine: the refined frequency and (f, ΔRSS, F) per grid frequency.
+    pub fn best(&self, grid: &Grid) -> (f64, Vec<(f64, f64, f64)>) {
+        let count = grid.freqs.len();
+        let scan: Vec<(f64, f64, f64)> = (0..count)
             .map(|k| {
-                let f = f_lo + k as f64 * step;
-                (f, self.f_stat(f))
+                let (d, _, _) = self.fit_grid(grid, k);
+                (grid.freqs[k], d, self.f_of(d))
             })
             .collect();
         let (kbest, _) =
-            grid.iter()
+            scan.iter()
                 .enumerate()
-                .fold((0, f64::NEG_INFINITY), |(kb, fb), (k, &(_, v))| {
+                .fold((0, f64::NEG_INFINITY), |(kb, fb), (k, &(_, _, v))| {
                     if v > fb { (k, v) } else { (kb, fb) }
                 });
-        let a = grid[kbest.saturating_sub(1)].0;
-        let b = grid[(kbest + 1).min(count - 1)].0;
-        (self.refine(a, b), grid)
+        let a = scan[kbest.saturating_sub(1)].0;
+        let b = scan[(kbest + 1).min(count - 1)].0;
+        (self.refine(a, b), scan)
     }
 
     /// Golden-section search for the highest F in [a, b].
@@ -347,7 +460,8 @@ pub(crate) fn search(
     if positions.len() < TREND_DEGREE + 2 {
         return out;
     }
-    let scanner = Scanner::new(positions, y, var);
+    let trend = Trend::new(positions, var);
+    let scanner = trend.scanner(y);
     let r = scanner.trend_residuals();
     let dof = scanner.trend_dof();
     if dof > 0.0 {
@@ -357,14 +471,14 @@ pub(crate) fn search(
         return out;
     }
     let (f_lo, f_hi) = (1.0 / res.p_max, 1.0 / res.p_min);
-    let (f_best, grid) = scanner.best(f_lo, f_hi, res.length);
+    let grid = trend.grid(f_lo, f_hi, res.length);
+    let (f_best, scan) = scanner.best(&grid);
     let m_eff = trials(f_lo, f_hi, res.length);
-    let every = grid.len().div_ceil(600).max(1);
-    out.periodogram = grid
+    let every = scan.len().div_ceil(600).max(1);
+    out.periodogram = scan
         .iter()
         .step_by(every)
-        .map(|&(f, _)| {
-            let (d, _, _) = scanner.fit(f);
+        .map(|&(f, d, _)| {
             let power = if scanner.rss_trend > 0.0 {
                 d / scanner.rss_trend
             } else {

@@ -188,12 +188,19 @@ pub fn max_of(p: f64, m: f64) -> f64 {
 
 /// The q-quantile (0 ≤ q ≤ 1) of `values` by linear interpolation between order
 /// statistics (type 7); NaN for no values.
+#[cfg(test)]
 pub fn quantile(values: &[f64], q: f64) -> f64 {
     let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+    v.sort_by(f64::total_cmp);
+    quantile_sorted(&v, q)
+}
+
+/// [`quantile`] of values that are all finite and sorted ascending (so that several
+/// quantiles of one sample need one sort).
+pub fn quantile_sorted(v: &[f64], q: f64) -> f64 {
     if v.is_empty() {
         return f64::NAN;
     }
-    v.sort_by(f64::total_cmp);
     let h = (v.len() - 1) as f64 * q.clamp(0.0, 1.0);
     let lo = h.floor() as usize;
     let hi = h.ceil() as usize;

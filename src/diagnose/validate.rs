@@ -21,7 +21,7 @@
 //! others by the simulator's C¹ cubic through them (base) or by that interpolation of
 //! what the periodic term leaves plus the term (extended).
 
-use super::periodic::Scanner;
+use super::periodic::Trend;
 use super::prep::Prep;
 use super::scatter;
 use super::time::{Terms, TimeFit, fit};
@@ -232,7 +232,7 @@ pub(crate) fn between_targets(positions: &[f64], y: &[f64], period: f64) -> (f64
         let v: Vec<f64> = others.iter().map(|&k| y[k]).collect();
         let knots: Vec<[f64; 2]> = p.iter().zip(&v).map(|(a, b)| [*a, *b]).collect();
         let base = interpolate(&knots, positions[i]);
-        let peak = Scanner::new(&p, &v, None).peak(f);
+        let peak = Trend::new(&p, None).scanner(&v).peak(f);
         let phase = peak.phase_deg.to_radians();
         let wave = |x: f64| peak.amplitude * (TAU * f * x + phase).sin();
         let rest: Vec<[f64; 2]> = p.iter().zip(&v).map(|(a, b)| [*a, b - wave(*a)]).collect();
