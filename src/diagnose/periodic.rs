@@ -158,6 +158,31 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
+/// `dot(q, a)` and `dot(q, b)` in one pass, each summed in the same order and from the
+/// same −0.0 as `Iterator::sum` (so the bits are those of two `dot`s), with the two
+/// sums interleaved.
+fn dot2(q: &[f64], a: &[f64], b: &[f64]) -> (f64, f64) {
+    let (mut x, mut y) = (-0.0, -0.0);
+    for ((qi, ai), bi) in q.iter().zip(a).zip(b) {
+        x += qi * ai;
+        y += qi * bi;
+    }
+    (x, y)
+}
+
+/// `project_out(basis, a)` and `project_out(basis, b)`, interleaved.
+fn project_out2(basis: &[Vec<f64>], a: &mut [f64], b: &mut [f64]) {
+    for _ in 0..2 {
+        for q in basis {
+            let (ca, cb) = dot2(q, a, b);
+            for ((ai, bi), qi) in a.iter_mut().zip(b.iter_mut()).zip(q) {
+                *ai -= ca * qi;
+                *bi -= cb * qi;
+            }
+        }
+    }
+}
+
 fn project_out(basis: &[Vec<f64>], v: &mut [f64]) {
     for _ in 0..2 {
         for q in basis {
@@ -180,7 +205,11 @@ fn solve(
     det: f64,
     resid: &[f64],
 ) -> (f64, f64, f64) {
-    let (sy, cy) = (dot(s, resid), dot(c, resid));
+    let (sy, cy) = dot2(resid, s, c);
+    from_products(ss, sc, cc, det, sy, cy)
+}
+
+fn from_products(ss: f64, sc: f64, cc: f64, det: f64, sy: f64, cy: f64) -> (f64, f64, f64) {
     let a = (cc * sy - sc * cy) / det;
     let b = (ss * cy - sc * sy) / det;
     ((a * sy + b * cy).max(0.0), a, b)
@@ -241,20 +270,14 @@ impl Trend {
     fn project(&self, f: f64, s: &mut Vec<f64>, c: &mut Vec<f64>) {
         s.clear();
         c.clear();
-        s.extend(
-            self.positions
-                .iter()
-                .zip(&self.sw)
-                .map(|(p, w)| w * (TAU * f * p).sin()),
-        );
-        c.extend(
-            self.positions
-                .iter()
-                .zip(&self.sw)
-                .map(|(p, w)| w * (TAU * f * p).cos()),
-        );
-        project_out(&self.basis, s);
-        project_out(&self.basis, c);
+        // sin_cos compiles to glibc's sincos, which shares sin's and cos's reduction
+        // and kernels and so returns their bits (checked on 10⁸ arguments).
+        for (p, w) in self.positions.iter().zip(&self.sw) {
+            let (sin, cos) = (TAU * f * p).sin_cos();
+            s.push(w * sin);
+            c.push(w * cos);
+        }
+        project_out2(&self.basis, s, c);
     }
 
     /// The grid of [`Scanner::best`] over [f_lo, f_hi] with its columns.
@@ -296,13 +319,22 @@ impl Scanner<'_> {
         let mut guard = self.scratch.borrow_mut();
         let (s, c) = &mut *guard;
         self.trend.project(f, s, c);
-        let (ss, sc, cc) = (dot(s, s), dot(s, c), dot(c, c));
+        // The five sums of `dot(s, s)`, `dot(s, c)`, `dot(c, c)`, `dot(s, resid)` and
+        // `dot(c, resid)` in one pass.
+        let (mut ss, mut sc, mut cc, mut sy, mut cy) = (-0.0, -0.0, -0.0, -0.0, -0.0);
+        for ((si, ci), ri) in s.iter().zip(c.iter()).zip(&self.resid) {
+            ss += si * si;
+            sc += si * ci;
+            cc += ci * ci;
+            sy += si * ri;
+            cy += ci * ri;
+        }
         let det = ss * cc - sc * sc;
         let scale = ss.max(cc);
         if scale.is_nan() || scale <= 0.0 || det.is_nan() || det <= 1e-10 * scale * scale {
             return (0.0, 0.0, 0.0);
         }
-        solve(s, c, ss, sc, cc, det, &self.resid)
+        from_products(ss, sc, cc, det, sy, cy)
     }
 
     /// [`Scanner::fit`] at the `k`-th frequency of `grid` (built from this scanner's
@@ -583,6 +615,24 @@ mod tests {
         assert!(r5 < 0.08 && r5 > 0.02, "{r5}");
         assert!(r1 < 0.025, "{r1}");
         assert!(k5 < 0.07, "{k5}");
+    }
+
+    /// [`Trend::project`] relies on `sin_cos` (glibc's sincos) giving the bits of `sin`
+    /// and `cos` apart, as the scans computed them before.
+    #[test]
+    fn sin_cos_is_sin_and_cos() {
+        use std::hint::black_box;
+        let mut rng = crate::simulate::rng::Rng::new(5, 5);
+        for k in 0..200_000 {
+            let x = match k % 3 {
+                0 => rng.range(0.0, 10.0),
+                1 => rng.range(0.0, 2000.0),
+                _ => rng.range(-1e6, 1e6),
+            };
+            let (s, c) = x.sin_cos();
+            assert_eq!(s.to_bits(), black_box(x).sin().to_bits(), "sin {x}");
+            assert_eq!(c.to_bits(), black_box(x).cos().to_bits(), "cos {x}");
+        }
     }
 
     #[test]
