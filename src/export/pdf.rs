@@ -94,25 +94,34 @@ impl Exporter for Pdf {
         };
         let paths = report_paths(result);
         let work: Vec<_> = result.tests.iter().zip(paths).collect();
-        let mut files: Vec<OutputFile> = Vec::with_capacity(work.len() + 1);
-        // In chunks, evicting Typst's memo caches between them: memory stays bounded
-        // however many reports a campaign has.
-        for chunk in work.chunks(REPORTS_PER_CHUNK) {
-            let rendered = chunk
-                .par_iter()
-                .map(|(t, path)| {
-                    Ok(OutputFile {
-                        path: path.clone(),
-                        bytes: self.reports.axis(result, t).map_err(err)?.pdf,
-                    })
-                })
-                .collect::<Result<Vec<_>, ExportError>>()?;
-            files.extend(rendered);
-            report::evict_caches();
-        }
+        // The summary (one table row per axis: 1.5 s for 1 000 axes) is typeset beside the
+        // axis reports, not after them on one core while the others wait.
+        let (summary, axis_reports) = rayon::join(
+            || self.reports.summary(result).map_err(err),
+            || -> Result<Vec<OutputFile>, ExportError> {
+                let mut files: Vec<OutputFile> = Vec::with_capacity(work.len() + 1);
+                // In chunks, evicting Typst's memo caches between them: memory stays
+                // bounded however many reports a campaign has.
+                for chunk in work.chunks(REPORTS_PER_CHUNK) {
+                    let rendered = chunk
+                        .par_iter()
+                        .map(|(t, path)| {
+                            Ok(OutputFile {
+                                path: path.clone(),
+                                bytes: self.reports.axis(result, t).map_err(err)?.pdf,
+                            })
+                        })
+                        .collect::<Result<Vec<_>, ExportError>>()?;
+                    files.extend(rendered);
+                    report::evict_caches();
+                }
+                Ok(files)
+            },
+        );
+        let mut files = axis_reports?;
         files.push(OutputFile {
             path: "summary.pdf".into(),
-            bytes: self.reports.summary(result).map_err(err)?.pdf,
+            bytes: summary?.pdf,
         });
         report::evict_caches();
         Ok(files)
