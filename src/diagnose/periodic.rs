@@ -111,15 +111,15 @@ pub(crate) struct Scanner<'a> {
     pub rss_trend: f64,
     dof: f64,
     /// Scratch for the projected sine and cosine of a trial frequency.
-    scratch: RefCell<(Vec<f64>, Vec<f64>)>,
+    scratch: RefCell<Vec<[f64; 2]>>,
 }
 
 /// The projected sine and cosine columns of one trial frequency and their products:
 /// everything of a fit that does not depend on the data.
 #[derive(Debug, Clone)]
 struct Column {
-    s: Vec<f64>,
-    c: Vec<f64>,
+    /// [sine, cosine] per target.
+    sc_cols: Vec<[f64; 2]>,
     ss: f64,
     sc: f64,
     cc: f64,
@@ -129,14 +129,18 @@ struct Column {
 }
 
 impl Column {
-    fn new(s: Vec<f64>, c: Vec<f64>) -> Column {
-        let (ss, sc, cc) = (dot(&s, &s), dot(&s, &c), dot(&c, &c));
+    fn new(sc_cols: Vec<[f64; 2]>) -> Column {
+        let (mut ss, mut sc, mut cc) = (-0.0, -0.0, -0.0);
+        for [si, ci] in &sc_cols {
+            ss += si * si;
+            sc += si * ci;
+            cc += ci * ci;
+        }
         let det = ss * cc - sc * sc;
         let scale = ss.max(cc);
         let ok = !(scale.is_nan() || scale <= 0.0 || det.is_nan() || det <= 1e-10 * scale * scale);
         Column {
-            s,
-            c,
+            sc_cols,
             ss,
             sc,
             cc,
@@ -158,26 +162,21 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-/// `dot(q, a)` and `dot(q, b)` in one pass, each summed in the same order and from the
-/// same −0.0 as `Iterator::sum` (so the bits are those of two `dot`s), with the two
-/// sums interleaved.
-fn dot2(q: &[f64], a: &[f64], b: &[f64]) -> (f64, f64) {
-    let (mut x, mut y) = (-0.0, -0.0);
-    for ((qi, ai), bi) in q.iter().zip(a).zip(b) {
-        x += qi * ai;
-        y += qi * bi;
-    }
-    (x, y)
-}
-
-/// `project_out(basis, a)` and `project_out(basis, b)`, interleaved.
-fn project_out2(basis: &[Vec<f64>], a: &mut [f64], b: &mut [f64]) {
+/// `project_out` of the sine and the cosine columns, stored as [sine, cosine] per
+/// target: each column's sums and updates are those of `project_out` alone (sums in the
+/// same order from the same −0.0 as `Iterator::sum` in `dot`), so the bits are the same,
+/// but the two columns share each pass (and a vector register).
+fn project_out_pairs(basis: &[Vec<f64>], v: &mut [[f64; 2]]) {
     for _ in 0..2 {
         for q in basis {
-            let (ca, cb) = dot2(q, a, b);
-            for ((ai, bi), qi) in a.iter_mut().zip(b.iter_mut()).zip(q) {
-                *ai -= ca * qi;
-                *bi -= cb * qi;
+            let mut c = [-0.0, -0.0];
+            for (vi, qi) in v.iter().zip(q) {
+                c[0] += qi * vi[0];
+                c[1] += qi * vi[1];
+            }
+            for (vi, qi) in v.iter_mut().zip(q) {
+                vi[0] -= c[0] * qi;
+                vi[1] -= c[1] * qi;
             }
         }
     }
@@ -196,17 +195,13 @@ fn project_out(basis: &[Vec<f64>], v: &mut [f64]) {
 
 /// The least-squares sinusoid a·sin + b·cos of the residual `resid` given the projected
 /// columns (shared by the cached grid and the on-the-fly fits, so both agree to the bit).
-fn solve(
-    s: &[f64],
-    c: &[f64],
-    ss: f64,
-    sc: f64,
-    cc: f64,
-    det: f64,
-    resid: &[f64],
-) -> (f64, f64, f64) {
-    let (sy, cy) = dot2(resid, s, c);
-    from_products(ss, sc, cc, det, sy, cy)
+fn solve(col: &Column, resid: &[f64]) -> (f64, f64, f64) {
+    let (mut sy, mut cy) = (-0.0, -0.0);
+    for ([si, ci], ri) in col.sc_cols.iter().zip(resid) {
+        sy += si * ri;
+        cy += ci * ri;
+    }
+    from_products(col.ss, col.sc, col.cc, col.det, sy, cy)
 }
 
 fn from_products(ss: f64, sc: f64, cc: f64, det: f64, sy: f64, cy: f64) -> (f64, f64, f64) {
@@ -261,23 +256,21 @@ impl Trend {
             resid,
             rss_trend,
             dof,
-            scratch: RefCell::new((Vec::with_capacity(m), Vec::with_capacity(m))),
+            scratch: RefCell::new(Vec::with_capacity(m)),
         }
     }
 
-    /// The weighted sine and cosine of frequency `f` at the positions, with the trend
-    /// projected out, into `s` and `c`.
-    fn project(&self, f: f64, s: &mut Vec<f64>, c: &mut Vec<f64>) {
-        s.clear();
-        c.clear();
+    /// The weighted [sine, cosine] of frequency `f` at the positions, with the trend
+    /// projected out, into `v`.
+    fn project(&self, f: f64, v: &mut Vec<[f64; 2]>) {
+        v.clear();
         // sin_cos compiles to glibc's sincos, which shares sin's and cos's reduction
         // and kernels and so returns their bits (checked on 10⁸ arguments).
-        for (p, w) in self.positions.iter().zip(&self.sw) {
+        v.extend(self.positions.iter().zip(&self.sw).map(|(p, w)| {
             let (sin, cos) = (TAU * f * p).sin_cos();
-            s.push(w * sin);
-            c.push(w * cos);
-        }
-        project_out2(&self.basis, s, c);
+            [w * sin, w * cos]
+        }));
+        project_out_pairs(&self.basis, v);
     }
 
     /// The grid of [`Scanner::best`] over [f_lo, f_hi] with its columns.
@@ -289,9 +282,9 @@ impl Trend {
         let columns = freqs
             .iter()
             .map(|&f| {
-                let (mut s, mut c) = (Vec::new(), Vec::new());
-                self.project(f, &mut s, &mut c);
-                Column::new(s, c)
+                let mut v = Vec::with_capacity(self.positions.len());
+                self.project(f, &mut v);
+                Column::new(v)
             })
             .collect();
         Grid { freqs, columns }
@@ -316,13 +309,11 @@ impl Scanner<'_> {
     /// The sinusoid of frequency `f` fitted jointly with the trend: (ΔRSS, a, b) with
     /// a·sin + b·cos.
     fn fit(&self, f: f64) -> (f64, f64, f64) {
-        let mut guard = self.scratch.borrow_mut();
-        let (s, c) = &mut *guard;
-        self.trend.project(f, s, c);
-        // The five sums of `dot(s, s)`, `dot(s, c)`, `dot(c, c)`, `dot(s, resid)` and
-        // `dot(c, resid)` in one pass.
+        let mut v = self.scratch.borrow_mut();
+        self.trend.project(f, &mut v);
+        // The sums of `Column::new` and `solve` in one pass.
         let (mut ss, mut sc, mut cc, mut sy, mut cy) = (-0.0, -0.0, -0.0, -0.0, -0.0);
-        for ((si, ci), ri) in s.iter().zip(c.iter()).zip(&self.resid) {
+        for ([si, ci], ri) in v.iter().zip(&self.resid) {
             ss += si * si;
             sc += si * ci;
             cc += ci * ci;
@@ -344,7 +335,7 @@ impl Scanner<'_> {
         if !col.ok {
             return (0.0, 0.0, 0.0);
         }
-        solve(&col.s, &col.c, col.ss, col.sc, col.cc, col.det, &self.resid)
+        solve(col, &self.resid)
     }
 
     /// The F-statistic at frequency `f`.
