@@ -165,19 +165,24 @@ fn load_specs(campaign: &Campaign) -> BTreeMap<String, Result<Arc<Spec>, String>
             && let Some(name) = &axis.spec
             && !specs.contains_key(name)
         {
-            specs.insert(name.clone(), load_spec(&campaign.dir, name).map(Arc::new));
+            let spec = load_spec(&campaign.dir, name, campaign.info.allow_outside_paths);
+            specs.insert(name.clone(), spec.map(Arc::new));
         }
     }
     specs
 }
 
-fn load_spec(dir: &Path, name: &str) -> Result<Spec, String> {
+/// A spec named by path, or `specs/NAME.yaml` beside the campaign, or a built-in one; the
+/// path follows the campaign's path rule (inside its folder unless `allow_outside_paths`).
+fn load_spec(dir: &Path, name: &str, allow_outside: bool) -> Result<Spec, String> {
     let is_path = name.ends_with(".yaml") || name.ends_with(".yml");
-    let candidate = if is_path {
-        dir.join(name)
+    let relative = if is_path {
+        name.to_string()
     } else {
-        dir.join("specs").join(format!("{name}.yaml"))
+        format!("specs/{name}.yaml")
     };
+    let candidate = crate::campaign::data::inside(dir, &relative, allow_outside)
+        .map_err(|e| format!("spec `{name}`: {e}"))?;
     if candidate.is_file() {
         let text = std::fs::read_to_string(&candidate)
             .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;

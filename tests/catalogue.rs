@@ -241,6 +241,16 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
             "is absolute",
         ),
         (
+            "spec-climbs-out",
+            "{name: spec-climbs-out, kind: linear, data: data/good.csv, spec: ../../etc/x.yaml}",
+            "leaves the campaign's folder",
+        ),
+        (
+            "spec-absolute",
+            "{name: spec-absolute, kind: linear, data: data/good.csv, spec: /etc/x.yaml}",
+            "is absolute",
+        ),
+        (
             "unknown-key",
             "{name: unknown-key, kind: linear, data: data/good.csv, tolerence: {A: 1}}",
             "did you mean `tolerances`",

@@ -100,8 +100,9 @@ impl DataSource {
     }
 }
 
-/// `base/relative`, refusing absolute paths and paths that leave `base` unless allowed.
-fn inside(base: &Path, relative: &str, allow_outside: bool) -> Result<PathBuf, String> {
+/// `base/relative`, refusing absolute paths and paths that leave `base` unless allowed
+/// (the rule for every path a campaign names: data files and spec files).
+pub fn inside(base: &Path, relative: &str, allow_outside: bool) -> Result<PathBuf, String> {
     if relative.contains('\0') {
         return Err(format!(
             "path `{}` contains a NUL byte",
@@ -112,7 +113,7 @@ fn inside(base: &Path, relative: &str, allow_outside: bool) -> Result<PathBuf, S
     if !allow_outside {
         if rel.is_absolute() || rel.has_root() {
             return Err(format!(
-                "path `{relative}` is absolute; data paths are relative to the campaign's folder (set campaign.allow_outside_paths: true to allow it)"
+                "path `{relative}` is absolute; paths in a campaign are relative to its folder (set campaign.allow_outside_paths: true to allow it)"
             ));
         }
         let mut depth: i64 = 0;
