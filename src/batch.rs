@@ -382,7 +382,7 @@ fn run_test(
 
 /// Applies the NDE correction when the campaign gives the coefficient and temperatures
 /// and the data are not already corrected (clause 3.1).
-fn apply_nde(axis: &AxisSpec, data: AxisData) -> (AxisData, Option<NdeCorrection>) {
+pub fn apply_nde(axis: &AxisSpec, data: AxisData) -> (AxisData, Option<NdeCorrection>) {
     let Some(nde) = &axis.raw.conditions.nde else {
         return (data, None);
     };

@@ -10,7 +10,7 @@
 //!
 //! Uses only the library without its default features (no Typst, no polars).
 
-use axcheck::campaign::{Campaign, SensorKind, Travel};
+use axcheck::campaign::{Campaign, Travel};
 use axcheck::evaluate::gost27843::{Gost27843, SMethod};
 use axcheck::evaluate::{self, Standard, StandardId};
 use axcheck::judge::{self, Limits, Spec};
@@ -119,25 +119,9 @@ pub fn campaign(data: &[u8]) {
             AxisKind::Linear => &fixtures().0,
             AxisKind::Rotary => &fixtures().1,
         };
-        let corrected;
-        let data = match axis.raw.conditions.nde.as_ref() {
-            Some(n) if !n.corrected && n.coefficient_um_per_m_c.is_some() => {
-                let alpha = n.coefficient_um_per_m_c.unwrap_or_default();
-                let readings: Vec<f64> = axis
-                    .raw
-                    .conditions
-                    .temperature_sensors
-                    .iter()
-                    .filter(|s| s.kind == SensorKind::Material)
-                    .flat_map(|s| [s.start_c, s.end_c])
-                    .flatten()
-                    .collect();
-                let t = readings.iter().sum::<f64>() / readings.len().max(1) as f64;
-                corrected = nde::correct(data, alpha, nde::Temperature::Constant(t));
-                corrected.as_ref().map_or(data, |(d, _)| d)
-            }
-            _ => data,
-        };
+        // The campaign's NDE settings applied as `run` applies them (clause 3.1).
+        let (data, _) = axcheck::batch::apply_nde(axis, data.clone());
+        let data = &data;
         let ctx = PlanContext {
             kind: axis.raw.kind,
             standard: axis.standard,
