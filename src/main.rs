@@ -131,12 +131,14 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<ExitCode> {
-    // One pool for the whole process, so --jobs bounds evaluation and typesetting alike.
-    if let Command::Run { jobs, .. } | Command::Check { jobs, .. } = &cli.command
-        && *jobs > 0
-    {
+    // One pool for the whole process, so --jobs bounds evaluation and typesetting alike
+    // (0: one worker per core). Large stacks: while a worker waits inside Typst's own
+    // parallel layout, rayon lets it typeset another report of the chunk on the same
+    // stack, so up to a chunk of reports (32) can nest on one worker.
+    if let Command::Run { jobs, .. } | Command::Check { jobs, .. } = &cli.command {
         rayon::ThreadPoolBuilder::new()
             .num_threads(*jobs)
+            .stack_size(64 << 20)
             .build_global()
             .context("cannot start the worker threads")?;
     }
