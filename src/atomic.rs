@@ -138,6 +138,15 @@ enum Entry {
     Other(&'static str),
 }
 
+/// `path`, an output itself, is taken by `what` (a folder, a link …).
+fn in_the_way(path: PathBuf, what: &'static str) -> OutputError {
+    OutputError::InTheWay {
+        output: path.clone(),
+        path,
+        what,
+    }
+}
+
 fn entry(path: &Path) -> Result<Entry, OutputError> {
     match std::fs::symlink_metadata(path) {
         Ok(m) if m.file_type().is_symlink() => Ok(Entry::Other("a symbolic link")),
@@ -194,20 +203,8 @@ impl OutputDir {
         match entry(&path)? {
             Entry::Missing => return Ok(dir),
             Entry::File => {}
-            Entry::Dir => {
-                return Err(OutputError::InTheWay {
-                    output: path.clone(),
-                    path,
-                    what: "a folder",
-                });
-            }
-            Entry::Other(what) => {
-                return Err(OutputError::InTheWay {
-                    output: path.clone(),
-                    path,
-                    what,
-                });
-            }
+            Entry::Dir => return Err(in_the_way(path, "a folder")),
+            Entry::Other(what) => return Err(in_the_way(path, what)),
         }
         let bad = |line: usize, problem: &str| OutputError::BadManifest {
             path: path.clone(),
@@ -290,20 +287,8 @@ impl OutputDir {
                         manifest: self.manifest_path(),
                     });
                 }
-                Entry::Dir => {
-                    return Err(OutputError::InTheWay {
-                        output: path.clone(),
-                        path,
-                        what: "a folder",
-                    });
-                }
-                Entry::Other(what) => {
-                    return Err(OutputError::InTheWay {
-                        output: path.clone(),
-                        path,
-                        what,
-                    });
-                }
+                Entry::Dir => return Err(in_the_way(path, "a folder")),
+                Entry::Other(what) => return Err(in_the_way(path, what)),
             }
         }
         Ok(())

@@ -327,14 +327,7 @@ fn run_test(
         return slot.error(message);
     }
     let (data, nde) = apply_nde(axis, data);
-    let ctx = PlanContext {
-        kind: axis.raw.kind,
-        standard: axis.standard,
-        axis_travel: axis.raw.travel,
-        measurement_travel: axis.raw.measurement_travel,
-        pitch: axis.raw.pitch,
-    };
-    let findings = rules::check(&ctx, &data);
+    let findings = rules::check(&plan_context(axis), &data);
     let evaluation = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
         Gost27843 {
             s_method: SMethod::Ranges,
@@ -377,6 +370,17 @@ fn run_test(
         findings,
         nde,
         ..slot.outcome(verdict, error)
+    }
+}
+
+/// What the test-plan rules need to know of an axis from the campaign.
+pub fn plan_context(axis: &AxisSpec) -> PlanContext {
+    PlanContext {
+        kind: axis.raw.kind,
+        standard: axis.standard,
+        axis_travel: axis.raw.travel,
+        measurement_travel: axis.raw.measurement_travel,
+        pitch: axis.raw.pitch,
     }
 }
 

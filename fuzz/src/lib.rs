@@ -122,14 +122,7 @@ pub fn campaign(data: &[u8]) {
         // The campaign's NDE settings applied as `run` applies them (clause 3.1).
         let (data, _) = axcheck::batch::apply_nde(axis, data.clone());
         let data = &data;
-        let ctx = PlanContext {
-            kind: axis.raw.kind,
-            standard: axis.standard,
-            axis_travel: axis.raw.travel,
-            measurement_travel: axis.raw.measurement_travel,
-            pitch: axis.raw.pitch,
-        };
-        let _ = rules::check(&ctx, data);
+        let _ = rules::check(&axcheck::batch::plan_context(axis), data);
         let e = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
             Gost27843 {
                 s_method: SMethod::Ranges,
