@@ -131,10 +131,10 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<ExitCode> {
-    // One pool for the whole process, so --jobs bounds evaluation and typesetting alike
-    // (0: one worker per core). Large stacks: while a worker waits inside Typst's own
-    // parallel layout, rayon lets it typeset another report of the chunk on the same
-    // stack, so up to a chunk of reports (32) can nest on one worker.
+    // One pool for the whole process, so --jobs bounds evaluation and Typst's parallel
+    // layout alike (0: one worker per core); reports are typeset by as many threads of
+    // their own (export::pdf). Large stacks: a worker waiting inside Typst's parallel
+    // layout takes up other layout work of the pool on the same stack.
     if let Command::Run { jobs, .. } | Command::Check { jobs, .. } = &cli.command {
         rayon::ThreadPoolBuilder::new()
             .num_threads(*jobs)

@@ -3,7 +3,6 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::CampaignResult;
 use crate::report::{self, Reports};
-use rayon::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;
 
@@ -12,7 +11,7 @@ pub struct Pdf {
 }
 
 /// Reports typeset between two evictions of Typst's caches.
-const REPORTS_PER_CHUNK: usize = 32;
+const REPORTS_PER_EVICTION: usize = 32;
 
 /// A file-name part from user text: ASCII letters, digits, `-`, `_` and `.` kept, anything
 /// else (`/`, `..`, NUL, spaces, non-ASCII) becomes `_`; no leading dot; Windows' reserved
@@ -88,45 +87,101 @@ impl Exporter for Pdf {
     }
 
     fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
-        let err = |e: report::ReportError| ExportError::Format {
+        let paths = report_paths(result);
+        // The summary first: it is the longest job (one table row per axis: 1.5 s for
+        // 1 000 axes) and should not be left to the end.
+        let jobs: Vec<Job> = std::iter::once(Job::Summary)
+            .chain(result.tests.iter().zip(paths).map(|(t, p)| Job::Axis(t, p)))
+            .collect();
+        let mut files = typeset_all(&jobs, rayon::current_num_threads(), |job| match job {
+            Job::Summary => Ok(OutputFile {
+                path: "summary.pdf".into(),
+                bytes: self.reports.summary(result)?.pdf,
+            }),
+            Job::Axis(test, path) => Ok(OutputFile {
+                path: path.clone(),
+                bytes: self.reports.axis(result, test)?.pdf,
+            }),
+        })
+        .map_err(|e| ExportError::Format {
             format: "pdf",
             message: e.to_string(),
-        };
-        let paths = report_paths(result);
-        let work: Vec<_> = result.tests.iter().zip(paths).collect();
-        // The summary (one table row per axis: 1.5 s for 1 000 axes) is typeset beside the
-        // axis reports, not after them on one core while the others wait.
-        let (summary, axis_reports) = rayon::join(
-            || self.reports.summary(result).map_err(err),
-            || -> Result<Vec<OutputFile>, ExportError> {
-                let mut files: Vec<OutputFile> = Vec::with_capacity(work.len() + 1);
-                // In chunks, evicting Typst's memo caches between them: memory stays
-                // bounded however many reports a campaign has.
-                for chunk in work.chunks(REPORTS_PER_CHUNK) {
-                    let rendered = chunk
-                        .par_iter()
-                        .map(|(t, path)| {
-                            Ok(OutputFile {
-                                path: path.clone(),
-                                bytes: self.reports.axis(result, t).map_err(err)?.pdf,
-                            })
-                        })
-                        .collect::<Result<Vec<_>, ExportError>>()?;
-                    files.extend(rendered);
-                    report::evict_caches();
-                }
-                Ok(files)
-            },
-        );
-        let mut files = axis_reports?;
-        files.push(OutputFile {
-            path: "summary.pdf".into(),
-            bytes: summary?.pdf,
-        });
-        report::evict_caches();
+        })?;
+        // Axis reports in campaign order, then the summary (the order of the listing).
+        files.rotate_left(1);
         Ok(files)
     }
 }
+
+/// One document to typeset.
+enum Job<'a> {
+    Summary,
+    Axis(&'a crate::batch::AxisTest, PathBuf),
+}
+
+/// Typesets every job with `workers` threads of its own, each taking the next job as soon as
+/// it is free, and returns the files in the jobs' order; the first error stops the others.
+///
+/// Why not rayon: a rayon worker that waits inside Typst's own parallel page layout takes
+/// up other queued work on the same stack, so reports nested on one worker (stack overflow
+/// on 1 000 reports), and bounding that with chunks left cores idle at every chunk's end
+/// (about a fifth of the run). Here a report runs on its own thread from start to end while
+/// its page layout still uses the rayon pool, and nothing waits for a chunk to finish.
+/// Typst's caches are evicted after every [`REPORTS_PER_EVICTION`] finished reports, which
+/// keeps memory bounded; comemo's caches are safe to evict while other threads compile.
+fn typeset_all<'a>(
+    jobs: &'a [Job<'a>],
+    workers: usize,
+    typeset: impl Fn(&'a Job<'a>) -> Result<OutputFile, report::ReportError> + Sync,
+) -> Result<Vec<OutputFile>, report::ReportError> {
+    use std::sync::Mutex;
+    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+    let next = AtomicUsize::new(0);
+    let finished = AtomicUsize::new(0);
+    let failed = AtomicBool::new(false);
+    let done: Mutex<Vec<(usize, Result<OutputFile, report::ReportError>)>> =
+        Mutex::new(Vec::with_capacity(jobs.len()));
+    let work = || {
+        while !failed.load(Ordering::Relaxed) {
+            let index = next.fetch_add(1, Ordering::Relaxed);
+            let Some(job) = jobs.get(index) else { break };
+            let file = typeset(job);
+            failed.fetch_or(file.is_err(), Ordering::Relaxed);
+            if let Ok(mut done) = done.lock() {
+                done.push((index, file));
+            }
+            if (finished.fetch_add(1, Ordering::Relaxed) + 1).is_multiple_of(REPORTS_PER_EVICTION) {
+                report::evict_caches();
+            }
+        }
+    };
+    let spawned = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..workers.clamp(1, jobs.len().max(1)))
+            .map(|_| {
+                std::thread::Builder::new()
+                    .stack_size(WORKER_STACK)
+                    .spawn_scoped(scope, work)
+            })
+            .collect();
+        handles
+            .into_iter()
+            .all(|h| h.is_ok_and(|h| h.join().is_ok()))
+    });
+    report::evict_caches();
+    let mut done = done.into_inner().unwrap_or_else(|p| p.into_inner());
+    done.sort_by_key(|(index, _)| *index);
+    let files: Vec<OutputFile> = done.into_iter().map(|(_, f)| f).collect::<Result<_, _>>()?;
+    if !spawned || files.len() != jobs.len() {
+        return Err(report::ReportError::Typeset {
+            document: "reports".into(),
+            message: "a typesetting thread could not be started or stopped early".into(),
+        });
+    }
+    Ok(files)
+}
+
+/// Stack of a typesetting thread: Typst's layout recurses deeply on nested content.
+const WORKER_STACK: usize = 64 << 20;
 
 #[cfg(test)]
 mod tests {

@@ -10,6 +10,7 @@ pub(crate) mod chart_kit;
 pub mod charts;
 pub mod data;
 pub mod diagnosis_charts;
+pub mod labels;
 pub mod world;
 
 use crate::batch::{AxisTest, CampaignResult};
@@ -117,18 +118,20 @@ impl Reports {
                 width_px: CHART_WIDTH_PX,
                 height_px: CHART_HEIGHT_PX,
             };
-            files.push((
-                "/charts/bidirectional.svg".into(),
-                charts::bidirectional(&chart, &style).into_bytes(),
-            ));
+            push_chart(
+                &mut files,
+                "bidirectional",
+                charts::bidirectional(&chart, &style),
+            );
             let tall = charts::Style {
                 height_px: UNIDIRECTIONAL_HEIGHT_PX,
                 ..style
             };
-            files.push((
-                "/charts/unidirectional.svg".into(),
-                charts::unidirectional(&chart, &up, &down, &tall).into_bytes(),
-            ));
+            push_chart(
+                &mut files,
+                "unidirectional",
+                charts::unidirectional(&chart, &up, &down, &tall),
+            );
             if let Some(d) = &test.diagnosis {
                 let (checks, in_time, along, periodogram) = data::diagnosis_charts(d);
                 let style = |height_px| diagnosis_charts::Style {
@@ -137,22 +140,26 @@ impl Reports {
                     height_px,
                 };
                 let height = diagnosis_charts::model_checks_height(checks.len());
-                files.push((
-                    "/charts/checks.svg".into(),
-                    diagnosis_charts::model_checks(&checks, &style(height)).into_bytes(),
-                ));
-                files.push((
-                    "/charts/residuals-time.svg".into(),
-                    diagnosis_charts::residuals(&in_time, &style(340)).into_bytes(),
-                ));
-                files.push((
-                    "/charts/residuals-position.svg".into(),
-                    diagnosis_charts::residuals(&along, &style(340)).into_bytes(),
-                ));
-                files.push((
-                    "/charts/periodogram.svg".into(),
-                    diagnosis_charts::periodogram(&periodogram, &style(300)).into_bytes(),
-                ));
+                push_chart(
+                    &mut files,
+                    "checks",
+                    diagnosis_charts::model_checks(&checks, &style(height)),
+                );
+                push_chart(
+                    &mut files,
+                    "residuals-time",
+                    diagnosis_charts::residuals(&in_time, &style(340)),
+                );
+                push_chart(
+                    &mut files,
+                    "residuals-position",
+                    diagnosis_charts::residuals(&along, &style(340)),
+                );
+                push_chart(
+                    &mut files,
+                    "periodogram",
+                    diagnosis_charts::periodogram(&periodogram, &style(300)),
+                );
             }
         }
         let ident = format!(
@@ -196,16 +203,11 @@ impl Reports {
             width_px: CHART_WIDTH_PX,
             height_px: charts::ratio_chart_height(bars.len()),
         };
-        let files = vec![
-            (
-                "/data.json".to_string(),
-                serde_json::to_vec(&data).unwrap_or_default(),
-            ),
-            (
-                "/charts/usage.svg".to_string(),
-                charts::tolerance_usage(&bars, &style).into_bytes(),
-            ),
-        ];
+        let mut files = vec![(
+            "/data.json".to_string(),
+            serde_json::to_vec(&data).unwrap_or_default(),
+        )];
+        push_chart(&mut files, "usage", charts::tolerance_usage(&bars, &style));
         let ident = format!("axcheck/{}/summary", result.info.name);
         self.compile(
             "summary",
@@ -215,6 +217,19 @@ impl Reports {
             ident,
         )
     }
+}
+
+/// A chart's files: `/charts/NAME.svg` (the whole chart, for templates that show it as an
+/// image), and for the templates' `chart("NAME")`: `/charts/NAME-plot.svg` (the drawing
+/// without its labels) and `/charts/NAME.json` (the labels, set by Typst; see [`labels`]).
+fn push_chart(files: &mut Vec<(String, Vec<u8>)>, name: &str, svg: String) {
+    let split = labels::split(&svg, SANS_FAMILY);
+    files.push((
+        format!("/charts/{name}.json"),
+        serde_json::to_vec(&split).unwrap_or_default(),
+    ));
+    files.push((format!("/charts/{name}-plot.svg"), split.svg.into_bytes()));
+    files.push((format!("/charts/{name}.svg"), svg.into_bytes()));
 }
 
 fn diagnostic(d: &SourceDiagnostic) -> String {
