@@ -8,6 +8,7 @@
 
 pub(crate) mod chart_kit;
 pub mod charts;
+pub mod compact;
 pub mod data;
 pub mod diagnosis_charts;
 pub mod labels;
@@ -221,9 +222,11 @@ impl Reports {
 
 /// A chart's files: `/charts/NAME.svg` (the whole chart, for templates that show it as an
 /// image), and for the templates' `chart("NAME")`: `/charts/NAME-plot.svg` (the drawing
-/// without its labels) and `/charts/NAME.json` (the labels, set by Typst; see [`labels`]).
+/// without its labels, like elements merged: see [`compact`]) and `/charts/NAME.json`
+/// (the labels, set by Typst: see [`labels`]).
 fn push_chart(files: &mut Vec<(String, Vec<u8>)>, name: &str, svg: String) {
-    let split = labels::split(&svg, SANS_FAMILY);
+    let mut split = labels::split(&svg, SANS_FAMILY);
+    split.svg = compact::merge_runs(&split.svg);
     files.push((
         format!("/charts/{name}.json"),
         serde_json::to_vec(&split).unwrap_or_default(),
