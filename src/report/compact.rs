@@ -150,16 +150,21 @@ fn shape<'a>(line: &'a str, d: &mut String) -> Option<Paint<'a>> {
             if r <= 0.0 {
                 return None;
             }
-            use std::fmt::Write;
-            write!(
-                d,
-                "M{},{} a{r},{r} 0 1,0 {},0 a{r},{r} 0 1,0 {},0 Z",
-                cx - r,
-                cy,
-                2.0 * r,
-                -2.0 * r
-            )
-            .ok()?;
+            // Two half-circle arcs from the leftmost point.
+            d.push('M');
+            push_number(d, cx - r);
+            d.push(',');
+            push_number(d, cy);
+            for dx in [2.0 * r, -2.0 * r] {
+                d.push_str(" a");
+                push_number(d, r);
+                d.push(',');
+                push_number(d, r);
+                d.push_str(" 0 1,0 ");
+                push_number(d, dx);
+                d.push_str(",0");
+            }
+            d.push_str(" Z");
             Some(paint)
         }
         _ => None,
@@ -226,19 +231,34 @@ fn points(text: &str, d: &mut String) -> Option<usize> {
 
 /// Appends `x,y`, both plain decimal numbers as written (no exponent, no entity).
 fn push_pair(d: &mut String, x: &str, y: &str) -> Option<()> {
-    let plain = |v: &str| {
-        !v.is_empty()
-            && v.bytes()
-                .all(|b| b.is_ascii_digit() || b == b'.' || b == b'-')
-            && v.parse::<f64>().is_ok()
-    };
-    if !(plain(x) && plain(y)) {
+    if !(is_plain_number(x) && is_plain_number(y)) {
         return None;
     }
     d.push_str(x);
     d.push(',');
     d.push_str(y);
     Some(())
+}
+
+/// `-`? digits (`.` digits)?, as plotters writes coordinates.
+fn is_plain_number(v: &str) -> bool {
+    let digits = v.strip_prefix('-').unwrap_or(v);
+    let (int, frac) = digits.split_once('.').unwrap_or((digits, "0"));
+    !int.is_empty()
+        && !frac.is_empty()
+        && int.bytes().all(|b| b.is_ascii_digit())
+        && frac.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// Appends `v`, an integer without a fraction (plotters' coordinates are whole pixels).
+fn push_number(d: &mut String, v: f64) {
+    use std::fmt::Write;
+    // Integer formatting is several times cheaper than `f64`'s shortest round trip.
+    let _ = if v.fract() == 0.0 && v.abs() < 1e15 {
+        write!(d, "{}", v as i64)
+    } else {
+        write!(d, "{v}")
+    };
 }
 
 fn is_colour(value: &str) -> bool {
