@@ -34,7 +34,10 @@ pub struct Label {
     pub bold: bool,
     /// Clockwise rotation in degrees about the anchor (SVG `rotate(a, x, y)`).
     pub rotate: f64,
+    /// The text; lines separated by `\n` when labels were stacked (see [`stack`]).
     pub text: String,
+    /// Distance between the baselines of stacked lines, 0 for one line.
+    pub pitch: f64,
 }
 
 /// A chart split into its drawing and its labels.
@@ -79,7 +82,7 @@ pub fn split(svg: &str, family: &str) -> SplitChart {
         svg: out,
         width,
         height,
-        labels,
+        labels: stack(labels),
     }
 }
 
@@ -181,6 +184,108 @@ fn parse_label(element: &str, family: &str) -> Option<Label> {
         bold,
         rotate,
         text,
+        pitch: 0.0,
+    })
+}
+
+/// How far (SVG pixels) a stacked line may lie from the baseline its label had: the tick
+/// positions plotters writes are rounded to whole pixels, so evenly spaced ticks are up to
+/// a pixel apart from even (0.3 pt on the page).
+const STACK_TOLERANCE_PX: f64 = 0.75;
+
+/// Labels that form a column (same anchor `x`, alignment and look, one line each, baselines
+/// evenly spaced: an axis' tick values, a chart's row names) merged into one label of
+/// several lines. Typst's cost is per placed element, not per line, and a chart's labels
+/// are mostly such columns. The order of labels changes (they are drawn over the chart,
+/// apart from each other); the result is deterministic.
+pub fn stack(labels: Vec<Label>) -> Vec<Label> {
+    // Candidates by look and anchor, in order of first appearance.
+    let mut groups: Vec<Vec<Label>> = Vec::new();
+    for label in labels {
+        match groups.iter_mut().find(|g| stackable(&g[0], &label)) {
+            Some(group) => group.push(label),
+            None => groups.push(vec![label]),
+        }
+    }
+    let mut out = Vec::new();
+    for mut group in groups {
+        group.sort_by(|a, b| baseline(a).total_cmp(&baseline(b)));
+        let mut column: Vec<Label> = Vec::new();
+        for label in group {
+            if !evenly_spaced(column.iter().chain([&label])) {
+                out.extend(merge(std::mem::take(&mut column)));
+            }
+            column.push(label);
+        }
+        out.extend(merge(column));
+    }
+    out
+}
+
+fn stackable(a: &Label, b: &Label) -> bool {
+    a.rotate == 0.0
+        && b.rotate == 0.0
+        && a.pitch == 0.0
+        && b.pitch == 0.0
+        && a.x == b.x
+        && a.align == b.align
+        && a.size == b.size
+        && a.fill == b.fill
+        && a.bold == b.bold
+        && !a.text.contains('\n')
+        && !b.text.contains('\n')
+}
+
+fn baseline(l: &Label) -> f64 {
+    l.y + l.dy
+}
+
+/// Whether the baselines, in order, are strictly monotonic and within the tolerance of an
+/// even spacing that keeps lines apart.
+fn evenly_spaced<'a>(labels: impl Iterator<Item = &'a Label>) -> bool {
+    let lines: Vec<f64> = labels.map(baseline).collect();
+    let n = lines.len();
+    if n < 2 {
+        return true;
+    }
+    let pitch = (lines[n - 1] - lines[0]) / (n - 1) as f64;
+    pitch.abs() > 0.0
+        && lines
+            .windows(2)
+            .all(|w| (w[1] - w[0]).signum() == pitch.signum())
+        && lines
+            .iter()
+            .enumerate()
+            .all(|(i, y)| (y - (lines[0] + pitch * i as f64)).abs() <= STACK_TOLERANCE_PX)
+}
+
+/// One label for a column, its lines from top to bottom (a single label as it is).
+fn merge(mut column: Vec<Label>) -> Option<Label> {
+    if column.len() < 2 {
+        return column.pop();
+    }
+    if baseline(&column[0]) > baseline(&column[column.len() - 1]) {
+        column.reverse();
+    }
+    let n = column.len();
+    let pitch = (baseline(&column[n - 1]) - baseline(&column[0])) / (n - 1) as f64;
+    let text = column
+        .iter()
+        .map(|l| l.text.as_str())
+        .collect::<Vec<_>>()
+        .join("\n");
+    let w = column.iter().map(|l| l.w).fold(0.0, f64::max);
+    let first = column.swap_remove(0);
+    Some(Label {
+        text,
+        pitch,
+        w,
+        dx: match first.align {
+            "left" => 0.0,
+            "center" => -w / 2.0,
+            _ => -w,
+        },
+        ..first
     })
 }
 
@@ -274,6 +379,64 @@ Deviation / µm\n\
         assert_eq!((axis.align, axis.dx, axis.rotate), ("left", 0.0, 270.0));
         assert_eq!(axis.dy, 0.76 * 14.0);
         assert_eq!(axis.fill, "#5F5F5F");
+    }
+
+    fn tick(y: f64, text: &str) -> Label {
+        Label {
+            x: 50.0,
+            y,
+            dx: -60.0,
+            dy: 3.5,
+            w: 60.0,
+            align: "right",
+            size: 14.0,
+            fill: "#1A1A1A".into(),
+            bold: false,
+            rotate: 0.0,
+            text: text.into(),
+            pitch: 0.0,
+        }
+    }
+
+    #[test]
+    fn a_column_of_evenly_spaced_labels_becomes_one_label_of_lines_top_down() {
+        // Tick values bottom to top, at pixel-rounded positions 33 and 32 px apart.
+        let ticks = vec![
+            tick(361.0, "−4"),
+            tick(328.0, "−2"),
+            tick(296.0, "0"),
+            tick(263.0, "2"),
+            tick(231.0, "4"),
+        ];
+        let stacked = stack(ticks);
+        assert_eq!(stacked.len(), 1);
+        let column = &stacked[0];
+        assert_eq!(column.text, "4\n2\n0\n−2\n−4");
+        assert_eq!((column.y, column.dy), (231.0, 3.5));
+        assert_eq!(column.pitch, 32.5);
+        assert_eq!((column.align, column.dx, column.w), ("right", -60.0, 60.0));
+    }
+
+    #[test]
+    fn labels_apart_in_place_or_look_stay_apart() {
+        // Uneven spacing: a column runs while it stays even, then a new one starts.
+        let uneven = stack(vec![
+            tick(100.0, "a"),
+            tick(120.0, "b"),
+            tick(140.0, "c"),
+            tick(190.0, "d"),
+        ]);
+        let texts: Vec<&str> = uneven.iter().map(|l| l.text.as_str()).collect();
+        assert_eq!(texts, ["a\nb\nc", "d"]);
+        let mut other_x = tick(120.0, "b");
+        other_x.x = 51.0;
+        let mut bold = tick(140.0, "c");
+        bold.bold = true;
+        let mut turned = tick(160.0, "d");
+        turned.rotate = 270.0;
+        let apart = stack(vec![tick(100.0, "a"), other_x, bold, turned]);
+        assert_eq!(apart.len(), 4);
+        assert!(apart.iter().all(|l| l.pitch == 0.0));
     }
 
     #[test]
