@@ -99,7 +99,8 @@ pub fn test_json(t: &AxisTest) -> Value {
 }
 
 /// The whole `results.json` value.
-pub fn results_json(result: &CampaignResult) -> Value {
+/// Everything of `results.json` but the axes (`"axes": []`, last).
+fn results_head(result: &CampaignResult) -> Value {
     let mut campaign = serde_json::to_value(&result.info).unwrap_or(Value::Null);
     if let Some(c) = campaign.as_object_mut() {
         c.insert("file".into(), json!(result.file_name));
@@ -114,8 +115,40 @@ pub fn results_json(result: &CampaignResult) -> Value {
         "axcheck": env!("CARGO_PKG_VERSION"),
         "campaign": campaign,
         "counts": counts,
-        "axes": result.tests.iter().map(test_json).collect::<Vec<_>>(),
+        "axes": [],
     })
+}
+
+/// `results.json`, pretty-printed: the axes are serialised in parallel (1 000 axes are
+/// 48 MB, 0.8 s of one core) and set into the head as `to_vec_pretty` would place them.
+pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Error> {
+    use rayon::prelude::*;
+    let axes: Vec<Vec<u8>> = result
+        .tests
+        .par_iter()
+        .map(|t| serde_json::to_vec_pretty(&test_json(t)))
+        .collect::<Result<_, _>>()?;
+    let mut out = serde_json::to_vec_pretty(&results_head(result))?;
+    let empty = b"\"axes\": []\n}";
+    if axes.is_empty() || !out.ends_with(empty) {
+        return Ok(out);
+    }
+    out.truncate(out.len() - b"[]\n}".len());
+    out.reserve(axes.iter().map(|a| a.len() + a.len() / 8).sum());
+    out.extend_from_slice(b"[\n");
+    for (i, axis) in axes.iter().enumerate() {
+        // An element of the top-level object's array: four spaces deeper than standalone.
+        out.extend_from_slice(b"    ");
+        for &byte in axis {
+            out.push(byte);
+            if byte == b'\n' {
+                out.extend_from_slice(b"    ");
+            }
+        }
+        out.extend_from_slice(if i + 1 < axes.len() { b",\n" } else { b"\n" });
+    }
+    out.extend_from_slice(b"  ]\n}");
+    Ok(out)
 }
 
 impl Exporter for Json {
@@ -124,11 +157,10 @@ impl Exporter for Json {
     }
 
     fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
-        let mut bytes =
-            serde_json::to_vec_pretty(&results_json(result)).map_err(|e| ExportError::Format {
-                format: "json",
-                message: e.to_string(),
-            })?;
+        let mut bytes = results_json(result).map_err(|e| ExportError::Format {
+            format: "json",
+            message: e.to_string(),
+        })?;
         bytes.push(b'\n');
         Ok(vec![OutputFile {
             path: "results.json".into(),
