@@ -98,6 +98,10 @@ impl Reports {
         let options = typst_pdf::PdfOptions {
             ident: Smart::Custom(ident),
             timestamp: None,
+            // Untagged: the structure tree and a marked-content span around every text run
+            // were 3 % of a report's time and a third of its page content; the reports are
+            // data sheets, not documents that claim PDF/UA (text stays searchable).
+            tagged: false,
             ..typst_pdf::PdfOptions::default()
         };
         let pdf = typst_pdf::pdf(&doc, &options)
