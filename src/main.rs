@@ -131,10 +131,9 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<ExitCode> {
-    // One pool for the whole process, so --jobs bounds evaluation and Typst's parallel
-    // layout alike (0: one worker per core); reports are typeset by as many threads of
-    // their own (export::pdf). Large stacks: a worker waiting inside Typst's parallel
-    // layout takes up other layout work of the pool on the same stack.
+    // One pool for the whole process: --jobs workers evaluate the axes (0: one per core);
+    // reports are typeset by as many workers of their own (export::pdf), so --jobs bounds
+    // both. Large stacks, as Typst's layout recurses deeply.
     if let Command::Run { jobs, .. } | Command::Check { jobs, .. } = &cli.command {
         rayon::ThreadPoolBuilder::new()
             .num_threads(*jobs)

@@ -122,13 +122,14 @@ enum Job<'a> {
 /// Typesets every job with `workers` threads of its own, each taking the next job as soon as
 /// it is free, and returns the files in the jobs' order; the first error stops the others.
 ///
-/// Why not rayon: a rayon worker that waits inside Typst's own parallel page layout takes
-/// up other queued work on the same stack, so reports nested on one worker (stack overflow
-/// on 1 000 reports), and bounding that with chunks left cores idle at every chunk's end
-/// (about a fifth of the run). Here a report runs on its own thread from start to end while
-/// its page layout still uses the rayon pool, and nothing waits for a chunk to finish.
-/// Typst's caches are evicted after every [`REPORTS_PER_EVICTION`] finished reports, which
-/// keeps memory bounded; comemo's caches are safe to evict while other threads compile.
+/// Why not one rayon pool for all reports: a rayon worker that waits inside Typst's own
+/// parallel page layout takes up other queued work on the same stack, so reports nested on
+/// one worker (stack overflow on 1 000 reports), and bounding that with chunks left cores
+/// idle at every chunk's end (about a fifth of the run). Here each worker is the single
+/// thread of a pool of its own and runs a report from start to end, its page layout
+/// included, and nothing waits for a chunk to finish. Typst's caches are evicted after
+/// every [`REPORTS_PER_EVICTION`] finished reports, which keeps memory bounded; comemo's
+/// caches are safe to evict while other threads compile.
 fn typeset_all<'a>(
     jobs: &'a [Job<'a>],
     workers: usize,
@@ -155,18 +156,26 @@ fn typeset_all<'a>(
             }
         }
     };
-    let spawned = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..workers.clamp(1, jobs.len().max(1)))
-            .map(|_| {
-                std::thread::Builder::new()
-                    .stack_size(WORKER_STACK)
-                    .spawn_scoped(scope, work)
-            })
-            .collect();
-        handles
-            .into_iter()
-            .all(|h| h.is_ok_and(|h| h.join().is_ok()))
-    });
+    // Each worker is the one thread of a rayon pool of its own: Typst's parallel page
+    // layout then runs on the worker itself, with no hand-off to a shared pool and no
+    // other report to take up while it waits.
+    let pools: Vec<rayon::ThreadPool> = (0..workers.clamp(1, jobs.len().max(1)))
+        .filter_map(|_| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(1)
+                .stack_size(WORKER_STACK)
+                .build()
+                .ok()
+        })
+        .collect();
+    let spawned = !pools.is_empty()
+        && std::thread::scope(|scope| {
+            let handles: Vec<_> = pools
+                .iter()
+                .map(|pool| scope.spawn(|| pool.install(work)))
+                .collect();
+            handles.into_iter().all(|h| h.join().is_ok())
+        });
     report::evict_caches();
     let mut done = done.into_inner().unwrap_or_else(|p| p.into_inner());
     done.sort_by_key(|(index, _)| *index);
