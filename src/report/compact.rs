@@ -261,8 +261,16 @@ fn push_number(d: &mut String, v: f64) {
     };
 }
 
-fn is_colour(value: &str) -> bool {
+/// `#RRGGBB`, as plotters writes colours.
+pub(crate) fn is_colour(value: &str) -> bool {
     value.len() == 7 && value.starts_with('#') && value[1..].bytes().all(|b| b.is_ascii_hexdigit())
+}
+
+/// `key="value"` pairs of an opening tag's attribute text; `None` if malformed.
+pub(crate) fn attribute_list(text: &str) -> Option<Vec<(&str, &str)>> {
+    attributes(text.trim_end_matches('/'))
+        .map(|(key, value)| Some((key?, value)))
+        .collect()
 }
 
 /// `key="value"` pairs of an opening tag; an item is `None` where the text is malformed.

@@ -10,6 +10,7 @@
 //! Only labels in exactly the form plotters writes are cut out; anything else stays in the
 //! SVG and is drawn by the decoder as before, so the picture never loses text.
 
+use super::compact::{attribute_list as attributes, is_colour};
 use serde::Serialize;
 
 /// One label in SVG pixels: its anchor point, where its baseline and start lie relative to
@@ -98,21 +99,6 @@ fn canvas_size(svg: &str) -> Option<(f64, f64)> {
     Some((get("width")?, get("height")?))
 }
 
-/// `key="value"` pairs of an opening tag's attribute text; `None` if malformed.
-fn attributes(text: &str) -> Option<Vec<(&str, &str)>> {
-    let mut attrs = Vec::new();
-    let mut rest = text.trim_start();
-    while !rest.is_empty() && !rest.starts_with('/') {
-        let eq = rest.find("=\"")?;
-        let key = rest[..eq].trim();
-        let value_start = eq + 2;
-        let value_len = rest[value_start..].find('"')?;
-        attrs.push((key, &rest[value_start..value_start + value_len]));
-        rest = rest[value_start + value_len + 1..].trim_start();
-    }
-    Some(attrs)
-}
-
 /// A label from one `<text …>…</text>` element in plotters' form, else `None`.
 fn parse_label(element: &str, family: &str) -> Option<Label> {
     let open_end = element.find('>')?;
@@ -143,7 +129,7 @@ fn parse_label(element: &str, family: &str) -> Option<Label> {
             "font-family" => family_ok = value == family,
             "font-size" => size = value.parse::<f64>().ok(),
             "opacity" if value == "1" => {}
-            "fill" if is_hex_colour(value) => fill = Some(value.to_string()),
+            "fill" if is_colour(value) => fill = Some(value.to_string()),
             "font-weight" if value == "bold" => bold = true,
             "transform" => rotate = parse_rotation(value, x?, y?)?,
             _ => return None,
@@ -287,10 +273,6 @@ fn merge(mut column: Vec<Label>) -> Option<Label> {
         },
         ..first
     })
-}
-
-fn is_hex_colour(value: &str) -> bool {
-    value.len() == 7 && value.starts_with('#') && value[1..].bytes().all(|b| b.is_ascii_hexdigit())
 }
 
 /// The angle of `rotate(a, x, y)` turning about the label's own anchor.
