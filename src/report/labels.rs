@@ -245,13 +245,10 @@ fn evenly_spaced<'a>(labels: impl Iterator<Item = &'a Label>) -> bool {
             .all(|(i, y)| (y - (lines[0] + pitch * i as f64)).abs() <= STACK_TOLERANCE_PX)
 }
 
-/// One label for a column, its lines from top to bottom (a single label as it is).
+/// One label for a column sorted top to bottom (a single label as it is).
 fn merge(mut column: Vec<Label>) -> Option<Label> {
     if column.len() < 2 {
         return column.pop();
-    }
-    if baseline(&column[0]) > baseline(&column[column.len() - 1]) {
-        column.reverse();
     }
     let n = column.len();
     let pitch = (baseline(&column[n - 1]) - baseline(&column[0])) / (n - 1) as f64;

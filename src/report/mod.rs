@@ -71,7 +71,9 @@ impl Reports {
             templates.insert(format!("/{name}"), text);
         }
         Ok(Reports {
-            typesetter: Typesetter::new(templates),
+            typesetter: Typesetter::new(templates).ok_or_else(|| {
+                ReportError::Templates("a template name is not a valid virtual path".into())
+            })?,
         })
     }
 

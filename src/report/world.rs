@@ -29,34 +29,33 @@ pub struct Typesetter {
     library: LazyHash<Library>,
     book: LazyHash<FontBook>,
     fonts: Vec<Font>,
-    /// Template sources by virtual path (`/axis-report.typ` …).
-    templates: HashMap<String, String>,
-    /// The templates parsed once: every document shares them (parsing them again for each
-    /// report cost 3 % of its time), and Typst's caches see the same modules each time.
+    /// The templates by virtual path (`/axis-report.typ` …), parsed once: every document
+    /// shares them (parsing them again for each report cost 3 % of its time), and Typst's
+    /// caches see the same modules each time.
     sources: HashMap<FileId, Source>,
 }
 
 impl Typesetter {
-    /// Loads the fonts and the library; `templates` maps file names to Typst sources.
-    pub fn new(templates: HashMap<String, String>) -> Typesetter {
+    /// Loads the fonts and the library; `templates` maps virtual paths to Typst sources
+    /// (`None` if one is not a valid virtual path).
+    pub fn new(templates: HashMap<String, String>) -> Option<Typesetter> {
         let fonts: Vec<Font> = typst_assets::fonts()
             .chain(INTER)
             .flat_map(|data| Font::iter(Bytes::new(data)))
             .collect();
         let sources = templates
-            .iter()
-            .filter_map(|(name, text)| {
-                let id = file_id(name)?;
-                Some((id, Source::new(id, text.clone())))
+            .into_iter()
+            .map(|(name, text)| {
+                let id = file_id(&name)?;
+                Some((id, Source::new(id, text)))
             })
-            .collect();
-        Typesetter {
+            .collect::<Option<_>>()?;
+        Some(Typesetter {
             library: LazyHash::new(Library::default()),
             book: LazyHash::new(FontBook::from_fonts(&fonts)),
             fonts,
-            templates,
             sources,
-        }
+        })
     }
 
     /// Number of font faces loaded.
@@ -65,7 +64,7 @@ impl Typesetter {
     }
 
     pub fn template(&self, name: &str) -> Option<&str> {
-        self.templates.get(name).map(String::as_str)
+        self.sources.get(&file_id(name)?).map(Source::text)
     }
 }
 
@@ -94,9 +93,6 @@ impl<'a> DocumentWorld<'a> {
         files: Vec<(String, Vec<u8>)>,
         today: Option<(i32, u8, u8)>,
     ) -> Option<DocumentWorld<'a>> {
-        if typesetter.sources.len() != typesetter.templates.len() {
-            return None;
-        }
         let files = files
             .into_iter()
             .filter_map(|(path, bytes)| Some((file_id(&path)?, Bytes::new(bytes))))
