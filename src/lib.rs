@@ -19,4 +19,6 @@ pub mod nde;
 pub mod report;
 pub mod rules;
 pub mod simulate;
+pub mod suggest;
 pub mod units;
+pub mod yaml;

@@ -162,11 +162,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             };
             let name = file.display().to_string();
             let text = if json {
-                let mut value = evaluation.to_json();
-                if let Some(map) = value.as_object_mut() {
-                    map.insert("file".into(), serde_json::json!(name));
-                }
-                serde_json::to_string_pretty(&value)? + "\n"
+                cli::json_with_file(&evaluation.json(), &name)?
             } else {
                 cli::eval::render(&name, &evaluation)
             };
@@ -222,11 +218,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             }
             let name = file.display().to_string();
             let text = if json {
-                let mut value = diagnosis.to_json();
-                if let Some(map) = value.as_object_mut() {
-                    map.insert("file".into(), serde_json::json!(name));
-                }
-                serde_json::to_string_pretty(&value)? + "\n"
+                cli::json_with_file(&diagnosis.to_json(), &name)?
             } else {
                 cli::diagnose::render(&name, &diagnosis)
             };

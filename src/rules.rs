@@ -7,9 +7,9 @@
 //! 4.3.3), a longer one a clause 4.3.3 test; rotary tests over ≤ 360° follow 4.3.4,
 //! longer ones 4.3.5.
 
-use crate::campaign::Travel;
 use crate::evaluate::StandardId;
 use crate::measurement::AxisData;
+use crate::units::Travel;
 use crate::units::{AxisKind, Direction, fmt_position};
 use serde::Serialize;
 

@@ -162,6 +162,23 @@ pub fn fmt_position(value: f64) -> String {
     }
 }
 
+/// Axis travel: a length (`1200`) or the coordinates of its ends (`[-600, 600]`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum Travel {
+    Length(f64),
+    Range([f64; 2]),
+}
+
+impl Travel {
+    pub fn length(self) -> f64 {
+        match self {
+            Travel::Length(l) => l,
+            Travel::Range([a, b]) => (b - a).abs(),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -10,14 +10,14 @@
 //!
 //! Uses only the library without its default features (no Typst, no polars).
 
-use axcheck::campaign::{Campaign, Travel};
+use axcheck::campaign::Campaign;
 use axcheck::evaluate::gost27843::{Gost27843, SMethod};
 use axcheck::evaluate::{self, Standard, StandardId};
 use axcheck::judge::{self, Limits, Spec};
 use axcheck::measurement::{self, AxisData};
 use axcheck::nde;
 use axcheck::rules::{self, PlanContext};
-use axcheck::units::AxisKind;
+use axcheck::units::{AxisKind, Travel};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -46,8 +46,7 @@ pub fn evaluate(data: &[u8]) {
     check_data(&axis);
     for standard in StandardId::ALL {
         let e = evaluate::evaluate(&axis, standard);
-        let _ = e.to_json();
-        let _ = e.parameters_json();
+        let _ = serde_json::to_vec(&e.json());
         let (first, last) = axis.measurement_travel();
         for (_, spec) in builtin_specs() {
             let limits = Limits::new(Some(spec), &BTreeMap::new(), axis.kind, last - first);

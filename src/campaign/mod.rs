@@ -6,18 +6,18 @@
 
 pub mod data;
 pub mod model;
-pub mod yaml;
 
 pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, Instrument, MachineInfo, Nde, OutputOptions,
-    SensorKind, TemperatureSensor, Travel,
+    SensorKind, TemperatureSensor,
 };
 
 use crate::evaluate::StandardId;
+use crate::units::Travel;
+use crate::yaml::{self, LocationIndex, deserialize_at};
 use data::DataSource;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use yaml::{LocationIndex, deserialize_at};
 
 /// A campaign that could not be read at all.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -93,9 +93,7 @@ impl Campaign {
         for key in top.keys() {
             let name = key.as_str().unwrap_or("");
             if name != "campaign" && name != "machines" {
-                let hint = crate::measurement::error::did_you_mean(name, &["campaign", "machines"])
-                    .map(|s| format!(" (did you mean `{s}`?)"))
-                    .unwrap_or_default();
+                let hint = crate::suggest::hint(name, &["campaign", "machines"]);
                 return Err(fail(yaml::Located {
                     at: index.key(name),
                     message: format!("unknown key `{name}`{hint}; expected campaign, machines"),
@@ -356,11 +354,9 @@ fn load_axis(
             });
         }
         for (key, limit) in &raw.tolerances {
-            if !crate::judge::is_known_parameter(key) {
-                let known = crate::judge::known_parameters();
-                let hint = crate::measurement::error::did_you_mean(key, &known)
-                    .map(|s| format!(" (did you mean `{s}`?)"))
-                    .unwrap_or_default();
+            if !crate::evaluate::catalogue::is_limitable_key(key) {
+                let known = crate::evaluate::catalogue::limitable_keys();
+                let hint = crate::suggest::hint(key, known);
                 return Err(yaml::Located {
                     at: index.key(&format!("{base}.tolerances.{key}")),
                     message: format!("{base}.tolerances: unknown parameter `{key}`{hint}"),

@@ -2,7 +2,7 @@
 //! test report needs by ISO 230-2 clause 7.1 has a key of its own.
 
 use crate::simulate::Cycle;
-use crate::units::AxisKind;
+use crate::units::{AxisKind, Travel};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -74,23 +74,6 @@ pub struct MachineInfo {
     /// The axes as written; taken out and parsed one by one by the loader.
     #[serde(default, skip_serializing)]
     pub axes: serde_norway::Value,
-}
-
-/// Axis travel: a length (`1200`) or the coordinates of its ends (`[-600, 600]`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(untagged)]
-pub enum Travel {
-    Length(f64),
-    Range([f64; 2]),
-}
-
-impl Travel {
-    pub fn length(self) -> f64 {
-        match self {
-            Travel::Length(l) => l,
-            Travel::Range([a, b]) => (b - a).abs(),
-        }
-    }
 }
 
 /// An axis as written in the campaign.

@@ -36,7 +36,7 @@ pub fn render(file: &str, e: &Evaluation) -> String {
         .parameters
         .iter()
         .map(|p| {
-            let head = format!("{} = {} {unit}", p.label, fmt_fixed(p.value, 2));
+            let head = format!("{} = {} {unit}", p.symbol(), fmt_fixed(p.value, 2));
             let mut where_ = String::new();
             if let Some(i) = p.at_target {
                 where_ = format!(
@@ -47,7 +47,7 @@ pub fn render(file: &str, e: &Evaluation) -> String {
             } else if let Some((hi, lo)) = p.span {
                 where_ = format!("{} − ({})", fmt_fixed(hi, 2), fmt_fixed(lo, 2));
             }
-            (head, format!("{} [{}]", p.name, p.clause), where_)
+            (head, format!("{} [{}]", p.name(), p.clause()), where_)
         })
         .collect();
     let w_head = lines
@@ -93,17 +93,7 @@ pub fn render(file: &str, e: &Evaluation) -> String {
 
 /// Symbols of the standard's parameters that this result leaves out (n = 1).
 fn not_applicable(e: &Evaluation) -> Vec<&'static str> {
-    let all: &[&str] = match e.standard {
-        StandardId::Iso230_2 | StandardId::Gbt17421_2 => &[
-            "A", "A↑", "A↓", "E", "E↑", "E↓", "M", "R", "R↑", "R↓", "B", "B̄",
-        ],
-        StandardId::Gost27843 => &["A", "A↑", "A↓", "R_max", "R↑", "R↓", "R̄", "B_max", "B̄"],
-        _ => &[],
-    };
-    all.iter()
-        .copied()
-        .filter(|label| !e.parameters.iter().any(|p| p.label == *label))
-        .collect()
+    e.not_applicable().map(|d| d.symbol).collect()
 }
 
 fn table_block(out: &mut String, e: &Evaluation, block: &[usize]) {
@@ -193,11 +183,13 @@ fn table_block(out: &mut String, e: &Evaluation, block: &[usize]) {
         row("Ri", single(&|t| t.repeatability));
     }
     row("X̄i", single(&|t| Some(t.mean)));
-    let extras: Vec<&'static str> = e.targets[0].extra.iter().map(|(k, _)| *k).collect();
-    for key in extras {
-        row(
-            key,
-            single(&|t| t.extra.iter().find(|(k, _)| *k == key).map(|(_, v)| *v)),
-        );
+    if e.targets.iter().any(|t| t.nmtba.is_some()) {
+        row("lost_motion", single(&|t| t.nmtba.map(|x| x.lost_motion)));
+    }
+    if e.targets
+        .iter()
+        .any(|t| t.nmtba.is_some_and(|x| x.sigma_bi.is_some()))
+    {
+        row("sigma_bi", single(&|t| t.nmtba.and_then(|x| x.sigma_bi)));
     }
 }

@@ -5,3 +5,14 @@ pub mod diagnose;
 pub mod eval;
 pub mod simulate;
 pub mod text;
+
+/// `--json` output: `value`'s JSON with the input file's name added last, pretty-printed.
+pub fn json_with_file<T: serde::Serialize>(value: &T, file: &str) -> serde_json::Result<String> {
+    #[derive(serde::Serialize)]
+    struct WithFile<'a, T> {
+        #[serde(flatten)]
+        value: &'a T,
+        file: &'a str,
+    }
+    Ok(serde_json::to_string_pretty(&WithFile { value, file })? + "\n")
+}

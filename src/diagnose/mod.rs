@@ -264,6 +264,17 @@ impl Diagnosis {
         self.findings.iter().any(|f| f.effect == effect)
     }
 
+    /// The effects the findings name, e.g. `drift outlier`, or `none`.
+    pub fn effects_label(&self) -> String {
+        let mut effects: Vec<&str> = self.findings.iter().map(|f| f.effect.name()).collect();
+        effects.dedup();
+        if effects.is_empty() {
+            "none".to_string()
+        } else {
+            effects.join(" ")
+        }
+    }
+
     /// The findings that name `effect`.
     pub fn of(&self, effect: Effect) -> impl Iterator<Item = &Finding> {
         self.findings.iter().filter(move |f| f.effect == effect)
@@ -1089,8 +1100,8 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
                     .parameters
                     .iter()
                     .filter_map(|p| {
-                        ev.value(p.key).map(|c| CorrectedParameter {
-                            key: p.key.to_string(),
+                        ev.value(p.key()).map(|c| CorrectedParameter {
+                            key: p.key().to_string(),
                             measured: p.value,
                             corrected: c,
                         })

@@ -7,6 +7,26 @@ use super::{DirectionResult, TargetResult};
 use crate::measurement::AxisData;
 use crate::units::Direction;
 
+/// One direction's results at a target: mean, scatter S by `scatter` (`None` when it
+/// cannot be estimated, e.g. n = 1), range, limits X̄ ± kS and repeatability 2kS.
+pub fn direction(
+    deviations: Vec<f64>,
+    k: f64,
+    scatter: impl Fn(&[f64]) -> Option<f64>,
+) -> DirectionResult {
+    let mean = mean(&deviations);
+    let s = scatter(&deviations);
+    DirectionResult {
+        mean,
+        s,
+        range: range(&deviations),
+        upper: s.map(|s| mean + k * s),
+        lower: s.map(|s| mean - k * s),
+        repeatability: s.map(|s| 2.0 * k * s),
+        deviations,
+    }
+}
+
 /// Per-target results with coverage factor `k`; `scatter` estimates S from one
 /// direction's n deviations (`None` when it cannot, e.g. n = 1).
 pub fn per_target(
@@ -16,22 +36,8 @@ pub fn per_target(
 ) -> Vec<TargetResult> {
     (0..data.target_count())
         .map(|i| {
-            let direction = |d: Direction| {
-                let deviations = data.deviations(i, d).to_vec();
-                let mean = mean(&deviations);
-                let s = scatter(&deviations);
-                DirectionResult {
-                    mean,
-                    s,
-                    range: range(&deviations),
-                    upper: s.map(|s| mean + k * s),
-                    lower: s.map(|s| mean - k * s),
-                    repeatability: s.map(|s| 2.0 * k * s),
-                    deviations,
-                }
-            };
-            let up = direction(Direction::Up);
-            let down = direction(Direction::Down);
+            let up = direction(data.deviations(i, Direction::Up).to_vec(), k, &scatter);
+            let down = direction(data.deviations(i, Direction::Down).to_vec(), k, &scatter);
             let reversal = up.mean - down.mean;
             // ISO 2.17 / GOST (8): Ri = max(kS↑ + kS↓ + |Bi|; 2kS↑; 2kS↓).
             let repeatability = match (up.s, down.s) {
@@ -49,7 +55,7 @@ pub fn per_target(
                 repeatability,
                 up,
                 down,
-                extra: Vec::new(),
+                nmtba: None,
             }
         })
         .collect()

@@ -11,8 +11,9 @@
 //! (8) gives 7.36.
 
 use super::band;
+use super::catalogue::gost27843 as gost;
 use super::stats::{range, sample_sd};
-use super::{Evaluation, Parameter, Standard, StandardId};
+use super::{Evaluation, Parameter, Standard, StandardId, TargetResult};
 use crate::measurement::AxisData;
 use crate::units::Direction::{Down, Up};
 
@@ -84,93 +85,7 @@ impl Standard for Gost27843 {
                 sample_sd(x)
             }
         });
-        let mut p = Vec::new();
-        let span = Parameter::spanned;
-        let at = Parameter::located;
-        let plain = Parameter::plain;
-        if let Some(a) = band::accuracy(&targets, &[Up, Down]) {
-            p.push(span(
-                "A",
-                "A",
-                "bidirectional positioning accuracy",
-                "GOST 27843 1.14 (10)",
-                a,
-            ));
-        }
-        if let Some(a) = band::accuracy(&targets, &[Up]) {
-            p.push(span(
-                "A_up",
-                "A↑",
-                "unidirectional positioning accuracy ↑",
-                "GOST 27843 1.14 (10)",
-                a,
-            ));
-        }
-        if let Some(a) = band::accuracy(&targets, &[Down]) {
-            p.push(span(
-                "A_down",
-                "A↓",
-                "unidirectional positioning accuracy ↓",
-                "GOST 27843 1.14 (10)",
-                a,
-            ));
-        }
-        if let Some(r) = band::max_repeatability(&targets) {
-            p.push(at(
-                "R_max",
-                "R_max",
-                "bidirectional positioning repeatability",
-                "GOST 27843 1.11, 1.13 (8)",
-                r,
-            ));
-        }
-        if let Some(r) = band::max_repeatability_in(&targets, Up) {
-            p.push(at(
-                "R_up",
-                "R↑",
-                "unidirectional positioning repeatability ↑",
-                "GOST 27843 1.10, 1.13 (7)",
-                r,
-            ));
-        }
-        if let Some(r) = band::max_repeatability_in(&targets, Down) {
-            p.push(at(
-                "R_down",
-                "R↓",
-                "unidirectional positioning repeatability ↓",
-                "GOST 27843 1.10, 1.13 (7)",
-                r,
-            ));
-        }
-        let unidirectional: Option<Vec<f64>> = targets
-            .iter()
-            .flat_map(|t| [t.up.repeatability, t.down.repeatability])
-            .collect();
-        if let Some(values) = unidirectional {
-            // Formula (9): (Σ Rj↑ + Σ Rj↓) / 2m over the m positions.
-            let r_mean = values.iter().sum::<f64>() / values.len() as f64;
-            p.push(plain(
-                "R_mean",
-                "R̄",
-                "mean bidirectional positioning repeatability",
-                "GOST 27843 1.12 (9)",
-                r_mean,
-            ));
-        }
-        p.push(at(
-            "B_max",
-            "B_max",
-            "maximum dead band (reversal)",
-            "GOST 27843 1.16",
-            band::max_reversal(&targets),
-        ));
-        p.push(plain(
-            "B_mean",
-            "B̄",
-            "mean dead band (reversal)",
-            "GOST 27843 1.15",
-            band::mean_reversal(&targets),
-        ));
+        let p = parameters(&targets);
         if n == 1 {
             notes.push(
                 "n = 1: S, R and A are not applicable; GOST 27843 asks for n ≥ 5 (clause 2.10)"
@@ -189,6 +104,34 @@ impl Standard for Gost27843 {
             notes,
         }
     }
+}
+
+/// Clause 1's parameters in the standard's order; those that need S are left out when
+/// n = 1.
+fn parameters(targets: &[TargetResult]) -> Vec<Parameter> {
+    let (span, at) = (Parameter::spanned, Parameter::located);
+    let mut p = Vec::new();
+    p.extend(band::accuracy(targets, &[Up, Down]).map(|a| span(&gost::A, a)));
+    p.extend(band::accuracy(targets, &[Up]).map(|a| span(&gost::A_UP, a)));
+    p.extend(band::accuracy(targets, &[Down]).map(|a| span(&gost::A_DOWN, a)));
+    p.extend(band::max_repeatability(targets).map(|r| at(&gost::R_MAX, r)));
+    p.extend(band::max_repeatability_in(targets, Up).map(|r| at(&gost::R_UP, r)));
+    p.extend(band::max_repeatability_in(targets, Down).map(|r| at(&gost::R_DOWN, r)));
+    // Formula (9): the mean of the 2m unidirectional repeatabilities 6S.
+    let unidirectional: Option<Vec<f64>> = targets
+        .iter()
+        .flat_map(|t| [t.up.repeatability, t.down.repeatability])
+        .collect();
+    if let Some(values) = unidirectional {
+        let r_mean = values.iter().sum::<f64>() / values.len() as f64;
+        p.push(Parameter::plain(&gost::R_MEAN, r_mean));
+    }
+    p.push(at(&gost::B_MAX, band::max_reversal(targets)));
+    p.push(Parameter::plain(
+        &gost::B_MEAN,
+        band::mean_reversal(targets),
+    ));
+    p
 }
 
 #[cfg(test)]

@@ -8,8 +8,9 @@
 //! E↑, E↓, M, B and B̄ apply.
 
 use super::band;
+use super::catalogue::iso230_2 as iso;
 use super::stats::sample_sd;
-use super::{Evaluation, Parameter, Standard, StandardId};
+use super::{Evaluation, Parameter, Standard, StandardId, TargetResult};
 use crate::measurement::AxisData;
 use crate::units::Direction::{Down, Up};
 
@@ -28,107 +29,7 @@ impl Standard for Iso230_2 {
 
     fn evaluate(&self, data: &AxisData) -> Evaluation {
         let targets = band::per_target(data, K, sample_sd);
-        let mut p = Vec::new();
-        let span = Parameter::spanned;
-        let at = Parameter::located;
-        if let Some(a) = band::accuracy(&targets, &[Up, Down]) {
-            p.push(span(
-                "A",
-                "A",
-                "bidirectional accuracy of positioning",
-                "ISO 230-2 2.23",
-                a,
-            ));
-        }
-        if let Some(a) = band::accuracy(&targets, &[Up]) {
-            p.push(span(
-                "A_up",
-                "A↑",
-                "unidirectional accuracy of positioning ↑",
-                "ISO 230-2 2.22",
-                a,
-            ));
-        }
-        if let Some(a) = band::accuracy(&targets, &[Down]) {
-            p.push(span(
-                "A_down",
-                "A↓",
-                "unidirectional accuracy of positioning ↓",
-                "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
-                a,
-            ));
-        }
-        p.push(span(
-            "E",
-            "E",
-            "bidirectional systematic positional deviation",
-            "ISO 230-2 2.20",
-            band::systematic(&targets, &[Up, Down]),
-        ));
-        p.push(span(
-            "E_up",
-            "E↑",
-            "unidirectional systematic positional deviation ↑",
-            "ISO 230-2 2.19",
-            band::systematic(&targets, &[Up]),
-        ));
-        p.push(span(
-            "E_down",
-            "E↓",
-            "unidirectional systematic positional deviation ↓",
-            "ISO 230-2 2.19",
-            band::systematic(&targets, &[Down]),
-        ));
-        p.push(span(
-            "M",
-            "M",
-            "range of the mean bidirectional positional deviation",
-            "ISO 230-2 2.21",
-            band::spread(targets.iter().map(|t| t.mean)),
-        ));
-        if let Some(r) = band::max_repeatability(&targets) {
-            p.push(at(
-                "R",
-                "R",
-                "bidirectional repeatability of positioning",
-                "ISO 230-2 2.18 (2.17)",
-                r,
-            ));
-        }
-        if let Some(r) = band::max_repeatability_in(&targets, Up) {
-            p.push(at(
-                "R_up",
-                "R↑",
-                "unidirectional repeatability of positioning ↑",
-                "ISO 230-2 2.18 (2.16)",
-                r,
-            ));
-        }
-        if let Some(r) = band::max_repeatability_in(&targets, Down) {
-            p.push(at(
-                "R_down",
-                "R↓",
-                "unidirectional repeatability of positioning ↓",
-                "ISO 230-2 2.18 (2.16)",
-                r,
-            ));
-        }
-        p.push(at(
-            "B",
-            "B",
-            "reversal value of the axis",
-            "ISO 230-2 2.13",
-            band::max_reversal(&targets),
-        ));
-        p.push(Parameter {
-            key: "B_mean",
-            label: "B̄",
-            name: "mean reversal value of the axis",
-            clause: "ISO 230-2 2.14",
-            value: band::mean_reversal(&targets),
-            at_target: None,
-            span: None,
-        });
+        let p = parameters(&targets);
         let mut notes = Vec::new();
         if data.runs() == 1 {
             notes.push("n = 1: S, R and A are not applicable (ISO 230-2 clause 5.2)".to_string());
@@ -148,4 +49,24 @@ impl Standard for Iso230_2 {
             notes,
         }
     }
+}
+
+/// Clause 7.2.1's parameters in the standard's order; those that need S are left out
+/// when n = 1 (clause 5.2).
+fn parameters(targets: &[TargetResult]) -> Vec<Parameter> {
+    let (span, at) = (Parameter::spanned, Parameter::located);
+    let mut p = Vec::new();
+    p.extend(band::accuracy(targets, &[Up, Down]).map(|a| span(&iso::A, a)));
+    p.extend(band::accuracy(targets, &[Up]).map(|a| span(&iso::A_UP, a)));
+    p.extend(band::accuracy(targets, &[Down]).map(|a| span(&iso::A_DOWN, a)));
+    p.push(span(&iso::E, band::systematic(targets, &[Up, Down])));
+    p.push(span(&iso::E_UP, band::systematic(targets, &[Up])));
+    p.push(span(&iso::E_DOWN, band::systematic(targets, &[Down])));
+    p.push(span(&iso::M, band::spread(targets.iter().map(|t| t.mean))));
+    p.extend(band::max_repeatability(targets).map(|r| at(&iso::R, r)));
+    p.extend(band::max_repeatability_in(targets, Up).map(|r| at(&iso::R_UP, r)));
+    p.extend(band::max_repeatability_in(targets, Down).map(|r| at(&iso::R_DOWN, r)));
+    p.push(at(&iso::B, band::max_reversal(targets)));
+    p.push(Parameter::plain(&iso::B_MEAN, band::mean_reversal(targets)));
+    p
 }

@@ -1,4 +1,5 @@
-//! The JSON form of an [`Evaluation`]: a stable interface for scripts.
+//! The JSON form of an [`Evaluation`] (`axcheck eval --json`): a stable interface for
+//! scripts, derived by serde from the view types below.
 //!
 //! ```json
 //! {"standard": "iso230-2:1997", "kind": "linear", "unit": "um", "position_unit": "mm",
@@ -14,96 +15,142 @@
 //! A parameter or value that does not apply is absent. Target indices `i` are 1-based
 //! as in the standards.
 
-use super::{DirectionResult, Evaluation, TargetResult};
-use serde_json::{Map, Value, json};
+use super::{DirectionResult, Evaluation, Parameter, TargetResult};
+use crate::units::AxisKind;
+use serde::Serialize;
+use serde::ser::{SerializeMap, Serializer};
 
-impl Evaluation {
-    /// Parameter values keyed by their stable key (absent when not applicable).
-    pub fn parameters_json(&self) -> Value {
-        let mut map = Map::new();
-        for p in &self.parameters {
-            map.insert(p.key.to_string(), json!(p.value));
+/// The whole evaluation.
+#[derive(Serialize)]
+pub struct EvaluationJson<'a> {
+    standard: &'static str,
+    title: &'static str,
+    kind: AxisKind,
+    unit: &'static str,
+    position_unit: &'static str,
+    n: usize,
+    m: usize,
+    coverage_factor: f64,
+    parameters: ParameterValues<'a>,
+    at_target: TargetIndices<'a>,
+    details: Vec<Detail>,
+    targets: Vec<TargetJson<'a>>,
+    notes: &'a [String],
+}
+
+/// Parameter values keyed by their stable key, in the standard's order.
+#[derive(Clone, Copy)]
+pub struct ParameterValues<'a>(pub &'a [Parameter]);
+
+impl Serialize for ParameterValues<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for p in self.0 {
+            map.serialize_entry(p.key(), &p.value)?;
         }
-        Value::Object(map)
+        map.end()
     }
+}
 
-    /// The whole evaluation as JSON.
-    pub fn to_json(&self) -> Value {
-        let mut at = Map::new();
-        for p in &self.parameters {
+/// For the maxima over targets: the 1-based index of the target where each occurs.
+#[derive(Clone, Copy)]
+pub struct TargetIndices<'a>(pub &'a [Parameter]);
+
+impl Serialize for TargetIndices<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(None)?;
+        for p in self.0 {
             if let Some(i) = p.at_target {
-                at.insert(p.key.to_string(), json!(i + 1));
+                map.serialize_entry(p.key(), &(i + 1))?;
             }
         }
-        let details: Vec<Value> = self
+        map.end()
+    }
+}
+
+/// A parameter with its definition and where it occurs.
+#[derive(Serialize)]
+struct Detail {
+    key: &'static str,
+    label: &'static str,
+    name: &'static str,
+    clause: &'static str,
+    value: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    target_index: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    target_position: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    span: Option<[f64; 2]>,
+}
+
+/// One target's results.
+#[derive(Serialize)]
+struct TargetJson<'a> {
+    i: usize,
+    position: f64,
+    mean: f64,
+    reversal: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    repeatability: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lost_motion: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    sigma_bi: Option<f64>,
+    up: &'a DirectionResult,
+    down: &'a DirectionResult,
+}
+
+impl Evaluation {
+    /// The stable JSON view of the evaluation.
+    pub fn json(&self) -> EvaluationJson<'_> {
+        let details = self
             .parameters
             .iter()
-            .map(|p| {
-                let mut d = Map::new();
-                d.insert("key".into(), json!(p.key));
-                d.insert("label".into(), json!(p.label));
-                d.insert("name".into(), json!(p.name));
-                d.insert("clause".into(), json!(p.clause));
-                d.insert("value".into(), json!(p.value));
-                if let Some(i) = p.at_target {
-                    d.insert("target_index".into(), json!(i + 1));
-                    d.insert("target_position".into(), json!(self.targets[i].position));
-                }
-                if let Some((hi, lo)) = p.span {
-                    d.insert("span".into(), json!([hi, lo]));
-                }
-                Value::Object(d)
+            .map(|p| Detail {
+                key: p.key(),
+                label: p.symbol(),
+                name: p.name(),
+                clause: p.clause(),
+                value: p.value,
+                target_index: p.at_target.map(|i| i + 1),
+                target_position: p.at_target.map(|i| self.targets[i].position),
+                span: p.span.map(|(hi, lo)| [hi, lo]),
             })
             .collect();
-        json!({
-            "standard": self.standard.key(),
-            "title": self.standard.title(),
-            "kind": self.kind.to_string(),
-            "unit": self.unit(),
-            "position_unit": self.kind.position_unit(),
-            "n": self.n,
-            "m": self.targets.len(),
-            "coverage_factor": self.coverage_factor,
-            "parameters": self.parameters_json(),
-            "at_target": Value::Object(at),
-            "details": details,
-            "targets": self.targets.iter().enumerate().map(|(i, t)| target_json(i, t)).collect::<Vec<_>>(),
-            "notes": self.notes,
-        })
-    }
-}
-
-fn direction_json(d: &DirectionResult) -> Value {
-    let mut map = Map::new();
-    map.insert("deviations".into(), json!(d.deviations));
-    map.insert("mean".into(), json!(d.mean));
-    for (key, value) in [
-        ("s", d.s),
-        ("range", d.range),
-        ("upper", d.upper),
-        ("lower", d.lower),
-        ("repeatability", d.repeatability),
-    ] {
-        if let Some(v) = value {
-            map.insert(key.into(), json!(v));
+        EvaluationJson {
+            standard: self.standard.key(),
+            title: self.standard.title(),
+            kind: self.kind,
+            unit: self.unit(),
+            position_unit: self.kind.position_unit(),
+            n: self.n,
+            m: self.targets.len(),
+            coverage_factor: self.coverage_factor,
+            parameters: ParameterValues(&self.parameters),
+            at_target: TargetIndices(&self.parameters),
+            details,
+            targets: self
+                .targets
+                .iter()
+                .enumerate()
+                .map(|(i, t)| target_json(i, t))
+                .collect(),
+            notes: &self.notes,
         }
     }
-    Value::Object(map)
 }
 
-fn target_json(i: usize, t: &TargetResult) -> Value {
-    let mut map = Map::new();
-    map.insert("i".into(), json!(i + 1));
-    map.insert("position".into(), json!(t.position));
-    map.insert("mean".into(), json!(t.mean));
-    map.insert("reversal".into(), json!(t.reversal));
-    if let Some(r) = t.repeatability {
-        map.insert("repeatability".into(), json!(r));
+fn target_json(i: usize, t: &TargetResult) -> TargetJson<'_> {
+    TargetJson {
+        i: i + 1,
+        position: t.position,
+        mean: t.mean,
+        reversal: t.reversal,
+        repeatability: t.repeatability,
+        lost_motion: t.nmtba.map(|x| x.lost_motion),
+        sigma_bi: t.nmtba.and_then(|x| x.sigma_bi),
+        up: &t.up,
+        down: &t.down,
     }
-    for (key, value) in &t.extra {
-        map.insert((*key).to_string(), json!(value));
-    }
-    map.insert("up".into(), direction_json(&t.up));
-    map.insert("down".into(), direction_json(&t.down));
-    Value::Object(map)
 }

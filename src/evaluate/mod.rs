@@ -5,12 +5,15 @@
 //! share the coverage-band arithmetic in [`band`].
 
 pub mod band;
+pub mod catalogue;
 pub mod gost27843;
 pub mod iso230_2;
 pub mod json;
 pub mod nmtba;
 pub mod stats;
 pub mod vdi3441;
+
+pub use catalogue::{ParameterDef, Role};
 
 use crate::measurement::AxisData;
 use crate::units::{AxisKind, Direction};
@@ -130,17 +133,10 @@ pub fn evaluate(data: &AxisData, standard: StandardId) -> Evaluation {
     standard.evaluator().evaluate(data)
 }
 
-/// A parameter of the axis, with the clause that defines it.
+/// A parameter's value for one axis test, with its definition from the [`catalogue`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Parameter {
-    /// Stable key in JSON and specs: `A`, `A_up`, `R_max`, `B_mean` …
-    pub key: &'static str,
-    /// Symbol for people: `A↑`, `B̄` …
-    pub label: &'static str,
-    /// Name in words.
-    pub name: &'static str,
-    /// The clause and formula that define it.
-    pub clause: &'static str,
+    pub def: &'static ParameterDef,
     /// Value in µm (linear) or arcsec (rotary).
     pub value: f64,
     /// Index i (0-based) of the target where a maximum occurs, for R and B.
@@ -151,18 +147,9 @@ pub struct Parameter {
 
 impl Parameter {
     /// A parameter with no location.
-    pub fn plain(
-        key: &'static str,
-        label: &'static str,
-        name: &'static str,
-        clause: &'static str,
-        value: f64,
-    ) -> Parameter {
+    pub fn plain(def: &'static ParameterDef, value: f64) -> Parameter {
         Parameter {
-            key,
-            label,
-            name,
-            clause,
+            def,
             value,
             at_target: None,
             span: None,
@@ -170,36 +157,42 @@ impl Parameter {
     }
 
     /// A range-type parameter, `max − min`, from (value, upper term, lower term).
-    pub fn spanned(
-        key: &'static str,
-        label: &'static str,
-        name: &'static str,
-        clause: &'static str,
-        (value, hi, lo): (f64, f64, f64),
-    ) -> Parameter {
+    pub fn spanned(def: &'static ParameterDef, (value, hi, lo): (f64, f64, f64)) -> Parameter {
         Parameter {
             span: Some((hi, lo)),
-            ..Parameter::plain(key, label, name, clause, value)
+            ..Parameter::plain(def, value)
         }
     }
 
     /// A maximum over targets, from (target index, value).
-    pub fn located(
-        key: &'static str,
-        label: &'static str,
-        name: &'static str,
-        clause: &'static str,
-        (i, value): (usize, f64),
-    ) -> Parameter {
+    pub fn located(def: &'static ParameterDef, (i, value): (usize, f64)) -> Parameter {
         Parameter {
             at_target: Some(i),
-            ..Parameter::plain(key, label, name, clause, value)
+            ..Parameter::plain(def, value)
         }
+    }
+
+    /// Stable key: `A`, `A_up`, `R_max` …
+    pub fn key(&self) -> &'static str {
+        self.def.key
+    }
+
+    /// Symbol for people: `A↑`, `B̄` …
+    pub fn symbol(&self) -> &'static str {
+        self.def.symbol
+    }
+
+    pub fn name(&self) -> &'static str {
+        self.def.name
+    }
+
+    pub fn clause(&self) -> &'static str {
+        self.def.clause
     }
 }
 
-/// Per-target, per-direction results.
-#[derive(Debug, Clone, PartialEq)]
+/// Per-target, per-direction results (serialised as they are in `eval --json`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DirectionResult {
     /// X_ij for j = 1…n (µm or arcsec).
     pub deviations: Vec<f64>,
@@ -207,14 +200,19 @@ pub struct DirectionResult {
     pub mean: f64,
     /// The scatter estimate used by the standard: ISO Si (2.15); GOST S by formula (5) or
     /// (6); VDI σi = Ri/d; NMTBA σ. `None` for n = 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub s: Option<f64>,
     /// Range W of the n deviations (GOST formula (4)); `None` for n = 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub range: Option<f64>,
     /// X̄ + kS (ISO 5.1, GOST 3.1.4).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub upper: Option<f64>,
     /// X̄ − kS.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub lower: Option<f64>,
     /// Unidirectional repeatability at the target, 2kS (ISO 2.16: 4S; GOST (7): 6S).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub repeatability: Option<f64>,
 }
 
@@ -232,8 +230,18 @@ pub struct TargetResult {
     /// Bidirectional repeatability Ri (ISO 2.17, GOST formula (8)); `None` for n = 1 or a
     /// standard without it.
     pub repeatability: Option<f64>,
-    /// Further standard-specific values (key, value).
-    pub extra: Vec<(&'static str, f64)>,
+    /// NMTBA's values at the point (Hemingray et al. 1971, §3.1); `None` for the other
+    /// standards.
+    pub nmtba: Option<NmtbaTarget>,
+}
+
+/// NMTBA's values at one point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NmtbaTarget {
+    /// Lost motion L_i = X̄i↑ − X̄i↓.
+    pub lost_motion: f64,
+    /// σ of both directions' readings pooled (`None` for n = 1).
+    pub sigma_bi: Option<f64>,
 }
 
 impl TargetResult {
@@ -264,7 +272,18 @@ pub struct Evaluation {
 impl Evaluation {
     /// The parameter with `key`, if it applies.
     pub fn parameter(&self, key: &str) -> Option<&Parameter> {
-        self.parameters.iter().find(|p| p.key == key)
+        self.parameters.iter().find(|p| p.key() == key)
+    }
+
+    /// The parameter filling `role` in this standard, if it applies.
+    pub fn headline(&self, role: Role) -> Option<&Parameter> {
+        self.parameters.iter().find(|p| p.def.role == Some(role))
+    }
+
+    /// The standard's parameters this result leaves out (those that need repeated
+    /// approaches, with n = 1: ISO 230-2 clause 5.2), in the standard's order.
+    pub fn not_applicable(&self) -> impl Iterator<Item = &'static ParameterDef> + '_ {
+        catalogue::of(self.standard).filter(|d| !self.parameters.iter().any(|p| p.def == *d))
     }
 
     /// The value of parameter `key`, if it applies.

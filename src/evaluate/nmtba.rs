@@ -8,8 +8,10 @@
 //! A_u is computed per direction. The lost motion at a point is the difference of the two
 //! directional means, L_i = X̄i↑ − X̄i↓.
 
-use super::stats::{argmax, mean, range, sample_sd};
-use super::{DirectionResult, Evaluation, Parameter, Standard, StandardId, TargetResult};
+use super::band;
+use super::catalogue::nmtba;
+use super::stats::{argmax, mean, sample_sd};
+use super::{Evaluation, NmtbaTarget, Parameter, Standard, StandardId, TargetResult};
 use crate::measurement::AxisData;
 use crate::units::Direction;
 
@@ -38,131 +40,42 @@ impl Standard for Nmtba {
         let n = data.runs();
         let targets: Vec<TargetResult> = (0..data.target_count())
             .map(|i| {
-                let direction = |dir: Direction| {
-                    let deviations = data.deviations(i, dir).to_vec();
-                    let m = mean(&deviations);
-                    let s = sample_sd(&deviations);
-                    DirectionResult {
-                        mean: m,
-                        s,
-                        range: range(&deviations),
-                        upper: s.map(|s| m + 3.0 * s),
-                        lower: s.map(|s| m - 3.0 * s),
-                        repeatability: s.map(|s| 6.0 * s),
-                        deviations,
-                    }
-                };
-                let up = direction(Direction::Up);
-                let down = direction(Direction::Down);
+                let up =
+                    band::direction(data.deviations(i, Direction::Up).to_vec(), 3.0, sample_sd);
+                let down =
+                    band::direction(data.deviations(i, Direction::Down).to_vec(), 3.0, sample_sd);
+                // Both directions pooled at the point: σ_b holds the lost motion too.
                 let pooled: Vec<f64> = up
                     .deviations
                     .iter()
                     .chain(&down.deviations)
                     .copied()
                     .collect();
-                let mut extra = vec![("lost_motion", up.mean - down.mean)];
-                if n >= 2 {
-                    extra.push(("sigma_bi", sample_sd(&pooled).unwrap_or(f64::NAN)));
-                }
                 TargetResult {
                     position: data.targets[i],
                     mean: mean(&pooled),
                     reversal: up.mean - down.mean,
                     repeatability: None,
+                    nmtba: Some(NmtbaTarget {
+                        lost_motion: up.mean - down.mean,
+                        sigma_bi: (n >= 2).then(|| sample_sd(&pooled).unwrap_or(f64::NAN)),
+                    }),
                     up,
                     down,
-                    extra,
                 }
             })
             .collect();
-        let plain = |key, label, name, value| {
-            Parameter::plain(
-                key,
-                label,
-                name,
-                "NMTBA (Hemingray et al. 1971, 3.1)",
-                value,
-            )
-        };
-        let mut p = Vec::new();
         let mut notes = Vec::new();
+        let mut p = Vec::new();
         if n >= 2 {
-            let means: Vec<f64> = targets.iter().map(|t| t.mean).collect();
-            let sigma_b: Vec<f64> = targets
-                .iter()
-                .map(|t| {
-                    t.extra
-                        .iter()
-                        .find(|(k, _)| *k == "sigma_bi")
-                        .map_or(f64::NAN, |e| e.1)
-                })
-                .collect();
-            let (a_b, zero) = accuracy(&means, &sigma_b);
-            p.push(plain(
-                "A",
-                "A_b",
-                "bidirectional accuracy max(|X̄i − zero| + 3σi)",
-                a_b,
-            ));
-            for (key, label, name, d) in [
-                ("A_up", "A_u↑", "unidirectional accuracy ↑", Direction::Up),
-                (
-                    "A_down",
-                    "A_u↓",
-                    "unidirectional accuracy ↓",
-                    Direction::Down,
-                ),
-            ] {
-                let m: Vec<f64> = targets.iter().map(|t| t.direction(d).mean).collect();
-                let s: Vec<f64> = targets
-                    .iter()
-                    .map(|t| t.direction(d).s.unwrap_or(f64::NAN))
-                    .collect();
-                p.push(plain(key, label, name, accuracy(&m, &s).0));
-            }
-            p.push(plain(
-                "zero",
-                "zero",
-                "zero line, midway between the extreme means",
-                zero,
-            ));
-            let spread = argmax(sigma_b.iter().map(|s| 3.0 * s)).expect("at least one target");
-            p.push(Parameter {
-                at_target: Some(spread.0),
-                ..plain(
-                    "spread",
-                    "3σ_b",
-                    "largest bidirectional scatter 3σ",
-                    spread.1,
-                )
-            });
-            for (key, label, d) in [
-                ("spread_up", "3σ_u↑", Direction::Up),
-                ("spread_down", "3σ_u↓", Direction::Down),
-            ] {
-                let s = argmax(
-                    targets
-                        .iter()
-                        .map(|t| 3.0 * t.direction(d).s.unwrap_or(f64::NAN)),
-                )
-                .expect("at least one target");
-                p.push(Parameter {
-                    at_target: Some(s.0),
-                    ..plain(key, label, "largest unidirectional scatter 3σ", s.1)
-                });
-            }
+            p = accuracies(&targets);
         } else {
             notes.push("n = 1: no scatter, so the accuracies are not applicable".into());
         }
         let lost = argmax(targets.iter().map(|t| t.reversal.abs())).expect("at least one target");
-        p.push(Parameter {
-            at_target: Some(lost.0),
-            ..plain("L_max", "L_max", "largest lost motion |X̄i↑ − X̄i↓|", lost.1)
-        });
-        p.push(plain(
-            "L_mean",
-            "L̄",
-            "mean lost motion",
+        p.push(Parameter::located(&nmtba::L_MAX, lost));
+        p.push(Parameter::plain(
+            &nmtba::L_MEAN,
             targets.iter().map(|t| t.reversal).sum::<f64>() / targets.len() as f64,
         ));
         Evaluation {
@@ -175,6 +88,42 @@ impl Standard for Nmtba {
             notes,
         }
     }
+}
+
+/// A_b, A_u↑, A_u↓, the zero line and the largest scatters 3σ (n ≥ 2).
+fn accuracies(targets: &[TargetResult]) -> Vec<Parameter> {
+    let means: Vec<f64> = targets.iter().map(|t| t.mean).collect();
+    let sigma_b: Vec<f64> = targets
+        .iter()
+        .map(|t| {
+            t.nmtba
+                .as_ref()
+                .and_then(|x| x.sigma_bi)
+                .unwrap_or(f64::NAN)
+        })
+        .collect();
+    let (a_b, zero) = accuracy(&means, &sigma_b);
+    let mut p = vec![Parameter::plain(&nmtba::A, a_b)];
+    let sigma = |t: &TargetResult, d| t.direction(d).s.unwrap_or(f64::NAN);
+    for (def, d) in [
+        (&nmtba::A_UP, Direction::Up),
+        (&nmtba::A_DOWN, Direction::Down),
+    ] {
+        let m: Vec<f64> = targets.iter().map(|t| t.direction(d).mean).collect();
+        let s: Vec<f64> = targets.iter().map(|t| sigma(t, d)).collect();
+        p.push(Parameter::plain(def, accuracy(&m, &s).0));
+    }
+    p.push(Parameter::plain(&nmtba::ZERO, zero));
+    let spread = argmax(sigma_b.iter().map(|s| 3.0 * s)).expect("at least one target");
+    p.push(Parameter::located(&nmtba::SPREAD, spread));
+    for (def, d) in [
+        (&nmtba::SPREAD_UP, Direction::Up),
+        (&nmtba::SPREAD_DOWN, Direction::Down),
+    ] {
+        let s = argmax(targets.iter().map(|t| 3.0 * sigma(t, d))).expect("at least one target");
+        p.push(Parameter::located(def, s));
+    }
+    p
 }
 
 #[cfg(test)]

@@ -8,8 +8,9 @@
 //! X̄max and X̄min range over X̄i↑ and X̄i↓, and σ averages over both directions).
 
 use super::band;
+use super::catalogue::vdi3441 as vdi;
 use super::stats::{d2, mean, range};
-use super::{DirectionResult, Evaluation, Parameter, Standard, StandardId, TargetResult};
+use super::{Evaluation, Parameter, Standard, StandardId, TargetResult};
 use crate::measurement::AxisData;
 use crate::units::Direction;
 
@@ -69,25 +70,13 @@ impl Standard for Vdi3441 {
     fn evaluate(&self, data: &AxisData) -> Evaluation {
         let n = data.runs();
         let d = d_factor(n);
+        // σi = Ri/d (the paper's §3.2), limits X̄ ± 3σ.
+        let sigma = |x: &[f64]| range(x).zip(d).map(|(w, d)| w / d);
         let targets: Vec<TargetResult> = (0..data.target_count())
             .map(|i| {
-                let direction = |dir: Direction| {
-                    let deviations = data.deviations(i, dir).to_vec();
-                    let m = mean(&deviations);
-                    let w = range(&deviations);
-                    let s = w.zip(d).map(|(w, d)| w / d);
-                    DirectionResult {
-                        mean: m,
-                        s,
-                        range: w,
-                        upper: s.map(|s| m + 3.0 * s),
-                        lower: s.map(|s| m - 3.0 * s),
-                        repeatability: s.map(|s| 6.0 * s),
-                        deviations,
-                    }
-                };
-                let up = direction(Direction::Up);
-                let down = direction(Direction::Down);
+                let up = band::direction(data.deviations(i, Direction::Up).to_vec(), 3.0, sigma);
+                let down =
+                    band::direction(data.deviations(i, Direction::Down).to_vec(), 3.0, sigma);
                 TargetResult {
                     position: data.targets[i],
                     mean: (up.mean + down.mean) / 2.0,
@@ -95,84 +84,52 @@ impl Standard for Vdi3441 {
                     repeatability: None,
                     up,
                     down,
-                    extra: Vec::new(),
+                    nmtba: None,
                 }
             })
             .collect();
-        let (_, x_max, x_min) = band::systematic(&targets, &[Direction::Up, Direction::Down]);
-        let plain = |key, label, name, value| {
-            Parameter::plain(
-                key,
-                label,
-                name,
-                "VDI 3441 (Hemingray et al. 1971, 3.2)",
-                value,
-            )
-        };
-        let mut p = vec![
-            plain("X_max", "X̄max", "largest mean deviation", x_max),
-            plain("X_min", "X̄min", "smallest mean deviation", x_min),
-            plain(
-                "A_mean",
-                "Ā",
-                "mean position deviation (X̄max + X̄min)/2",
-                (x_max + x_min) / 2.0,
-            ),
-        ];
-        let sigmas: Option<Vec<f64>> = targets.iter().flat_map(|t| [t.up.s, t.down.s]).collect();
-        let mut notes = Vec::new();
-        if let Some(sigmas) = sigmas {
-            let sigma = mean(&sigmas);
-            let s = summary(x_max, x_min, sigma);
-            p.push(plain(
-                "sigma_mean",
-                "σ̄",
-                "mean standard deviation from ranges, σi = Ri/d",
-                sigma,
-            ));
-            p.push(plain(
-                "G_upper",
-                "G_o",
-                "upper limit Ā + ((X̄max − X̄min)/2 + 3σ)",
-                s.upper_limit,
-            ));
-            p.push(plain(
-                "G_lower",
-                "G_u",
-                "lower limit Ā − ((X̄max − X̄min)/2 + 3σ)",
-                s.lower_limit,
-            ));
-            p.push(plain(
-                "T",
-                "T_E",
-                "position error X̄max − X̄min + 6σ",
-                s.position_error,
-            ));
-            p.push(plain(
-                "R_p",
-                "R_p",
-                "position scatter width 6σ",
-                s.scatter_width,
-            ));
-            if !matches!(n, 2..=8 | 10 | 12) {
-                notes.push(format!(
-                    "d for N = {n} is not printed in the source; d2({n}) = {:.3} computed",
-                    d.unwrap_or(f64::NAN)
-                ));
-            }
-        } else {
-            notes.push("n = 1: no ranges, so σ, the limits, T and Rp are not applicable".into());
-        }
+        let (parameters, notes) = parameters(&targets, n, d);
         Evaluation {
             standard: StandardId::Vdi3441,
             kind: data.kind,
             n,
             coverage_factor: 3.0,
-            parameters: p,
+            parameters,
             targets,
             notes,
         }
     }
+}
+
+/// The extreme means, and with σ the limits, T and Rp; notes on how d was found.
+fn parameters(targets: &[TargetResult], n: usize, d: Option<f64>) -> (Vec<Parameter>, Vec<String>) {
+    let (_, x_max, x_min) = band::systematic(targets, &[Direction::Up, Direction::Down]);
+    let plain = Parameter::plain;
+    let mut p = vec![
+        plain(&vdi::X_MAX, x_max),
+        plain(&vdi::X_MIN, x_min),
+        plain(&vdi::A_MEAN, (x_max + x_min) / 2.0),
+    ];
+    let mut notes = Vec::new();
+    let sigmas: Option<Vec<f64>> = targets.iter().flat_map(|t| [t.up.s, t.down.s]).collect();
+    let Some(sigmas) = sigmas else {
+        notes.push("n = 1: no ranges, so σ, the limits, T and Rp are not applicable".into());
+        return (p, notes);
+    };
+    let sigma = mean(&sigmas);
+    let s = summary(x_max, x_min, sigma);
+    p.push(plain(&vdi::SIGMA_MEAN, sigma));
+    p.push(plain(&vdi::G_UPPER, s.upper_limit));
+    p.push(plain(&vdi::G_LOWER, s.lower_limit));
+    p.push(plain(&vdi::T, s.position_error));
+    p.push(plain(&vdi::R_P, s.scatter_width));
+    if !matches!(n, 2..=8 | 10 | 12) {
+        notes.push(format!(
+            "d for N = {n} is not printed in the source; d2({n}) = {:.3} computed",
+            d.unwrap_or(f64::NAN)
+        ));
+    }
+    (p, notes)
 }
 
 #[cfg(test)]

@@ -56,10 +56,10 @@ pub fn test_json(t: &AxisTest) -> Value {
     if let Some(e) = &t.evaluation {
         m.insert("n".into(), json!(e.n));
         m.insert("m".into(), json!(e.targets.len()));
-        let full = e.to_json();
-        m.insert("parameters".into(), full["parameters"].clone());
-        m.insert("at_target".into(), full["at_target"].clone());
-        m.insert("notes".into(), full["notes"].clone());
+        use crate::evaluate::json::{ParameterValues, TargetIndices};
+        m.insert("parameters".into(), json!(ParameterValues(&e.parameters)));
+        m.insert("at_target".into(), json!(TargetIndices(&e.parameters)));
+        m.insert("notes".into(), json!(e.notes));
     }
     if let Some(j) = &t.judgement {
         m.insert("spec".into(), json!(j.limits.spec));

@@ -3,6 +3,7 @@
 
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::CampaignResult;
+use crate::evaluate::Role;
 use crate::judge::Verdict;
 use crate::units::fmt_fixed;
 use std::fmt::Write;
@@ -55,9 +56,9 @@ impl Exporter for Markdown {
         );
         for t in &result.tests {
             let e = t.evaluation.as_ref();
-            let v = |k: &str| {
-                e.and_then(|e| e.value(k).or_else(|| e.value(&format!("{k}_max"))))
-                    .map_or("–".to_string(), |x| fmt_fixed(x, 2))
+            let v = |role: Role| {
+                e.and_then(|e| e.headline(role))
+                    .map_or("–".to_string(), |p| fmt_fixed(p.value, 2))
             };
             let _ = writeln!(
                 out,
@@ -66,15 +67,15 @@ impl Exporter for Markdown {
                 cell(&t.axis),
                 cell(t.file.as_deref().unwrap_or("–")),
                 t.standard().map_or("–", |s| s.key()),
-                t.judgement.as_ref().map_or("–".to_string(), |j| cell(
-                    &super::table::spec_label(&j.limits)
-                )),
+                t.judgement
+                    .as_ref()
+                    .map_or("–".to_string(), |j| cell(&j.limits.describe())),
                 e.map_or("–".to_string(), |e| e.n.to_string()),
-                v("A"),
-                v("E"),
-                v("M"),
-                v("R"),
-                v("B"),
+                v(Role::Accuracy),
+                v(Role::Systematic),
+                v(Role::MeanRange),
+                v(Role::Repeatability),
+                v(Role::Reversal),
                 t.kind().map_or("–", |k| k.deviation_symbol()),
                 t.verdict
             );

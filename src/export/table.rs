@@ -2,12 +2,7 @@
 //! test, a fixed set of columns.
 
 use crate::batch::{AxisTest, CampaignResult};
-
-/// Parameter columns: the ISO 230-2 and GOST 27843 parameters (empty when not applicable).
-pub const PARAMETER_COLUMNS: &[&str] = &[
-    "A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B", "B_mean",
-    "R_max", "R_mean", "B_max",
-];
+use crate::evaluate::catalogue;
 
 /// A cell of the table.
 #[derive(Debug, Clone, PartialEq)]
@@ -60,7 +55,12 @@ pub fn columns() -> Vec<(String, ColumnKind)> {
     .iter()
     .map(|(n, k)| (n.to_string(), *k))
     .collect();
-    cols.extend(PARAMETER_COLUMNS.iter().map(|p| (p.to_string(), Number)));
+    // The ISO 230-2 and GOST 27843 parameters (empty when not applicable).
+    cols.extend(
+        catalogue::summary_keys()
+            .iter()
+            .map(|p| (p.to_string(), Number)),
+    );
     cols.extend(
         [
             ("worst", Text),
@@ -96,14 +96,14 @@ fn row(t: &AxisTest) -> Vec<Cell> {
         Cell::opt_text(t.file.clone()),
         Cell::opt_text(t.kind().map(|k| k.to_string())),
         Cell::opt_text(t.standard().map(|s| s.key())),
-        Cell::opt_text(t.judgement.as_ref().map(|j| spec_label(&j.limits))),
+        Cell::opt_text(t.judgement.as_ref().map(|j| j.limits.describe())),
         Cell::opt_text(t.kind().map(|k| k.deviation_unit())),
         e.map_or(Cell::Empty, |e| Cell::Int(e.n as i64)),
         e.map_or(Cell::Empty, |e| Cell::Int(e.targets.len() as i64)),
         Cell::opt_number(travel),
         Cell::text(t.verdict.name()),
     ];
-    for p in PARAMETER_COLUMNS {
+    for p in catalogue::summary_keys() {
         cells.push(Cell::opt_number(e.and_then(|e| e.value(p))));
     }
     cells.push(Cell::opt_text(worst.map(|c| c.key.clone())));
@@ -117,42 +117,9 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     let rules: Vec<&str> = t.findings.iter().map(|f| f.id).collect();
     cells.push(Cell::text(rules.join(" ")));
     cells.push(match &t.diagnosis {
-        Some(d) => Cell::text(diagnosis_label(d)),
+        Some(d) => Cell::text(d.effects_label()),
         None => Cell::Empty,
     });
     cells.push(Cell::opt_text(t.error.clone()));
     cells
-}
-
-/// The spec a test was judged by, or that no tolerance applied.
-pub fn spec_label(limits: &crate::judge::Limits) -> String {
-    match (&limits.spec, limits.is_empty()) {
-        (_, true) => NO_TOLERANCE.to_string(),
-        (Some(spec), false) => {
-            if limits
-                .values
-                .values()
-                .any(|(_, s)| *s == crate::judge::LimitSource::Axis)
-            {
-                format!("{spec} + axis tolerances")
-            } else {
-                spec.clone()
-            }
-        }
-        (None, false) => "axis tolerances".to_string(),
-    }
-}
-
-/// What the summary says of a test judged against no limit.
-pub const NO_TOLERANCE: &str = "no tolerance applied";
-
-/// The effects a diagnosis names, e.g. `drift outlier`, or `none`.
-pub fn diagnosis_label(d: &crate::diagnose::Diagnosis) -> String {
-    let mut effects: Vec<&str> = d.findings.iter().map(|f| f.effect.name()).collect();
-    effects.dedup();
-    if effects.is_empty() {
-        "none".to_string()
-    } else {
-        effects.join(" ")
-    }
 }

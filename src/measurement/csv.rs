@@ -10,10 +10,11 @@
 //! `run` (approach index j, 1-based); optional `time_s` and `temp_<name>_c`. Separators
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
 
-use super::error::{Location, ReadError, ReadErrorKind, did_you_mean};
+use super::error::{Location, ReadError, ReadErrorKind};
 use super::{
     AxisData, Lines, MAX_READINGS, MAX_TEMPERATURES, NumberError, RawReading, parse_number,
 };
+use crate::suggest::did_you_mean;
 use crate::units::{AxisKind, Direction, fmt_fixed};
 use std::io::BufRead;
 

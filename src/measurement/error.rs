@@ -89,7 +89,7 @@ pub enum ReadErrorKind {
     TooManyReadings { limit: usize },
     #[error(
         "unknown column `{name}`{}; expected target_mm|target_deg, deviation_um|deviation_mm|deviation_arcsec|deviation_deg or actual_mm|actual_deg, direction, run, and optionally time_s and temp_<name>_c",
-        suggestion_text(suggestion)
+        crate::suggest::phrase(suggestion.as_deref())
     )]
     UnknownColumn {
         name: String,
@@ -128,7 +128,7 @@ pub enum ReadErrorKind {
     NonFinite { column: String, found: String },
     #[error(
         "column `direction`: unknown direction `{found}`{}; expected up/down (or +/-, ↑/↓, fwd/bwd, forward/reverse)",
-        suggestion_text(suggestion)
+        crate::suggest::phrase(suggestion.as_deref())
     )]
     UnknownDirection {
         found: String,
@@ -171,40 +171,6 @@ pub enum ReadErrorKind {
     KeyValue(String),
 }
 
-fn suggestion_text(suggestion: &Option<String>) -> String {
-    match suggestion {
-        Some(s) => format!(" (did you mean `{s}`?)"),
-        None => String::new(),
-    }
-}
-
-/// The closest of `candidates` to `word` when it is close enough to be a likely typo.
-pub fn did_you_mean<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
-    let word = word.to_ascii_lowercase();
-    candidates
-        .iter()
-        .map(|c| (levenshtein(&word, c), *c))
-        .filter(|(d, c)| *d <= 2.max(c.len() / 4))
-        .min_by_key(|(d, _)| *d)
-        .map(|(_, c)| c)
-}
-
-/// Edit distance between two strings (characters, not bytes).
-pub fn levenshtein(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    let mut cur = vec![0; b.len() + 1];
-    for (i, ca) in a.chars().enumerate() {
-        cur[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let cost = usize::from(ca != *cb);
-            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
-        }
-        std::mem::swap(&mut prev, &mut cur);
-    }
-    prev[b.len()]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -214,13 +180,5 @@ mod tests {
         assert_eq!(Location::at("a.csv", 3, 7).to_string(), "a.csv:3:7");
         assert_eq!(Location::line("a.csv", 3).to_string(), "a.csv:3");
         assert_eq!(Location::file("a.csv").to_string(), "a.csv");
-    }
-
-    #[test]
-    fn suggests_close_names() {
-        let c = ["deviation_um", "direction", "run"];
-        assert_eq!(did_you_mean("deviaton_um", &c), Some("deviation_um"));
-        assert_eq!(did_you_mean("dir", &c), None);
-        assert_eq!(levenshtein("kitten", "sitting"), 3);
     }
 }

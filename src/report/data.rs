@@ -3,15 +3,16 @@
 
 use super::charts::{AxisChart, DirectionSeries, Span};
 use crate::batch::{AxisTest, CampaignResult};
-use crate::campaign::{Conditions, SensorKind, Travel};
-use crate::evaluate::{DirectionResult, Evaluation, StandardId};
+use crate::campaign::{Conditions, SensorKind};
+use crate::evaluate::{DirectionResult, Evaluation, Role, StandardId};
 use crate::judge::Verdict;
 use crate::rules::Severity;
+use crate::units::Travel;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 use serde_json::{Value, json};
 
 /// Deviation values in reports: 2 decimals (0.01 µm / 0.01″).
-fn num(x: f64) -> String {
+pub(super) fn num(x: f64) -> String {
     fmt_fixed(x, 2).replace('-', "−")
 }
 
@@ -67,7 +68,7 @@ fn label_of(t: &AxisTest, key: &str) -> String {
     t.evaluation
         .as_ref()
         .and_then(|e| e.parameter(key))
-        .map_or(key.to_string(), |p| p.label.to_string())
+        .map_or(key.to_string(), |p| p.symbol().to_string())
 }
 
 /// Clause 7.1 items the campaign gives, in the standard's order, as (label, text).
@@ -206,7 +207,7 @@ fn parameters_json(t: &AxisTest, e: &Evaluation) -> Vec<Value> {
             let check = t
                 .judgement
                 .as_ref()
-                .and_then(|j| j.checks.iter().find(|c| c.key == p.key));
+                .and_then(|j| j.checks.iter().find(|c| c.key == p.key()));
             let at = if let Some(i) = p.at_target {
                 format!("at i = {} ({})", i + 1, pos(kind, e.targets[i].position))
             } else if let Some((hi, lo)) = p.span {
@@ -215,9 +216,9 @@ fn parameters_json(t: &AxisTest, e: &Evaluation) -> Vec<Value> {
                 String::new()
             };
             json!({
-                "symbol": p.label,
-                "name": p.name,
-                "clause": p.clause.replace(" (GB/T 17421.2 amendment No. 1)", ", amd. 1"),
+                "symbol": p.symbol(),
+                "name": p.name(),
+                "clause": p.clause().replace(" (GB/T 17421.2 amendment No. 1)", ", amd. 1"),
                 "value": num(p.value),
                 "limit": check.map_or("–".into(), |c| num(c.limit)),
                 "margin": check.map_or("–".into(), |c| num(c.margin)),
@@ -226,29 +227,16 @@ fn parameters_json(t: &AxisTest, e: &Evaluation) -> Vec<Value> {
             })
         })
         .collect();
-    let missing: &[(&str, &str)] = match e.standard {
-        StandardId::Iso230_2 | StandardId::Gbt17421_2 => &[
-            ("A", "bidirectional accuracy of positioning"),
-            ("A↑", "unidirectional accuracy of positioning ↑"),
-            ("A↓", "unidirectional accuracy of positioning ↓"),
-            ("R", "bidirectional repeatability of positioning"),
-            ("R↑", "unidirectional repeatability of positioning ↑"),
-            ("R↓", "unidirectional repeatability of positioning ↓"),
-        ],
-        StandardId::Gost27843 => &[
-            ("A", "bidirectional positioning accuracy"),
-            ("R_max", "bidirectional positioning repeatability"),
-        ],
-        _ => &[],
-    };
-    for (symbol, name) in missing {
-        if !e.parameters.iter().any(|p| p.label == *symbol) {
-            rows.push(json!({
-                "symbol": symbol, "name": name, "clause": "ISO 230-2 5.2",
-                "value": "not applicable", "limit": "–", "margin": "–", "status": "n/a",
-                "at": format!("n = {}", e.n),
-            }));
-        }
+    for def in e.not_applicable() {
+        let clause = match e.standard {
+            StandardId::Iso230_2 | StandardId::Gbt17421_2 => "ISO 230-2 5.2",
+            _ => def.clause,
+        };
+        rows.push(json!({
+            "symbol": def.symbol, "name": def.name, "clause": clause,
+            "value": "not applicable", "limit": "–", "margin": "–", "status": "n/a",
+            "at": format!("n = {}", e.n),
+        }));
     }
     rows
 }
@@ -301,7 +289,7 @@ pub fn axis_chart(e: &Evaluation) -> (AxisChart, Vec<Span>, Vec<Span>) {
     let span = |key: &str| {
         e.parameter(key).and_then(|p| {
             p.span.map(|(upper, lower)| Span {
-                label: p.label.to_string(),
+                label: p.symbol().to_string(),
                 upper,
                 lower,
             })
@@ -331,159 +319,6 @@ pub fn axis_chart(e: &Evaluation) -> (AxisChart, Vec<Span>, Vec<Span>) {
         spans(&["A_up", "E_up"]),
         spans(&["A_down", "E_down"]),
     )
-}
-
-/// The diagnosis section: findings with evidence, the held-out gain, parameters with the
-/// identified effects removed (beside the measured ones), notes.
-fn diagnosis_json(d: &crate::diagnose::Diagnosis) -> Value {
-    let unit = d.kind.deviation_symbol();
-    let fmt = |x: f64| {
-        if x != 0.0 && (x.abs() < 0.01 || x.abs() >= 1e5) {
-            format!("{x:.2e}")
-        } else {
-            num(x)
-        }
-    };
-    let findings: Vec<Value> = d
-        .findings
-        .iter()
-        .map(|f| {
-            let e = &f.evidence;
-            let mut evidence = format!("{} = {}", e.statistic, fmt(e.value));
-            if let Some(p) = e.p_value {
-                evidence.push_str(&if p < 1e-4 { format!(", p = {p:.1e}") } else { format!(", p = {p:.4}") });
-            }
-            if let Some(s) = e.effect_size {
-                evidence.push_str(&format!(", effect size {}", fmt(s)));
-            }
-            json!({
-                "effect": f.effect.name(),
-                "message": f.message,
-                "params": f.params.iter().map(|(k, v)| format!("{k} = {}", fmt(*v))).chain(f.labels.iter().map(|(k, v)| format!("{k} = {v}"))).collect::<Vec<_>>().join(", "),
-                "evidence": evidence,
-            })
-        })
-        .collect();
-    let all = d
-        .corrected
-        .iter()
-        .find(|c| c.effect == "all")
-        .or_else(|| d.corrected.last());
-    let corrected: Vec<Value> = all.map_or(Vec::new(), |c| {
-        c.parameters
-            .iter()
-            .map(|p| json!({"key": p.key, "measured": num(p.measured), "corrected": num(p.corrected)}))
-            .collect()
-    });
-    json!({
-        "unit": unit,
-        "findings": findings,
-        "base_rms": fmt_fixed(d.base.heldout_rms, 3),
-        "extended_rms": fmt_fixed(d.extended.heldout_rms, 3),
-        "base_terms": d.base.terms.join(", "),
-        "extended_terms": d.extended.terms.join(", "),
-        "gain": if d.gain_pct.is_finite() { fmt_fixed(d.gain_pct, 1) } else { "–".to_string() },
-        "validation": d.validation,
-        "corrected_label": all.map_or(String::new(), |c| c.effect.clone()),
-        "corrected": corrected,
-        "notes": d.notes,
-        "has_periodogram": !d.residuals.periodogram.is_empty(),
-    })
-}
-
-/// Chart data of a diagnosis: model checks, residuals in time and along the axis, the
-/// periodogram.
-pub fn diagnosis_charts(
-    d: &crate::diagnose::Diagnosis,
-) -> (
-    Vec<super::diagnosis_charts::CheckBar>,
-    super::diagnosis_charts::Residuals,
-    super::diagnosis_charts::Residuals,
-    super::diagnosis_charts::Periodogram,
-) {
-    use super::diagnosis_charts::{CheckBar, Periodogram, Residuals};
-    let (pos_unit, dev_unit) = match d.kind {
-        AxisKind::Linear => ("mm", "µm"),
-        AxisKind::Rotary => ("°", "arcsec"),
-    };
-    let checks = d
-        .checks
-        .iter()
-        .map(|c| CheckBar {
-            label: c.statistic.replace('_', " "),
-            measured: c.measured,
-            low: c.simulated_low,
-            high: c.simulated_high,
-            outside: c.outside,
-        })
-        .collect();
-    let readings = &d.residuals.readings;
-    let timed = readings.iter().all(|r| r.time_s.is_some());
-    let sigma = {
-        let n = readings.len().max(1) as f64;
-        (readings
-            .iter()
-            .map(|r| r.residual * r.residual)
-            .sum::<f64>()
-            / n)
-            .sqrt()
-    };
-    let in_time = Residuals {
-        x: readings
-            .iter()
-            .map(|r| {
-                if timed {
-                    r.time_s.unwrap_or(0.0) / 60.0
-                } else {
-                    r.order as f64 + 1.0
-                }
-            })
-            .collect(),
-        y: readings.iter().map(|r| r.residual).collect(),
-        up: readings
-            .iter()
-            .map(|r| r.direction == crate::units::Direction::Up)
-            .collect(),
-        x_label: if timed {
-            "Time since the start of the test / min".into()
-        } else {
-            "Reading in the order of the test cycle".into()
-        },
-        y_label: format!("Residual of the base model / {dev_unit}"),
-        band: Some(2.0 * sigma),
-        fit: None,
-    };
-    let along = Residuals {
-        x: readings.iter().map(|r| r.position).collect(),
-        x_label: format!("Target position Pi / {pos_unit}"),
-        ..Residuals {
-            x: Vec::new(),
-            y: in_time.y.clone(),
-            up: in_time.up.clone(),
-            x_label: String::new(),
-            y_label: in_time.y_label.clone(),
-            band: in_time.band,
-            fit: None,
-        }
-    };
-    let marked = d
-        .findings
-        .iter()
-        .find(|f| f.effect == crate::diagnose::Effect::Periodic)
-        .and_then(|f| {
-            let key = format!("period_{}", d.kind.position_unit());
-            f.param(&key)
-                .map(|p| (p, format!("{} {pos_unit}", fmt_fixed(p, 2))))
-        });
-    let periodogram = Periodogram {
-        period: d.residuals.periodogram.iter().map(|(p, _)| *p).collect(),
-        power: d.residuals.periodogram.iter().map(|(_, w)| *w).collect(),
-        period_label: format!("Period / {pos_unit}"),
-        threshold: None,
-        marked,
-        unresolved_below: None,
-    };
-    (checks, in_time, along, periodogram)
 }
 
 /// The campaign header both templates show (absent items as empty strings).
@@ -549,9 +384,7 @@ pub fn axis_report(result: &CampaignResult, t: &AxisTest) -> Value {
     fact("Standard", t.standard().map(|s| s.title().to_string()));
     fact(
         "Acceptance spec",
-        t.judgement
-            .as_ref()
-            .map(|j| crate::export::table::spec_label(&j.limits)),
+        t.judgement.as_ref().map(|j| j.limits.describe()),
     );
     fact("Test date", info.date.clone());
     fact("Inspector", info.inspector.clone());
@@ -580,7 +413,7 @@ pub fn axis_report(result: &CampaignResult, t: &AxisTest) -> Value {
             "message": f.message,
         })).collect::<Vec<_>>(),
         "has_charts": t.evaluation.is_some(),
-        "diagnosis": t.diagnosis.as_ref().map(diagnosis_json),
+        "diagnosis": t.diagnosis.as_ref().map(super::diagnosis_data::diagnosis_json),
         "generator": format!("axcheck {}", env!("CARGO_PKG_VERSION")),
     })
 }
@@ -593,9 +426,7 @@ pub fn summary(result: &CampaignResult) -> Value {
         .iter()
         .map(|t| {
             let e = t.evaluation.as_ref();
-            let v = |keys: &[&str]| {
-                e.and_then(|e| keys.iter().find_map(|k| e.value(k))).map_or("–".to_string(), num)
-            };
+            let v = |role: Role| e.and_then(|e| e.headline(role)).map_or("–".to_string(), |p| num(p.value));
             let travel = t.data.as_ref().map_or("–".into(), |d| {
                 let (a, b) = d.measurement_travel();
                 pos(d.kind, ((b - a) * 1e6).round() / 1e6)
@@ -609,13 +440,13 @@ pub fn summary(result: &CampaignResult) -> Value {
                 "axis": if t.tests > 1 { format!("{} ({}/{})", t.axis, t.test, t.tests) } else { t.axis.clone() },
                 "travel": travel,
                 "n": e.map_or("–".into(), |e| e.n.to_string()),
-                "a": v(&["A"]),
-                "e": v(&["E"]),
-                "r": v(&["R", "R_max"]),
-                "b": v(&["B", "B_max"]),
+                "a": v(Role::Accuracy),
+                "e": v(Role::Systematic),
+                "r": v(Role::Repeatability),
+                "b": v(Role::Reversal),
                 "unit": t.kind().map_or("", |k| k.deviation_symbol()),
                 "worst": worst,
-                "diagnosis": t.diagnosis.as_ref().map_or("–".to_string(), |d| crate::export::table::diagnosis_label(d).replace('_', " ")),
+                "diagnosis": t.diagnosis.as_ref().map_or("–".to_string(), |d| d.effects_label().replace('_', " ")),
                 "verdict": t.verdict.name(),
             })
         })

@@ -11,6 +11,7 @@ pub mod charts;
 pub mod compact;
 pub mod data;
 pub mod diagnosis_charts;
+pub mod diagnosis_data;
 pub mod labels;
 pub mod world;
 
@@ -140,7 +141,7 @@ impl Reports {
                 charts::unidirectional(&chart, &up, &down, &tall),
             );
             if let Some(d) = &test.diagnosis {
-                let (checks, in_time, along, periodogram) = data::diagnosis_charts(d);
+                let (checks, in_time, along, periodogram) = diagnosis_data::diagnosis_charts(d);
                 let style = |height_px| diagnosis_charts::Style {
                     font_family: SANS_FAMILY.to_string(),
                     width_px: CHART_WIDTH_PX,
@@ -198,7 +199,7 @@ impl Reports {
                             .evaluation
                             .as_ref()
                             .and_then(|e| e.parameter(&worst.key))
-                            .map_or(worst.key.clone(), |p| p.label.to_string()),
+                            .map_or(worst.key.clone(), |p| p.symbol().to_string()),
                         ratio: worst.ratio(),
                         pass: worst.pass,
                     })

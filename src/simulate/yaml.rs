@@ -5,7 +5,6 @@
 //! error, as is a key without its unit) before the typed parse, which reports line and
 //! column of bad values.
 
-use crate::measurement::error::did_you_mean;
 use crate::units::AxisKind;
 use serde_norway::{Mapping, Value};
 
@@ -159,9 +158,7 @@ fn check(value: &Value, ctx: Ctx, kind: AxisKind, path: &str) -> Result<(), Stri
                     ));
                 }
                 let names: Vec<&str> = table.iter().map(|e| spelling(e, kind)).collect();
-                let hint = did_you_mean(name, &names)
-                    .map(|s| format!(" (did you mean `{s}`?)"))
-                    .unwrap_or_default();
+                let hint = crate::suggest::hint(name, &names);
                 let unitless = table
                     .iter()
                     .find(|e| e.0 == name && spelling(e, kind) != name);

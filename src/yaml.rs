@@ -1,7 +1,6 @@
 //! YAML helpers for campaign and spec files: a path → location index (so that errors found
 //! after parsing still name line and column) and did-you-mean for unknown keys.
 
-use crate::measurement::error::did_you_mean;
 use saphyr_parser::{Event, Parser};
 use std::collections::HashMap;
 
@@ -141,9 +140,7 @@ pub fn explain(message: &str) -> (String, Option<String>) {
         .filter(|(k, _)| k % 2 == 1)
         .map(|(_, s)| s)
         .collect();
-    let hint = did_you_mean(&field, &expected)
-        .map(|s| format!(" (did you mean `{s}`?)"))
-        .unwrap_or_default();
+    let hint = crate::suggest::hint(&field, &expected);
     let list = if expected.is_empty() {
         String::new()
     } else {

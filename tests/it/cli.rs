@@ -1,7 +1,6 @@
 //! The `axcheck` command as a user runs it.
-mod common;
 
-use common::axcheck;
+use crate::common::axcheck;
 use std::path::PathBuf;
 
 fn json(args: &[&str]) -> serde_json::Value {

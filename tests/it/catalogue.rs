@@ -1,8 +1,7 @@
 //! The bad-input catalogue: every broken input gets a clear error naming the file (and
 //! line/column where there is one), and the rest of the campaign is still evaluated.
-mod common;
 
-use common::{axcheck, data_path, scratch};
+use crate::common::{axcheck, data_path, scratch};
 
 const HEADER: &str = "target_mm,direction,run,deviation_um\n";
 

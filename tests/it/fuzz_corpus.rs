@@ -2,7 +2,7 @@
 //! the cargo-fuzz targets call, so `cargo test` checks every seed and every regression input
 //! without cargo-fuzz or a nightly compiler.
 
-#[path = "../fuzz/src/lib.rs"]
+#[path = "../../fuzz/src/lib.rs"]
 mod targets;
 
 use std::path::PathBuf;

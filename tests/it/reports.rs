@@ -1,10 +1,9 @@
 //! PDF reports: valid, readable, deterministic, injection-safe, warning-free.
-mod common;
 
+use crate::common::{axcheck, data_path, scratch};
 use axcheck::batch;
 use axcheck::campaign::Campaign;
 use axcheck::report::Reports;
-use common::{axcheck, data_path, scratch};
 use std::path::{Path, PathBuf};
 
 /// Page count and text of a PDF.

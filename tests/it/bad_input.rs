@@ -285,9 +285,9 @@ proptest! {
     #[test]
     fn mutated_valid_files_never_panic(pos in 0usize..2000, byte in any::<u8>(), kv in any::<bool>()) {
         let base: &[u8] = if kv {
-            include_bytes!("data/ess_bifrost_slit_axis1.dat")
+            include_bytes!("../data/ess_bifrost_slit_axis1.dat")
         } else {
-            include_bytes!("data/iso230-2_table2.csv")
+            include_bytes!("../data/iso230-2_table2.csv")
         };
         let mut bytes = base.to_vec();
         let k = pos % bytes.len();
@@ -303,7 +303,7 @@ proptest! {
     /// campaign file, and never panics.
     #[test]
     fn mutated_campaigns_never_panic(pos in 0usize..20_000, byte in any::<u8>(), cut in any::<bool>()) {
-        let text = include_str!("../example-campaign/campaign.yaml");
+        let text = include_str!("../../example-campaign/campaign.yaml");
         let mut bytes = text.as_bytes().to_vec();
         let k = pos % bytes.len();
         if cut {
@@ -318,7 +318,7 @@ proptest! {
     /// Specs too.
     #[test]
     fn mutated_specs_never_panic(pos in 0usize..5_000, byte in any::<u8>()) {
-        let mut bytes = include_bytes!("../specs/general.yaml").to_vec();
+        let mut bytes = include_bytes!("../../specs/general.yaml").to_vec();
         let k = pos % bytes.len();
         bytes[k] = byte;
         let _ = axcheck::judge::Spec::from_yaml(&String::from_utf8_lossy(&bytes), "fuzz.yaml");

@@ -1,9 +1,9 @@
 //! Test-plan rules at their boundaries.
-use axcheck::campaign::Travel;
 use axcheck::evaluate::StandardId;
 use axcheck::measurement::{AxisData, RawReading};
 use axcheck::rules::{PlanContext, Severity, check};
 use axcheck::simulate::rng::Rng;
+use axcheck::units::Travel;
 use axcheck::units::{AxisKind, Direction};
 
 /// A test at `targets` with `n` runs of independent scatter (no trend).

@@ -8,8 +8,6 @@
 //! standard error, always ≥ 3σ/√n), simulates the test with `axcheck simulate`'s model and
 //! diagnoses it. Seeds and sizes vary; nothing is tuned to one seed.
 
-mod common;
-
 use axcheck::diagnose::{self, Diagnosis, Effect, Options};
 use axcheck::evaluate::StandardId;
 use axcheck::measurement::AxisData;
@@ -606,7 +604,7 @@ fn real_measurements() {
         ("ess_bifrost_slit_axis1.csv", None),
         ("ess_muts_target_x.csv", None),
     ] {
-        let data = common::load(file);
+        let data = crate::common::load(file);
         let d = diagnose::diagnose(&data, &options(7, pitch));
         println!(
             "== {file}: m = {}, n = {}",

@@ -2,9 +2,8 @@
 //! previous run's or the new one's), stale temporary files of killed runs are removed by
 //! the next run, and axcheck never replaces or deletes a file it did not write (the
 //! folder's `.axcheck-outputs` manifest lists what it wrote).
-mod common;
 
-use common::{axcheck, copy_data, scratch};
+use crate::common::{axcheck, copy_data, scratch};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 

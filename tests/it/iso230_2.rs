@@ -1,9 +1,8 @@
 //! ISO 230-2:1997 Table 2 (GB/T 17421.2-2000): the worked example.
-mod common;
 
+use crate::common::{assert_close, load};
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::units::Direction::{Down, Up};
-use common::{assert_close, load};
 
 /// (key, exact µm from the reference README, printed mm × 1000, target index i printed)
 const AXIS: &[(&str, f64, f64)] = &[

@@ -111,7 +111,7 @@ proptest! {
             (d, (j + shift) % n, v)
         });
         for p in &a.parameters {
-            prop_assert!(close(p.value, b.value(p.key).unwrap()), "{}", p.key);
+            prop_assert!(close(p.value, b.value(p.key()).unwrap()), "{}", p.key());
         }
     }
 

@@ -6,25 +6,38 @@
 //! The files are written streaming into a scratch folder, one test at a time (a lock), and
 //! removed afterwards. Peak memory is measured in-process by a counting allocator around
 //! the reader, which is exact and needs no timing.
-mod common;
 
+use crate::common::{axcheck, data_path, scratch};
 use axcheck::measurement::{self, MAX_READINGS};
-use common::{axcheck, data_path, scratch};
 use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// The system allocator, counting the bytes in use and their peak.
+/// The system allocator, counting the bytes each thread has in use and their peak. Per
+/// thread, because every integration test shares this binary and runs beside this one: the
+/// reader under test runs on the test's own thread, so its thread's count is exactly its
+/// own. (A block freed on another thread than the one that allocated it moves the counts
+/// of both; the reader hands no memory to other threads.)
 struct Counting;
 
-static IN_USE: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    static IN_USE: Cell<isize> = const { Cell::new(0) };
+    static PEAK: Cell<isize> = const { Cell::new(0) };
+}
 
 fn grew(bytes: usize) {
-    let now = IN_USE.fetch_add(bytes, Ordering::Relaxed) + bytes;
-    PEAK.fetch_max(now, Ordering::Relaxed);
+    // `try_with`: a thread being torn down may still allocate after its counters are gone.
+    let _ = IN_USE.try_with(|in_use| {
+        let now = in_use.get() + bytes as isize;
+        in_use.set(now);
+        let _ = PEAK.try_with(|peak| peak.set(peak.get().max(now)));
+    });
+}
+
+fn shrank(bytes: usize) {
+    let _ = IN_USE.try_with(|in_use| in_use.set(in_use.get() - bytes as isize));
 }
 
 unsafe impl GlobalAlloc for Counting {
@@ -49,14 +62,14 @@ unsafe impl GlobalAlloc for Counting {
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
         // SAFETY: forwarded unchanged to the system allocator.
         unsafe { System.dealloc(ptr, layout) };
-        IN_USE.fetch_sub(layout.size(), Ordering::Relaxed);
+        shrank(layout.size());
     }
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         // SAFETY: forwarded unchanged to the system allocator.
         let p = unsafe { System.realloc(ptr, layout, new_size) };
         if !p.is_null() {
-            IN_USE.fetch_sub(layout.size(), Ordering::Relaxed);
+            shrank(layout.size());
             grew(new_size);
         }
         p
@@ -69,12 +82,13 @@ static ALLOCATOR: Counting = Counting;
 /// One big file at a time: keeps the disk use and the allocation peak to one test.
 static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
 
-/// Bytes allocated at the peak while `f` runs, above what was in use before.
+/// Bytes this thread allocated at the peak while `f` runs, above what it had in use before.
 fn peak_allocated<T>(f: impl FnOnce() -> T) -> (T, usize) {
-    let before = IN_USE.load(Ordering::Relaxed);
-    PEAK.store(before, Ordering::Relaxed);
+    let before = IN_USE.with(Cell::get);
+    PEAK.with(|peak| peak.set(before));
     let value = f();
-    (value, PEAK.load(Ordering::Relaxed).saturating_sub(before))
+    let peak = PEAK.with(Cell::get);
+    (value, (peak - before).max(0) as usize)
 }
 
 const MB: usize = 1 << 20;

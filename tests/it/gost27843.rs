@@ -1,9 +1,8 @@
 //! GOST 27843-88: the worked example of the appendix (restored data, see tests/data).
-mod common;
 
+use crate::common::{assert_close, load};
 use axcheck::evaluate::gost27843::{Gost27843, SMethod};
 use axcheck::evaluate::{Standard, StandardId, evaluate};
-use common::{assert_close, load};
 
 #[test]
 fn axis_parameters() {

@@ -1,7 +1,6 @@
 //! Campaigns end to end: `axcheck run` and `axcheck check`.
-mod common;
 
-use common::{axcheck, copy_data, scratch};
+use crate::common::{axcheck, copy_data, scratch};
 use std::path::{Path, PathBuf};
 
 fn s(p: &Path) -> &str {

@@ -1,5 +1,4 @@
 //! Helpers shared by the integration tests.
-#![allow(dead_code)]
 
 use axcheck::measurement::{self, AxisData};
 use std::path::PathBuf;

@@ -1,0 +1,594 @@
+//! The parameter catalogue: every parameter axcheck computes, defined once.
+//!
+//! A [`ParameterDef`] holds what never changes about a parameter — its stable key (JSON,
+//! specs, table columns), its symbol, its name in words, the clause that defines it, the
+//! standards that define it that way, its unit kind and what sort of quantity it is. The
+//! evaluators attach values to these definitions ([`super::Parameter`]); the judge, the
+//! exporters, the markdown summary, the reports and the command line read keys, symbols
+//! and clauses from here and nowhere else.
+//!
+//! A key names one quantity per standard: ISO 230-2's `A` and GOST 27843's `A` are the
+//! same idea defined in two documents (two entries, one key), NMTBA's `A` is the NMTBA
+//! accuracy. Within one standard a key is unique. The order of [`CATALOGUE`] is the order
+//! in which each standard lists its parameters.
+
+use super::StandardId;
+use crate::units::AxisKind;
+use std::sync::LazyLock;
+
+/// The unit a parameter's value is expressed in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum UnitKind {
+    /// A positional deviation: µm on a linear axis, arcsec on a rotary one (ISO 230-2
+    /// clause 2.5; rotary axes, clause 1).
+    Deviation,
+}
+
+impl UnitKind {
+    /// The unit's key for an axis of `kind`: `um` or `arcsec`.
+    pub fn unit(self, kind: AxisKind) -> &'static str {
+        match self {
+            UnitKind::Deviation => kind.deviation_unit(),
+        }
+    }
+}
+
+/// What sort of value a parameter is: it decides whether a tolerance may limit it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// A width or largest magnitude, never negative (A, E, M, R, B, 6σ …): limited by a
+    /// tolerance.
+    Width,
+    /// A signed mean (B̄, L̄): limited by its magnitude.
+    Signed,
+    /// Where a band lies, not how wide it is (X̄max, Ā, the VDI limits, NMTBA's zero
+    /// line): a tolerance cannot name it.
+    Level,
+}
+
+/// The headline a parameter fills in summaries that show one number per idea across
+/// standards (A, E, M, R and B of the summary table and the Markdown summary).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    /// Bidirectional accuracy of positioning (ISO 230-2 A, GOST A, NMTBA A_b).
+    Accuracy,
+    /// Bidirectional systematic positional deviation (ISO 230-2 E).
+    Systematic,
+    /// Range of the mean bidirectional positional deviation (ISO 230-2 M).
+    MeanRange,
+    /// Bidirectional repeatability (ISO 230-2 R, GOST R_max).
+    Repeatability,
+    /// Reversal value of the axis (ISO 230-2 B, GOST B_max).
+    Reversal,
+}
+
+/// One parameter as a standard defines it.
+#[derive(Debug, PartialEq)]
+pub struct ParameterDef {
+    /// Stable key in JSON, specs and table columns: `A`, `A_up`, `R_max`, `B_mean` …
+    pub key: &'static str,
+    /// Symbol for people: `A↑`, `B̄` …
+    pub symbol: &'static str,
+    /// Name in words.
+    pub name: &'static str,
+    /// The clause (and formula) that defines it.
+    pub clause: &'static str,
+    /// The standards that define it this way.
+    pub standards: &'static [StandardId],
+    pub unit: UnitKind,
+    pub quantity: Quantity,
+    pub role: Option<Role>,
+    /// Needs repeated approaches: not applicable with n = 1 (ISO 230-2 clause 5.2).
+    pub needs_repeats: bool,
+}
+
+impl ParameterDef {
+    /// Whether an acceptance spec or an axis's tolerances may give it a limit.
+    pub fn limitable(&self) -> bool {
+        self.quantity != Quantity::Level
+    }
+
+    pub fn defined_by(&self, standard: StandardId) -> bool {
+        self.standards.contains(&standard)
+    }
+}
+
+const ISO: &[StandardId] = &[StandardId::Iso230_2, StandardId::Gbt17421_2];
+const GOST: &[StandardId] = &[StandardId::Gost27843];
+const VDI: &[StandardId] = &[StandardId::Vdi3441];
+const NMTBA: &[StandardId] = &[StandardId::Nmtba];
+
+/// A definition with the fields most entries share (deviation unit, a width, no role,
+/// computable with n = 1).
+const fn def(
+    key: &'static str,
+    symbol: &'static str,
+    name: &'static str,
+    clause: &'static str,
+    standards: &'static [StandardId],
+) -> ParameterDef {
+    ParameterDef {
+        key,
+        symbol,
+        name,
+        clause,
+        standards,
+        unit: UnitKind::Deviation,
+        quantity: Quantity::Width,
+        role: None,
+        needs_repeats: false,
+    }
+}
+
+const fn with_role(d: ParameterDef, role: Role) -> ParameterDef {
+    ParameterDef {
+        role: Some(role),
+        ..d
+    }
+}
+
+const fn repeated(d: ParameterDef) -> ParameterDef {
+    ParameterDef {
+        needs_repeats: true,
+        ..d
+    }
+}
+
+const fn signed(d: ParameterDef) -> ParameterDef {
+    ParameterDef {
+        quantity: Quantity::Signed,
+        ..d
+    }
+}
+
+const fn level(d: ParameterDef) -> ParameterDef {
+    ParameterDef {
+        quantity: Quantity::Level,
+        ..d
+    }
+}
+
+/// ISO 230-2:1997 clause 2 (= GB/T 17421.2-2000, A↓ as corrected by its amendment No. 1).
+pub mod iso230_2 {
+    use super::*;
+    pub static A: ParameterDef = with_role(
+        repeated(def(
+            "A",
+            "A",
+            "bidirectional accuracy of positioning",
+            "ISO 230-2 2.23",
+            ISO,
+        )),
+        Role::Accuracy,
+    );
+    pub static A_UP: ParameterDef = repeated(def(
+        "A_up",
+        "A↑",
+        "unidirectional accuracy of positioning ↑",
+        "ISO 230-2 2.22",
+        ISO,
+    ));
+    pub static A_DOWN: ParameterDef = repeated(def(
+        "A_down",
+        "A↓",
+        "unidirectional accuracy of positioning ↓",
+        "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
+        ISO,
+    ));
+    pub static E: ParameterDef = with_role(
+        def(
+            "E",
+            "E",
+            "bidirectional systematic positional deviation",
+            "ISO 230-2 2.20",
+            ISO,
+        ),
+        Role::Systematic,
+    );
+    pub static E_UP: ParameterDef = def(
+        "E_up",
+        "E↑",
+        "unidirectional systematic positional deviation ↑",
+        "ISO 230-2 2.19",
+        ISO,
+    );
+    pub static E_DOWN: ParameterDef = def(
+        "E_down",
+        "E↓",
+        "unidirectional systematic positional deviation ↓",
+        "ISO 230-2 2.19",
+        ISO,
+    );
+    pub static M: ParameterDef = with_role(
+        def(
+            "M",
+            "M",
+            "range of the mean bidirectional positional deviation",
+            "ISO 230-2 2.21",
+            ISO,
+        ),
+        Role::MeanRange,
+    );
+    pub static R: ParameterDef = with_role(
+        repeated(def(
+            "R",
+            "R",
+            "bidirectional repeatability of positioning",
+            "ISO 230-2 2.18 (2.17)",
+            ISO,
+        )),
+        Role::Repeatability,
+    );
+    pub static R_UP: ParameterDef = repeated(def(
+        "R_up",
+        "R↑",
+        "unidirectional repeatability of positioning ↑",
+        "ISO 230-2 2.18 (2.16)",
+        ISO,
+    ));
+    pub static R_DOWN: ParameterDef = repeated(def(
+        "R_down",
+        "R↓",
+        "unidirectional repeatability of positioning ↓",
+        "ISO 230-2 2.18 (2.16)",
+        ISO,
+    ));
+    pub static B: ParameterDef = with_role(
+        def(
+            "B",
+            "B",
+            "reversal value of the axis",
+            "ISO 230-2 2.13",
+            ISO,
+        ),
+        Role::Reversal,
+    );
+    pub static B_MEAN: ParameterDef = signed(def(
+        "B_mean",
+        "B̄",
+        "mean reversal value of the axis",
+        "ISO 230-2 2.14",
+        ISO,
+    ));
+}
+
+/// GOST 27843-88 clause 1 (coverage 3S).
+pub mod gost27843 {
+    use super::*;
+    pub static A: ParameterDef = with_role(
+        repeated(def(
+            "A",
+            "A",
+            "bidirectional positioning accuracy",
+            "GOST 27843 1.14 (10)",
+            GOST,
+        )),
+        Role::Accuracy,
+    );
+    pub static A_UP: ParameterDef = repeated(def(
+        "A_up",
+        "A↑",
+        "unidirectional positioning accuracy ↑",
+        "GOST 27843 1.14 (10)",
+        GOST,
+    ));
+    pub static A_DOWN: ParameterDef = repeated(def(
+        "A_down",
+        "A↓",
+        "unidirectional positioning accuracy ↓",
+        "GOST 27843 1.14 (10)",
+        GOST,
+    ));
+    pub static R_MAX: ParameterDef = with_role(
+        repeated(def(
+            "R_max",
+            "R_max",
+            "bidirectional positioning repeatability",
+            "GOST 27843 1.11, 1.13 (8)",
+            GOST,
+        )),
+        Role::Repeatability,
+    );
+    pub static R_UP: ParameterDef = repeated(def(
+        "R_up",
+        "R↑",
+        "unidirectional positioning repeatability ↑",
+        "GOST 27843 1.10, 1.13 (7)",
+        GOST,
+    ));
+    pub static R_DOWN: ParameterDef = repeated(def(
+        "R_down",
+        "R↓",
+        "unidirectional positioning repeatability ↓",
+        "GOST 27843 1.10, 1.13 (7)",
+        GOST,
+    ));
+    pub static R_MEAN: ParameterDef = repeated(def(
+        "R_mean",
+        "R̄",
+        "mean bidirectional positioning repeatability",
+        "GOST 27843 1.12 (9)",
+        GOST,
+    ));
+    pub static B_MAX: ParameterDef = with_role(
+        def(
+            "B_max",
+            "B_max",
+            "maximum dead band (reversal)",
+            "GOST 27843 1.16",
+            GOST,
+        ),
+        Role::Reversal,
+    );
+    pub static B_MEAN: ParameterDef = signed(def(
+        "B_mean",
+        "B̄",
+        "mean dead band (reversal)",
+        "GOST 27843 1.15",
+        GOST,
+    ));
+}
+
+/// VDI 3441 as Hemingray, Cowley and Burdekin (1971) describe it, §3.2.
+pub mod vdi3441 {
+    use super::*;
+    const CLAUSE: &str = "VDI 3441 (Hemingray et al. 1971, 3.2)";
+    pub static X_MAX: ParameterDef =
+        level(def("X_max", "X̄max", "largest mean deviation", CLAUSE, VDI));
+    pub static X_MIN: ParameterDef =
+        level(def("X_min", "X̄min", "smallest mean deviation", CLAUSE, VDI));
+    pub static A_MEAN: ParameterDef = level(def(
+        "A_mean",
+        "Ā",
+        "mean position deviation (X̄max + X̄min)/2",
+        CLAUSE,
+        VDI,
+    ));
+    pub static SIGMA_MEAN: ParameterDef = repeated(def(
+        "sigma_mean",
+        "σ̄",
+        "mean standard deviation from ranges, σi = Ri/d",
+        CLAUSE,
+        VDI,
+    ));
+    pub static G_UPPER: ParameterDef = level(repeated(def(
+        "G_upper",
+        "G_o",
+        "upper limit Ā + ((X̄max − X̄min)/2 + 3σ)",
+        CLAUSE,
+        VDI,
+    )));
+    pub static G_LOWER: ParameterDef = level(repeated(def(
+        "G_lower",
+        "G_u",
+        "lower limit Ā − ((X̄max − X̄min)/2 + 3σ)",
+        CLAUSE,
+        VDI,
+    )));
+    pub static T: ParameterDef = repeated(def(
+        "T",
+        "T_E",
+        "position error X̄max − X̄min + 6σ",
+        CLAUSE,
+        VDI,
+    ));
+    pub static R_P: ParameterDef =
+        repeated(def("R_p", "R_p", "position scatter width 6σ", CLAUSE, VDI));
+}
+
+/// The NMTBA accuracy definition as Hemingray, Cowley and Burdekin (1971) describe it, §3.1.
+pub mod nmtba {
+    use super::*;
+    const CLAUSE: &str = "NMTBA (Hemingray et al. 1971, 3.1)";
+    pub static A: ParameterDef = with_role(
+        repeated(def(
+            "A",
+            "A_b",
+            "bidirectional accuracy max(|X̄i − zero| + 3σi)",
+            CLAUSE,
+            NMTBA,
+        )),
+        Role::Accuracy,
+    );
+    pub static A_UP: ParameterDef = repeated(def(
+        "A_up",
+        "A_u↑",
+        "unidirectional accuracy ↑",
+        CLAUSE,
+        NMTBA,
+    ));
+    pub static A_DOWN: ParameterDef = repeated(def(
+        "A_down",
+        "A_u↓",
+        "unidirectional accuracy ↓",
+        CLAUSE,
+        NMTBA,
+    ));
+    pub static ZERO: ParameterDef = level(repeated(def(
+        "zero",
+        "zero",
+        "zero line, midway between the extreme means",
+        CLAUSE,
+        NMTBA,
+    )));
+    pub static SPREAD: ParameterDef = repeated(def(
+        "spread",
+        "3σ_b",
+        "largest bidirectional scatter 3σ",
+        CLAUSE,
+        NMTBA,
+    ));
+    pub static SPREAD_UP: ParameterDef = repeated(def(
+        "spread_up",
+        "3σ_u↑",
+        "largest unidirectional scatter 3σ",
+        CLAUSE,
+        NMTBA,
+    ));
+    pub static SPREAD_DOWN: ParameterDef = repeated(def(
+        "spread_down",
+        "3σ_u↓",
+        "largest unidirectional scatter 3σ",
+        CLAUSE,
+        NMTBA,
+    ));
+    pub static L_MAX: ParameterDef = def(
+        "L_max",
+        "L_max",
+        "largest lost motion |X̄i↑ − X̄i↓|",
+        CLAUSE,
+        NMTBA,
+    );
+    pub static L_MEAN: ParameterDef = signed(def("L_mean", "L̄", "mean lost motion", CLAUSE, NMTBA));
+}
+
+/// Every definition, each standard's in the order the standard lists them.
+pub static CATALOGUE: &[&ParameterDef] = &[
+    &iso230_2::A,
+    &iso230_2::A_UP,
+    &iso230_2::A_DOWN,
+    &iso230_2::E,
+    &iso230_2::E_UP,
+    &iso230_2::E_DOWN,
+    &iso230_2::M,
+    &iso230_2::R,
+    &iso230_2::R_UP,
+    &iso230_2::R_DOWN,
+    &iso230_2::B,
+    &iso230_2::B_MEAN,
+    &gost27843::A,
+    &gost27843::A_UP,
+    &gost27843::A_DOWN,
+    &gost27843::R_MAX,
+    &gost27843::R_UP,
+    &gost27843::R_DOWN,
+    &gost27843::R_MEAN,
+    &gost27843::B_MAX,
+    &gost27843::B_MEAN,
+    &vdi3441::X_MAX,
+    &vdi3441::X_MIN,
+    &vdi3441::A_MEAN,
+    &vdi3441::SIGMA_MEAN,
+    &vdi3441::G_UPPER,
+    &vdi3441::G_LOWER,
+    &vdi3441::T,
+    &vdi3441::R_P,
+    &nmtba::A,
+    &nmtba::A_UP,
+    &nmtba::A_DOWN,
+    &nmtba::ZERO,
+    &nmtba::SPREAD,
+    &nmtba::SPREAD_UP,
+    &nmtba::SPREAD_DOWN,
+    &nmtba::L_MAX,
+    &nmtba::L_MEAN,
+];
+
+/// The parameters of `standard`, in its order.
+pub fn of(standard: StandardId) -> impl Iterator<Item = &'static ParameterDef> {
+    CATALOGUE
+        .iter()
+        .copied()
+        .filter(move |d| d.defined_by(standard))
+}
+
+/// `standard`'s definition of `key`.
+pub fn find(standard: StandardId, key: &str) -> Option<&'static ParameterDef> {
+    of(standard).find(|d| d.key == key)
+}
+
+/// The distinct keys of the definitions `keep` selects, in catalogue order.
+fn keys_where(keep: impl Fn(&ParameterDef) -> bool) -> Vec<&'static str> {
+    let mut keys: Vec<&'static str> = Vec::new();
+    for d in CATALOGUE.iter().filter(|d| keep(d)) {
+        if !keys.contains(&d.key) {
+            keys.push(d.key);
+        }
+    }
+    keys
+}
+
+/// Every key a tolerance limit may name, whatever the standard.
+pub fn limitable_keys() -> &'static [&'static str] {
+    static KEYS: LazyLock<Vec<&'static str>> =
+        LazyLock::new(|| keys_where(ParameterDef::limitable));
+    &KEYS
+}
+
+/// Whether a tolerance limit may name `key`.
+pub fn is_limitable_key(key: &str) -> bool {
+    limitable_keys().contains(&key)
+}
+
+/// The keys of ISO 230-2's and GOST 27843's parameters: the parameter columns of the
+/// summary table (a stable interface: VDI 3441 and NMTBA values are in `results.json`).
+pub fn summary_keys() -> &'static [&'static str] {
+    static KEYS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
+        keys_where(|d| d.defined_by(StandardId::Iso230_2) || d.defined_by(StandardId::Gost27843))
+    });
+    &KEYS
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_are_unique_within_each_standard() {
+        for standard in StandardId::ALL {
+            let keys: Vec<&str> = of(standard).map(|d| d.key).collect();
+            let mut unique = keys.clone();
+            unique.sort_unstable();
+            unique.dedup();
+            assert_eq!(keys.len(), unique.len(), "{standard}: {keys:?}");
+            assert!(!keys.is_empty(), "{standard}");
+        }
+    }
+
+    #[test]
+    fn summary_columns_are_the_iso_and_gost_keys() {
+        assert_eq!(
+            summary_keys(),
+            [
+                "A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
+                "B_mean", "R_max", "R_mean", "B_max"
+            ]
+        );
+    }
+
+    #[test]
+    fn levels_take_no_limit() {
+        let keys = limitable_keys();
+        for k in ["X_max", "X_min", "A_mean", "G_upper", "G_lower", "zero"] {
+            assert!(!keys.contains(&k), "{k}");
+        }
+        for k in [
+            "A",
+            "B_mean",
+            "T",
+            "R_p",
+            "sigma_mean",
+            "spread",
+            "L_max",
+            "L_mean",
+        ] {
+            assert!(keys.contains(&k), "{k}");
+        }
+        assert_eq!(keys.len(), 23);
+    }
+
+    #[test]
+    fn one_headline_per_role_and_standard() {
+        for standard in StandardId::ALL {
+            for role in [
+                Role::Accuracy,
+                Role::Systematic,
+                Role::MeanRange,
+                Role::Repeatability,
+                Role::Reversal,
+            ] {
+                assert!(of(standard).filter(|d| d.role == Some(role)).count() <= 1);
+            }
+        }
+    }
+}

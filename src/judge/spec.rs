@@ -1,0 +1,156 @@
+//! Acceptance specs (`specs/*.yaml`): limits per parameter in bands of measurement travel.
+
+use crate::evaluate::catalogue;
+use crate::units::AxisKind;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// The specs that ship inside the binary (`specs/*.yaml` of the source tree).
+pub const BUILTIN_SPECS: &[(&str, &str)] = &[
+    ("general", include_str!("../../specs/general.yaml")),
+    ("precision", include_str!("../../specs/precision.yaml")),
+];
+
+/// One band of a spec: limits for axes whose measurement travel is up to `up_to`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Band {
+    /// Upper end of the band's measurement travel, mm or deg; absent: no upper end.
+    #[serde(
+        default,
+        alias = "up_to_mm",
+        alias = "up_to_deg",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub up_to: Option<f64>,
+    /// Limits per parameter, µm (linear) or arcsec (rotary).
+    pub tolerances: BTreeMap<String, f64>,
+}
+
+/// An acceptance spec.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Spec {
+    pub name: String,
+    #[serde(default)]
+    pub title: String,
+    #[serde(default)]
+    pub note: String,
+    /// The standard whose parameters the limits name.
+    #[serde(default)]
+    pub standard: Option<String>,
+    #[serde(default)]
+    pub linear: Vec<Band>,
+    #[serde(default)]
+    pub rotary: Vec<Band>,
+}
+
+impl Spec {
+    /// Parses a spec; `file` names it in errors.
+    pub fn from_yaml(text: &str, file: &str) -> Result<Spec, String> {
+        let index = crate::yaml::LocationIndex::new(text);
+        let value: serde_norway::Value =
+            serde_norway::from_str(text).map_err(|e| crate::yaml::syntax_error(&e, file, text))?;
+        let spec: Spec =
+            crate::yaml::deserialize_at(value, "", &index).map_err(|e| e.in_file(file))?;
+        for (group, bands) in [("linear", &spec.linear), ("rotary", &spec.rotary)] {
+            let mut last = f64::NEG_INFINITY;
+            for (k, band) in bands.iter().enumerate() {
+                let here = format!("{group}[{k}]");
+                let at = |p: &str| {
+                    crate::yaml::Located {
+                        at: index.value(p),
+                        message: String::new(),
+                    }
+                    .in_file(file)
+                };
+                match band.up_to {
+                    Some(u) if u > last => last = u,
+                    Some(_) => {
+                        return Err(format!(
+                            "{}{here}: bands must have increasing up_to",
+                            at(&here)
+                        ));
+                    }
+                    None if k + 1 == bands.len() => last = f64::INFINITY,
+                    None => {
+                        return Err(format!(
+                            "{}{here}: only the last band may omit up_to",
+                            at(&here)
+                        ));
+                    }
+                }
+                for (key, limit) in &band.tolerances {
+                    if !catalogue::is_limitable_key(key) {
+                        let hint = crate::suggest::hint(key, catalogue::limitable_keys());
+                        return Err(format!(
+                            "{}{here}.tolerances: unknown parameter `{key}`{hint}",
+                            at(&format!("{here}.tolerances.{key}"))
+                        ));
+                    }
+                    if !(*limit >= 0.0 && limit.is_finite()) {
+                        return Err(format!(
+                            "{}{here}.tolerances.{key}: expected a limit ≥ 0",
+                            at(&format!("{here}.tolerances.{key}"))
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(spec)
+    }
+
+    /// The band for an axis of `kind` whose measurement travel is `travel`.
+    pub fn band(&self, kind: AxisKind, travel: f64) -> Option<&Band> {
+        let bands = match kind {
+            AxisKind::Linear => &self.linear,
+            AxisKind::Rotary => &self.rotary,
+        };
+        bands
+            .iter()
+            .find(|b| b.up_to.is_none_or(|u| travel <= u + 1e-9))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::judge::{LimitSource, Limits};
+
+    #[test]
+    fn builtin_specs_parse_and_say_they_are_examples() {
+        for (name, text) in BUILTIN_SPECS {
+            let spec = Spec::from_yaml(text, name).unwrap();
+            assert_eq!(&spec.name, name);
+            assert!(spec.note.to_lowercase().contains("example"), "{name}");
+            assert!(spec.band(AxisKind::Linear, 1000.0).is_some());
+            assert!(spec.band(AxisKind::Linear, 9000.0).is_some());
+            assert!(spec.band(AxisKind::Rotary, 360.0).is_some());
+        }
+    }
+
+    #[test]
+    fn bands_and_overrides() {
+        let spec = Spec::from_yaml(
+            "name: t\nlinear:\n  - {up_to_mm: 1000, tolerances: {A: 10, R: 5}}\n  - {tolerances: {A: 20}}\n",
+            "t.yaml",
+        )
+        .unwrap();
+        let over = BTreeMap::from([("R".to_string(), 4.0)]);
+        let l = Limits::new(Some(&spec), &over, AxisKind::Linear, 1000.0).unwrap();
+        assert_eq!(l.values["A"], (10.0, LimitSource::Spec));
+        assert_eq!(l.values["R"], (4.0, LimitSource::Axis));
+        let l = Limits::new(Some(&spec), &BTreeMap::new(), AxisKind::Linear, 1000.5).unwrap();
+        assert_eq!(l.values["A"].0, 20.0);
+        assert!(Limits::new(Some(&spec), &BTreeMap::new(), AxisKind::Rotary, 90.0).is_err());
+        let e = Spec::from_yaml(
+            "name: t\nlinear:\n  - {up_to_mm: 1000, tolerances: {AA: 1}}\n",
+            "t.yaml",
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("t.yaml:3:") && e.contains("unknown parameter `AA`"),
+            "{e}"
+        );
+    }
+}

@@ -1,0 +1,160 @@
+//! The diagnosis part of an axis report: the findings with their evidence, the held-out
+//! gain, the parameters with the identified effects removed, and the data of the
+//! diagnosis charts (model checks, residuals in time and along the axis, periodogram).
+
+use super::data::num;
+use crate::units::{AxisKind, fmt_fixed};
+use serde_json::{Value, json};
+
+/// The diagnosis section: findings with evidence, the held-out gain, parameters with the
+/// identified effects removed (beside the measured ones), notes.
+pub(super) fn diagnosis_json(d: &crate::diagnose::Diagnosis) -> Value {
+    let unit = d.kind.deviation_symbol();
+    let fmt = |x: f64| {
+        if x != 0.0 && (x.abs() < 0.01 || x.abs() >= 1e5) {
+            format!("{x:.2e}")
+        } else {
+            num(x)
+        }
+    };
+    let findings: Vec<Value> = d
+        .findings
+        .iter()
+        .map(|f| {
+            let e = &f.evidence;
+            let mut evidence = format!("{} = {}", e.statistic, fmt(e.value));
+            if let Some(p) = e.p_value {
+                evidence.push_str(&if p < 1e-4 { format!(", p = {p:.1e}") } else { format!(", p = {p:.4}") });
+            }
+            if let Some(s) = e.effect_size {
+                evidence.push_str(&format!(", effect size {}", fmt(s)));
+            }
+            json!({
+                "effect": f.effect.name(),
+                "message": f.message,
+                "params": f.params.iter().map(|(k, v)| format!("{k} = {}", fmt(*v))).chain(f.labels.iter().map(|(k, v)| format!("{k} = {v}"))).collect::<Vec<_>>().join(", "),
+                "evidence": evidence,
+            })
+        })
+        .collect();
+    let all = d
+        .corrected
+        .iter()
+        .find(|c| c.effect == "all")
+        .or_else(|| d.corrected.last());
+    let corrected: Vec<Value> = all.map_or(Vec::new(), |c| {
+        c.parameters
+            .iter()
+            .map(|p| json!({"key": p.key, "measured": num(p.measured), "corrected": num(p.corrected)}))
+            .collect()
+    });
+    json!({
+        "unit": unit,
+        "findings": findings,
+        "base_rms": fmt_fixed(d.base.heldout_rms, 3),
+        "extended_rms": fmt_fixed(d.extended.heldout_rms, 3),
+        "base_terms": d.base.terms.join(", "),
+        "extended_terms": d.extended.terms.join(", "),
+        "gain": if d.gain_pct.is_finite() { fmt_fixed(d.gain_pct, 1) } else { "–".to_string() },
+        "validation": d.validation,
+        "corrected_label": all.map_or(String::new(), |c| c.effect.clone()),
+        "corrected": corrected,
+        "notes": d.notes,
+        "has_periodogram": !d.residuals.periodogram.is_empty(),
+    })
+}
+
+/// Chart data of a diagnosis: model checks, residuals in time and along the axis, the
+/// periodogram.
+pub fn diagnosis_charts(
+    d: &crate::diagnose::Diagnosis,
+) -> (
+    Vec<super::diagnosis_charts::CheckBar>,
+    super::diagnosis_charts::Residuals,
+    super::diagnosis_charts::Residuals,
+    super::diagnosis_charts::Periodogram,
+) {
+    use super::diagnosis_charts::{CheckBar, Periodogram, Residuals};
+    let (pos_unit, dev_unit) = match d.kind {
+        AxisKind::Linear => ("mm", "µm"),
+        AxisKind::Rotary => ("°", "arcsec"),
+    };
+    let checks = d
+        .checks
+        .iter()
+        .map(|c| CheckBar {
+            label: c.statistic.replace('_', " "),
+            measured: c.measured,
+            low: c.simulated_low,
+            high: c.simulated_high,
+            outside: c.outside,
+        })
+        .collect();
+    let readings = &d.residuals.readings;
+    let timed = readings.iter().all(|r| r.time_s.is_some());
+    let sigma = {
+        let n = readings.len().max(1) as f64;
+        (readings
+            .iter()
+            .map(|r| r.residual * r.residual)
+            .sum::<f64>()
+            / n)
+            .sqrt()
+    };
+    let in_time = Residuals {
+        x: readings
+            .iter()
+            .map(|r| {
+                if timed {
+                    r.time_s.unwrap_or(0.0) / 60.0
+                } else {
+                    r.order as f64 + 1.0
+                }
+            })
+            .collect(),
+        y: readings.iter().map(|r| r.residual).collect(),
+        up: readings
+            .iter()
+            .map(|r| r.direction == crate::units::Direction::Up)
+            .collect(),
+        x_label: if timed {
+            "Time since the start of the test / min".into()
+        } else {
+            "Reading in the order of the test cycle".into()
+        },
+        y_label: format!("Residual of the base model / {dev_unit}"),
+        band: Some(2.0 * sigma),
+        fit: None,
+    };
+    let along = Residuals {
+        x: readings.iter().map(|r| r.position).collect(),
+        x_label: format!("Target position Pi / {pos_unit}"),
+        ..Residuals {
+            x: Vec::new(),
+            y: in_time.y.clone(),
+            up: in_time.up.clone(),
+            x_label: String::new(),
+            y_label: in_time.y_label.clone(),
+            band: in_time.band,
+            fit: None,
+        }
+    };
+    let marked = d
+        .findings
+        .iter()
+        .find(|f| f.effect == crate::diagnose::Effect::Periodic)
+        .and_then(|f| {
+            let key = format!("period_{}", d.kind.position_unit());
+            f.param(&key)
+                .map(|p| (p, format!("{} {pos_unit}", fmt_fixed(p, 2))))
+        });
+    let periodogram = Periodogram {
+        period: d.residuals.periodogram.iter().map(|(p, _)| *p).collect(),
+        power: d.residuals.periodogram.iter().map(|(_, w)| *w).collect(),
+        period_label: format!("Period / {pos_unit}"),
+        threshold: None,
+        marked,
+        unresolved_below: None,
+    };
+    (checks, in_time, along, periodogram)
+}

@@ -1,0 +1,20 @@
+//! axcheck's integration tests, in one test binary (as ripgrep keeps them): one link of
+//! the library and its heavy dependencies instead of one per file.
+
+mod common;
+
+mod bad_input;
+mod big_input;
+mod campaign;
+mod catalogue;
+mod cli;
+mod diagnose;
+mod fuzz_corpus;
+mod gost27843;
+mod iso230_2;
+mod outputs;
+mod properties;
+mod reports;
+mod rules;
+mod simulator;
+mod standards;
