@@ -10,113 +10,175 @@
 
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::{AxisTest, CampaignResult};
-use serde_json::{Map, Value, json};
+use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
+use crate::evaluate::json::{ParameterValues, TargetIndices};
+use crate::judge::{Check, Judgement, Verdict};
+use crate::nde::NdeCorrection;
+use crate::rules::Finding;
+use crate::units::{AxisKind, Travel};
+use serde::Serialize;
+use std::collections::BTreeMap;
 
 pub struct Json;
 
 /// The JSON of one test.
-pub fn test_json(t: &AxisTest) -> Value {
-    let mut m = Map::new();
-    m.insert("machine".into(), json!(t.machine.id));
-    m.insert(
-        "machine_info".into(),
-        serde_json::to_value(&*t.machine).unwrap_or(Value::Null),
-    );
-    m.insert("axis".into(), json!(t.axis));
-    m.insert("test".into(), json!(t.test));
-    m.insert("tests".into(), json!(t.tests));
-    m.insert("file".into(), json!(t.file));
-    m.insert("kind".into(), json!(t.kind().map(|k| k.to_string())));
-    m.insert("standard".into(), json!(t.standard().map(|s| s.key())));
-    m.insert("unit".into(), json!(t.kind().map(|k| k.deviation_unit())));
-    m.insert(
-        "position_unit".into(),
-        json!(t.kind().map(|k| k.position_unit())),
-    );
-    if let Some(spec) = &t.spec {
-        m.insert(
-            "travel".into(),
-            serde_json::to_value(spec.raw.travel).unwrap_or(Value::Null),
-        );
-        m.insert(
-            "declared_measurement_travel".into(),
-            json!(spec.raw.measurement_travel),
-        );
-        m.insert(
-            "conditions".into(),
-            serde_json::to_value(&spec.raw.conditions).unwrap_or(Value::Null),
-        );
-    }
-    if let Some(d) = &t.data {
-        let (a, b) = d.measurement_travel();
-        m.insert("measurement_travel".into(), json!([a, b]));
-        m.insert("readings".into(), json!(d.readings.len()));
-    }
-    m.insert("verdict".into(), json!(t.verdict.name()));
-    if let Some(e) = &t.evaluation {
-        m.insert("n".into(), json!(e.n));
-        m.insert("m".into(), json!(e.targets.len()));
-        use crate::evaluate::json::{ParameterValues, TargetIndices};
-        m.insert("parameters".into(), json!(ParameterValues(&e.parameters)));
-        m.insert("at_target".into(), json!(TargetIndices(&e.parameters)));
-        m.insert("notes".into(), json!(e.notes));
-    }
-    if let Some(j) = &t.judgement {
-        m.insert("spec".into(), json!(j.limits.spec));
-        let limits: Map<String, Value> = j
-            .limits
-            .values
-            .iter()
-            .map(|(k, (v, _))| (k.clone(), json!(v)))
-            .collect();
-        m.insert("limits".into(), Value::Object(limits));
-        m.insert(
-            "checks".into(),
-            serde_json::to_value(&j.checks).unwrap_or(Value::Null),
-        );
-        m.insert(
-            "failed".into(),
-            json!(j.failed().map(|c| c.key.clone()).collect::<Vec<_>>()),
-        );
-        m.insert("not_applicable_limits".into(), json!(j.not_applicable));
-        m.insert("no_tolerance".into(), json!(j.limits.is_empty()));
-    }
-    m.insert(
-        "rules".into(),
-        serde_json::to_value(&t.findings).unwrap_or(Value::Null),
-    );
-    m.insert(
-        "nde".into(),
-        serde_json::to_value(&t.nde).unwrap_or(Value::Null),
-    );
-    if let Some(d) = &t.diagnosis {
-        m.insert("diagnosis".into(), d.to_json());
-    }
-    if let Some(e) = &t.error {
-        m.insert("error".into(), json!(e));
-    }
-    Value::Object(m)
+#[derive(Serialize)]
+pub struct TestJson<'a> {
+    machine: &'a str,
+    machine_info: &'a MachineInfo,
+    axis: &'a str,
+    test: usize,
+    tests: usize,
+    file: Option<&'a str>,
+    kind: Option<AxisKind>,
+    standard: Option<&'static str>,
+    unit: Option<&'static str>,
+    position_unit: Option<&'static str>,
+    #[serde(flatten)]
+    declared: Option<Declared<'a>>,
+    #[serde(flatten)]
+    measured: Option<Measured>,
+    verdict: Verdict,
+    #[serde(flatten)]
+    evaluation: Option<Evaluated<'a>>,
+    #[serde(flatten)]
+    judgement: Option<Judged<'a>>,
+    rules: &'a [Finding],
+    nde: Option<&'a NdeCorrection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    diagnosis: Option<serde_json::Value>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<&'a str>,
 }
 
-/// The whole `results.json` value.
-/// Everything of `results.json` but the axes (`"axes": []`, last).
-fn results_head(result: &CampaignResult) -> Value {
-    let mut campaign = serde_json::to_value(&result.info).unwrap_or(Value::Null);
-    if let Some(c) = campaign.as_object_mut() {
-        c.insert("file".into(), json!(result.file_name));
-        c.insert("standard".into(), json!(result.standard.key()));
+/// What the campaign declares of the axis.
+#[derive(Serialize)]
+struct Declared<'a> {
+    travel: Option<Travel>,
+    declared_measurement_travel: Option<[f64; 2]>,
+    conditions: &'a Conditions,
+}
+
+/// What the measurement file holds.
+#[derive(Serialize)]
+struct Measured {
+    measurement_travel: [f64; 2],
+    readings: usize,
+}
+
+#[derive(Serialize)]
+struct Evaluated<'a> {
+    n: usize,
+    m: usize,
+    parameters: ParameterValues<'a>,
+    at_target: TargetIndices<'a>,
+    notes: &'a [String],
+}
+
+#[derive(Serialize)]
+struct Judged<'a> {
+    spec: Option<&'a str>,
+    limits: BTreeMap<&'a str, f64>,
+    checks: &'a [Check],
+    failed: Vec<&'a str>,
+    not_applicable_limits: &'a [String],
+    no_tolerance: bool,
+}
+
+impl<'a> Judged<'a> {
+    fn new(j: &'a Judgement) -> Judged<'a> {
+        Judged {
+            spec: j.limits.spec.as_deref(),
+            limits: j
+                .limits
+                .values
+                .iter()
+                .map(|(k, (v, _))| (k.as_str(), *v))
+                .collect(),
+            checks: &j.checks,
+            failed: j.failed().map(|c| c.key.as_str()).collect(),
+            not_applicable_limits: &j.not_applicable,
+            no_tolerance: j.limits.is_empty(),
+        }
     }
-    let counts: Map<String, Value> = result
-        .counts()
-        .into_iter()
-        .map(|(v, n)| (v.name().to_string(), json!(n)))
-        .collect();
-    json!({
-        "axcheck": env!("CARGO_PKG_VERSION"),
-        "campaign": campaign,
-        "counts": counts,
-        "axes": [],
-    })
+}
+
+/// The JSON view of one test.
+pub fn test_json(t: &AxisTest) -> TestJson<'_> {
+    TestJson {
+        machine: &t.machine.id,
+        machine_info: &t.machine,
+        axis: &t.axis,
+        test: t.test,
+        tests: t.tests,
+        file: t.file.as_deref(),
+        kind: t.kind(),
+        standard: t.standard().map(|s| s.key()),
+        unit: t.kind().map(|k| k.deviation_unit()),
+        position_unit: t.kind().map(|k| k.position_unit()),
+        declared: t.spec.as_ref().map(|spec| Declared {
+            travel: spec.raw.travel,
+            declared_measurement_travel: spec.raw.measurement_travel,
+            conditions: &spec.raw.conditions,
+        }),
+        measured: t.data.as_ref().map(|d| {
+            let (a, b) = d.measurement_travel();
+            Measured {
+                measurement_travel: [a, b],
+                readings: d.readings.len(),
+            }
+        }),
+        verdict: t.verdict,
+        evaluation: t.evaluation.as_ref().map(|e| Evaluated {
+            n: e.n,
+            m: e.targets.len(),
+            parameters: ParameterValues(&e.parameters),
+            at_target: TargetIndices(&e.parameters),
+            notes: &e.notes,
+        }),
+        judgement: t.judgement.as_ref().map(Judged::new),
+        rules: &t.findings,
+        nde: t.nde.as_ref(),
+        diagnosis: t.diagnosis.as_ref().map(|d| d.to_json()),
+        error: t.error.as_deref(),
+    }
+}
+
+/// Everything of `results.json` but the axes (`"axes": []`, last).
+#[derive(Serialize)]
+struct Head<'a> {
+    axcheck: &'static str,
+    campaign: CampaignJson<'a>,
+    counts: BTreeMap<Verdict, usize>,
+    axes: [(); 0],
+}
+
+/// The campaign block as written, with its file name and the standard it resolves to
+/// (in place of the one written, or after the file name when none was).
+#[derive(Serialize)]
+struct CampaignJson<'a> {
+    #[serde(flatten)]
+    info: CampaignInfo,
+    file: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    standard: Option<&'static str>,
+}
+
+fn results_head(result: &CampaignResult) -> Head<'_> {
+    let standard = result.standard.key();
+    Head {
+        axcheck: env!("CARGO_PKG_VERSION"),
+        campaign: CampaignJson {
+            info: CampaignInfo {
+                standard: result.info.standard.as_ref().map(|_| standard.to_string()),
+                ..result.info.clone()
+            },
+            file: &result.file_name,
+            standard: result.info.standard.is_none().then_some(standard),
+        },
+        counts: result.counts(),
+        axes: [],
+    }
 }
 
 /// `results.json`, pretty-printed: the axes are serialised in parallel (1 000 axes are
