@@ -59,6 +59,21 @@ impl AxisTest {
         }
     }
 
+    /// The test-plan rules of severity error the test breaks (they make it noncompliant).
+    pub fn broken_rules(&self) -> impl Iterator<Item = &Finding> {
+        self.findings
+            .iter()
+            .filter(|f| f.severity == Severity::Error)
+    }
+
+    /// [`Self::broken_rules`] as `id (clause): message; …`.
+    pub fn broken_rules_text(&self) -> String {
+        self.broken_rules()
+            .map(|f| format!("{} ({}): {}", f.id, f.clause, f.message))
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
+
     /// True when no tolerance applied to this test.
     pub fn no_tolerance(&self) -> bool {
         self.judgement.as_ref().is_none_or(|j| j.limits.is_empty())

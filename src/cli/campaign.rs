@@ -110,13 +110,7 @@ pub fn problems(result: &CampaignResult) -> Vec<String> {
             let unit = t.kind().map_or("", |k| k.deviation_symbol());
             let why = match t.verdict {
                 Verdict::Error => t.error.clone().unwrap_or_default(),
-                Verdict::Noncompliant => t
-                    .findings
-                    .iter()
-                    .filter(|f| f.severity == axcheck::rules::Severity::Error)
-                    .map(|f| format!("{} ({}): {}", f.id, f.clause, f.message))
-                    .collect::<Vec<_>>()
-                    .join("; "),
+                Verdict::Noncompliant => t.broken_rules_text(),
                 _ => t
                     .judgement
                     .iter()

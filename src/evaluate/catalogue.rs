@@ -62,6 +62,17 @@ pub enum Role {
     Reversal,
 }
 
+/// The approaches a parameter describes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Approach {
+    /// Both directions together (bidirectional).
+    Both,
+    /// Approaches in the positive direction only (↑).
+    Up,
+    /// Approaches in the negative direction only (↓).
+    Down,
+}
+
 /// One parameter as a standard defines it.
 #[derive(Debug, PartialEq)]
 pub struct ParameterDef {
@@ -78,6 +89,7 @@ pub struct ParameterDef {
     pub unit: UnitKind,
     pub quantity: Quantity,
     pub role: Option<Role>,
+    pub approach: Approach,
     /// Needs repeated approaches: not applicable with n = 1 (ISO 230-2 clause 5.2).
     pub needs_repeats: bool,
 }
@@ -116,8 +128,14 @@ const fn def(
         unit: UnitKind::Deviation,
         quantity: Quantity::Width,
         role: None,
+        approach: Approach::Both,
         needs_repeats: false,
     }
+}
+
+/// A unidirectional parameter: `d` in `approach` only.
+const fn only(approach: Approach, d: ParameterDef) -> ParameterDef {
+    ParameterDef { approach, ..d }
 }
 
 const fn with_role(d: ParameterDef, role: Role) -> ParameterDef {
@@ -161,20 +179,26 @@ pub mod iso230_2 {
         )),
         Role::Accuracy,
     );
-    pub static A_UP: ParameterDef = repeated(def(
-        "A_up",
-        "A↑",
-        "unidirectional accuracy of positioning ↑",
-        "ISO 230-2 2.22",
-        ISO,
-    ));
-    pub static A_DOWN: ParameterDef = repeated(def(
-        "A_down",
-        "A↓",
-        "unidirectional accuracy of positioning ↓",
-        "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
-        ISO,
-    ));
+    pub static A_UP: ParameterDef = only(
+        Approach::Up,
+        repeated(def(
+            "A_up",
+            "A↑",
+            "unidirectional accuracy of positioning ↑",
+            "ISO 230-2 2.22",
+            ISO,
+        )),
+    );
+    pub static A_DOWN: ParameterDef = only(
+        Approach::Down,
+        repeated(def(
+            "A_down",
+            "A↓",
+            "unidirectional accuracy of positioning ↓",
+            "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
+            ISO,
+        )),
+    );
     pub static E: ParameterDef = with_role(
         def(
             "E",
@@ -185,19 +209,25 @@ pub mod iso230_2 {
         ),
         Role::Systematic,
     );
-    pub static E_UP: ParameterDef = def(
-        "E_up",
-        "E↑",
-        "unidirectional systematic positional deviation ↑",
-        "ISO 230-2 2.19",
-        ISO,
+    pub static E_UP: ParameterDef = only(
+        Approach::Up,
+        def(
+            "E_up",
+            "E↑",
+            "unidirectional systematic positional deviation ↑",
+            "ISO 230-2 2.19",
+            ISO,
+        ),
     );
-    pub static E_DOWN: ParameterDef = def(
-        "E_down",
-        "E↓",
-        "unidirectional systematic positional deviation ↓",
-        "ISO 230-2 2.19",
-        ISO,
+    pub static E_DOWN: ParameterDef = only(
+        Approach::Down,
+        def(
+            "E_down",
+            "E↓",
+            "unidirectional systematic positional deviation ↓",
+            "ISO 230-2 2.19",
+            ISO,
+        ),
     );
     pub static M: ParameterDef = with_role(
         def(
@@ -219,20 +249,26 @@ pub mod iso230_2 {
         )),
         Role::Repeatability,
     );
-    pub static R_UP: ParameterDef = repeated(def(
-        "R_up",
-        "R↑",
-        "unidirectional repeatability of positioning ↑",
-        "ISO 230-2 2.18 (2.16)",
-        ISO,
-    ));
-    pub static R_DOWN: ParameterDef = repeated(def(
-        "R_down",
-        "R↓",
-        "unidirectional repeatability of positioning ↓",
-        "ISO 230-2 2.18 (2.16)",
-        ISO,
-    ));
+    pub static R_UP: ParameterDef = only(
+        Approach::Up,
+        repeated(def(
+            "R_up",
+            "R↑",
+            "unidirectional repeatability of positioning ↑",
+            "ISO 230-2 2.18 (2.16)",
+            ISO,
+        )),
+    );
+    pub static R_DOWN: ParameterDef = only(
+        Approach::Down,
+        repeated(def(
+            "R_down",
+            "R↓",
+            "unidirectional repeatability of positioning ↓",
+            "ISO 230-2 2.18 (2.16)",
+            ISO,
+        )),
+    );
     pub static B: ParameterDef = with_role(
         def(
             "B",
@@ -265,20 +301,26 @@ pub mod gost27843 {
         )),
         Role::Accuracy,
     );
-    pub static A_UP: ParameterDef = repeated(def(
-        "A_up",
-        "A↑",
-        "unidirectional positioning accuracy ↑",
-        "GOST 27843 1.14 (10)",
-        GOST,
-    ));
-    pub static A_DOWN: ParameterDef = repeated(def(
-        "A_down",
-        "A↓",
-        "unidirectional positioning accuracy ↓",
-        "GOST 27843 1.14 (10)",
-        GOST,
-    ));
+    pub static A_UP: ParameterDef = only(
+        Approach::Up,
+        repeated(def(
+            "A_up",
+            "A↑",
+            "unidirectional positioning accuracy ↑",
+            "GOST 27843 1.14 (10)",
+            GOST,
+        )),
+    );
+    pub static A_DOWN: ParameterDef = only(
+        Approach::Down,
+        repeated(def(
+            "A_down",
+            "A↓",
+            "unidirectional positioning accuracy ↓",
+            "GOST 27843 1.14 (10)",
+            GOST,
+        )),
+    );
     pub static R_MAX: ParameterDef = with_role(
         repeated(def(
             "R_max",
@@ -289,20 +331,26 @@ pub mod gost27843 {
         )),
         Role::Repeatability,
     );
-    pub static R_UP: ParameterDef = repeated(def(
-        "R_up",
-        "R↑",
-        "unidirectional positioning repeatability ↑",
-        "GOST 27843 1.10, 1.13 (7)",
-        GOST,
-    ));
-    pub static R_DOWN: ParameterDef = repeated(def(
-        "R_down",
-        "R↓",
-        "unidirectional positioning repeatability ↓",
-        "GOST 27843 1.10, 1.13 (7)",
-        GOST,
-    ));
+    pub static R_UP: ParameterDef = only(
+        Approach::Up,
+        repeated(def(
+            "R_up",
+            "R↑",
+            "unidirectional positioning repeatability ↑",
+            "GOST 27843 1.10, 1.13 (7)",
+            GOST,
+        )),
+    );
+    pub static R_DOWN: ParameterDef = only(
+        Approach::Down,
+        repeated(def(
+            "R_down",
+            "R↓",
+            "unidirectional positioning repeatability ↓",
+            "GOST 27843 1.10, 1.13 (7)",
+            GOST,
+        )),
+    );
     pub static R_MEAN: ParameterDef = repeated(def(
         "R_mean",
         "R̄",
@@ -390,20 +438,26 @@ pub mod nmtba {
         )),
         Role::Accuracy,
     );
-    pub static A_UP: ParameterDef = repeated(def(
-        "A_up",
-        "A_u↑",
-        "unidirectional accuracy ↑",
-        CLAUSE,
-        NMTBA,
-    ));
-    pub static A_DOWN: ParameterDef = repeated(def(
-        "A_down",
-        "A_u↓",
-        "unidirectional accuracy ↓",
-        CLAUSE,
-        NMTBA,
-    ));
+    pub static A_UP: ParameterDef = only(
+        Approach::Up,
+        repeated(def(
+            "A_up",
+            "A_u↑",
+            "unidirectional accuracy ↑",
+            CLAUSE,
+            NMTBA,
+        )),
+    );
+    pub static A_DOWN: ParameterDef = only(
+        Approach::Down,
+        repeated(def(
+            "A_down",
+            "A_u↓",
+            "unidirectional accuracy ↓",
+            CLAUSE,
+            NMTBA,
+        )),
+    );
     pub static ZERO: ParameterDef = level(repeated(def(
         "zero",
         "zero",
@@ -418,20 +472,26 @@ pub mod nmtba {
         CLAUSE,
         NMTBA,
     ));
-    pub static SPREAD_UP: ParameterDef = repeated(def(
-        "spread_up",
-        "3σ_u↑",
-        "largest unidirectional scatter 3σ",
-        CLAUSE,
-        NMTBA,
-    ));
-    pub static SPREAD_DOWN: ParameterDef = repeated(def(
-        "spread_down",
-        "3σ_u↓",
-        "largest unidirectional scatter 3σ",
-        CLAUSE,
-        NMTBA,
-    ));
+    pub static SPREAD_UP: ParameterDef = only(
+        Approach::Up,
+        repeated(def(
+            "spread_up",
+            "3σ_u↑",
+            "largest unidirectional scatter 3σ",
+            CLAUSE,
+            NMTBA,
+        )),
+    );
+    pub static SPREAD_DOWN: ParameterDef = only(
+        Approach::Down,
+        repeated(def(
+            "spread_down",
+            "3σ_u↓",
+            "largest unidirectional scatter 3σ",
+            CLAUSE,
+            NMTBA,
+        )),
+    );
     pub static L_MAX: ParameterDef = def(
         "L_max",
         "L_max",
@@ -575,6 +635,24 @@ mod tests {
             assert!(keys.contains(&k), "{k}");
         }
         assert_eq!(keys.len(), 23);
+    }
+
+    #[test]
+    fn approach_matches_the_arrow() {
+        for d in CATALOGUE {
+            let want = match (d.key.ends_with("_up"), d.key.ends_with("_down")) {
+                (true, _) => Approach::Up,
+                (_, true) => Approach::Down,
+                _ => Approach::Both,
+            };
+            assert_eq!(d.approach, want, "{}", d.key);
+            assert_eq!(
+                d.approach == Approach::Up,
+                d.symbol.contains('↑'),
+                "{}",
+                d.key
+            );
+        }
     }
 
     #[test]

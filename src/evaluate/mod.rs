@@ -13,7 +13,7 @@ pub mod nmtba;
 pub mod stats;
 pub mod vdi3441;
 
-pub use catalogue::{ParameterDef, Role};
+pub use catalogue::{Approach, ParameterDef, Role};
 
 use crate::measurement::AxisData;
 use crate::units::{AxisKind, Direction};

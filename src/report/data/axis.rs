@@ -1,0 +1,271 @@
+//! The data of one axis test report (ISO 230-2 clause 7): header facts, verdict, the
+//! parameters with their limits, the per-target table of Table 2, the test-plan findings
+//! and the diagnosis.
+
+use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
+use super::{CampaignHeader, generator, num, opt, pos, s_symbol, symbol_of};
+use crate::batch::{AxisTest, CampaignResult};
+use crate::evaluate::{DirectionResult, Evaluation, StandardId};
+use crate::judge::Verdict;
+use crate::rules::Finding;
+use crate::units::{Travel, fmt_position};
+use serde::Serialize;
+
+/// Everything `axis-report.typ` shows.
+#[derive(Serialize)]
+pub struct AxisReport<'a> {
+    campaign: CampaignHeader<'a>,
+    title: String,
+    facts: Vec<Row>,
+    verdict: VerdictText,
+    unit: &'static str,
+    conditions: Vec<Row>,
+    sensors: Vec<SensorRow<'a>>,
+    parameters: Vec<ParameterRow>,
+    coverage: String,
+    s_symbol: &'static str,
+    n: usize,
+    targets: Vec<TargetRow>,
+    notes: &'a [String],
+    findings: &'a [Finding],
+    has_charts: bool,
+    diagnosis: Option<serde_json::Value>,
+    generator: String,
+}
+
+/// The data of one axis report.
+pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisReport<'a> {
+    let kind = t.kind();
+    let e = t.evaluation.as_ref();
+    let conditions = t.spec.as_ref().map(|s| &s.raw.conditions);
+    AxisReport {
+        campaign: CampaignHeader::new(result),
+        title: format!("{} — axis {}", t.machine.id, t.axis),
+        facts: facts(result, t),
+        verdict: VerdictText::new(t),
+        unit: kind.map_or("", |k| k.deviation_symbol()),
+        conditions: match (conditions, kind) {
+            (Some(c), Some(k)) => condition_rows(c, k, t),
+            _ => Vec::new(),
+        },
+        sensors: conditions.map_or(Vec::new(), sensor_rows),
+        parameters: e.map_or(Vec::new(), |e| parameter_rows(t, e)),
+        coverage: e.map_or(String::new(), |e| fmt_position(e.coverage_factor)),
+        s_symbol: s_symbol(t.standard()),
+        n: e.map_or(0, |e| e.n),
+        targets: e.map_or(Vec::new(), target_rows),
+        notes: e.map_or(&[], |e| &e.notes),
+        findings: &t.findings,
+        has_charts: e.is_some(),
+        diagnosis: t
+            .diagnosis
+            .as_ref()
+            .map(crate::report::diagnosis_data::diagnosis_json),
+        generator: generator(),
+    }
+}
+
+/// The header facts: machine, axis, travels, file, standard, spec, date and inspector.
+fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
+    let m = &t.machine;
+    let kind = t.kind();
+    let travel = t
+        .spec
+        .as_ref()
+        .and_then(|s| s.raw.travel)
+        .zip(kind)
+        .map(|(tr, k)| match tr {
+            Travel::Length(l) => pos(k, l),
+            Travel::Range([a, b]) => format!("{} … {}", pos(k, a), pos(k, b)),
+        });
+    let measured = t.data.as_ref().map(|d| {
+        let (a, b) = d.measurement_travel();
+        format!("{} … {}", pos(d.kind, a), pos(d.kind, b))
+    });
+    let axis = format!(
+        "{}{}",
+        t.axis,
+        kind.map_or(String::new(), |k| format!(" ({k})"))
+    );
+    let test = (t.tests > 1).then(|| format!("{} of {} tests of this axis", t.test, t.tests));
+    Row::present([
+        ("Machine", Some(m.id.clone())),
+        ("Model", m.model.clone()),
+        ("Serial number", m.serial.clone()),
+        ("Type", m.machine_type.clone()),
+        ("Location", m.location.clone()),
+        ("Axis", Some(axis)),
+        ("Axis travel", travel),
+        ("Measurement travel", measured),
+        ("Measurement file", t.file.clone()),
+        ("Test", test),
+        ("Standard", t.standard().map(|s| s.title().to_string())),
+        (
+            "Acceptance spec",
+            t.judgement.as_ref().map(|j| j.limits.describe()),
+        ),
+        ("Test date", result.info.date.clone()),
+        ("Inspector", result.info.inspector.clone()),
+    ])
+}
+
+/// The verdict in words.
+#[derive(Serialize)]
+struct VerdictText {
+    key: Verdict,
+    word: String,
+    detail: String,
+}
+
+impl VerdictText {
+    fn new(t: &AxisTest) -> VerdictText {
+        let detail = match t.verdict {
+            Verdict::Pass if t.no_tolerance() => {
+                "No tolerance applied: evaluated and checked against the test-plan rules only."
+                    .to_string()
+            }
+            Verdict::Pass => {
+                let n = t.judgement.as_ref().map_or(0, |j| j.checks.len());
+                format!("All {n} limited parameters are within tolerance.")
+            }
+            Verdict::Fail => {
+                let failed: Vec<String> = t
+                    .judgement
+                    .iter()
+                    .flat_map(|j| j.failed())
+                    .map(|c| symbol_of(t, &c.key))
+                    .collect();
+                format!("Over the limit: {}.", failed.join(", "))
+            }
+            Verdict::Noncompliant => format!(
+                "The test does not follow the standard's plan ({}): its results cannot be used for acceptance.",
+                t.broken_rules()
+                    .map(|f| f.id)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            Verdict::Error => t.error.clone().unwrap_or_default(),
+        };
+        VerdictText {
+            key: t.verdict,
+            word: t.verdict.name().to_uppercase(),
+            detail,
+        }
+    }
+}
+
+/// A line of the results table.
+#[derive(Serialize)]
+struct ParameterRow {
+    symbol: &'static str,
+    name: &'static str,
+    clause: String,
+    value: String,
+    limit: String,
+    margin: String,
+    status: &'static str,
+    at: String,
+}
+
+/// The parameters of the standard with value, limit, margin and status, then the
+/// standard's parameters that do not apply with n = 1 (ISO 230-2 clause 5.2).
+fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
+    let mut rows: Vec<ParameterRow> = e
+        .parameters
+        .iter()
+        .map(|p| {
+            let check = t
+                .judgement
+                .as_ref()
+                .and_then(|j| j.checks.iter().find(|c| c.key == p.key()));
+            let at = if let Some(i) = p.at_target {
+                format!("at i = {} ({})", i + 1, pos(e.kind, e.targets[i].position))
+            } else if let Some((hi, lo)) = p.span {
+                format!("{} − ({})", num(hi), num(lo))
+            } else {
+                String::new()
+            };
+            ParameterRow {
+                symbol: p.symbol(),
+                name: p.name(),
+                clause: p
+                    .clause()
+                    .replace(" (GB/T 17421.2 amendment No. 1)", ", amd. 1"),
+                value: num(p.value),
+                limit: check.map_or("–".into(), |c| num(c.limit)),
+                margin: check.map_or("–".into(), |c| num(c.margin)),
+                status: check.map_or("", |c| if c.pass { "pass" } else { "fail" }),
+                at,
+            }
+        })
+        .collect();
+    rows.extend(e.not_applicable().map(|def| ParameterRow {
+        symbol: def.symbol,
+        name: def.name,
+        clause: match e.standard {
+            StandardId::Iso230_2 | StandardId::Gbt17421_2 => "ISO 230-2 5.2".to_string(),
+            _ => def.clause.to_string(),
+        },
+        value: "not applicable".into(),
+        limit: "–".into(),
+        margin: "–".into(),
+        status: "n/a",
+        at: format!("n = {}", e.n),
+    }));
+    rows
+}
+
+/// A column of the per-target table (ISO 230-2 Table 2).
+#[derive(Serialize)]
+struct TargetRow {
+    i: String,
+    position: String,
+    up: DirectionColumn,
+    down: DirectionColumn,
+    b: String,
+    r: String,
+    mean: String,
+}
+
+/// One direction's readings and statistics at a target.
+#[derive(Serialize)]
+struct DirectionColumn {
+    x: Vec<String>,
+    mean: String,
+    s: String,
+    ks: String,
+    upper: String,
+    lower: String,
+    r: String,
+}
+
+impl DirectionColumn {
+    fn new(d: &DirectionResult, k: f64) -> DirectionColumn {
+        DirectionColumn {
+            x: d.deviations.iter().map(|&x| num(x)).collect(),
+            mean: num(d.mean),
+            s: opt(d.s),
+            ks: opt(d.s.map(|s| k * s)),
+            upper: opt(d.upper),
+            lower: opt(d.lower),
+            r: opt(d.repeatability),
+        }
+    }
+}
+
+fn target_rows(e: &Evaluation) -> Vec<TargetRow> {
+    let k = e.coverage_factor;
+    e.targets
+        .iter()
+        .enumerate()
+        .map(|(i, t)| TargetRow {
+            i: (i + 1).to_string(),
+            position: fmt_position(t.position).replace('-', "−"),
+            up: DirectionColumn::new(&t.up, k),
+            down: DirectionColumn::new(&t.down, k),
+            b: num(t.reversal),
+            r: opt(t.repeatability),
+            mean: num(t.mean),
+        })
+        .collect()
+}

@@ -1,0 +1,134 @@
+//! What the report templates show, as typed views serialised to the virtual file
+//! `/data.json`: every number already formatted, every label in words. The templates only
+//! lay out; they compute nothing and evaluate no user text.
+//!
+//! [`axis`] is the test report of one axis (ISO 230-2 clause 7), [`conditions`] its test
+//! conditions (clause 7.1), [`summary`] the campaign summary; [`axis_chart`] gives the
+//! data of the figures of ISO 230-2 Fig. 2a/2b.
+
+mod axis;
+mod conditions;
+mod summary;
+
+pub use axis::{AxisReport, axis_report};
+pub use summary::{Summary, summary};
+
+use super::charts::{AxisChart, DirectionSeries, Span};
+use crate::batch::{AxisTest, CampaignResult};
+use crate::evaluate::{Approach, DirectionResult, Evaluation, StandardId};
+use crate::units::{AxisKind, Direction, fmt_fixed, fmt_position};
+use serde::Serialize;
+
+/// Deviation values in reports: 2 decimals (0.01 µm / 0.01″), with a typographic minus.
+pub(in crate::report) fn num(x: f64) -> String {
+    fmt_fixed(x, 2).replace('-', "−")
+}
+
+/// [`num`], or a dash for a value that does not apply.
+fn opt(x: Option<f64>) -> String {
+    x.map_or("–".into(), num)
+}
+
+/// A position with its unit: `250.5 mm`, `90°`.
+fn pos(kind: AxisKind, x: f64) -> String {
+    match kind {
+        AxisKind::Linear => format!("{} mm", fmt_position(x).replace('-', "−")),
+        AxisKind::Rotary => format!("{}°", fmt_position(x).replace('-', "−")),
+    }
+}
+
+/// The symbol of the scatter estimate: S in ISO 230-2 and GOST 27843, σ in the NMTBA and
+/// VDI 3441 definitions.
+fn s_symbol(standard: Option<StandardId>) -> &'static str {
+    match standard {
+        Some(StandardId::Vdi3441 | StandardId::Nmtba) => "σ",
+        _ => "S",
+    }
+}
+
+/// The symbol of parameter `key` in the test's standard (the key itself when it does not
+/// apply).
+fn symbol_of(t: &AxisTest, key: &str) -> String {
+    t.evaluation
+        .as_ref()
+        .and_then(|e| e.parameter(key))
+        .map_or(key.to_string(), |p| p.symbol().to_string())
+}
+
+/// The campaign header both templates show (absent items as empty strings).
+#[derive(Serialize)]
+struct CampaignHeader<'a> {
+    name: &'a str,
+    site: &'a str,
+    purpose: &'a str,
+    date: &'a str,
+    inspector: &'a str,
+    file: &'a str,
+    standard: &'static str,
+}
+
+impl<'a> CampaignHeader<'a> {
+    fn new(result: &'a CampaignResult) -> CampaignHeader<'a> {
+        let info = &result.info;
+        CampaignHeader {
+            name: &info.name,
+            site: info.site.as_deref().unwrap_or_default(),
+            purpose: info.purpose.as_deref().unwrap_or_default(),
+            date: info.date.as_deref().unwrap_or_default(),
+            inspector: info.inspector.as_deref().unwrap_or_default(),
+            file: &result.file_name,
+            standard: result.standard.title(),
+        }
+    }
+}
+
+/// The version that made the report, for its footer.
+fn generator() -> String {
+    format!("axcheck {}", env!("CARGO_PKG_VERSION"))
+}
+
+/// The chart data of an evaluation (ISO 230-2 Fig. 2a/2b): the bidirectional chart, and
+/// the range parameters (A, E, M and their ↑/↓ forms) to mark on the bidirectional,
+/// ↑ and ↓ charts.
+pub fn axis_chart(e: &Evaluation) -> (AxisChart, Vec<Span>, Vec<Span>) {
+    let series = |d: Direction| {
+        let r: Vec<&DirectionResult> = e.targets.iter().map(|t| t.direction(d)).collect();
+        let all = |f: &dyn Fn(&DirectionResult) -> Option<f64>| {
+            r.iter().map(|x| f(x)).collect::<Option<Vec<f64>>>()
+        };
+        DirectionSeries {
+            mean: r.iter().map(|x| x.mean).collect(),
+            upper: all(&|x| x.upper),
+            lower: all(&|x| x.lower),
+            deviations: r.iter().map(|x| x.deviations.clone()).collect(),
+        }
+    };
+    let spans = |approach: Approach| -> Vec<Span> {
+        e.parameters
+            .iter()
+            .filter(|p| p.def.approach == approach)
+            .filter_map(|p| {
+                p.span.map(|(upper, lower)| Span {
+                    label: p.symbol().to_string(),
+                    upper,
+                    lower,
+                })
+            })
+            .collect()
+    };
+    let (pos_unit, dev_unit) = match e.kind {
+        AxisKind::Linear => ("mm", "µm"),
+        AxisKind::Rotary => ("°", "arcsec"),
+    };
+    let chart = AxisChart {
+        positions: e.targets.iter().map(|t| t.position).collect(),
+        position_label: format!("Target position Pi / {pos_unit}"),
+        deviation_label: format!("Positional deviation / {dev_unit}"),
+        up: series(Direction::Up),
+        down: series(Direction::Down),
+        mean: e.targets.iter().map(|t| t.mean).collect(),
+        band_label: format!("X̄ ± {}{}", e.coverage_factor, s_symbol(Some(e.standard))),
+        spans: spans(Approach::Both),
+    };
+    (chart, spans(Approach::Up), spans(Approach::Down))
+}

@@ -1,0 +1,129 @@
+//! The data of the campaign summary: verdict counts, one row per axis test (what needs
+//! attention first), the errors and the noncompliant test plans.
+
+use super::{CampaignHeader, generator, num, pos, symbol_of};
+use crate::batch::{AxisTest, CampaignResult};
+use crate::evaluate::Role;
+use crate::judge::Verdict;
+use crate::units::fmt_fixed;
+use serde::Serialize;
+
+/// Everything `summary.typ` shows.
+#[derive(Serialize)]
+pub struct Summary<'a> {
+    campaign: CampaignHeader<'a>,
+    counts: Counts,
+    rows: Vec<SummaryRow<'a>>,
+    errors: Vec<Problem>,
+    noncompliant: Vec<Problem>,
+    has_chart: bool,
+    generator: String,
+}
+
+#[derive(Serialize)]
+struct Counts {
+    total: usize,
+    pass: usize,
+    fail: usize,
+    noncompliant: usize,
+    error: usize,
+}
+
+/// One axis test: its headline parameters (A, E, R, B of its standard), the parameter
+/// closest to its limit, the diagnosis and the verdict.
+#[derive(Serialize)]
+struct SummaryRow<'a> {
+    machine: &'a str,
+    axis: String,
+    travel: String,
+    n: String,
+    a: String,
+    e: String,
+    r: String,
+    b: String,
+    unit: &'static str,
+    worst: String,
+    diagnosis: String,
+    verdict: Verdict,
+}
+
+/// A test that could not be evaluated or whose plan breaks a rule, with why.
+#[derive(Serialize)]
+struct Problem {
+    label: String,
+    message: String,
+}
+
+/// The summary, rows sorted so that what needs attention comes first.
+pub fn summary(result: &CampaignResult) -> Summary<'_> {
+    let mut tests: Vec<&AxisTest> = result.tests.iter().collect();
+    tests.sort_by_key(|t| t.verdict.attention_rank());
+    let counts = result.counts();
+    let with = |verdict: Verdict, message: fn(&AxisTest) -> String| -> Vec<Problem> {
+        result
+            .tests
+            .iter()
+            .filter(|t| t.verdict == verdict)
+            .map(|t| Problem {
+                label: t.label(),
+                message: message(t),
+            })
+            .collect()
+    };
+    Summary {
+        campaign: CampaignHeader::new(result),
+        counts: Counts {
+            total: result.tests.len(),
+            pass: counts[&Verdict::Pass],
+            fail: counts[&Verdict::Fail],
+            noncompliant: counts[&Verdict::Noncompliant],
+            error: counts[&Verdict::Error],
+        },
+        rows: tests.into_iter().map(row).collect(),
+        errors: with(Verdict::Error, |t| t.error.clone().unwrap_or_default()),
+        noncompliant: with(Verdict::Noncompliant, AxisTest::broken_rules_text),
+        has_chart: result
+            .tests
+            .iter()
+            .any(|t| t.judgement.as_ref().and_then(|j| j.worst()).is_some()),
+        generator: generator(),
+    }
+}
+
+fn row(t: &AxisTest) -> SummaryRow<'_> {
+    let e = t.evaluation.as_ref();
+    let headline = |role: Role| {
+        e.and_then(|e| e.headline(role))
+            .map_or("–".to_string(), |p| num(p.value))
+    };
+    let travel = t.data.as_ref().map_or("–".into(), |d| {
+        let (a, b) = d.measurement_travel();
+        pos(d.kind, ((b - a) * 1e6).round() / 1e6)
+    });
+    let worst = match t.judgement.as_ref().and_then(|j| j.worst()) {
+        Some(c) => format!("{} {}", symbol_of(t, &c.key), fmt_fixed(c.ratio(), 2)),
+        None if t.no_tolerance() && e.is_some() => "no tolerance".to_string(),
+        None => "–".to_string(),
+    };
+    SummaryRow {
+        machine: &t.machine.id,
+        axis: if t.tests > 1 {
+            format!("{} ({}/{})", t.axis, t.test, t.tests)
+        } else {
+            t.axis.clone()
+        },
+        travel,
+        n: e.map_or("–".into(), |e| e.n.to_string()),
+        a: headline(Role::Accuracy),
+        e: headline(Role::Systematic),
+        r: headline(Role::Repeatability),
+        b: headline(Role::Reversal),
+        unit: t.kind().map_or("", |k| k.deviation_symbol()),
+        worst,
+        diagnosis: t
+            .diagnosis
+            .as_ref()
+            .map_or("–".to_string(), |d| d.effects_label().replace('_', " ")),
+        verdict: t.verdict,
+    }
+}
