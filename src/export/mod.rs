@@ -10,6 +10,7 @@ pub mod parquet;
 #[cfg(feature = "pdf")]
 pub mod pdf;
 pub mod table;
+mod workers;
 
 use crate::batch::CampaignResult;
 use std::path::{Path, PathBuf};
@@ -94,30 +95,12 @@ const WRITERS: usize = 8;
 
 /// Writes `files` with up to [`WRITERS`] threads; the first error stops the others.
 fn write_files(out: &crate::atomic::OutputDir, files: &[OutputFile]) -> Result<(), ExportError> {
-    use std::sync::Mutex;
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    let next = AtomicUsize::new(0);
-    let failure: Mutex<Option<ExportError>> = Mutex::new(None);
-    let failed = || failure.lock().map_or(true, |f| f.is_some());
-    std::thread::scope(|scope| {
-        for _ in 0..WRITERS.min(files.len()) {
-            scope.spawn(|| {
-                while !failed() {
-                    let Some(file) = files.get(next.fetch_add(1, Ordering::Relaxed)) else {
-                        break;
-                    };
-                    if let Err(e) = out.write(&file.path, &file.bytes)
-                        && let Ok(mut slot) = failure.lock()
-                    {
-                        slot.get_or_insert(e.into());
-                    }
-                }
-            });
-        }
-    });
-    match failure.into_inner() {
-        Ok(None) => Ok(()),
-        Ok(Some(e)) => Err(e),
-        Err(poisoned) => poisoned.into_inner().map_or(Ok(()), Err),
-    }
+    let here = |work: &(dyn Fn() + Sync)| {
+        work();
+        Ok::<(), crate::atomic::OutputError>(())
+    };
+    workers::map_in_order(files, WRITERS, here, |file| {
+        out.write(&file.path, &file.bytes)
+    })?;
+    Ok(())
 }

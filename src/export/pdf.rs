@@ -126,67 +126,40 @@ enum Job<'a> {
 /// parallel page layout takes up other queued work on the same stack, so reports nested on
 /// one worker (stack overflow on 1 000 reports), and bounding that with chunks left cores
 /// idle at every chunk's end (about a fifth of the run). Here each worker is the single
-/// thread of a pool of its own and runs a report from start to end, its page layout
-/// included, and nothing waits for a chunk to finish. Typst's caches are evicted after
-/// every [`REPORTS_PER_EVICTION`] finished reports, which keeps memory bounded; comemo's
-/// caches are safe to evict while other threads compile.
+/// thread of a rayon pool of its own and runs a report from start to end, its page layout
+/// included (no hand-off to a shared pool, no other report to take up while it waits).
+/// Typst's caches are evicted after every [`REPORTS_PER_EVICTION`] finished reports,
+/// which keeps memory bounded; comemo's caches are safe to evict while others compile.
 fn typeset_all<'a>(
     jobs: &'a [Job<'a>],
     workers: usize,
-    typeset: impl Fn(&'a Job<'a>) -> Result<OutputFile, report::ReportError> + Sync,
+    typeset: impl Fn(&Job<'a>) -> Result<OutputFile, report::ReportError> + Sync,
 ) -> Result<Vec<OutputFile>, report::ReportError> {
-    use std::sync::Mutex;
-    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-    let next = AtomicUsize::new(0);
+    use std::sync::atomic::{AtomicUsize, Ordering};
     let finished = AtomicUsize::new(0);
-    let failed = AtomicBool::new(false);
-    let done: Mutex<Vec<(usize, Result<OutputFile, report::ReportError>)>> =
-        Mutex::new(Vec::with_capacity(jobs.len()));
-    let work = || {
-        while !failed.load(Ordering::Relaxed) {
-            let index = next.fetch_add(1, Ordering::Relaxed);
-            let Some(job) = jobs.get(index) else { break };
-            let file = typeset(job);
-            failed.fetch_or(file.is_err(), Ordering::Relaxed);
-            if let Ok(mut done) = done.lock() {
-                done.push((index, file));
-            }
-            if (finished.fetch_add(1, Ordering::Relaxed) + 1).is_multiple_of(REPORTS_PER_EVICTION) {
-                report::evict_caches();
-            }
+    let in_own_pool = |work: &(dyn Fn() + Sync)| match rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .stack_size(WORKER_STACK)
+        .build()
+    {
+        Ok(pool) => {
+            pool.install(work);
+            Ok(())
         }
-    };
-    // Each worker is the one thread of a rayon pool of its own: Typst's parallel page
-    // layout then runs on the worker itself, with no hand-off to a shared pool and no
-    // other report to take up while it waits.
-    let pools: Vec<rayon::ThreadPool> = (0..workers.clamp(1, jobs.len().max(1)))
-        .filter_map(|_| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(1)
-                .stack_size(WORKER_STACK)
-                .build()
-                .ok()
-        })
-        .collect();
-    let spawned = !pools.is_empty()
-        && std::thread::scope(|scope| {
-            let handles: Vec<_> = pools
-                .iter()
-                .map(|pool| scope.spawn(|| pool.install(work)))
-                .collect();
-            handles.into_iter().all(|h| h.join().is_ok())
-        });
-    report::evict_caches();
-    let mut done = done.into_inner().unwrap_or_else(|p| p.into_inner());
-    done.sort_by_key(|(index, _)| *index);
-    let files: Vec<OutputFile> = done.into_iter().map(|(_, f)| f).collect::<Result<_, _>>()?;
-    if !spawned || files.len() != jobs.len() {
-        return Err(report::ReportError::Typeset {
+        Err(e) => Err(report::ReportError::Typeset {
             document: "reports".into(),
-            message: "a typesetting thread could not be started or stopped early".into(),
-        });
-    }
-    Ok(files)
+            message: format!("a typesetting thread could not be started: {e}"),
+        }),
+    };
+    let files = super::workers::map_in_order(jobs, workers, in_own_pool, |job| {
+        let file = typeset(job);
+        if (finished.fetch_add(1, Ordering::Relaxed) + 1).is_multiple_of(REPORTS_PER_EVICTION) {
+            report::evict_caches();
+        }
+        file
+    });
+    report::evict_caches();
+    files
 }
 
 /// Stack of a typesetting thread: Typst's layout recurses deeply on nested content.
