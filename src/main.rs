@@ -55,6 +55,10 @@ enum Command {
         /// Folder with a customised copy of the report templates (templates/).
         #[arg(long)]
         templates: Option<PathBuf>,
+        /// A progress line for every finished test on stderr (without a terminal the
+        /// default is a line at every tenth of the campaign).
+        #[arg(long)]
+        progress: bool,
     },
     /// The CI gate: evaluate a campaign and write nothing (exit 0: every axis passes,
     /// 1: any axis fails, is noncompliant or has an error, 2: the campaign cannot be read).
@@ -67,6 +71,10 @@ enum Command {
         /// Also run the model check and diagnosis (slower; `run` does it by default).
         #[arg(long)]
         diagnose: bool,
+        /// A progress line for every finished test on stderr (without a terminal the
+        /// default is a line at every tenth of the campaign).
+        #[arg(long)]
+        progress: bool,
     },
     /// Model check and diagnosis of one measurement file: what the standard's model of the
     /// axis gets wrong (drift, thermal growth, run offsets, periodic error, reversal or
@@ -175,6 +183,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             no_pdf,
             no_diagnose,
             templates,
+            progress,
         } => {
             let options = cli::campaign::RunOptions {
                 out: &out,
@@ -182,6 +191,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 no_pdf,
                 no_diagnose,
                 templates: templates.as_deref(),
+                progress: progress_of(progress),
             };
             return Ok(ExitCode::from(cli::campaign::run(&campaign, &options)?));
         }
@@ -189,9 +199,13 @@ fn run(cli: Cli) -> Result<ExitCode> {
             campaign,
             jobs,
             diagnose,
+            progress,
         } => {
             return Ok(ExitCode::from(cli::campaign::check(
-                &campaign, jobs, diagnose,
+                &campaign,
+                jobs,
+                diagnose,
+                progress_of(progress),
             )?));
         }
         Command::Diagnose {
@@ -249,6 +263,14 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+fn progress_of(every_test: bool) -> cli::campaign::Progress {
+    if every_test {
+        cli::campaign::Progress::EveryTest
+    } else {
+        cli::campaign::Progress::Auto
+    }
 }
 
 /// Prints to stdout; a closed pipe (`| head`) is not an error.

@@ -16,11 +16,26 @@ pub fn exit_code(result: &CampaignResult) -> u8 {
     u8::from(!result.all_pass())
 }
 
+/// How `run` and `check` report progress on stderr.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Progress {
+    /// A progress bar on a terminal; otherwise a line at every tenth of the campaign (a
+    /// CI log of a 10 000-axis fleet gets ten lines, not ten thousand).
+    Auto,
+    /// A line for every finished test (`--progress`).
+    EveryTest,
+}
+
 /// Evaluates a campaign, reporting progress on stderr.
-pub fn evaluate_with(campaign: &Campaign, options: batch::Options) -> CampaignResult {
+pub fn evaluate_with(
+    campaign: &Campaign,
+    options: batch::Options,
+    progress: Progress,
+) -> CampaignResult {
     let total: usize = campaign.axes().count();
     let done = AtomicUsize::new(0);
-    let bar = std::io::stderr().is_terminal().then(|| {
+    let tenths = AtomicUsize::new(0);
+    let bar = (progress == Progress::Auto && std::io::stderr().is_terminal()).then(|| {
         let bar = indicatif::ProgressBar::new(total as u64);
         bar.set_style(
             indicatif::ProgressStyle::with_template("{spinner} {pos}/{len} tests {wide_bar} {msg}")
@@ -28,10 +43,10 @@ pub fn evaluate_with(campaign: &Campaign, options: batch::Options) -> CampaignRe
         );
         bar
     });
-    let progress = |t: &AxisTest| {
+    let report = |t: &AxisTest| {
         let k = done.fetch_add(1, Ordering::Relaxed) + 1;
-        match &bar {
-            Some(bar) => {
+        match (&bar, progress) {
+            (Some(bar), _) => {
                 // An axis with several data files is several tests: grow the bar.
                 if k > total {
                     bar.set_length(k as u64);
@@ -39,10 +54,16 @@ pub fn evaluate_with(campaign: &Campaign, options: batch::Options) -> CampaignRe
                 bar.set_position(k as u64);
                 bar.set_message(format!("{} {}", t.label(), t.verdict));
             }
-            None => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
+            (None, Progress::EveryTest) => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
+            (None, Progress::Auto) => {
+                let tenth = (k * 10 / total.max(1)).min(10);
+                if tenth > tenths.fetch_max(tenth, Ordering::Relaxed) {
+                    eprintln!("axcheck: {} % ({k} tests evaluated)", tenth * 10);
+                }
+            }
         }
     };
-    let result = batch::run(campaign, options, &progress);
+    let result = batch::run(campaign, options, &report);
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
@@ -94,45 +115,61 @@ pub fn check_output_dir(campaign: &Campaign, out: &Path) -> Result<()> {
     Ok(())
 }
 
-/// One line per test that did not pass, for the terminal.
-pub fn problems(result: &CampaignResult) -> Vec<String> {
-    let width = result
+/// Lines of the tests that need attention printed at most; the rest are counted.
+pub const MAX_PROBLEM_LINES: usize = 20;
+
+/// One line per test that did not pass, failures first, then noncompliant plans, then
+/// errors (each in campaign order), at most [`MAX_PROBLEM_LINES`]; then how many more
+/// there are and where they are all listed (`where_all`).
+pub fn problems(result: &CampaignResult, where_all: &str) -> Vec<String> {
+    let mut attention: Vec<&AxisTest> = result
         .tests
+        .iter()
+        .filter(|t| t.verdict != Verdict::Pass)
+        .collect();
+    attention.sort_by_key(|t| t.verdict.attention_rank());
+    let shown = &attention[..attention.len().min(MAX_PROBLEM_LINES)];
+    let width = shown
         .iter()
         .map(|t| t.label().chars().count())
         .max()
         .unwrap_or(0);
-    result
-        .tests
-        .iter()
-        .filter(|t| t.verdict != Verdict::Pass)
-        .map(|t| {
-            let unit = t.kind().map_or("", |k| k.deviation_symbol());
-            let why = match t.verdict {
-                Verdict::Error => t.error.clone().unwrap_or_default(),
-                Verdict::Noncompliant => t.broken_rules_text(),
-                _ => t
-                    .judgement
-                    .iter()
-                    .flat_map(|j| j.failed())
-                    .map(|c| {
-                        format!(
-                            "{} = {} {unit} > {} {unit}",
-                            c.key,
-                            fmt_fixed(c.value.abs(), 2),
-                            fmt_fixed(c.limit, 2)
-                        )
-                    })
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            };
-            format!(
-                "  {:<12} {:<width$}  {why}",
-                t.verdict.name().to_uppercase(),
-                t.label()
-            )
-        })
-        .collect()
+    let mut lines: Vec<String> = shown.iter().map(|t| problem_line(t, width)).collect();
+    if attention.len() > shown.len() {
+        lines.push(format!(
+            "  … and {} more ({where_all})",
+            attention.len() - shown.len()
+        ));
+    }
+    lines
+}
+
+/// `  FAIL         VMC-07 Y  A = 10.96 µm > 8.00 µm, …`
+fn problem_line(t: &AxisTest, width: usize) -> String {
+    let unit = t.kind().map_or("", |k| k.deviation_symbol());
+    let why = match t.verdict {
+        Verdict::Error => t.error.clone().unwrap_or_default(),
+        Verdict::Noncompliant => t.broken_rules_text(),
+        _ => t
+            .judgement
+            .iter()
+            .flat_map(|j| j.failed())
+            .map(|c| {
+                format!(
+                    "{} = {} {unit} > {} {unit}",
+                    c.key,
+                    fmt_fixed(c.value.abs(), 2),
+                    fmt_fixed(c.limit, 2)
+                )
+            })
+            .collect::<Vec<_>>()
+            .join(", "),
+    };
+    format!(
+        "  {:<12} {:<width$}  {why}",
+        t.verdict.name().to_uppercase(),
+        t.label()
+    )
 }
 
 /// The one-line count of verdicts.
@@ -159,6 +196,7 @@ pub struct RunOptions<'a> {
     pub templates: Option<&'a Path>,
     /// Skip the model check and diagnosis (also `campaign.output.diagnose: false`).
     pub no_diagnose: bool,
+    pub progress: Progress,
 }
 
 /// `axcheck run`.
@@ -183,11 +221,12 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
             diagnose: campaign.info.output.diagnose && !options.no_diagnose,
             drop_data: false,
         },
+        options.progress,
     );
     let written = export::write_all(&result, &exporters, out)
         .with_context(|| format!("writing the outputs to {}", out.display()))?;
     println!("{}", counts_line(&result));
-    for line in problems(&result) {
+    for line in problems(&result, "all in summary.md") {
         println!("{line}");
     }
     println!(
@@ -205,15 +244,15 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
 }
 
 /// `axcheck check`: the CI gate; writes nothing.
-pub fn check(path: &Path, jobs: usize, diagnose: bool) -> Result<u8> {
+pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Result<u8> {
     let options = batch::Options {
         jobs,
         diagnose,
         drop_data: true,
     };
-    let result = evaluate_with(&Campaign::load(path)?, options);
+    let result = evaluate_with(&Campaign::load(path)?, options, progress);
     println!("{}", counts_line(&result));
-    for line in problems(&result) {
+    for line in problems(&result, "`axcheck run` lists them all in summary.md") {
         println!("{line}");
     }
     Ok(exit_code(&result))

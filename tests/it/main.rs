@@ -8,6 +8,7 @@ mod big_input;
 mod campaign;
 mod catalogue;
 mod cli;
+mod console;
 mod diagnose;
 mod fuzz_corpus;
 mod gost27843;
