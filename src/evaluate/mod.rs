@@ -32,10 +32,10 @@ pub enum StandardId {
     /// GOST 27843-88 (ST SEV 6052-87).
     #[serde(rename = "gost27843-88")]
     Gost27843,
-    /// VDI 3441 as described by Hemingray et al. (seed 003).
+    /// VDI 3441 as described by Hemingray, Cowley and Burdekin (1971).
     #[serde(rename = "vdi3441")]
     Vdi3441,
-    /// NMTBA accuracy definition as described by Hemingray et al. (seed 003).
+    /// NMTBA accuracy definition as described by Hemingray, Cowley and Burdekin (1971).
     #[serde(rename = "nmtba")]
     Nmtba,
 }

@@ -1,5 +1,5 @@
-//! The NMTBA accuracy definition as Hemingray, Cowley and Burdekin (1971, seed 003,
-//! section 3.1) describe it.
+//! The NMTBA accuracy definition as Hemingray, Cowley and Burdekin (1971, §3.1)
+//! describe it.
 //!
 //! At each point the mean position and the scatter 3σ (σ with N − 1). The zero line lies
 //! midway between the two extreme mean errors; the accuracy is the largest

@@ -1,4 +1,4 @@
-//! VDI 3441 as Hemingray, Cowley and Burdekin (1971, seed 003, section 3.2) describe it.
+//! VDI 3441 as Hemingray, Cowley and Burdekin (1971, §3.2) describe it.
 //!
 //! σi = Ri / d from the range Ri of the N readings at a point, with d from the paper's
 //! table; the mean σ over all points; the mean position deviation Ā = (X̄max + X̄min)/2;
@@ -47,7 +47,7 @@ pub struct Summary {
     pub scatter_width: f64,
 }
 
-/// VDI 3441's formulas (seed 003, Fig. 2).
+/// VDI 3441's formulas (Hemingray et al. 1971, Fig. 2).
 pub fn summary(x_max: f64, x_min: f64, sigma_mean: f64) -> Summary {
     let a = (x_max + x_min) / 2.0;
     let half = (x_max - x_min) / 2.0 + 3.0 * sigma_mean;
