@@ -2,14 +2,16 @@
 //! CI job summaries.
 
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::CampaignResult;
+use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::Role;
 use crate::judge::Verdict;
+use crate::rules::Severity;
 use crate::units::fmt_fixed;
 use std::fmt::Write;
 
 pub struct Markdown;
 
+/// User text made safe for a table cell.
 fn cell(s: &str) -> String {
     s.replace('|', "\\|").replace('\n', " ")
 }
@@ -20,105 +22,17 @@ impl Exporter for Markdown {
     }
 
     fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
-        let mut out = String::new();
-        let info = &result.info;
-        let _ = writeln!(out, "# {}\n", cell(&info.name));
-        let mut facts = Vec::new();
-        for (label, value) in [
-            ("Site", &info.site),
-            ("Purpose", &info.purpose),
-            ("Date", &info.date),
-            ("Inspector", &info.inspector),
-        ] {
-            if let Some(v) = value {
-                facts.push(format!("{label}: {}", cell(v)));
-            }
-        }
-        facts.push(format!("Campaign file: {}", cell(&result.file_name)));
-        let _ = writeln!(out, "{}\n", facts.join(" · "));
-        let counts = result.counts();
-        let _ = writeln!(
-            out,
-            "**{}** tests: {} pass, {} fail, {} noncompliant, {} error\n",
-            result.tests.len(),
-            counts[&Verdict::Pass],
-            counts[&Verdict::Fail],
-            counts[&Verdict::Noncompliant],
-            counts[&Verdict::Error]
+        let mut out = header(result);
+        out.push_str(
+            "| machine | axis | file | standard | spec | n | A | E | M | R | B | unit | verdict |\n",
         );
-        let _ = writeln!(
-            out,
-            "| machine | axis | file | standard | spec | n | A | E | M | R | B | unit | verdict |"
-        );
-        let _ = writeln!(
-            out,
-            "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---|---|"
-        );
+        out.push_str("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---|---|\n");
         for t in &result.tests {
-            let e = t.evaluation.as_ref();
-            let v = |role: Role| {
-                e.and_then(|e| e.headline(role))
-                    .map_or("–".to_string(), |p| fmt_fixed(p.value, 2))
-            };
-            let _ = writeln!(
-                out,
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | **{}** |",
-                cell(&t.machine.id),
-                cell(&t.axis),
-                cell(t.file.as_deref().unwrap_or("–")),
-                t.standard().map_or("–", |s| s.key()),
-                t.judgement
-                    .as_ref()
-                    .map_or("–".to_string(), |j| cell(&j.limits.describe())),
-                e.map_or("–".to_string(), |e| e.n.to_string()),
-                v(Role::Accuracy),
-                v(Role::Systematic),
-                v(Role::MeanRange),
-                v(Role::Repeatability),
-                v(Role::Reversal),
-                t.kind().map_or("–", |k| k.deviation_symbol()),
-                t.verdict
-            );
+            out.push_str(&row(t));
         }
-        let problems: Vec<String> = result
-            .tests
-            .iter()
-            .filter(|t| t.verdict != Verdict::Pass || t.findings.iter().any(|_| true))
-            .flat_map(|t| {
-                let mut lines = Vec::new();
-                if let Some(e) = &t.error {
-                    lines.push(format!("- **{}**: error: {}", cell(&t.label()), cell(e)));
-                }
-                if let Some(j) = &t.judgement {
-                    for c in j.failed() {
-                        lines.push(format!(
-                            "- **{}**: {} = {} over its limit {} (margin {})",
-                            cell(&t.label()),
-                            c.key,
-                            fmt_fixed(c.value, 2),
-                            fmt_fixed(c.limit, 2),
-                            fmt_fixed(c.margin, 2)
-                        ));
-                    }
-                }
-                for f in &t.findings {
-                    lines.push(format!(
-                        "- **{}**: {} `{}` ({}): {}",
-                        cell(&t.label()),
-                        match f.severity {
-                            crate::rules::Severity::Error => "rule",
-                            crate::rules::Severity::Warning => "warning",
-                        },
-                        f.id,
-                        f.clause,
-                        cell(&f.message)
-                    ));
-                }
-                lines
-            })
-            .collect();
+        let problems: Vec<String> = result.tests.iter().flat_map(problems).collect();
         if !problems.is_empty() {
-            let _ = writeln!(out, "\n## Findings\n");
+            out.push_str("\n## Findings\n\n");
             for p in problems {
                 let _ = writeln!(out, "{p}");
             }
@@ -128,4 +42,89 @@ impl Exporter for Markdown {
             bytes: out.into_bytes(),
         }])
     }
+}
+
+/// The title, the campaign's facts and the verdict counts.
+fn header(result: &CampaignResult) -> String {
+    let info = &result.info;
+    let mut facts: Vec<String> = [
+        ("Site", &info.site),
+        ("Purpose", &info.purpose),
+        ("Date", &info.date),
+        ("Inspector", &info.inspector),
+    ]
+    .into_iter()
+    .filter_map(|(label, value)| value.as_ref().map(|v| format!("{label}: {}", cell(v))))
+    .collect();
+    facts.push(format!("Campaign file: {}", cell(&result.file_name)));
+    let counts = result.counts();
+    format!(
+        "# {}\n\n{}\n\n**{}** tests: {} pass, {} fail, {} noncompliant, {} error\n\n",
+        cell(&info.name),
+        facts.join(" · "),
+        result.tests.len(),
+        counts[&Verdict::Pass],
+        counts[&Verdict::Fail],
+        counts[&Verdict::Noncompliant],
+        counts[&Verdict::Error]
+    )
+}
+
+/// A test's line of the table: its headline parameters (A, E, M, R, B of its standard).
+fn row(t: &AxisTest) -> String {
+    let e = t.evaluation.as_ref();
+    let v = |role: Role| {
+        e.and_then(|e| e.headline(role))
+            .map_or("–".to_string(), |p| fmt_fixed(p.value, 2))
+    };
+    format!(
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | **{}** |\n",
+        cell(&t.machine.id),
+        cell(&t.axis),
+        cell(t.file.as_deref().unwrap_or("–")),
+        t.standard().map_or("–", |s| s.key()),
+        t.judgement
+            .as_ref()
+            .map_or("–".to_string(), |j| cell(&j.limits.describe())),
+        e.map_or("–".to_string(), |e| e.n.to_string()),
+        v(Role::Accuracy),
+        v(Role::Systematic),
+        v(Role::MeanRange),
+        v(Role::Repeatability),
+        v(Role::Reversal),
+        t.kind().map_or("–", |k| k.deviation_symbol()),
+        t.verdict
+    )
+}
+
+/// What the findings list says of a test: its error, the parameters over their limits and
+/// the test-plan rules it breaks or warns about.
+fn problems(t: &AxisTest) -> Vec<String> {
+    let label = cell(&t.label());
+    let mut lines = Vec::new();
+    if let Some(e) = &t.error {
+        lines.push(format!("- **{label}**: error: {}", cell(e)));
+    }
+    for c in t.judgement.iter().flat_map(|j| j.failed()) {
+        lines.push(format!(
+            "- **{label}**: {} = {} over its limit {} (margin {})",
+            c.key,
+            fmt_fixed(c.value, 2),
+            fmt_fixed(c.limit, 2),
+            fmt_fixed(c.margin, 2)
+        ));
+    }
+    for f in &t.findings {
+        let kind = match f.severity {
+            Severity::Error => "rule",
+            Severity::Warning => "warning",
+        };
+        lines.push(format!(
+            "- **{label}**: {kind} `{}` ({}): {}",
+            f.id,
+            f.clause,
+            cell(&f.message)
+        ));
+    }
+    lines
 }
