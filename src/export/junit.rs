@@ -5,7 +5,6 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::CampaignResult;
 use crate::judge::Verdict;
-use crate::rules::Severity;
 use crate::units::fmt_fixed;
 use std::fmt::Write;
 
@@ -97,7 +96,7 @@ impl Exporter for Junit {
                         ));
                     }
                 }
-                for finding in t.findings.iter().filter(|f| f.severity == Severity::Error) {
+                for finding in t.broken_rules() {
                     body.push(format!(
                         "rule {} ({}): {}",
                         finding.id, finding.clause, finding.message
