@@ -60,12 +60,12 @@ pub fn render(file: &str, d: &Diagnosis) -> String {
         let _ = writeln!(out, "  none: the base model explains the data");
     }
     for f in &d.findings {
-        let _ = writeln!(out, "  {}: {}", f.effect.name(), f.message);
+        let _ = writeln!(out, "  {}: {}", f.effect().name(), f.message);
         let params: Vec<String> = f
-            .params
+            .params()
             .iter()
             .map(|(k, v)| format!("{k} = {}", num(*v)))
-            .chain(f.labels.iter().map(|(k, v)| format!("{k} = {v}")))
+            .chain(f.labels().iter().map(|(k, v)| format!("{k} = {v}")))
             .collect();
         if !params.is_empty() {
             let _ = writeln!(out, "      {}", params.join(", "));

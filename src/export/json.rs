@@ -90,7 +90,7 @@ pub fn test_json(t: &AxisTest) -> Value {
         serde_json::to_value(&t.nde).unwrap_or(Value::Null),
     );
     if let Some(d) = &t.diagnosis {
-        m.insert("diagnosis".into(), d.to_json());
+        m.insert("diagnosis".into(), json!(d));
     }
     if let Some(e) = &t.error {
         m.insert("error".into(), json!(e));
