@@ -3,7 +3,7 @@
 //! Every fit has a fixed effect per cell (target, direction), so only what changes
 //! *between the approaches of one cell* identifies a time effect; the systematic
 //! deviation, the reversal and any periodic error are absorbed by the cell effects.
-//! Terms (seed 003 §5.4 and conclusion 1; ISO 230-2 clause 3.3):
+//! Terms (Hemingray et al. 1971, §5.4 and conclusion 1; ISO 230-2 clause 3.3):
 //!
 //! * drift: `β·t`, uniform along the axis;
 //! * thermal growth: `γ·(P − P̄)·t`, proportional to position;

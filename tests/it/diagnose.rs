@@ -73,7 +73,7 @@ fn standard_plan(rng: &mut Rng) -> TestPlan {
     }
 }
 
-/// A short, finely stepped plan (seed 003 §4: ~25 mm with ~0.5 mm steps).
+/// A short, finely stepped plan (Hemingray et al. 1971, §4: ~25 mm with ~0.5 mm steps).
 fn fine_plan(rng: &mut Rng) -> TestPlan {
     let start = rng.range(0.0, 200.0);
     let length = rng.range(20.0, 40.0);
