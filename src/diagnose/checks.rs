@@ -344,7 +344,7 @@ pub(crate) fn check_base_model(
     }) {
         let ds = a.units.symbol();
         notes.push(format!(
-            "the target means depart from a smooth (cubic) trend more than the scatter explains (RMS {} {ds}, simulated at most {} {ds}): the systematic deviation has structure at the scale of the target spacing — a progressive error of complex shape, or a periodic error the plan cannot resolve or aliases (ISO 230-2 4.2, seed 003 §4); not one of the named effects",
+            "the target means depart from a smooth (cubic) trend more than the scatter explains (RMS {} {ds}, simulated at most {} {ds}): the systematic deviation has structure at the scale of the target spacing — a progressive error of complex shape, or a periodic error the plan cannot resolve or aliases (ISO 230-2 4.2; Hemingray et al. 1971, §4); not one of the named effects",
             fmt(c.measured),
             fmt(c.simulated_high)
         ));

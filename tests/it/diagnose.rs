@@ -807,9 +807,12 @@ fn unresolvable_periodic_error_gives_the_plan_that_would_resolve_it() {
     let note = d
         .notes
         .iter()
-        .find(|n| n.contains("seed 003"))
+        .find(|n| n.contains("Hemingray et al. 1971, §4"))
         .unwrap_or_else(|| panic!("{:?}", d.notes));
-    assert!(note.contains("seed 003") && note.contains("mm"), "{note}");
+    assert!(
+        note.contains("Hemingray et al. 1971, §4") && note.contains("mm"),
+        "{note}"
+    );
     assert!(note.contains("30 mm") && note.contains("0.5 mm"), "{note}");
 }
 

@@ -136,17 +136,17 @@ pub(crate) fn plan_notes(
     let pu = kind.position_unit();
     let advice = match (kind, pitch) {
         (AxisKind::Linear, Some(p)) => format!(
-            "to measure it, add a short test over about {} mm (at least three pitches) with steps of about {} mm (a tenth of the pitch or finer), as seed 003 §4 recommends (25 mm with 0.5 mm steps)",
+            "to measure it, add a short test over about {} mm (at least three pitches) with steps of about {} mm (a tenth of the pitch or finer), as Hemingray et al. 1971, §4 recommend (25 mm with 0.5 mm steps)",
             fmt_position_round((3.0 * p).max(25.0)),
             fmt_position_round((p / 10.0).min(0.5))
         ),
-        (AxisKind::Linear, None) => "to look for a lead-screw or scale periodic error, add a short test of about 25 mm with about 0.5 mm steps (seed 003 §4)".to_string(),
+        (AxisKind::Linear, None) => "to look for a lead-screw or scale periodic error, add a short test of about 25 mm with about 0.5 mm steps (Hemingray et al. 1971, §4)".to_string(),
         (AxisKind::Rotary, Some(p)) => format!(
-            "to measure it, add a short test over at least three pitches ({} deg) with steps of about {} deg (a tenth of the pitch), after seed 003 §4",
+            "to measure it, add a short test over at least three pitches ({} deg) with steps of about {} deg (a tenth of the pitch), after Hemingray et al. 1971, §4",
             fmt_position_round(3.0 * p),
             fmt_position_round(p / 10.0)
         ),
-        (AxisKind::Rotary, None) => "to look for a periodic error (worm, encoder), add a short test over a few periods with steps of a tenth of the period (seed 003 §4)".to_string(),
+        (AxisKind::Rotary, None) => "to look for a periodic error (worm, encoder), add a short test over a few periods with steps of a tenth of the period (Hemingray et al. 1971, §4)".to_string(),
     };
     if !res.applicable {
         let spacing = if res.spacing.is_finite() {
