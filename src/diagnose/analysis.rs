@@ -96,7 +96,7 @@ impl<'a> Analysis<'a> {
         }
     }
 
-    /// The standard's length of the measured travel.
+    /// Length of the measured travel (first to last target).
     pub fn length(&self) -> f64 {
         self.prep.length()
     }

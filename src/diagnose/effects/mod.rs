@@ -3,7 +3,9 @@
 //! of the held-out model ([`Rule::term`]), what it adds to the extended simulation model
 //! ([`Rule::extend`]) and its "effect removed" correction ([`Rule::removed`]).
 //!
-//! Adding an effect is one file here and one line in the list at the end of this file.
+//! Adding an effect is one file here and one line in the list at the end of this file
+//! (and, when its term is one of the held-out reading model, its switch in
+//! `validate::ModelTerms` and its part of the fit that the switch turns on).
 
 pub mod drift;
 pub mod outlier;
