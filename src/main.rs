@@ -232,7 +232,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             }
             let name = file.display().to_string();
             let text = if json {
-                cli::json_with_file(&diagnosis.to_json(), &name)?
+                cli::json_with_file(&diagnosis, &name)?
             } else {
                 cli::diagnose::render(&name, &diagnosis)
             };

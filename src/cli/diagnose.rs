@@ -23,7 +23,6 @@ fn p_text(p: f64) -> String {
 
 /// The report printed by `axcheck diagnose`.
 pub fn render(file: &str, d: &Diagnosis) -> String {
-    let unit = d.kind.deviation_symbol();
     let mut out = String::new();
     let _ = writeln!(out, "{file}");
     let _ = writeln!(
@@ -32,7 +31,18 @@ pub fn render(file: &str, d: &Diagnosis) -> String {
         d.kind,
         d.standard.title()
     );
+    checks(&mut out, d);
+    findings(&mut out, d);
+    held_out(&mut out, d);
+    corrected(&mut out, d);
+    for note in &d.notes {
+        let _ = writeln!(out, "  note: {note}");
+    }
+    out
+}
 
+/// The model checks: each statistic against its simulated band.
+fn checks(out: &mut String, d: &Diagnosis) {
     let _ = writeln!(
         out,
         "\nModel check: measured statistic against the 95 % band of tests simulated from the fitted base model"
@@ -54,18 +64,21 @@ pub fn render(file: &str, d: &Diagnosis) -> String {
             if c.outside { "   OUTSIDE" } else { "" }
         );
     }
+}
 
+/// The findings with their parameters and evidence.
+fn findings(out: &mut String, d: &Diagnosis) {
     let _ = writeln!(out, "\nFindings");
     if d.findings.is_empty() {
         let _ = writeln!(out, "  none: the base model explains the data");
     }
     for f in &d.findings {
-        let _ = writeln!(out, "  {}: {}", f.effect.name(), f.message);
+        let _ = writeln!(out, "  {}: {}", f.effect().name(), f.message);
         let params: Vec<String> = f
-            .params
+            .params()
             .iter()
             .map(|(k, v)| format!("{k} = {}", num(*v)))
-            .chain(f.labels.iter().map(|(k, v)| format!("{k} = {v}")))
+            .chain(f.labels().iter().map(|(k, v)| format!("{k} = {v}")))
             .collect();
         if !params.is_empty() {
             let _ = writeln!(out, "      {}", params.join(", "));
@@ -80,7 +93,11 @@ pub fn render(file: &str, d: &Diagnosis) -> String {
         }
         let _ = writeln!(out, "      evidence: {evidence}");
     }
+}
 
+/// The held-out error of the base and the extended model.
+fn held_out(out: &mut String, d: &Diagnosis) {
+    let unit = d.kind.deviation_symbol();
     let _ = writeln!(out, "\nHeld-out error ({})", d.validation);
     let _ = writeln!(
         out,
@@ -95,30 +112,31 @@ pub fn render(file: &str, d: &Diagnosis) -> String {
         d.extended.terms.join(", ")
     );
     let _ = writeln!(out, "  gain {} %", fmt_fixed(d.gain_pct, 1));
+}
 
-    if !d.corrected.is_empty() {
-        let _ = writeln!(
-            out,
-            "\nParameters as measured and with the identified effect removed ({unit})"
-        );
-        for c in &d.corrected {
-            let row: Vec<String> = c
-                .parameters
-                .iter()
-                .map(|p| {
-                    format!(
-                        "{} {} → {}",
-                        p.key,
-                        fmt_fixed(p.measured, 2),
-                        fmt_fixed(p.corrected, 2)
-                    )
-                })
-                .collect();
-            let _ = writeln!(out, "  without {}: {}", c.effect, row.join(", "));
-        }
+/// The standard's parameters as measured and with each identified effect removed.
+fn corrected(out: &mut String, d: &Diagnosis) {
+    if d.corrected.is_empty() {
+        return;
     }
-    for note in &d.notes {
-        let _ = writeln!(out, "  note: {note}");
+    let _ = writeln!(
+        out,
+        "\nParameters as measured and with the identified effect removed ({})",
+        d.kind.deviation_symbol()
+    );
+    for c in &d.corrected {
+        let row: Vec<String> = c
+            .parameters
+            .iter()
+            .map(|p| {
+                format!(
+                    "{} {} → {}",
+                    p.key,
+                    fmt_fixed(p.measured, 2),
+                    fmt_fixed(p.corrected, 2)
+                )
+            })
+            .collect();
+        let _ = writeln!(out, "  without {}: {}", c.effect, row.join(", "));
     }
-    out
 }

@@ -3,6 +3,9 @@
 //! bootstrap). A measured value outside the simulated 2.5–97.5 % band is something the
 //! standard's model does not explain.
 
+use super::Options;
+use super::analysis::Analysis;
+use super::finding::fmt;
 use super::periodic::{self, Grid, Trend};
 use super::prep::Prep;
 use super::stats::quantile_sorted;
@@ -308,6 +311,45 @@ pub struct ModelCheck {
     /// inflates the base model's scatter, so its simulated target means scatter more
     /// than the measured ones.
     pub side: Option<&'static str>,
+}
+
+/// The model checks of `a` against its fitted base model `base` (when the plan can be
+/// simulated); a large test gets fewer simulations, and a trend the base model cannot
+/// explain gets a note.
+pub(crate) fn check_base_model(
+    a: &Analysis,
+    base: &Simulation,
+    simulable: bool,
+    options: &Options,
+    notes: &mut Vec<String>,
+) -> Vec<ModelCheck> {
+    if !(a.prep.n >= 2 && simulable && options.simulations > 0) {
+        return Vec::new();
+    }
+    let mut count = options.simulations;
+    let budget = 4_000_000 / a.x.len().max(1);
+    if count > budget {
+        count = budget.max(20);
+        notes.push(format!(
+            "a large test: {count} Monte-Carlo simulations instead of {}",
+            options.simulations
+        ));
+    }
+    let measured = statistics(a.data);
+    let checks = run(&measured, base, count, options.seed, !a.data.has_times());
+    if let Some(c) = checks.iter().find(|c| {
+        c.statistic == "trend_lack_of_fit_rms"
+            && c.measured > c.simulated_high
+            && a.periodic.peak.is_none()
+    }) {
+        let ds = a.units.symbol();
+        notes.push(format!(
+            "the target means depart from a smooth (cubic) trend more than the scatter explains (RMS {} {ds}, simulated at most {} {ds}): the systematic deviation has structure at the scale of the target spacing — a progressive error of complex shape, or a periodic error the plan cannot resolve or aliases (ISO 230-2 4.2; Hemingray et al. 1971, §4); not one of the named effects",
+            fmt(c.measured),
+            fmt(c.simulated_high)
+        ));
+    }
+    checks
 }
 
 /// Simulates `count` tests of `sim` (seeds from `seed`) and compares them with the

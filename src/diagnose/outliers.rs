@@ -1,5 +1,5 @@
-//! Outliers: readings inconsistent with the rest (seed 003 §5.3: the scatter estimate is
-//! only as good as its readings).
+//! Outliers: readings inconsistent with the rest (Hemingray et al. 1971, §5.3: the scatter
+//! estimate is only as good as its readings).
 //!
 //! Each reading's externally studentised residual in the full time model (cell effects,
 //! run effects, drift and thermal growth, so that a drift does not make the first and last

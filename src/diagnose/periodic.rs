@@ -1,22 +1,22 @@
-//! Periodic error along the axis (seed 003 §4: lead-screw and scale errors that repeat
-//! along the travel, which a coarse or evenly spaced plan cannot see).
+//! Periodic error along the axis (Hemingray et al. 1971, §4: lead-screw and scale errors
+//! that repeat along the travel, which a coarse or evenly spaced plan cannot see).
 //!
 //! The bidirectional target means X̄i (ISO 230-2 2.11: the reversal cancels; with the
 //! standard cycle so does a drift) are the systematic deviation. Its smooth part — the
-//! progressive error of seed 003 — is a cubic in position; what is left is searched for
-//! a sinusoid with a generalised Lomb–Scargle periodogram (Zechmeister & Kürster 2009,
-//! with a floating cubic instead of a floating mean; targets are unevenly spaced, ISO
-//! 230-2 clause 4.2). At each trial period the sinusoid's share of the residual is an
-//! F-statistic, F(2, m − 6) under white scatter; the false-alarm probability of the
-//! highest peak accounts for the number of independent periods searched. When the
-//! scatter is known (n ≥ 2) the peak must also be significant against it: χ²₂ of the
-//! peak's reduction in weighted residual.
+//! progressive error of Hemingray et al. 1971 — is a cubic in position; what is left is
+//! searched for a sinusoid with a generalised Lomb–Scargle periodogram (Zechmeister &
+//! Kürster 2009, with a floating cubic instead of a floating mean; targets are unevenly
+//! spaced, ISO 230-2 clause 4.2). At each trial period the sinusoid's share of the
+//! residual is an F-statistic, F(2, m − 6) under white scatter; the false-alarm
+//! probability of the highest peak accounts for the number of independent periods
+//! searched. When the scatter is known (n ≥ 2) the peak must also be significant against
+//! it: χ²₂ of the peak's reduction in weighted residual.
 //!
 //! What a plan can resolve: periods from twice the typical target spacing (shorter ones
 //! alias) to a third of the measured travel (at least three repeats, so a periodic error
 //! is not mistaken for the progressive one). A plan whose range is narrower than a factor
-//! of two resolves nothing, and the diagnosis says which plan would (seed 003: a short
-//! travel of about 25 mm with about 0.5 mm steps).
+//! of two resolves nothing, and the diagnosis says which plan would (Hemingray et al.
+//! 1971, §4: a short travel of about 25 mm with about 0.5 mm steps).
 
 use super::stats::{chi2_upper, f_upper, max_of, to_unit_interval};
 use std::cell::RefCell;

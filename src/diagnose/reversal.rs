@@ -1,5 +1,5 @@
-//! Reversal value that changes along the axis (lost motion, seed 003 §5.2; ISO 230-2
-//! 2.12 defines Bi per target but reports one B and B̄ as if it were one number).
+//! Reversal value that changes along the axis (lost motion, Hemingray et al. 1971, §5.2;
+//! ISO 230-2 2.12 defines Bi per target but reports one B and B̄ as if it were one number).
 //!
 //! The Bi = X̄i↑ − X̄i↓ of readings corrected for the time effects (in the standard cycle a
 //! drift reaches the down approaches later than the up ones and would show as a reversal

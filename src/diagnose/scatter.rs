@@ -1,7 +1,8 @@
 //! Scatter that changes along the axis.
 //!
-//! VDI 3441 takes one scatter for the whole axis, NMTBA one per target; seed 003 §5.1 asks
-//! whether the variation of the scatter along the axis is more than sampling explains.
+//! VDI 3441 takes one scatter for the whole axis, NMTBA one per target; Hemingray et al.
+//! 1971, §5.1 ask whether the variation of the scatter along the axis is more than
+//! sampling explains.
 //! Test: the log of each cell's residual variance (residuals of the full time model, so
 //! that drift or thermal growth do not pass for scatter) regressed on position; a t-test
 //! of the slope with the regression's own residual variance (df = cells − 2), which needs

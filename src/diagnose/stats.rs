@@ -1,6 +1,21 @@
 //! Distribution functions for the diagnosis tests: Student t, F and χ² tails from the
 //! regularised incomplete beta and gamma functions (continued fractions, Numerical
 //! Recipes §6.2 and §6.4), accurate in the far tails where the tests decide.
+//!
+//! Kept by hand after comparing with the maintained crates (issue 12). On 536 points
+//! (t: df 1–5000, F: (1, 5) to (48, 1000), χ²: k 1–100; p from 0.5 down to 1e-300)
+//! against mpmath at 60 digits, the largest relative error was
+//!
+//! | tail | here    | statrs 0.19 | puruspe 0.4         |
+//! |------|---------|-------------|---------------------|
+//! | t    | 3.0e-12 | 4.9e-12     | 5.8e-12             |
+//! | F    | 1.7e-12 | 4.0e-10     | 3.6e-11             |
+//! | χ²   | 9.0e-14 | 2.0e-13     | 1 (0 below 1e-12)   |
+//!
+//! (the errors near 1e-12 are those of the argument df/(df + t²) in double precision at
+//! df = 5000, shared by all three). statrs would cost about 1.4 s of clean build, puruspe
+//! 0.5 s; neither is as accurate in the F and χ² far tails, so neither replaces this file.
+//! The tests below hold it to mpmath's values.
 
 /// ln Γ(x).
 fn ln_gamma(x: f64) -> f64 {
@@ -239,6 +254,37 @@ mod tests {
         assert!(close(chi2_upper(3.841_459, 1.0), 0.05, 1e-5));
         // χ²₁₀ at 23.209: 0.01
         assert!(close(chi2_upper(23.209_25, 10.0), 0.01, 1e-4));
+    }
+
+    /// Reference values from mpmath (`betainc`, `gammainc`, regularised, 60 digits), from
+    /// the body of the distributions down to 1e-260.
+    #[test]
+    #[allow(
+        clippy::excessive_precision,
+        reason = "mpmath's values as printed, 17 digits"
+    )]
+    fn far_tails_match_mpmath() {
+        let cases = [
+            (t_two_sided(2.0, 10.0), 7.338_803_477_074_036_6e-2),
+            (t_two_sided(8.0, 100.0), 2.272_864_807_728_080_6e-12),
+            (t_two_sided(30.0, 82.0), 5.648_988_784_457_653_4e-46),
+            (t_two_sided(100.0, 10.0), 2.449_689_555_419_829_9e-16),
+            (t_two_sided(100000.0, 3.0), 2.205_315_580_893_254_6e-15),
+            (t_two_sided(6.0, 5000.0), 2.112_096_283_305_386_9e-9),
+            (f_upper(4.1, 2.0, 10.0), 5.007_754_848_108_385_7e-2),
+            (f_upper(100.0, 2.0, 5000.0), 2.610_067_584_753_000_6e-43),
+            (f_upper(1000000.0, 18.0, 82.0), 4.510_805_395_250_780_6e-211),
+            (f_upper(60.0, 9.0, 90.0), 3.437_466_439_058_241_3e-34),
+            (f_upper(1000.0, 1.0, 20.0), 1.493_492_184_133_660_3e-18),
+            (chi2_upper(10.0, 2.0), 6.737_946_999_085_467_1e-3),
+            (chi2_upper(400.0, 1.0), 5.507_248_237_212_467_4e-89),
+            (chi2_upper(1400.0, 50.0), 3.152_379_998_818_998_2e-260),
+            (chi2_upper(100.0, 100.0), 4.811_916_845_279_567_2e-1),
+            (chi2_upper(60.0, 2.0), 9.357_622_968_840_174_6e-14),
+        ];
+        for (k, (got, want)) in cases.iter().enumerate() {
+            assert!(close(*got, *want, 5e-12), "case {k}: {got:e} vs {want:e}");
+        }
     }
 
     #[test]

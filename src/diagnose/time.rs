@@ -3,7 +3,7 @@
 //! Every fit has a fixed effect per cell (target, direction), so only what changes
 //! *between the approaches of one cell* identifies a time effect; the systematic
 //! deviation, the reversal and any periodic error are absorbed by the cell effects.
-//! Terms (seed 003 §5.4 and conclusion 1; ISO 230-2 clause 3.3):
+//! Terms (Hemingray et al. 1971, §5.4 and conclusion 1; ISO 230-2 clause 3.3):
 //!
 //! * drift: `β·t`, uniform along the axis;
 //! * thermal growth: `γ·(P − P̄)·t`, proportional to position;
@@ -245,17 +245,8 @@ pub(crate) fn tests(
         drift: true,
     };
     let full = fit(prep, values, active, scale, all);
-    let trend = fit(
-        prep,
-        values,
-        active,
-        scale,
-        Terms {
-            thermal: true,
-            runs: false,
-            drift: true,
-        },
-    );
+    let no_runs = Terms { runs: false, ..all };
+    let trend = fit(prep, values, active, scale, no_runs);
     let df = full.df;
     let sigma2 = full.sigma2();
     let mut out = TimeTests {
@@ -264,72 +255,87 @@ pub(crate) fn tests(
         drift: None,
         sigma2,
         df,
-        full: full.clone(),
-        trend: trend.clone(),
+        full,
+        trend,
     };
     if !(df >= 1.0 && sigma2 > 0.0) {
         return out;
     }
-    // Thermal growth: γ in the full model, against the pure scatter.
-    if let Some(c) = full.thermal_col.filter(|&c| full.ls.kept[c]) {
-        let se = (sigma2 * full.ls.cov[c][c]).sqrt();
-        let t = full.gamma / se;
-        out.thermal = Some(CoefTest {
-            estimate: full.gamma,
-            se,
-            t,
-            p: t_two_sided(t, df),
-            df,
-        });
-    }
-    // Run offsets: what the trend model leaves to the run effects.
+    out.thermal = thermal_test(&out.full, sigma2, df);
+    out.runs = run_test(prep, &out.full, &out.trend, sigma2, df);
+    let runs_real = out.runs.as_ref().is_some_and(|r| r.p < alpha);
+    let thermal_found = out.thermal.as_ref().is_some_and(|t| t.p < alpha);
+    out.drift = drift_test(prep, &out, runs_real, thermal_found);
+    out
+}
+
+/// Thermal growth: γ in the full model, against the pure scatter.
+fn thermal_test(full: &TimeFit, sigma2: f64, df: f64) -> Option<CoefTest> {
+    let c = full.thermal_col.filter(|&c| full.ls.kept[c])?;
+    let se = (sigma2 * full.ls.cov[c][c]).sqrt();
+    let t = full.gamma / se;
+    Some(CoefTest {
+        estimate: full.gamma,
+        se,
+        t,
+        p: t_two_sided(t, df),
+        df,
+    })
+}
+
+/// Run offsets: what the trend model leaves to the run effects of the full model.
+fn run_test(prep: &Prep, full: &TimeFit, trend: &TimeFit, sigma2: f64, df: f64) -> Option<RunTest> {
     let df_lof = full.ls.rank as f64 - trend.ls.rank as f64;
-    let mut runs_real = false;
-    if df_lof >= 1.0 {
-        let ms = (trend.rss - full.rss).max(0.0) / df_lof;
-        let f = ms / sigma2;
-        let p = f_upper(f, df_lof, df);
-        runs_real = p < alpha;
-        // Run effects after the drift: mean residual of the trend model per run.
-        let mut sum = vec![0.0; prep.n];
-        let mut count = vec![0usize; prep.n];
-        for &k in &trend.rows {
-            sum[prep.rows[k].run] += trend.residuals[k];
-            count[prep.rows[k].run] += 1;
-        }
-        let mut offsets: Vec<f64> = sum
-            .iter()
-            .zip(&count)
-            .map(|(s, &c)| if c > 0 { s / c as f64 } else { 0.0 })
-            .collect();
-        let mean = offsets.iter().sum::<f64>() / offsets.len() as f64;
-        for o in &mut offsets {
-            *o -= mean;
-        }
-        out.runs = Some(RunTest {
-            f,
-            df1: df_lof,
-            df2: df,
-            p,
-            offsets,
-        });
+    if df_lof < 1.0 {
+        return None;
     }
-    // Drift: the trend model's β (with γ), against the scatter or, when the run
-    // offsets are real, against the run-to-run variation.
-    let Some(bc) = trend.drift_col.filter(|&c| trend.ls.kept[c]) else {
-        return out;
-    };
+    let ms = (trend.rss - full.rss).max(0.0) / df_lof;
+    let f = ms / sigma2;
+    // Run effects after the drift: mean residual of the trend model per run.
+    let mut sum = vec![0.0; prep.n];
+    let mut count = vec![0usize; prep.n];
+    for &k in &trend.rows {
+        sum[prep.rows[k].run] += trend.residuals[k];
+        count[prep.rows[k].run] += 1;
+    }
+    let mut offsets: Vec<f64> = sum
+        .iter()
+        .zip(&count)
+        .map(|(s, &c)| if c > 0 { s / c as f64 } else { 0.0 })
+        .collect();
+    let mean = offsets.iter().sum::<f64>() / offsets.len() as f64;
+    for o in &mut offsets {
+        *o -= mean;
+    }
+    Some(RunTest {
+        f,
+        df1: df_lof,
+        df2: df,
+        p: f_upper(f, df_lof, df),
+        offsets,
+    })
+}
+
+/// Drift: the trend model's β (with γ), against the scatter or, when the run offsets are
+/// real, against the run-to-run variation; with a thermal growth found, at its origin.
+fn drift_test(
+    prep: &Prep,
+    tests: &TimeTests,
+    runs_real: bool,
+    thermal_found: bool,
+) -> Option<DriftTest> {
+    let (full, trend) = (&tests.full, &tests.trend);
+    let bc = trend.drift_col.filter(|&c| trend.ls.kept[c])?;
     let (err_ms, err_df, against) = if runs_real {
-        let df_lof_v = out.runs.as_ref().map_or(1.0, |r| r.df1);
+        let df_lof_v = tests.runs.as_ref().map_or(1.0, |r| r.df1);
         (
             (trend.rss - full.rss).max(0.0) / df_lof_v,
             df_lof_v,
             "run-to-run variation",
         )
     } else {
-        (sigma2, df, "scatter")
+        (tests.sigma2, tests.df, "scatter")
     };
-    let thermal_found = out.thermal.as_ref().is_some_and(|t| t.p < alpha);
     let tc = trend.thermal_col.filter(|&c| trend.ls.kept[c]);
     let (estimate, var, origin) = match (thermal_found, tc) {
         (true, Some(gc)) if trend.gamma != 0.0 => {
@@ -354,7 +360,7 @@ pub(crate) fn tests(
         let t = estimate / se;
         (t, t_two_sided(t, err_df))
     };
-    out.drift = Some(DriftTest {
+    Some(DriftTest {
         test: CoefTest {
             estimate,
             se,
@@ -364,6 +370,5 @@ pub(crate) fn tests(
         },
         origin,
         against,
-    });
-    out
+    })
 }

@@ -11,6 +11,7 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
+use crate::diagnose::Diagnosis;
 use crate::evaluate::json::{ParameterValues, TargetIndices};
 use crate::judge::{Check, Judgement, Verdict};
 use crate::nde::NdeCorrection;
@@ -46,7 +47,7 @@ pub struct TestJson<'a> {
     rules: &'a [Finding],
     nde: Option<&'a NdeCorrection>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    diagnosis: Option<serde_json::Value>,
+    diagnosis: Option<&'a Diagnosis>,
     #[serde(skip_serializing_if = "Option::is_none")]
     error: Option<&'a str>,
 }
@@ -139,7 +140,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         judgement: t.judgement.as_ref().map(Judged::new),
         rules: &t.findings,
         nde: t.nde.as_ref(),
-        diagnosis: t.diagnosis.as_ref().map(|d| d.to_json()),
+        diagnosis: t.diagnosis.as_ref(),
         error: t.error.as_deref(),
     }
 }

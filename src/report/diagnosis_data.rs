@@ -3,71 +3,128 @@
 //! diagnosis charts (model checks, residuals in time and along the axis, periodogram).
 
 use super::data::num;
+use crate::diagnose::effects::periodic::Periodic;
+use crate::diagnose::{Diagnosis, Finding};
 use crate::units::{AxisKind, fmt_fixed};
-use serde_json::{Value, json};
+use serde::Serialize;
+
+/// The diagnosis section of an axis report, as the template reads it.
+#[derive(Serialize)]
+pub(super) struct DiagnosisSection<'a> {
+    unit: &'static str,
+    findings: Vec<FindingLine<'a>>,
+    base_rms: String,
+    extended_rms: String,
+    base_terms: String,
+    extended_terms: String,
+    /// Held-out gain in %, `–` when not finite.
+    gain: String,
+    validation: &'static str,
+    /// The effect of `corrected` (`all` when several were removed).
+    corrected_label: &'a str,
+    corrected: Vec<CorrectedLine<'a>>,
+    notes: &'a [String],
+    has_periodogram: bool,
+}
+
+/// One finding: its message, its parameters and its evidence as text.
+#[derive(Serialize)]
+struct FindingLine<'a> {
+    effect: &'static str,
+    message: &'a str,
+    params: String,
+    evidence: String,
+}
+
+/// One parameter as measured and with the effects removed.
+#[derive(Serialize)]
+struct CorrectedLine<'a> {
+    key: &'a str,
+    measured: String,
+    corrected: String,
+}
+
+/// A statistic or parameter: scientific notation when very small or large.
+fn fmt(x: f64) -> String {
+    if x != 0.0 && (x.abs() < 0.01 || x.abs() >= 1e5) {
+        format!("{x:.2e}")
+    } else {
+        num(x)
+    }
+}
+
+impl<'a> From<&'a Finding> for FindingLine<'a> {
+    fn from(f: &'a Finding) -> FindingLine<'a> {
+        let e = &f.evidence;
+        let mut evidence = format!("{} = {}", e.statistic, fmt(e.value));
+        if let Some(p) = e.p_value {
+            evidence.push_str(&if p < 1e-4 {
+                format!(", p = {p:.1e}")
+            } else {
+                format!(", p = {p:.4}")
+            });
+        }
+        if let Some(s) = e.effect_size {
+            evidence.push_str(&format!(", effect size {}", fmt(s)));
+        }
+        let params = f
+            .params()
+            .iter()
+            .map(|(k, v)| format!("{k} = {}", fmt(*v)))
+            .chain(f.labels().iter().map(|(k, v)| format!("{k} = {v}")))
+            .collect::<Vec<_>>()
+            .join(", ");
+        FindingLine {
+            effect: f.effect().name(),
+            message: &f.message,
+            params,
+            evidence,
+        }
+    }
+}
 
 /// The diagnosis section: findings with evidence, the held-out gain, parameters with the
 /// identified effects removed (beside the measured ones), notes.
-pub(super) fn diagnosis_json(d: &crate::diagnose::Diagnosis) -> Value {
-    let unit = d.kind.deviation_symbol();
-    let fmt = |x: f64| {
-        if x != 0.0 && (x.abs() < 0.01 || x.abs() >= 1e5) {
-            format!("{x:.2e}")
-        } else {
-            num(x)
-        }
-    };
-    let findings: Vec<Value> = d
-        .findings
-        .iter()
-        .map(|f| {
-            let e = &f.evidence;
-            let mut evidence = format!("{} = {}", e.statistic, fmt(e.value));
-            if let Some(p) = e.p_value {
-                evidence.push_str(&if p < 1e-4 { format!(", p = {p:.1e}") } else { format!(", p = {p:.4}") });
-            }
-            if let Some(s) = e.effect_size {
-                evidence.push_str(&format!(", effect size {}", fmt(s)));
-            }
-            json!({
-                "effect": f.effect.name(),
-                "message": f.message,
-                "params": f.params.iter().map(|(k, v)| format!("{k} = {}", fmt(*v))).chain(f.labels.iter().map(|(k, v)| format!("{k} = {v}"))).collect::<Vec<_>>().join(", "),
-                "evidence": evidence,
-            })
-        })
-        .collect();
+pub(super) fn diagnosis_section(d: &Diagnosis) -> DiagnosisSection<'_> {
     let all = d
         .corrected
         .iter()
         .find(|c| c.effect == "all")
         .or_else(|| d.corrected.last());
-    let corrected: Vec<Value> = all.map_or(Vec::new(), |c| {
+    let corrected = all.map_or(Vec::new(), |c| {
         c.parameters
             .iter()
-            .map(|p| json!({"key": p.key, "measured": num(p.measured), "corrected": num(p.corrected)}))
+            .map(|p| CorrectedLine {
+                key: &p.key,
+                measured: num(p.measured),
+                corrected: num(p.corrected),
+            })
             .collect()
     });
-    json!({
-        "unit": unit,
-        "findings": findings,
-        "base_rms": fmt_fixed(d.base.heldout_rms, 3),
-        "extended_rms": fmt_fixed(d.extended.heldout_rms, 3),
-        "base_terms": d.base.terms.join(", "),
-        "extended_terms": d.extended.terms.join(", "),
-        "gain": if d.gain_pct.is_finite() { fmt_fixed(d.gain_pct, 1) } else { "–".to_string() },
-        "validation": d.validation,
-        "corrected_label": all.map_or(String::new(), |c| c.effect.clone()),
-        "corrected": corrected,
-        "notes": d.notes,
-        "has_periodogram": !d.residuals.periodogram.is_empty(),
-    })
+    DiagnosisSection {
+        unit: d.kind.deviation_symbol(),
+        findings: d.findings.iter().map(FindingLine::from).collect(),
+        base_rms: fmt_fixed(d.base.heldout_rms, 3),
+        extended_rms: fmt_fixed(d.extended.heldout_rms, 3),
+        base_terms: d.base.terms.join(", "),
+        extended_terms: d.extended.terms.join(", "),
+        gain: if d.gain_pct.is_finite() {
+            fmt_fixed(d.gain_pct, 1)
+        } else {
+            "–".to_string()
+        },
+        validation: d.validation,
+        corrected_label: all.map_or("", |c| c.effect.as_str()),
+        corrected,
+        notes: &d.notes,
+        has_periodogram: !d.residuals.periodogram.is_empty(),
+    }
 }
 
 /// Chart data of a diagnosis: model checks, residuals in time and along the axis, the
 /// periodogram.
 pub fn diagnosis_charts(
-    d: &crate::diagnose::Diagnosis,
+    d: &Diagnosis,
 ) -> (
     Vec<super::diagnosis_charts::CheckBar>,
     super::diagnosis_charts::Residuals,
@@ -140,17 +197,12 @@ pub fn diagnosis_charts(
         }
     };
     let marked = d
-        .findings
-        .iter()
-        .find(|f| f.effect == crate::diagnose::Effect::Periodic)
-        .and_then(|f| {
-            let key = format!("period_{}", d.kind.position_unit());
-            f.param(&key)
-                .map(|p| (p, format!("{} {pos_unit}", fmt_fixed(p, 2))))
-        });
+        .estimates::<Periodic>()
+        .next()
+        .map(|p| (p.period, format!("{} {pos_unit}", fmt_fixed(p.period, 2))));
     let periodogram = Periodogram {
-        period: d.residuals.periodogram.iter().map(|(p, _)| *p).collect(),
-        power: d.residuals.periodogram.iter().map(|(_, w)| *w).collect(),
+        period: d.residuals.periodogram.iter().map(|p| p.period).collect(),
+        power: d.residuals.periodogram.iter().map(|p| p.power).collect(),
         period_label: format!("Period / {pos_unit}"),
         threshold: None,
         marked,

@@ -8,6 +8,7 @@
 //! standard error, always ≥ 3σ/√n), simulates the test with `axcheck simulate`'s model and
 //! diagnoses it. Seeds and sizes vary; nothing is tuned to one seed.
 
+use axcheck::diagnose::effects::outlier::Outlier as FoundOutlier;
 use axcheck::diagnose::{self, Diagnosis, Effect, Options};
 use axcheck::evaluate::StandardId;
 use axcheck::measurement::AxisData;
@@ -72,7 +73,7 @@ fn standard_plan(rng: &mut Rng) -> TestPlan {
     }
 }
 
-/// A short, finely stepped plan (seed 003 §4: ~25 mm with ~0.5 mm steps).
+/// A short, finely stepped plan (Hemingray et al. 1971, §4: ~25 mm with ~0.5 mm steps).
 fn fine_plan(rng: &mut Rng) -> TestPlan {
     let start = rng.range(0.0, 200.0);
     let length = rng.range(20.0, 40.0);
@@ -400,7 +401,7 @@ fn run_case(case: &Case) -> (AxisData, Diagnosis) {
 }
 
 fn effects(d: &Diagnosis) -> Vec<&'static str> {
-    let mut v: Vec<&'static str> = d.findings.iter().map(|f| f.effect.name()).collect();
+    let mut v: Vec<&'static str> = d.findings.iter().map(|f| f.effect().name()).collect();
     v.dedup();
     v
 }
@@ -410,6 +411,11 @@ fn param(d: &Diagnosis, effect: Effect, key: &str) -> f64 {
         .next()
         .and_then(|f| f.param(key))
         .unwrap_or(f64::NAN)
+}
+
+/// The stable JSON of a diagnosis.
+fn json_of(d: &Diagnosis) -> serde_json::Value {
+    serde_json::to_value(d).expect("a diagnosis serialises")
 }
 
 fn rel_err(got: f64, want: f64) -> f64 {
@@ -547,11 +553,11 @@ fn hidden_outlier_is_located_exactly() {
         Effect::Outlier,
         |c, d| {
             let (run, dir, target) = c.at.unwrap();
-            d.of(Effect::Outlier).any(|f| {
-                f.param("run") == Some(run as f64)
-                    && f.param("target") == Some(target as f64)
-                    && f.label("direction") == Some(dir.name())
-                    && rel_err(f.param("size_um").unwrap(), c.truth) <= 0.5
+            d.estimates::<FoundOutlier>().any(|o| {
+                o.run == run
+                    && o.target == target
+                    && o.direction == dir
+                    && rel_err(o.size, c.truth) <= 0.5
             })
         },
     );
@@ -614,13 +620,13 @@ fn real_measurements() {
         for f in &d.findings {
             println!(
                 "  finding {}: {} | {} = {:.3}, p = {:?}, effect size {:?} | {:?}",
-                f.effect.name(),
+                f.effect().name(),
                 f.message,
                 f.evidence.statistic,
                 f.evidence.value,
                 f.evidence.p_value,
                 f.evidence.effect_size,
-                f.params
+                f.params()
             );
         }
         if d.findings.is_empty() {
@@ -657,7 +663,7 @@ fn real_measurements() {
         for note in &d.notes {
             println!("  note: {note}");
         }
-        let json = d.to_json();
+        let json = json_of(&d);
         assert!(json["findings"].is_array(), "{file}");
         Simulation::from_yaml(json["extended_model"].as_str().unwrap(), file)
             .unwrap_or_else(|e| panic!("{file}: {e}"));
@@ -673,7 +679,7 @@ fn drift_data() -> (Case, AxisData, Diagnosis) {
 #[test]
 fn json_has_the_stable_fields_and_is_deterministic() {
     let (case, data, d) = drift_data();
-    let json = d.to_json();
+    let json = json_of(&d);
     for key in [
         "unit",
         "position_unit",
@@ -741,7 +747,10 @@ fn json_has_the_stable_fields_and_is_deterministic() {
         "R without drift"
     );
     // Deterministic: the same input gives the same JSON, byte for byte.
-    let again = diagnose::diagnose(&data, &options(case.seed ^ 0x5EED, None)).to_json();
+    let again = json_of(&diagnose::diagnose(
+        &data,
+        &options(case.seed ^ 0x5EED, None),
+    ));
     assert_eq!(json.to_string(), again.to_string());
 }
 
@@ -798,9 +807,12 @@ fn unresolvable_periodic_error_gives_the_plan_that_would_resolve_it() {
     let note = d
         .notes
         .iter()
-        .find(|n| n.contains("seed 003"))
+        .find(|n| n.contains("Hemingray et al. 1971, §4"))
         .unwrap_or_else(|| panic!("{:?}", d.notes));
-    assert!(note.contains("seed 003") && note.contains("mm"), "{note}");
+    assert!(
+        note.contains("Hemingray et al. 1971, §4") && note.contains("mm"),
+        "{note}"
+    );
     assert!(note.contains("30 mm") && note.contains("0.5 mm"), "{note}");
 }
 
@@ -894,7 +906,7 @@ fn tiny_and_degenerate_inputs_do_not_panic() {
         .par_iter()
         .map(|data| {
             let d = diagnose::diagnose(data, &options(3, Some(2.0)));
-            let json = d.to_json();
+            let json = json_of(&d);
             assert!(json["findings"].is_array());
             Simulation::from_yaml(json["extended_model"].as_str().unwrap(), "x.yaml")
                 .unwrap_or_else(|e| panic!("{e}\n{}", json["extended_model"]));

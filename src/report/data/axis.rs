@@ -7,6 +7,7 @@ use super::{CampaignHeader, generator, num, opt, pos, s_symbol, symbol_of};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::{DirectionResult, Evaluation, StandardId};
 use crate::judge::Verdict;
+use crate::report::diagnosis_data::{DiagnosisSection, diagnosis_section};
 use crate::rules::Finding;
 use crate::units::{Travel, fmt_position};
 use serde::Serialize;
@@ -29,7 +30,7 @@ pub struct AxisReport<'a> {
     notes: &'a [String],
     findings: &'a [Finding],
     has_charts: bool,
-    diagnosis: Option<serde_json::Value>,
+    diagnosis: Option<DiagnosisSection<'a>>,
     generator: String,
 }
 
@@ -57,10 +58,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         notes: e.map_or(&[], |e| &e.notes),
         findings: &t.findings,
         has_charts: e.is_some(),
-        diagnosis: t
-            .diagnosis
-            .as_ref()
-            .map(crate::report::diagnosis_data::diagnosis_json),
+        diagnosis: t.diagnosis.as_ref().map(diagnosis_section),
         generator: generator(),
     }
 }

@@ -1,0 +1,189 @@
+//! The tests of one measurement, run once and read by every effect.
+//!
+//! Order, chosen so that one effect does not pass for another: outliers (in the full time
+//! model), time effects (drift, thermal growth, run offsets; [`super::time`]), scatter
+//! along the axis ([`super::scatter`]; when found, outliers and time effects are redone
+//! with the scatter model as weights), then on readings corrected for the time effects the
+//! reversal along the axis ([`super::reversal`]) and the periodic error
+//! ([`super::periodic`]).
+
+use super::finding::Units;
+use super::outliers::{self, Hit};
+use super::periodic::{self, Search};
+use super::prep::{Prep, TimeUnit};
+use super::reversal::{self, ReversalTest};
+use super::scatter::{self, ScatterTest};
+use super::time::{self, TimeTests};
+use super::{ALPHA, effects, linalg, stats};
+use crate::measurement::AxisData;
+
+/// What the tests found out about one measurement.
+pub(crate) struct Analysis<'a> {
+    pub data: &'a AxisData,
+    pub prep: Prep,
+    pub units: Units,
+    /// The readings, one per row of `prep`.
+    pub x: Vec<f64>,
+    pub hits: Vec<Hit>,
+    /// Rows that are not outliers.
+    pub active: Vec<bool>,
+    pub time: TimeTests,
+    pub scatter: Option<ScatterTest>,
+    /// Scatter σ of the full time model (NaN when unknown: n = 1).
+    pub sigma: f64,
+    /// Reversal value Bi per target of the readings corrected for the time effects.
+    pub b: Vec<f64>,
+    /// Bidirectional mean X̄i per target of the same readings.
+    pub means: Vec<f64>,
+    pub reversal: Option<ReversalTest>,
+    pub periodic: Search,
+}
+
+impl<'a> Analysis<'a> {
+    /// Runs the tests; notes on what could not be assessed go to `notes`.
+    pub fn run(data: &'a AxisData, pitch: Option<f64>, notes: &mut Vec<String>) -> Analysis<'a> {
+        let prep = Prep::new(data);
+        notes.extend(opening_notes(prep.time_unit, prep.n));
+        let x: Vec<f64> = prep.rows.iter().map(|r| r.x).collect();
+        let (hits, active, tt, sc, scale) = time_and_scatter(&prep, &x);
+        let known = prep.n >= 2 && tt.df >= 1.0 && tt.sigma2 > 0.0;
+        let sigma = if known { tt.sigma2.sqrt() } else { f64::NAN };
+        let m = prep.m;
+        // Readings corrected for the time effects (the trend model's drift and growth).
+        let v: Vec<f64> = prep
+            .rows
+            .iter()
+            .zip(&x)
+            .map(|(r, x)| {
+                let t = r.t - prep.tbar;
+                x - (tt.trend.beta * t + tt.trend.gamma * (prep.positions[r.i] - prep.pbar) * t)
+            })
+            .collect();
+        let (cm, cc) = prep.cell_means(&v, &active);
+        let var_cell = |c: usize| tt.sigma2 * scale[c] * scale[c] / cc[c].max(1) as f64;
+        let b: Vec<f64> = (0..m).map(|i| cm[2 * i] - cm[2 * i + 1]).collect();
+        let bvar: Option<Vec<f64>> = known.then(|| {
+            (0..m)
+                .map(|i| var_cell(2 * i) + var_cell(2 * i + 1))
+                .collect()
+        });
+        let rev = reversal::test(&prep.positions, &b, bvar.as_deref(), tt.df);
+        let means: Vec<f64> = (0..m).map(|i| (cm[2 * i] + cm[2 * i + 1]) / 2.0).collect();
+        let mvar: Option<Vec<f64>> = known.then(|| {
+            (0..m)
+                .map(|i| (var_cell(2 * i) + var_cell(2 * i + 1)) / 4.0)
+                .collect()
+        });
+        let ps = periodic::search(&prep.positions, &means, mvar.as_deref(), pitch, ALPHA);
+        effects::periodic::plan_notes(&ps.resolution, pitch, data.kind, notes);
+        Analysis {
+            data,
+            units: Units {
+                kind: data.kind,
+                time: prep.time_unit,
+            },
+            prep,
+            x,
+            hits,
+            active,
+            time: tt,
+            scatter: sc,
+            sigma,
+            b,
+            means,
+            reversal: rev,
+            periodic: ps,
+        }
+    }
+
+    /// Length of the measured travel (first to last target).
+    pub fn length(&self) -> f64 {
+        self.prep.length()
+    }
+}
+
+/// What the number of runs and the time stamps leave out.
+fn opening_notes(time_unit: TimeUnit, n: usize) -> Vec<String> {
+    let mut notes = Vec::new();
+    if time_unit == TimeUnit::Runs {
+        notes.push(
+            "no time stamps: time taken as the order of the standard test cycle (ISO 230-2 Fig. 1); rates are per run"
+                .to_string(),
+        );
+    }
+    if n == 1 {
+        notes.push(
+            "n = 1: no repeated approaches, so scatter, drift, thermal growth, run offsets, outliers and scatter variation cannot be assessed and there is no held-out validation; reversal variation and periodic error are tested against their own residuals"
+                .to_string(),
+        );
+    } else if n == 2 {
+        notes.push(
+            "n = 2: an outlier cannot be located (either reading of a pair could be the odd one), a drift cannot be told from a zero shift between the two runs, and scatter variation is not tested"
+                .to_string(),
+        );
+    }
+    notes
+}
+
+/// Outliers, time effects and scatter variation; redone with the scatter model as
+/// weights when the scatter changes along the axis. Returns the outliers, the active
+/// rows, the time tests, the scatter test and the relative scatter per cell.
+fn time_and_scatter(
+    prep: &Prep,
+    x: &[f64],
+) -> (
+    Vec<Hit>,
+    Vec<bool>,
+    TimeTests,
+    Option<ScatterTest>,
+    Vec<f64>,
+) {
+    let mask = |hits: &[Hit]| {
+        let mut a = vec![true; prep.rows.len()];
+        for h in hits {
+            a[h.row] = false;
+        }
+        a
+    };
+    let mut scale = vec![1.0; prep.cells()];
+    let mut hits = outliers::detect(prep, x, &scale, ALPHA);
+    let mut active = mask(&hits);
+    let mut tt = time::tests(prep, x, &active, &scale, ALPHA);
+    let mut sc = scatter::test(prep, &tt.full.residuals, tt.sigma2);
+    if let Some(s) = sc.as_ref().filter(|s| s.p < ALPHA) {
+        scale = s.rel_scale.clone();
+        hits = outliers::detect(prep, x, &scale, ALPHA);
+        active = mask(&hits);
+        tt = time::tests(prep, x, &active, &scale, ALPHA);
+        if let Some(s2) = scatter::test(prep, &tt.full.residuals, tt.sigma2) {
+            sc = Some(s2);
+        }
+    }
+    (hits, active, tt, sc, scale)
+}
+
+/// The smooth (cubic, or lower with few targets) least-squares trend of `y`.
+pub(crate) fn smooth_trend(positions: &[f64], y: &[f64]) -> Vec<f64> {
+    let m = positions.len();
+    if m == 0 {
+        return Vec::new();
+    }
+    let z = stats::to_unit_interval(positions);
+    let degree = 3.min(m.saturating_sub(2));
+    let cols: Vec<Vec<f64>> = (0..=degree)
+        .map(|k| z.iter().map(|zi| zi.powi(k as i32)).collect())
+        .collect();
+    let idx: Vec<usize> = (0..m).filter(|&i| y[i].is_finite()).collect();
+    if idx.is_empty() {
+        return vec![f64::NAN; m];
+    }
+    let sub: Vec<Vec<f64>> = cols
+        .iter()
+        .map(|c| idx.iter().map(|&i| c[i]).collect())
+        .collect();
+    let ys: Vec<f64> = idx.iter().map(|&i| y[i]).collect();
+    let fit = linalg::least_squares(&sub, &ys);
+    (0..m)
+        .map(|i| cols.iter().zip(&fit.coef).map(|(c, b)| c[i] * b).sum())
+        .collect()
+}

@@ -1,0 +1,112 @@
+//! Drift: the deviations move with time, uniformly along the axis (warm-up; ISO 230-2
+//! 3.3; Hemingray et al. 1971, §5.4). Tested in [`crate::diagnose::time`] as the drift
+//! rate of the trend model, against the scatter or, when the run offsets are real, against
+//! the run-to-run variation.
+
+use super::{Rule as EffectRule, Term};
+use crate::diagnose::analysis::Analysis;
+use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::fitted::Fitted;
+use crate::diagnose::{ALPHA, model::r4};
+use crate::simulate::ErrorModel;
+
+/// A drift: its rate per time unit (hour, or run without time stamps).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Drift {
+    /// Deviation unit per time unit.
+    pub rate: f64,
+    /// Standard error of the rate.
+    pub rate_se: f64,
+    /// Over the test: the rate times its time span, deviation unit.
+    pub total: f64,
+    /// The position where the drift is the time effect, when thermal growth is found too.
+    pub at: Option<f64>,
+    /// What the rate was tested against: `scatter` or `run-to-run variation`.
+    pub tested_against: &'static str,
+}
+
+impl Fields for Drift {
+    fn params(&self, u: Units) -> Vec<(String, f64)> {
+        let (du, tk) = (u.dev(), u.time());
+        let mut params = vec![
+            (format!("rate_{du}_per_{tk}"), self.rate),
+            (format!("rate_se_{du}_per_{tk}"), self.rate_se),
+            (format!("total_{du}"), self.total),
+        ];
+        if let Some(o) = self.at {
+            params.push((format!("at_{}", u.pos()), o));
+        }
+        params
+    }
+
+    fn labels(&self) -> Vec<(&'static str, &'static str)> {
+        vec![("tested_against", self.tested_against)]
+    }
+}
+
+pub(crate) struct Rule;
+
+impl EffectRule for Rule {
+    fn find(&self, a: &Analysis) -> Vec<Finding> {
+        let Some(d) = a.time.drift.as_ref().filter(|d| d.test.p < ALPHA) else {
+            return Vec::new();
+        };
+        let u = a.units;
+        let rate = d.test.estimate;
+        let total = rate * a.prep.t_span;
+        let message = format!(
+            "the deviations drift by {} {ds} per {} uniformly along the axis ({} {ds} over the test; t = {}, p = {}, against the {}){}",
+            fmt(rate),
+            u.per(),
+            fmt(total),
+            fmt(d.test.t),
+            fmt_p(d.test.p),
+            d.against,
+            if a.prep.n == 2 {
+                "; with two runs this may as well be a zero shift between them"
+            } else {
+                ""
+            },
+            ds = u.symbol(),
+        );
+        vec![Finding {
+            estimate: Drift {
+                rate,
+                rate_se: d.test.se,
+                total,
+                at: d.origin,
+                tested_against: d.against,
+            }
+            .into(),
+            units: u,
+            evidence: Evidence {
+                statistic: format!(
+                    "t of the drift rate (df {}, against the {})",
+                    d.test.df, d.against
+                ),
+                value: d.test.t,
+                p_value: Some(d.test.p),
+                effect_size: relative(total.abs(), a.sigma),
+            },
+            message,
+        }]
+    }
+
+    fn term(&self) -> Term {
+        Term::Readings(|t| t.drift = true)
+    }
+
+    fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+        model.drift_per_h = r4(fit.drift_rate / fit.hours_per_unit);
+    }
+
+    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+        Some(
+            a.prep
+                .rows
+                .iter()
+                .map(|r| fit.drift_rate * (r.t - a.prep.tbar))
+                .collect(),
+        )
+    }
+}

@@ -1,0 +1,151 @@
+//! The vocabulary of effects, one file each (as a linter keeps one file per rule): its
+//! decision on the tests ([`Rule::find`]: the finding with its typed estimate), its term
+//! of the held-out model ([`Rule::term`]), what it adds to the extended simulation model
+//! ([`Rule::extend`]) and its "effect removed" correction ([`Rule::removed`]).
+//!
+//! Adding an effect is one file here and one line in the list at the end of this file
+//! (and, when its term is one of the held-out reading model, its switch in
+//! `validate::ModelTerms` and its part of the fit that the switch turns on).
+
+pub mod drift;
+pub mod outlier;
+pub mod periodic;
+pub mod reversal_variation;
+pub mod run_offset;
+pub mod scatter_variation;
+pub mod thermal_growth;
+
+use super::analysis::Analysis;
+use super::finding::{Fields, Finding};
+use super::fitted::Fitted;
+use super::validate::ModelTerms;
+use crate::simulate::ErrorModel;
+use serde::Serialize;
+
+/// How a kept term is judged before the extended model takes it.
+#[derive(Clone, Copy)]
+pub(crate) enum Term {
+    /// A term of the reading model, kept when it lowers the held-out RMS of the readings.
+    Readings(fn(&mut ModelTerms)),
+    /// A term of the reading model's scatter, kept when it lowers the held-out negative
+    /// log density (an RMS cannot see it).
+    Density(fn(&mut ModelTerms)),
+    /// A term of the target means, kept when it lowers their leave-one-target-out RMS.
+    TargetMeans,
+}
+
+/// One effect of the vocabulary.
+pub(crate) trait Rule: Sync {
+    /// The findings of this effect from the tests (each at level [`super::ALPHA`]).
+    fn find(&self, a: &Analysis) -> Vec<Finding>;
+    /// How its term is judged.
+    fn term(&self) -> Term;
+    /// Adds the kept term to the extended model (whose plan is the file's plan).
+    fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel);
+    /// The effect per row of `a.prep` to subtract from the readings for the "effect
+    /// removed" parameters; None when it cannot be subtracted.
+    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>>;
+}
+
+/// Access to one effect's estimate in a finding.
+pub trait Typed: Sized {
+    fn of(estimate: &Estimate) -> Option<&Self>;
+}
+
+/// Declares the vocabulary from one list: the [`Effect`] enum (in the order of the
+/// findings), the [`Estimate`] enum of the typed estimates and each effect's [`Rule`].
+/// Each line names the variant, its stable name and its module, which holds a struct of
+/// the variant's name (the estimate) and a unit struct `Rule`.
+macro_rules! effects {
+    ($( $(#[$doc:meta])* $name:ident = $key:literal in $module:ident, )+) => {
+        /// The vocabulary of causes.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+        #[serde(rename_all = "snake_case")]
+        pub enum Effect {
+            $( $(#[$doc])* $name, )+
+        }
+
+        impl Effect {
+            pub const ALL: &'static [Effect] = &[$(Effect::$name),+];
+
+            /// The stable name: `drift`, `thermal_growth`, …
+            pub fn name(self) -> &'static str {
+                match self {
+                    $( Effect::$name => $key, )+
+                }
+            }
+
+            pub(crate) fn rule(self) -> &'static dyn Rule {
+                match self {
+                    $( Effect::$name => &$module::Rule, )+
+                }
+            }
+        }
+
+        /// A finding's estimate, one type per effect.
+        #[derive(Debug, Clone, PartialEq)]
+        pub enum Estimate {
+            $( $name($module::$name), )+
+        }
+
+        impl Estimate {
+            pub fn effect(&self) -> Effect {
+                match self {
+                    $( Estimate::$name(_) => Effect::$name, )+
+                }
+            }
+
+            pub(crate) fn fields(&self) -> &dyn Fields {
+                match self {
+                    $( Estimate::$name(e) => e, )+
+                }
+            }
+        }
+
+        $(
+            impl From<$module::$name> for Estimate {
+                fn from(e: $module::$name) -> Estimate {
+                    Estimate::$name(e)
+                }
+            }
+
+            impl Typed for $module::$name {
+                fn of(estimate: &Estimate) -> Option<&Self> {
+                    match estimate {
+                        Estimate::$name(e) => Some(e),
+                        _ => None,
+                    }
+                }
+            }
+        )+
+    };
+}
+
+effects! {
+    /// Deviations move with time, uniformly along the axis (warm-up; ISO 230-2 3.3).
+    Drift = "drift" in drift,
+    /// A time-dependent error proportional to position (screw or scale expansion).
+    ThermalGrowth = "thermal_growth" in thermal_growth,
+    /// Each run shifted as a whole, not ordered in time (zero-point instability).
+    RunOffset = "run_offset" in run_offset,
+    /// Periodic error along the axis (lead screw, scale).
+    Periodic = "periodic" in periodic,
+    /// The reversal value changes along the axis.
+    ReversalVariation = "reversal_variation" in reversal_variation,
+    /// Readings inconsistent with the rest.
+    Outlier = "outlier" in outlier,
+    /// Scatter that changes along the axis.
+    ScatterVariation = "scatter_variation" in scatter_variation,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_are_the_serialised_names() {
+        for e in Effect::ALL {
+            assert_eq!(serde_json::to_value(e).unwrap(), e.name());
+        }
+    }
+}

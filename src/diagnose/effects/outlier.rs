@@ -1,0 +1,123 @@
+//! Outliers: readings inconsistent with the rest (Hemingray et al. 1971, §5.3: the scatter
+//! estimate is only as good as its readings). Found in [`crate::diagnose::outliers`] by
+//! externally studentised residuals in the full time model, Bonferroni over all readings.
+
+use super::{Rule as EffectRule, Term};
+use crate::diagnose::analysis::Analysis;
+use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::fitted::Fitted;
+use crate::diagnose::model::r4;
+use crate::measurement::fmt_target;
+use crate::simulate::{ErrorModel, Outlier as SimulatedOutlier};
+use crate::units::Direction;
+
+/// One reading off by more than the rest explain.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outlier {
+    /// Run label as in the file.
+    pub run: u32,
+    /// Target number, from 1.
+    pub target: usize,
+    pub direction: Direction,
+    /// Target position, mm or deg.
+    pub position: f64,
+    /// The reading minus what the rest predict, deviation unit.
+    pub size: f64,
+}
+
+impl Fields for Outlier {
+    fn params(&self, u: Units) -> Vec<(String, f64)> {
+        vec![
+            ("run".into(), f64::from(self.run)),
+            ("target".into(), self.target as f64),
+            (format!("position_{}", u.pos()), self.position),
+            (format!("size_{}", u.dev()), self.size),
+        ]
+    }
+
+    fn labels(&self) -> Vec<(&'static str, &'static str)> {
+        vec![("direction", self.direction.name())]
+    }
+}
+
+fn direction(d: usize) -> Direction {
+    if d == 0 {
+        Direction::Up
+    } else {
+        Direction::Down
+    }
+}
+
+pub(crate) struct Rule;
+
+impl EffectRule for Rule {
+    fn find(&self, a: &Analysis) -> Vec<Finding> {
+        let u = a.units;
+        a.hits
+            .iter()
+            .map(|h| {
+                let r = &a.prep.rows[h.row];
+                let dir = direction(r.d);
+                let run = a.data.run_labels[r.run];
+                let position = a.prep.positions[r.i];
+                let message = format!(
+                    "reading of run {run}, {}, target {} ({}) is off by {} {} from what the rest predict (t = {}, adjusted p = {})",
+                    dir.name(),
+                    r.i + 1,
+                    fmt_target(u.kind, position),
+                    fmt(h.size),
+                    u.symbol(),
+                    fmt(h.t),
+                    fmt_p(h.p_adj)
+                );
+                Finding {
+                    estimate: Outlier {
+                        run,
+                        target: r.i + 1,
+                        direction: dir,
+                        position,
+                        size: h.size,
+                    }
+                    .into(),
+                    units: u,
+                    evidence: Evidence {
+                        statistic: "externally studentised residual (Bonferroni over all readings)"
+                            .into(),
+                        value: h.t,
+                        p_value: Some(h.p_adj),
+                        effect_size: relative(h.size.abs(), a.sigma),
+                    },
+                    message,
+                }
+            })
+            .collect()
+    }
+
+    fn term(&self) -> Term {
+        Term::Readings(|t| t.outliers = true)
+    }
+
+    fn extend(&self, a: &Analysis, _: &Fitted, model: &mut ErrorModel) {
+        model.outliers = a
+            .hits
+            .iter()
+            .map(|h| {
+                let r = &a.prep.rows[h.row];
+                SimulatedOutlier {
+                    run: r.run as u32 + 1,
+                    direction: direction(r.d),
+                    target: r.i + 1,
+                    size: r4(h.size),
+                }
+            })
+            .collect();
+    }
+
+    fn removed(&self, a: &Analysis, _: &Fitted) -> Option<Vec<f64>> {
+        let mut v = vec![0.0; a.x.len()];
+        for h in &a.hits {
+            v[h.row] = h.size;
+        }
+        Some(v)
+    }
+}

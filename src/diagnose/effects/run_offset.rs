@@ -1,0 +1,104 @@
+//! Run offsets: each run shifted as a whole, not in time order (zero-point instability;
+//! Hemingray et al. 1971, §5.4). Tested in [`crate::diagnose::time`] as what a straight
+//! line in time leaves of the between-run variation, against the pure scatter.
+
+use super::{Rule as EffectRule, Term};
+use crate::diagnose::analysis::Analysis;
+use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::fitted::Fitted;
+use crate::diagnose::{ALPHA, model::r4};
+use crate::simulate::ErrorModel;
+
+/// One run's offset.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunShift {
+    /// Run label as in the file.
+    pub run: u32,
+    /// Offset from the mean of the runs, deviation unit.
+    pub offset: f64,
+}
+
+/// Run offsets, centred (mean 0).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunOffset {
+    pub offsets: Vec<RunShift>,
+    /// RMS of the offsets, deviation unit.
+    pub rms: f64,
+}
+
+impl Fields for RunOffset {
+    fn params(&self, u: Units) -> Vec<(String, f64)> {
+        let du = u.dev();
+        let mut params: Vec<(String, f64)> = self
+            .offsets
+            .iter()
+            .map(|o| (format!("offset_run{}_{du}", o.run), o.offset))
+            .collect();
+        params.push((format!("rms_{du}"), self.rms));
+        params
+    }
+}
+
+pub(crate) struct Rule;
+
+impl EffectRule for Rule {
+    fn find(&self, a: &Analysis) -> Vec<Finding> {
+        let Some(r) = a.time.runs.as_ref().filter(|r| r.p < ALPHA) else {
+            return Vec::new();
+        };
+        let rms = (r.offsets.iter().map(|o| o * o).sum::<f64>() / r.offsets.len() as f64).sqrt();
+        let message = format!(
+            "whole runs are shifted, not in time order (zero-point instability): offsets {} {} (RMS {}; F = {}, p = {})",
+            r.offsets
+                .iter()
+                .map(|o| fmt(*o))
+                .collect::<Vec<_>>()
+                .join(", "),
+            a.units.symbol(),
+            fmt(rms),
+            fmt(r.f),
+            fmt_p(r.p)
+        );
+        let offsets = r
+            .offsets
+            .iter()
+            .enumerate()
+            .map(|(j, o)| RunShift {
+                run: a.data.run_labels[j],
+                offset: *o,
+            })
+            .collect();
+        vec![Finding {
+            estimate: RunOffset { offsets, rms }.into(),
+            units: a.units,
+            evidence: Evidence {
+                statistic: format!(
+                    "F of the run means beyond a linear drift ({}, {} df)",
+                    r.df1, r.df2
+                ),
+                value: r.f,
+                p_value: Some(r.p),
+                effect_size: relative(rms, a.sigma),
+            },
+            message,
+        }]
+    }
+
+    fn term(&self) -> Term {
+        Term::Readings(|t| t.runs = true)
+    }
+
+    fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+        model.run_offsets = fit.run_offsets.iter().map(|o| r4(*o)).collect();
+    }
+
+    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+        Some(
+            a.prep
+                .rows
+                .iter()
+                .map(|r| fit.run_offsets.get(r.run).copied().unwrap_or(0.0))
+                .collect(),
+        )
+    }
+}

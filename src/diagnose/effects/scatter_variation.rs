@@ -1,0 +1,89 @@
+//! Scatter variation: the scatter changes along the axis (Hemingray et al. 1971, §5.1:
+//! VDI 3441 takes one scatter for the axis, NMTBA one per target). Tested in
+//! [`crate::diagnose::scatter`]: the log cell variances regressed on position.
+
+use super::{Rule as EffectRule, Term};
+use crate::diagnose::analysis::Analysis;
+use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p};
+use crate::diagnose::fitted::Fitted;
+use crate::diagnose::{ALPHA, model::r4};
+use crate::measurement::fmt_target;
+use crate::simulate::ErrorModel;
+
+/// A scatter σ that changes along the axis (log-linearly in position).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScatterVariation {
+    /// Fitted σ at the first and last target, deviation unit.
+    pub start: f64,
+    pub end: f64,
+    /// end / start.
+    pub ratio: f64,
+}
+
+impl Fields for ScatterVariation {
+    fn params(&self, u: Units) -> Vec<(String, f64)> {
+        let du = u.dev();
+        vec![
+            (format!("scatter_start_{du}"), self.start),
+            (format!("scatter_end_{du}"), self.end),
+            ("ratio_end_to_start".into(), self.ratio),
+        ]
+    }
+}
+
+pub(crate) struct Rule;
+
+impl EffectRule for Rule {
+    fn find(&self, a: &Analysis) -> Vec<Finding> {
+        let Some(s) = a.scatter.as_ref().filter(|s| s.p < ALPHA) else {
+            return Vec::new();
+        };
+        let (u, p) = (a.units, &a.prep);
+        let ds = u.symbol();
+        let ratio = s.sigma_hi / s.sigma_lo;
+        let message = format!(
+            "the scatter changes along the axis: σ ≈ {} {ds} at {} to {} {ds} at {} (t = {}, p = {})",
+            fmt(s.sigma_lo),
+            fmt_target(u.kind, p.lo),
+            fmt(s.sigma_hi),
+            fmt_target(u.kind, p.hi),
+            fmt(s.t),
+            fmt_p(s.p)
+        );
+        vec![Finding {
+            estimate: ScatterVariation {
+                start: s.sigma_lo,
+                end: s.sigma_hi,
+                ratio,
+            }
+            .into(),
+            units: u,
+            evidence: Evidence {
+                statistic: format!(
+                    "t of the slope of log cell variance on position (df {})",
+                    s.df
+                ),
+                value: s.t,
+                p_value: Some(s.p),
+                effect_size: Some(ratio),
+            },
+            message,
+        }]
+    }
+
+    fn term(&self) -> Term {
+        Term::Density(|t| t.scatter = true)
+    }
+
+    fn extend(&self, a: &Analysis, _: &Fitted, model: &mut ErrorModel) {
+        if let Some(s) = a.scatter.as_ref() {
+            model.scatter = r4(s.sigma_lo);
+            model.scatter_end = Some(r4(s.sigma_hi));
+        }
+    }
+
+    /// A scatter cannot be subtracted from the readings.
+    fn removed(&self, _: &Analysis, _: &Fitted) -> Option<Vec<f64>> {
+        None
+    }
+}

@@ -1,0 +1,116 @@
+//! Thermal growth: an error proportional to position that grows with time (screw or scale
+//! expansion; Hemingray et al. 1971, §5.4 and conclusion 1). Tested in
+//! [`crate::diagnose::time`] as the position × time coefficient of the full time model,
+//! against the pure scatter.
+
+use super::{Rule as EffectRule, Term};
+use crate::diagnose::analysis::Analysis;
+use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::fitted::Fitted;
+use crate::diagnose::{ALPHA, model::r4};
+use crate::measurement::fmt_target;
+use crate::simulate::ErrorModel;
+use crate::units::AxisKind;
+
+/// A thermal growth: ppm of the position per time unit (hour, or run), about an origin.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalGrowth {
+    /// ppm (µm per m, or for a rotary axis ppm of the angle) per time unit.
+    pub growth_ppm: f64,
+    /// Standard error of `growth_ppm`.
+    pub growth_se_ppm: f64,
+    /// The position where the growth is zero, mm or deg.
+    pub origin: f64,
+    /// Over the measured travel and the test, deviation unit.
+    pub over_travel_and_test: f64,
+}
+
+impl Fields for ThermalGrowth {
+    fn params(&self, u: Units) -> Vec<(String, f64)> {
+        let tk = u.time();
+        let (key, se_key) = match u.kind {
+            AxisKind::Linear => (
+                format!("growth_um_per_m_per_{tk}"),
+                format!("growth_se_um_per_m_per_{tk}"),
+            ),
+            AxisKind::Rotary => (
+                format!("growth_ppm_per_{tk}"),
+                format!("growth_se_ppm_per_{tk}"),
+            ),
+        };
+        vec![
+            (key, self.growth_ppm),
+            (se_key, self.growth_se_ppm),
+            (format!("origin_{}", u.pos()), self.origin),
+            (
+                format!("growth_over_travel_and_test_{}", u.dev()),
+                self.over_travel_and_test,
+            ),
+        ]
+    }
+}
+
+pub(crate) struct Rule;
+
+impl EffectRule for Rule {
+    fn find(&self, a: &Analysis) -> Vec<Finding> {
+        let Some(t) = a.time.thermal.as_ref().filter(|t| t.p < ALPHA) else {
+            return Vec::new();
+        };
+        let u = a.units;
+        let ppm = t.estimate / a.prep.ppm_factor();
+        let origin = a
+            .time
+            .drift
+            .as_ref()
+            .and_then(|d| d.origin)
+            .unwrap_or(a.prep.pbar);
+        let over = t.estimate * a.length() * a.prep.t_span;
+        let message = format!(
+            "an error proportional to position grows with time: {} ppm per {} ({} {} over the measured travel and the test), zero at {} (t = {}, p = {})",
+            fmt(ppm),
+            u.per(),
+            fmt(over),
+            u.symbol(),
+            fmt_target(u.kind, origin),
+            fmt(t.t),
+            fmt_p(t.p)
+        );
+        vec![Finding {
+            estimate: ThermalGrowth {
+                growth_ppm: ppm,
+                growth_se_ppm: t.se / a.prep.ppm_factor(),
+                origin,
+                over_travel_and_test: over,
+            }
+            .into(),
+            units: u,
+            evidence: Evidence {
+                statistic: format!("t of the position × time coefficient (df {})", t.df),
+                value: t.t,
+                p_value: Some(t.p),
+                effect_size: relative(over.abs(), a.sigma),
+            },
+            message,
+        }]
+    }
+
+    fn term(&self) -> Term {
+        Term::Readings(|t| t.thermal = true)
+    }
+
+    fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+        model.thermal_growth_ppm_per_h = r4(fit.growth / a.prep.ppm_factor() / fit.hours_per_unit);
+        model.thermal_origin = r4(fit.origin);
+    }
+
+    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+        let p = &a.prep;
+        Some(
+            p.rows
+                .iter()
+                .map(|r| fit.growth * (p.positions[r.i] - fit.origin) * (r.t - p.tbar))
+                .collect(),
+        )
+    }
+}
