@@ -1,20 +1,21 @@
-//! Report charts drawn with `plotters` into SVG strings held in memory.
+//! Report charts drawn with `plotters` into [`Scene`]s (shapes and texts as data).
 //!
-//! Every function here is pure: the same input gives the same bytes, nothing touches the file
-//! system, and no input makes it panic (a chart that cannot be drawn comes back as a small SVG
-//! that says so). Charts name only `Style::font_family` in their text, so the PDF renderer can
-//! use the face it embeds.
+//! Every function here is pure: the same input gives the same scene, nothing touches the
+//! file system, and no input makes it panic (a chart that cannot be drawn comes back as a
+//! small chart that says so).
 //!
-//! Sizes are in SVG pixels and the text sizes are fixed, chosen for a chart about 900 px wide
+//! Sizes are in pixels and the text sizes are fixed, chosen for a chart about 900 px wide
 //! shown about 16 cm wide: 900 × 420 for [`bidirectional`], 900 × 600 for [`unidirectional`]
 //! (two panels stacked), and 900 × [`ratio_chart_height`] for [`tolerance_usage`].
 
 use super::chart_kit::{
     Area, AxesSpec, Chart, Conventions, DASHED, DESC_PX, DOWN, FRAME, Failed, GRID, GUIDE, INK,
     LegendItem, MUTED, Marker, Px, SOLID, STRIPE, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H,
-    build_axes, draw_frame_edges, draw_marker, draw_text, extent, fmt_fixed, font, message_chart,
-    render, round_px, sig_decimals, text_style, ticks, x_tick_count,
+    build_axes, draw_frame_edges, draw_line, draw_marker, draw_text, extent, fmt_fixed_for_print,
+    font, message_chart, padded_range, render, round_px, sig_decimals, text_style, ticks,
+    x_tick_count,
 };
+use super::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 
@@ -86,10 +87,9 @@ const SPAN_PX: f64 = 14.0;
 const DASHED_THIN: &[f64] = &[6.0, 4.0];
 const DASH_DOT: &[f64] = &[9.0, 3.5, 2.0, 3.5];
 
-/// How these charts measure text and draw lines (see [`Conventions`]).
+/// How these charts measure text (see [`Conventions`]).
 const KIT: Conventions = Conventions {
     narrow_superscripts: false,
-    dedup_pixels: false,
 };
 
 /// Ratios above this are drawn clipped at it, with an arrow marker.
@@ -130,21 +130,12 @@ const MARK_READ_DOWN: (Marker, RGBColor) = (Marker::TriangleOutline(3), DOWN_LIG
 
 /// Three significant digits, at most nine decimals.
 fn fmt_sig(v: f64) -> String {
-    fmt_fixed(v, sig_decimals(v))
+    fmt_fixed_for_print(v, sig_decimals(v))
 }
 
-/// The x range: the targets with a small margin; a single target gets a window around it.
+/// The x range: the targets with 4 % to spare; a single target gets a window around it.
 fn x_range(positions: &[f64]) -> Option<(f64, f64)> {
-    let (lo, hi) = extent(positions.iter().copied())?;
-    let span = hi - lo;
-    let scale = lo.abs().max(hi.abs()).max(1.0);
-    let (lo, hi) = if span <= scale * 1e-9 {
-        let half = (scale * 0.05).max(1.0);
-        (lo - half, hi + half)
-    } else {
-        (lo - span * 0.04, hi + span * 0.04)
-    };
-    (lo.is_finite() && hi.is_finite() && hi > lo).then_some((lo, hi))
+    padded_range(positions.iter().copied(), 0.04)
 }
 
 /// The y range: every value and zero, padded by 8 %.
@@ -171,13 +162,8 @@ fn to_px(c: (i32, i32)) -> Px {
 // Axis charts
 
 /// Builds one panel's chart with grid, ticks, frame and zero line.
-fn build_panel<'a, 'b>(
-    area: &'a Area<'b>,
-    style: &Style,
-    frame: &AxesSpec,
-    y_label_w: u32,
-) -> Result<Chart<'a, 'b>, Failed> {
-    let chart = build_axes(area, style, frame, y_label_w)?;
+fn build_panel<'a>(area: &'a Area, frame: &AxesSpec, y_label_w: u32) -> Result<Chart<'a>, Failed> {
+    let chart = build_axes(area, frame, y_label_w)?;
 
     // The zero line.
     // (`area` draws in its own pixels; the chart reports backend pixels.)
@@ -217,7 +203,7 @@ fn draw_direction(
     match layer {
         Layer::Limits => {
             for limit in [&series.upper, &series.lower].into_iter().flatten() {
-                KIT.draw_line(root, &curve(chart, positions, limit), limit_stroke)?;
+                draw_line(root, &curve(chart, positions, limit), limit_stroke)?;
             }
         }
         Layer::Readings if has_readings(series) => {
@@ -233,7 +219,7 @@ fn draw_direction(
         Layer::Readings => {}
         Layer::Mean => {
             let mean = curve(chart, positions, &series.mean);
-            KIT.draw_line(root, &mean, mean_stroke)?;
+            draw_line(root, &mean, mean_stroke)?;
             for p in &mean {
                 draw_marker(root, round_px(*p), mean_mark.0, mean_mark.1)?;
             }
@@ -302,7 +288,7 @@ fn span_margin(spans: &[Span], width: u32) -> u32 {
 
 /// Draws each span as a bracket in its own column right of the plot, with guides to the
 /// plot edge, its label and its value.
-fn draw_spans(root: &Area, style: &Style, chart: &Chart, spans: &[Span]) -> Result<(), Failed> {
+fn draw_spans(root: &Area, chart: &Chart, spans: &[Span]) -> Result<(), Failed> {
     let (xr, _) = chart.plotting_area().get_pixel_range();
     let plot_right = xr.end - 1;
     let x_any = chart.as_coord_spec().get_x_range().start;
@@ -335,13 +321,13 @@ fn draw_spans(root: &Area, style: &Style, chart: &Chart, spans: &[Span]) -> Resu
             root,
             &span.label,
             (tx, mid - 1),
-            text_style(style, SPAN_PX, true, INK, HPos::Left, VPos::Bottom),
+            text_style(SPAN_PX, true, INK, HPos::Left, VPos::Bottom),
         )?;
         draw_text(
             root,
             &fmt_sig((span.upper - span.lower).abs()),
             (tx, mid + 1),
-            text_style(style, SPAN_PX, false, INK, HPos::Left, VPos::Top),
+            text_style(SPAN_PX, false, INK, HPos::Left, VPos::Top),
         )?;
         x += (col as f64 * squeeze).round() as i32;
     }
@@ -423,7 +409,7 @@ fn direction_legend(chart: &AxisChart, up: bool) -> Vec<LegendItem> {
 /// ↑ is dark blue, solid, filled circles; ↓ is dark red, dashed, open triangles; the
 /// bidirectional mean is a thin black dash-dot line. The legend sits in a band above the plot.
 /// Designed for 900 × 420 px.
-pub fn bidirectional(chart: &AxisChart, style: &Style) -> String {
+pub fn bidirectional(chart: &AxisChart, style: &Style) -> Scene {
     let n = chart.positions.len();
     let Some(x) = x_range(&chart.positions) else {
         return message_chart(style, "No target positions to plot.");
@@ -459,21 +445,21 @@ pub fn bidirectional(chart: &AxisChart, style: &Style) -> String {
             x_desc: Some(chart.position_label.as_str()).filter(|d| !d.trim().is_empty()),
             own_x_ticks: false,
         };
-        let cp = build_panel(root, style, &frame, KIT.y_tick_width(y, plot_h))?;
+        let cp = build_panel(root, &frame, KIT.y_tick_width(y, plot_h))?;
         if legend_h > 0 {
-            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, &items, 10, w as i32 - 10, 0)?;
         }
         let (_, yr) = cp.plotting_area().get_pixel_range();
-        KIT.draw_y_desc(root, style, &chart.deviation_label, yr.start, yr.end)?;
+        KIT.draw_y_desc(root, &chart.deviation_label, yr.start, yr.end)?;
 
         for layer in [Layer::Limits, Layer::Readings] {
             draw_direction(root, &cp, &chart.positions, &chart.up, true, layer)?;
             draw_direction(root, &cp, &chart.positions, &chart.down, false, layer)?;
         }
-        KIT.draw_line(root, &curve(&cp, &chart.positions, &chart.mean), MEAN_BIDIR)?;
+        draw_line(root, &curve(&cp, &chart.positions, &chart.mean), MEAN_BIDIR)?;
         draw_direction(root, &cp, &chart.positions, &chart.up, true, Layer::Mean)?;
         draw_direction(root, &cp, &chart.positions, &chart.down, false, Layer::Mean)?;
-        draw_spans(root, style, &cp, &chart.spans)?;
+        draw_spans(root, &cp, &chart.spans)?;
         Ok(())
     })
 }
@@ -487,7 +473,7 @@ pub fn unidirectional(
     up_spans: &[Span],
     down_spans: &[Span],
     style: &Style,
-) -> String {
+) -> Scene {
     let Some(x) = x_range(&chart.positions) else {
         return message_chart(style, "No target positions to plot.");
     };
@@ -533,7 +519,7 @@ pub fn unidirectional(
                 x_desc,
                 own_x_ticks: false,
             };
-            let cp = build_panel(area, style, &frame, y_label_w)?;
+            let cp = build_panel(area, &frame, y_label_w)?;
             let (xr, yr) = cp.plotting_area().get_pixel_range();
             plot_rows = (plot_rows.0.min(yr.start), plot_rows.1.max(yr.end));
             let color = if up { UP } else { DOWN };
@@ -541,23 +527,17 @@ pub fn unidirectional(
                 root,
                 title,
                 (xr.start, yr.start - 5),
-                text_style(style, DESC_PX, true, color, HPos::Left, VPos::Bottom),
+                text_style(DESC_PX, true, color, HPos::Left, VPos::Bottom),
             )?;
             for layer in [Layer::Limits, Layer::Readings, Layer::Mean] {
                 draw_direction(root, &cp, &chart.positions, series, up, layer)?;
             }
-            draw_spans(root, style, &cp, spans)?;
+            draw_spans(root, &cp, spans)?;
         }
         if legend_h > 0 {
-            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, &items, 10, w as i32 - 10, 0)?;
         }
-        KIT.draw_y_desc(
-            root,
-            style,
-            &chart.deviation_label,
-            plot_rows.0,
-            plot_rows.1,
-        )?;
+        KIT.draw_y_desc(root, &chart.deviation_label, plot_rows.0, plot_rows.1)?;
         Ok(())
     })
 }
@@ -588,7 +568,7 @@ pub fn ratio_chart_height(bars: usize) -> u32 {
 /// parameter name and ratio printed at the bar's end (e.g. "B 2.60"). Ratios above 3 are
 /// clipped at the axis end with an arrow marker and keep their true value in the label.
 /// Size the height with [`ratio_chart_height`].
-pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
+pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> Scene {
     if bars.is_empty() {
         return message_chart(style, "No axes to summarise.");
     }
@@ -614,7 +594,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
         let value_texts: Vec<String> = bars
             .iter()
             .map(|b| {
-                let value = fmt_fixed(b.ratio, 2);
+                let value = fmt_fixed_for_print(b.ratio, 2);
                 if b.parameter.trim().is_empty() {
                     value
                 } else {
@@ -640,7 +620,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
         let plot_w = w.saturating_sub(label_w + right + 8);
         let nx = x_tick_count(plot_w);
         let (_, x_dec) = ticks((0.0, x_max), nx);
-        let x_fmt = move |v: &f64| fmt_fixed(*v, x_dec);
+        let x_fmt = move |v: &f64| fmt_fixed_for_print(*v, x_dec);
         let (xr, yr) = chart.plotting_area().get_pixel_range();
         let (l, r, t, b) = (xr.start, xr.end - 1, yr.start, yr.end - 1);
 
@@ -663,9 +643,9 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
             .y_labels(0)
             .disable_y_mesh()
             .x_label_formatter(&x_fmt)
-            .x_label_style(font(style, TICK_PX, false).color(&INK))
-            .y_label_style(font(style, TICK_PX, false).color(&INK))
-            .axis_desc_style(font(style, DESC_PX, false).color(&INK))
+            .x_label_style(font(TICK_PX, false).color(&INK))
+            .y_label_style(font(TICK_PX, false).color(&INK))
+            .axis_desc_style(font(DESC_PX, false).color(&INK))
             .x_desc("Worst parameter / tolerance")
             .bold_line_style(GRID.stroke_width(1))
             .light_line_style(TRANSPARENT)
@@ -677,7 +657,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
         let row_h = ((b - t) as f64 / n as f64).max(1.0);
         let thickness = ((row_h * 0.62).round() as i32).clamp(2, 28);
         let label_style = |bold: bool, color: RGBColor, h: HPos| {
-            text_style(style, TICK_PX, bold, color, h, VPos::Center)
+            text_style(TICK_PX, bold, color, h, VPos::Center)
         };
         // Bars first, then the limit line over them, then the texts on small backgrounds.
         let mut texts = Vec::with_capacity(n);
@@ -730,7 +710,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
             root,
             "limit",
             (limit_x, t - 6),
-            text_style(style, TICK_PX, true, INK, HPos::Center, VPos::Bottom),
+            text_style(TICK_PX, true, INK, HPos::Center, VPos::Bottom),
         )?;
 
         let text_h = (TICK_PX as i32 + 2).min(row_h as i32).max(4);
@@ -784,7 +764,10 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
             kx += 28 + KIT.text_width(text, TICK_PX).ceil() as i32 + 22;
         }
         if clipped {
-            let note = format!("▶ ratio above {}, bar clipped", fmt_fixed(RATIO_CLIP, 0));
+            let note = format!(
+                "▶ ratio above {}, bar clipped",
+                fmt_fixed_for_print(RATIO_CLIP, 0)
+            );
             draw_text(
                 root,
                 &note,
@@ -800,9 +783,21 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
 mod tests {
     use super::*;
 
+    // The charts as SVG with an element per outline, as plotters wrote them.
+    fn bidirectional(chart: &AxisChart, style: &Style) -> String {
+        super::bidirectional(chart, style).element_svg()
+    }
+
+    fn unidirectional(chart: &AxisChart, up: &[Span], down: &[Span], style: &Style) -> String {
+        super::unidirectional(chart, up, down, style).element_svg()
+    }
+
+    fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
+        super::tolerance_usage(bars, style).element_svg()
+    }
+
     fn style() -> Style {
         Style {
-            font_family: "Inter".to_string(),
             width_px: 900,
             height_px: 420,
         }
@@ -1028,24 +1023,6 @@ mod tests {
     }
 
     #[test]
-    fn only_the_given_font_family_is_named() {
-        let style = Style {
-            font_family: "Test Face".to_string(),
-            ..style()
-        };
-        let mut svgs = all_charts(&iso_example(), &style);
-        svgs.push(bidirectional(&AxisChart::default(), &style));
-        svgs.push(tolerance_usage(&[], &style));
-        for svg in svgs {
-            let families = attr_values(&svg, "font-family");
-            assert!(!families.is_empty());
-            assert!(families.iter().all(|f| *f == "Test Face"), "{families:?}");
-            assert!(!svg.contains("sans-serif") && !svg.contains("serif\""));
-            assert_eq!(families.len(), svg.matches("<text").count());
-        }
-    }
-
-    #[test]
     fn font_sizes_are_plain_numbers() {
         for svg in all_charts(&iso_example(), &style()) {
             for size in attr_values(&svg, "font-size") {
@@ -1158,12 +1135,10 @@ mod tests {
         let styles = [
             style(),
             Style {
-                font_family: String::new(),
                 width_px: 0,
                 height_px: 0,
             },
             Style {
-                font_family: "Inter".to_string(),
                 width_px: 300,
                 height_px: 150,
             },
@@ -1202,11 +1177,11 @@ mod tests {
 
     #[test]
     fn numbers_are_formatted_for_print() {
-        assert_eq!(fmt_fixed(-1.5, 2), "−1.50");
-        assert_eq!(fmt_fixed(-0.001, 2), "0.00");
-        assert_eq!(fmt_fixed(1750.0, 0), "1750");
-        assert_eq!(fmt_fixed(f64::INFINITY, 2), "∞");
-        assert_eq!(fmt_fixed(-2.5e300, 0), "−2.50e300");
+        assert_eq!(fmt_fixed_for_print(-1.5, 2), "−1.50");
+        assert_eq!(fmt_fixed_for_print(-0.001, 2), "0.00");
+        assert_eq!(fmt_fixed_for_print(1750.0, 0), "1750");
+        assert_eq!(fmt_fixed_for_print(f64::INFINITY, 2), "∞");
+        assert_eq!(fmt_fixed_for_print(-2.5e300, 0), "−2.50e300");
         assert_eq!(fmt_sig(9.59), "9.59");
         assert_eq!(fmt_sig(12.34), "12.3");
         assert_eq!(fmt_sig(0.0123), "0.0123");

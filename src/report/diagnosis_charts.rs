@@ -1,21 +1,21 @@
 //! Charts of the "model check and diagnosis" section of an axis report, drawn with `plotters`
-//! into SVG strings held in memory.
+//! into [`Scene`]s (shapes and texts as data).
 //!
-//! Same conventions as the report's other charts: every function is pure (the same input gives
-//! the same bytes, nothing touches the file system), no input makes it panic (a chart that
-//! cannot be drawn comes back as a small SVG that says so), and every SVG text names only
-//! `Style::font_family`, so the PDF renderer can use the face it embeds.
+//! Same conventions as the report's other charts: every function is pure (the same input
+//! gives the same scene, nothing touches the file system) and no input makes it panic (a
+//! chart that cannot be drawn comes back as a small chart that says so).
 //!
-//! Sizes are in SVG pixels and the text sizes are fixed, chosen for a chart about 900 px wide
+//! Sizes are in pixels and the text sizes are fixed, chosen for a chart about 900 px wide
 //! shown about 16 cm wide: 900 × 360 for [`residuals`], 900 × 320 for [`periodogram`] and
 //! 900 × [`model_checks_height`] for [`model_checks`].
 
 use super::chart_kit::{
     Area, AxesSpec, Chart, Conventions, DASHED, DOWN, FRAME, Failed, GRID, GUIDE, INK, LEGEND_PX,
     LegendItem, MUTED, Marker, Px, SOLID, STRIPE, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H,
-    Y_DESC_W, draw_marker, draw_text, extent, fmt_fixed, message_chart, render, round_px,
-    sig_decimals, text_style, ticks, x_tick_count,
+    Y_DESC_W, draw_line, draw_marker, draw_text, extent, fmt_fixed_for_print, message_chart,
+    padded_range, render, round_px, sig_decimals, text_style, ticks, x_tick_count,
 };
+use super::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 use std::collections::HashSet;
@@ -114,10 +114,9 @@ const MARK_DOWN: (Marker, RGBColor) = (Marker::OpenTriangle(4), DOWN_MID);
 const MARK_INSIDE: (Marker, RGBColor) = (Marker::Dot(5), INK);
 const MARK_OUTSIDE: (Marker, RGBColor) = (Marker::Diamond(7), OUTSIDE);
 
-/// How these charts measure text and draw lines (see [`Conventions`]).
+/// How these charts measure text (see [`Conventions`]).
 const KIT: Conventions = Conventions {
     narrow_superscripts: true,
-    dedup_pixels: true,
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -138,26 +137,12 @@ fn unit_of(label: &str) -> &str {
 
 /// Up to three significant digits, trailing zeros dropped ("0.35", "12.3", "1750").
 fn fmt_short(v: f64) -> String {
-    let s = fmt_fixed(v, sig_decimals(v));
+    let s = fmt_fixed_for_print(v, sig_decimals(v));
     if s.contains('.') && !s.contains('e') {
         s.trim_end_matches('0').trim_end_matches('.').to_string()
     } else {
         s
     }
-}
-
-/// A range over the values with a small margin; a single value gets a window around it.
-fn x_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
-    let (lo, hi) = extent(values)?;
-    let span = hi - lo;
-    let scale = lo.abs().max(hi.abs()).max(1.0);
-    let (lo, hi) = if span <= scale * 1e-9 {
-        let half = (scale * 0.05).max(1.0);
-        (lo - half, hi + half)
-    } else {
-        (lo - span * 0.03, hi + span * 0.03)
-    };
-    (lo.is_finite() && hi.is_finite() && (hi - lo).is_finite() && hi > lo).then_some((lo, hi))
 }
 
 /// A range symmetric about zero holding every value with 10 % to spare (residuals scatter
@@ -195,11 +180,11 @@ fn superscript(e: i32) -> String {
 /// The label of the log tick m × 10^e: plain digits for 0.001 … 50000, else powers of ten.
 fn fmt_power(m: f64, e: i32) -> String {
     if (-3..=4).contains(&e) {
-        fmt_fixed(m * 10f64.powi(e), (-e).max(0) as usize)
+        fmt_fixed_for_print(m * 10f64.powi(e), (-e).max(0) as usize)
     } else if m == 1.0 {
         format!("10{}", superscript(e))
     } else {
-        format!("{}×10{}", fmt_fixed(m, 0), superscript(e))
+        format!("{}×10{}", fmt_fixed_for_print(m, 0), superscript(e))
     }
 }
 
@@ -264,7 +249,7 @@ fn linear_log_ticks(lo: f64, hi: f64, max_n: usize) -> Vec<(f64, String)> {
     points
         .into_iter()
         .filter(|p| *p > 0.0 && p.is_finite())
-        .map(|p| (p.log10(), fmt_fixed(p, decimals)))
+        .map(|p| (p.log10(), fmt_fixed_for_print(p, decimals)))
         .collect()
 }
 
@@ -375,7 +360,7 @@ fn clip_polyline(points: &[Px], f: &Frame) -> Vec<Vec<Px>> {
 /// Draws a polyline clipped to the frame.
 fn draw_clipped(root: &Area, points: &[Px], frame: &Frame, stroke: Stroke) -> Result<(), Failed> {
     for piece in clip_polyline(points, frame) {
-        KIT.draw_line(root, &piece, stroke)?;
+        draw_line(root, &piece, stroke)?;
     }
     Ok(())
 }
@@ -407,13 +392,12 @@ fn fill_rect(root: &Area, a: (i32, i32), b: (i32, i32), color: RGBColor) -> Resu
 // Axes
 
 /// Builds the chart with grid, ticks and frame (no zero line: callers draw bands first).
-fn build_axes<'a, 'b>(
-    area: &'a Area<'b>,
-    style: &Style,
+fn build_axes<'a>(
+    area: &'a Area,
     spec: &AxesSpec,
     y_label_w: u32,
-) -> Result<(Chart<'a, 'b>, Frame), Failed> {
-    let chart = super::chart_kit::build_axes(area, style, spec, y_label_w)?;
+) -> Result<(Chart<'a>, Frame), Failed> {
+    let chart = super::chart_kit::build_axes(area, spec, y_label_w)?;
     let frame = Frame::of(&chart, spec.x, spec.y);
     Ok((chart, frame))
 }
@@ -430,7 +414,7 @@ fn non_empty(text: &str) -> Option<&str> {
 /// in grey print), the ±2σ band of the base model as a light grey band about zero, the fitted
 /// effect as a solid black line over the points, and the zero line. The y axis is symmetric
 /// about zero. The legend sits in a band above the plot. Designed for 900 × 360 px.
-pub fn residuals(r: &Residuals, style: &Style) -> String {
+pub fn residuals(r: &Residuals, style: &Style) -> Scene {
     let n = r.x.len().min(r.y.len()).min(r.up.len());
     let points: Vec<(f64, f64, bool)> = (0..n)
         .map(|i| (r.x[i], r.y[i], r.up[i]))
@@ -439,7 +423,7 @@ pub fn residuals(r: &Residuals, style: &Style) -> String {
     if points.is_empty() {
         return message_chart(style, "No residuals to plot.");
     }
-    let Some(x) = x_range(points.iter().map(|p| p.0)) else {
+    let Some(x) = padded_range(points.iter().map(|p| p.0), 0.03) else {
         return message_chart(style, "The residuals are out of range.");
     };
     let band = r.band.map(f64::abs).filter(|b| b.is_finite() && *b > 0.0);
@@ -506,17 +490,11 @@ pub fn residuals(r: &Residuals, style: &Style) -> String {
             own_x_ticks: false,
         };
         let plot_h = h.saturating_sub(top + X_TICK_H + X_DESC_H + 6);
-        let (_, frame) = build_axes(root, style, &spec, KIT.y_tick_width(y, plot_h))?;
+        let (_, frame) = build_axes(root, &spec, KIT.y_tick_width(y, plot_h))?;
         if legend_h > 0 {
-            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, &items, 10, w as i32 - 10, 0)?;
         }
-        KIT.draw_y_desc(
-            root,
-            style,
-            r.y_label.trim(),
-            frame.t as i32,
-            frame.b as i32,
-        )?;
+        KIT.draw_y_desc(root, r.y_label.trim(), frame.t as i32, frame.b as i32)?;
 
         let (l, rt) = (frame.l.round() as i32 + 1, frame.r.round() as i32 - 1);
         if let Some(b) = band {
@@ -597,7 +575,7 @@ fn thin_columns(points: &[Px]) -> Vec<Px> {
 /// power or the threshold exceeds 1; negative powers are clipped at 0); a single period is
 /// drawn as a dot. The legend sits in a band above the plot.
 /// Designed for 900 × 320 px.
-pub fn periodogram(p: &Periodogram, style: &Style) -> String {
+pub fn periodogram(p: &Periodogram, style: &Style) -> Scene {
     let positive = |v: f64| v.is_finite() && v > 0.0;
     let mut points: Vec<(f64, f64)> = p
         .period
@@ -692,17 +670,11 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
             x_desc: non_empty(&p.period_label),
             own_x_ticks: true,
         };
-        let (_, frame) = build_axes(root, style, &spec, y_label_w)?;
+        let (_, frame) = build_axes(root, &spec, y_label_w)?;
         if legend_h > 0 {
-            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, &items, 10, w as i32 - 10, 0)?;
         }
-        KIT.draw_y_desc(
-            root,
-            style,
-            "Normalised power",
-            frame.t as i32,
-            frame.b as i32,
-        )?;
+        KIT.draw_y_desc(root, "Normalised power", frame.t as i32, frame.b as i32)?;
         let (l, r, t, b) = (
             frame.l.round() as i32,
             frame.r.round() as i32,
@@ -712,7 +684,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
 
         // Log ticks: grid, tick marks and labels.
         let nx = x_tick_count((r - l).max(1) as u32);
-        let tick_font = |h| text_style(style, TICK_PX, false, INK, h, VPos::Top);
+        let tick_font = |h| text_style(TICK_PX, false, INK, h, VPos::Top);
         for (v, label) in log_ticks(x.0, x.1, nx) {
             let px = frame.px(v, 0.0).0.round() as i32;
             if px < l - 1 || px > r + 1 {
@@ -751,10 +723,10 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
                         root,
                         note,
                         (cx, t + 7),
-                        text_style(style, NOTE_PX, false, MUTED, HPos::Center, VPos::Top),
+                        text_style(NOTE_PX, false, MUTED, HPos::Center, VPos::Top),
                     )?;
                 } else if rotated {
-                    let st = text_style(style, NOTE_PX, false, MUTED, HPos::Right, VPos::Center)
+                    let st = text_style(NOTE_PX, false, MUTED, HPos::Right, VPos::Center)
                         .transform(FontTransform::Rotate270);
                     draw_text(root, note, (cx, t + 7), st)?;
                 }
@@ -764,7 +736,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
         // The detected period: a line through the plot, a pointer and its label above.
         if let Some((m, label)) = &marked {
             let xm = frame.px(*m, 0.0).0.round() as i32;
-            KIT.draw_line(
+            draw_line(
                 root,
                 &[(xm as f64, (t + 1) as f64), (xm as f64, (b - 1) as f64)],
                 MARKED,
@@ -779,13 +751,13 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
                 root,
                 label,
                 (lx, t - 10),
-                text_style(style, TICK_PX, true, INK, HPos::Center, VPos::Bottom),
+                text_style(TICK_PX, true, INK, HPos::Center, VPos::Bottom),
             )?;
         }
 
         if let Some(th) = threshold {
             let yy = frame.px(x.0, th).1;
-            KIT.draw_line(root, &[(frame.l + 1.0, yy), (frame.r - 1.0, yy)], THRESHOLD)?;
+            draw_line(root, &[(frame.l + 1.0, yy), (frame.r - 1.0, yy)], THRESHOLD)?;
         }
         let curve: Vec<Px> = points.iter().map(|q| frame.px(q.0, q.1)).collect();
         if let [only] = curve[..] {
@@ -847,7 +819,7 @@ fn row_decimals(c: &CheckBar) -> usize {
         .find(|&d| {
             finite
                 .clone()
-                .all(|v| strip(fmt_fixed(*v, d)) == strip(fmt_fixed(*v, d0)))
+                .all(|v| strip(fmt_fixed_for_print(*v, d)) == strip(fmt_fixed_for_print(*v, d0)))
         })
         .unwrap_or(d0)
 }
@@ -895,7 +867,7 @@ fn check_position(c: &CheckBar) -> Option<f64> {
 /// the check is outside); values more than a band width past the band are clipped at the row's
 /// end with an arrow. The measured value and the band are printed at the right. A key and the
 /// column headings sit above the rows. Size the height with [`model_checks_height`].
-pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
+pub fn model_checks(bars: &[CheckBar], style: &Style) -> Scene {
     if bars.is_empty() {
         return message_chart(style, "No model checks to show.");
     }
@@ -906,9 +878,15 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
             let d = row_decimals(c);
             let band = band_of(c).map_or_else(
                 || "n/a".to_string(),
-                |(lo, hi)| format!("{} … {}", fmt_fixed(lo, d), fmt_fixed(hi, d)),
+                |(lo, hi)| {
+                    format!(
+                        "{} … {}",
+                        fmt_fixed_for_print(lo, d),
+                        fmt_fixed_for_print(hi, d)
+                    )
+                },
             );
-            (fmt_fixed(c.measured, d), band)
+            (fmt_fixed_for_print(c.measured, d), band)
         })
         .collect();
     let positions: Vec<Option<f64>> = bars.iter().map(check_position).collect();
@@ -1001,13 +979,13 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
                     root,
                     &text,
                     (kx + 28, key_y),
-                    text_style(style, LEGEND_PX, false, INK, HPos::Left, VPos::Center),
+                    text_style(LEGEND_PX, false, INK, HPos::Left, VPos::Center),
                 )?;
             }
             kx += 28 + KIT.text_width(&text, LEGEND_PX).ceil() as i32 + 24;
         }
         let head_y = top - 8;
-        let head = |h| text_style(style, TICK_PX, true, INK, h, VPos::Bottom);
+        let head = |h| text_style(TICK_PX, true, INK, h, VPos::Bottom);
         draw_text(
             root,
             measured_head,
@@ -1021,7 +999,7 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
                 root,
                 scale_note,
                 ((sx0 + sx1) / 2, head_y),
-                text_style(style, NOTE_PX, false, MUTED, HPos::Center, VPos::Bottom),
+                text_style(NOTE_PX, false, MUTED, HPos::Center, VPos::Bottom),
             )?;
         }
         root.draw(&PathElement::new(
@@ -1071,7 +1049,7 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
                 root,
                 &label,
                 (label_right, mid),
-                text_style(style, TICK_PX, bold, ink, HPos::Right, VPos::Center),
+                text_style(TICK_PX, bold, ink, HPos::Right, VPos::Center),
             )?;
             let measured = KIT.fit_text(measured, TICK_PX, measured_w as f64);
             let band = KIT.fit_text(band, TICK_PX, band_w as f64);
@@ -1079,13 +1057,13 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
                 root,
                 &measured,
                 (measured_right, mid),
-                text_style(style, TICK_PX, bold, ink, HPos::Right, VPos::Center),
+                text_style(TICK_PX, bold, ink, HPos::Right, VPos::Center),
             )?;
             draw_text(
                 root,
                 &band,
                 (band_right, mid),
-                text_style(style, TICK_PX, false, INK, HPos::Right, VPos::Center),
+                text_style(TICK_PX, false, INK, HPos::Right, VPos::Center),
             )?;
         }
         Ok(())
@@ -1096,9 +1074,21 @@ pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
 mod tests {
     use super::*;
 
+    // The charts as SVG with an element per outline, as plotters wrote them.
+    fn residuals(r: &Residuals, style: &Style) -> String {
+        super::residuals(r, style).element_svg()
+    }
+
+    fn periodogram(p: &Periodogram, style: &Style) -> String {
+        super::periodogram(p, style).element_svg()
+    }
+
+    fn model_checks(bars: &[CheckBar], style: &Style) -> String {
+        super::model_checks(bars, style).element_svg()
+    }
+
     fn style(height_px: u32) -> Style {
         Style {
-            font_family: "Inter".to_string(),
             width_px: 900,
             height_px,
         }
@@ -1746,25 +1736,6 @@ mod tests {
     }
 
     #[test]
-    fn only_the_given_font_family_is_named() {
-        let st = Style {
-            font_family: "Test Face".to_string(),
-            ..style(360)
-        };
-        let mut svgs = all_charts(&st);
-        svgs.push(residuals(&Residuals::default(), &st));
-        svgs.push(periodogram(&Periodogram::default(), &st));
-        svgs.push(model_checks(&[], &st));
-        for svg in svgs {
-            let families = attr_values(&svg, "font-family");
-            assert!(!families.is_empty());
-            assert!(families.iter().all(|f| *f == "Test Face"), "{families:?}");
-            assert!(!svg.contains("sans-serif") && !svg.contains("serif\""));
-            assert_eq!(families.len(), svg.matches("<text").count());
-        }
-    }
-
-    #[test]
     fn font_sizes_are_plain_numbers() {
         for svg in all_charts(&style(360)) {
             for size in attr_values(&svg, "font-size") {
@@ -1814,17 +1785,14 @@ mod tests {
         let styles = [
             style(360),
             Style {
-                font_family: String::new(),
                 width_px: 0,
                 height_px: 0,
             },
             Style {
-                font_family: "Inter".to_string(),
                 width_px: 300,
                 height_px: 150,
             },
             Style {
-                font_family: "Inter".to_string(),
                 width_px: u32::MAX,
                 height_px: u32::MAX,
             },
@@ -1952,9 +1920,9 @@ mod tests {
 
     #[test]
     fn numbers_are_formatted_for_print() {
-        assert_eq!(fmt_fixed(-1.5, 2), "−1.50");
-        assert_eq!(fmt_fixed(-0.001, 2), "0.00");
-        assert_eq!(fmt_fixed(f64::NEG_INFINITY, 2), "−∞");
+        assert_eq!(fmt_fixed_for_print(-1.5, 2), "−1.50");
+        assert_eq!(fmt_fixed_for_print(-0.001, 2), "0.00");
+        assert_eq!(fmt_fixed_for_print(f64::NEG_INFINITY, 2), "−∞");
         assert_eq!(fmt_short(0.35), "0.35");
         assert_eq!(fmt_short(10.02), "10");
         assert_eq!(fmt_short(12.5), "12.5");
