@@ -10,6 +10,7 @@
 mod canvas;
 pub(crate) mod chart_kit;
 pub mod charts;
+mod check_chart;
 pub mod data;
 pub mod diagnosis_charts;
 pub mod diagnosis_data;
