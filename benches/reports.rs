@@ -36,7 +36,6 @@ fn main() {
             let c0 = Instant::now();
             let (chart, up, down) = data::axis_chart(t.evaluation.as_ref().unwrap());
             let style = charts::Style {
-                font_family: "Inter".into(),
                 width_px: 900,
                 height_px: 420,
             };

@@ -1,21 +1,21 @@
 //! What the report's chart modules ([`super::charts`] and [`super::diagnosis_charts`]) share:
-//! the look (tones, text sizes, dash patterns), the SVG frame, text measuring and fitting,
+//! the look (tones, text sizes, dash patterns), the canvas, text measuring and fitting,
 //! number formatting, line, marker and legend drawing, and the axes with grid and ticks.
 //!
-//! Where the two modules measure or draw slightly differently, the difference is a field of
-//! [`Conventions`] and each module passes its own, so every chart keeps its exact bytes.
+//! Where the two modules measure text differently, the difference is a field of
+//! [`Conventions`] and each module passes its own, so every chart keeps its layout.
 
+use super::canvas::{Canvas, DashedLine};
+use super::scene::{Colour, Scene};
+use crate::units::fmt_fixed;
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use std::cell::RefCell;
 
-/// Style shared by all charts. `font_family` is the family name of the sans-serif face the
-/// PDF renderer embeds ("Inter"); charts must only ever name this family in SVG text.
-#[derive(Debug, Clone, PartialEq)]
+/// A chart's size in pixels.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Style {
-    pub font_family: String,
     pub width_px: u32,
     pub height_px: u32,
 }
@@ -71,19 +71,17 @@ pub(crate) struct LegendItem {
     pub text: String,
 }
 
-/// How a chart module measures text and joins line pixels. The modules differ here and each
-/// keeps its own so its charts draw exactly as they did.
+/// How a chart module measures text. The modules differ here and each keeps its own so
+/// its charts keep their layout.
 #[derive(Clone, Copy)]
 pub(crate) struct Conventions {
     /// Superscript digits and minus (as in 10⁻³) measure 0.4 em; otherwise they count as the
     /// 0.7 em of other symbols.
     pub narrow_superscripts: bool,
-    /// Each dash of a line drops points that round to the pixel of the point before.
-    pub dedup_pixels: bool,
 }
 
 // ---------------------------------------------------------------------------------------------
-// Errors and the SVG frame
+// Errors and the canvas
 
 /// A drawing step failed; the chart falls back to a message.
 pub(crate) struct Failed;
@@ -94,9 +92,8 @@ impl<E: std::error::Error + Send + Sync> From<DrawingAreaErrorKind<E>> for Faile
     }
 }
 
-pub(crate) type Area<'b> = DrawingArea<SVGBackend<'b>, Shift>;
-pub(crate) type Chart<'a, 'b> =
-    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+pub(crate) type Area = DrawingArea<Canvas, Shift>;
+pub(crate) type Chart<'a> = ChartContext<'a, Canvas, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 pub(crate) fn dims(style: &Style) -> (u32, u32) {
     (
@@ -105,62 +102,36 @@ pub(crate) fn dims(style: &Style) -> (u32, u32) {
     )
 }
 
-thread_local! {
-    /// The dashed lines of the chart being drawn on this thread, as finished SVG elements.
-    static DASHED_LINES: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
-}
-
-/// Font family of the placeholder text that stands for a dashed line until [`render`]
-/// replaces it (charts name no other family than the style's, so it cannot clash).
-const DASHED_LINE_PLACEHOLDER: &str = "axcheck-dashed-line";
-
-/// Draws with `paint` on a white SVG of the style's size; a failure gives a message chart.
-pub(crate) fn render(style: &Style, paint: impl FnOnce(&Area) -> Result<(), Failed>) -> String {
-    let size = dims(style);
-    let mut buf = String::new();
-    DASHED_LINES.with_borrow_mut(Vec::clear);
-    let ok = {
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
-        let drawn = root
-            .fill(&WHITE)
-            .map_err(Failed::from)
-            .and_then(|_| paint(&root));
-        let presented = root.present().map_err(Failed::from);
-        drawn.is_ok() && presented.is_ok()
-    };
-    let dashed = DASHED_LINES.with_borrow_mut(std::mem::take);
-    if ok {
-        insert_dashed_lines(&buf, &dashed)
-            .unwrap_or_else(|| message_chart(style, "This chart could not be drawn."))
-    } else {
-        message_chart(style, "This chart could not be drawn.")
+/// Draws with `paint` on a white canvas of the style's size; a failure gives a message chart.
+pub(crate) fn render(style: &Style, paint: impl FnOnce(&Area) -> Result<(), Failed>) -> Scene {
+    let (canvas, scene) = Canvas::new(dims(style));
+    let root = canvas.into_drawing_area();
+    let drawn = root
+        .fill(&WHITE)
+        .map_err(Failed::from)
+        .and_then(|_| paint(&root));
+    drop(root);
+    match drawn {
+        Ok(()) => scene.take(),
+        Err(Failed) => message_chart(style, "This chart could not be drawn."),
     }
 }
 
 /// A chart holding only a centred message (for empty or unusable input).
-pub(crate) fn message_chart(style: &Style, message: &str) -> String {
+pub(crate) fn message_chart(style: &Style, message: &str) -> Scene {
     let size = dims(style);
-    let mut buf = String::new();
-    let ok = {
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
-        let drawn = root.fill(&WHITE).is_ok()
-            && root
-                .draw(&Text::new(
-                    message.to_string(),
-                    (size.0 as i32 / 2, size.1 as i32 / 2),
-                    text_style(style, DESC_PX, false, MUTED, HPos::Center, VPos::Center),
-                ))
-                .is_ok();
-        drawn && root.present().is_ok()
-    };
-    if ok {
-        buf
-    } else {
-        format!(
-            "<svg width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" xmlns=\"http://www.w3.org/2000/svg\">\n</svg>\n",
-            size.0, size.1
-        )
-    }
+    let (canvas, scene) = Canvas::new(size);
+    let root = canvas.into_drawing_area();
+    // Drawing on a canvas in memory cannot fail: a failure would leave the canvas blank.
+    let _ = root.fill(&WHITE).and_then(|_| {
+        root.draw(&Text::new(
+            message.to_string(),
+            (size.0 as i32 / 2, size.1 as i32 / 2),
+            text_style(DESC_PX, false, MUTED, HPos::Center, VPos::Center),
+        ))
+    });
+    drop(root);
+    scene.take()
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -178,28 +149,24 @@ pub(crate) fn plotters_size(px: f64) -> f64 {
         .unwrap_or(guess)
 }
 
-pub(crate) fn font<'a>(style: &'a Style, px: f64, bold: bool) -> FontDesc<'a> {
+pub(crate) fn font(px: f64, bold: bool) -> FontDesc<'static> {
     let face = if bold {
         FontStyle::Bold
     } else {
         FontStyle::Normal
     };
-    FontDesc::new(
-        FontFamily::Name(&style.font_family),
-        plotters_size(px),
-        face,
-    )
+    // The family is the template's to choose: the canvas records only size and weight.
+    FontDesc::new(FontFamily::SansSerif, plotters_size(px), face)
 }
 
-pub(crate) fn text_style<'a>(
-    style: &'a Style,
+pub(crate) fn text_style(
     px: f64,
     bold: bool,
     color: RGBColor,
     h: HPos,
     v: VPos,
-) -> TextStyle<'a> {
-    font(style, px, bold).color(&color).pos(Pos::new(h, v))
+) -> TextStyle<'static> {
+    font(px, bold).color(&color).pos(Pos::new(h, v))
 }
 
 impl Conventions {
@@ -246,8 +213,9 @@ impl Conventions {
 // ---------------------------------------------------------------------------------------------
 // Numbers
 
-/// `v` with `decimals` places, a true minus sign and no "−0" (huge values in e-notation).
-pub(crate) fn fmt_fixed(v: f64, decimals: usize) -> String {
+/// `v` with `decimals` places as a chart prints it: [`fmt_fixed`] (no "−0") with a true
+/// minus sign, words for non-finite values ("n/a", "∞") and e-notation from 10⁹ on.
+pub(crate) fn fmt_fixed_for_print(v: f64, decimals: usize) -> String {
     if !v.is_finite() {
         return if v.is_nan() {
             "n/a".to_string()
@@ -260,13 +228,8 @@ pub(crate) fn fmt_fixed(v: f64, decimals: usize) -> String {
     if v.abs() >= 1e9 {
         return format!("{v:.2e}").replace('-', "−");
     }
-    let s = format!("{:.*}", decimals, v);
-    let is_zero = s
-        .trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.');
+    let s = fmt_fixed(v, decimals);
     match s.strip_prefix('-') {
-        Some(rest) if is_zero => rest.to_string(),
         Some(rest) => format!("−{rest}"),
         None => s,
     }
@@ -297,6 +260,24 @@ pub(crate) fn ticks(range: (f64, f64), max_points: usize) -> (Vec<f64>, usize) {
     (points, decimals)
 }
 
+/// A range over the finite values with `margin` (a fraction of their span) to spare at
+/// either end; a single value gets a window around it.
+pub(crate) fn padded_range(
+    values: impl IntoIterator<Item = f64>,
+    margin: f64,
+) -> Option<(f64, f64)> {
+    let (lo, hi) = extent(values)?;
+    let span = hi - lo;
+    let scale = lo.abs().max(hi.abs()).max(1.0);
+    let (lo, hi) = if span <= scale * 1e-9 {
+        let half = (scale * 0.05).max(1.0);
+        (lo - half, hi + half)
+    } else {
+        (lo - span * margin, hi + span * margin)
+    };
+    (lo.is_finite() && hi.is_finite() && (hi - lo).is_finite() && hi > lo).then_some((lo, hi))
+}
+
 /// Smallest and largest of the finite values, if any.
 pub(crate) fn extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
     values
@@ -322,42 +303,8 @@ fn is_dashed(pattern: &[f64]) -> bool {
     !pattern.is_empty() && pattern.iter().all(|d| d.is_finite() && *d > 0.0)
 }
 
-/// One SVG polyline with a dash pattern, in the attribute layout plotters writes.
-fn dashed_polyline(points: &[(i32, i32)], stroke: Stroke) -> String {
-    let RGBColor(r, g, b) = stroke.color;
-    let pattern: Vec<String> = stroke.dash.iter().map(f64::to_string).collect();
-    let mut out = format!(
-        "<polyline fill=\"none\" opacity=\"1\" stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"{}\" stroke-dasharray=\"{}\" points=\"",
-        stroke.width,
-        pattern.join(" ")
-    );
-    for (x, y) in points {
-        out.push_str(&format!("{x},{y} "));
-    }
-    out.push_str("\"/>");
-    out
-}
-
-/// Replaces each dashed-line placeholder in `svg` by its polyline, keeping the drawing
-/// order; `None` if a placeholder is malformed or unknown (never expected).
-fn insert_dashed_lines(svg: &str, lines: &[String]) -> Option<String> {
-    let marker = format!("font-family=\"{DASHED_LINE_PLACEHOLDER}\"");
-    let mut out = String::with_capacity(svg.len());
-    let mut rest = svg;
-    while let Some(at) = rest.find(&marker) {
-        let start = rest[..at].rfind("<text")?;
-        let close = at + rest[at..].find("</text>")?;
-        let open_end = at + rest[at..close].find('>')? + 1;
-        let index: usize = rest[open_end..close].trim().parse().ok()?;
-        out.push_str(&rest[..start]);
-        out.push_str(lines.get(index)?);
-        rest = &rest[close + "</text>".len()..];
-    }
-    out.push_str(rest);
-    Some(out)
-}
-
-/// Drops points that round to the pixel of the point before (keeps polylines short).
+/// Drops points that round to the pixel of the point before (a zero-length segment draws
+/// nothing).
 fn dedup_pixels(points: Vec<(i32, i32)>) -> Vec<(i32, i32)> {
     let mut out: Vec<(i32, i32)> = Vec::with_capacity(points.len());
     for p in points {
@@ -368,47 +315,25 @@ fn dedup_pixels(points: Vec<(i32, i32)>) -> Vec<(i32, i32)> {
     out
 }
 
-impl Conventions {
-    pub(crate) fn draw_line(
-        self,
-        root: &Area,
-        points: &[Px],
-        stroke: Stroke,
-    ) -> Result<(), Failed> {
-        if points.len() < 2 {
-            return Ok(());
-        }
-        let points: Vec<(i32, i32)> = points.iter().map(|p| round_px(*p)).collect();
-        let points = if self.dedup_pixels {
-            dedup_pixels(points)
-        } else {
-            points
-        };
-        if points.len() < 2 {
-            return Ok(());
-        }
-        if !is_dashed(stroke.dash) {
-            let shape = ShapeStyle::from(&stroke.color).stroke_width(stroke.width);
-            root.draw(&PathElement::new(points, shape))?;
-            return Ok(());
-        }
-        // Plotters draws only solid paths; one polyline per dash made hundreds of elements
-        // per chart for the PDF to convert. Leave a placeholder that `render` replaces by
-        // one polyline with `stroke-dasharray`, in place so the drawing order is kept.
-        let (dx, dy) = root.get_base_pixel();
-        let absolute: Vec<(i32, i32)> = points.iter().map(|(x, y)| (x + dx, y + dy)).collect();
-        let index = DASHED_LINES.with_borrow_mut(|lines| {
-            lines.push(dashed_polyline(&absolute, stroke));
-            lines.len() - 1
-        });
-        let placeholder = FontDesc::new(
-            FontFamily::Name(DASHED_LINE_PLACEHOLDER),
-            1.0,
-            FontStyle::Normal,
-        );
-        root.draw(&Text::new(index.to_string(), (0, 0), placeholder))?;
-        Ok(())
+/// Draws a polyline through `points` (rounded to pixels) with the stroke's dash pattern.
+pub(crate) fn draw_line(root: &Area, points: &[Px], stroke: Stroke) -> Result<(), Failed> {
+    let points = dedup_pixels(points.iter().map(|p| round_px(*p)).collect());
+    if points.len() < 2 {
+        return Ok(());
     }
+    if is_dashed(stroke.dash) {
+        let RGBColor(r, g, b) = stroke.color;
+        root.draw(&DashedLine {
+            points,
+            colour: Colour(r, g, b),
+            width: stroke.width,
+            dash: stroke.dash.to_vec(),
+        })?;
+    } else {
+        let shape = ShapeStyle::from(&stroke.color).stroke_width(stroke.width);
+        root.draw(&PathElement::new(points, shape))?;
+    }
+    Ok(())
 }
 
 fn triangle(c: (i32, i32), half: i32) -> Vec<(i32, i32)> {
@@ -467,7 +392,7 @@ pub(crate) fn draw_text(
     root: &Area,
     text: &str,
     at: (i32, i32),
-    style: TextStyle,
+    style: TextStyle<'static>,
 ) -> Result<(), Failed> {
     if text.is_empty() {
         return Ok(());
@@ -523,7 +448,6 @@ impl Conventions {
     pub(crate) fn draw_legend(
         self,
         root: &Area,
-        style: &Style,
         items: &[LegendItem],
         left: i32,
         right: i32,
@@ -546,7 +470,7 @@ impl Conventions {
                     root.draw(&Rectangle::new([a, b], GUIDE.stroke_width(1)))?;
                 }
                 if let Some(stroke) = item.stroke {
-                    self.draw_line(
+                    draw_line(
                         root,
                         &[
                             (x as f64, y as f64),
@@ -562,7 +486,7 @@ impl Conventions {
                     root,
                     &item.text,
                     (x + LEGEND_SAMPLE_W + 7, y),
-                    text_style(style, LEGEND_PX, false, INK, HPos::Left, VPos::Center),
+                    text_style(LEGEND_PX, false, INK, HPos::Left, VPos::Center),
                 )?;
                 x += w + LEGEND_GAP;
             }
@@ -605,7 +529,7 @@ impl Conventions {
         let (points, decimals) = ticks(y, y_tick_count(plot_h));
         let widest = points
             .iter()
-            .map(|v| self.text_width(&fmt_fixed(*v, decimals), TICK_PX))
+            .map(|v| self.text_width(&fmt_fixed_for_print(*v, decimals), TICK_PX))
             .fold(0.0, f64::max);
         (widest.ceil() as u32 + 14).clamp(30, 160)
     }
@@ -614,7 +538,6 @@ impl Conventions {
     pub(crate) fn draw_y_desc(
         self,
         root: &Area,
-        style: &Style,
         text: &str,
         top: i32,
         bottom: i32,
@@ -624,19 +547,18 @@ impl Conventions {
         let height = root.dim_in_pixel().1 as i32;
         let len = (2 * centre.min(height - centre) - 8).max(20) as f64;
         let text = self.fit_text(text, DESC_PX, len);
-        let st = text_style(style, DESC_PX, false, INK, HPos::Center, VPos::Top)
+        let st = text_style(DESC_PX, false, INK, HPos::Center, VPos::Top)
             .transform(FontTransform::Rotate270);
         draw_text(root, &text, (4, centre), st)
     }
 }
 
 /// Builds the chart with grid, ticks and the frame's four edges.
-pub(crate) fn build_axes<'a, 'b>(
-    area: &'a Area<'b>,
-    style: &Style,
+pub(crate) fn build_axes<'a>(
+    area: &'a Area,
     spec: &AxesSpec,
     y_label_w: u32,
-) -> Result<Chart<'a, 'b>, Failed> {
+) -> Result<Chart<'a>, Failed> {
     let (w, h) = area.dim_in_pixel();
     let x_label_h = X_TICK_H + if spec.x_desc.is_some() { X_DESC_H } else { 0 };
     let plot_w = w.saturating_sub(Y_DESC_W + y_label_w + spec.right).max(10);
@@ -658,10 +580,10 @@ pub(crate) fn build_axes<'a, 'b>(
     let ny = y_tick_count(plot_h);
     let (_, x_dec) = ticks(spec.x, nx.max(1));
     let (_, y_dec) = ticks(spec.y, ny);
-    let x_fmt = move |v: &f64| fmt_fixed(*v, x_dec);
-    let y_fmt = move |v: &f64| fmt_fixed(*v, y_dec);
-    let tick_font = font(style, TICK_PX, false).color(&INK);
-    let desc_font = font(style, DESC_PX, false).color(&INK);
+    let x_fmt = move |v: &f64| fmt_fixed_for_print(*v, x_dec);
+    let y_fmt = move |v: &f64| fmt_fixed_for_print(*v, y_dec);
+    let tick_font = font(TICK_PX, false).color(&INK);
+    let desc_font = font(DESC_PX, false).color(&INK);
     let mut mesh = chart.configure_mesh();
     mesh.x_labels(nx)
         .y_labels(ny)
@@ -705,22 +627,17 @@ pub(crate) fn draw_frame_edges(area: &Area, chart: &Chart) -> Result<(), Failed>
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::scene::{Outline, Paint};
 
     fn style() -> Style {
         Style {
-            font_family: "Inter".into(),
             width_px: 300,
             height_px: 200,
         }
     }
 
-    const KIT: Conventions = Conventions {
-        narrow_superscripts: false,
-        dedup_pixels: true,
-    };
-
     #[test]
-    fn a_dashed_line_is_one_polyline_with_its_pattern_in_drawing_order() {
+    fn a_dashed_line_is_one_path_with_its_pattern_in_drawing_order() {
         let dashed = Stroke {
             color: DOWN,
             width: 2,
@@ -731,29 +648,42 @@ mod tests {
             width: 1,
             dash: SOLID,
         };
-        let svg = render(&style(), |root| {
-            // A sub-area: the dashed line is written in the SVG's own coordinates.
+        let scene = render(&style(), |root| {
+            // A sub-area: the dashed line is recorded in the canvas' own coordinates.
             let (_, right) = root.split_horizontally(100);
-            KIT.draw_line(&right, &[(0.0, 10.0), (50.0, 10.4), (120.0, 60.0)], dashed)?;
+            draw_line(&right, &[(0.0, 10.0), (50.0, 10.4), (120.0, 60.0)], dashed)?;
             draw_marker(root, (5, 5), Marker::Dot(3), UP)?;
-            KIT.draw_line(root, &[(0.0, 0.0), (30.0, 0.0)], solid)
+            draw_line(root, &[(0.0, 0.0), (30.0, 0.0), (30.2, 0.0)], solid)
         });
-        assert!(!svg.contains(DASHED_LINE_PLACEHOLDER), "{svg}");
-        let dashed_line = "<polyline fill=\"none\" opacity=\"1\" stroke=\"#8E1B1B\" stroke-width=\"2\" stroke-dasharray=\"9 3.5 2 3.5\" points=\"100,10 150,10 220,60 \"/>";
-        let at = svg.find(dashed_line).expect(&svg);
-        assert!(
-            at < svg.find("<circle").expect("marker"),
-            "drawing order kept"
+        let shapes = &scene.drawing.shapes;
+        assert_eq!(shapes.len(), 4, "{shapes:?}");
+        assert_eq!(shapes[0].paint, Paint::Fill(Colour::WHITE));
+        assert_eq!(
+            shapes[1].paint,
+            Paint::Stroke {
+                colour: Colour(0x8E, 0x1B, 0x1B),
+                width: 2,
+                dash: vec![9.0, 3.5, 2.0, 3.5]
+            }
         );
-        assert_eq!(svg.matches("stroke-dasharray").count(), 1);
-        assert!(svg.contains("points=\"0,0 30,0 \""));
+        assert_eq!(
+            shapes[1].outlines,
+            [Outline::Line(vec![(100, 10), (150, 10), (220, 60)])]
+        );
+        assert!(matches!(
+            shapes[2].outlines[..],
+            [Outline::Circle((5, 5), 3)]
+        ));
+        // The point rounding to the pixel before is dropped.
+        assert_eq!(shapes[3].outlines, [Outline::Line(vec![(0, 0), (30, 0)])]);
     }
 
     #[test]
-    fn an_unknown_placeholder_is_refused() {
-        let svg = "<svg><text x=\"0\" font-family=\"axcheck-dashed-line\">3</text></svg>";
-        assert_eq!(insert_dashed_lines(svg, &["<polyline/>".into()]), None);
-        let one = insert_dashed_lines(svg.replace('3', "0").as_str(), &["<polyline/>".into()]);
-        assert_eq!(one.as_deref(), Some("<svg><polyline/></svg>"));
+    fn numbers_for_print_use_a_true_minus_and_words() {
+        assert_eq!(fmt_fixed_for_print(-1.5, 2), "−1.50");
+        assert_eq!(fmt_fixed_for_print(-0.001, 2), "0.00");
+        assert_eq!(fmt_fixed_for_print(f64::NAN, 2), "n/a");
+        assert_eq!(fmt_fixed_for_print(f64::NEG_INFINITY, 2), "−∞");
+        assert_eq!(fmt_fixed_for_print(-2.5e300, 0), "−2.50e300");
     }
 }

@@ -1,26 +1,27 @@
 //! Charts of the "model check and diagnosis" section of an axis report, drawn with `plotters`
-//! into SVG strings held in memory.
+//! into [`Scene`]s (shapes and texts as data).
 //!
-//! Same conventions as the report's other charts: every function is pure (the same input gives
-//! the same bytes, nothing touches the file system), no input makes it panic (a chart that
-//! cannot be drawn comes back as a small SVG that says so), and every SVG text names only
-//! `Style::font_family`, so the PDF renderer can use the face it embeds.
+//! Same conventions as the report's other charts: every function is pure (the same input
+//! gives the same scene, nothing touches the file system) and no input makes it panic (a
+//! chart that cannot be drawn comes back as a small chart that says so).
 //!
-//! Sizes are in SVG pixels and the text sizes are fixed, chosen for a chart about 900 px wide
+//! Sizes are in pixels and the text sizes are fixed, chosen for a chart about 900 px wide
 //! shown about 16 cm wide: 900 × 360 for [`residuals`], 900 × 320 for [`periodogram`] and
 //! 900 × [`model_checks_height`] for [`model_checks`].
 
 use super::chart_kit::{
-    Area, AxesSpec, Chart, Conventions, DASHED, DOWN, FRAME, Failed, GRID, GUIDE, INK, LEGEND_PX,
-    LegendItem, MUTED, Marker, Px, SOLID, STRIPE, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H,
-    Y_DESC_W, draw_marker, draw_text, extent, fmt_fixed, message_chart, render, round_px,
-    sig_decimals, text_style, ticks, x_tick_count,
+    Area, AxesSpec, Chart, Conventions, DASHED, DOWN, FRAME, Failed, GRID, GUIDE, INK, LegendItem,
+    MUTED, Marker, Px, SOLID, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H, Y_DESC_W, draw_line,
+    draw_marker, draw_text, extent, fmt_fixed_for_print, message_chart, padded_range, render,
+    round_px, sig_decimals, text_style, ticks, x_tick_count,
 };
+use super::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 use std::collections::HashSet;
 
 pub use super::chart_kit::Style;
+pub use super::check_chart::{CheckBar, model_checks, model_checks_height};
 
 /// Residuals of the fitted base model (reading minus model), in µm or arcsec.
 ///
@@ -64,16 +65,6 @@ pub struct Periodogram {
     pub unresolved_below: Option<f64>,
 }
 
-/// Measured statistic against the band simulated from the base model (model check).
-#[derive(Debug, Clone, PartialEq)]
-pub struct CheckBar {
-    pub label: String,
-    pub measured: f64,
-    pub low: f64,
-    pub high: f64,
-    pub outside: bool,
-}
-
 // ---------------------------------------------------------------------------------------------
 // Look (the tones of the report's other charts)
 
@@ -82,12 +73,12 @@ const DOWN_MID: RGBColor = RGBColor(0xB4, 0x4E, 0x4E);
 /// Light bands: the ±2σ band, the unresolvable region, the simulated 95 % band.
 const BAND: RGBColor = RGBColor(0xE8, 0xE8, 0xE8);
 const SHADE: RGBColor = RGBColor(0xE4, 0xE4, 0xE4);
-const CHECK_BAND: RGBColor = RGBColor(0xDD, 0xDD, 0xDD);
+pub(crate) const CHECK_BAND: RGBColor = RGBColor(0xDD, 0xDD, 0xDD);
 const CURVE: RGBColor = RGBColor(0x1F, 0x3A, 0x6E);
-const OUTSIDE: RGBColor = RGBColor(0x6E, 0x14, 0x14);
+pub(crate) const OUTSIDE: RGBColor = RGBColor(0x6E, 0x14, 0x14);
 
 /// Text size of the notes, in SVG pixels (the `font-size` written into the SVG).
-const NOTE_PX: f64 = 12.5;
+pub(crate) const NOTE_PX: f64 = 12.5;
 
 const FIT: Stroke = Stroke {
     color: INK,
@@ -111,20 +102,19 @@ const MARKED: Stroke = Stroke {
 };
 const MARK_UP: (Marker, RGBColor) = (Marker::Dot(4), UP);
 const MARK_DOWN: (Marker, RGBColor) = (Marker::OpenTriangle(4), DOWN_MID);
-const MARK_INSIDE: (Marker, RGBColor) = (Marker::Dot(5), INK);
-const MARK_OUTSIDE: (Marker, RGBColor) = (Marker::Diamond(7), OUTSIDE);
+pub(crate) const MARK_INSIDE: (Marker, RGBColor) = (Marker::Dot(5), INK);
+pub(crate) const MARK_OUTSIDE: (Marker, RGBColor) = (Marker::Diamond(7), OUTSIDE);
 
-/// How these charts measure text and draw lines (see [`Conventions`]).
-const KIT: Conventions = Conventions {
+/// How these charts measure text (see [`Conventions`]).
+pub(crate) const KIT: Conventions = Conventions {
     narrow_superscripts: true,
-    dedup_pixels: true,
 };
 
 // ---------------------------------------------------------------------------------------------
 // Text
 
 /// Bold text runs about 6 % wider.
-fn bold_width(text: &str, px: f64) -> f64 {
+pub(crate) fn bold_width(text: &str, px: f64) -> f64 {
     KIT.text_width(text, px) * 1.06
 }
 
@@ -138,26 +128,12 @@ fn unit_of(label: &str) -> &str {
 
 /// Up to three significant digits, trailing zeros dropped ("0.35", "12.3", "1750").
 fn fmt_short(v: f64) -> String {
-    let s = fmt_fixed(v, sig_decimals(v));
+    let s = fmt_fixed_for_print(v, sig_decimals(v));
     if s.contains('.') && !s.contains('e') {
         s.trim_end_matches('0').trim_end_matches('.').to_string()
     } else {
         s
     }
-}
-
-/// A range over the values with a small margin; a single value gets a window around it.
-fn x_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
-    let (lo, hi) = extent(values)?;
-    let span = hi - lo;
-    let scale = lo.abs().max(hi.abs()).max(1.0);
-    let (lo, hi) = if span <= scale * 1e-9 {
-        let half = (scale * 0.05).max(1.0);
-        (lo - half, hi + half)
-    } else {
-        (lo - span * 0.03, hi + span * 0.03)
-    };
-    (lo.is_finite() && hi.is_finite() && (hi - lo).is_finite() && hi > lo).then_some((lo, hi))
 }
 
 /// A range symmetric about zero holding every value with 10 % to spare (residuals scatter
@@ -195,11 +171,11 @@ fn superscript(e: i32) -> String {
 /// The label of the log tick m × 10^e: plain digits for 0.001 … 50000, else powers of ten.
 fn fmt_power(m: f64, e: i32) -> String {
     if (-3..=4).contains(&e) {
-        fmt_fixed(m * 10f64.powi(e), (-e).max(0) as usize)
+        fmt_fixed_for_print(m * 10f64.powi(e), (-e).max(0) as usize)
     } else if m == 1.0 {
         format!("10{}", superscript(e))
     } else {
-        format!("{}×10{}", fmt_fixed(m, 0), superscript(e))
+        format!("{}×10{}", fmt_fixed_for_print(m, 0), superscript(e))
     }
 }
 
@@ -264,7 +240,7 @@ fn linear_log_ticks(lo: f64, hi: f64, max_n: usize) -> Vec<(f64, String)> {
     points
         .into_iter()
         .filter(|p| *p > 0.0 && p.is_finite())
-        .map(|p| (p.log10(), fmt_fixed(p, decimals)))
+        .map(|p| (p.log10(), fmt_fixed_for_print(p, decimals)))
         .collect()
 }
 
@@ -375,13 +351,13 @@ fn clip_polyline(points: &[Px], f: &Frame) -> Vec<Vec<Px>> {
 /// Draws a polyline clipped to the frame.
 fn draw_clipped(root: &Area, points: &[Px], frame: &Frame, stroke: Stroke) -> Result<(), Failed> {
     for piece in clip_polyline(points, frame) {
-        KIT.draw_line(root, &piece, stroke)?;
+        draw_line(root, &piece, stroke)?;
     }
     Ok(())
 }
 
 /// A filled arrow head with its tip at `tip`, pointing left (`dir` < 0) or right.
-fn draw_arrow(
+pub(crate) fn draw_arrow(
     root: &Area,
     tip: (i32, i32),
     dir: i32,
@@ -396,7 +372,12 @@ fn draw_arrow(
     Ok(())
 }
 
-fn fill_rect(root: &Area, a: (i32, i32), b: (i32, i32), color: RGBColor) -> Result<(), Failed> {
+pub(crate) fn fill_rect(
+    root: &Area,
+    a: (i32, i32),
+    b: (i32, i32),
+    color: RGBColor,
+) -> Result<(), Failed> {
     if a.0 != b.0 && a.1 != b.1 {
         root.draw(&Rectangle::new([a, b], color.filled()))?;
     }
@@ -407,13 +388,12 @@ fn fill_rect(root: &Area, a: (i32, i32), b: (i32, i32), color: RGBColor) -> Resu
 // Axes
 
 /// Builds the chart with grid, ticks and frame (no zero line: callers draw bands first).
-fn build_axes<'a, 'b>(
-    area: &'a Area<'b>,
-    style: &Style,
+fn build_axes<'a>(
+    area: &'a Area,
     spec: &AxesSpec,
     y_label_w: u32,
-) -> Result<(Chart<'a, 'b>, Frame), Failed> {
-    let chart = super::chart_kit::build_axes(area, style, spec, y_label_w)?;
+) -> Result<(Chart<'a>, Frame), Failed> {
+    let chart = super::chart_kit::build_axes(area, spec, y_label_w)?;
     let frame = Frame::of(&chart, spec.x, spec.y);
     Ok((chart, frame))
 }
@@ -430,7 +410,7 @@ fn non_empty(text: &str) -> Option<&str> {
 /// in grey print), the ±2σ band of the base model as a light grey band about zero, the fitted
 /// effect as a solid black line over the points, and the zero line. The y axis is symmetric
 /// about zero. The legend sits in a band above the plot. Designed for 900 × 360 px.
-pub fn residuals(r: &Residuals, style: &Style) -> String {
+pub fn residuals(r: &Residuals, style: &Style) -> Scene {
     let n = r.x.len().min(r.y.len()).min(r.up.len());
     let points: Vec<(f64, f64, bool)> = (0..n)
         .map(|i| (r.x[i], r.y[i], r.up[i]))
@@ -439,7 +419,7 @@ pub fn residuals(r: &Residuals, style: &Style) -> String {
     if points.is_empty() {
         return message_chart(style, "No residuals to plot.");
     }
-    let Some(x) = x_range(points.iter().map(|p| p.0)) else {
+    let Some(x) = padded_range(points.iter().map(|p| p.0), 0.03) else {
         return message_chart(style, "The residuals are out of range.");
     };
     let band = r.band.map(f64::abs).filter(|b| b.is_finite() && *b > 0.0);
@@ -506,17 +486,11 @@ pub fn residuals(r: &Residuals, style: &Style) -> String {
             own_x_ticks: false,
         };
         let plot_h = h.saturating_sub(top + X_TICK_H + X_DESC_H + 6);
-        let (_, frame) = build_axes(root, style, &spec, KIT.y_tick_width(y, plot_h))?;
+        let (_, frame) = build_axes(root, &spec, KIT.y_tick_width(y, plot_h))?;
         if legend_h > 0 {
-            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, &items, 10, w as i32 - 10, 0)?;
         }
-        KIT.draw_y_desc(
-            root,
-            style,
-            r.y_label.trim(),
-            frame.t as i32,
-            frame.b as i32,
-        )?;
+        KIT.draw_y_desc(root, r.y_label.trim(), frame.t as i32, frame.b as i32)?;
 
         let (l, rt) = (frame.l.round() as i32 + 1, frame.r.round() as i32 - 1);
         if let Some(b) = band {
@@ -589,6 +563,111 @@ fn thin_columns(points: &[Px]) -> Vec<Px> {
     out
 }
 
+/// The frame's left, right, top and bottom pixel.
+fn frame_edges(frame: &Frame) -> (i32, i32, i32, i32) {
+    (
+        frame.l.round() as i32,
+        frame.r.round() as i32,
+        frame.t.round() as i32,
+        frame.b.round() as i32,
+    )
+}
+
+/// The log axis' ticks: grid, tick marks and labels.
+fn draw_log_ticks(root: &Area, frame: &Frame) -> Result<(), Failed> {
+    let (l, r, t, b) = frame_edges(frame);
+    let w = root.dim_in_pixel().0 as i32;
+    let nx = x_tick_count((r - l).max(1) as u32);
+    let tick_font = |h| text_style(TICK_PX, false, INK, h, VPos::Top);
+    for (v, label) in log_ticks(frame.x.0, frame.x.1, nx) {
+        let px = frame.px(v, 0.0).0.round() as i32;
+        if px < l - 1 || px > r + 1 {
+            continue;
+        }
+        if px > l + 1 && px < r - 1 {
+            root.draw(&PathElement::new(
+                vec![(px, t + 1), (px, b - 1)],
+                GRID.stroke_width(1),
+            ))?;
+        }
+        root.draw(&PathElement::new(
+            vec![(px, b), (px, b + 4)],
+            FRAME.stroke_width(1),
+        ))?;
+        // Labels at the plot's ends stay inside the chart.
+        let half = (KIT.text_width(&label, TICK_PX) / 2.0).ceil() as i32;
+        let lx = px.clamp(2 + half, (w - 2 - half).max(2 + half));
+        draw_text(root, &label, (lx, b + 9), tick_font(HPos::Center))?;
+    }
+    Ok(())
+}
+
+/// Where the unresolvable region's note goes.
+#[derive(Clone, Copy, PartialEq)]
+enum NotePlace {
+    /// Across the region, at its top.
+    Inside,
+    /// Turned upright in a narrow region.
+    Upright,
+    /// In the legend (the region is a sliver).
+    Legend,
+}
+
+/// The periods below `u` (log10) that the plan cannot resolve: shaded, with their note.
+fn draw_unresolved(
+    root: &Area,
+    frame: &Frame,
+    u: f64,
+    note: &str,
+    place: NotePlace,
+) -> Result<(), Failed> {
+    let (l, r, t, b) = frame_edges(frame);
+    let xb = frame.px(u.min(frame.x.1), 0.0).0.round() as i32;
+    if xb <= l + 1 {
+        return Ok(());
+    }
+    fill_rect(root, (l + 1, t + 1), (xb.min(r - 1), b - 1), SHADE)?;
+    if xb < r {
+        root.draw(&PathElement::new(
+            vec![(xb, t + 1), (xb, b - 1)],
+            MUTED.stroke_width(1),
+        ))?;
+    }
+    let cx = (l + xb.min(r)) / 2;
+    match place {
+        NotePlace::Inside => {
+            let style = text_style(NOTE_PX, false, MUTED, HPos::Center, VPos::Top);
+            draw_text(root, note, (cx, t + 7), style)
+        }
+        NotePlace::Upright => {
+            let style = text_style(NOTE_PX, false, MUTED, HPos::Right, VPos::Center)
+                .transform(FontTransform::Rotate270);
+            draw_text(root, note, (cx, t + 7), style)
+        }
+        NotePlace::Legend => Ok(()),
+    }
+}
+
+/// The detected period `m` (log10): a line through the plot, a pointer and its label above.
+fn draw_marked(root: &Area, frame: &Frame, m: f64, label: &str) -> Result<(), Failed> {
+    let (_, _, t, b) = frame_edges(frame);
+    let w = root.dim_in_pixel().0 as i32;
+    let xm = frame.px(m, 0.0).0.round() as i32;
+    draw_line(
+        root,
+        &[(xm as f64, (t + 1) as f64), (xm as f64, (b - 1) as f64)],
+        MARKED,
+    )?;
+    root.draw(&Polygon::new(
+        vec![(xm, t - 1), (xm - 5, t - 8), (xm + 5, t - 8)],
+        INK.filled(),
+    ))?;
+    let tw = bold_width(label, TICK_PX).ceil() as i32;
+    let lx = xm.clamp(4 + tw / 2, (w - 4 - tw / 2).max(4 + tw / 2));
+    let style = text_style(TICK_PX, true, INK, HPos::Center, VPos::Bottom);
+    draw_text(root, label, (lx, t - 10), style)
+}
+
 /// A Lomb–Scargle periodogram: normalised power against period on a logarithmic period axis
 /// (1-2-5 ticks), the false-alarm level as a dashed dark red line, the detected period as a
 /// thin vertical line with its label above the plot, and the periods the plan cannot resolve
@@ -597,7 +676,7 @@ fn thin_columns(points: &[Px]) -> Vec<Px> {
 /// power or the threshold exceeds 1; negative powers are clipped at 0); a single period is
 /// drawn as a dot. The legend sits in a band above the plot.
 /// Designed for 900 × 320 px.
-pub fn periodogram(p: &Periodogram, style: &Style) -> String {
+pub fn periodogram(p: &Periodogram, style: &Style) -> Scene {
     let positive = |v: f64| v.is_finite() && v > 0.0;
     let mut points: Vec<(f64, f64)> = p
         .period
@@ -692,100 +771,29 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
             x_desc: non_empty(&p.period_label),
             own_x_ticks: true,
         };
-        let (_, frame) = build_axes(root, style, &spec, y_label_w)?;
+        let (_, frame) = build_axes(root, &spec, y_label_w)?;
         if legend_h > 0 {
-            KIT.draw_legend(root, style, &items, 10, w as i32 - 10, 0)?;
+            KIT.draw_legend(root, &items, 10, w as i32 - 10, 0)?;
         }
-        KIT.draw_y_desc(
-            root,
-            style,
-            "Normalised power",
-            frame.t as i32,
-            frame.b as i32,
-        )?;
-        let (l, r, t, b) = (
-            frame.l.round() as i32,
-            frame.r.round() as i32,
-            frame.t.round() as i32,
-            frame.b.round() as i32,
-        );
-
-        // Log ticks: grid, tick marks and labels.
-        let nx = x_tick_count((r - l).max(1) as u32);
-        let tick_font = |h| text_style(style, TICK_PX, false, INK, h, VPos::Top);
-        for (v, label) in log_ticks(x.0, x.1, nx) {
-            let px = frame.px(v, 0.0).0.round() as i32;
-            if px < l - 1 || px > r + 1 {
-                continue;
-            }
-            if px > l + 1 && px < r - 1 {
-                root.draw(&PathElement::new(
-                    vec![(px, t + 1), (px, b - 1)],
-                    GRID.stroke_width(1),
-                ))?;
-            }
-            root.draw(&PathElement::new(
-                vec![(px, b), (px, b + 4)],
-                FRAME.stroke_width(1),
-            ))?;
-            // Labels at the plot's ends stay inside the chart.
-            let half = (KIT.text_width(&label, TICK_PX) / 2.0).ceil() as i32;
-            let lx = px.clamp(2 + half, (w as i32 - 2 - half).max(2 + half));
-            draw_text(root, &label, (lx, b + 9), tick_font(HPos::Center))?;
-        }
-
-        // The unresolvable region.
+        KIT.draw_y_desc(root, "Normalised power", frame.t as i32, frame.b as i32)?;
+        draw_log_ticks(root, &frame)?;
         if let Some(u) = unresolved {
-            let xb = frame.px(u.min(x.1), 0.0).0.round() as i32;
-            if xb > l + 1 {
-                fill_rect(root, (l + 1, t + 1), (xb.min(r - 1), b - 1), SHADE)?;
-                if xb < r {
-                    root.draw(&PathElement::new(
-                        vec![(xb, t + 1), (xb, b - 1)],
-                        MUTED.stroke_width(1),
-                    ))?;
-                }
-                let cx = (l + xb.min(r)) / 2;
-                if horizontal {
-                    draw_text(
-                        root,
-                        note,
-                        (cx, t + 7),
-                        text_style(style, NOTE_PX, false, MUTED, HPos::Center, VPos::Top),
-                    )?;
-                } else if rotated {
-                    let st = text_style(style, NOTE_PX, false, MUTED, HPos::Right, VPos::Center)
-                        .transform(FontTransform::Rotate270);
-                    draw_text(root, note, (cx, t + 7), st)?;
-                }
-            }
+            let place = if horizontal {
+                NotePlace::Inside
+            } else if rotated {
+                NotePlace::Upright
+            } else {
+                NotePlace::Legend
+            };
+            draw_unresolved(root, &frame, u, note, place)?;
         }
-
-        // The detected period: a line through the plot, a pointer and its label above.
         if let Some((m, label)) = &marked {
-            let xm = frame.px(*m, 0.0).0.round() as i32;
-            KIT.draw_line(
-                root,
-                &[(xm as f64, (t + 1) as f64), (xm as f64, (b - 1) as f64)],
-                MARKED,
-            )?;
-            root.draw(&Polygon::new(
-                vec![(xm, t - 1), (xm - 5, t - 8), (xm + 5, t - 8)],
-                INK.filled(),
-            ))?;
-            let tw = bold_width(label, TICK_PX).ceil() as i32;
-            let lx = xm.clamp(4 + tw / 2, (w as i32 - 4 - tw / 2).max(4 + tw / 2));
-            draw_text(
-                root,
-                label,
-                (lx, t - 10),
-                text_style(style, TICK_PX, true, INK, HPos::Center, VPos::Bottom),
-            )?;
+            draw_marked(root, &frame, *m, label)?;
         }
 
         if let Some(th) = threshold {
             let yy = frame.px(x.0, th).1;
-            KIT.draw_line(root, &[(frame.l + 1.0, yy), (frame.r - 1.0, yy)], THRESHOLD)?;
+            draw_line(root, &[(frame.l + 1.0, yy), (frame.r - 1.0, yy)], THRESHOLD)?;
         }
         let curve: Vec<Px> = points.iter().map(|q| frame.px(q.0, q.1)).collect();
         if let [only] = curve[..] {
@@ -799,306 +807,26 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> String {
     })
 }
 
-// ---------------------------------------------------------------------------------------------
-// Model checks
-
-const CHECK_TOP: u32 = 62;
-const CHECK_BOTTOM: u32 = 12;
-
-fn check_row_height(rows: usize) -> u32 {
-    match rows {
-        0..=12 => 36,
-        13..=30 => 28,
-        _ => 22,
-    }
-}
-
-/// Height in pixels that fits `bars` rows of [`model_checks`] at 900 px wide.
-pub fn model_checks_height(bars: usize) -> u32 {
-    let n = bars.clamp(1, 500);
-    (CHECK_TOP + CHECK_BOTTOM + n as u32 * check_row_height(n)).max(150)
-}
-
-/// Decimals for one row's numbers: three significant digits of the band's larger end, and
-/// enough to show the band's width to two digits.
-fn row_decimals(c: &CheckBar) -> usize {
-    let ends = [c.low, c.high].into_iter().filter(|v| v.is_finite());
-    let mag = ends.clone().map(f64::abs).fold(0.0, f64::max);
-    let mag = if mag > 0.0 { mag } else { c.measured.abs() };
-    let by_size = sig_decimals(mag);
-    let width = (c.high - c.low).abs();
-    let by_width = if width.is_finite() && width > 0.0 {
-        (1.0 - width.log10().floor()).clamp(0.0, 9.0) as usize
-    } else {
-        0
-    };
-    let d0 = by_size.max(by_width).min(9);
-    // Drop decimals that are zero in all of the row's numbers ("0.310 … 0.960" → "0.31 … 0.96").
-    let strip = |t: String| {
-        if t.contains('.') && !t.contains('e') {
-            t.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            t
-        }
-    };
-    let values = [c.low, c.high, c.measured];
-    let finite = values.iter().filter(|v| v.is_finite());
-    (0..d0)
-        .find(|&d| {
-            finite
-                .clone()
-                .all(|v| strip(fmt_fixed(*v, d)) == strip(fmt_fixed(*v, d0)))
-        })
-        .unwrap_or(d0)
-}
-
-/// The simulated band as (low, high) in order, if both ends are finite.
-fn band_of(c: &CheckBar) -> Option<(f64, f64)> {
-    (c.low.is_finite() && c.high.is_finite()).then(|| (c.low.min(c.high), c.low.max(c.high)))
-}
-
-/// The band has no width worth scaling (it is drawn as a thin bar).
-fn degenerate_band(c: &CheckBar) -> bool {
-    band_of(c).is_none_or(|(lo, hi)| {
-        // Halves, so that even a band from −MAX to MAX has a finite width.
-        let tol = 1e-12 * lo.abs().max(hi.abs()).max(1e-300);
-        hi / 2.0 - lo / 2.0 <= tol / 2.0
-    })
-}
-
-/// Where the measured value sits on a row's own scale: the band [low, high] maps to
-/// [1/3, 2/3]; values beyond [0, 1] are clipped. None when it cannot be placed.
-fn check_position(c: &CheckBar) -> Option<f64> {
-    let (lo, hi) = band_of(c)?;
-    let m = c.measured;
-    if !m.is_finite() {
-        return None;
-    }
-    let tol = 1e-12 * lo.abs().max(hi.abs()).max(1e-300);
-    if degenerate_band(c) {
-        return Some(if (m - lo).abs() <= tol {
-            0.5
-        } else if m > lo {
-            f64::INFINITY
-        } else {
-            f64::NEG_INFINITY
-        });
-    }
-    // In halves, so nothing overflows for finite inputs.
-    let u = 1.0 / 3.0 + (m / 2.0 - lo / 2.0) / (hi / 2.0 - lo / 2.0) / 3.0;
-    Some(if u.is_nan() { 0.5 } else { u })
-}
-
-/// Model checks: one row per statistic. Each row has its own scale: the band simulated from
-/// the base model (95 %) is a light grey bar in the middle third, the measured value a marker
-/// on that scale (a filled black circle, or a dark red diamond with a bold dark red label when
-/// the check is outside); values more than a band width past the band are clipped at the row's
-/// end with an arrow. The measured value and the band are printed at the right. A key and the
-/// column headings sit above the rows. Size the height with [`model_checks_height`].
-pub fn model_checks(bars: &[CheckBar], style: &Style) -> String {
-    if bars.is_empty() {
-        return message_chart(style, "No model checks to show.");
-    }
-    let n = bars.len();
-    let numbers: Vec<(String, String)> = bars
-        .iter()
-        .map(|c| {
-            let d = row_decimals(c);
-            let band = band_of(c).map_or_else(
-                || "n/a".to_string(),
-                |(lo, hi)| format!("{} … {}", fmt_fixed(lo, d), fmt_fixed(hi, d)),
-            );
-            (fmt_fixed(c.measured, d), band)
-        })
-        .collect();
-    let positions: Vec<Option<f64>> = bars.iter().map(check_position).collect();
-    let clipped = positions.iter().flatten().any(|u| !(0.0..=1.0).contains(u));
-    let any_outside = bars.iter().any(|c| c.outside);
-
-    render(style, |root| {
-        let (w, h) = root.dim_in_pixel();
-        let (wi, hi) = (w as i32, h as i32);
-        let measured_head = "measured";
-        let band_head = if wi < 600 {
-            "95 % band"
-        } else {
-            "simulated 95 % band"
-        };
-        let col_w = |head: &str, texts: &mut dyn Iterator<Item = &String>| {
-            texts
-                .map(|t| bold_width(t, TICK_PX))
-                .fold(KIT.text_width(head, TICK_PX), f64::max)
-                .ceil()
-                .min(wi as f64 / 3.0) as i32
-        };
-        let measured_w = col_w(measured_head, &mut numbers.iter().map(|p| &p.0));
-        let band_w = col_w(band_head, &mut numbers.iter().map(|p| &p.1));
-        let band_right = wi - 10;
-        let measured_right = band_right - band_w - 26;
-        let scale_right = measured_right - measured_w - 26;
-        // The labels take what the scale (at least 120 px) leaves, and at least a little.
-        let label_w_want = bars
-            .iter()
-            .map(|c| bold_width(&c.label, TICK_PX))
-            .fold(20.0, f64::max)
-            .ceil() as i32;
-        let avail = scale_right - 10 - 16;
-        let label_w = label_w_want.min(avail - 120).max((avail / 3).clamp(20, 60));
-        let label_right = 10 + label_w;
-        let scale_left = label_right + 16;
-        // Room for an arrow head at either end.
-        let (sx0, sx1) = (scale_left + 12, (scale_right - 12).max(scale_left + 14));
-        let at = |u: f64| sx0 as f64 + u * (sx1 - sx0) as f64;
-
-        let avail_h = (hi - CHECK_TOP as i32 - CHECK_BOTTOM as i32).max(n as i32) as f64;
-        let row_h = (avail_h / n as f64).min(check_row_height(n) as f64 * 1.25);
-        let top = CHECK_TOP as i32;
-
-        // Stripes behind every other row when there are many.
-        if n > 6 {
-            for i in (1..n).step_by(2) {
-                let y0 = top + (i as f64 * row_h).round() as i32;
-                let y1 = top + ((i + 1) as f64 * row_h).round() as i32;
-                fill_rect(root, (4, y0), (wi - 4, y1), STRIPE)?;
-            }
-        }
-
-        // Key (row 1) and column headings (row 2).
-        let key_y = 14;
-        let mut kx = 10;
-        #[derive(Clone, Copy, PartialEq)]
-        enum Sample {
-            Band,
-            Mark((Marker, RGBColor)),
-            Arrow,
-        }
-        let mut key = vec![
-            (Sample::Band, "simulated 95 % band (base model)"),
-            (Sample::Mark(MARK_INSIDE), "measured"),
-        ];
-        if any_outside {
-            key.push((Sample::Mark(MARK_OUTSIDE), "measured, check outside"));
-        }
-        if clipped {
-            key.push((Sample::Arrow, "beyond the scale"));
-        }
-        for (sample, text) in key {
-            if kx + 28 + 40 > wi - 10 {
-                break;
-            }
-            match sample {
-                Sample::Band => {
-                    let (a, b) = ((kx, key_y - 6), (kx + 22, key_y + 6));
-                    root.draw(&Rectangle::new([a, b], CHECK_BAND.filled()))?;
-                    root.draw(&Rectangle::new([a, b], MUTED.stroke_width(1)))?;
-                }
-                Sample::Mark((m, c)) => draw_marker(root, (kx + 11, key_y), m, c)?,
-                Sample::Arrow => draw_arrow(root, (kx + 18, key_y), 1, 6, INK)?,
-            }
-            let text = KIT.fit_text(text, LEGEND_PX, (wi - kx - 38).max(0) as f64);
-            if text != "…" {
-                draw_text(
-                    root,
-                    &text,
-                    (kx + 28, key_y),
-                    text_style(style, LEGEND_PX, false, INK, HPos::Left, VPos::Center),
-                )?;
-            }
-            kx += 28 + KIT.text_width(&text, LEGEND_PX).ceil() as i32 + 24;
-        }
-        let head_y = top - 8;
-        let head = |h| text_style(style, TICK_PX, true, INK, h, VPos::Bottom);
-        draw_text(
-            root,
-            measured_head,
-            (measured_right, head_y),
-            head(HPos::Right),
-        )?;
-        draw_text(root, band_head, (band_right, head_y), head(HPos::Right))?;
-        let scale_note = "each statistic on its own scale";
-        if KIT.text_width(scale_note, NOTE_PX) <= (sx1 - sx0) as f64 {
-            draw_text(
-                root,
-                scale_note,
-                ((sx0 + sx1) / 2, head_y),
-                text_style(style, NOTE_PX, false, MUTED, HPos::Center, VPos::Bottom),
-            )?;
-        }
-        root.draw(&PathElement::new(
-            vec![(4, top - 2), (wi - 4, top - 2)],
-            GUIDE.stroke_width(1),
-        ))?;
-
-        let bar_h = ((row_h * 0.42).round() as i32).clamp(4, 16);
-        for (i, ((c, (measured, band)), pos)) in
-            bars.iter().zip(&numbers).zip(&positions).enumerate()
-        {
-            let mid = top + ((i as f64 + 0.5) * row_h).round() as i32;
-            // Track, band, marker.
-            root.draw(&PathElement::new(
-                vec![(sx0, mid), (sx1, mid)],
-                GUIDE.stroke_width(1),
-            ))?;
-            if band_of(c).is_some() {
-                let (b0, b1) = (at(1.0 / 3.0).round() as i32, at(2.0 / 3.0).round() as i32);
-                let (b0, b1) = if degenerate_band(c) {
-                    ((b0 + b1) / 2 - 1, (b0 + b1) / 2 + 1)
-                } else {
-                    (b0, b1)
-                };
-                let (a, b) = ((b0, mid - bar_h / 2), (b1, mid - bar_h / 2 + bar_h));
-                root.draw(&Rectangle::new([a, b], CHECK_BAND.filled()))?;
-                root.draw(&Rectangle::new([a, b], MUTED.stroke_width(1)))?;
-            }
-            let (marker, color) = if c.outside { MARK_OUTSIDE } else { MARK_INSIDE };
-            if let Some(u) = *pos {
-                if u < 0.0 {
-                    draw_arrow(root, (sx0 - 10, mid), -1, 7, color)?;
-                } else if u > 1.0 {
-                    draw_arrow(root, (sx1 + 10, mid), 1, 7, color)?;
-                } else {
-                    draw_marker(root, round_px((at(u), mid as f64)), marker, color)?;
-                }
-            }
-            // Texts.
-            let (bold, ink) = if c.outside {
-                (true, OUTSIDE)
-            } else {
-                (false, INK)
-            };
-            let label = KIT.fit_text(&c.label, TICK_PX, label_w as f64);
-            draw_text(
-                root,
-                &label,
-                (label_right, mid),
-                text_style(style, TICK_PX, bold, ink, HPos::Right, VPos::Center),
-            )?;
-            let measured = KIT.fit_text(measured, TICK_PX, measured_w as f64);
-            let band = KIT.fit_text(band, TICK_PX, band_w as f64);
-            draw_text(
-                root,
-                &measured,
-                (measured_right, mid),
-                text_style(style, TICK_PX, bold, ink, HPos::Right, VPos::Center),
-            )?;
-            draw_text(
-                root,
-                &band,
-                (band_right, mid),
-                text_style(style, TICK_PX, false, INK, HPos::Right, VPos::Center),
-            )?;
-        }
-        Ok(())
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::check_chart::{check_position, row_decimals};
+
+    // The charts as SVG with an element per outline, as plotters wrote them.
+    fn residuals(r: &Residuals, style: &Style) -> String {
+        super::residuals(r, style).element_svg()
+    }
+
+    fn periodogram(p: &Periodogram, style: &Style) -> String {
+        super::periodogram(p, style).element_svg()
+    }
+
+    fn model_checks(bars: &[CheckBar], style: &Style) -> String {
+        super::model_checks(bars, style).element_svg()
+    }
 
     fn style(height_px: u32) -> Style {
         Style {
-            font_family: "Inter".to_string(),
             width_px: 900,
             height_px,
         }
@@ -1746,25 +1474,6 @@ mod tests {
     }
 
     #[test]
-    fn only_the_given_font_family_is_named() {
-        let st = Style {
-            font_family: "Test Face".to_string(),
-            ..style(360)
-        };
-        let mut svgs = all_charts(&st);
-        svgs.push(residuals(&Residuals::default(), &st));
-        svgs.push(periodogram(&Periodogram::default(), &st));
-        svgs.push(model_checks(&[], &st));
-        for svg in svgs {
-            let families = attr_values(&svg, "font-family");
-            assert!(!families.is_empty());
-            assert!(families.iter().all(|f| *f == "Test Face"), "{families:?}");
-            assert!(!svg.contains("sans-serif") && !svg.contains("serif\""));
-            assert_eq!(families.len(), svg.matches("<text").count());
-        }
-    }
-
-    #[test]
     fn font_sizes_are_plain_numbers() {
         for svg in all_charts(&style(360)) {
             for size in attr_values(&svg, "font-size") {
@@ -1814,17 +1523,14 @@ mod tests {
         let styles = [
             style(360),
             Style {
-                font_family: String::new(),
                 width_px: 0,
                 height_px: 0,
             },
             Style {
-                font_family: "Inter".to_string(),
                 width_px: 300,
                 height_px: 150,
             },
             Style {
-                font_family: "Inter".to_string(),
                 width_px: u32::MAX,
                 height_px: u32::MAX,
             },
@@ -1952,9 +1658,9 @@ mod tests {
 
     #[test]
     fn numbers_are_formatted_for_print() {
-        assert_eq!(fmt_fixed(-1.5, 2), "−1.50");
-        assert_eq!(fmt_fixed(-0.001, 2), "0.00");
-        assert_eq!(fmt_fixed(f64::NEG_INFINITY, 2), "−∞");
+        assert_eq!(fmt_fixed_for_print(-1.5, 2), "−1.50");
+        assert_eq!(fmt_fixed_for_print(-0.001, 2), "0.00");
+        assert_eq!(fmt_fixed_for_print(f64::NEG_INFINITY, 2), "−∞");
         assert_eq!(fmt_short(0.35), "0.35");
         assert_eq!(fmt_short(10.02), "10");
         assert_eq!(fmt_short(12.5), "12.5");

@@ -1,39 +1,31 @@
-//! Chart text set by Typst instead of by the SVG decoder.
-//!
-//! plotters writes every label of a chart as an SVG `<text>` element. Typst's SVG decoder
-//! shapes each of them with a freshly built font face, and the PDF writer then draws them
-//! glyph by glyph: about a fifth of the time of a report went into its ~170 chart labels.
-//! [`split`] cuts the labels out of a chart SVG; the template (`chart` in `style.typ`) places
-//! them over the remaining drawing as ordinary Typst text, which is shaped once per string,
-//! written as one text run and stays searchable in the PDF.
-//!
-//! Only labels in exactly the form plotters writes are cut out; anything else stays in the
-//! SVG and is drawn by the decoder as before, so the picture never loses text.
+//! Chart text set by Typst: the template (`chart` in `style.typ`) places each label over
+//! the drawing as ordinary Typst text, which is shaped once per string, written as one text
+//! run and stays searchable in the PDF.
 
-use super::compact::{attribute_list as attributes, is_colour};
+use super::scene::{Align, Scene, Text};
 use serde::Serialize;
 
-/// One label in SVG pixels: its anchor point, where its baseline and start lie relative to
+/// One label in chart pixels: its anchor point, where its baseline and start lie relative to
 /// the anchor (before rotation), and how it is set.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Label {
-    /// Anchor point (`x`, `y` of the SVG element); rotation turns about it.
+    /// Anchor point; rotation turns about it.
     pub x: f64,
     pub y: f64,
     /// Left edge of the box the text is aligned in, relative to the anchor.
     pub dx: f64,
-    /// Baseline relative to the anchor (the element's `dy`).
+    /// Baseline relative to the anchor.
     pub dy: f64,
     /// Width of that box: wider than the text, which is aligned in it by `align`.
     pub w: f64,
-    /// `left`, `center` or `right` (SVG `text-anchor` start, middle, end).
+    /// `left`, `center` or `right`.
     pub align: &'static str,
-    /// Font size in SVG pixels.
+    /// Font size in pixels.
     pub size: f64,
     /// Colour as `#RRGGBB`.
     pub fill: String,
     pub bold: bool,
-    /// Clockwise rotation in degrees about the anchor (SVG `rotate(a, x, y)`).
+    /// Clockwise rotation in degrees about the anchor.
     pub rotate: f64,
     /// The text; lines separated by `\n` when labels were stacked (see [`stack`]).
     pub text: String,
@@ -41,140 +33,53 @@ pub struct Label {
     pub pitch: f64,
 }
 
-/// A chart split into its drawing and its labels.
+/// A chart's labels (`/charts/NAME.json`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SplitChart {
-    /// The SVG without the labels that were cut out.
-    #[serde(skip)]
-    pub svg: String,
-    /// Size of the SVG's canvas in pixels: the labels' coordinate system.
+pub struct ChartLabels {
+    /// Size of the chart's canvas in pixels: the labels' coordinate system.
     pub width: f64,
     pub height: f64,
     pub labels: Vec<Label>,
 }
 
-/// Cuts the labels out of `svg`, a chart written by plotters' SVG backend in `family`.
-pub fn split(svg: &str, family: &str) -> SplitChart {
-    let (width, height) = canvas_size(svg).unwrap_or((0.0, 0.0));
-    let mut out = String::with_capacity(svg.len());
-    let mut labels = Vec::new();
-    let mut rest = svg;
-    while let Some(start) = rest.find("<text ") {
-        let Some(len) = rest[start..].find("</text>") else {
-            break;
-        };
-        let end = start + len + "</text>".len();
-        out.push_str(&rest[..start]);
-        match parse_label(&rest[start..end], family) {
-            Some(label) if width > 0.0 => {
-                labels.push(label);
-                // plotters ends each element with a newline; drop it with the element.
-                if rest[end..].starts_with('\n') {
-                    rest = &rest[end + 1..];
-                    continue;
-                }
-            }
-            _ => out.push_str(&rest[start..end]),
+impl ChartLabels {
+    /// The labels of a chart, columns stacked (see [`stack`]).
+    pub fn of(scene: &Scene) -> ChartLabels {
+        ChartLabels {
+            width: scene.drawing.width.into(),
+            height: scene.drawing.height.into(),
+            labels: stack(scene.texts.iter().map(label).collect()),
         }
-        rest = &rest[end..];
-    }
-    out.push_str(rest);
-    SplitChart {
-        svg: out,
-        width,
-        height,
-        labels: stack(labels),
     }
 }
 
-/// `width` and `height` of the root `<svg>` element, in pixels.
-fn canvas_size(svg: &str) -> Option<(f64, f64)> {
-    let start = svg.find("<svg ")?;
-    let open = &svg[start..start + svg[start..].find('>')?];
-    let attrs = attributes(&open["<svg ".len()..])?;
-    let get = |key: &str| -> Option<f64> {
-        let v: f64 = attrs.iter().find(|(k, _)| *k == key)?.1.parse().ok()?;
-        (v.is_finite() && v > 0.0).then_some(v)
-    };
-    Some((get("width")?, get("height")?))
-}
-
-/// A label from one `<text …>…</text>` element in plotters' form, else `None`.
-fn parse_label(element: &str, family: &str) -> Option<Label> {
-    let open_end = element.find('>')?;
-    let attrs = attributes(&element["<text ".len()..open_end])?;
-    let content = &element[open_end + 1..element.len() - "</text>".len()];
-    let mut x = None;
-    let mut y = None;
-    let mut dy = None;
-    let mut align = None;
-    let mut size = None;
-    let mut fill = None;
-    let mut bold = false;
-    let mut rotate = 0.0;
-    let mut family_ok = false;
-    for (key, value) in attrs {
-        match key {
-            "x" => x = value.parse::<f64>().ok(),
-            "y" => y = value.parse::<f64>().ok(),
-            "dy" => dy = Some(value),
-            "text-anchor" => {
-                align = Some(match value {
-                    "start" => "left",
-                    "middle" => "center",
-                    "end" => "right",
-                    _ => return None,
-                })
-            }
-            "font-family" => family_ok = value == family,
-            "font-size" => size = value.parse::<f64>().ok(),
-            "opacity" if value == "1" => {}
-            "fill" if is_colour(value) => fill = Some(value.to_string()),
-            "font-weight" if value == "bold" => bold = true,
-            "transform" => rotate = parse_rotation(value, x?, y?)?,
-            _ => return None,
-        }
-    }
-    let (x, y, size) = (x?, y?, size?);
-    if !(x.is_finite() && y.is_finite() && size.is_finite() && size > 0.0 && family_ok) {
-        return None;
-    }
-    // The SVG decoder's units: 1 em is the font size, 1 ex half of it.
-    let dy = match dy? {
-        "0.76em" => 0.76 * size,
-        "0.5ex" => 0.25 * size,
-        "-0.5ex" => -0.25 * size,
-        _ => return None,
-    };
-    let text = unescape(content)?;
-    if text.is_empty() {
-        return None;
-    }
+/// The label that sets `text` where plotters placed it.
+fn label(text: &Text) -> Label {
+    let size = text.size;
     // No glyph of the sans face is wider than 1.2 em: the box never makes the text wrap.
-    let w = size * (1.2 * text.chars().count() as f64 + 2.0);
-    let align = align?;
-    let dx = match align {
-        "left" => 0.0,
-        "center" => -w / 2.0,
-        _ => -w,
+    let w = size * (1.2 * text.text.chars().count() as f64 + 2.0);
+    let (align, dx) = match text.align {
+        Align::Left => ("left", 0.0),
+        Align::Center => ("center", -w / 2.0),
+        Align::Right => ("right", -w),
     };
-    Some(Label {
-        x,
-        y,
+    Label {
+        x: text.at.0.into(),
+        y: text.at.1.into(),
         dx,
-        dy,
+        dy: text.dy(),
         w,
         align,
         size,
-        fill: fill?,
-        bold,
-        rotate,
-        text,
+        fill: text.colour.hex(),
+        bold: text.bold,
+        rotate: text.rotate.into(),
+        text: text.text.clone(),
         pitch: 0.0,
-    })
+    }
 }
 
-/// How far (SVG pixels) a stacked line may lie from the baseline its label had: the tick
+/// How far (pixels) a stacked line may lie from the baseline its label had: the tick
 /// positions plotters writes are rounded to whole pixels, so evenly spaced ticks are up to
 /// a pixel apart from even (0.3 pt on the page).
 const STACK_TOLERANCE_PX: f64 = 0.75;
@@ -272,69 +177,55 @@ fn merge(mut column: Vec<Label>) -> Option<Label> {
     })
 }
 
-/// The angle of `rotate(a, x, y)` turning about the label's own anchor.
-fn parse_rotation(value: &str, x: f64, y: f64) -> Option<f64> {
-    let inner = value.strip_prefix("rotate(")?.strip_suffix(')')?;
-    let parts: Vec<f64> = inner
-        .split(',')
-        .map(|p| p.trim().parse::<f64>().ok())
-        .collect::<Option<_>>()?;
-    match parts[..] {
-        [a, cx, cy] if cx == x && cy == y && a.is_finite() => Some(a),
-        _ => None,
-    }
-}
-
-/// The element's text as SVG shows it: entities decoded, white space collapsed and trimmed
-/// (SVG's default `xml:space`); `None` for markup or entities plotters does not write.
-fn unescape(content: &str) -> Option<String> {
-    if content.contains('<') {
-        return None;
-    }
-    let mut out = String::with_capacity(content.len());
-    let mut rest = content;
-    while let Some(at) = rest.find('&') {
-        out.push_str(&rest[..at]);
-        let semi = rest[at..].find(';')?;
-        out.push(match &rest[at..at + semi + 1] {
-            "&lt;" => '<',
-            "&gt;" => '>',
-            "&amp;" => '&',
-            "&quot;" => '"',
-            "&apos;" => '\'',
-            _ => return None,
-        });
-        rest = &rest[at + semi + 1..];
-    }
-    out.push_str(rest);
-    Some(out.split_whitespace().collect::<Vec<_>>().join(" "))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    const SVG: &str = "<svg width=\"900\" height=\"420\" viewBox=\"0 0 900 420\" xmlns=\"http://www.w3.org/2000/svg\">\n\
-<rect x=\"0\" y=\"0\" width=\"900\" height=\"420\" opacity=\"1\" fill=\"#FFFFFF\" stroke=\"none\"/>\n\
-<text x=\"393\" y=\"414\" dy=\"-0.5ex\" text-anchor=\"middle\" font-family=\"Inter\" font-size=\"15.5\" opacity=\"1\" fill=\"#1A1A1A\">\n\
-Target position Pi / mm\n\
-</text>\n\
-<line opacity=\"1\" stroke=\"#E2E2E2\" stroke-width=\"1\" x1=\"80\" y1=\"363\" x2=\"80\" y2=\"62\"/>\n\
-<text x=\"50\" y=\"361\" dy=\"0.5ex\" text-anchor=\"end\" font-family=\"Inter\" font-size=\"14\" opacity=\"1\" fill=\"#1A1A1A\" font-weight=\"bold\">\n\
-a &lt; b &amp; c\n\
-</text>\n\
-<text x=\"4\" y=\"213\" dy=\"0.76em\" text-anchor=\"start\" font-family=\"Inter\" font-size=\"14\" opacity=\"1\" fill=\"#5F5F5F\" transform=\"rotate(270, 4, 213)\">\n\
-Deviation / µm\n\
-</text>\n\
-</svg>\n";
+    use crate::report::scene::{Baseline, Colour};
 
     #[test]
-    fn every_plotters_label_is_cut_out_with_its_placement() {
-        let chart = split(SVG, "Inter");
+    fn every_text_becomes_a_label_with_its_placement() {
+        let text = |at, align, baseline, size, rotate, s: &str| Text {
+            at,
+            align,
+            baseline,
+            size,
+            colour: Colour(0x1A, 0x1A, 0x1A),
+            bold: s.contains('<'),
+            rotate,
+            text: s.to_string(),
+        };
+        let mut scene = Scene::default();
+        scene.drawing.width = 900;
+        scene.drawing.height = 420;
+        scene.texts = vec![
+            text(
+                (393, 414),
+                Align::Center,
+                Baseline::Bottom,
+                15.5,
+                0,
+                "Target position Pi / mm",
+            ),
+            text(
+                (50, 361),
+                Align::Right,
+                Baseline::Middle,
+                14.0,
+                0,
+                "a < b & c",
+            ),
+            text(
+                (4, 213),
+                Align::Left,
+                Baseline::Top,
+                14.0,
+                270,
+                "Deviation / µm",
+            ),
+        ];
+        let chart = ChartLabels::of(&scene);
         assert_eq!((chart.width, chart.height), (900.0, 420.0));
-        assert!(!chart.svg.contains("<text"), "{}", chart.svg);
-        assert!(chart.svg.contains("<line opacity"));
-        assert!(chart.svg.ends_with("</svg>\n"));
         let texts: Vec<&str> = chart.labels.iter().map(|l| l.text.as_str()).collect();
         assert_eq!(
             texts,
@@ -357,7 +248,6 @@ Deviation / µm\n\
         let axis = &chart.labels[2];
         assert_eq!((axis.align, axis.dx, axis.rotate), ("left", 0.0, 270.0));
         assert_eq!(axis.dy, 0.76 * 14.0);
-        assert_eq!(axis.fill, "#5F5F5F");
     }
 
     fn tick(y: f64, text: &str) -> Label {
@@ -416,31 +306,5 @@ Deviation / µm\n\
         let apart = stack(vec![tick(100.0, "a"), other_x, bold, turned]);
         assert_eq!(apart.len(), 4);
         assert!(apart.iter().all(|l| l.pitch == 0.0));
-    }
-
-    #[test]
-    fn labels_in_another_form_stay_in_the_drawing() {
-        for odd in [
-            "font-family=\"Inter\" font-size=\"14\" opacity=\"0.5\"",
-            "font-family=\"Other\" font-size=\"14\" opacity=\"1\"",
-            "font-family=\"Inter\" font-size=\"14\" opacity=\"1\" font-style=\"italic\"",
-            "font-family=\"Inter\" font-size=\"-3\" opacity=\"1\"",
-        ] {
-            let svg = SVG.replace(
-                "font-family=\"Inter\" font-size=\"15.5\" opacity=\"1\"",
-                odd,
-            );
-            let chart = split(&svg, "Inter");
-            assert_eq!(chart.labels.len(), 2, "{odd}");
-            assert!(chart.svg.contains("Target position Pi / mm"), "{odd}");
-        }
-        let rotated_elsewhere = SVG.replace("rotate(270, 4, 213)", "rotate(270, 5, 213)");
-        assert_eq!(split(&rotated_elsewhere, "Inter").labels.len(), 2);
-        let entity = SVG.replace("&amp;", "&#38;");
-        assert_eq!(split(&entity, "Inter").labels.len(), 2);
-        let no_size = SVG.replace("width=\"900\"", "");
-        let chart = split(&no_size, "Inter");
-        assert!(chart.labels.is_empty());
-        assert_eq!(chart.svg, no_size);
     }
 }

@@ -1,27 +1,33 @@
 //! PDF reports: per-axis test reports and the campaign summary, typeset by Typst from the
 //! templates in `templates/` with charts drawn by plotters.
 //!
-//! Report data reach the templates only as the virtual file `/data.json` (read with
-//! `json(...)`), never spliced into markup: a machine named `#read("/etc/passwd")` is
-//! printed as those characters. Every document uses the same virtual paths, so Typst's
-//! global file-id table does not grow with the number of reports.
+//! Report data reach the templates only as virtual files, never spliced into markup:
+//! `/data.json` (read with `json(...)`; a machine named `#read("/etc/passwd")` is printed
+//! as those characters) and per chart its drawing and labels (see [`chart_files`]). Every
+//! document uses the same virtual paths, so Typst's global file-id table does not grow
+//! with the number of reports.
 
+mod canvas;
 pub(crate) mod chart_kit;
 pub mod charts;
-pub mod compact;
+mod check_chart;
 pub mod data;
 pub mod diagnosis_charts;
 pub mod diagnosis_data;
+mod drawing;
 pub mod labels;
+pub mod scene;
 pub mod world;
 
 use crate::batch::{AxisTest, CampaignResult};
+use scene::Scene;
 use std::collections::HashMap;
 use std::path::Path;
+use std::sync::Arc;
 use typst::diag::{Severity, SourceDiagnostic};
 use typst::foundations::Smart;
 use typst_layout::PagedDocument;
-use world::{DocumentWorld, SANS_FAMILY, Typesetter};
+use world::{DocumentWorld, Typesetter};
 
 /// Template files, embedded at build time (the source tree's `templates/`).
 pub const TEMPLATES: &[(&str, &str)] = &[
@@ -40,6 +46,56 @@ pub enum ReportError {
     Templates(String),
     #[error("typesetting {document}: {message}")]
     Typeset { document: String, message: String },
+    #[error("writing the data of {document}: {source}")]
+    Data {
+        document: String,
+        source: serde_json::Error,
+    },
+}
+
+/// A document's files (virtual path → bytes) and charts (name → scene).
+#[derive(Default)]
+struct Files {
+    files: Vec<(String, Vec<u8>)>,
+    charts: Vec<(String, Arc<Scene>)>,
+}
+
+impl Files {
+    /// `/data.json`.
+    fn data(document: &str, data: &impl serde::Serialize) -> Result<Files, ReportError> {
+        let mut files = Files::default();
+        files.push(document, "/data.json".into(), data)?;
+        Ok(files)
+    }
+
+    /// `data` as JSON at `path`.
+    fn push(
+        &mut self,
+        document: &str,
+        path: String,
+        data: &impl serde::Serialize,
+    ) -> Result<(), ReportError> {
+        let bytes = serde_json::to_vec(data).map_err(|source| ReportError::Data {
+            document: document.to_string(),
+            source,
+        })?;
+        self.files.push((path, bytes));
+        Ok(())
+    }
+
+    /// A chart's files, for the templates' `chart("NAME")` in `style.typ`:
+    /// `/charts/NAME.drawing` (the shapes, laid out by `chart-drawing`) and
+    /// `/charts/NAME.json` (the labels, set by Typst as text: see [`labels`]). For
+    /// templates that show a chart as an image, `/charts/NAME.svg` (the whole chart) and
+    /// `/charts/NAME-plot.svg` (without its labels) are written when they are read.
+    fn chart(&mut self, document: &str, name: &str, scene: Scene) -> Result<(), ReportError> {
+        let labels = labels::ChartLabels::of(&scene);
+        self.push(document, format!("/charts/{name}.json"), &labels)?;
+        let drawing = (format!("/charts/{name}.drawing"), scene.drawing.encode());
+        self.files.push(drawing);
+        self.charts.push((name.to_string(), Arc::new(scene)));
+        Ok(())
+    }
 }
 
 /// A compiled PDF and the warnings Typst gave.
@@ -53,7 +109,7 @@ pub struct Reports {
     typesetter: Typesetter,
 }
 
-/// Chart sizes in SVG pixels, shown about 16 cm wide (the chart module's design size).
+/// Chart sizes in pixels, shown about 16 cm wide (the chart module's design size).
 const CHART_WIDTH_PX: u32 = 900;
 const CHART_HEIGHT_PX: u32 = 420;
 const UNIDIRECTIONAL_HEIGHT_PX: u32 = 600;
@@ -82,7 +138,7 @@ impl Reports {
         &self,
         document: &str,
         main: &str,
-        files: Vec<(String, Vec<u8>)>,
+        files: Files,
         date: Option<&str>,
         ident: String,
     ) -> Result<Rendered, ReportError> {
@@ -91,7 +147,7 @@ impl Reports {
             message,
         };
         let today = date.and_then(parse_date);
-        let world = DocumentWorld::new(&self.typesetter, main, files, today)
+        let world = DocumentWorld::new(&self.typesetter, main, files.files, files.charts, today)
             .ok_or_else(|| fail("bad virtual path".into()))?;
         let warned = typst::compile::<PagedDocument>(&world);
         let warnings: Vec<String> = warned.warnings.iter().map(diagnostic).collect();
@@ -114,132 +170,89 @@ impl Reports {
 
     /// The report of one axis test.
     pub fn axis(&self, result: &CampaignResult, test: &AxisTest) -> Result<Rendered, ReportError> {
-        let data = data::axis_report(result, test);
-        let mut files = vec![(
-            "/data.json".to_string(),
-            serde_json::to_vec(&data).unwrap_or_default(),
-        )];
+        let document = test.label();
+        let mut files = Files::data(&document, &data::axis_report(result, test))?;
         if let Some(e) = &test.evaluation {
             let (chart, up, down) = data::axis_chart(e);
-            let style = charts::Style {
-                font_family: SANS_FAMILY.to_string(),
+            let style = |height_px| charts::Style {
                 width_px: CHART_WIDTH_PX,
-                height_px: CHART_HEIGHT_PX,
+                height_px,
             };
-            push_chart(
-                &mut files,
-                "bidirectional",
-                charts::bidirectional(&chart, &style),
-            );
-            let tall = charts::Style {
-                height_px: UNIDIRECTIONAL_HEIGHT_PX,
-                ..style
-            };
-            push_chart(
-                &mut files,
-                "unidirectional",
-                charts::unidirectional(&chart, &up, &down, &tall),
-            );
+            let bidirectional = charts::bidirectional(&chart, &style(CHART_HEIGHT_PX));
+            files.chart(&document, "bidirectional", bidirectional)?;
+            let tall = style(UNIDIRECTIONAL_HEIGHT_PX);
+            let unidirectional = charts::unidirectional(&chart, &up, &down, &tall);
+            files.chart(&document, "unidirectional", unidirectional)?;
             if let Some(d) = &test.diagnosis {
-                let (checks, in_time, along, periodogram) = diagnosis_data::diagnosis_charts(d);
-                let style = |height_px| diagnosis_charts::Style {
-                    font_family: SANS_FAMILY.to_string(),
-                    width_px: CHART_WIDTH_PX,
-                    height_px,
-                };
-                let height = diagnosis_charts::model_checks_height(checks.len());
-                push_chart(
-                    &mut files,
-                    "checks",
-                    diagnosis_charts::model_checks(&checks, &style(height)),
-                );
-                push_chart(
-                    &mut files,
-                    "residuals-time",
-                    diagnosis_charts::residuals(&in_time, &style(340)),
-                );
-                push_chart(
-                    &mut files,
-                    "residuals-position",
-                    diagnosis_charts::residuals(&along, &style(340)),
-                );
-                push_chart(
-                    &mut files,
-                    "periodogram",
-                    diagnosis_charts::periodogram(&periodogram, &style(300)),
-                );
+                diagnosis_files(&mut files, &document, d)?;
             }
         }
         let ident = format!(
             "axcheck/{}/{}/{}/{}",
             result.info.name, test.machine.id, test.axis, test.test
         );
-        self.compile(
-            &test.label(),
-            "/axis-report.typ",
-            files,
-            result.info.date.as_deref(),
-            ident,
-        )
+        let date = result.info.date.as_deref();
+        self.compile(&document, "/axis-report.typ", files, date, ident)
     }
 
     /// The campaign summary.
     pub fn summary(&self, result: &CampaignResult) -> Result<Rendered, ReportError> {
-        let data = data::summary(result);
-        let bars: Vec<charts::RatioBar> = {
-            let mut tests: Vec<&AxisTest> = result.tests.iter().collect();
-            tests.sort_by_key(|t| t.verdict.attention_rank());
-            tests
-                .iter()
-                .filter_map(|t| {
-                    let worst = t.judgement.as_ref()?.worst()?;
-                    Some(charts::RatioBar {
-                        label: t.label(),
-                        parameter: t
-                            .evaluation
-                            .as_ref()
-                            .and_then(|e| e.parameter(&worst.key))
-                            .map_or(worst.key.clone(), |p| p.symbol().to_string()),
-                        ratio: worst.ratio(),
-                        pass: worst.pass,
-                    })
-                })
-                .collect()
-        };
+        let document = "summary";
+        let mut files = Files::data(document, &data::summary(result))?;
+        let bars = ratio_bars(result);
         let style = charts::Style {
-            font_family: SANS_FAMILY.to_string(),
             width_px: CHART_WIDTH_PX,
             height_px: charts::ratio_chart_height(bars.len()),
         };
-        let mut files = vec![(
-            "/data.json".to_string(),
-            serde_json::to_vec(&data).unwrap_or_default(),
-        )];
-        push_chart(&mut files, "usage", charts::tolerance_usage(&bars, &style));
+        files.chart(document, "usage", charts::tolerance_usage(&bars, &style))?;
         let ident = format!("axcheck/{}/summary", result.info.name);
-        self.compile(
-            "summary",
-            "/summary.typ",
-            files,
-            result.info.date.as_deref(),
-            ident,
-        )
+        let date = result.info.date.as_deref();
+        self.compile(document, "/summary.typ", files, date, ident)
     }
 }
 
-/// A chart's files: `/charts/NAME.svg` (the whole chart, for templates that show it as an
-/// image), and for the templates' `chart("NAME")`: `/charts/NAME-plot.svg` (the drawing
-/// without its labels, like elements merged: see [`compact`]) and `/charts/NAME.json`
-/// (the labels, set by Typst: see [`labels`]).
-fn push_chart(files: &mut Vec<(String, Vec<u8>)>, name: &str, svg: String) {
-    let mut split = labels::split(&svg, SANS_FAMILY);
-    split.svg = compact::merge_runs(&split.svg);
-    files.push((
-        format!("/charts/{name}.json"),
-        serde_json::to_vec(&split).unwrap_or_default(),
-    ));
-    files.push((format!("/charts/{name}-plot.svg"), split.svg.into_bytes()));
-    files.push((format!("/charts/{name}.svg"), svg.into_bytes()));
+/// The charts of the diagnosis section.
+fn diagnosis_files(
+    files: &mut Files,
+    document: &str,
+    d: &crate::diagnose::Diagnosis,
+) -> Result<(), ReportError> {
+    let (checks, in_time, along, periodogram) = diagnosis_data::diagnosis_charts(d);
+    let style = |height_px| diagnosis_charts::Style {
+        width_px: CHART_WIDTH_PX,
+        height_px,
+    };
+    let height = diagnosis_charts::model_checks_height(checks.len());
+    let model_checks = diagnosis_charts::model_checks(&checks, &style(height));
+    files.chart(document, "checks", model_checks)?;
+    let in_time = diagnosis_charts::residuals(&in_time, &style(340));
+    files.chart(document, "residuals-time", in_time)?;
+    let along = diagnosis_charts::residuals(&along, &style(340));
+    files.chart(document, "residuals-position", along)?;
+    let periodogram = diagnosis_charts::periodogram(&periodogram, &style(300));
+    files.chart(document, "periodogram", periodogram)
+}
+
+/// The summary chart's bars: each test's worst parameter, needing attention first.
+fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
+    let mut tests: Vec<&AxisTest> = result.tests.iter().collect();
+    tests.sort_by_key(|t| t.verdict.attention_rank());
+    tests
+        .iter()
+        .filter_map(|t| {
+            let worst = t.judgement.as_ref()?.worst()?;
+            Some(charts::RatioBar {
+                label: t.label(),
+                parameter: t
+                    .evaluation
+                    .as_ref()
+                    .and_then(|e| e.parameter(&worst.key))
+                    .map_or(worst.key.clone(), |p| p.symbol().to_string()),
+                ratio: worst.ratio(),
+                pass: worst.pass,
+            })
+        })
+        .collect()
 }
 
 fn diagnostic(d: &SourceDiagnostic) -> String {

@@ -2,11 +2,15 @@
 //!
 //! [`Typesetter`] holds what every document shares — the standard library, the font book
 //! and the fonts (typst-assets' faces plus the embedded Inter) and the templates — and is
-//! built once per process. [`DocumentWorld`] adds one document's files (its main
-//! template, `/data.json`, chart SVGs), all in memory: a template can read nothing from
-//! the disk, and report data reach it only as data.
+//! built once per process; its library has the `chart-drawing` function (see
+//! [`super::drawing`]). [`DocumentWorld`] adds one document's files (its main template,
+//! `/data.json`, the charts' drawings and labels), all in memory: a template can read
+//! nothing from the disk, and report data reach it only as data.
 
+use super::drawing::chart_drawing;
+use super::scene::Scene;
 use std::collections::HashMap;
+use std::sync::{Arc, OnceLock};
 use typst::diag::{FileError, FileResult};
 use typst::foundations::{Bytes, Datetime};
 use typst::syntax::{FileId, RootedPath, Source, VirtualPath, VirtualRoot};
@@ -50,8 +54,10 @@ impl Typesetter {
                 Some((id, Source::new(id, text)))
             })
             .collect::<Option<_>>()?;
+        let mut library = Library::default();
+        library.global.scope_mut().define_func::<chart_drawing>();
         Some(Typesetter {
-            library: LazyHash::new(Library::default()),
+            library: LazyHash::new(library),
             book: LazyHash::new(FontBook::from_fonts(&fonts)),
             fonts,
             sources,
@@ -81,26 +87,50 @@ pub struct DocumentWorld<'a> {
     main: FileId,
     /// The document's data files, by id (the templates are the typesetter's).
     files: HashMap<FileId, Bytes>,
+    /// Chart pictures, written when a template reads them.
+    pictures: HashMap<FileId, Picture>,
     today: Option<Datetime>,
+}
+
+/// A chart as SVG (`/charts/NAME.svg`, or without its texts `/charts/NAME-plot.svg`),
+/// for templates that show a chart as an image; the built-in ones never read it.
+struct Picture {
+    scene: Arc<Scene>,
+    with_texts: bool,
+    svg: OnceLock<Bytes>,
 }
 
 impl<'a> DocumentWorld<'a> {
     /// A document whose entry point is the template `main` (e.g. `/axis-report.typ`),
-    /// with `files` (virtual path → bytes) and the date `today` as (year, month, day).
+    /// with `files` (virtual path → bytes), `charts` (name → scene) and the date `today`
+    /// as (year, month, day).
     pub fn new(
         typesetter: &'a Typesetter,
         main: &str,
         files: Vec<(String, Vec<u8>)>,
+        charts: Vec<(String, Arc<Scene>)>,
         today: Option<(i32, u8, u8)>,
     ) -> Option<DocumentWorld<'a>> {
         let files = files
             .into_iter()
-            .filter_map(|(path, bytes)| Some((file_id(&path)?, Bytes::new(bytes))))
-            .collect();
+            .map(|(path, bytes)| Some((file_id(&path)?, Bytes::new(bytes))))
+            .collect::<Option<_>>()?;
+        let mut pictures = HashMap::new();
+        for (name, scene) in charts {
+            for (suffix, with_texts) in [("", true), ("-plot", false)] {
+                let picture = Picture {
+                    scene: Arc::clone(&scene),
+                    with_texts,
+                    svg: OnceLock::new(),
+                };
+                pictures.insert(file_id(&format!("/charts/{name}{suffix}.svg"))?, picture);
+            }
+        }
         Some(DocumentWorld {
             typesetter,
             main: file_id(main)?,
             files,
+            pictures,
             today: today.and_then(|(y, m, d)| Datetime::from_ymd(y, m, d)),
         })
     }
@@ -130,6 +160,16 @@ impl World for DocumentWorld<'_> {
     fn file(&self, id: FileId) -> FileResult<Bytes> {
         if let Some(bytes) = self.files.get(&id) {
             return Ok(bytes.clone());
+        }
+        if let Some(p) = self.pictures.get(&id) {
+            let svg = p.svg.get_or_init(|| {
+                Bytes::from_string(if p.with_texts {
+                    p.scene.svg(SANS_FAMILY)
+                } else {
+                    p.scene.drawing.svg()
+                })
+            });
+            return Ok(svg.clone());
         }
         if let Some(source) = self.typesetter.sources.get(&id) {
             return Ok(Bytes::from_string(source.text().to_string()));
