@@ -210,7 +210,11 @@ struct Layout {
 impl Layout {
     fn from_header(header: &str, header_line: usize, file: &str) -> Result<Layout, ReadError> {
         let sep = detect_separator(header);
-        let (columns, names, temps) = classify_header(header, sep, header_line, file)?;
+        let Header {
+            columns,
+            names,
+            temps,
+        } = classify_header(header, sep, header_line, file)?;
         let header_err = |kind| ReadError::new(Location::line(file, header_line), kind);
         let one = |pred: &dyn Fn(&Column) -> bool, what: &str, expected: &str| {
             let found: Vec<usize> = (0..columns.len()).filter(|&k| pred(&columns[k])).collect();
@@ -356,13 +360,20 @@ impl Layout {
     }
 }
 
+/// The header's fields: what each column holds, its name, and the temperature sensors.
+struct Header {
+    columns: Vec<Column>,
+    names: Vec<String>,
+    temps: Vec<String>,
+}
+
 /// Classifies every header field; a column named twice is an error.
 fn classify_header(
     header: &str,
     sep: char,
     header_line: usize,
     file: &str,
-) -> Result<(Vec<Column>, Vec<String>, Vec<String>), ReadError> {
+) -> Result<Header, ReadError> {
     let err = |column, kind| ReadError::new(Location::at(file, header_line, column), kind);
     let mut temps = Vec::new();
     let mut columns = Vec::new();
@@ -376,7 +387,11 @@ fn classify_header(
         columns.push(column);
         names.push(name);
     }
-    Ok((columns, names, temps))
+    Ok(Header {
+        columns,
+        names,
+        temps,
+    })
 }
 
 /// A target column of one kind with a value column of the other.
