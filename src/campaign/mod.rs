@@ -90,7 +90,7 @@ impl Campaign {
         let (value, index) = yaml::parse(text, &file)?;
         let fail = |located: Located| CampaignError::Invalid(located.in_file(&file));
         let top = top_level(&value, &index).map_err(fail)?;
-        let root = index.value("").or(Some((1, 1)));
+        let root = index.value("");
         let info_value = top.get("campaign").ok_or_else(|| {
             fail(Located::new(
                 root,
@@ -167,13 +167,13 @@ fn top_level<'v>(
         Value::Mapping(top) => top,
         Value::Null => {
             return Err(Located::new(
-                Some((1, 1)),
+                None,
                 "expected a mapping with `campaign:` and `machines:`, got an empty file",
             ));
         }
         other => {
             return Err(Located::new(
-                index.value("").or(Some((1, 1))),
+                index.value(""),
                 format!(
                     "expected a mapping with `campaign:` and `machines:`, got {}",
                     yaml::describe(other)
@@ -182,7 +182,16 @@ fn top_level<'v>(
         }
     };
     for key in top.keys() {
-        let name = key.as_str().unwrap_or("");
+        let name = key.as_str().map_or_else(
+            || {
+                serde_norway::to_string(key)
+                    .unwrap_or_default()
+                    .trim()
+                    .to_string()
+            },
+            str::to_string,
+        );
+        let name = name.as_str();
         if !TOP_KEYS.contains(&name) {
             let hint = crate::suggest::hint(name, &TOP_KEYS);
             return Err(Located::new(
@@ -325,7 +334,8 @@ machines:
         assert!(matches!(
             parse("campaign: {name: x, standard: gots27843}\nmachines: []\n"),
             Err(CampaignError::Invalid(YamlError {
-                at: Some((1, 31)),
+                line: 1,
+                column: 31,
                 ..
             }))
         ));

@@ -210,25 +210,10 @@ struct Layout {
 impl Layout {
     fn from_header(header: &str, header_line: usize, file: &str) -> Result<Layout, ReadError> {
         let sep = detect_separator(header);
-        let Header {
-            columns,
-            names,
-            temps,
-        } = classify_header(header, sep, header_line, file)?;
+        let fields = classify_header(header, sep, header_line, file)?;
         let header_err = |kind| ReadError::new(Location::line(file, header_line), kind);
         let one = |pred: &dyn Fn(&Column) -> bool, what: &str, expected: &str| {
-            let found: Vec<usize> = (0..columns.len()).filter(|&k| pred(&columns[k])).collect();
-            match found.as_slice() {
-                [] => Err(header_err(ReadErrorKind::MissingColumn {
-                    expected: expected.into(),
-                })),
-                [k] => Ok(*k),
-                [a, b, ..] => Err(header_err(ReadErrorKind::ConflictingColumns {
-                    first: names[*a].clone(),
-                    second: names[*b].clone(),
-                    what: what.into(),
-                })),
-            }
+            fields.only(pred, what, expected).map_err(header_err)
         };
         let target = one(
             &|c| matches!(c, Column::Target(_)),
@@ -242,6 +227,11 @@ impl Layout {
         )?;
         let direction = one(&|c| *c == Column::Direction, "direction", "`direction`")?;
         let run = one(&|c| *c == Column::Run, "run", "`run`")?;
+        let Header {
+            columns,
+            names,
+            temps,
+        } = fields;
         let time = columns.iter().position(|c| *c == Column::TimeS);
         let Column::Target(kind) = columns[target] else {
             unreachable!("target column classified above")
@@ -365,6 +355,31 @@ struct Header {
     columns: Vec<Column>,
     names: Vec<String>,
     temps: Vec<String>,
+}
+
+impl Header {
+    /// The one column `pred` picks: none is a missing column, two are a conflict.
+    fn only(
+        &self,
+        pred: &dyn Fn(&Column) -> bool,
+        what: &str,
+        expected: &str,
+    ) -> Result<usize, ReadErrorKind> {
+        let found: Vec<usize> = (0..self.columns.len())
+            .filter(|&k| pred(&self.columns[k]))
+            .collect();
+        match found.as_slice() {
+            [] => Err(ReadErrorKind::MissingColumn {
+                expected: expected.into(),
+            }),
+            [k] => Ok(*k),
+            [a, b, ..] => Err(ReadErrorKind::ConflictingColumns {
+                first: self.names[*a].clone(),
+                second: self.names[*b].clone(),
+                what: what.into(),
+            }),
+        }
+    }
 }
 
 /// Classifies every header field; a column named twice is an error.

@@ -1,6 +1,6 @@
 //! The axis error model: what the deviation X_ij of one reading is made of.
 //!
-//! Terms (seed 003, Hemingray et al.: progressive and periodic error, lost motion, drift,
+//! Terms (Hemingray, Cowley & Burdekin 1971: progressive and periodic error, lost motion, drift,
 //! thermal growth, scatter): a linear scale error, a smooth systematic shape, periodic
 //! errors, a reversal value (constant or varying linearly along the axis), a drift in
 //! time uniform along the axis, a thermal growth proportional to position × time,
@@ -10,7 +10,7 @@
 use crate::units::{AxisKind, Direction};
 use serde::{Deserialize, Serialize};
 
-/// A periodic error along the axis, e.g. lead-screw pitch error (seed 003, section 4).
+/// A periodic error along the axis, e.g. lead-screw pitch error (Hemingray et al. 1971, §4).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PeriodicTerm {

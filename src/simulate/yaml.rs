@@ -121,7 +121,7 @@ fn spelling(key: &Key, kind: AxisKind) -> &'static str {
 
 /// The axis kind the file declares, read first: it decides how every other key is spelled.
 pub(crate) fn kind(value: &Value, index: &LocationIndex) -> Result<AxisKind, Located> {
-    let root = index.value("").or(Some((1, 1)));
+    let root = index.value("");
     let expected = "expected a mapping with kind, model and plan";
     match value {
         Value::Mapping(_) => {}
@@ -184,10 +184,12 @@ fn check(
         Value::Mapping(map) => {
             for (k, v) in map {
                 let Some(name) = k.as_str() else {
-                    return Err(Located::new(
-                        index.value(path),
-                        format!("{path}: keys must be text"),
-                    ));
+                    let message = format!("keys are names, got {} as a key", describe(k));
+                    let message = match path {
+                        "" => message,
+                        _ => format!("{path}: {message}"),
+                    };
+                    return Err(Located::new(index.value(path), message));
                 };
                 let here = join(path, name);
                 let entry = spelled(ctx, kind, name).ok_or_else(|| {

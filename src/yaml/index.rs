@@ -9,6 +9,8 @@ use std::collections::HashMap;
 pub struct LocationIndex {
     keys: HashMap<String, (usize, usize)>,
     values: HashMap<String, (usize, usize)>,
+    /// Where each YAML document of the stream starts.
+    documents: Vec<(usize, usize)>,
 }
 
 enum Frame {
@@ -76,6 +78,7 @@ impl LocationIndex {
                 Event::MappingEnd | Event::SequenceEnd => {
                     stack.pop();
                 }
+                Event::DocumentStart(_) => index.documents.push(at),
                 _ => {}
             }
         }
@@ -97,6 +100,11 @@ impl LocationIndex {
             let cut = p.rfind(['.', '['])?;
             p.truncate(cut);
         }
+    }
+
+    /// Where the second YAML document of the stream starts, if there is one.
+    pub fn second_document(&self) -> Option<(usize, usize)> {
+        self.documents.get(1).copied()
     }
 
     /// Where the key at `path` is written, or failing that its value or nearest parent.

@@ -11,26 +11,19 @@ pub use words::{describe, keyword, names_of, not_a_name, optional_keyword, or_li
 
 use serde_norway::Value;
 
-/// An error in a YAML file, at a line and column where there is one.
+/// An error in a YAML file: `file:line:column: message`.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{}", self.render())]
+#[error("{file}:{line}:{column}: {message}")]
 pub struct YamlError {
     pub file: String,
-    /// Line and column, both 1-based.
-    pub at: Option<(usize, usize)>,
+    /// 1-based.
+    pub line: usize,
+    /// 1-based, in characters.
+    pub column: usize,
     pub message: String,
 }
 
-impl YamlError {
-    fn render(&self) -> String {
-        match self.at {
-            Some((line, column)) => format!("{}:{line}:{column}: {}", self.file, self.message),
-            None => format!("{}: {}", self.file, self.message),
-        }
-    }
-}
-
-/// A message with an optional (line, column), before the file is named.
+/// A message with its (line, column) when known, before the file is named.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Located {
     pub at: Option<(usize, usize)>,
@@ -45,11 +38,13 @@ impl Located {
         }
     }
 
-    /// The error in `file`.
+    /// The error in `file`; without a known place, at the start of the document.
     pub fn in_file(self, file: &str) -> YamlError {
+        let (line, column) = self.at.unwrap_or((1, 1));
         YamlError {
             file: file.to_string(),
-            at: self.at,
+            line,
+            column,
             message: self.message,
         }
     }
@@ -74,7 +69,8 @@ pub fn path_string(path: &serde_path_to_error::Path) -> String {
                 }
                 out.push_str(variant);
             }
-            Segment::Unknown => out.push_str(".?"),
+            // A key that is not text: the error is the mapping's.
+            Segment::Unknown => {}
         }
     }
     out
@@ -158,6 +154,11 @@ pub fn deserialize_spelled<T: serde::de::DeserializeOwned>(
     spell: &dyn Fn(&str, &str) -> String,
 ) -> Result<T, Located> {
     serde_path_to_error::deserialize(value).map_err(|e| {
+        let bad_key = e
+            .path()
+            .iter()
+            .next_back()
+            .is_some_and(|s| matches!(s, serde_path_to_error::Segment::Unknown));
         let found = value_at(value, e.path());
         let path = full_path(base, &path_string(e.path()));
         let raw = e.into_inner().to_string();
@@ -174,11 +175,14 @@ pub fn deserialize_spelled<T: serde::de::DeserializeOwned>(
                 format!("{key_path}: {message}"),
             );
         }
-        let message = words::in_words(&message, last_key(&path), found, &|field| {
-            spell(&path, field)
-        });
-        // Only an empty document has no location: its start is where the value is missing.
-        let at = index.value(&path).or(Some((1, 1)));
+        let message = if bad_key {
+            words::key_in_words(&message)
+        } else {
+            words::in_words(&message, last_key(&path), found, &|field| {
+                spell(&path, field)
+            })
+        };
+        let at = index.value(&path);
         Located::new(
             at,
             if path.is_empty() {
@@ -220,7 +224,10 @@ fn syntax_error(
         return Located::new(Some(at), message).in_file(file);
     }
     let Some(loc) = e.location() else {
-        return Located::new(second_document(text), message).in_file(file);
+        // An error about the document as a whole (a second document, aliases that expand
+        // too far): at the second document's start when there is one, else the first's.
+        let at = index.second_document().unwrap_or((1, 1));
+        return Located::new(Some(at), message).in_file(file);
     };
     let line = text.lines().nth(loc.line().saturating_sub(1)).unwrap_or("");
     let hint = if line.trim_end().starts_with([' ', '\t']) && line.contains('\t')
@@ -231,20 +238,6 @@ fn syntax_error(
         ""
     };
     Located::new(Some((loc.line(), loc.column())), format!("{message}{hint}")).in_file(file)
-}
-
-/// Where a second document starts (a `---` line after content), for the error that
-/// the file holds more than one.
-fn second_document(text: &str) -> Option<(usize, usize)> {
-    let mut content = false;
-    for (k, line) in text.lines().enumerate() {
-        let start = line == "---" || line.starts_with("--- ");
-        if start && content {
-            return Some((k + 1, 1));
-        }
-        content |= !start && !line.trim().is_empty() && !line.trim_start().starts_with('#');
-    }
-    None
 }
 
 #[cfg(test)]

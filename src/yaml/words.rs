@@ -176,6 +176,18 @@ pub fn in_words(
     message.to_string()
 }
 
+/// A serde message about a key that is not text (`1: 2`, `[a]: 1`) in words.
+pub fn key_in_words(message: &str) -> String {
+    let unexpected = message
+        .strip_prefix("invalid type: ")
+        .and_then(|r| r.rsplit_once(", expected "))
+        .map_or(message, |(unexpected, _)| unexpected);
+    format!(
+        "keys are names, got {} as a key",
+        describe_unexpected(unexpected)
+    )
+}
+
 /// The names a unit-variant enum `T` is written as, from its own deserializer (its error
 /// for an unknown name lists them).
 pub fn names_of<T: DeserializeOwned>() -> Vec<String> {

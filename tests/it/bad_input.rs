@@ -315,6 +315,19 @@ proptest! {
         let _ = axcheck::campaign::Campaign::parse(&text, std::path::Path::new("fuzz.yaml"));
     }
 
+    /// Simulation files too.
+    #[test]
+    fn mutated_simulations_never_panic(pos in 0usize..5_000, byte in any::<u8>(), cut in any::<bool>()) {
+        let mut bytes = include_bytes!("../../example-campaign/models/hmc02-b.yaml").to_vec();
+        let k = pos % bytes.len();
+        if cut {
+            bytes.truncate(k);
+        } else {
+            bytes[k] = byte;
+        }
+        let _ = axcheck::simulate::Simulation::from_yaml(&String::from_utf8_lossy(&bytes), "fuzz.yaml");
+    }
+
     /// Specs too.
     #[test]
     fn mutated_specs_never_panic(pos in 0usize..5_000, byte in any::<u8>()) {
@@ -429,12 +442,53 @@ fn campaign_axis_errors_in_the_users_words() {
             "c.yaml:5:48: machines[0].axes[0].data.glb: unknown key `glb` (did you mean `glob`?); expected {dir: FOLDER, glob: PATTERN}",
         ),
         (
+            format!("{{{base}, 1: 2}}"),
+            "c.yaml:5:9: machines[0].axes[0]: keys are names, got the number 1 as a key",
+        ),
+        (
+            format!("{{{base}, tolerances: {{1: 2}}}}"),
+            "c.yaml:5:58: machines[0].axes[0].tolerances: keys are names, got the number 1 as a key",
+        ),
+        (
             "[X, linear]".into(),
             "c.yaml:5:9: machines[0].axes[0]: expected a mapping (key: value), got a list of 2 items",
         ),
     ];
     for (entry, want) in cases {
         assert_eq!(axis_error(&entry), want, "{entry}");
+    }
+}
+
+/// A campaign that cannot be read at all: the top level.
+#[test]
+fn campaign_top_level_errors_in_the_users_words() {
+    let cases = [
+        (
+            "5: 1\ncampaign: {name: x}\nmachines: []\n",
+            "c.yaml:1:1: unknown key `5`; expected campaign, machines",
+        ),
+        (
+            "campaign: {name: x, 3: 4}\nmachines: []\n",
+            "c.yaml:1:11: campaign: keys are names, got the number 3 as a key",
+        ),
+        (
+            "campaign: {name: x, standard: vdi341}\nmachines: []\n",
+            "c.yaml:1:31: campaign.standard: unknown standard `vdi341` (did you mean `vdi3441`?); expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba",
+        ),
+        (
+            "campaign: {name: x, output: {pdf: maybe}}\nmachines: []\n",
+            "c.yaml:1:35: campaign.output.pdf: expected true or false, got the text `maybe`",
+        ),
+        (
+            "campaign: {name: x}\n",
+            "c.yaml:1:1: missing the `machines:` list",
+        ),
+    ];
+    for (text, want) in cases {
+        let e = axcheck::campaign::Campaign::parse(text, std::path::Path::new("c.yaml"))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(e, want, "{text}");
     }
 }
 
@@ -588,6 +642,10 @@ fn simulation_errors_in_the_users_words() {
         (
             "kind: linear\nmodel: {run_offsets_um: [1, 2]}\nplan: {targets_mm: [0, 100], runs: 3}\n".into(),
             "m.yaml:2:25: model.run_offsets_um has 2 values but the plan has 3 runs",
+        ),
+        (
+            format!("kind: linear\nmodel: {{1: 2}}\n{plan}"),
+            "m.yaml:2:8: model: keys are names, got the number 1 as a key",
         ),
         (
             "kind: linear\nplan: {targets_mm: [0, 100]\n".into(),
