@@ -201,10 +201,10 @@ fn load_spec(dir: &Path, name: &str, allow_outside: bool) -> Result<Spec, String
     if candidate.is_file() {
         let text = std::fs::read_to_string(&candidate)
             .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;
-        return Spec::from_yaml(&text, &candidate.display().to_string());
+        return Spec::from_yaml(&text, &candidate.display().to_string()).map_err(|e| e.to_string());
     }
     if !is_path && let Some((_, text)) = judge::BUILTIN_SPECS.iter().find(|(n, _)| *n == name) {
-        return Spec::from_yaml(text, &format!("built-in spec {name}"));
+        return Spec::from_yaml(text, &format!("built-in spec {name}")).map_err(|e| e.to_string());
     }
     let builtin: Vec<&str> = judge::BUILTIN_SPECS.iter().map(|(n, _)| *n).collect();
     Err(format!(

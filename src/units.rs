@@ -163,11 +163,55 @@ pub fn fmt_position(value: f64) -> String {
 }
 
 /// Axis travel: a length (`1200`) or the coordinates of its ends (`[-600, 600]`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Travel {
     Length(f64),
     Range([f64; 2]),
+}
+
+/// Reads either form, and says which two it accepts when given neither (an untagged
+/// derive would only say that no variant matched).
+impl<'de> Deserialize<'de> for Travel {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Travel, D::Error> {
+        struct TravelVisitor;
+
+        impl<'de> serde::de::Visitor<'de> for TravelVisitor {
+            type Value = Travel;
+
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a length (600) or its two ends ([0, 600])")
+            }
+
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Travel, E> {
+                Ok(Travel::Length(v))
+            }
+
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Travel, E> {
+                Ok(Travel::Length(v as f64))
+            }
+
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Travel, E> {
+                Ok(Travel::Length(v as f64))
+            }
+
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<Travel, A::Error> {
+                let mut ends = Vec::new();
+                while let Some(end) = seq.next_element::<f64>()? {
+                    ends.push(end);
+                }
+                match ends[..] {
+                    [a, b] => Ok(Travel::Range([a, b])),
+                    _ => Err(serde::de::Error::invalid_length(ends.len(), &self)),
+                }
+            }
+        }
+
+        deserializer.deserialize_any(TravelVisitor)
+    }
 }
 
 impl Travel {

@@ -4,6 +4,7 @@
 //! of that folder with `..` is refused unless the campaign sets `allow_outside_paths:
 //! true`: a campaign copied between machines should not silently read other files.
 
+use crate::yaml::describe;
 use std::path::{Component, Path, PathBuf};
 
 /// The `data:` of an axis.
@@ -15,43 +16,52 @@ pub enum DataSource {
     Glob { dir: String, glob: String },
 }
 
+/// A `data:` that is none of its forms: where in it (`""`, `[1]`, `.dir`), whether the
+/// key or its value is wrong, and what was expected.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BadData {
+    /// Path below `data`.
+    pub path: String,
+    /// The key at `path` is wrong (unknown), not its value.
+    pub at_key: bool,
+    pub message: String,
+}
+
+impl BadData {
+    fn value(path: impl Into<String>, message: String) -> BadData {
+        BadData {
+            path: path.into(),
+            at_key: false,
+            message,
+        }
+    }
+}
+
+/// What `data:` may be, for messages.
+const FORMS: &str = "a file path, a list of paths, or {dir: FOLDER, glob: PATTERN}";
+
 impl DataSource {
-    pub fn from_value(value: &serde_norway::Value) -> Result<DataSource, String> {
+    pub fn from_value(value: &serde_norway::Value) -> Result<DataSource, BadData> {
         use serde_norway::Value;
         match value {
             Value::String(s) if !s.trim().is_empty() => Ok(DataSource::Files(vec![s.clone()])),
             Value::Sequence(items) if !items.is_empty() => items
                 .iter()
-                .map(|v| v.as_str().map(str::to_string).ok_or(()))
+                .enumerate()
+                .map(|(k, v)| match v {
+                    Value::String(s) if !s.trim().is_empty() => Ok(s.clone()),
+                    other => Err(BadData::value(
+                        format!("[{k}]"),
+                        format!("expected a file path, got {}", describe(other)),
+                    )),
+                })
                 .collect::<Result<Vec<_>, _>>()
-                .map(DataSource::Files)
-                .map_err(|_| "expected a list of file paths".to_string()),
-            Value::Mapping(map) => {
-                let mut dir = None;
-                let mut glob = None;
-                for (k, v) in map {
-                    match (k.as_str(), v.as_str()) {
-                        (Some("dir"), Some(d)) => dir = Some(d.to_string()),
-                        (Some("glob"), Some(g)) => glob = Some(g.to_string()),
-                        (Some(other), _) => {
-                            return Err(format!(
-                                "unknown key `{other}`; expected {{dir: FOLDER, glob: PATTERN}}"
-                            ));
-                        }
-                        _ => return Err("expected {dir: FOLDER, glob: PATTERN}".into()),
-                    }
-                }
-                match (dir, glob) {
-                    (Some(dir), Some(glob)) => Ok(DataSource::Glob { dir, glob }),
-                    _ => Err(
-                        "expected both `dir` and `glob`, e.g. {dir: data/vmc07, glob: \"x-*.csv\"}"
-                            .into(),
-                    ),
-                }
-            }
-            _ => {
-                Err("expected a file path, a list of paths, or {dir: FOLDER, glob: PATTERN}".into())
-            }
+                .map(DataSource::Files),
+            Value::Mapping(map) => glob_from_map(map),
+            other => Err(BadData::value(
+                "",
+                format!("expected {FORMS}, got {}", describe(other)),
+            )),
         }
     }
 
@@ -97,6 +107,47 @@ impl DataSource {
                 Ok(found)
             }
         }
+    }
+}
+
+/// `{dir: FOLDER, glob: PATTERN}`.
+fn glob_from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
+    let (mut dir, mut glob) = (None, None);
+    for (k, v) in map {
+        let Some(key) = k.as_str() else {
+            return Err(BadData::value(
+                "",
+                "expected {dir: FOLDER, glob: PATTERN}".into(),
+            ));
+        };
+        let (slot, what) = match key {
+            "dir" => (&mut dir, "a folder"),
+            "glob" => (&mut glob, "a pattern such as \"*.csv\""),
+            other => {
+                return Err(BadData {
+                    path: format!(".{other}"),
+                    at_key: true,
+                    message: format!(
+                        "unknown key `{other}`{}; expected {{dir: FOLDER, glob: PATTERN}}",
+                        crate::suggest::hint(other, &["dir", "glob"])
+                    ),
+                });
+            }
+        };
+        match v.as_str() {
+            Some(text) => *slot = Some(text.to_string()),
+            None => {
+                let message = format!("expected {what}, got {}", describe(v));
+                return Err(BadData::value(format!(".{key}"), message));
+            }
+        }
+    }
+    match (dir, glob) {
+        (Some(dir), Some(glob)) => Ok(DataSource::Glob { dir, glob }),
+        _ => Err(BadData::value(
+            "",
+            "expected both `dir` and `glob`, e.g. {dir: data/vmc07, glob: \"x-*.csv\"}".into(),
+        )),
     }
 }
 
@@ -173,13 +224,33 @@ mod tests {
             }
         );
         let v: serde_norway::Value = serde_norway::from_str("{dir: d}").unwrap();
-        assert!(DataSource::from_value(&v).unwrap_err().contains("both"));
+        assert!(
+            DataSource::from_value(&v)
+                .unwrap_err()
+                .message
+                .contains("both")
+        );
         let v: serde_norway::Value = serde_norway::from_str("[a.csv, b.csv]").unwrap();
         assert_eq!(
             DataSource::from_value(&v).unwrap(),
             DataSource::Files(vec!["a.csv".into(), "b.csv".into()])
         );
         let v: serde_norway::Value = serde_norway::from_str("12").unwrap();
-        assert!(DataSource::from_value(&v).is_err());
+        assert_eq!(
+            DataSource::from_value(&v).unwrap_err().message,
+            "expected a file path, a list of paths, or {dir: FOLDER, glob: PATTERN}, got the number 12"
+        );
+        let v: serde_norway::Value = serde_norway::from_str("[a.csv, 2]").unwrap();
+        let e = DataSource::from_value(&v).unwrap_err();
+        assert_eq!(
+            (e.path.as_str(), e.message.as_str()),
+            ("[1]", "expected a file path, got the number 2")
+        );
+        let v: serde_norway::Value = serde_norway::from_str("{dir: [d], glob: x}").unwrap();
+        let e = DataSource::from_value(&v).unwrap_err();
+        assert_eq!(
+            (e.path.as_str(), e.message.as_str()),
+            (".dir", "expected a folder, got a list of 1 item")
+        );
     }
 }

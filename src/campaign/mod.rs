@@ -5,6 +5,7 @@
 //! campaign is still evaluated. Every error names the campaign file, line and column.
 
 pub mod data;
+mod load;
 pub mod model;
 
 pub use model::{
@@ -13,16 +14,23 @@ pub use model::{
 };
 
 use crate::evaluate::StandardId;
-use crate::units::Travel;
-use crate::yaml::{self, LocationIndex, deserialize_at};
+use crate::yaml::{self, Located, LocationIndex, YamlError, deserialize_at};
 use data::DataSource;
+use serde_norway::Value;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// A campaign that could not be read at all.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct CampaignError(pub String);
+pub enum CampaignError {
+    /// The file cannot be read from disk.
+    #[error("{file}: cannot read the campaign file: {reason}")]
+    Unreadable { file: String, reason: String },
+    /// The file is not a campaign: bad YAML, a broken top level or `campaign:` block,
+    /// or two machines with one id.
+    #[error(transparent)]
+    Invalid(#[from] YamlError),
+}
 
 /// A loaded campaign.
 #[derive(Debug, Clone)]
@@ -63,14 +71,15 @@ pub struct AxisSpec {
     pub line: usize,
 }
 
+/// The two keys of a campaign file.
+const TOP_KEYS: [&str; 2] = ["campaign", "machines"];
+
 impl Campaign {
     /// Loads a campaign file from disk.
     pub fn load(path: &Path) -> Result<Campaign, CampaignError> {
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            CampaignError(format!(
-                "{}: cannot read the campaign file: {e}",
-                path.display()
-            ))
+        let text = std::fs::read_to_string(path).map_err(|e| CampaignError::Unreadable {
+            file: path.display().to_string(),
+            reason: e.to_string(),
         })?;
         Campaign::parse(&text, path)
     }
@@ -78,85 +87,50 @@ impl Campaign {
     /// Parses campaign `text` read from `path`.
     pub fn parse(text: &str, path: &Path) -> Result<Campaign, CampaignError> {
         let file = path.display().to_string();
-        // Two independent passes over the text: the values and their locations.
-        let (value, index) = rayon::join(
-            || serde_norway::from_str::<serde_norway::Value>(text),
-            || LocationIndex::new(text),
-        );
-        let value = value.map_err(|e| CampaignError(yaml::syntax_error(&e, &file, text)))?;
-        let fail = |located: yaml::Located| CampaignError(located.in_file(&file));
-        let serde_norway::Value::Mapping(mut top) = value else {
-            return Err(CampaignError(format!(
-                "{file}: expected a mapping with `campaign:` and `machines:`"
-            )));
-        };
-        for key in top.keys() {
-            let name = key.as_str().unwrap_or("");
-            if name != "campaign" && name != "machines" {
-                let hint = crate::suggest::hint(name, &["campaign", "machines"]);
-                return Err(fail(yaml::Located {
-                    at: index.key(name),
-                    message: format!("unknown key `{name}`{hint}; expected campaign, machines"),
-                }));
-            }
-        }
-        let info_value = top.remove("campaign").ok_or_else(|| {
-            CampaignError(format!(
-                "{file}: missing the `campaign:` block (name, date, standard …)"
+        let (value, index) = yaml::parse(text, &file)?;
+        let fail = |located: Located| CampaignError::Invalid(located.in_file(&file));
+        let top = top_level(&value, &index).map_err(fail)?;
+        let root = index.value("");
+        let info_value = top.get("campaign").ok_or_else(|| {
+            fail(Located::new(
+                root,
+                "missing the `campaign:` block (name, date, standard …)",
             ))
         })?;
         let info: CampaignInfo = deserialize_at(info_value, "campaign", &index).map_err(fail)?;
         let standard = match &info.standard {
             None => StandardId::Iso230_2,
-            Some(s) => StandardId::parse(s).ok_or_else(|| {
-                fail(yaml::Located {
-                    at: index.value("campaign.standard"),
-                    message: unknown_standard(s),
-                })
-            })?,
+            Some(s) => parse_standard(s, "campaign.standard", &index).map_err(fail)?,
         };
-        if let Some(date) = &info.date
-            && !is_iso_date(date)
-        {
-            return Err(fail(yaml::Located {
-                at: index.value("campaign.date"),
-                message: format!("campaign.date: expected YYYY-MM-DD, found `{date}`"),
-            }));
-        }
-        let machines_value = top
-            .remove("machines")
-            .ok_or_else(|| CampaignError(format!("{file}: missing the `machines:` list")))?;
-        let serde_norway::Value::Sequence(machine_values) = machines_value else {
-            return Err(fail(yaml::Located {
-                at: index.value("machines"),
-                message: "machines: expected a list of machines".into(),
-            }));
+        let machine_values = match top.get("machines") {
+            None => return Err(fail(Located::new(root, "missing the `machines:` list"))),
+            Some(Value::Sequence(items)) => items,
+            Some(other) => {
+                let message = format!(
+                    "machines: expected a list of machines, got {}",
+                    yaml::describe(other)
+                );
+                return Err(fail(Located::new(index.value("machines"), message)));
+            }
         };
-        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         // Machines are independent: load them in parallel (a fleet has thousands of axes).
         use rayon::prelude::*;
         let machines: Vec<Machine> = machine_values
-            .into_par_iter()
+            .par_iter()
             .enumerate()
             .map(|(m, value)| {
-                load_machine(
-                    value,
-                    &format!("machines[{m}]"),
-                    &index,
-                    &file,
-                    &info,
-                    standard,
-                )
+                let base = format!("machines[{m}]");
+                load::machine(value, &base, &index, &file, &info, standard)
             })
             .collect();
         let campaign = Campaign {
             file: path.to_path_buf(),
-            dir,
+            dir: path.parent().map(Path::to_path_buf).unwrap_or_default(),
             info,
             standard,
             machines,
         };
-        campaign.check_unique_names(&index)?;
+        campaign.check_unique_names(&index).map_err(fail)?;
         Ok(campaign)
     }
 
@@ -167,21 +141,16 @@ impl Campaign {
             .flat_map(|m| m.axes.iter().map(move |a| (m, a)))
     }
 
-    fn check_unique_names(&self, index: &LocationIndex) -> Result<(), CampaignError> {
-        let file = self.file.display().to_string();
+    fn check_unique_names(&self, index: &LocationIndex) -> Result<(), Located> {
         let mut machines = BTreeMap::new();
         for (m, machine) in self.machines.iter().enumerate() {
             if let Some(first) = machines.insert(machine.info.id.clone(), m) {
-                let at = index.value(&format!("machines[{m}].id"));
-                return Err(CampaignError(
-                    yaml::Located {
-                        at,
-                        message: format!(
-                            "machine id `{}` is used twice (machines[{first}] and machines[{m}]); ids must be unique",
-                            machine.info.id
-                        ),
-                    }
-                    .in_file(&file),
+                return Err(Located::new(
+                    index.value(&format!("machines[{m}].id")),
+                    format!(
+                        "machine id `{}` is used twice (machines[{first}] and machines[{m}]); ids must be unique",
+                        machine.info.id
+                    ),
                 ));
             }
         }
@@ -189,206 +158,71 @@ impl Campaign {
     }
 }
 
-fn unknown_standard(s: &str) -> String {
-    format!("unknown standard `{s}`; expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba")
-}
-
-fn is_iso_date(s: &str) -> bool {
-    let b = s.as_bytes();
-    b.len() == 10
-        && b[4] == b'-'
-        && b[7] == b'-'
-        && b.iter()
-            .enumerate()
-            .all(|(k, c)| k == 4 || k == 7 || c.is_ascii_digit())
-        && matches!(s[5..7].parse::<u32>(), Ok(1..=12))
-        && matches!(s[8..10].parse::<u32>(), Ok(1..=31))
-}
-
-fn load_machine(
-    value: serde_norway::Value,
-    base: &str,
+/// The top level: a mapping of `campaign:` and `machines:` and nothing else.
+fn top_level<'v>(
+    value: &'v Value,
     index: &LocationIndex,
-    file: &str,
-    campaign: &CampaignInfo,
-    standard: StandardId,
-) -> Machine {
-    let fallback_id = value
-        .get("id")
-        .and_then(|v| v.as_str())
-        .map_or_else(|| base.to_string(), str::to_string);
-    // Only a broken machine needs its axes' names; take them, not a copy of the axes.
-    let axis_names: Vec<String> = match value.get("axes") {
-        Some(serde_norway::Value::Sequence(items)) => items
-            .iter()
-            .enumerate()
-            .map(|(a, v)| axis_name(v, a))
-            .collect(),
-        _ => Vec::new(),
-    };
-    match deserialize_at::<MachineInfo>(value, base, index) {
-        Ok(mut info) => {
-            let axes = match std::mem::take(&mut info.axes) {
-                serde_norway::Value::Sequence(items) => items
-                    .into_iter()
-                    .enumerate()
-                    .map(|(a, v)| {
-                        load_axis(
-                            v,
-                            &format!("{base}.axes[{a}]"),
-                            index,
-                            file,
-                            campaign,
-                            standard,
-                        )
-                    })
-                    .collect(),
-                serde_norway::Value::Null => Vec::new(),
-                _ => vec![AxisEntry {
-                    name: "axes".into(),
-                    spec: Err(yaml::Located {
-                        at: index.value(&format!("{base}.axes")),
-                        message: format!("{base}.axes: expected a list of axes"),
-                    }
-                    .in_file(file)),
-                }],
-            };
-            Machine { info, axes }
+) -> Result<&'v serde_norway::Mapping, Located> {
+    let top = match value {
+        Value::Mapping(top) => top,
+        Value::Null => {
+            return Err(Located::new(
+                None,
+                "expected a mapping with `campaign:` and `machines:`, got an empty file",
+            ));
         }
-        Err(e) => {
-            // The machine is broken: each of its axes reports why (or one entry if none).
-            let message = e.in_file(file);
-            let names = if axis_names.is_empty() {
-                vec!["(all axes)".to_string()]
-            } else {
-                axis_names
-            };
-            Machine {
-                info: MachineInfo {
-                    id: fallback_id,
-                    ..MachineInfo::default()
-                },
-                axes: names
-                    .into_iter()
-                    .map(|name| AxisEntry {
-                        name,
-                        spec: Err(message.clone()),
-                    })
-                    .collect(),
-            }
+        other => {
+            return Err(Located::new(
+                index.value(""),
+                format!(
+                    "expected a mapping with `campaign:` and `machines:`, got {}",
+                    yaml::describe(other)
+                ),
+            ));
+        }
+    };
+    for key in top.keys() {
+        let name = key.as_str().map_or_else(
+            || {
+                serde_norway::to_string(key)
+                    .unwrap_or_default()
+                    .trim()
+                    .to_string()
+            },
+            str::to_string,
+        );
+        let name = name.as_str();
+        if !TOP_KEYS.contains(&name) {
+            let hint = crate::suggest::hint(name, &TOP_KEYS);
+            return Err(Located::new(
+                index.key(name),
+                format!("unknown key `{name}`{hint}; expected campaign, machines"),
+            ));
         }
     }
+    Ok(top)
 }
 
-fn axis_name(value: &serde_norway::Value, a: usize) -> String {
-    value
-        .get("name")
-        .and_then(|v| {
-            v.as_str()
-                .map(str::to_string)
-                .or_else(|| v.as_i64().map(|n| n.to_string()))
-        })
-        .unwrap_or_else(|| format!("axis {}", a + 1))
-}
-
-fn load_axis(
-    value: serde_norway::Value,
-    base: &str,
-    index: &LocationIndex,
-    file: &str,
-    campaign: &CampaignInfo,
-    default_standard: StandardId,
-) -> AxisEntry {
-    let name = axis_name(
-        &value,
-        base.rsplit('[')
-            .next()
-            .and_then(|s| s.trim_end_matches(']').parse().ok())
-            .unwrap_or(0),
-    );
-    let line = index.value(base).map_or(0, |(l, _)| l);
-    let spec = (|| -> Result<AxisSpec, yaml::Located> {
-        let raw: AxisRaw = deserialize_at(value, base, index)?;
-        let at = |key: &str| index.value(&format!("{base}.{key}"));
-        let standard = match &raw.standard {
-            None => default_standard,
-            Some(s) => StandardId::parse(s).ok_or_else(|| yaml::Located {
-                at: at("standard"),
-                message: format!("{base}.standard: {}", unknown_standard(s)),
-            })?,
-        };
-        let data = DataSource::from_value(&raw.data).map_err(|message| yaml::Located {
-            at: at("data"),
-            message: format!("{base}.data: {message}"),
-        })?;
-        if let Some(t) = raw.travel {
-            let ok = match t {
-                Travel::Length(l) => l > 0.0 && l.is_finite(),
-                Travel::Range([a, b]) => b > a && a.is_finite() && b.is_finite(),
-            };
-            if !ok {
-                return Err(yaml::Located {
-                    at: at("travel"),
-                    message: format!(
-                        "{base}.travel: expected a length > 0 or [start, end] with end > start"
-                    ),
-                });
-            }
-        }
-        if let Some([a, b]) = raw.measurement_travel
-            && !(b > a && a.is_finite() && b.is_finite())
-        {
-            return Err(yaml::Located {
-                at: at("measurement_travel"),
-                message: format!(
-                    "{base}.measurement_travel: expected [first, last] with last > first"
-                ),
-            });
-        }
-        if let Some(p) = raw.pitch
-            && !(p > 0.0 && p.is_finite())
-        {
-            return Err(yaml::Located {
-                at: at("pitch"),
-                message: format!("{base}.pitch: expected a pitch > 0"),
-            });
-        }
-        for (key, limit) in &raw.tolerances {
-            if !crate::evaluate::catalogue::is_limitable_key(key) {
-                let known = crate::evaluate::catalogue::limitable_keys();
-                let hint = crate::suggest::hint(key, known);
-                return Err(yaml::Located {
-                    at: index.key(&format!("{base}.tolerances.{key}")),
-                    message: format!("{base}.tolerances: unknown parameter `{key}`{hint}"),
-                });
-            }
-            if !(*limit >= 0.0 && limit.is_finite()) {
-                return Err(yaml::Located {
-                    at: index.value(&format!("{base}.tolerances.{key}")),
-                    message: format!("{base}.tolerances.{key}: expected a limit ≥ 0"),
-                });
-            }
-        }
-        Ok(AxisSpec {
-            standard,
-            // `spec: none` opts an axis out of the campaign's default spec.
-            spec: match raw.spec.as_deref() {
-                Some("none") => None,
-                Some(name) => Some(name.to_string()),
-                None => campaign.spec.clone().filter(|s| s != "none"),
-            },
-            data,
-            line,
-            raw,
-        })
-    })()
-    .map_err(|e| e.in_file(file));
-    AxisEntry { name, spec }
+/// The standard named at `path`.
+fn parse_standard(name: &str, path: &str, index: &LocationIndex) -> Result<StandardId, Located> {
+    const NAMES: [&str; 5] = ["iso230-2", "gbt17421.2", "gost27843", "vdi3441", "nmtba"];
+    StandardId::parse(name).ok_or_else(|| {
+        let hint = crate::suggest::hint(name, &NAMES);
+        let names: Vec<String> = NAMES.map(str::to_string).to_vec();
+        Located::new(
+            index.value(path),
+            format!(
+                "{path}: unknown standard `{name}`{hint}; expected {}",
+                yaml::or_list(&names)
+            ),
+        )
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::units::Travel;
 
     fn parse(text: &str) -> Result<Campaign, CampaignError> {
         Campaign::parse(text, Path::new("plant/campaign.yaml"))
@@ -450,37 +284,61 @@ machines:
         let text = GOOD.replace("kind: rotary", "kind: rotory");
         let c = parse(&text).unwrap();
         let e = c.machines[0].axes[2].spec.as_ref().unwrap_err();
-        assert!(
-            e.starts_with(
-                "plant/campaign.yaml:18:15: machines[0].axes[2].kind: unknown variant `rotory`"
-            ),
-            "{e}"
+        assert_eq!(
+            e,
+            "plant/campaign.yaml:18:15: machines[0].axes[2].kind: unknown kind `rotory` (did you mean `rotary`?); expected linear or rotary"
         );
     }
 
     #[test]
     fn campaign_level_errors() {
-        let e = parse("campaign: {name: x, dat: 2026-01-01}\nmachines: []\n").unwrap_err();
+        let e = |text: &str| parse(text).unwrap_err().to_string();
         assert!(
-            e.0.starts_with(
+            e("campaign: {name: x, dat: 2026-01-01}\nmachines: []\n").starts_with(
                 "plant/campaign.yaml:1:21: campaign.dat: unknown key `dat` (did you mean `date`?)"
-            ),
-            "{e}"
+            )
         );
-        let e = parse("campaign: {name: x, date: 2026-13-01}\nmachines: []\n").unwrap_err();
-        assert!(e.0.contains("1:27") && e.0.contains("YYYY-MM-DD"), "{e}");
-        let e = parse("campaign: {name: x}\nmachine: []\n").unwrap_err();
+        assert_eq!(
+            e("campaign: {name: x, date: 2026-13-01}\nmachines: []\n"),
+            "plant/campaign.yaml:1:27: campaign.date: expected a date YYYY-MM-DD, got the text `2026-13-01`"
+        );
+        assert_eq!(
+            e("campaign: {name: x}\nmachine: []\n"),
+            "plant/campaign.yaml:2:1: unknown key `machine` (did you mean `machines`?); expected campaign, machines"
+        );
+        let tab = e("campaign:\n\tname: x\nmachines: []\n");
         assert!(
-            e.0.contains("2:1: unknown key `machine` (did you mean `machines`?)"),
-            "{e}"
+            tab.starts_with("plant/campaign.yaml:2:1:") && tab.contains("indented with a tab"),
+            "{tab}"
         );
-        let e = parse("campaign:\n\tname: x\nmachines: []\n").unwrap_err();
-        assert!(
-            e.0.starts_with("plant/campaign.yaml:2:1:") && e.0.contains("indented with a tab"),
-            "{e}"
+        assert_eq!(
+            e("campaign: {name: x\n"),
+            "plant/campaign.yaml:2:1: did not find expected ',' or '}' (while parsing a flow mapping that starts at 1:11)"
         );
-        let e = parse("campaign: {name: x\n").unwrap_err();
-        assert!(e.0.starts_with("plant/campaign.yaml:"), "{e}");
+        assert_eq!(
+            e("machines: []\n"),
+            "plant/campaign.yaml:1:1: missing the `campaign:` block (name, date, standard …)"
+        );
+        assert_eq!(
+            e("campaign: {name: x}\nmachines: {a: 1}\n"),
+            "plant/campaign.yaml:2:11: machines: expected a list of machines, got a mapping with 1 key"
+        );
+        assert_eq!(
+            e(""),
+            "plant/campaign.yaml:1:1: expected a mapping with `campaign:` and `machines:`, got an empty file"
+        );
+        assert_eq!(
+            e("campaign: {name: x}\nmachines: []\n---\nmachines: []\n"),
+            "plant/campaign.yaml:3:1: more than one YAML document (a `---` line starts another); the file holds one"
+        );
+        assert!(matches!(
+            parse("campaign: {name: x, standard: gots27843}\nmachines: []\n"),
+            Err(CampaignError::Invalid(YamlError {
+                line: 1,
+                column: 31,
+                ..
+            }))
+        ));
     }
 
     #[test]

@@ -3,7 +3,10 @@
 
 use crate::simulate::Cycle;
 use crate::units::{AxisKind, Travel};
+use crate::yaml::describe;
+use serde::de::{Deserializer, Error as _, IgnoredAny};
 use serde::{Deserialize, Serialize};
+use serde_norway::Value;
 use std::collections::BTreeMap;
 
 /// The `campaign:` block.
@@ -17,7 +20,11 @@ pub struct CampaignInfo {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub purpose: Option<String>,
     /// Test date, YYYY-MM-DD; also the date printed in reports.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "iso_date",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub date: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub inspector: Option<String>,
@@ -71,9 +78,10 @@ pub struct MachineInfo {
     pub location: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub notes: Option<String>,
-    /// The axes as written; taken out and parsed one by one by the loader.
+    /// Lets `axes` through the unknown-key check: the loader reads the axes one by one
+    /// from the document, so that a broken axis fails alone.
     #[serde(default, skip_serializing)]
-    pub axes: serde_norway::Value,
+    pub axes: IgnoredAny,
 }
 
 /// An axis as written in the campaign.
@@ -81,12 +89,17 @@ pub struct MachineInfo {
 #[serde(deny_unknown_fields)]
 pub struct AxisRaw {
     pub name: String,
+    #[serde(deserialize_with = "crate::yaml::keyword")]
     pub kind: AxisKind,
     /// Axis travel (clause 2.1), mm or deg.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub travel: Option<Travel>,
     /// Measurement travel (clause 2.2), [first, last], mm or deg.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "first_last",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub measurement_travel: Option<[f64; 2]>,
     /// One file, a list, or `{dir, glob}`.
     pub data: serde_norway::Value,
@@ -153,7 +166,11 @@ pub struct Conditions {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub warm_up: Option<String>,
     /// Test cycle: standard, step or pilgrim.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub cycle: Option<Cycle>,
     /// Pressure of air or oil where used (7.1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -185,7 +202,7 @@ pub enum SensorKind {
 #[serde(deny_unknown_fields)]
 pub struct TemperatureSensor {
     pub name: String,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::yaml::keyword")]
     pub kind: SensorKind,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub position: Option<String>,
@@ -218,4 +235,62 @@ pub struct Nde {
     /// Effective expansion coefficient of the positioning system, µm/(m·°C).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coefficient_um_per_m_c: Option<f64>,
+}
+
+/// A date written YYYY-MM-DD (text, as YAML reads `2026-11-20`).
+fn iso_date<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<String>, D::Error> {
+    let value = Value::deserialize(deserializer)?;
+    match value.as_str() {
+        _ if value.is_null() => Ok(None),
+        Some(date) if is_iso_date(date) => Ok(Some(date.to_string())),
+        _ => Err(D::Error::custom(format!(
+            "expected a date YYYY-MM-DD, got {}",
+            describe(&value)
+        ))),
+    }
+}
+
+fn is_iso_date(s: &str) -> bool {
+    let b = s.as_bytes();
+    b.len() == 10
+        && b[4] == b'-'
+        && b[7] == b'-'
+        && b.iter()
+            .enumerate()
+            .all(|(k, c)| k == 4 || k == 7 || c.is_ascii_digit())
+        && matches!(s[5..7].parse::<u32>(), Ok(1..=12))
+        && matches!(s[8..10].parse::<u32>(), Ok(1..=31))
+}
+
+/// `[first, last]`: two numbers (their order is checked with the other axis values).
+fn first_last<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<[f64; 2]>, D::Error> {
+    struct FirstLast;
+
+    impl<'de> serde::de::Visitor<'de> for FirstLast {
+        type Value = Option<[f64; 2]>;
+
+        fn visit_unit<E: serde::de::Error>(self) -> Result<Self::Value, E> {
+            Ok(None)
+        }
+
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("[first, last]")
+        }
+
+        fn visit_seq<A: serde::de::SeqAccess<'de>>(
+            self,
+            mut seq: A,
+        ) -> Result<Self::Value, A::Error> {
+            let mut ends = Vec::new();
+            while let Some(end) = seq.next_element::<f64>()? {
+                ends.push(end);
+            }
+            match ends[..] {
+                [first, last] => Ok(Some([first, last])),
+                _ => Err(A::Error::invalid_length(ends.len(), &self)),
+            }
+        }
+    }
+
+    deserializer.deserialize_any(FirstLast)
 }

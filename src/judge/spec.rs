@@ -2,6 +2,7 @@
 
 use crate::evaluate::catalogue;
 use crate::units::AxisKind;
+use crate::yaml::{self, Located, LocationIndex, YamlError, deserialize_at};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -47,55 +48,11 @@ pub struct Spec {
 
 impl Spec {
     /// Parses a spec; `file` names it in errors.
-    pub fn from_yaml(text: &str, file: &str) -> Result<Spec, String> {
-        let index = crate::yaml::LocationIndex::new(text);
-        let value: serde_norway::Value =
-            serde_norway::from_str(text).map_err(|e| crate::yaml::syntax_error(&e, file, text))?;
-        let spec: Spec =
-            crate::yaml::deserialize_at(value, "", &index).map_err(|e| e.in_file(file))?;
+    pub fn from_yaml(text: &str, file: &str) -> Result<Spec, YamlError> {
+        let (value, index) = yaml::parse(text, file)?;
+        let spec: Spec = deserialize_at(&value, "", &index).map_err(|e| e.in_file(file))?;
         for (group, bands) in [("linear", &spec.linear), ("rotary", &spec.rotary)] {
-            let mut last = f64::NEG_INFINITY;
-            for (k, band) in bands.iter().enumerate() {
-                let here = format!("{group}[{k}]");
-                let at = |p: &str| {
-                    crate::yaml::Located {
-                        at: index.value(p),
-                        message: String::new(),
-                    }
-                    .in_file(file)
-                };
-                match band.up_to {
-                    Some(u) if u > last => last = u,
-                    Some(_) => {
-                        return Err(format!(
-                            "{}{here}: bands must have increasing up_to",
-                            at(&here)
-                        ));
-                    }
-                    None if k + 1 == bands.len() => last = f64::INFINITY,
-                    None => {
-                        return Err(format!(
-                            "{}{here}: only the last band may omit up_to",
-                            at(&here)
-                        ));
-                    }
-                }
-                for (key, limit) in &band.tolerances {
-                    if !catalogue::is_limitable_key(key) {
-                        let hint = crate::suggest::hint(key, catalogue::limitable_keys());
-                        return Err(format!(
-                            "{}{here}.tolerances: unknown parameter `{key}`{hint}",
-                            at(&format!("{here}.tolerances.{key}"))
-                        ));
-                    }
-                    if !(*limit >= 0.0 && limit.is_finite()) {
-                        return Err(format!(
-                            "{}{here}.tolerances.{key}: expected a limit ≥ 0",
-                            at(&format!("{here}.tolerances.{key}"))
-                        ));
-                    }
-                }
-            }
+            check_bands(group, bands, &index).map_err(|e| e.in_file(file))?;
         }
         Ok(spec)
     }
@@ -110,6 +67,45 @@ impl Spec {
             .iter()
             .find(|b| b.up_to.is_none_or(|u| travel <= u + 1e-9))
     }
+}
+
+/// Bands in order of `up_to` (only the last open-ended), each limit known and ≥ 0.
+fn check_bands(group: &str, bands: &[Band], index: &LocationIndex) -> Result<(), Located> {
+    let mut last = f64::NEG_INFINITY;
+    for (k, band) in bands.iter().enumerate() {
+        let here = format!("{group}[{k}]");
+        match band.up_to {
+            Some(u) if u > last => last = u,
+            Some(_) => {
+                let message = format!("{here}: bands must have increasing up_to");
+                return Err(Located::new(index.value(&here), message));
+            }
+            None if k + 1 == bands.len() => last = f64::INFINITY,
+            None => {
+                let message = format!("{here}: only the last band may omit up_to");
+                return Err(Located::new(index.value(&here), message));
+            }
+        }
+        check_limits(&here, band, index)?;
+    }
+    Ok(())
+}
+
+/// Every limit of a band names a parameter that can be limited, and is a number ≥ 0.
+fn check_limits(here: &str, band: &Band, index: &LocationIndex) -> Result<(), Located> {
+    for (key, limit) in &band.tolerances {
+        let path = format!("{here}.tolerances.{key}");
+        if !catalogue::is_limitable_key(key) {
+            let hint = crate::suggest::hint(key, catalogue::limitable_keys());
+            let message = format!("{here}.tolerances: unknown parameter `{key}`{hint}");
+            return Err(Located::new(index.key_or_value(&path), message));
+        }
+        if !(*limit >= 0.0 && limit.is_finite()) {
+            let message = format!("{path}: expected a limit ≥ 0");
+            return Err(Located::new(index.value(&path), message));
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -148,9 +144,9 @@ mod tests {
             "t.yaml",
         )
         .unwrap_err();
-        assert!(
-            e.contains("t.yaml:3:") && e.contains("unknown parameter `AA`"),
-            "{e}"
+        assert_eq!(
+            e.to_string(),
+            "t.yaml:3:35: linear[0].tolerances: unknown parameter `AA` (did you mean `A`?)"
         );
     }
 }

@@ -147,97 +147,8 @@ fn detect_separator(header: &str) -> char {
 /// Parses the long CSV layout.
 pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
     let mut lines = Lines::new(reader, file);
-    let err =
-        |line: usize, column: usize, kind| ReadError::new(Location::at(file, line, column), kind);
-
-    // Header: the first line that is neither blank nor a comment.
-    let (header_line, header) = loop {
-        match lines.next_line()? {
-            None => return Err(ReadError::new(Location::file(file), ReadErrorKind::Empty)),
-            Some((_, text)) if text.trim().is_empty() || text.trim_start().starts_with('#') => {}
-            Some((number, text)) => break (number, text.to_string()),
-        }
-    };
-    let sep = detect_separator(&header);
-    let decimal_comma = sep != ',';
-
-    let mut temps = Vec::new();
-    let mut columns: Vec<Column> = Vec::new();
-    let mut names: Vec<String> = Vec::new();
-    for (col, raw_name) in split_fields(&header, sep) {
-        let name = raw_name.trim().to_ascii_lowercase();
-        let column = classify(&name, &mut temps).map_err(|k| err(header_line, col, k))?;
-        if names.contains(&name) {
-            return Err(err(
-                header_line,
-                col,
-                ReadErrorKind::DuplicateColumn { name },
-            ));
-        }
-        columns.push(column);
-        names.push(name);
-    }
-    let find = |pred: &dyn Fn(&Column) -> bool| -> Vec<usize> {
-        columns
-            .iter()
-            .enumerate()
-            .filter(|(_, c)| pred(c))
-            .map(|(k, _)| k)
-            .collect()
-    };
-    let header_err = |kind| ReadError::new(Location::line(file, header_line), kind);
-    let one = |found: Vec<usize>, what: &str, expected: &str| -> Result<usize, ReadError> {
-        match found.as_slice() {
-            [] => Err(header_err(ReadErrorKind::MissingColumn {
-                expected: expected.into(),
-            })),
-            [k] => Ok(*k),
-            [a, b, ..] => Err(header_err(ReadErrorKind::ConflictingColumns {
-                first: names[*a].clone(),
-                second: names[*b].clone(),
-                what: what.into(),
-            })),
-        }
-    };
-    let target_col = one(
-        find(&|c| matches!(c, Column::Target(_))),
-        "target position",
-        "`target_mm` or `target_deg`",
-    )?;
-    let value_col = one(
-        find(&|c| matches!(c, Column::Deviation(..) | Column::Actual(..))),
-        "deviation",
-        "`deviation_um` (or deviation_mm, deviation_arcsec, deviation_deg, actual_mm, actual_deg)",
-    )?;
-    let direction_col = one(
-        find(&|c| *c == Column::Direction),
-        "direction",
-        "`direction`",
-    )?;
-    let run_col = one(find(&|c| *c == Column::Run), "run", "`run`")?;
-    let time_col = find(&|c| *c == Column::TimeS).first().copied();
-
-    let Column::Target(kind) = columns[target_col] else {
-        unreachable!("target column classified above")
-    };
-    let (value_kind, factor, is_actual) = match columns[value_col] {
-        Column::Deviation(k, f) => (k, f, false),
-        Column::Actual(k, f) => (k, f, true),
-        _ => unreachable!("value column classified above"),
-    };
-    if value_kind != kind {
-        let describe = |k: AxisKind| match k {
-            AxisKind::Linear => "a length".to_string(),
-            AxisKind::Rotary => "an angle".to_string(),
-        };
-        return Err(header_err(ReadErrorKind::MixedUnits {
-            target: names[target_col].clone(),
-            target_kind: describe(kind),
-            deviation: names[value_col].clone(),
-            deviation_kind: describe(value_kind),
-        }));
-    }
-
+    let (header_line, header) = read_header(&mut lines, file)?;
+    let layout = Layout::from_header(&header, header_line, file)?;
     let mut raw = Vec::new();
     while let Some((number, text)) = lines.next_line()? {
         let trimmed = text.trim();
@@ -252,91 +163,7 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
                 },
             ));
         }
-        let fields = split_fields(text, sep);
-        if fields.len() != columns.len() {
-            return Err(err(
-                number,
-                1,
-                ReadErrorKind::FieldCount {
-                    expected: columns.len(),
-                    found: fields.len(),
-                },
-            ));
-        }
-        let number_at = |k: usize| -> Result<f64, ReadError> {
-            let (col, text) = &fields[k];
-            parse_number(text, decimal_comma).map_err(|e| {
-                let column = names[k].clone();
-                let found = text.trim().to_string();
-                err(
-                    number,
-                    *col,
-                    match e {
-                        NumberError::NotANumber => ReadErrorKind::NotANumber { column, found },
-                        NumberError::NonFinite => ReadErrorKind::NonFinite { column, found },
-                    },
-                )
-            })
-        };
-        let target = number_at(target_col)? + 0.0; // normalise -0.0
-        let value = number_at(value_col)?;
-        let deviation = if is_actual {
-            // Subtract in the file's unit first, then scale: keeps 0.1 µm exact-ish.
-            (value - target) * factor
-        } else {
-            value * factor
-        };
-        if deviation.abs() > super::MAX_DEVIATION {
-            let (col, text) = &fields[value_col];
-            return Err(err(
-                number,
-                *col,
-                ReadErrorKind::Implausible {
-                    column: names[value_col].clone(),
-                    value: text.trim().to_string(),
-                    limit: format!("{}", super::MAX_DEVIATION),
-                    unit: kind.deviation_unit().to_string(),
-                },
-            ));
-        }
-        let (dcol, dtext) = &fields[direction_col];
-        let direction = Direction::parse(dtext).ok_or_else(|| {
-            let found = dtext.trim().to_string();
-            let suggestion =
-                did_you_mean(&found, &["up", "down", "forward", "reverse", "fwd", "bwd"])
-                    .map(str::to_string);
-            err(
-                number,
-                *dcol,
-                ReadErrorKind::UnknownDirection { found, suggestion },
-            )
-        })?;
-        let (rcol, rtext) = &fields[run_col];
-        let run = parse_run(rtext).ok_or_else(|| {
-            err(
-                number,
-                *rcol,
-                ReadErrorKind::InvalidRun {
-                    found: rtext.trim().to_string(),
-                },
-            )
-        })?;
-        let time_s = time_col.map(number_at).transpose()?;
-        let mut temps_c = vec![0.0; temps.len()];
-        for (k, column) in columns.iter().enumerate() {
-            if let Column::Temperature(t) = column {
-                temps_c[*t] = number_at(k)?;
-            }
-        }
-        raw.push(RawReading {
-            target,
-            direction,
-            run,
-            deviation,
-            time_s,
-            temps_c,
-            line: number,
-        });
+        raw.push(layout.reading(text, number, file)?);
     }
     if raw.is_empty() {
         return Err(ReadError::new(
@@ -344,7 +171,264 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
             ReadErrorKind::NoReadings,
         ));
     }
-    AxisData::from_raw(kind, raw, temps, file)
+    AxisData::from_raw(layout.kind, raw, layout.temps, file)
+}
+
+/// The header: the first line that is neither blank nor a comment, with its number.
+fn read_header<R: BufRead>(lines: &mut Lines<R>, file: &str) -> Result<(usize, String), ReadError> {
+    loop {
+        match lines.next_line()? {
+            None => return Err(ReadError::new(Location::file(file), ReadErrorKind::Empty)),
+            Some((_, text)) if text.trim().is_empty() || text.trim_start().starts_with('#') => {}
+            Some((number, text)) => return Ok((number, text.to_string())),
+        }
+    }
+}
+
+/// What the header says: the columns, where the required ones are, and the units.
+struct Layout {
+    sep: char,
+    /// With `;` or tab separators a decimal comma is accepted.
+    decimal_comma: bool,
+    columns: Vec<Column>,
+    /// Column names as written (trimmed, lower case), for messages.
+    names: Vec<String>,
+    /// Names of the `temp_<name>_c` columns.
+    temps: Vec<String>,
+    kind: AxisKind,
+    target: usize,
+    value: usize,
+    direction: usize,
+    run: usize,
+    time: Option<usize>,
+    /// Factor from the value column's unit to µm or arcsec.
+    factor: f64,
+    /// The value column holds actual positions P_ij, not deviations.
+    is_actual: bool,
+}
+
+impl Layout {
+    fn from_header(header: &str, header_line: usize, file: &str) -> Result<Layout, ReadError> {
+        let sep = detect_separator(header);
+        let fields = classify_header(header, sep, header_line, file)?;
+        let header_err = |kind| ReadError::new(Location::line(file, header_line), kind);
+        let one = |pred: &dyn Fn(&Column) -> bool, what: &str, expected: &str| {
+            fields.only(pred, what, expected).map_err(header_err)
+        };
+        let target = one(
+            &|c| matches!(c, Column::Target(_)),
+            "target position",
+            "`target_mm` or `target_deg`",
+        )?;
+        let value = one(
+            &|c| matches!(c, Column::Deviation(..) | Column::Actual(..)),
+            "deviation",
+            "`deviation_um` (or deviation_mm, deviation_arcsec, deviation_deg, actual_mm, actual_deg)",
+        )?;
+        let direction = one(&|c| *c == Column::Direction, "direction", "`direction`")?;
+        let run = one(&|c| *c == Column::Run, "run", "`run`")?;
+        let Header {
+            columns,
+            names,
+            temps,
+        } = fields;
+        let time = columns.iter().position(|c| *c == Column::TimeS);
+        let Column::Target(kind) = columns[target] else {
+            unreachable!("target column classified above")
+        };
+        let (value_kind, factor, is_actual) = match columns[value] {
+            Column::Deviation(k, f) => (k, f, false),
+            Column::Actual(k, f) => (k, f, true),
+            _ => unreachable!("value column classified above"),
+        };
+        if value_kind != kind {
+            return Err(header_err(mixed_units(
+                &names[target],
+                kind,
+                &names[value],
+                value_kind,
+            )));
+        }
+        Ok(Layout {
+            sep,
+            decimal_comma: sep != ',',
+            columns,
+            names,
+            temps,
+            kind,
+            target,
+            value,
+            direction,
+            run,
+            time,
+            factor,
+            is_actual,
+        })
+    }
+
+    /// One data row as a reading.
+    fn reading(&self, text: &str, number: usize, file: &str) -> Result<RawReading, ReadError> {
+        let err = |column, kind| ReadError::new(Location::at(file, number, column), kind);
+        let fields = split_fields(text, self.sep);
+        if fields.len() != self.columns.len() {
+            return Err(err(
+                1,
+                ReadErrorKind::FieldCount {
+                    expected: self.columns.len(),
+                    found: fields.len(),
+                },
+            ));
+        }
+        let number_at = |k: usize| self.number(&fields[k], &self.names[k], number, file);
+        let target = number_at(self.target)? + 0.0; // normalise -0.0
+        let deviation = self.deviation(target, number_at(self.value)?);
+        if deviation.abs() > super::MAX_DEVIATION {
+            let (col, text) = &fields[self.value];
+            return Err(err(
+                *col,
+                ReadErrorKind::Implausible {
+                    column: self.names[self.value].clone(),
+                    value: text.trim().to_string(),
+                    limit: format!("{}", super::MAX_DEVIATION),
+                    unit: self.kind.deviation_unit().to_string(),
+                },
+            ));
+        }
+        let (dcol, dtext) = &fields[self.direction];
+        let direction =
+            Direction::parse(dtext).ok_or_else(|| err(*dcol, unknown_direction(dtext)))?;
+        let (rcol, rtext) = &fields[self.run];
+        let run = parse_run(rtext).ok_or_else(|| {
+            let found = rtext.trim().to_string();
+            err(*rcol, ReadErrorKind::InvalidRun { found })
+        })?;
+        let time_s = self.time.map(number_at).transpose()?;
+        let mut temps_c = vec![0.0; self.temps.len()];
+        for (k, column) in self.columns.iter().enumerate() {
+            if let Column::Temperature(t) = column {
+                temps_c[*t] = number_at(k)?;
+            }
+        }
+        Ok(RawReading {
+            target,
+            direction,
+            run,
+            deviation,
+            time_s,
+            temps_c,
+            line: number,
+        })
+    }
+
+    /// X_ij in µm or arcsec from the value column.
+    fn deviation(&self, target: f64, value: f64) -> f64 {
+        if self.is_actual {
+            // Subtract in the file's unit first, then scale: keeps 0.1 µm exact-ish.
+            (value - target) * self.factor
+        } else {
+            value * self.factor
+        }
+    }
+
+    /// The number in one field, or an error naming its column.
+    fn number(
+        &self,
+        (col, text): &(usize, String),
+        column: &str,
+        number: usize,
+        file: &str,
+    ) -> Result<f64, ReadError> {
+        parse_number(text, self.decimal_comma).map_err(|e| {
+            let column = column.to_string();
+            let found = text.trim().to_string();
+            let kind = match e {
+                NumberError::NotANumber => ReadErrorKind::NotANumber { column, found },
+                NumberError::NonFinite => ReadErrorKind::NonFinite { column, found },
+            };
+            ReadError::new(Location::at(file, number, *col), kind)
+        })
+    }
+}
+
+/// The header's fields: what each column holds, its name, and the temperature sensors.
+struct Header {
+    columns: Vec<Column>,
+    names: Vec<String>,
+    temps: Vec<String>,
+}
+
+impl Header {
+    /// The one column `pred` picks: none is a missing column, two are a conflict.
+    fn only(
+        &self,
+        pred: &dyn Fn(&Column) -> bool,
+        what: &str,
+        expected: &str,
+    ) -> Result<usize, ReadErrorKind> {
+        let found: Vec<usize> = (0..self.columns.len())
+            .filter(|&k| pred(&self.columns[k]))
+            .collect();
+        match found.as_slice() {
+            [] => Err(ReadErrorKind::MissingColumn {
+                expected: expected.into(),
+            }),
+            [k] => Ok(*k),
+            [a, b, ..] => Err(ReadErrorKind::ConflictingColumns {
+                first: self.names[*a].clone(),
+                second: self.names[*b].clone(),
+                what: what.into(),
+            }),
+        }
+    }
+}
+
+/// Classifies every header field; a column named twice is an error.
+fn classify_header(
+    header: &str,
+    sep: char,
+    header_line: usize,
+    file: &str,
+) -> Result<Header, ReadError> {
+    let err = |column, kind| ReadError::new(Location::at(file, header_line, column), kind);
+    let mut temps = Vec::new();
+    let mut columns = Vec::new();
+    let mut names: Vec<String> = Vec::new();
+    for (col, raw_name) in split_fields(header, sep) {
+        let name = raw_name.trim().to_ascii_lowercase();
+        let column = classify(&name, &mut temps).map_err(|k| err(col, k))?;
+        if names.contains(&name) {
+            return Err(err(col, ReadErrorKind::DuplicateColumn { name }));
+        }
+        columns.push(column);
+        names.push(name);
+    }
+    Ok(Header {
+        columns,
+        names,
+        temps,
+    })
+}
+
+/// A target column of one kind with a value column of the other.
+fn mixed_units(target: &str, kind: AxisKind, value: &str, value_kind: AxisKind) -> ReadErrorKind {
+    let describe = |k: AxisKind| match k {
+        AxisKind::Linear => "a length".to_string(),
+        AxisKind::Rotary => "an angle".to_string(),
+    };
+    ReadErrorKind::MixedUnits {
+        target: target.to_string(),
+        target_kind: describe(kind),
+        deviation: value.to_string(),
+        deviation_kind: describe(value_kind),
+    }
+}
+
+/// A direction that is none of the spellings [`Direction::parse`] knows.
+fn unknown_direction(text: &str) -> ReadErrorKind {
+    let found = text.trim().to_string();
+    let suggestion = did_you_mean(&found, &["up", "down", "forward", "reverse", "fwd", "bwd"])
+        .map(str::to_string);
+    ReadErrorKind::UnknownDirection { found, suggestion }
 }
 
 /// A run number: a positive integer (`3`, ` 3 `, `3.0`).

@@ -42,35 +42,17 @@ struct Entry {
 /// Parses the key=value layout.
 pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
     let mut lines = Lines::new(reader, file);
-    let fail = |line: usize, column: usize, message: String| {
-        ReadError::new(
-            Location::at(file, line, column),
-            ReadErrorKind::KeyValue(message),
-        )
-    };
-    let mut unit: Option<(String, usize)> = None;
-    let mut cycles: Option<(usize, usize)> = None;
-    let mut positions: Option<(usize, usize)> = None;
-    let mut targets: BTreeMap<usize, Entry> = BTreeMap::new();
-    let mut fwd: BTreeMap<(usize, usize), Entry> = BTreeMap::new();
-    let mut bwd: BTreeMap<(usize, usize), Entry> = BTreeMap::new();
+    let mut entries = Entries::default();
     let mut count = 0usize;
-
     while let Some((number, text)) = lines.next_line()? {
         let trimmed = text.trim();
         if trimmed.is_empty() || trimmed.starts_with('#') {
             continue;
         }
         let Some(eq) = text.find('=') else {
-            return Err(fail(
-                number,
-                1,
-                format!("expected KEY=VALUE, found `{trimmed}`"),
-            ));
+            let message = format!("expected KEY=VALUE, found `{trimmed}`");
+            return Err(fail(file, number, 1, message));
         };
-        let key = text[..eq].trim();
-        let value = text[eq + 1..].trim();
-        let value_col = text[..eq + 1].chars().count() + 1;
         count += 1;
         if count > 3 * MAX_READINGS {
             return Err(ReadError::new(
@@ -80,236 +62,323 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
                 },
             ));
         }
-        let number_value = |what: &str| {
-            parse_number(value, false).map_err(|_| {
-                fail(
-                    number,
-                    value_col,
-                    format!("{key}: expected a finite number for the {what}, found `{value}`"),
-                )
+        let line = KeyValueLine {
+            key: text[..eq].trim(),
+            value: text[eq + 1..].trim(),
+            value_col: text[..eq + 1].chars().count() + 1,
+            number,
+            file,
+        };
+        entries.add(&line)?;
+    }
+    let (kind, factor) = unit(&entries.unit, file)?;
+    entries.check(file)?;
+    let raw = entries.readings(kind, factor, file)?;
+    AxisData::from_raw(kind, raw, Vec::new(), file)
+}
+
+/// A key=value error at `line`, `column`.
+fn fail(file: &str, line: usize, column: usize, message: String) -> ReadError {
+    ReadError::new(
+        Location::at(file, line, column),
+        ReadErrorKind::KeyValue(message),
+    )
+}
+
+/// One `KEY=VALUE` line, split.
+struct KeyValueLine<'a> {
+    key: &'a str,
+    value: &'a str,
+    /// 1-based character column of the value.
+    value_col: usize,
+    number: usize,
+    file: &'a str,
+}
+
+impl KeyValueLine<'_> {
+    fn fail(&self, column: usize, message: String) -> ReadError {
+        fail(self.file, self.number, column, message)
+    }
+
+    /// The value as a finite number; `what` says what it is in the error.
+    fn number(&self, what: &str) -> Result<f64, ReadError> {
+        let (key, value) = (self.key, self.value);
+        parse_number(value, false).map_err(|_| {
+            let message =
+                format!("{key}: expected a finite number for the {what}, found `{value}`");
+            self.fail(self.value_col, message)
+        })
+    }
+
+    /// The value as a count ≥ 1 (`CYCLES`, `POSITIONS`).
+    fn count(&self) -> Result<usize, ReadError> {
+        let (key, value) = (self.key, self.value);
+        value
+            .parse::<usize>()
+            .ok()
+            .filter(|&c| c >= 1)
+            .ok_or_else(|| {
+                let message = format!("{key}: expected a positive whole number, found `{value}`");
+                self.fail(self.value_col, message)
             })
-        };
-        let count_value = || {
-            value
-                .parse::<usize>()
-                .ok()
-                .filter(|&c| c >= 1)
-                .ok_or_else(|| {
-                    fail(
-                        number,
-                        value_col,
-                        format!("{key}: expected a positive whole number, found `{value}`"),
-                    )
-                })
-        };
-        if let Some(open) = key.find('[') {
-            let name = &key[..open];
-            let inside = key[open + 1..]
-                .strip_suffix(']')
-                .ok_or_else(|| fail(number, 1, format!("`{key}`: expected a closing `]`")))?;
-            let indices: Vec<Option<usize>> = inside
-                .split(',')
-                .map(|s| s.trim().parse::<usize>().ok().filter(|&k| k >= 1))
-                .collect();
-            let bad_index = || {
-                fail(
-                    number,
-                    open + 2,
-                    format!(
-                        "`{key}`: expected 1-based indices, e.g. {name}[3]{}",
-                        if name == "TGT_DATA" {
-                            ""
-                        } else {
-                            " or [3,2] (position, cycle)"
-                        }
-                    ),
-                )
-            };
-            match name {
-                "TGT_DATA" => {
-                    let [Some(i)] = indices.as_slice() else {
-                        return Err(bad_index());
-                    };
-                    let entry = Entry {
-                        value: number_value("target position")?,
-                        line: number,
-                    };
-                    if let Some(prev) = targets.insert(*i, entry) {
-                        return Err(fail(
-                            number,
-                            1,
-                            format!("TGT_DATA[{i}] is given twice (first on line {})", prev.line),
-                        ));
-                    }
-                }
-                "REF_DATA_FWD" | "REF_DATA_BWD" => {
-                    let [Some(i), Some(j)] = indices.as_slice() else {
-                        return Err(bad_index());
-                    };
-                    let entry = Entry {
-                        value: number_value("reference reading")?,
-                        line: number,
-                    };
-                    let map = if name == "REF_DATA_FWD" {
-                        &mut fwd
-                    } else {
-                        &mut bwd
-                    };
-                    if let Some(prev) = map.insert((*i, *j), entry) {
-                        return Err(fail(
-                            number,
-                            1,
-                            format!(
-                                "{name}[{i},{j}] is given twice (first on line {})",
-                                prev.line
-                            ),
-                        ));
-                    }
-                }
-                _ => {
-                    return Err(fail(
-                        number,
-                        1,
-                        format!(
-                            "unknown key `{name}[…]`; expected TGT_DATA[i], REF_DATA_FWD[i,j] or REF_DATA_BWD[i,j]"
-                        ),
-                    ));
-                }
-            }
-        } else {
+    }
+
+    /// The entry of an indexed key's value, read from this line.
+    fn entry(&self, what: &str) -> Result<Entry, ReadError> {
+        Ok(Entry {
+            value: self.number(what)?,
+            line: self.number,
+        })
+    }
+}
+
+/// Everything the file says, keyed by index, before the checks that need all of it.
+#[derive(Default)]
+struct Entries {
+    /// `UNIT` and its line.
+    unit: Option<(String, usize)>,
+    /// `CYCLES` and its line.
+    cycles: Option<(usize, usize)>,
+    /// `POSITIONS` and its line.
+    positions: Option<(usize, usize)>,
+    /// `TGT_DATA[i]`.
+    targets: BTreeMap<usize, Entry>,
+    /// `REF_DATA_FWD[i,j]`.
+    fwd: BTreeMap<(usize, usize), Entry>,
+    /// `REF_DATA_BWD[i,j]`.
+    bwd: BTreeMap<(usize, usize), Entry>,
+}
+
+impl Entries {
+    /// Takes in one line: an indexed key (`TGT_DATA[3]`) or a plain one (`UNIT`).
+    fn add(&mut self, line: &KeyValueLine) -> Result<(), ReadError> {
+        let key = line.key;
+        let Some(open) = key.find('[') else {
             match key {
-                "UNIT" => unit = Some((value.to_string(), number)),
-                "CYCLES" => cycles = Some((count_value()?, number)),
-                "POSITIONS" => positions = Some((count_value()?, number)),
+                "UNIT" => self.unit = Some((line.value.to_string(), line.number)),
+                "CYCLES" => self.cycles = Some((line.count()?, line.number)),
+                "POSITIONS" => self.positions = Some((line.count()?, line.number)),
                 _ => {} // REF_PV, TEST_PV, TGT_SET_PV, DEC, …: metadata
             }
+            return Ok(());
+        };
+        let name = &key[..open];
+        let inside = key[open + 1..]
+            .strip_suffix(']')
+            .ok_or_else(|| line.fail(1, format!("`{key}`: expected a closing `]`")))?;
+        let indices: Vec<Option<usize>> = inside
+            .split(',')
+            .map(|s| s.trim().parse::<usize>().ok().filter(|&k| k >= 1))
+            .collect();
+        let bad_index = || {
+            let example = if name == "TGT_DATA" {
+                ""
+            } else {
+                " or [3,2] (position, cycle)"
+            };
+            let message = format!("`{key}`: expected 1-based indices, e.g. {name}[3]{example}");
+            line.fail(open + 2, message)
+        };
+        match (name, indices.as_slice()) {
+            ("TGT_DATA", [Some(i)]) => self.add_target(*i, line),
+            ("REF_DATA_FWD" | "REF_DATA_BWD", [Some(i), Some(j)]) => {
+                self.add_reference(name, (*i, *j), line)
+            }
+            ("TGT_DATA" | "REF_DATA_FWD" | "REF_DATA_BWD", _) => Err(bad_index()),
+            _ => Err(line.fail(
+                1,
+                format!(
+                    "unknown key `{name}[…]`; expected TGT_DATA[i], REF_DATA_FWD[i,j] or REF_DATA_BWD[i,j]"
+                ),
+            )),
         }
     }
 
-    let (kind, factor) = match &unit {
-        None => (AxisKind::Linear, 1000.0),
-        Some((u, line)) => match u.to_ascii_lowercase().as_str() {
-            "mm" => (AxisKind::Linear, 1000.0),
-            "um" | "µm" | "micron" => (AxisKind::Linear, 1.0),
-            "m" => (AxisKind::Linear, 1e6),
-            "deg" | "degree" | "degrees" | "°" => (AxisKind::Rotary, 3600.0),
-            "arcsec" => (AxisKind::Rotary, 1.0),
-            other => {
-                return Err(fail(
-                    *line,
-                    6,
-                    format!("UNIT: unknown unit `{other}`; expected mm, um, m, deg or arcsec"),
-                ));
-            }
-        },
-    };
-    if targets.is_empty() {
-        return Err(ReadError::new(
-            Location::file(file),
-            ReadErrorKind::KeyValue(
-                "no TGT_DATA[i] lines; expected the target positions TGT_DATA[1], TGT_DATA[2], …"
-                    .into(),
-            ),
-        ));
-    }
-    if let Some((p, line)) = positions
-        && p != targets.len()
-    {
-        return Err(fail(
-            line,
-            11,
-            format!(
-                "POSITIONS={p} but the file has {} TGT_DATA entries",
-                targets.len()
-            ),
-        ));
-    }
-    for (label, map) in [("REF_DATA_FWD", &fwd), ("REF_DATA_BWD", &bwd)] {
-        for (&(i, j), entry) in map {
-            if !targets.contains_key(&i) {
-                return Err(fail(
-                    entry.line,
-                    1,
-                    format!("{label}[{i},{j}] refers to position {i}, which has no TGT_DATA[{i}]"),
-                ));
-            }
-            if let Some((c, _)) = cycles
-                && j > c
-            {
-                return Err(fail(
-                    entry.line,
-                    1,
-                    format!("{label}[{i},{j}] is cycle {j} but CYCLES={c}"),
-                ));
-            }
+    fn add_target(&mut self, i: usize, line: &KeyValueLine) -> Result<(), ReadError> {
+        let entry = line.entry("target position")?;
+        match self.targets.insert(i, entry) {
+            Some(prev) => Err(line.fail(
+                1,
+                format!("TGT_DATA[{i}] is given twice (first on line {})", prev.line),
+            )),
+            None => Ok(()),
         }
     }
-    // FWD means moving through the positions in index order, so the targets must increase
-    // with their index (a repeated value would also merge two positions into one).
-    let mut previous: Option<(usize, &Entry)> = None;
-    for (&i, entry) in &targets {
-        if let Some((p, prev)) = previous
-            && entry.value.partial_cmp(&prev.value) != Some(std::cmp::Ordering::Greater)
-        {
-            return Err(fail(
-                entry.line,
+
+    fn add_reference(
+        &mut self,
+        name: &str,
+        (i, j): (usize, usize),
+        line: &KeyValueLine,
+    ) -> Result<(), ReadError> {
+        let entry = line.entry("reference reading")?;
+        let map = if name == "REF_DATA_FWD" {
+            &mut self.fwd
+        } else {
+            &mut self.bwd
+        };
+        match map.insert((i, j), entry) {
+            Some(prev) => Err(line.fail(
                 1,
                 format!(
-                    "TGT_DATA[{i}] = {} does not increase from TGT_DATA[{p}] = {} (line {}); targets must increase with their index, because REF_DATA_FWD runs through them in that order",
-                    entry.value, prev.value, prev.line
+                    "{name}[{i},{j}] is given twice (first on line {})",
+                    prev.line
+                ),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// The file as a whole: targets given, `POSITIONS` and `CYCLES` matching the data,
+    /// every reading at a known target, targets increasing with their index.
+    fn check(&self, file: &str) -> Result<(), ReadError> {
+        if self.targets.is_empty() {
+            return Err(ReadError::new(
+                Location::file(file),
+                ReadErrorKind::KeyValue(
+                    "no TGT_DATA[i] lines; expected the target positions TGT_DATA[1], TGT_DATA[2], …"
+                        .into(),
                 ),
             ));
         }
-        previous = Some((i, entry));
+        if let Some((p, line)) = self.positions
+            && p != self.targets.len()
+        {
+            let message = format!(
+                "POSITIONS={p} but the file has {} TGT_DATA entries",
+                self.targets.len()
+            );
+            return Err(fail(file, line, 11, message));
+        }
+        self.check_references(file)?;
+        self.check_targets_increase(file)
     }
 
-    // Measurement order of the toolchain: cycle j forward over the positions, then backward.
-    // Sorted from the entries themselves, so the work grows with the readings, never with
-    // the largest index written (REF_DATA_FWD[1,4000000000] is one reading, not 4e9 cycles).
-    // Sort key: (cycle, forward first, position ascending forward and descending backward).
-    type Ordered<'a> = ((usize, u8, usize), usize, Direction, &'a Entry);
-    let mut order: Vec<Ordered> = fwd
-        .iter()
-        .map(|(&(i, j), e)| ((j, 0, i), i, Direction::Up, e))
-        .chain(
-            bwd.iter()
-                .map(|(&(i, j), e)| ((j, 1, usize::MAX - i), i, Direction::Down, e)),
-        )
-        .collect();
-    order.sort_unstable_by_key(|&(key, ..)| key);
-    let mut raw = Vec::with_capacity(order.len());
-    for ((j, ..), i, direction, entry) in order {
-        let target = targets[&i].value + 0.0;
-        let deviation = (entry.value - target) * factor;
-        if deviation.abs() > super::MAX_DEVIATION {
-            return Err(ReadError::new(
-                Location::at(file, entry.line, 1),
-                ReadErrorKind::Implausible {
-                    column: format!(
-                        "REF_DATA_{}[{i},{j}]",
-                        if direction == Direction::Up {
-                            "FWD"
-                        } else {
-                            "BWD"
-                        }
-                    ),
-                    value: entry.value.to_string(),
-                    limit: format!("{}", super::MAX_DEVIATION),
-                    unit: kind.deviation_unit().to_string(),
-                },
-            ));
+    /// Every reading refers to a target given, in a cycle within `CYCLES`.
+    fn check_references(&self, file: &str) -> Result<(), ReadError> {
+        for (label, map) in [("REF_DATA_FWD", &self.fwd), ("REF_DATA_BWD", &self.bwd)] {
+            for (&(i, j), entry) in map {
+                if !self.targets.contains_key(&i) {
+                    let message = format!(
+                        "{label}[{i},{j}] refers to position {i}, which has no TGT_DATA[{i}]"
+                    );
+                    return Err(fail(file, entry.line, 1, message));
+                }
+                if let Some((c, _)) = self.cycles
+                    && j > c
+                {
+                    let message = format!("{label}[{i},{j}] is cycle {j} but CYCLES={c}");
+                    return Err(fail(file, entry.line, 1, message));
+                }
+            }
         }
-        raw.push(RawReading {
-            target,
-            direction,
-            run: u32::try_from(j).unwrap_or(u32::MAX),
-            deviation,
-            time_s: None,
-            temps_c: Vec::new(),
-            line: entry.line,
-        });
+        Ok(())
     }
-    AxisData::from_raw(kind, raw, Vec::new(), file)
+
+    /// FWD means moving through the positions in index order, so the targets must
+    /// increase with their index (a repeated value would also merge two positions).
+    fn check_targets_increase(&self, file: &str) -> Result<(), ReadError> {
+        let mut previous: Option<(usize, &Entry)> = None;
+        for (&i, entry) in &self.targets {
+            if let Some((p, prev)) = previous
+                && entry.value.partial_cmp(&prev.value) != Some(std::cmp::Ordering::Greater)
+            {
+                let message = format!(
+                    "TGT_DATA[{i}] = {} does not increase from TGT_DATA[{p}] = {} (line {}); targets must increase with their index, because REF_DATA_FWD runs through them in that order",
+                    entry.value, prev.value, prev.line
+                );
+                return Err(fail(file, entry.line, 1, message));
+            }
+            previous = Some((i, entry));
+        }
+        Ok(())
+    }
+
+    /// The readings in the toolchain's measurement order: cycle j forward over the
+    /// positions, then backward. Sorted from the entries themselves, so the work grows
+    /// with the readings, never with the largest index written (REF_DATA_FWD[1,4000000000]
+    /// is one reading, not 4e9 cycles).
+    fn readings(
+        &self,
+        kind: AxisKind,
+        factor: f64,
+        file: &str,
+    ) -> Result<Vec<RawReading>, ReadError> {
+        // Sort key: (cycle, forward first, position ascending forward and descending backward).
+        type Ordered<'a> = ((usize, u8, usize), usize, Direction, &'a Entry);
+        let mut order: Vec<Ordered> = self
+            .fwd
+            .iter()
+            .map(|(&(i, j), e)| ((j, 0, i), i, Direction::Up, e))
+            .chain(
+                self.bwd
+                    .iter()
+                    .map(|(&(i, j), e)| ((j, 1, usize::MAX - i), i, Direction::Down, e)),
+            )
+            .collect();
+        order.sort_unstable_by_key(|&(key, ..)| key);
+        let mut raw = Vec::with_capacity(order.len());
+        for ((j, ..), i, direction, entry) in order {
+            let target = self.targets[&i].value + 0.0;
+            let deviation = (entry.value - target) * factor;
+            if deviation.abs() > super::MAX_DEVIATION {
+                return Err(implausible(kind, (i, j), direction, entry, file));
+            }
+            raw.push(RawReading {
+                target,
+                direction,
+                run: u32::try_from(j).unwrap_or(u32::MAX),
+                deviation,
+                time_s: None,
+                temps_c: Vec::new(),
+                line: entry.line,
+            });
+        }
+        Ok(raw)
+    }
+}
+
+/// The axis kind and the factor from `UNIT` to µm or arcsec (mm when absent).
+fn unit(unit: &Option<(String, usize)>, file: &str) -> Result<(AxisKind, f64), ReadError> {
+    let Some((u, line)) = unit else {
+        return Ok((AxisKind::Linear, 1000.0));
+    };
+    match u.to_ascii_lowercase().as_str() {
+        "mm" => Ok((AxisKind::Linear, 1000.0)),
+        "um" | "µm" | "micron" => Ok((AxisKind::Linear, 1.0)),
+        "m" => Ok((AxisKind::Linear, 1e6)),
+        "deg" | "degree" | "degrees" | "°" => Ok((AxisKind::Rotary, 3600.0)),
+        "arcsec" => Ok((AxisKind::Rotary, 1.0)),
+        other => {
+            let message =
+                format!("UNIT: unknown unit `{other}`; expected mm, um, m, deg or arcsec");
+            Err(fail(file, *line, 6, message))
+        }
+    }
+}
+
+/// A reference reading too far from its target to be a positioning error.
+fn implausible(
+    kind: AxisKind,
+    (i, j): (usize, usize),
+    direction: Direction,
+    entry: &Entry,
+    file: &str,
+) -> ReadError {
+    let label = if direction == Direction::Up {
+        "FWD"
+    } else {
+        "BWD"
+    };
+    ReadError::new(
+        Location::at(file, entry.line, 1),
+        ReadErrorKind::Implausible {
+            column: format!("REF_DATA_{label}[{i},{j}]"),
+            value: entry.value.to_string(),
+            limit: format!("{}", super::MAX_DEVIATION),
+            unit: kind.deviation_unit().to_string(),
+        },
+    )
 }
 
 #[cfg(test)]

@@ -96,96 +96,17 @@ impl AxisData {
                 ReadErrorKind::NoReadings,
             ));
         }
-        let mut targets: Vec<f64> = raw.iter().map(|r| r.target).collect();
-        targets.sort_by(f64::total_cmp);
-        targets.dedup();
-        let mut run_labels: Vec<u32> = raw.iter().map(|r| r.run).collect();
-        run_labels.sort_unstable();
-        run_labels.dedup();
-        let n = run_labels.len();
-        let m = targets.len();
-        let target_index = |t: f64| {
-            targets
-                .binary_search_by(|p| p.total_cmp(&t))
-                .expect("target collected above")
-        };
-        let run_index = |r: u32| run_labels.binary_search(&r).expect("run collected above");
-
-        // First line of each (target, direction, run), to report duplicates, and the count
-        // of readings per target and direction. The dense grid is built only once every
-        // target has n runs in both directions (2·m·n = readings): m distinct targets times
-        // n distinct runs could otherwise ask for m·n ≈ 10^10 cells from a 2 MB file.
-        let mut seen: HashMap<(usize, usize, usize), usize> = HashMap::with_capacity(raw.len());
-        let mut counts = vec![[0usize; 2]; m];
-        let mut indices = Vec::with_capacity(raw.len());
-        for r in &raw {
-            let i = target_index(r.target);
-            let j = run_index(r.run);
-            let d = r.direction.index();
-            if let Some(first_line) = seen.insert((i, d, j), r.line) {
-                return Err(ReadError::new(
-                    Location::line(file, r.line),
-                    ReadErrorKind::DuplicateReading {
-                        target: fmt_target(kind, r.target),
-                        direction: r.direction.name().into(),
-                        run: r.run,
-                        first_line,
-                    },
-                ));
-            }
-            counts[i][d] += 1;
-            indices.push((i, j));
-        }
-        drop(seen);
-
-        for (i, &target) in targets.iter().enumerate() {
-            let [up, down] = counts[i];
-            if up == n && down == n {
-                continue;
-            }
-            let first_line = raw
-                .iter()
-                .zip(&indices)
-                .find(|(_, (t, _))| *t == i)
-                .map_or(0, |(r, _)| r.line);
-            let location = Location::line(file, first_line);
-            if up == 0 || down == 0 {
-                let present = if up == 0 { "down" } else { "up" };
-                return Err(ReadError::new(
-                    location,
-                    ReadErrorKind::OneDirection {
-                        target: fmt_target(kind, target),
-                        present: present.into(),
-                    },
-                ));
-            }
-            for d in Direction::BOTH {
-                if counts[i][d.index()] != n {
-                    let mut labels: Vec<u32> = raw
-                        .iter()
-                        .zip(&indices)
-                        .filter(|(r, (t, _))| *t == i && r.direction == d)
-                        .map(|(r, _)| r.run)
-                        .collect();
-                    labels.sort_unstable();
-                    return Err(ReadError::new(
-                        location,
-                        ReadErrorKind::RaggedRuns {
-                            target: fmt_target(kind, target),
-                            direction: d.name().into(),
-                            has: list(&labels),
-                            expected: list(&run_labels),
-                        },
-                    ));
-                }
-            }
-        }
+        let targets = distinct_sorted(raw.iter().map(|r| r.target), f64::total_cmp);
+        let run_labels = distinct_sorted(raw.iter().map(|r| r.run), u32::cmp);
+        let cells = Cells::index(&raw, &targets, &run_labels, kind, file)?;
+        cells.check_complete(&raw, &targets, &run_labels, kind, file)?;
 
         // Every (target, direction) has its n distinct runs: the grid has one cell per reading.
+        let (m, n) = (targets.len(), run_labels.len());
         let mut grid = [vec![f64::NAN; m * n], vec![f64::NAN; m * n]];
         let mut readings = Vec::with_capacity(raw.len());
         let mut temperatures_c = Vec::with_capacity(raw.len());
-        for (r, (i, j)) in raw.into_iter().zip(indices) {
+        for (r, (i, j)) in raw.into_iter().zip(cells.indices) {
             grid[r.direction.index()][i * n + j] = r.deviation;
             readings.push(Reading {
                 target: i,
@@ -251,6 +172,126 @@ impl AxisData {
             out.grid[r.direction.index()][r.target * n + r.run] = value;
         }
         out
+    }
+}
+
+/// The distinct values, ascending.
+fn distinct_sorted<T: Copy + PartialEq>(
+    values: impl Iterator<Item = T>,
+    order: impl Fn(&T, &T) -> std::cmp::Ordering,
+) -> Vec<T> {
+    let mut out: Vec<T> = values.collect();
+    out.sort_by(order);
+    out.dedup();
+    out
+}
+
+/// Where each raw reading falls in the grid, and how many readings each target has per
+/// direction.
+struct Cells {
+    /// (target index i, run index j) of every raw reading, in order.
+    indices: Vec<(usize, usize)>,
+    /// Readings per target, by direction.
+    counts: Vec<[usize; 2]>,
+}
+
+impl Cells {
+    /// Indexes the readings and refuses a duplicate (same target, direction and run),
+    /// naming the line of the first. The dense grid is built only once every target has n
+    /// runs in both directions (2·m·n = readings): m distinct targets times n distinct runs
+    /// could otherwise ask for m·n ≈ 10^10 cells from a 2 MB file.
+    fn index(
+        raw: &[RawReading],
+        targets: &[f64],
+        run_labels: &[u32],
+        kind: AxisKind,
+        file: &str,
+    ) -> Result<Cells, ReadError> {
+        let target_index = |t: f64| {
+            targets
+                .binary_search_by(|p| p.total_cmp(&t))
+                .expect("target collected above")
+        };
+        let run_index = |r: u32| run_labels.binary_search(&r).expect("run collected above");
+        let mut seen: HashMap<(usize, usize, usize), usize> = HashMap::with_capacity(raw.len());
+        let mut counts = vec![[0usize; 2]; targets.len()];
+        let mut indices = Vec::with_capacity(raw.len());
+        for r in raw {
+            let i = target_index(r.target);
+            let j = run_index(r.run);
+            let d = r.direction.index();
+            if let Some(first_line) = seen.insert((i, d, j), r.line) {
+                return Err(ReadError::new(
+                    Location::line(file, r.line),
+                    ReadErrorKind::DuplicateReading {
+                        target: fmt_target(kind, r.target),
+                        direction: r.direction.name().into(),
+                        run: r.run,
+                        first_line,
+                    },
+                ));
+            }
+            counts[i][d] += 1;
+            indices.push((i, j));
+        }
+        Ok(Cells { indices, counts })
+    }
+
+    /// Every target has n runs in both directions: else the first target that has not is
+    /// an error (readings in one direction only, or ragged runs).
+    fn check_complete(
+        &self,
+        raw: &[RawReading],
+        targets: &[f64],
+        run_labels: &[u32],
+        kind: AxisKind,
+        file: &str,
+    ) -> Result<(), ReadError> {
+        let n = run_labels.len();
+        for (i, &target) in targets.iter().enumerate() {
+            let [up, down] = self.counts[i];
+            if up == n && down == n {
+                continue;
+            }
+            let at_target = || {
+                raw.iter()
+                    .zip(&self.indices)
+                    .filter(move |(_, (t, _))| *t == i)
+                    .map(|(r, _)| r)
+            };
+            let first_line = at_target().next().map_or(0, |r| r.line);
+            let location = Location::line(file, first_line);
+            if up == 0 || down == 0 {
+                let present = if up == 0 { "down" } else { "up" };
+                return Err(ReadError::new(
+                    location,
+                    ReadErrorKind::OneDirection {
+                        target: fmt_target(kind, target),
+                        present: present.into(),
+                    },
+                ));
+            }
+            let d = if up != n {
+                Direction::Up
+            } else {
+                Direction::Down
+            };
+            let mut labels: Vec<u32> = at_target()
+                .filter(|r| r.direction == d)
+                .map(|r| r.run)
+                .collect();
+            labels.sort_unstable();
+            return Err(ReadError::new(
+                location,
+                ReadErrorKind::RaggedRuns {
+                    target: fmt_target(kind, target),
+                    direction: d.name().into(),
+                    has: list(&labels),
+                    expected: list(run_labels),
+                },
+            ));
+        }
+        Ok(())
     }
 }
 

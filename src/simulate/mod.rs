@@ -21,6 +21,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Simulation {
+    #[serde(deserialize_with = "crate::yaml::keyword")]
     pub kind: AxisKind,
     #[serde(default)]
     pub seed: u64,
@@ -31,13 +32,8 @@ pub struct Simulation {
     pub plan: TestPlan,
 }
 
-/// A simulation file that cannot be used.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}: {message}")]
-pub struct SimulationError {
-    pub file: String,
-    pub message: String,
-}
+/// A simulation file that cannot be used: `file:line:column: message`.
+pub type SimulationError = crate::yaml::YamlError;
 
 /// Decimals kept in simulated deviations (as the CSV writer writes them).
 const DECIMALS: i32 = 4;
@@ -45,25 +41,15 @@ const DECIMALS: i32 = 4;
 impl Simulation {
     /// Parses and checks a simulation file; `file` names it in errors.
     pub fn from_yaml(text: &str, file: &str) -> Result<Simulation, SimulationError> {
-        let err = |message: String| SimulationError {
-            file: file.to_string(),
-            message,
-        };
-        let value: serde_norway::Value =
-            serde_norway::from_str(text).map_err(|e| err(e.to_string()))?;
-        let kind = match value.get("kind").and_then(|k| k.as_str()) {
-            Some("linear") => AxisKind::Linear,
-            Some("rotary") => AxisKind::Rotary,
-            Some(other) => {
-                return Err(err(format!(
-                    "kind: expected `linear` or `rotary`, found `{other}`"
-                )));
-            }
-            None => return Err(err("missing `kind: linear` or `kind: rotary`".into())),
-        };
-        yaml::check_keys(&value, kind).map_err(err)?;
-        let sim: Simulation = serde_norway::from_str(text).map_err(|e| err(e.to_string()))?;
-        sim.validate().map_err(err)?;
+        let (value, index) = crate::yaml::parse(text, file)?;
+        let fail = |located: crate::yaml::Located| located.in_file(file);
+        let kind = yaml::kind(&value, &index).map_err(fail)?;
+        yaml::check_keys(&value, kind, &index).map_err(fail)?;
+        let spell = |path: &str, field: &str| yaml::spell(path, field, kind);
+        let sim: Simulation =
+            crate::yaml::deserialize_spelled(&value, "", &index, &spell).map_err(fail)?;
+        sim.validate()
+            .map_err(|message| fail(yaml::locate(&message, kind, &index)))?;
         Ok(sim)
     }
 
@@ -203,33 +189,69 @@ plan:
 
     #[test]
     fn unit_keys_must_match_the_kind() {
-        let e = Simulation::from_yaml(
-            "kind: rotary\nmodel: {reversal_um: 4}\nplan: {targets_deg: [0, 90]}\n",
-            "r.yaml",
-        )
-        .unwrap_err();
-        assert!(
-            e.message.contains("write `model.reversal_arcsec`")
-                || e.message.contains("reversal_arcsec"),
-            "{e}"
+        let e = |text: &str| {
+            Simulation::from_yaml(text, "m.yaml")
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            e("kind: rotary\nmodel: {reversal_um: 4}\nplan: {targets_deg: [0, 90]}\n"),
+            "m.yaml:2:9: `model.reversal_um` has a linear unit, but this is a rotary model; write `reversal_arcsec`"
         );
-        let e = Simulation::from_yaml(
-            "kind: linear\nmodel: {reversal: 4}\nplan: {targets_mm: [0, 90]}\n",
-            "l.yaml",
-        )
-        .unwrap_err();
-        assert!(e.message.contains("has no unit"), "{e}");
-        let e = Simulation::from_yaml(
-            "kind: linear\nmodel: {revrsal_um: 4}\nplan: {targets_mm: [0, 90]}\n",
-            "l.yaml",
-        )
-        .unwrap_err();
-        assert!(e.message.contains("did you mean `reversal_um`"), "{e}");
-        let e = Simulation::from_yaml(
-            "kind: linear\nmodel: {scatter_um: abc}\nplan: {targets_mm: [0, 90]}\n",
-            "l.yaml",
-        )
-        .unwrap_err();
-        assert!(e.to_string().contains("line 2"), "{e}");
+        assert_eq!(
+            e("kind: linear\nmodel: {reversal: 4}\nplan: {targets_mm: [0, 90]}\n"),
+            "m.yaml:2:9: `model.reversal` has no unit; write `reversal_um`"
+        );
+        assert!(
+            e("kind: linear\nmodel: {revrsal_um: 4}\nplan: {targets_mm: [0, 90]}\n").starts_with(
+                "m.yaml:2:9: unknown key `model.revrsal_um` (did you mean `reversal_um`?)"
+            )
+        );
+        assert_eq!(
+            e("kind: linear\nmodel: {scatter_um: abc}\nplan: {targets_mm: [0, 90]}\n"),
+            "m.yaml:2:21: model.scatter_um: expected a number, got the text `abc`"
+        );
+    }
+
+    /// Every error names the place and says what was expected, in the file's spelling.
+    #[test]
+    fn errors_in_the_users_words() {
+        let e = |text: &str| {
+            Simulation::from_yaml(text, "m.yaml")
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            e("kind: linar\nplan: {targets_mm: [0, 100]}\n"),
+            "m.yaml:1:7: kind: unknown kind `linar` (did you mean `linear`?); expected linear or rotary"
+        );
+        assert_eq!(
+            e("kind: [linear]\nplan: {targets_mm: [0, 100]}\n"),
+            "m.yaml:1:7: kind: expected linear or rotary, got a list of 1 item"
+        );
+        assert_eq!(
+            e("plan: {targets_mm: [0, 100]}\n"),
+            "m.yaml:1:1: missing `kind: linear` or `kind: rotary`"
+        );
+        assert_eq!(
+            e("kind: linear\nplan: {targets_mm: [0, 100], cycle: [step]}\n"),
+            "m.yaml:2:37: plan.cycle: expected standard, step or pilgrim, got a list of 1 item"
+        );
+        assert_eq!(
+            e("kind: linear\nplan: {targets: {end_mm: 10, count: 3}}\n"),
+            "m.yaml:2:17: plan.targets: missing key `start_mm`"
+        );
+        assert_eq!(
+            e("kind: linear\nplan: {targets_mm: [0, 100], feed_mm_per_min: 0}\n"),
+            "m.yaml:2:47: plan.feed_mm_per_min must be > 0"
+        );
+        assert_eq!(
+            e("kind: linear\nmodel: {scatter_um: -1}\nplan: {targets_mm: [0, 100]}\n"),
+            "m.yaml:2:21: model.scatter_um must be a finite number ≥ 0, found -1"
+        );
+        assert_eq!(
+            e(""),
+            "m.yaml:1:1: expected a mapping with kind, model and plan, got an empty file"
+        );
     }
 }

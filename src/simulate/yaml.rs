@@ -5,7 +5,9 @@
 //! error, as is a key without its unit) before the typed parse, which reports line and
 //! column of bad values.
 
-use crate::units::AxisKind;
+use super::Cycle;
+use crate::units::{AxisKind, Direction};
+use crate::yaml::{Located, LocationIndex, describe, join, names_of, or_list};
 use serde_norway::{Mapping, Value};
 
 /// Where a key lives.
@@ -117,63 +119,199 @@ fn spelling(key: &Key, kind: AxisKind) -> &'static str {
     }
 }
 
-/// Checks every key against the kind; returns a message naming the key's path.
-pub(crate) fn check_keys(value: &Value, kind: AxisKind) -> Result<(), String> {
-    check(value, Ctx::Top, kind, "")
+/// The axis kind the file declares, read first: it decides how every other key is spelled.
+pub(crate) fn kind(value: &Value, index: &LocationIndex) -> Result<AxisKind, Located> {
+    let root = index.value("");
+    let expected = "expected a mapping with kind, model and plan";
+    match value {
+        Value::Mapping(_) => {}
+        Value::Null => return Err(Located::new(root, format!("{expected}, got an empty file"))),
+        other => {
+            return Err(Located::new(
+                root,
+                format!("{expected}, got {}", describe(other)),
+            ));
+        }
+    }
+    if value.get("kind").is_none() {
+        return Err(Located::new(
+            root,
+            "missing `kind: linear` or `kind: rotary`",
+        ));
+    }
+    /// Only the kind, through the same reader as [`super::Simulation`]'s.
+    #[derive(serde::Deserialize)]
+    struct KindOnly {
+        #[serde(deserialize_with = "crate::yaml::keyword")]
+        kind: AxisKind,
+    }
+    crate::yaml::deserialize_at::<KindOnly>(value, "", index).map(|k| k.kind)
 }
 
-fn check(value: &Value, ctx: Ctx, kind: AxisKind, path: &str) -> Result<(), String> {
+/// Checks every key against the kind, and that names (`cycle`, `direction`) are text;
+/// the error names the key's path and location.
+pub(crate) fn check_keys(
+    value: &Value,
+    kind: AxisKind,
+    index: &LocationIndex,
+) -> Result<(), Located> {
+    check(value, Ctx::Top, kind, "", index)
+}
+
+/// The names a key that holds a name (`cycle: step`) may have.
+fn keyword_names(ctx: Ctx, internal: &str) -> Option<String> {
+    match (ctx, internal) {
+        (Ctx::Plan, "cycle") => Some(or_list(&names_of::<Cycle>())),
+        (Ctx::Outlier, "direction") => Some(or_list(&names_of::<Direction>())),
+        _ => None,
+    }
+}
+
+fn check(
+    value: &Value,
+    ctx: Ctx,
+    kind: AxisKind,
+    path: &str,
+    index: &LocationIndex,
+) -> Result<(), Located> {
     match value {
         Value::Sequence(items) => {
             for (k, item) in items.iter().enumerate() {
-                check(item, ctx, kind, &format!("{path}[{k}]"))?;
+                check(item, ctx, kind, &format!("{path}[{k}]"), index)?;
             }
             Ok(())
         }
         Value::Mapping(map) => {
-            let table = keys(ctx);
             for (k, v) in map {
                 let Some(name) = k.as_str() else {
-                    return Err(format!("{path}: keys must be text"));
+                    let message = format!("keys are names, got {} as a key", describe(k));
+                    let message = match path {
+                        "" => message,
+                        _ => format!("{path}: {message}"),
+                    };
+                    return Err(Located::new(index.value(path), message));
                 };
-                let here = if path.is_empty() {
-                    name.to_string()
-                } else {
-                    format!("{path}.{name}")
-                };
-                if let Some(entry) = table.iter().find(|e| spelling(e, kind) == name) {
-                    if let Some(child) = entry.3 {
-                        check(v, child, kind, &here)?;
-                    }
-                    continue;
+                let here = join(path, name);
+                let entry = spelled(ctx, kind, name).ok_or_else(|| {
+                    Located::new(index.key_or_value(&here), misspelt(ctx, kind, name, &here))
+                })?;
+                if let Some(names) = keyword_names(ctx, entry.0)
+                    && !v.is_string()
+                {
+                    let message = format!("{here}: expected {names}, got {}", describe(v));
+                    return Err(Located::new(index.value(&here), message));
                 }
-                let other = match kind {
-                    AxisKind::Linear => AxisKind::Rotary,
-                    AxisKind::Rotary => AxisKind::Linear,
-                };
-                if let Some(entry) = table.iter().find(|e| spelling(e, other) == name) {
-                    return Err(format!(
-                        "`{here}` has a {other} unit, but this is a {kind} model; write `{}`",
-                        spelling(entry, kind)
-                    ));
+                if let Some(child) = entry.3 {
+                    check(v, child, kind, &here, index)?;
                 }
-                let names: Vec<&str> = table.iter().map(|e| spelling(e, kind)).collect();
-                let hint = crate::suggest::hint(name, &names);
-                let unitless = table
-                    .iter()
-                    .find(|e| e.0 == name && spelling(e, kind) != name);
-                return Err(match unitless {
-                    Some(e) => format!("`{here}` has no unit; write `{}`", spelling(e, kind)),
-                    None => format!(
-                        "unknown key `{here}`{hint}; expected one of {}",
-                        names.join(", ")
-                    ),
-                });
             }
             Ok(())
         }
         _ => Ok(()),
     }
+}
+
+/// The entry of `ctx` that `kind` spells `name`.
+fn spelled(ctx: Ctx, kind: AxisKind, name: &str) -> Option<&'static Key> {
+    keys(ctx).iter().find(|e| spelling(e, kind) == name)
+}
+
+/// Why `name` is not a key of `ctx` for `kind`: the other kind's unit, no unit, or unknown.
+fn misspelt(ctx: Ctx, kind: AxisKind, name: &str, here: &str) -> String {
+    let table = keys(ctx);
+    let other = match kind {
+        AxisKind::Linear => AxisKind::Rotary,
+        AxisKind::Rotary => AxisKind::Linear,
+    };
+    if let Some(entry) = table.iter().find(|e| spelling(e, other) == name) {
+        return format!(
+            "`{here}` has a {other} unit, but this is a {kind} model; write `{}`",
+            spelling(entry, kind)
+        );
+    }
+    if let Some(e) = table
+        .iter()
+        .find(|e| e.0 == name && spelling(e, kind) != name)
+    {
+        return format!("`{here}` has no unit; write `{}`", spelling(e, kind));
+    }
+    let names: Vec<&str> = table.iter().map(|e| spelling(e, kind)).collect();
+    let hint = crate::suggest::hint(name, &names);
+    format!(
+        "unknown key `{here}`{hint}; expected one of {}",
+        names.join(", ")
+    )
+}
+
+/// The context of the mapping at `path` (`plan.targets` → the target spacing), following
+/// the keys as the file spells them.
+fn context_at(path: &str, kind: AxisKind) -> Option<Ctx> {
+    let mut ctx = Ctx::Top;
+    for segment in path.split('.').filter(|s| !s.is_empty()) {
+        let name = segment.split('[').next().unwrap_or(segment);
+        ctx = spelled(ctx, kind, name)?.3?;
+    }
+    Some(ctx)
+}
+
+/// The field `field` of the mapping at `path` as the file spells it (`pitch` →
+/// `pitch_mm`), for messages about a missing key.
+pub(crate) fn spell(path: &str, field: &str, kind: AxisKind) -> String {
+    context_at(path, kind)
+        .and_then(|ctx| keys(ctx).iter().find(|e| e.0 == field))
+        .map_or_else(|| field.to_string(), |e| spelling(e, kind).to_string())
+}
+
+/// A check's message (which names keys by their internal names, `model.scatter`) with
+/// the keys as the file spells them (`model.scatter_um`), at the first key's location.
+pub(crate) fn locate(message: &str, kind: AxisKind, index: &LocationIndex) -> Located {
+    let mut out = String::new();
+    let mut first = None;
+    let mut rest = message;
+    while let Some(start) = rest.find(['m', 'p']) {
+        let boundary =
+            start == 0 || !rest[..start].ends_with(|c: char| c.is_alphanumeric() || c == '_');
+        let len = rest[start..]
+            .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == '.' || c == '[' || c == ']'))
+            .unwrap_or(rest.len() - start);
+        let token = rest[start..start + len].trim_end_matches('.');
+        out.push_str(&rest[..start]);
+        let path = boundary.then(|| spelled_path(token, kind)).flatten();
+        out.push_str(path.as_deref().unwrap_or(token));
+        if first.is_none() {
+            first = path;
+        }
+        rest = &rest[start + token.len()..];
+    }
+    out.push_str(rest);
+    let at = first.and_then(|p| index.value(&p)).or(index.value(""));
+    Located::new(at, out)
+}
+
+/// `model.scatter` as `model.scatter_um`: each internal name (or a name it starts with,
+/// `plan.feed` for `feed_per_min`) spelled for the kind; `None` if `token` is no path.
+fn spelled_path(token: &str, kind: AxisKind) -> Option<String> {
+    if !(token == "model"
+        || token == "plan"
+        || token.starts_with("model.")
+        || token.starts_with("plan."))
+    {
+        return None;
+    }
+    let mut ctx = Some(Ctx::Top);
+    let mut out = String::new();
+    for segment in token.split('.') {
+        let (name, subscript) = segment.split_at(segment.find('[').unwrap_or(segment.len()));
+        let table = keys(ctx?);
+        let entry = table.iter().find(|e| e.0 == name).or_else(|| {
+            table
+                .iter()
+                .find(|e| !name.is_empty() && e.0.starts_with(name))
+        })?;
+        out = join(&out, &format!("{}{subscript}", spelling(entry, kind)));
+        ctx = entry.3;
+    }
+    Some(out)
 }
 
 /// Renames internal keys to the kind's spellings, for writing a model file.

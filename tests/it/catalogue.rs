@@ -257,7 +257,7 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
         (
             "wrong-type",
             "{name: wrong-type, kind: linear, data: data/good.csv, travel: long}",
-            "travel",
+            "travel: expected a length (600) or its two ends ([0, 600]), got the text `long`",
         ),
         (
             "zero-travel",
@@ -267,7 +267,7 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
         (
             "bad-kind",
             "{name: bad-kind, kind: linar, data: data/good.csv}",
-            "unknown variant `linar`",
+            "kind: unknown kind `linar` (did you mean `linear`?); expected linear or rotary",
         ),
         (
             "bad-standard",
@@ -302,7 +302,57 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
         (
             "data-number",
             "{name: data-number, kind: linear, data: 12}",
-            "expected a file path",
+            "data: expected a file path, a list of paths, or {dir: FOLDER, glob: PATTERN}, got the number 12",
+        ),
+        (
+            "travel-four",
+            "{name: travel-four, kind: linear, data: data/good.csv, travel: [0, 1, 2, 3]}",
+            "travel: expected a length (600) or its two ends ([0, 600]), got a list of 4 items",
+        ),
+        (
+            "kind-list",
+            "{name: kind-list, kind: [linear], data: data/good.csv}",
+            "kind: expected linear or rotary, got a list of 1 item",
+        ),
+        (
+            "missing-kind",
+            "{name: missing-kind, data: data/good.csv}",
+            "missing key `kind`",
+        ),
+        (
+            "pitch-text",
+            "{name: pitch-text, kind: linear, data: data/good.csv, pitch: fine}",
+            "pitch: expected a number, got the text `fine`",
+        ),
+        (
+            "measurement-travel-three",
+            "{name: measurement-travel-three, kind: linear, data: data/good.csv, measurement_travel: [0, 1, 2]}",
+            "measurement_travel: expected [first, last], got a list of 3 items",
+        ),
+        (
+            "cycle-unknown",
+            "{name: cycle-unknown, kind: linear, data: data/good.csv, conditions: {cycle: pilgrm}}",
+            "conditions.cycle: unknown cycle `pilgrm` (did you mean `pilgrim`?); expected standard, step or pilgrim",
+        ),
+        (
+            "sensor-kind",
+            "{name: sensor-kind, kind: linear, data: data/good.csv, conditions: {temperature_sensors: [{name: s, kind: [air]}]}}",
+            "temperature_sensors[0].kind: expected material or air, got a list of 1 item",
+        ),
+        (
+            "data-list-number",
+            "{name: data-list-number, kind: linear, data: [data/good.csv, 7]}",
+            "data[1]: expected a file path, got the number 7",
+        ),
+        (
+            "data-dir-list",
+            "{name: data-dir-list, kind: linear, data: {dir: [data], glob: \"*.csv\"}}",
+            "data.dir: expected a folder, got a list of 1 item",
+        ),
+        (
+            "data-glob-typo",
+            "{name: data-glob-typo, kind: linear, data: {dir: data, glb: \"*.csv\"}}",
+            "data.glb: unknown key `glb` (did you mean `glob`?); expected {dir: FOLDER, glob: PATTERN}",
         ),
         (
             "kind-mismatch",
@@ -387,16 +437,20 @@ fn a_campaign_that_cannot_be_read_exits_2_with_its_location() {
     laughs.push_str("machines: *i\n");
     let cases: Vec<(&str, String, &str)> = vec![
         ("tabs", "campaign:\n\tname: x\nmachines: []\n".into(), "indented with a tab"),
-        ("duplicate", "campaign: {name: x}\ncampaign: {name: y}\nmachines: []\n".into(), "duplicate entry"),
+        ("duplicate", "campaign: {name: x}\ncampaign: {name: y}\nmachines: []\n".into(), "duplicate.yaml:2:1: key `campaign` is given twice"),
         ("laughs", laughs, "repetition limit exceeded"),
         ("top-key", "campaign: {name: x}\nmachine: []\n".into(), "did you mean `machines`"),
         ("no-campaign", "machines: []\n".into(), "missing the `campaign:` block"),
         ("not-a-map", "- 1\n- 2\n".into(), "expected a mapping"),
         ("bad-date", "campaign: {name: x, date: 2026-13-40}\nmachines: []\n".into(), "YYYY-MM-DD"),
-        ("date-type", "campaign: {name: x, date: 20261120}\nmachines: []\n".into(), "campaign.date: invalid type: integer"),
+        ("date-type", "campaign: {name: x, date: 20261120}\nmachines: []\n".into(), "date-type.yaml:1:27: campaign.date: expected a date YYYY-MM-DD, got the number 20261120"),
+        ("machines-map", "campaign: {name: x}\nmachines: {M: 1}\n".into(), "machines-map.yaml:2:11: machines: expected a list of machines, got a mapping with 1 key"),
+        ("two-documents", "campaign: {name: x}\nmachines: []\n---\nmachines: []\n".into(), "two-documents.yaml:3:1: more than one YAML document (a `---` line starts another); the file holds one"),
+        ("unknown-anchor", "campaign: {name: x}\nmachines: *fleet\n".into(), "unknown-anchor.yaml:2:11: unknown anchor: an alias `*name` needs an anchor `&name` before it"),
+        ("info-list", "campaign: [x]\nmachines: []\n".into(), "info-list.yaml:1:11: campaign: expected a mapping (key: value), got a list of 1 item"),
         ("bad-standard", "campaign: {name: x, standard: iso}\nmachines: [{id: M, axes: []}, {id: M, axes: []}]\n".into(), "used twice"),
         ("unclosed", "campaign: {name: x\n".into(), "unclosed.yaml:"),
-        ("empty", String::new(), "empty.yaml"),
+        ("empty", String::new(), "empty.yaml:1:1: expected a mapping with `campaign:` and `machines:`, got an empty file"),
     ];
     for (name, text, want) in cases {
         let path = dir.join(format!("{name}.yaml"));

@@ -1,7 +1,7 @@
 //! Test-plan rules at their boundaries.
 use axcheck::evaluate::StandardId;
 use axcheck::measurement::{AxisData, RawReading};
-use axcheck::rules::{PlanContext, Severity, check};
+use axcheck::rules::{PlanContext, RULES, Severity, check};
 use axcheck::simulate::rng::Rng;
 use axcheck::units::Travel;
 use axcheck::units::{AxisKind, Direction};
@@ -291,4 +291,45 @@ fn gost_profile() {
         errors(&r, &data(AxisKind::Rotary, &[0.0, 90.0, 170.0, 270.0], 5)),
         vec!["gost-2.8-cardinal"]
     );
+}
+
+/// The README's rule table lists every rule, in the order they run, with its clause,
+/// severity and what it checks: the two cannot drift apart.
+#[test]
+fn readme_rule_table_matches_the_rules() {
+    let readme = include_str!("../../README.md");
+    let section = readme
+        .split("### Test-plan rules")
+        .nth(1)
+        .expect("README has a Test-plan rules section");
+    let rows: Vec<Vec<String>> = section
+        .lines()
+        .skip_while(|l| !l.starts_with("| id |"))
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.trim_matches('|')
+                .split(" | ")
+                .map(|cell| cell.trim().trim_matches('`').to_string())
+                .collect()
+        })
+        .collect();
+    let rules: Vec<Vec<String>> = RULES
+        .iter()
+        .map(|r| {
+            [r.id, r.clause, r.severity.name(), r.checks]
+                .map(str::to_string)
+                .to_vec()
+        })
+        .collect();
+    assert_eq!(rows, rules);
+}
+
+/// Ids are unique: a finding names its rule.
+#[test]
+fn rule_ids_are_unique() {
+    let mut ids: Vec<&str> = RULES.iter().map(|r| r.id).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), RULES.len());
 }

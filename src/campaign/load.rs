@@ -1,0 +1,209 @@
+//! Machines and axes of a campaign, loaded one by one: a broken one becomes an entry
+//! with its error (file, line, column), and the rest of the campaign is still evaluated.
+
+use super::data::DataSource;
+use super::{AxisEntry, AxisRaw, AxisSpec, CampaignInfo, Machine, MachineInfo, parse_standard};
+use crate::evaluate::StandardId;
+use crate::evaluate::catalogue;
+use crate::units::Travel;
+use crate::yaml::{self, Located, LocationIndex, deserialize_at};
+use serde_norway::Value;
+
+/// The machine at `base` with its axes; a machine that cannot be read fails each of its
+/// axes with its error.
+pub(super) fn machine(
+    value: &Value,
+    base: &str,
+    index: &LocationIndex,
+    file: &str,
+    campaign: &CampaignInfo,
+    standard: StandardId,
+) -> Machine {
+    let info = match deserialize_at::<MachineInfo>(value, base, index) {
+        Ok(info) => info,
+        Err(e) => return broken_machine(value, base, e.in_file(file).to_string()),
+    };
+    let axes = match value.get("axes") {
+        Some(Value::Sequence(items)) => items
+            .iter()
+            .enumerate()
+            .map(|(a, v)| {
+                let base = format!("{base}.axes[{a}]");
+                axis(v, a, &base, index, file, campaign, standard)
+            })
+            .collect(),
+        None | Some(Value::Null) => Vec::new(),
+        Some(other) => vec![AxisEntry {
+            name: "axes".into(),
+            spec: Err(Located::new(
+                index.value(&format!("{base}.axes")),
+                format!(
+                    "{base}.axes: expected a list of axes, got {}",
+                    yaml::describe(other)
+                ),
+            )
+            .in_file(file)
+            .to_string()),
+        }],
+    };
+    Machine { info, axes }
+}
+
+/// A machine that cannot be read: each of its axes reports why (or one entry if none).
+fn broken_machine(value: &Value, base: &str, message: String) -> Machine {
+    let id = value
+        .get("id")
+        .and_then(|v| v.as_str())
+        .map_or_else(|| base.to_string(), str::to_string);
+    let mut names: Vec<String> = match value.get("axes") {
+        Some(Value::Sequence(items)) => items
+            .iter()
+            .enumerate()
+            .map(|(a, v)| axis_name(v, a))
+            .collect(),
+        _ => Vec::new(),
+    };
+    if names.is_empty() {
+        names.push("(all axes)".to_string());
+    }
+    Machine {
+        info: MachineInfo {
+            id,
+            ..MachineInfo::default()
+        },
+        axes: names
+            .into_iter()
+            .map(|name| AxisEntry {
+                name,
+                spec: Err(message.clone()),
+            })
+            .collect(),
+    }
+}
+
+/// The axis's name as written, or `axis N` (1-based) when it has none that reads.
+fn axis_name(value: &Value, a: usize) -> String {
+    value
+        .get("name")
+        .and_then(|v| {
+            v.as_str()
+                .map(str::to_string)
+                .or_else(|| v.as_i64().map(|n| n.to_string()))
+        })
+        .unwrap_or_else(|| format!("axis {}", a + 1))
+}
+
+/// The axis `a` of a machine, at `base` in the document.
+fn axis(
+    value: &Value,
+    a: usize,
+    base: &str,
+    index: &LocationIndex,
+    file: &str,
+    campaign: &CampaignInfo,
+    default_standard: StandardId,
+) -> AxisEntry {
+    let line = index.value(base).map_or(0, |(l, _)| l);
+    let spec = validated_axis(value, base, index, default_standard).map(|(raw, standard, data)| {
+        AxisSpec {
+            standard,
+            // `spec: none` opts an axis out of the campaign's default spec.
+            spec: match raw.spec.as_deref() {
+                Some("none") => None,
+                Some(name) => Some(name.to_string()),
+                None => campaign.spec.clone().filter(|s| s != "none"),
+            },
+            data,
+            line,
+            raw,
+        }
+    });
+    AxisEntry {
+        name: axis_name(value, a),
+        spec: spec.map_err(|e| e.in_file(file).to_string()),
+    }
+}
+
+/// The axis as written, its standard and its data source, each value checked.
+fn validated_axis(
+    value: &Value,
+    base: &str,
+    index: &LocationIndex,
+    default_standard: StandardId,
+) -> Result<(AxisRaw, StandardId, DataSource), Located> {
+    let raw: AxisRaw = deserialize_at(value, base, index)?;
+    let standard = match &raw.standard {
+        None => default_standard,
+        Some(s) => parse_standard(s, &format!("{base}.standard"), index)?,
+    };
+    let data = DataSource::from_value(&raw.data).map_err(|bad| {
+        let path = format!("{base}.data{}", bad.path);
+        let at = if bad.at_key {
+            index.key_or_value(&path)
+        } else {
+            index.value(&path)
+        };
+        Located::new(at, format!("{path}: {}", bad.message))
+    })?;
+    check_travels(&raw, base, index)?;
+    check_pitch(&raw, base, index)?;
+    check_tolerances(&raw, base, index)?;
+    Ok((raw, standard, data))
+}
+
+/// Axis travel: a length > 0 or two ends in order; measurement travel: first < last.
+fn check_travels(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    let at = |key: &str| index.value(&format!("{base}.{key}"));
+    if let Some(t) = raw.travel {
+        let ok = match t {
+            Travel::Length(l) => l > 0.0 && l.is_finite(),
+            Travel::Range([a, b]) => b > a && a.is_finite() && b.is_finite(),
+        };
+        if !ok {
+            return Err(Located::new(
+                at("travel"),
+                format!("{base}.travel: expected a length > 0 or [start, end] with end > start"),
+            ));
+        }
+    }
+    if let Some([a, b]) = raw.measurement_travel
+        && !(b > a && a.is_finite() && b.is_finite())
+    {
+        return Err(Located::new(
+            at("measurement_travel"),
+            format!("{base}.measurement_travel: expected [first, last] with last > first"),
+        ));
+    }
+    Ok(())
+}
+
+fn check_pitch(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    match raw.pitch {
+        Some(p) if !(p > 0.0 && p.is_finite()) => Err(Located::new(
+            index.value(&format!("{base}.pitch")),
+            format!("{base}.pitch: expected a pitch > 0"),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// Every limit names a parameter that can be limited, and is a number ≥ 0.
+fn check_tolerances(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    for (key, limit) in &raw.tolerances {
+        let path = format!("{base}.tolerances.{key}");
+        if !catalogue::is_limitable_key(key) {
+            let hint = crate::suggest::hint(key, catalogue::limitable_keys());
+            return Err(Located::new(
+                index.key(&path),
+                format!("{base}.tolerances: unknown parameter `{key}`{hint}"),
+            ));
+        }
+        if !(*limit >= 0.0 && limit.is_finite()) {
+            return Err(Located::new(
+                index.value(&path),
+                format!("{path}: expected a limit ≥ 0"),
+            ));
+        }
+    }
+    Ok(())
+}

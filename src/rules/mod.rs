@@ -1,0 +1,234 @@
+//! Test-plan rules: does the measured test follow the standard's plan?
+//!
+//! One file per rule, its reason beside its check. Each rule has an id, the clause it
+//! enforces, a severity and a message that says what to change. Rules count what was
+//! measured (targets and runs in the data), not what the campaign claims. Which travel
+//! rules apply follows the measured travel: a linear test over ≤ 2000 mm is a clause 4.3.2
+//! test (also the working-range test of a longer axis, 4.3.3), a longer one a clause 4.3.3
+//! test; rotary tests over ≤ 360° follow 4.3.4, longer ones 4.3.5 (ISO 230-2:1997).
+
+mod data_unit;
+mod gost_2_10_runs;
+mod gost_2_7_targets;
+mod gost_2_8_cardinal;
+mod iso_2_2_measurement_travel;
+mod iso_2_2_reversal_room;
+mod iso_3_3_thermal;
+mod iso_4_2_pitch_alias;
+mod iso_4_2_uniform_spacing;
+mod iso_4_3_2_runs;
+mod iso_4_3_2_targets;
+mod iso_4_3_3_runs;
+mod iso_4_3_3_spacing;
+mod iso_4_3_4_cardinal;
+mod iso_4_3_4_runs;
+mod iso_4_3_4_targets;
+mod iso_4_3_5_range;
+mod iso_4_3_5_runs;
+mod iso_4_3_5_spacing;
+
+use crate::evaluate::StandardId;
+use crate::measurement::AxisData;
+use crate::units::Travel;
+use crate::units::{AxisKind, fmt_position};
+use serde::Serialize;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    /// The test does not follow the standard: the verdict is `noncompliant`.
+    Error,
+    /// Worth fixing; the result stands.
+    Warning,
+}
+
+impl Severity {
+    /// `error` or `warning`, as in the JSON outputs.
+    pub fn name(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        }
+    }
+}
+
+/// A broken rule.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Finding {
+    pub id: &'static str,
+    pub clause: &'static str,
+    pub severity: Severity,
+    pub message: String,
+}
+
+/// What the campaign says about the axis, besides its data.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanContext {
+    pub kind: AxisKind,
+    pub standard: StandardId,
+    pub axis_travel: Option<Travel>,
+    pub measurement_travel: Option<[f64; 2]>,
+    /// Lead-screw or encoder pitch, mm or deg.
+    pub pitch: Option<f64>,
+}
+
+/// A test-plan rule: what it is called and enforces, and its check.
+#[derive(Debug, Clone, Copy)]
+pub struct Rule {
+    pub id: &'static str,
+    pub clause: &'static str,
+    pub severity: Severity,
+    /// What the rule checks, in a few words (the README's rule table).
+    pub checks: &'static str,
+    /// The message when the plan breaks the rule; `None` when it holds or does not apply.
+    check: fn(&Plan) -> Option<String>,
+}
+
+impl Rule {
+    /// The finding for `plan`, if the rule is broken.
+    fn apply(&self, plan: &Plan) -> Option<Finding> {
+        (self.check)(plan).map(|message| Finding {
+            id: self.id,
+            clause: self.clause,
+            severity: self.severity,
+            message,
+        })
+    }
+}
+
+/// Every rule, in the order their findings are reported.
+pub const RULES: &[Rule] = &[
+    iso_4_3_2_targets::RULE,
+    iso_4_3_2_runs::RULE,
+    iso_4_3_3_spacing::RULE,
+    iso_4_3_3_runs::RULE,
+    iso_4_3_4_targets::RULE,
+    iso_4_3_4_cardinal::RULE,
+    iso_4_3_4_runs::RULE,
+    iso_4_3_5_spacing::RULE,
+    iso_4_3_5_runs::RULE,
+    iso_4_3_5_range::RULE,
+    gost_2_7_targets::RULE,
+    gost_2_8_cardinal::RULE,
+    gost_2_10_runs::RULE,
+    iso_2_2_measurement_travel::RULE,
+    iso_2_2_reversal_room::RULE,
+    iso_4_2_uniform_spacing::RULE,
+    iso_4_2_pitch_alias::RULE,
+    iso_3_3_thermal::RULE,
+    data_unit::RULE,
+];
+
+/// Checks the plan of one test.
+pub fn check(ctx: &PlanContext, data: &AxisData) -> Vec<Finding> {
+    let plan = Plan::new(ctx, data);
+    RULES.iter().filter_map(|rule| rule.apply(&plan)).collect()
+}
+
+const EPS: f64 = 1e-9;
+
+/// Linear tests over at most this measured travel follow clause 4.3.2.
+pub const LINEAR_SHORT_MM: f64 = 2000.0;
+/// Rotary tests over at most this measured travel follow clause 4.3.4.
+pub const ROTARY_SHORT_DEG: f64 = 360.0;
+
+/// The ISO 230-2 clause whose plan a test follows, by axis kind and measured travel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum IsoPlan {
+    /// Linear, up to 2000 mm.
+    Clause4_3_2,
+    /// Linear, over 2000 mm.
+    Clause4_3_3,
+    /// Rotary, up to 360°.
+    Clause4_3_4,
+    /// Rotary, over 360°.
+    Clause4_3_5,
+}
+
+/// One test as the rules see it: the campaign's context and the measured figures.
+struct Plan<'a> {
+    ctx: &'a PlanContext,
+    data: &'a AxisData,
+    /// m: targets measured.
+    targets: usize,
+    /// n: approaches per direction.
+    runs: usize,
+    /// First and last target.
+    first: f64,
+    last: f64,
+    /// Measurement travel, last − first.
+    travel: f64,
+}
+
+impl<'a> Plan<'a> {
+    fn new(ctx: &'a PlanContext, data: &'a AxisData) -> Plan<'a> {
+        let (first, last) = data.measurement_travel();
+        Plan {
+            ctx,
+            data,
+            targets: data.target_count(),
+            runs: data.runs(),
+            first,
+            last,
+            travel: last - first,
+        }
+    }
+
+    fn gost(&self) -> bool {
+        self.ctx.standard == StandardId::Gost27843
+    }
+
+    /// The ISO clause the test follows; `None` for a GOST 27843 test.
+    fn iso_plan(&self) -> Option<IsoPlan> {
+        if self.gost() {
+            return None;
+        }
+        Some(match self.ctx.kind {
+            AxisKind::Linear if self.travel <= LINEAR_SHORT_MM + EPS => IsoPlan::Clause4_3_2,
+            AxisKind::Linear => IsoPlan::Clause4_3_3,
+            AxisKind::Rotary if self.travel <= ROTARY_SHORT_DEG + EPS => IsoPlan::Clause4_3_4,
+            AxisKind::Rotary => IsoPlan::Clause4_3_5,
+        })
+    }
+
+    /// Position unit for messages: `mm` or `deg`.
+    fn unit(&self) -> &'static str {
+        self.ctx.kind.position_unit()
+    }
+
+    /// A position with its unit: `10 mm` or `40°`.
+    fn at(&self, x: f64) -> String {
+        match self.ctx.kind {
+            AxisKind::Linear => format!("{} mm", fmt_position(x)),
+            AxisKind::Rotary => format!("{}°", fmt_position(x)),
+        }
+    }
+
+    /// Intervals between neighbouring targets.
+    fn gaps(&self) -> Vec<f64> {
+        self.data.targets.windows(2).map(|w| w[1] - w[0]).collect()
+    }
+
+    /// ISO 230-2 4.3.4 / GOST 27843 2.8: the principal positions 0°, 90°, 180° and 270°
+    /// (in every turn of the travel) that are not targets, or `None` when all are.
+    fn missing_cardinal_positions(&self) -> Option<String> {
+        let mut missing = Vec::new();
+        for base in [0.0, 90.0, 180.0, 270.0] {
+            // Every turn of the travel that holds this angle.
+            let mut k = ((self.first - base) / 360.0).ceil();
+            while base + 360.0 * k <= self.last + EPS {
+                let angle = base + 360.0 * k;
+                if !self.data.targets.iter().any(|t| (t - angle).abs() <= 1e-6) {
+                    missing.push(fmt_position(angle));
+                }
+                k += 1.0;
+            }
+        }
+        (!missing.is_empty()).then(|| {
+            format!(
+                "the principal positions {}° are not targets; include 0°, 90°, 180° and 270° where inside the travel",
+                missing.join("°, ")
+            )
+        })
+    }
+}
