@@ -3,9 +3,9 @@
 //! axis-wide ranges built from them.
 
 use super::stats::{argmax, mean, range};
-use super::{DirectionResult, TargetResult};
+use super::{DirectionResult, Parameter, ParameterDef, TargetResult};
 use crate::measurement::AxisData;
-use crate::units::Direction;
+use crate::units::Direction::{self, Down, Up};
 
 /// One direction's results at a target: mean, scatter S by `scatter` (`None` when it
 /// cannot be estimated, e.g. n = 1), range, limits X̄ ± kS and repeatability 2kS.
@@ -113,6 +113,33 @@ pub fn max_repeatability(targets: &[TargetResult]) -> Option<(usize, f64)> {
 /// Largest |Bi| with its target (ISO 2.13, GOST 1.16).
 pub fn max_reversal(targets: &[TargetResult]) -> (usize, f64) {
     argmax(targets.iter().map(|t| t.reversal.abs())).expect("an axis has at least one target")
+}
+
+/// The accuracy parameters `[A, A↑, A↓]` as `defs` defines them (ISO 2.22/2.23, GOST
+/// (10)): none when S does not apply (n = 1).
+pub fn accuracies(targets: &[TargetResult], defs: [&'static ParameterDef; 3]) -> Vec<Parameter> {
+    let [both, up, down] = defs;
+    [(both, &[Up, Down][..]), (up, &[Up]), (down, &[Down])]
+        .into_iter()
+        .filter_map(|(def, dirs)| accuracy(targets, dirs).map(|a| Parameter::spanned(def, a)))
+        .collect()
+}
+
+/// The repeatability parameters `[R, R↑, R↓]` as `defs` defines them, each with the
+/// target of its maximum (ISO 2.18, GOST (7), (8)): none when S does not apply.
+pub fn repeatabilities(
+    targets: &[TargetResult],
+    defs: [&'static ParameterDef; 3],
+) -> Vec<Parameter> {
+    let [both, up, down] = defs;
+    [
+        max_repeatability(targets).map(|r| Parameter::located(both, r)),
+        max_repeatability_in(targets, Up).map(|r| Parameter::located(up, r)),
+        max_repeatability_in(targets, Down).map(|r| Parameter::located(down, r)),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
 }
 
 /// Mean of Bi (ISO 2.14, GOST 1.15).

@@ -15,7 +15,6 @@ use super::catalogue::gost27843 as gost;
 use super::stats::{range, sample_sd};
 use super::{Evaluation, Parameter, Standard, StandardId, TargetResult};
 use crate::measurement::AxisData;
-use crate::units::Direction::{Down, Up};
 
 /// Coverage factor: limits X̄ ± 3S (clause 3.1.4).
 pub const K: f64 = 3.0;
@@ -109,14 +108,11 @@ impl Standard for Gost27843 {
 /// Clause 1's parameters in the standard's order; those that need S are left out when
 /// n = 1.
 fn parameters(targets: &[TargetResult]) -> Vec<Parameter> {
-    let (span, at) = (Parameter::spanned, Parameter::located);
-    let mut p = Vec::new();
-    p.extend(band::accuracy(targets, &[Up, Down]).map(|a| span(&gost::A, a)));
-    p.extend(band::accuracy(targets, &[Up]).map(|a| span(&gost::A_UP, a)));
-    p.extend(band::accuracy(targets, &[Down]).map(|a| span(&gost::A_DOWN, a)));
-    p.extend(band::max_repeatability(targets).map(|r| at(&gost::R_MAX, r)));
-    p.extend(band::max_repeatability_in(targets, Up).map(|r| at(&gost::R_UP, r)));
-    p.extend(band::max_repeatability_in(targets, Down).map(|r| at(&gost::R_DOWN, r)));
+    let mut p = band::accuracies(targets, [&gost::A, &gost::A_UP, &gost::A_DOWN]);
+    p.extend(band::repeatabilities(
+        targets,
+        [&gost::R_MAX, &gost::R_UP, &gost::R_DOWN],
+    ));
     // Formula (9): the mean of the 2m unidirectional repeatabilities 6S.
     let unidirectional: Option<Vec<f64>> = targets
         .iter()
@@ -126,7 +122,10 @@ fn parameters(targets: &[TargetResult]) -> Vec<Parameter> {
         let r_mean = values.iter().sum::<f64>() / values.len() as f64;
         p.push(Parameter::plain(&gost::R_MEAN, r_mean));
     }
-    p.push(at(&gost::B_MAX, band::max_reversal(targets)));
+    p.push(Parameter::located(
+        &gost::B_MAX,
+        band::max_reversal(targets),
+    ));
     p.push(Parameter::plain(
         &gost::B_MEAN,
         band::mean_reversal(targets),

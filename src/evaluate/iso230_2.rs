@@ -54,19 +54,17 @@ impl Standard for Iso230_2 {
 /// Clause 7.2.1's parameters in the standard's order; those that need S are left out
 /// when n = 1 (clause 5.2).
 fn parameters(targets: &[TargetResult]) -> Vec<Parameter> {
-    let (span, at) = (Parameter::spanned, Parameter::located);
-    let mut p = Vec::new();
-    p.extend(band::accuracy(targets, &[Up, Down]).map(|a| span(&iso::A, a)));
-    p.extend(band::accuracy(targets, &[Up]).map(|a| span(&iso::A_UP, a)));
-    p.extend(band::accuracy(targets, &[Down]).map(|a| span(&iso::A_DOWN, a)));
+    let span = Parameter::spanned;
+    let mut p = band::accuracies(targets, [&iso::A, &iso::A_UP, &iso::A_DOWN]);
     p.push(span(&iso::E, band::systematic(targets, &[Up, Down])));
     p.push(span(&iso::E_UP, band::systematic(targets, &[Up])));
     p.push(span(&iso::E_DOWN, band::systematic(targets, &[Down])));
     p.push(span(&iso::M, band::spread(targets.iter().map(|t| t.mean))));
-    p.extend(band::max_repeatability(targets).map(|r| at(&iso::R, r)));
-    p.extend(band::max_repeatability_in(targets, Up).map(|r| at(&iso::R_UP, r)));
-    p.extend(band::max_repeatability_in(targets, Down).map(|r| at(&iso::R_DOWN, r)));
-    p.push(at(&iso::B, band::max_reversal(targets)));
+    p.extend(band::repeatabilities(
+        targets,
+        [&iso::R, &iso::R_UP, &iso::R_DOWN],
+    ));
+    p.push(Parameter::located(&iso::B, band::max_reversal(targets)));
     p.push(Parameter::plain(&iso::B_MEAN, band::mean_reversal(targets)));
     p
 }
