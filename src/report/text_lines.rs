@@ -18,11 +18,11 @@ use typst::foundations::{
 };
 use typst::introspection::Locator;
 use typst::layout::{
-    Abs, AlignElem, Alignment, Axes, BlockElem, Dir, Frame, FrameItem, Length, Point, Region,
+    Abs, AlignElem, Alignment, Axes, BlockElem, Dir, Em, Frame, FrameItem, Length, Point, Region,
     Rel, Size,
 };
 use typst::syntax::Span;
-use typst::text::{FontWeight, TextElem, TextSize};
+use typst::text::{FontWeight, Glyph, TextElem, TextItem, TextSize};
 use typst::visualize::Paint;
 use typst_library::foundations::{elem, func};
 use typst_utils::Numeric;
@@ -131,28 +131,118 @@ fn layout_columns(
     let span = elem.span();
     let mut locator = locator.split();
     let pod = Region::new(region.size, Axes::splat(false));
-    let mut placed = Vec::with_capacity(elem.columns.len());
+    let mut pieces = Vec::new();
+    let mut frames = Vec::new();
+    let mut right = Abs::zero();
+    let mut height = Abs::zero();
     for dict in &elem.columns {
         let column = Column::of(dict).at(span)?;
         let lines: Vec<&str> = column.lines.iter().map(Str::as_str).collect();
         let styles = styles.chain(&column.style);
-        let frame = paragraph(engine, locator.next(&()), styles, &lines, pod, span)?;
         let x = column.x.resolve(styles).relative_to(region.size.x);
         let align = column.align.fix(Dir::LTR).x;
-        placed.push((x - align.position(frame.width()), frame));
+        let laid = lay_out(engine, locator.next(&()), styles, &lines, pod, span)?;
+        let size = laid.size();
+        let x = x - align.position(size.x);
+        right.set_max(x + size.x);
+        height.set_max(size.y);
+        match laid {
+            Laid::Direct(_, _, column) => pieces.extend(column.into_iter().map(|p| p.moved(x))),
+            Laid::Typst(frame) => frames.push((x, frame)),
+        }
     }
-    let right = placed.iter().map(|(x, f)| *x + f.width());
     let width = if region.size.x.is_finite() {
         region.size.x
     } else {
-        right.fold(Abs::zero(), Abs::max)
+        right
     };
-    let height = placed.iter().map(|(_, f)| f.height()).fold(Abs::zero(), Abs::max);
     let mut frame = Frame::soft(Size::new(width, height));
-    for (x, column) in placed {
+    for piece in rows(pieces) {
+        frame.push(piece.at, FrameItem::Text(piece.item));
+    }
+    for (x, column) in frames {
         frame.push_frame(Point::with_x(x), column);
     }
     Ok(frame)
+}
+
+/// A text item of a paragraph line: where it goes and the baseline of its line (an item
+/// of marks lies off the baseline).
+struct Piece {
+    line: Abs,
+    at: Point,
+    item: TextItem,
+}
+
+impl Piece {
+    fn moved(mut self, dx: Abs) -> Piece {
+        self.at.x += dx;
+        self
+    }
+}
+
+/// The least gap between two columns that makes them one text run.
+const COLUMN_GAP: Abs = Abs::raw(0.5);
+
+/// Text items of the same look on the same baseline, columns apart, joined into one run
+/// across the row, a space between columns as wide as the gap: the PDF writes a text
+/// object per item (a graphics state, a font, a position: a hundred bytes and its own
+/// cost each), and a table row in one run reads, copied or searched, like the row. Items
+/// in a line, apart by less than [`COLUMN_GAP`], stay apart.
+fn rows(mut pieces: Vec<Piece>) -> Vec<Piece> {
+    pieces.sort_by(|a, b| a.line.cmp(&b.line).then(a.at.x.cmp(&b.at.x)));
+    let mut out: Vec<(Piece, Abs)> = Vec::with_capacity(pieces.len());
+    for piece in pieces {
+        let end = piece.at.x + piece.item.width();
+        if let Some((last, last_end)) = out.last_mut()
+            && last.line == piece.line
+            && last.at.y == piece.at.y
+            && piece.at.x - *last_end >= COLUMN_GAP
+            && look(&last.item) == look(&piece.item)
+            && let Some(space) = piece.item.font.ttf().glyph_index(' ')
+        {
+            join(&mut last.item, space.0, piece.at.x - *last_end, piece.item);
+            *last_end = end;
+            continue;
+        }
+        out.push((piece, end));
+    }
+    out.into_iter().map(|(piece, _)| piece).collect()
+}
+
+/// What must be alike for two items to be one.
+fn look(item: &TextItem) -> impl PartialEq + '_ {
+    (
+        &item.font,
+        item.size,
+        &item.fill,
+        &item.stroke,
+        item.lang,
+        item.region,
+    )
+}
+
+/// `next` appended to `run` after a space glyph `gap` wide.
+fn join(run: &mut TextItem, space: u16, gap: Abs, next: TextItem) {
+    let at = |i: usize| u16::try_from(i).unwrap_or(u16::MAX);
+    let start = run.text.len();
+    let span = next.glyphs.first().map_or(Span::detached(), |g| g.span.0);
+    run.glyphs.push(Glyph {
+        id: space,
+        x_advance: Em::from_abs(gap, run.size),
+        x_offset: Em::zero(),
+        y_advance: Em::zero(),
+        y_offset: Em::zero(),
+        range: at(start)..at(start + 1),
+        span: (span, 0),
+    });
+    run.text.push(' ');
+    let shift = at(start + 1);
+    run.glyphs.extend(next.glyphs.into_iter().map(|mut g| {
+        g.range = g.range.start.saturating_add(shift)..g.range.end.saturating_add(shift);
+        g
+    }));
+    run.text.push_str(&next.text);
 }
 
 /// `lines` as a paragraph in `styles`, laid out in `region`: directly when they are plain
@@ -165,22 +255,62 @@ pub fn paragraph(
     region: Region,
     span: Span,
 ) -> SourceResult<Frame> {
-    let direct = Setting::of(engine.world, styles).and_then(|setting| {
-        let shaped = setting.lines(lines, span)?;
-        place(&setting, shaped, region)
-    });
-    match direct {
-        Some(frame) => Ok(frame),
-        None => {
-            let text = TextElem::packed(lines.join("\n")).spanned(span);
-            typst_layout::layout_frame(engine, &text, locator, styles, region)
+    Ok(
+        match lay_out(engine, locator, styles, lines, region, span)? {
+            Laid::Direct(size, baseline, pieces) => {
+                let mut frame = Frame::soft(size);
+                frame.set_baseline(baseline);
+                for piece in pieces {
+                    frame.push(piece.at, FrameItem::Text(piece.item));
+                }
+                frame
+            }
+            Laid::Typst(frame) => frame,
+        },
+    )
+}
+
+/// A paragraph laid out: its size, first baseline and text items, or Typst's frame.
+enum Laid {
+    Direct(Size, Abs, Vec<Piece>),
+    Typst(Frame),
+}
+
+impl Laid {
+    fn size(&self) -> Size {
+        match self {
+            Laid::Direct(size, _, _) => *size,
+            Laid::Typst(frame) => frame.size(),
         }
     }
 }
 
-/// The lines stacked and aligned, `None` when one does not fit the region (Typst would
+fn lay_out(
+    engine: &mut Engine,
+    locator: Locator,
+    styles: StyleChain,
+    lines: &[&str],
+    region: Region,
+    span: Span,
+) -> SourceResult<Laid> {
+    let direct = Setting::of(engine.world, styles).and_then(|setting| {
+        let shaped = setting.lines(lines, span)?;
+        place(&setting, shaped, region)
+    });
+    Ok(match direct {
+        Some(laid) => laid,
+        None => {
+            let text = TextElem::packed(lines.join("\n")).spanned(span);
+            Laid::Typst(typst_layout::layout_frame(
+                engine, &text, locator, styles, region,
+            )?)
+        }
+    })
+}
+
+/// The lines stacked and aligned, `None` when a line does not fit the region (Typst would
 /// break it).
-fn place(setting: &Setting, lines: Vec<Line>, region: Region) -> Option<Frame> {
+fn place(setting: &Setting, lines: Vec<Line>, region: Region) -> Option<Laid> {
     if lines.iter().any(|l| l.width > region.size.x) {
         return None;
     }
@@ -193,17 +323,20 @@ fn place(setting: &Setting, lines: Vec<Line>, region: Region) -> Option<Frame> {
     let height = setting.top + setting.bottom;
     let count = lines.len() as f64;
     let total = height * count + setting.leading * (count - 1.0).max(0.0);
-    let mut frame = Frame::soft(Size::new(width, total));
-    frame.set_baseline(setting.top);
+    let mut pieces = Vec::new();
     let mut top = Abs::zero();
     for line in lines {
         let x = setting.align.position(width - line.width + line.overhang);
         let baseline = top + setting.top;
         for (at, item) in line.items {
             let at = Point::new(x + at.x, baseline + at.y);
-            frame.push(at, FrameItem::Text(item));
+            pieces.push(Piece {
+                line: baseline,
+                at,
+                item,
+            });
         }
         top += height + setting.leading;
     }
-    Some(frame)
+    Some(Laid::Direct(Size::new(width, total), setting.top, pieces))
 }
