@@ -11,6 +11,7 @@
 
 use super::labels::{ChartLabels, Label};
 use super::scene::{Colour, Drawing, Outline, Paint};
+use super::text_lines::{self, Paragraph, Settings};
 use typst::diag::{At, SourceResult};
 use typst::engine::Engine;
 use typst::foundations::{Bytes, Content, NativeElement, Packed, Resolve, StyleChain, Styles};
@@ -21,6 +22,7 @@ use typst::layout::{
 };
 use typst::loading::{DataSource, Load};
 use typst::model::ParElem;
+use typst::syntax::Span;
 use typst::syntax::Spanned;
 use typst::text::{
     BottomEdge, BottomEdgeMetric, FontWeight, TextElem, TextSize, TopEdge, TopEdgeMetric,
@@ -91,52 +93,57 @@ fn layout(
     let mut group = GroupItem::new(pixels);
     group.transform = Transform::scale(scale, scale);
     frame.push(Point::zero(), FrameItem::Group(group));
-    let mut locator = locator.split();
+    let mut placement = Placement {
+        k: scale.get(),
+        size: frame.size(),
+        locator: locator.split(),
+        settings: Settings::default(),
+        span: elem.span(),
+    };
     for label in &labels.labels {
-        let place = Placement {
-            k: scale.get(),
-            size: frame.size(),
-        };
-        place.label(engine, &mut locator, styles, label, &mut frame, elem.span())?;
+        placement.label(engine, styles, label, &mut frame)?;
     }
     Ok(frame)
 }
 
-/// Where the labels go: `k` points per chart pixel, in a frame of `size`.
-struct Placement {
+/// Where the labels go: `k` points per chart pixel, in a frame of `size`; the settings of
+/// their looks.
+struct Placement<'a> {
     k: f64,
     size: Size,
+    locator: SplitLocator<'a>,
+    settings: Settings,
+    span: Span,
 }
 
-impl Placement {
+impl Placement<'_> {
     /// Sets `label` over the drawing as the template's `chart` did with Typst's own
     /// elements: a line's baseline is its top, stacked lines `pitch` apart, each line
     /// aligned on the anchor; a turned label is aligned in its box and turned about its
     /// anchor.
     fn label(
-        &self,
+        &mut self,
         engine: &mut Engine,
-        locator: &mut SplitLocator,
-        styles: StyleChain,
+        base: StyleChain,
         label: &Label,
         frame: &mut Frame,
-        span: typst::syntax::Span,
     ) -> SourceResult<()> {
-        let pt = |px: f64| Abs::pt(px * self.k);
+        let k = self.k;
+        let pt = |px: f64| Abs::pt(px * k);
         let local = label_style(label, pt(label.size), pt(label.pitch));
-        let styles = styles.chain(&local);
+        let setting = self.settings.of(engine, base, &local);
+        let styles = base.chain(&local);
         let lines: Vec<&str> = label.text.split('\n').collect();
         let width = self.size.x;
+        let locator = self.locator.next(&());
         if label.rotate != 0.0 {
             let region = Region::new(Size::new(pt(label.w), Abs::inf()), Axes::new(true, false));
-            let text = super::text_lines::paragraph(
-                engine,
-                locator.next(&()),
-                styles,
-                &lines,
+            let paragraph = Paragraph {
+                lines: &lines,
                 region,
-                span,
-            )?;
+                span: self.span,
+            };
+            let text = text_lines::paragraph(engine, locator, styles, setting, paragraph)?;
             let mut turned = Frame::soft(Size::new(pt(label.w), Abs::zero()));
             turned.push_frame(Point::new(pt(label.dx), pt(label.dy)), text);
             let mut group = GroupItem::new(turned);
@@ -147,9 +154,12 @@ impl Placement {
             );
             return Ok(());
         }
-        let region = Region::new(self.size, Axes::splat(false));
-        let text =
-            super::text_lines::paragraph(engine, locator.next(&()), styles, &lines, region, span)?;
+        let paragraph = Paragraph {
+            lines: &lines,
+            region: Region::new(self.size, Axes::splat(false)),
+            span: self.span,
+        };
+        let text = text_lines::paragraph(engine, locator, styles, setting, paragraph)?;
         let free = width - text.width();
         let x = match label.align {
             "left" => pt(label.x),

@@ -11,10 +11,11 @@
 //! widest line (or the region, when it expands).
 
 use super::shaping::{Line, Setting};
+use typst::comemo::Tracked;
 use typst::diag::{At, HintedStrResult, SourceResult};
 use typst::engine::Engine;
 use typst::foundations::{
-    Content, Dict, NativeElement, Packed, Resolve, Str, StyleChain, Styles, Value,
+    Array, Content, Context, Dict, NativeElement, Packed, Resolve, Str, StyleChain, Styles, Value,
 };
 use typst::introspection::Locator;
 use typst::layout::{
@@ -40,6 +41,33 @@ pub fn text_lines(
     BlockElem::single_layouter(Packed::new(elem).spanned(span), layout_lines).pack()
 }
 
+/// The width of each string set on one line in the current text style, as `measure` gives
+/// it, or `none` for a string `text-lines` would leave to Typst (see `text-lines`):
+/// cheaper than `measure`, for a template that places columns itself.
+#[func(contextual)]
+pub fn text_widths(
+    engine: &mut Engine,
+    context: Tracked<Context>,
+    span: Span,
+    /// The strings.
+    strings: Vec<Str>,
+) -> SourceResult<Array> {
+    let styles = context.styles().at(span)?;
+    let setting = Setting::of(engine.world, styles);
+    Ok(strings
+        .iter()
+        .map(|s| {
+            let line = setting
+                .as_ref()
+                .and_then(|set| set.lines(&[s.as_str()], span));
+            match line.as_deref() {
+                Some([line]) => Value::Length(line.width.into()),
+                _ => Value::None,
+            }
+        })
+        .collect())
+}
+
 /// What the layout of `text-lines` needs.
 #[elem(name = "text-lines-data")]
 pub struct TextLinesElem {
@@ -56,7 +84,13 @@ fn layout_lines(
     region: Region,
 ) -> SourceResult<Frame> {
     let lines: Vec<&str> = elem.lines.iter().map(Str::as_str).collect();
-    paragraph(engine, locator, styles, &lines, region, elem.span())
+    let setting = Setting::of(engine.world, styles);
+    let lines = Paragraph {
+        lines: &lines,
+        region,
+        span: elem.span(),
+    };
+    paragraph(engine, locator, styles, setting.as_ref(), lines)
 }
 
 /// Columns of lines side by side, one paragraph each, as in a table: every column a
@@ -135,13 +169,20 @@ fn layout_columns(
     let mut frames = Vec::new();
     let mut right = Abs::zero();
     let mut height = Abs::zero();
+    let mut settings = Settings::default();
     for dict in &elem.columns {
         let column = Column::of(dict).at(span)?;
         let lines: Vec<&str> = column.lines.iter().map(Str::as_str).collect();
+        let setting = settings.of(engine, styles, &column.style);
         let styles = styles.chain(&column.style);
         let x = column.x.resolve(styles).relative_to(region.size.x);
         let align = column.align.fix(Dir::LTR).x;
-        let laid = lay_out(engine, locator.next(&()), styles, &lines, pod, span)?;
+        let paragraph = Paragraph {
+            lines: &lines,
+            region: pod,
+            span,
+        };
+        let laid = lay_out(engine, locator.next(&()), styles, setting, paragraph)?;
         let size = laid.size();
         let x = x - align.position(size.x);
         right.set_max(x + size.x);
@@ -245,18 +286,44 @@ fn join(run: &mut TextItem, space: u16, gap: Abs, next: TextItem) {
     run.text.push_str(&next.text);
 }
 
-/// `lines` as a paragraph in `styles`, laid out in `region`: directly when they are plain
+/// A paragraph to set: its lines, the region it is laid out in and where it comes from.
+pub struct Paragraph<'a> {
+    pub lines: &'a [&'a str],
+    pub region: Region,
+    pub span: Span,
+}
+
+/// The settings of one element's paragraphs, made once per style that sets some apart
+/// (a column's or a label's): reading a style chain is most of a short paragraph's cost.
+#[derive(Default)]
+pub struct Settings(Vec<(Styles, Option<Setting>)>);
+
+impl Settings {
+    /// The setting of `base` (the same for every call) with `local` on top.
+    pub fn of(&mut self, engine: &Engine, base: StyleChain, local: &Styles) -> Option<&Setting> {
+        let i = match self.0.iter().position(|(style, _)| style == local) {
+            Some(i) => i,
+            None => {
+                let setting = Setting::of(engine.world, base.chain(local));
+                self.0.push((local.clone(), setting));
+                self.0.len() - 1
+            }
+        };
+        self.0[i].1.as_ref()
+    }
+}
+
+/// A paragraph in `styles` (whose setting is `setting`): directly when its lines are plain
 /// and fit, else by Typst.
 pub fn paragraph(
     engine: &mut Engine,
     locator: Locator,
     styles: StyleChain,
-    lines: &[&str],
-    region: Region,
-    span: Span,
+    setting: Option<&Setting>,
+    paragraph: Paragraph,
 ) -> SourceResult<Frame> {
     Ok(
-        match lay_out(engine, locator, styles, lines, region, span)? {
+        match lay_out(engine, locator, styles, setting, paragraph)? {
             Laid::Direct(size, baseline, pieces) => {
                 let mut frame = Frame::soft(size);
                 frame.set_baseline(baseline);
@@ -289,21 +356,21 @@ fn lay_out(
     engine: &mut Engine,
     locator: Locator,
     styles: StyleChain,
-    lines: &[&str],
-    region: Region,
-    span: Span,
+    setting: Option<&Setting>,
+    paragraph: Paragraph,
 ) -> SourceResult<Laid> {
-    let direct = Setting::of(engine.world, styles).and_then(|setting| {
-        let shaped = setting.lines(lines, span)?;
-        place(&setting, shaped, region)
-    });
+    let Paragraph {
+        lines,
+        region,
+        span,
+    } = paragraph;
+    let direct = setting.and_then(|setting| place(setting, setting.lines(lines, span)?, region));
     Ok(match direct {
         Some(laid) => laid,
         None => {
             let text = TextElem::packed(lines.join("\n")).spanned(span);
-            Laid::Typst(typst_layout::layout_frame(
-                engine, &text, locator, styles, region,
-            )?)
+            let frame = typst_layout::layout_frame(engine, &text, locator, styles, region)?;
+            Laid::Typst(frame)
         }
     })
 }

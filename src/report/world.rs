@@ -9,7 +9,7 @@
 
 use super::drawing::chart_drawing;
 use super::scene::Scene;
-use super::text_lines::{text_columns, text_lines};
+use super::text_lines::{text_columns, text_lines, text_widths};
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 use typst::diag::{FileError, FileResult};
@@ -59,6 +59,7 @@ impl Typesetter {
         library.global.scope_mut().define_func::<chart_drawing>();
         library.global.scope_mut().define_func::<text_lines>();
         library.global.scope_mut().define_func::<text_columns>();
+        library.global.scope_mut().define_func::<text_widths>();
         Some(Typesetter {
             library: LazyHash::new(library),
             book: LazyHash::new(FontBook::from_fonts(&fonts)),
