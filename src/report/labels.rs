@@ -349,6 +349,23 @@ mod tests {
     }
 
     #[test]
+    fn labels_read_back_from_their_bytes() {
+        let mut turned = tick(160.0, "Deviation / µm");
+        turned.rotate = 270.0;
+        turned.align = "left";
+        turned.bold = true;
+        let labels = ChartLabels {
+            width: 900.0,
+            height: 420.0,
+            labels: vec![tick(100.0, "a\nb"), turned],
+        };
+        let mut bytes = Vec::new();
+        labels.encode(&mut bytes);
+        assert_eq!(ChartLabels::decode(&bytes), Some(labels));
+        assert_eq!(ChartLabels::decode(&bytes[..bytes.len() - 1]), None);
+    }
+
+    #[test]
     fn labels_apart_in_place_or_look_stay_apart() {
         // Uneven spacing: a column runs while it stays even, then a new one starts.
         let uneven = stack(vec![

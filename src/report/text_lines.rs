@@ -407,3 +407,110 @@ fn place(setting: &Setting, lines: Vec<Line>, region: Region) -> Option<Laid> {
     }
     Some(Laid::Direct(Size::new(width, total), setting.top, pieces))
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::report::world::{DocumentWorld, Typesetter};
+    use std::collections::HashMap;
+    use typst::layout::{Frame, FrameItem, Point};
+    use typst_layout::PagedDocument;
+
+    /// A glyph where it is drawn: x and y in millionths of a point, and its id.
+    type Placed = (i64, i64, u16);
+
+    /// Every glyph but spaces, where it is drawn.
+    fn glyphs(frame: &Frame, at: Point, out: &mut Vec<Placed>) {
+        let round = |v: f64| (v * 1e6).round() as i64;
+        for (pos, item) in frame.items() {
+            let pos = at + *pos;
+            match item {
+                FrameItem::Group(group) => glyphs(&group.frame, pos, out),
+                FrameItem::Text(text) => {
+                    let mut x = pos.x;
+                    for g in &text.glyphs {
+                        let c = &text.text[g.range()];
+                        if c != " " {
+                            let gx = x + g.x_offset.at(text.size);
+                            out.push((round(gx.to_pt()), round(pos.y.to_pt()), g.id));
+                        }
+                        x += g.x_advance.at(text.size);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// The glyphs of the first page above `split` pt and below it, moved up by `split`.
+    fn halves(main: &str, split: f64) -> (Vec<Placed>, Vec<Placed>) {
+        let templates = HashMap::from([("/main.typ".to_string(), main.to_string())]);
+        let typesetter = Typesetter::new(templates).unwrap();
+        let world = DocumentWorld::new(&typesetter, "/main.typ", vec![], vec![], None).unwrap();
+        let doc = typst::compile::<PagedDocument>(&world).output.unwrap();
+        let mut all = Vec::new();
+        glyphs(&doc.pages()[0].frame, Point::zero(), &mut all);
+        let cut = (split * 1e6) as i64;
+        let (mut top, mut bottom): (Vec<_>, Vec<_>) = all.into_iter().partition(|g| g.1 < cut);
+        for g in &mut bottom {
+            g.1 -= cut;
+        }
+        top.sort();
+        bottom.sort();
+        (top, bottom)
+    }
+
+    /// The same glyphs at the same places, to a millionth of a point (sums of advances
+    /// taken in another order round differently).
+    fn same_places(a: &[Placed], b: &[Placed]) {
+        assert_eq!(a.len(), b.len());
+        for (x, y) in a.iter().zip(b) {
+            assert!(
+                (x.0 - y.0).abs() <= 1 && x.1 == y.1 && x.2 == y.2,
+                "{x:?} {y:?}"
+            );
+        }
+    }
+
+    const SETUP: &str = r#"
+        #set page(width: 400pt, height: 600pt, margin: 0pt)
+        #set text(font: "Inter", size: 9pt, kerning: false, top-edge: 6pt, bottom-edge: 0pt)
+        #set par(leading: 4pt)
+        #let lines = ("12.5", "−3.25", "X̄i↑, X̄i↓", "j = 1", "", "Ось X", "2σi", "1.")
+    "#;
+
+    #[test]
+    fn text_lines_set_lines_where_typst_sets_them() {
+        let main = format!(
+            r#"{SETUP}
+            #place(top + left, text-lines(lines))
+            #place(top + right, dx: -20pt, align(right, text-lines(lines)))
+            #place(top + left, dx: 100pt, box(width: 80pt, align(center, text-lines(lines))))
+            #place(top + left, dy: 300pt, lines.join("\n"))
+            #place(top + right, dx: -20pt, dy: 300pt, align(right, lines.join("\n")))
+            #place(top + left, dx: 100pt, dy: 300pt, box(width: 80pt, align(center, lines.join("\n"))))
+            "#
+        );
+        let (direct, typst) = halves(&main, 300.0);
+        assert!(direct.len() > 60, "{}", direct.len());
+        same_places(&direct, &typst);
+    }
+
+    #[test]
+    fn text_columns_set_columns_where_typst_sets_them() {
+        let main = format!(
+            r#"{SETUP}
+            #place(top + left, text-columns((
+              (x: 0pt, lines: lines),
+              (x: 150pt, align: right, weight: "bold", lines: lines.rev()),
+              (x: 250pt, align: center, size: 7pt, fill: red, lines: lines),
+            )))
+            #place(top + left, dy: 300pt, lines.join("\n"))
+            #place(top + right, dx: 150pt - 400pt, dy: 300pt, align(right, text(weight: "bold", lines.rev().join("\n"))))
+            #place(top + left, dx: 150pt, dy: 300pt, box(width: 200pt, align(center, text(size: 7pt, fill: red, lines.join("\n")))))
+            "#
+        );
+        let (direct, typst) = halves(&main, 300.0);
+        assert!(direct.len() > 80, "{}", direct.len());
+        same_places(&direct, &typst);
+    }
+}
