@@ -152,9 +152,12 @@ impl Reports {
             .ok_or_else(|| fail("bad virtual path".into()))?;
         let warned = typst::compile::<PagedDocument>(&world);
         let warnings: Vec<String> = warned.warnings.iter().map(diagnostic).collect();
-        let doc = warned
+        let mut doc = warned
             .output
             .map_err(|errors| fail(errors.iter().map(diagnostic).collect::<Vec<_>>().join("; ")))?;
+        if doc.info_mut().title.is_none() {
+            doc.info_mut().title = page_title(&doc).map(Into::into);
+        }
         let options = typst_pdf::PdfOptions {
             ident: Smart::Custom(ident),
             timestamp: None,
@@ -250,6 +253,20 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
             })
         })
         .collect()
+}
+
+/// The title the template gave as `#metadata(..) <page-title>` (see `setup` in
+/// `style.typ`): a `set document(title: ..)` would put it into every style chain, which
+/// Typst's layout cache is keyed by.
+fn page_title(doc: &PagedDocument) -> Option<typst::foundations::Str> {
+    use typst::introspection::Introspector;
+    let label = typst::foundations::Label::new(typst::utils::PicoStr::intern("page-title"))?;
+    let found = doc.introspector().query_label(label).ok()?;
+    let meta = found.to_packed::<typst::introspection::MetadataElem>()?;
+    match &meta.value {
+        typst::foundations::Value::Str(s) => Some(s.clone()),
+        _ => None,
+    }
 }
 
 fn diagnostic(d: &SourceDiagnostic) -> String {
