@@ -98,17 +98,15 @@ fn layout_lines(
 /// its lines start at `x`, `center`: centred on `x`, `right`: end at `x`), `lines` (as for
 /// `text-lines`) and, to set it apart, `fill`, `weight` or `size`. As placing a
 /// `text-lines` per column at `x`, faster.
+/// A column's fields are read when it is laid out (and a wrong one reported there).
 #[func]
 pub fn text_columns(
     span: Span,
     /// The columns.
     columns: Vec<Dict>,
-) -> SourceResult<Content> {
-    for column in &columns {
-        Column::of(column).at(span)?;
-    }
+) -> Content {
     let elem = TextColumnsElem::new(columns);
-    Ok(BlockElem::single_layouter(Packed::new(elem).spanned(span), layout_columns).pack())
+    BlockElem::single_layouter(Packed::new(elem).spanned(span), layout_columns).pack()
 }
 
 /// What the layout of `text-columns` needs.
