@@ -2,7 +2,7 @@
 //! the drawing as ordinary Typst text, which is shaped once per string, written as one text
 //! run and stays searchable in the PDF.
 
-use super::scene::{Align, Scene, Text};
+use super::scene::{Align, Reader, Scene, Text, put_len};
 use serde::Serialize;
 
 /// One label in chart pixels: its anchor point, where its baseline and start lie relative to
@@ -50,6 +50,68 @@ impl ChartLabels {
             height: scene.drawing.height.into(),
             labels: stack(scene.texts.iter().map(label).collect()),
         }
+    }
+}
+
+/// The labels as bytes, after the drawing in `/charts/NAME.drawing` (read by
+/// `chart-drawing`, which sets them): per label its numbers, then its alignment, look and
+/// text. Integers and floats little-endian, strings as their length and UTF-8.
+impl ChartLabels {
+    pub fn encode(&self, out: &mut Vec<u8>) {
+        let put_f64 = |out: &mut Vec<u8>, v: f64| out.extend_from_slice(&v.to_le_bytes());
+        let put_str = |out: &mut Vec<u8>, s: &str| {
+            put_len(out, s.len());
+            out.extend_from_slice(s.as_bytes());
+        };
+        put_f64(out, self.width);
+        put_f64(out, self.height);
+        put_len(out, self.labels.len());
+        for l in &self.labels {
+            for v in [l.x, l.y, l.dx, l.dy, l.w, l.size, l.rotate, l.pitch] {
+                put_f64(out, v);
+            }
+            let align = ["left", "center", "right"]
+                .iter()
+                .position(|a| *a == l.align);
+            out.push(align.map_or(0, |i| i as u8));
+            out.push(u8::from(l.bold));
+            put_str(out, &l.fill);
+            put_str(out, &l.text);
+        }
+    }
+
+    /// The labels [`ChartLabels::encode`] wrote, which must fill `bytes`.
+    pub fn decode(bytes: &[u8]) -> Option<ChartLabels> {
+        let mut r = Reader(bytes);
+        let (width, height) = (r.f64()?, r.f64()?);
+        let mut labels = Vec::with_capacity(r.len()?);
+        for _ in 0..labels.capacity() {
+            let mut v = [0.0; 8];
+            for x in &mut v {
+                *x = r.f64()?;
+            }
+            let [x, y, dx, dy, w, size, rotate, pitch] = v;
+            let [align, bold] = r.take::<2>()?;
+            labels.push(Label {
+                x,
+                y,
+                dx,
+                dy,
+                w,
+                align: ["left", "center", "right"].get(usize::from(align))?,
+                size,
+                fill: r.str()?.to_string(),
+                bold: bold != 0,
+                rotate,
+                text: r.str()?.to_string(),
+                pitch,
+            });
+        }
+        r.0.is_empty().then_some(ChartLabels {
+            width,
+            height,
+            labels,
+        })
     }
 }
 
@@ -284,6 +346,23 @@ mod tests {
         assert_eq!((column.y, column.dy), (231.0, 3.5));
         assert_eq!(column.pitch, 32.5);
         assert_eq!((column.align, column.dx, column.w), ("right", -60.0, 60.0));
+    }
+
+    #[test]
+    fn labels_read_back_from_their_bytes() {
+        let mut turned = tick(160.0, "Deviation / µm");
+        turned.rotate = 270.0;
+        turned.align = "left";
+        turned.bold = true;
+        let labels = ChartLabels {
+            width: 900.0,
+            height: 420.0,
+            labels: vec![tick(100.0, "a\nb"), turned],
+        };
+        let mut bytes = Vec::new();
+        labels.encode(&mut bytes);
+        assert_eq!(ChartLabels::decode(&bytes), Some(labels));
+        assert_eq!(ChartLabels::decode(&bytes[..bytes.len() - 1]), None);
     }
 
     #[test]

@@ -17,6 +17,8 @@ pub mod diagnosis_data;
 mod drawing;
 pub mod labels;
 pub mod scene;
+mod shaping;
+mod text_lines;
 pub mod world;
 
 use crate::batch::{AxisTest, CampaignResult};
@@ -83,18 +85,17 @@ impl Files {
         Ok(())
     }
 
-    /// A chart's files, for the templates' `chart("NAME")` in `style.typ`:
-    /// `/charts/NAME.drawing` (the shapes, laid out by `chart-drawing`) and
-    /// `/charts/NAME.json` (the labels, set by Typst as text: see [`labels`]). For
-    /// templates that show a chart as an image, `/charts/NAME.svg` (the whole chart) and
-    /// `/charts/NAME-plot.svg` (without its labels) are written when they are read.
-    fn chart(&mut self, document: &str, name: &str, scene: Scene) -> Result<(), ReportError> {
+    /// A chart's file, for the templates' `chart("NAME")` in `style.typ`:
+    /// `/charts/NAME.drawing` (the shapes and the labels, laid out by `chart-drawing`).
+    /// For templates that set the labels themselves or show a chart as an image,
+    /// `/charts/NAME.json` (the labels: see [`labels`]), `/charts/NAME.svg` (the whole
+    /// chart) and `/charts/NAME-plot.svg` (without its labels) are written when read.
+    fn chart(&mut self, name: &str, scene: Scene) {
         let labels = labels::ChartLabels::of(&scene);
-        self.push(document, format!("/charts/{name}.json"), &labels)?;
-        let drawing = (format!("/charts/{name}.drawing"), scene.drawing.encode());
-        self.files.push(drawing);
+        let mut bytes = scene.drawing.encode();
+        labels.encode(&mut bytes);
+        self.files.push((format!("/charts/{name}.drawing"), bytes));
         self.charts.push((name.to_string(), Arc::new(scene)));
-        Ok(())
     }
 }
 
@@ -151,9 +152,12 @@ impl Reports {
             .ok_or_else(|| fail("bad virtual path".into()))?;
         let warned = typst::compile::<PagedDocument>(&world);
         let warnings: Vec<String> = warned.warnings.iter().map(diagnostic).collect();
-        let doc = warned
+        let mut doc = warned
             .output
             .map_err(|errors| fail(errors.iter().map(diagnostic).collect::<Vec<_>>().join("; ")))?;
+        if doc.info_mut().title.is_none() {
+            doc.info_mut().title = page_title(&doc).map(Into::into);
+        }
         let options = typst_pdf::PdfOptions {
             ident: Smart::Custom(ident),
             timestamp: None,
@@ -179,12 +183,12 @@ impl Reports {
                 height_px,
             };
             let bidirectional = charts::bidirectional(&chart, &style(CHART_HEIGHT_PX));
-            files.chart(&document, "bidirectional", bidirectional)?;
+            files.chart("bidirectional", bidirectional);
             let tall = style(UNIDIRECTIONAL_HEIGHT_PX);
             let unidirectional = charts::unidirectional(&chart, &up, &down, &tall);
-            files.chart(&document, "unidirectional", unidirectional)?;
+            files.chart("unidirectional", unidirectional);
             if let Some(d) = &test.diagnosis {
-                diagnosis_files(&mut files, &document, d)?;
+                diagnosis_files(&mut files, d);
             }
         }
         let ident = format!(
@@ -204,7 +208,7 @@ impl Reports {
             width_px: CHART_WIDTH_PX,
             height_px: charts::ratio_chart_height(bars.len()),
         };
-        files.chart(document, "usage", charts::tolerance_usage(&bars, &style))?;
+        files.chart("usage", charts::tolerance_usage(&bars, &style));
         let ident = format!("axcheck/{}/summary", result.info.name);
         let date = result.info.date.as_deref();
         self.compile(document, "/summary.typ", files, date, ident)
@@ -212,11 +216,7 @@ impl Reports {
 }
 
 /// The charts of the diagnosis section.
-fn diagnosis_files(
-    files: &mut Files,
-    document: &str,
-    d: &crate::diagnose::Diagnosis,
-) -> Result<(), ReportError> {
+fn diagnosis_files(files: &mut Files, d: &crate::diagnose::Diagnosis) {
     let (checks, in_time, along, periodogram) = diagnosis_data::diagnosis_charts(d);
     let style = |height_px| diagnosis_charts::Style {
         width_px: CHART_WIDTH_PX,
@@ -224,13 +224,13 @@ fn diagnosis_files(
     };
     let height = diagnosis_charts::model_checks_height(checks.len());
     let model_checks = diagnosis_charts::model_checks(&checks, &style(height));
-    files.chart(document, "checks", model_checks)?;
+    files.chart("checks", model_checks);
     let in_time = diagnosis_charts::residuals(&in_time, &style(340));
-    files.chart(document, "residuals-time", in_time)?;
+    files.chart("residuals-time", in_time);
     let along = diagnosis_charts::residuals(&along, &style(340));
-    files.chart(document, "residuals-position", along)?;
+    files.chart("residuals-position", along);
     let periodogram = diagnosis_charts::periodogram(&periodogram, &style(300));
-    files.chart(document, "periodogram", periodogram)
+    files.chart("periodogram", periodogram);
 }
 
 /// The summary chart's bars: each test's worst parameter, needing attention first.
@@ -253,6 +253,20 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
             })
         })
         .collect()
+}
+
+/// The title the template gave as `#metadata(..) <page-title>` (see `setup` in
+/// `style.typ`): a `set document(title: ..)` would put it into every style chain, which
+/// Typst's layout cache is keyed by.
+fn page_title(doc: &PagedDocument) -> Option<typst::foundations::Str> {
+    use typst::introspection::Introspector;
+    let label = typst::foundations::Label::new(typst::utils::PicoStr::intern("page-title"))?;
+    let found = doc.introspector().query_label(label).ok()?;
+    let meta = found.to_packed::<typst::introspection::MetadataElem>()?;
+    match &meta.value {
+        typst::foundations::Value::Str(s) => Some(s.clone()),
+        _ => None,
+    }
 }
 
 fn diagnostic(d: &SourceDiagnostic) -> String {

@@ -149,6 +149,12 @@ impl Drawing {
     /// paint (kind 0 fill or 1 stroke, R, G, B; a stroke's width and dash pattern), its
     /// opacity and its outlines (kind, then points, corners or centre and radius).
     pub fn decode(bytes: &[u8]) -> Option<Drawing> {
+        let (drawing, rest) = Drawing::decode_front(bytes)?;
+        rest.is_empty().then_some(drawing)
+    }
+
+    /// A drawing at the front of `bytes`, and the bytes after it.
+    pub fn decode_front(bytes: &[u8]) -> Option<(Drawing, &[u8])> {
         let mut r = Reader(bytes.strip_prefix(MAGIC)?);
         let (width, height) = (r.u32()?, r.u32()?);
         let mut shapes = Vec::with_capacity(r.len()?);
@@ -176,21 +182,22 @@ impl Drawing {
                 outlines,
             });
         }
-        r.0.is_empty().then_some(Drawing {
+        let drawing = Drawing {
             width,
             height,
             shapes,
-        })
+        };
+        Some((drawing, r.0))
     }
 }
 
 const MAGIC: &[u8] = b"AXD1";
 
-fn put_u32(out: &mut Vec<u8>, v: u32) {
+pub(super) fn put_u32(out: &mut Vec<u8>, v: u32) {
     out.extend_from_slice(&v.to_le_bytes());
 }
 
-fn put_len(out: &mut Vec<u8>, n: usize) {
+pub(super) fn put_len(out: &mut Vec<u8>, n: usize) {
     put_u32(out, u32::try_from(n).unwrap_or(u32::MAX));
 }
 
@@ -224,16 +231,16 @@ fn put_outline(out: &mut Vec<u8>, outline: &Outline) {
 }
 
 /// Reads [`Drawing::encode`]'s bytes from the front.
-struct Reader<'a>(&'a [u8]);
+pub(super) struct Reader<'a>(pub(super) &'a [u8]);
 
-impl Reader<'_> {
-    fn take<const N: usize>(&mut self) -> Option<[u8; N]> {
+impl<'a> Reader<'a> {
+    pub(super) fn take<const N: usize>(&mut self) -> Option<[u8; N]> {
         let (head, rest) = self.0.split_first_chunk::<N>()?;
         self.0 = rest;
         Some(*head)
     }
 
-    fn u32(&mut self) -> Option<u32> {
+    pub(super) fn u32(&mut self) -> Option<u32> {
         self.take().map(u32::from_le_bytes)
     }
 
@@ -241,14 +248,22 @@ impl Reader<'_> {
         self.take().map(i32::from_le_bytes)
     }
 
-    fn f64(&mut self) -> Option<f64> {
+    pub(super) fn f64(&mut self) -> Option<f64> {
         self.take().map(f64::from_le_bytes)
     }
 
     /// A count, refused when the bytes left cannot hold that many items of a byte or more.
-    fn len(&mut self) -> Option<usize> {
+    pub(super) fn len(&mut self) -> Option<usize> {
         let n = usize::try_from(self.u32()?).ok()?;
         (n <= self.0.len()).then_some(n)
+    }
+
+    /// A string: its length in bytes, then its UTF-8.
+    pub(super) fn str(&mut self) -> Option<&'a str> {
+        let n = self.len()?;
+        let (text, rest) = self.0.split_at(n);
+        self.0 = rest;
+        std::str::from_utf8(text).ok()
     }
 
     fn point(&mut self) -> Option<Point> {

@@ -9,6 +9,7 @@
 
 use super::drawing::chart_drawing;
 use super::scene::Scene;
+use super::text_lines::{text_columns, text_lines, text_widths};
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 use typst::diag::{FileError, FileResult};
@@ -56,6 +57,9 @@ impl Typesetter {
             .collect::<Option<_>>()?;
         let mut library = Library::default();
         library.global.scope_mut().define_func::<chart_drawing>();
+        library.global.scope_mut().define_func::<text_lines>();
+        library.global.scope_mut().define_func::<text_columns>();
+        library.global.scope_mut().define_func::<text_widths>();
         Some(Typesetter {
             library: LazyHash::new(library),
             book: LazyHash::new(FontBook::from_fonts(&fonts)),
@@ -92,12 +96,34 @@ pub struct DocumentWorld<'a> {
     today: Option<Datetime>,
 }
 
-/// A chart as SVG (`/charts/NAME.svg`, or without its texts `/charts/NAME-plot.svg`),
-/// for templates that show a chart as an image; the built-in ones never read it.
+/// A chart's labels as JSON (`/charts/NAME.json`), for templates that set them, or the
+/// chart as SVG (`/charts/NAME.svg`, or without its texts `/charts/NAME-plot.svg`), for
+/// templates that show a chart as an image; the built-in ones read none of these.
 struct Picture {
     scene: Arc<Scene>,
-    with_texts: bool,
-    svg: OnceLock<Bytes>,
+    form: Form,
+    bytes: OnceLock<FileResult<Bytes>>,
+}
+
+#[derive(Clone, Copy)]
+enum Form {
+    Labels,
+    Svg,
+    SvgWithoutTexts,
+}
+
+impl Picture {
+    fn bytes(&self) -> FileResult<Bytes> {
+        let scene = &self.scene;
+        let made = self.bytes.get_or_init(|| match self.form {
+            Form::Labels => serde_json::to_vec(&super::labels::ChartLabels::of(scene))
+                .map(Bytes::new)
+                .map_err(|e| FileError::Other(Some(e.to_string().into()))),
+            Form::Svg => Ok(Bytes::from_string(scene.svg(SANS_FAMILY))),
+            Form::SvgWithoutTexts => Ok(Bytes::from_string(scene.drawing.svg())),
+        });
+        made.clone()
+    }
 }
 
 impl<'a> DocumentWorld<'a> {
@@ -117,13 +143,18 @@ impl<'a> DocumentWorld<'a> {
             .collect::<Option<_>>()?;
         let mut pictures = HashMap::new();
         for (name, scene) in charts {
-            for (suffix, with_texts) in [("", true), ("-plot", false)] {
+            let forms = [
+                (".json", Form::Labels),
+                (".svg", Form::Svg),
+                ("-plot.svg", Form::SvgWithoutTexts),
+            ];
+            for (suffix, form) in forms {
                 let picture = Picture {
                     scene: Arc::clone(&scene),
-                    with_texts,
-                    svg: OnceLock::new(),
+                    form,
+                    bytes: OnceLock::new(),
                 };
-                pictures.insert(file_id(&format!("/charts/{name}{suffix}.svg"))?, picture);
+                pictures.insert(file_id(&format!("/charts/{name}{suffix}"))?, picture);
             }
         }
         Some(DocumentWorld {
@@ -162,14 +193,7 @@ impl World for DocumentWorld<'_> {
             return Ok(bytes.clone());
         }
         if let Some(p) = self.pictures.get(&id) {
-            let svg = p.svg.get_or_init(|| {
-                Bytes::from_string(if p.with_texts {
-                    p.scene.svg(SANS_FAMILY)
-                } else {
-                    p.scene.drawing.svg()
-                })
-            });
-            return Ok(svg.clone());
+            return p.bytes();
         }
         if let Some(source) = self.typesetter.sources.get(&id) {
             return Ok(Bytes::from_string(source.text().to_string()));
