@@ -5,7 +5,6 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::CampaignResult;
 use crate::judge::Verdict;
-use crate::units::fmt_fixed;
 use std::fmt::Write;
 
 pub struct Junit;
@@ -87,13 +86,7 @@ impl Exporter for Junit {
                 let mut body = Vec::new();
                 if let Some(j) = &t.judgement {
                     for c in j.failed() {
-                        body.push(format!(
-                            "{} = {} {unit} over its limit {} {unit} (margin {})",
-                            c.key,
-                            fmt_fixed(c.value, 3),
-                            fmt_fixed(c.limit, 3),
-                            fmt_fixed(c.margin, 3)
-                        ));
+                        body.push(c.over_limit(3, unit));
                     }
                 }
                 for finding in t.broken_rules() {

@@ -106,13 +106,7 @@ fn problems(t: &AxisTest) -> Vec<String> {
         lines.push(format!("- **{label}**: error: {}", cell(e)));
     }
     for c in t.judgement.iter().flat_map(|j| j.failed()) {
-        lines.push(format!(
-            "- **{label}**: {} = {} over its limit {} (margin {})",
-            c.key,
-            fmt_fixed(c.value, 2),
-            fmt_fixed(c.limit, 2),
-            fmt_fixed(c.margin, 2)
-        ));
+        lines.push(format!("- **{label}**: {}", c.over_limit(2, "")));
     }
     for f in &t.findings {
         let kind = match f.severity {

@@ -2,7 +2,7 @@
 //! overrides, the check of each parameter, and the axis verdict.
 
 use crate::evaluate::Evaluation;
-use crate::units::AxisKind;
+use crate::units::{AxisKind, fmt_fixed};
 use serde::{Deserialize, Serialize};
 
 mod spec;
@@ -103,6 +103,22 @@ impl Check {
         } else {
             f64::INFINITY
         }
+    }
+
+    /// "E = 8.930 µm over its limit 6.000 µm (margin -2.930)": a failed check in the words of
+    /// the findings lists (Markdown summary, JUnit); `unit` may be empty.
+    pub fn over_limit(&self, decimals: usize, unit: &str) -> String {
+        let with_unit = |v: f64| match unit {
+            "" => fmt_fixed(v, decimals),
+            _ => format!("{} {unit}", fmt_fixed(v, decimals)),
+        };
+        format!(
+            "{} = {} over its limit {} (margin {})",
+            self.key,
+            with_unit(self.value),
+            with_unit(self.limit),
+            fmt_fixed(self.margin, decimals)
+        )
     }
 }
 

@@ -48,6 +48,13 @@ pub(crate) struct Stroke {
     pub dash: &'static [f64],
 }
 
+impl Stroke {
+    /// A line of this colour, width in pixels and dash pattern.
+    pub(crate) const fn new(color: RGBColor, width: u32, dash: &'static [f64]) -> Stroke {
+        Stroke { color, width, dash }
+    }
+}
+
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub(crate) enum Marker {
     /// Filled circle of the given radius.
@@ -515,6 +522,15 @@ pub(crate) struct AxesSpec<'s> {
     pub own_x_ticks: bool,
 }
 
+/// Row height of a chart of stacked rows (bars, checks): rows are lower the more there are,
+/// `steps` gives (up to this many rows, this height), in increasing row counts.
+pub(crate) fn row_height(rows: usize, steps: &[(usize, u32)], rest: u32) -> u32 {
+    steps
+        .iter()
+        .find(|(up_to, _)| rows <= *up_to)
+        .map_or(rest, |&(_, h)| h)
+}
+
 pub(crate) fn y_tick_count(plot_h: u32) -> usize {
     ((plot_h / 30) as usize).clamp(3, 12)
 }
@@ -643,11 +659,7 @@ mod tests {
             width: 2,
             dash: &[9.0, 3.5, 2.0, 3.5],
         };
-        let solid = Stroke {
-            color: UP,
-            width: 1,
-            dash: SOLID,
-        };
+        let solid = Stroke::new(UP, 1, SOLID);
         let scene = render(&style(), |root| {
             // A sub-area: the dashed line is recorded in the canvas' own coordinates.
             let (_, right) = root.split_horizontally(100);

@@ -12,8 +12,8 @@ use super::chart_kit::{
     Area, AxesSpec, Chart, Conventions, DASHED, DESC_PX, DOWN, FRAME, Failed, GRID, GUIDE, INK,
     LegendItem, MUTED, Marker, Px, SOLID, STRIPE, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H,
     build_axes, draw_frame_edges, draw_line, draw_marker, draw_text, extent, fmt_fixed_for_print,
-    font, message_chart, padded_range, render, round_px, sig_decimals, text_style, ticks,
-    x_tick_count,
+    font, message_chart, padded_range, render, round_px, row_height, sig_decimals, text_style,
+    ticks, x_tick_count,
 };
 use super::scene::Scene;
 use plotters::prelude::*;
@@ -95,31 +95,11 @@ const KIT: Conventions = Conventions {
 /// Ratios above this are drawn clipped at it, with an arrow marker.
 const RATIO_CLIP: f64 = 3.0;
 
-const MEAN_UP: Stroke = Stroke {
-    color: UP,
-    width: 2,
-    dash: SOLID,
-};
-const MEAN_DOWN: Stroke = Stroke {
-    color: DOWN,
-    width: 2,
-    dash: DASHED,
-};
-const LIMIT_UP: Stroke = Stroke {
-    color: UP_LIGHT,
-    width: 1,
-    dash: SOLID,
-};
-const LIMIT_DOWN: Stroke = Stroke {
-    color: DOWN_LIGHT,
-    width: 1,
-    dash: DASHED_THIN,
-};
-const MEAN_BIDIR: Stroke = Stroke {
-    color: INK,
-    width: 1,
-    dash: DASH_DOT,
-};
+const MEAN_UP: Stroke = Stroke::new(UP, 2, SOLID);
+const MEAN_DOWN: Stroke = Stroke::new(DOWN, 2, DASHED);
+const LIMIT_UP: Stroke = Stroke::new(UP_LIGHT, 1, SOLID);
+const LIMIT_DOWN: Stroke = Stroke::new(DOWN_LIGHT, 1, DASHED_THIN);
+const MEAN_BIDIR: Stroke = Stroke::new(INK, 1, DASH_DOT);
 const MARK_MEAN_UP: (Marker, RGBColor) = (Marker::Dot(4), UP);
 const MARK_MEAN_DOWN: (Marker, RGBColor) = (Marker::Triangle(5), DOWN);
 const MARK_READ_UP: (Marker, RGBColor) = (Marker::Dot(2), UP_LIGHT);
@@ -549,11 +529,7 @@ const RATIO_TOP: u32 = 44;
 const RATIO_BOTTOM: u32 = 56;
 
 fn ratio_row_height(bars: usize) -> u32 {
-    match bars {
-        0..=20 => 24,
-        21..=40 => 20,
-        _ => 18,
-    }
+    row_height(bars, &[(20, 24), (40, 20)], 18)
 }
 
 /// Height in pixels that fits `bars` rows of [`tolerance_usage`] at 900 px wide.
@@ -848,6 +824,9 @@ fn draw_usage_key(root: &Area, clipped: bool) -> Result<(), Failed> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::svg_probe::{
+        assert_well_formed, attr_values, degenerate_styles, text_tag, texts,
+    };
 
     // The charts as SVG with an element per outline, as plotters wrote them.
     fn bidirectional(chart: &AxisChart, style: &Style) -> String {
@@ -962,45 +941,6 @@ mod tests {
                 }
             })
             .collect()
-    }
-
-    /// The text content of every `<text>` element.
-    fn texts(svg: &str) -> Vec<String> {
-        svg.split("<text")
-            .skip(1)
-            .filter_map(|t| {
-                let start = t.find('>')? + 1;
-                let end = t.find("</text>")?;
-                Some(t[start..end].trim().to_string())
-            })
-            .collect()
-    }
-
-    /// The opening tag of the `<text>` element holding exactly `content`.
-    fn text_tag<'a>(svg: &'a str, content: &str) -> Option<&'a str> {
-        svg.split("<text").skip(1).find_map(|t| {
-            let start = t.find('>')?;
-            let end = t.find("</text>")?;
-            (t[start + 1..end].trim() == content).then_some(&t[..start])
-        })
-    }
-
-    fn attr_values<'a>(svg: &'a str, attr: &str) -> Vec<&'a str> {
-        let key = format!(" {attr}=\"");
-        svg.match_indices(&key)
-            .filter_map(|(i, _)| {
-                let rest = &svg[i + key.len()..];
-                rest.find('"').map(|end| &rest[..end])
-            })
-            .collect()
-    }
-
-    fn assert_well_formed(svg: &str) {
-        assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
-        assert!(svg.trim_end().ends_with("</svg>"));
-        assert_eq!(svg.matches("<text").count(), svg.matches("</text>").count());
-        assert_eq!(svg.matches("<svg").count(), 1);
-        assert!(!svg.contains("NaN") && !svg.contains("inf\""));
     }
 
     fn all_charts(chart: &AxisChart, style: &Style) -> Vec<String> {
@@ -1198,17 +1138,7 @@ mod tests {
             .collect();
         cases.push(many_spans);
 
-        let styles = [
-            style(),
-            Style {
-                width_px: 0,
-                height_px: 0,
-            },
-            Style {
-                width_px: 300,
-                height_px: 150,
-            },
-        ];
+        let styles = degenerate_styles(style());
         for chart in &cases {
             for st in &styles {
                 for svg in all_charts(chart, st) {

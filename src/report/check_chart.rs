@@ -3,7 +3,8 @@
 
 use super::chart_kit::{
     Area, Failed, GUIDE, INK, LEGEND_PX, MUTED, Marker, STRIPE, Style, TICK_PX, draw_marker,
-    draw_text, fmt_fixed_for_print, message_chart, render, round_px, sig_decimals, text_style,
+    draw_text, fmt_fixed_for_print, message_chart, render, round_px, row_height, sig_decimals,
+    text_style,
 };
 use super::diagnosis_charts::{
     CHECK_BAND, KIT, MARK_INSIDE, MARK_OUTSIDE, NOTE_PX, OUTSIDE, bold_width, draw_arrow, fill_rect,
@@ -26,11 +27,7 @@ const CHECK_TOP: u32 = 62;
 const CHECK_BOTTOM: u32 = 12;
 
 fn check_row_height(rows: usize) -> u32 {
-    match rows {
-        0..=12 => 36,
-        13..=30 => 28,
-        _ => 22,
-    }
+    row_height(rows, &[(12, 36), (30, 28)], 22)
 }
 
 /// Height in pixels that fits `bars` rows of [`model_checks`] at 900 px wide.

@@ -80,26 +80,10 @@ pub(crate) const OUTSIDE: RGBColor = RGBColor(0x6E, 0x14, 0x14);
 /// Text size of the notes, in SVG pixels (the `font-size` written into the SVG).
 pub(crate) const NOTE_PX: f64 = 12.5;
 
-const FIT: Stroke = Stroke {
-    color: INK,
-    width: 2,
-    dash: SOLID,
-};
-const POWER: Stroke = Stroke {
-    color: CURVE,
-    width: 2,
-    dash: SOLID,
-};
-const THRESHOLD: Stroke = Stroke {
-    color: DOWN,
-    width: 2,
-    dash: DASHED,
-};
-const MARKED: Stroke = Stroke {
-    color: MUTED,
-    width: 1,
-    dash: SOLID,
-};
+const FIT: Stroke = Stroke::new(INK, 2, SOLID);
+const POWER: Stroke = Stroke::new(CURVE, 2, SOLID);
+const THRESHOLD: Stroke = Stroke::new(DOWN, 2, DASHED);
+const MARKED: Stroke = Stroke::new(MUTED, 1, SOLID);
 const MARK_UP: (Marker, RGBColor) = (Marker::Dot(4), UP);
 const MARK_DOWN: (Marker, RGBColor) = (Marker::OpenTriangle(4), DOWN_MID);
 pub(crate) const MARK_INSIDE: (Marker, RGBColor) = (Marker::Dot(5), INK);
@@ -811,6 +795,9 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> Scene {
 mod tests {
     use super::*;
     use crate::report::check_chart::{check_position, row_decimals};
+    use crate::report::svg_probe::{
+        assert_well_formed, attr_values, degenerate_styles, has_text, text_tag, texts,
+    };
 
     // The charts as SVG with an element per outline, as plotters wrote them.
     fn residuals(r: &Residuals, style: &Style) -> String {
@@ -927,49 +914,6 @@ mod tests {
             periodogram(&example_periodogram(400), st),
             model_checks(&checks, st),
         ]
-    }
-
-    /// The text content of every `<text>` element.
-    fn texts(svg: &str) -> Vec<String> {
-        svg.split("<text")
-            .skip(1)
-            .filter_map(|t| {
-                let start = t.find('>')? + 1;
-                let end = t.find("</text>")?;
-                Some(t[start..end].trim().to_string())
-            })
-            .collect()
-    }
-
-    /// The opening tag of the `<text>` element holding exactly `content`.
-    fn text_tag<'a>(svg: &'a str, content: &str) -> Option<&'a str> {
-        svg.split("<text").skip(1).find_map(|t| {
-            let start = t.find('>')?;
-            let end = t.find("</text>")?;
-            (t[start + 1..end].trim() == content).then_some(&t[..start])
-        })
-    }
-
-    fn attr_values<'a>(svg: &'a str, attr: &str) -> Vec<&'a str> {
-        let key = format!(" {attr}=\"");
-        svg.match_indices(&key)
-            .filter_map(|(i, _)| {
-                let rest = &svg[i + key.len()..];
-                rest.find('"').map(|end| &rest[..end])
-            })
-            .collect()
-    }
-
-    fn has_text(svg: &str, want: &str) -> bool {
-        texts(svg).iter().any(|t| t == want)
-    }
-
-    fn assert_well_formed(svg: &str) {
-        assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
-        assert!(svg.trim_end().ends_with("</svg>"));
-        assert_eq!(svg.matches("<text").count(), svg.matches("</text>").count());
-        assert_eq!(svg.matches("<svg").count(), 1);
-        assert!(!svg.contains("NaN") && !svg.contains("inf\""));
     }
 
     /// Polylines drawn in `color` (markers and lines).
@@ -1520,21 +1464,7 @@ mod tests {
 
     #[test]
     fn degenerate_inputs_do_not_panic() {
-        let styles = [
-            style(360),
-            Style {
-                width_px: 0,
-                height_px: 0,
-            },
-            Style {
-                width_px: 300,
-                height_px: 150,
-            },
-            Style {
-                width_px: u32::MAX,
-                height_px: u32::MAX,
-            },
-        ];
+        let styles = degenerate_styles(style(360));
         let base = iso_residuals(1);
         let res = |x: Vec<f64>, y: Vec<f64>| Residuals {
             up: (0..x.len()).map(|i| i % 2 == 0).collect(),

@@ -18,6 +18,8 @@ mod drawing;
 pub mod labels;
 pub mod scene;
 mod shaping;
+#[cfg(test)]
+mod svg_probe;
 mod text_lines;
 pub mod world;
 
