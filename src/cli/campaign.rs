@@ -32,33 +32,40 @@ pub fn evaluate_with(
     options: batch::Options,
     progress: Progress,
 ) -> CampaignResult {
+    // Progress counts axes, whose number is known before any data folder is read; an axis
+    // with several data files is several tests, reported one after the other.
     let total: usize = campaign.axes().count();
-    let done = AtomicUsize::new(0);
+    let tests_done = AtomicUsize::new(0);
+    let axes_done = AtomicUsize::new(0);
     let tenths = AtomicUsize::new(0);
     let bar = (progress == Progress::Auto && std::io::stderr().is_terminal()).then(|| {
         let bar = indicatif::ProgressBar::new(total as u64);
         bar.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} {pos}/{len} tests {wide_bar} {msg}")
+            indicatif::ProgressStyle::with_template("{spinner} {pos}/{len} axes {wide_bar} {msg}")
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
         bar
     });
     let report = |t: &AxisTest| {
-        let k = done.fetch_add(1, Ordering::Relaxed) + 1;
+        let k = tests_done.fetch_add(1, Ordering::Relaxed) + 1;
+        let axes = if t.test == t.tests {
+            axes_done.fetch_add(1, Ordering::Relaxed) + 1
+        } else {
+            axes_done.load(Ordering::Relaxed)
+        };
         match (&bar, progress) {
             (Some(bar), _) => {
-                // An axis with several data files is several tests: grow the bar.
-                if k > total {
-                    bar.set_length(k as u64);
-                }
-                bar.set_position(k as u64);
+                bar.set_position(axes as u64);
                 bar.set_message(format!("{} {}", t.label(), t.verdict));
             }
             (None, Progress::EveryTest) => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
             (None, Progress::Auto) => {
-                let tenth = (k * 10 / total.max(1)).min(10);
+                let tenth = (axes * 10 / total.max(1)).min(10);
                 if tenth > tenths.fetch_max(tenth, Ordering::Relaxed) {
-                    eprintln!("axcheck: {} % ({k} tests evaluated)", tenth * 10);
+                    eprintln!(
+                        "axcheck: {} % ({axes} of {total} axes evaluated)",
+                        tenth * 10
+                    );
                 }
             }
         }

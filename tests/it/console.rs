@@ -49,7 +49,7 @@ fn a_fleet_prints_twenty_problems_and_a_count_of_the_rest() {
     // Not a terminal: a progress line at every tenth, not one per axis.
     let progress: Vec<&str> = stderr.lines().filter(|l| l.contains(" % (")).collect();
     assert_eq!(progress.len(), 10, "{stderr}");
-    assert_eq!(progress[9], "axcheck: 100 % (200 tests evaluated)");
+    assert_eq!(progress[9], "axcheck: 100 % (200 of 200 axes evaluated)");
     assert!(stderr.lines().count() <= 11, "{stderr}");
 
     let (code, stdout, stderr) = axcheck(&["check", campaign.to_str().unwrap(), "--progress"]);
@@ -64,4 +64,18 @@ fn a_fleet_prints_twenty_problems_and_a_count_of_the_rest() {
         .collect();
     assert_eq!(every.len(), 200, "--progress: a line per test");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Progress counts axes: the example campaign has 18 axes and 19 tests (GANTRY-1 X has two
+/// data files), and 100 % comes with the last axis, not one test early.
+#[test]
+fn progress_counts_axes_when_an_axis_has_several_tests() {
+    let (code, stdout, stderr) =
+        axcheck(&["check", "example-campaign/campaign.yaml", "--jobs", "1"]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(stdout.contains("19 tests: 16 pass"), "{stdout}");
+    let progress: Vec<&str> = stderr.lines().filter(|l| l.contains(" % (")).collect();
+    assert_eq!(progress.len(), 10, "{stderr}");
+    assert_eq!(progress[4], "axcheck: 50 % (9 of 18 axes evaluated)");
+    assert_eq!(progress[9], "axcheck: 100 % (18 of 18 axes evaluated)");
 }
