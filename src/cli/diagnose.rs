@@ -92,6 +92,7 @@ fn findings(out: &mut String, d: &Diagnosis) {
             evidence.push_str(&format!(", effect size {}", num(s)));
         }
         let _ = writeln!(out, "      evidence: {evidence}");
+        let _ = writeln!(out, "      what to do: {}", f.advice());
     }
 }
 

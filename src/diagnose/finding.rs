@@ -3,7 +3,8 @@
 //! The estimate is one type per effect ([`super::effects`]); its parameters reach the JSON
 //! under keys that carry the units (`rate_um_per_h`, `period_mm` …). Those keys are a
 //! stable interface (`diagnose --json`, `results.json`), so each effect builds them in one
-//! place, its `params`, which the JSON, the text and the report all read.
+//! place, its `params`, which the JSON, the text and the report all read; beside them its
+//! `advice`, what a user can do about the cause.
 
 use super::effects::{Effect, Estimate};
 use super::prep::TimeUnit;
@@ -86,6 +87,11 @@ impl Finding {
         self.estimate.fields().labels()
     }
 
+    /// What to do next about this cause (`advice` in the JSON).
+    pub fn advice(&self) -> String {
+        self.estimate.fields().advice(self.units)
+    }
+
     /// The parameter with `key` (a key of [`Finding::params`]).
     pub fn param(&self, key: &str) -> Option<f64> {
         self.params()
@@ -103,6 +109,8 @@ pub(crate) trait Fields {
     fn labels(&self) -> Vec<(&'static str, &'static str)> {
         Vec::new()
     }
+    /// What to do next: the remedy for this cause, with its size where it has one.
+    fn advice(&self, units: Units) -> String;
 }
 
 /// Pairs serialised as a map, in order.
@@ -126,6 +134,7 @@ struct FindingJson<'a> {
     labels: Keyed<&'static str, &'static str>,
     evidence: &'a Evidence,
     message: &'a str,
+    advice: String,
 }
 
 impl Serialize for Finding {
@@ -136,6 +145,7 @@ impl Serialize for Finding {
             labels: Keyed(self.labels()),
             evidence: &self.evidence,
             message: &self.message,
+            advice: self.advice(),
         }
         .serialize(s)
     }

@@ -34,6 +34,8 @@ struct FindingLine<'a> {
     message: &'a str,
     params: String,
     evidence: String,
+    /// What to do next.
+    advice: String,
 }
 
 /// One parameter as measured and with the effects removed.
@@ -79,6 +81,7 @@ impl<'a> From<&'a Finding> for FindingLine<'a> {
             message: &f.message,
             params,
             evidence,
+            advice: f.advice(),
         }
     }
 }

@@ -918,3 +918,101 @@ fn tiny_and_degenerate_inputs_do_not_panic() {
         .sum();
     assert_eq!(done, cases.len());
 }
+
+/// A number as the diagnosis prints it in messages and advice: 2 decimals from 1, 3 from
+/// 0.01, 1 from 100 (hand rule, to compare the advice with the finding's parameters).
+fn shown(v: f64) -> String {
+    let a = v.abs();
+    let d = if a >= 100.0 {
+        1
+    } else if a >= 1.0 {
+        2
+    } else if a >= 0.01 {
+        3
+    } else {
+        5
+    };
+    axcheck::units::fmt_fixed(v, d)
+}
+
+/// The first of `seeds` cases of `make` in which `effect` is found, with the finding's
+/// advice, parameters and the JSON's `advice`.
+fn advice_of(
+    make: fn(u64) -> Case,
+    seeds: std::ops::Range<u64>,
+    effect: Effect,
+) -> (String, Diagnosis) {
+    for seed in seeds {
+        let (_, d) = run_case(&make(seed));
+        let found = d.of(effect).next().map(|f| f.advice());
+        if let Some(advice) = found {
+            let json = json_of(&d);
+            let k = d
+                .findings
+                .iter()
+                .position(|g| g.effect() == effect)
+                .unwrap();
+            assert_eq!(json["findings"][k]["advice"], advice.as_str());
+            return (advice, d);
+        }
+    }
+    panic!("{effect:?} not found in any seed");
+}
+
+/// Every effect says what to do next, with the size that decides it, computed from the
+/// finding's own parameters.
+#[test]
+fn each_finding_says_what_to_do_next() {
+    let (a, d) = advice_of(drift_case, 10_000..10_010, Effect::Drift);
+    let total = param(&d, Effect::Drift, "total_um");
+    assert!(
+        a.starts_with("re-test once the machine is thermally stable"),
+        "{a}"
+    );
+    assert!(
+        a.contains(&format!("the {} µm it moved", shown(total.abs()))),
+        "{a}"
+    );
+    assert!(a.contains("ISO 230-2 3.1, 3.3"), "{a}");
+
+    let (a, d) = advice_of(thermal_case, 20_000..20_010, Effect::ThermalGrowth);
+    let grown = param(&d, Effect::ThermalGrowth, "growth_over_travel_and_test_um");
+    assert!(
+        a.contains(&format!("grew by {} µm", shown(grown.abs()))),
+        "{a}"
+    );
+
+    let (a, d) = advice_of(run_offset_case, 30_000..30_010, Effect::RunOffset);
+    let rms = param(&d, Effect::RunOffset, "rms_um");
+    assert!(
+        a.contains(&format!("moved by {} µm RMS", shown(rms))),
+        "{a}"
+    );
+    assert!(a.contains("dead path"), "{a}");
+
+    let (a, d) = advice_of(periodic_case, 40_000..40_010, Effect::Periodic);
+    let period = param(&d, Effect::Periodic, "period_mm");
+    assert!(
+        a.contains(&format!("at most {} mm apart", shown(period / 4.0))),
+        "{a}"
+    );
+    assert!(a.contains("short test"), "{a}");
+
+    let (a, d) = advice_of(reversal_case, 50_000..50_010, Effect::ReversalVariation);
+    let range = param(&d, Effect::ReversalVariation, "reversal_range_um");
+    assert!(
+        a.contains(&format!("up to ±{} µm", shown(range / 2.0))),
+        "{a}"
+    );
+
+    let (a, d) = advice_of(outlier_case, 60_000..60_010, Effect::Outlier);
+    let f = d.of(Effect::Outlier).next().unwrap();
+    let (run, target) = (f.param("run").unwrap(), f.param("target").unwrap());
+    assert!(a.contains(&format!("to target {target} (")), "{a}");
+    assert!(a.contains(&format!("in run {run}")), "{a}");
+
+    let (a, d) = advice_of(scatter_case, 70_000..70_010, Effect::ScatterVariation);
+    let ratio = param(&d, Effect::ScatterVariation, "ratio_end_to_start");
+    let worse = if ratio >= 1.0 { ratio } else { 1.0 / ratio };
+    assert!(a.contains(&format!("{}× worse", shown(worse))), "{a}");
+}

@@ -39,6 +39,16 @@ impl Fields for Drift {
         params
     }
 
+    /// ISO 230-2 3.3: approaches that form an ordered series mean the machine is not
+    /// thermally stable; under the standard cycle a drift shows in B and R (Annex A).
+    fn advice(&self, u: Units) -> String {
+        format!(
+            "re-test once the machine is thermally stable: warm it up as its supplier specifies and keep the room temperature steady (ISO 230-2 3.1, 3.3); the {} {} it moved during the test are not an error of position, so a compensation table cannot remove them, and they enlarge R and B",
+            fmt(self.total.abs()),
+            u.symbol()
+        )
+    }
+
     fn labels(&self) -> Vec<(&'static str, &'static str)> {
         vec![("tested_against", self.tested_against)]
     }

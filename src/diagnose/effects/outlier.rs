@@ -38,6 +38,16 @@ impl Fields for Outlier {
     fn labels(&self) -> Vec<(&'static str, &'static str)> {
         vec![("direction", self.direction.name())]
     }
+
+    fn advice(&self, u: Units) -> String {
+        format!(
+            "re-measure the {} approach to target {} ({}) in run {}; where its cause is known (a disturbed beam, a knock) exclude that reading with a note in the test report: the parameters here include it",
+            self.direction.name(),
+            self.target,
+            fmt_target(u.kind, self.position),
+            self.run
+        )
+    }
 }
 
 fn direction(d: usize) -> Direction {

@@ -46,6 +46,19 @@ impl Fields for Periodic {
         };
         vec![("candidate", candidate)]
     }
+
+    /// A compensation table follows a period only with about four entries per period;
+    /// the short test measures it (Hemingray et al. 1971, §4).
+    fn advice(&self, u: Units) -> String {
+        format!(
+            "{}; correct it at its source (lead screw, scale or encoder interpolation) or with a cyclic compensation: a pitch compensation table follows a {} {} period only with entries at most {} {} apart",
+            short_test(u.kind, Some(self.period)),
+            fmt(self.period),
+            u.pos(),
+            fmt(self.period / 4.0),
+            u.pos()
+        )
+    }
 }
 
 pub(crate) struct Rule;
@@ -126,15 +139,10 @@ impl EffectRule for Rule {
     }
 }
 
-/// Notes on what the plan can resolve of a periodic error (Hemingray et al. 1971, §4).
-pub(crate) fn plan_notes(
-    res: &Resolution,
-    pitch: Option<f64>,
-    kind: AxisKind,
-    notes: &mut Vec<String>,
-) {
-    let pu = kind.position_unit();
-    let advice = match (kind, pitch) {
+/// The short fine-step test that measures a periodic error of pitch `pitch` (or looks for
+/// one): Hemingray et al. 1971, §4.
+fn short_test(kind: AxisKind, pitch: Option<f64>) -> String {
+    match (kind, pitch) {
         (AxisKind::Linear, Some(p)) => format!(
             "to measure it, add a short test over about {} mm (at least three pitches) with steps of about {} mm (a tenth of the pitch or finer), as Hemingray et al. 1971, §4 recommend (25 mm with 0.5 mm steps)",
             fmt_position_round((3.0 * p).max(25.0)),
@@ -147,7 +155,18 @@ pub(crate) fn plan_notes(
             fmt_position_round(p / 10.0)
         ),
         (AxisKind::Rotary, None) => "to look for a periodic error (worm, encoder), add a short test over a few periods with steps of a tenth of the period (Hemingray et al. 1971, §4)".to_string(),
-    };
+    }
+}
+
+/// Notes on what the plan can resolve of a periodic error (Hemingray et al. 1971, §4).
+pub(crate) fn plan_notes(
+    res: &Resolution,
+    pitch: Option<f64>,
+    kind: AxisKind,
+    notes: &mut Vec<String>,
+) {
+    let pu = kind.position_unit();
+    let advice = short_test(kind, pitch);
     if !res.applicable {
         let spacing = if res.spacing.is_finite() {
             format!(

@@ -49,6 +49,18 @@ impl Fields for ReversalVariation {
         };
         vec![("shape", shape)]
     }
+
+    /// A backlash compensation is one value per axis: it removes the mean reversal B̄ and
+    /// leaves half the range of the Bi on either side.
+    fn advice(&self, u: Units) -> String {
+        format!(
+            "a backlash compensation (one value for the axis) leaves up to ±{} {} of reversal here (half the range of Bi, {} {}); compensate per position where the control has direction-dependent pitch tables, or look for the mechanical cause (screw wear, guideway preload) where the reversal is largest",
+            fmt(self.range / 2.0),
+            u.symbol(),
+            fmt(self.range),
+            u.symbol()
+        )
+    }
 }
 
 pub(crate) struct Rule;

@@ -37,6 +37,15 @@ impl Fields for RunOffset {
         params.push((format!("rms_{du}"), self.rms));
         params
     }
+
+    /// A zero-point instability of the measurement set-up, not of the axis.
+    fn advice(&self, u: Units) -> String {
+        format!(
+            "whole runs moved by {} {} RMS: check the laser set-up between runs (the datum at the start of each run, the dead path, the air and material sensors of the wavelength compensation, an interrupted beam) and repeat the test; a compensation table cannot remove a zero-point instability",
+            fmt(self.rms),
+            u.symbol()
+        )
+    }
 }
 
 pub(crate) struct Rule;

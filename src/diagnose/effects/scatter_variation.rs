@@ -29,6 +29,21 @@ impl Fields for ScatterVariation {
             ("ratio_end_to_start".into(), self.ratio),
         ]
     }
+
+    fn advice(&self, u: Units) -> String {
+        let (worse, ratio) = if self.end >= self.start {
+            ("last", self.ratio)
+        } else {
+            ("first", 1.0 / self.ratio)
+        };
+        format!(
+            "the repeatability is {}× worse towards the {worse} target (σ {} → {} {}): look for a mechanical cause there (screw support bearing, guideway or its lubrication, scale mounting); no compensation reduces scatter",
+            fmt(ratio),
+            fmt(self.start),
+            fmt(self.end),
+            u.symbol()
+        )
+    }
 }
 
 pub(crate) struct Rule;

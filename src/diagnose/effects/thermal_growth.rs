@@ -48,6 +48,15 @@ impl Fields for ThermalGrowth {
             ),
         ]
     }
+
+    /// ISO 230-2 3.1 (temperatures of the positioning system, NDE) and 3.3 (warm-up).
+    fn advice(&self, u: Units) -> String {
+        format!(
+            "the axis grew by {} {} over its travel during the test: let the screw or scale reach a steady temperature before testing (ISO 230-2 3.3) and check the temperature correction (the sensor on the positioning system and its expansion coefficient, ISO 230-2 3.1); a linear (scale) compensation holds at one temperature only",
+            fmt(self.over_travel_and_test.abs()),
+            u.symbol()
+        )
+    }
 }
 
 pub(crate) struct Rule;
