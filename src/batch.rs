@@ -3,6 +3,7 @@
 //! with its message; the rest of the campaign completes.
 
 use crate::campaign::{AxisSpec, Campaign, CampaignInfo, MachineInfo, SensorKind};
+use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::gost27843::{Gost27843, SMethod};
 use crate::evaluate::{Evaluation, Standard, StandardId};
 use crate::judge::{self, Judgement, Limits, Spec, Verdict};
@@ -36,6 +37,8 @@ pub struct AxisTest {
     pub nde: Option<NdeCorrection>,
     /// Model check and diagnosis, when the run asked for it.
     pub diagnosis: Option<crate::diagnose::Diagnosis>,
+    /// This test predicted by the models of each other diagnosed test of the axis.
+    pub out_of_test: Vec<OutOfTest>,
 }
 
 impl AxisTest {
@@ -243,6 +246,7 @@ impl Slot {
             findings: Vec::new(),
             nde: None,
             diagnosis: None,
+            out_of_test: Vec::new(),
         }
     }
 
@@ -291,7 +295,7 @@ fn run_axis(
         Some(None) => Err("spec not loaded".to_string()),
     };
     let tests = files.len();
-    files
+    let mut results: Vec<AxisTest> = files
         .iter()
         .enumerate()
         .map(|(k, path)| {
@@ -306,7 +310,33 @@ fn run_axis(
                 Ok(spec) => run_test(slot, &axis, spec.as_deref(), path, diagnose),
             }
         })
-        .collect()
+        .collect();
+    predict_across_tests(&mut results);
+    results
+}
+
+/// Each diagnosed test of an axis predicted by the models of every other one (fit on one
+/// test, predict the other): [`crate::diagnose::cross`].
+fn predict_across_tests(tests: &mut [AxisTest]) {
+    let predictions: Vec<Vec<OutOfTest>> = tests
+        .iter()
+        .map(|target| {
+            let Some(data) = target.data.as_ref() else {
+                return Vec::new();
+            };
+            tests
+                .iter()
+                .filter(|from| from.test != target.test)
+                .filter_map(|from| {
+                    let diagnosis = from.diagnosis.as_ref()?;
+                    out_of_test(diagnosis, from.test, from.file.clone(), data)
+                })
+                .collect()
+        })
+        .collect();
+    for (test, p) in tests.iter_mut().zip(predictions) {
+        test.out_of_test = p;
+    }
 }
 
 /// `path` relative to the campaign folder with `/` separators (stable across systems).

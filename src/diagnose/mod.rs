@@ -25,6 +25,7 @@
 mod analysis;
 mod checks;
 mod corrected;
+pub mod cross;
 pub mod effects;
 mod finding;
 mod fitted;

@@ -12,6 +12,7 @@ use super::{ExportError, Exporter, OutputFile};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
 use crate::diagnose::Diagnosis;
+use crate::diagnose::cross::OutOfTest;
 use crate::evaluate::json::{ParameterValues, TargetIndices};
 use crate::judge::{Check, Judgement, Verdict};
 use crate::nde::NdeCorrection;
@@ -48,6 +49,9 @@ pub struct TestJson<'a> {
     nde: Option<&'a NdeCorrection>,
     #[serde(skip_serializing_if = "Option::is_none")]
     diagnosis: Option<&'a Diagnosis>,
+    /// This test predicted by the models of the axis's other tests (several data files).
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    out_of_test: &'a [OutOfTest],
     #[serde(skip_serializing_if = "Option::is_none")]
     error: Option<&'a str>,
 }
@@ -141,6 +145,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         rules: &t.findings,
         nde: t.nde.as_ref(),
         diagnosis: t.diagnosis.as_ref(),
+        out_of_test: &t.out_of_test,
         error: t.error.as_deref(),
     }
 }

@@ -3,6 +3,7 @@
 //! diagnosis charts (model checks, residuals in time and along the axis, periodogram).
 
 use super::data::num;
+use crate::diagnose::cross::OutOfTest;
 use crate::diagnose::effects::periodic::Periodic;
 use crate::diagnose::{Diagnosis, Finding};
 use crate::units::{AxisKind, fmt_fixed};
@@ -25,6 +26,52 @@ pub(super) struct DiagnosisSection<'a> {
     corrected: Vec<CorrectedLine<'a>>,
     notes: &'a [String],
     has_periodogram: bool,
+    /// This test predicted by the models of the axis's other tests.
+    out_of_test: Vec<OutOfTestLine>,
+}
+
+/// Out-of-test prediction from another test of the axis ([`crate::diagnose::cross`]).
+#[derive(Serialize)]
+struct OutOfTestLine {
+    /// `test 2 (data/x-work.csv)`.
+    from: String,
+    readings: usize,
+    base_rms: String,
+    extended_rms: String,
+    /// The extended model's held-out RMS within the other test, as a phrase.
+    in_test: String,
+    datum_offset: String,
+}
+
+impl OutOfTestLine {
+    fn new(o: &OutOfTest, unit: &str) -> OutOfTestLine {
+        let from = match &o.from_file {
+            Some(file) => format!("test {} ({file})", o.from_test),
+            None => format!("test {}", o.from_test),
+        };
+        let fixed = |v: f64| {
+            if v.is_finite() {
+                fmt_fixed(v, 3)
+            } else {
+                "–".to_string()
+            }
+        };
+        OutOfTestLine {
+            from,
+            readings: o.readings,
+            base_rms: fixed(o.base_rms),
+            extended_rms: fixed(o.extended_rms),
+            in_test: if o.in_test_rms.is_finite() {
+                format!(
+                    "held out within that test: {} {unit} RMS",
+                    fixed(o.in_test_rms)
+                )
+            } else {
+                "no held-out figure within that test (a single run)".to_string()
+            },
+            datum_offset: fixed(o.datum_offset),
+        }
+    }
 }
 
 /// One finding: its message, its parameters and its evidence as text.
@@ -88,7 +135,10 @@ impl<'a> From<&'a Finding> for FindingLine<'a> {
 
 /// The diagnosis section: findings with evidence, the held-out gain, parameters with the
 /// identified effects removed (beside the measured ones), notes.
-pub(super) fn diagnosis_section(d: &Diagnosis) -> DiagnosisSection<'_> {
+pub(super) fn diagnosis_section<'a>(
+    d: &'a Diagnosis,
+    out_of_test: &[OutOfTest],
+) -> DiagnosisSection<'a> {
     let all = d
         .corrected
         .iter()
@@ -121,6 +171,10 @@ pub(super) fn diagnosis_section(d: &Diagnosis) -> DiagnosisSection<'_> {
         corrected,
         notes: &d.notes,
         has_periodogram: !d.residuals.periodogram.is_empty(),
+        out_of_test: out_of_test
+            .iter()
+            .map(|o| OutOfTestLine::new(o, d.kind.deviation_symbol()))
+            .collect(),
     }
 }
 

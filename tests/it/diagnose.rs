@@ -1016,3 +1016,62 @@ fn each_finding_says_what_to_do_next() {
     let worse = if ratio >= 1.0 { ratio } else { 1.0 / ratio };
     assert!(a.contains(&format!("{}× worse", shown(worse))), "{a}");
 }
+
+/// An axis with two data files: each test is predicted by the other's models. The second
+/// file is the first shifted by +5 µm (a new laser datum): the fitted models shift with
+/// it, so each prediction sees the same errors about a datum offset that differs by 10 µm,
+/// and the out-of-test RMS are the same both ways.
+#[test]
+fn a_second_test_of_the_axis_is_predicted_by_the_first() {
+    let dir = crate::common::scratch("out-of-test");
+    let text = std::fs::read_to_string("tests/data/iso230-2_table2.csv").unwrap();
+    let mut shifted = String::new();
+    for (k, line) in text.lines().enumerate() {
+        if k == 0 {
+            shifted.push_str(line);
+        } else {
+            let (head, deviation) = line.rsplit_once(',').unwrap();
+            let value: f64 = deviation.parse().unwrap();
+            shifted.push_str(&format!("{head},{}", value + 5.0));
+        }
+        shifted.push('\n');
+    }
+    std::fs::write(dir.join("data/a.csv"), &text).unwrap();
+    std::fs::write(dir.join("data/b.csv"), &shifted).unwrap();
+    let campaign = dir.join("campaign.yaml");
+    std::fs::write(
+        &campaign,
+        "campaign: {name: two tests}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: [data/a.csv, data/b.csv]}\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let (code, _, stderr) = crate::common::axcheck(&[
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert!(code == 0 || code == 1, "{stderr}");
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
+    let axes = json["axes"].as_array().unwrap();
+    let (a, b) = (&axes[0]["out_of_test"][0], &axes[1]["out_of_test"][0]);
+    assert_eq!(a["from_test"], 2);
+    assert_eq!(a["from_file"], "data/b.csv");
+    assert_eq!(b["from_test"], 1);
+    assert_eq!(a["readings"], 110);
+    assert_eq!(a["unit"], "um");
+    let f = |v: &serde_json::Value, k: &str| v[k].as_f64().unwrap();
+    assert!((f(b, "datum_offset") - f(a, "datum_offset") - 10.0).abs() < 1e-9);
+    for key in ["base_rms", "extended_rms"] {
+        assert!((f(a, key) - f(b, key)).abs() < 1e-9, "{key}");
+        assert!(f(a, key) > 0.0);
+    }
+    // The in-test figure beside it is the other test's own held-out RMS.
+    let held_out = axes[1]["diagnosis"]["extended"]["heldout_rms"]
+        .as_f64()
+        .unwrap();
+    assert!((f(a, "in_test_rms") - held_out).abs() < 1e-12);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

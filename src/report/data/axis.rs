@@ -58,7 +58,10 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         notes: e.map_or(&[], |e| &e.notes),
         findings: &t.findings,
         has_charts: e.is_some(),
-        diagnosis: t.diagnosis.as_ref().map(diagnosis_section),
+        diagnosis: t
+            .diagnosis
+            .as_ref()
+            .map(|d| diagnosis_section(d, &t.out_of_test)),
         generator: generator(),
     }
 }
