@@ -113,6 +113,12 @@ fn held_out(out: &mut String, d: &Diagnosis) {
         d.extended.terms.join(", ")
     );
     let _ = writeln!(out, "  gain {} %", fmt_fixed(d.gain_pct, 1));
+    if !d.term_gains.is_empty() {
+        let _ = writeln!(out, "  per term, under the scheme that can show it:");
+    }
+    for g in &d.term_gains {
+        let _ = writeln!(out, "    {}", g.describe(unit));
+    }
 }
 
 /// The standard's parameters as measured and with each identified effect removed.

@@ -7,13 +7,14 @@
 //! `message`), `base` and `extended` (each `terms`, `heldout_rms`, `heldout_nlpd`,
 //! `between_targets_rms`), `gain_pct` (held-out RMS of the readings),
 //! `gain_between_targets_pct` (leave-one-target-out, when a periodic term was judged),
-//! `validation`, `checks`, `corrected`, `residuals`,
+//! `term_gains` (each judged term: `effect`, `scheme`, `without`, `with`, `gain_pct`,
+//! `kept`), `validation`, `checks`, `corrected`, `residuals`,
 //! `base_model` and `extended_model` (simulation files as YAML text), `notes`.
 //! Numbers that do not apply are `null`.
 
 use super::checks::{ModelCheck, describe};
 use super::finding::keyed;
-use super::{Corrected, Diagnosis, Finding, ModelFit, Residuals};
+use super::{Corrected, Diagnosis, Finding, ModelFit, Residuals, TermGain};
 use serde::{Serialize, Serializer};
 
 #[derive(Serialize)]
@@ -27,6 +28,7 @@ struct DiagnosisJson<'a> {
     extended: &'a ModelFit,
     gain_pct: f64,
     gain_between_targets_pct: Option<f64>,
+    term_gains: &'a [TermGain],
     validation: &'static str,
     checks: Vec<CheckJson<'a>>,
     corrected: &'a [Corrected],
@@ -105,6 +107,7 @@ impl Serialize for Diagnosis {
             extended: &self.extended,
             gain_pct: self.gain_pct,
             gain_between_targets_pct: self.gain_between_targets_pct,
+            term_gains: &self.term_gains,
             validation: self.validation,
             checks: self.checks.iter().map(CheckJson::from).collect(),
             corrected: &self.corrected,

@@ -39,6 +39,7 @@ mod residuals;
 mod reversal;
 mod scatter;
 mod select;
+pub use select::{Scheme, TermGain};
 mod stats;
 mod time;
 mod validate;
@@ -173,6 +174,8 @@ pub struct Diagnosis {
     /// The same on the leave-one-target-out RMS of the target means, when a periodic term
     /// was judged (a periodic error costs between the targets, not at them).
     pub gain_between_targets_pct: Option<f64>,
+    /// Each found effect's term judged under the held-out scheme that can show it.
+    pub term_gains: Vec<TermGain>,
     pub validation: &'static str,
     pub checks: Vec<ModelCheck>,
     pub residuals: Residuals,
@@ -242,6 +245,7 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
         extended: selection.extended,
         gain_pct: selection.gain_pct,
         gain_between_targets_pct: selection.gain_between_targets_pct,
+        term_gains: selection.term_gains,
         validation: VALIDATION,
         checks,
         residuals,

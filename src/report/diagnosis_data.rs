@@ -20,6 +20,8 @@ pub(super) struct DiagnosisSection<'a> {
     extended_terms: String,
     /// Held-out gain in %, `–` when not finite.
     gain: String,
+    /// Each judged term's gain under its scheme, as text.
+    term_gains: Vec<String>,
     validation: &'static str,
     /// The effect of `corrected` (`all` when several were removed).
     corrected_label: &'a str,
@@ -166,6 +168,11 @@ pub(super) fn diagnosis_section<'a>(
         } else {
             "–".to_string()
         },
+        term_gains: d
+            .term_gains
+            .iter()
+            .map(|g| g.describe(d.kind.deviation_symbol()))
+            .collect(),
         validation: d.validation,
         corrected_label: all.map_or("", |c| c.effect.as_str()),
         corrected,

@@ -434,15 +434,18 @@ fn require_recall<F, A>(
     F: Fn(u64) -> Case + Sync,
     A: Fn(&Case, &Diagnosis) -> bool + Sync,
 {
-    let results: Vec<(u64, bool, bool, Vec<&'static str>)> = seeds
+    let results: Vec<(u64, bool, bool, Vec<&'static str>, bool)> = seeds
         .into_par_iter()
         .map(|s| {
             let case = make(s);
             let (_, d) = run_case(&case);
             let found = d.has(effect);
-            (s, found, found && accurate(&case, &d), effects(&d))
+            let gain = positive_gain(&d, effect);
+            (s, found, found && accurate(&case, &d), effects(&d), gain)
         })
         .collect();
+    let gains = results.iter().filter(|r| r.1 && r.4).count();
+    let named = results.iter().filter(|r| r.1).count();
     let n = results.len() as f64;
     let recall = results.iter().filter(|r| r.1).count() as f64 / n;
     let success = results.iter().filter(|r| r.2).count() as f64 / n;
@@ -456,7 +459,7 @@ fn require_recall<F, A>(
         .filter(|r| r.3.iter().any(|e| *e != effect.name()))
         .count();
     eprintln!(
-        "{name}: named in {:.1} %, named with accurate parameters in {:.1} % of {} seeds; other findings beside it in {others}",
+        "{name}: named in {:.1} %, named with accurate parameters in {:.1} % of {} seeds; other findings beside it in {others}; a positive held-out gain in {gains} of {named} named",
         recall * 100.0,
         success * 100.0,
         results.len()
@@ -466,9 +469,28 @@ fn require_recall<F, A>(
         "{name}: {:.1} % < 95 %; failures {failures:?}",
         success * 100.0
     );
+    // Measured: every named effect kept with a positive gain, but periodic in 56 of 60
+    // (its leave-one-target-out RMS does not fall in 4): held at 90 % until it does.
+    assert!(
+        gains as f64 >= 0.9 * named as f64,
+        "{name}: a positive held-out gain in only {gains} of {named} named"
+    );
 }
 
 const SEEDS: u64 = 60;
+
+/// The term of `effect` kept with a positive gain under its scheme, and every kept term's
+/// gain positive.
+fn positive_gain(d: &Diagnosis, effect: Effect) -> bool {
+    for g in &d.term_gains {
+        assert_eq!(g.kept, g.gain_pct > 0.0, "{g:?}");
+        let in_model = d.extended.terms.iter().any(|t| t == g.effect.name());
+        assert_eq!(g.kept, in_model, "{g:?} {:?}", d.extended.terms);
+    }
+    d.term_gains
+        .iter()
+        .any(|g| g.effect == effect && g.kept && g.gain_pct > 0.0)
+}
 
 #[test]
 fn hidden_drift_is_found_with_its_rate() {
