@@ -13,14 +13,6 @@ fn num(x: f64) -> String {
     }
 }
 
-fn p_text(p: f64) -> String {
-    if p < 1e-4 {
-        format!("p = {p:.1e}")
-    } else {
-        format!("p = {p:.4}")
-    }
-}
-
 /// The report printed by `axcheck diagnose`.
 pub fn render(file: &str, d: &Diagnosis) -> String {
     let mut out = String::new();
@@ -74,23 +66,11 @@ fn findings(out: &mut String, d: &Diagnosis) {
     }
     for f in &d.findings {
         let _ = writeln!(out, "  {}: {}", f.effect().name(), f.message);
-        let params: Vec<String> = f
-            .params()
-            .iter()
-            .map(|(k, v)| format!("{k} = {}", num(*v)))
-            .chain(f.labels().iter().map(|(k, v)| format!("{k} = {v}")))
-            .collect();
+        let params = f.params_text(num);
         if !params.is_empty() {
-            let _ = writeln!(out, "      {}", params.join(", "));
+            let _ = writeln!(out, "      {params}");
         }
-        let e = &f.evidence;
-        let mut evidence = format!("{} = {}", e.statistic, num(e.value));
-        if let Some(p) = e.p_value {
-            evidence.push_str(&format!(", {}", p_text(p)));
-        }
-        if let Some(s) = e.effect_size {
-            evidence.push_str(&format!(", effect size {}", num(s)));
-        }
+        let evidence = f.evidence.describe(num);
         let _ = writeln!(out, "      evidence: {evidence}");
         let _ = writeln!(out, "      what to do: {}", f.advice());
     }

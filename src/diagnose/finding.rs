@@ -63,6 +63,21 @@ pub struct Evidence {
     pub effect_size: Option<f64>,
 }
 
+impl Evidence {
+    /// `t of … = 3.617, p = 0.0005, effect size 2.171`, with numbers written by `num`
+    /// (the text and the report each have their number format).
+    pub fn describe(&self, num: impl Fn(f64) -> String) -> String {
+        let mut text = format!("{} = {}", self.statistic, num(self.value));
+        if let Some(p) = self.p_value {
+            text.push_str(&format!(", p = {}", fmt_p(p)));
+        }
+        if let Some(s) = self.effect_size {
+            text.push_str(&format!(", effect size {}", num(s)));
+        }
+        text
+    }
+}
+
 /// One named cause.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Finding {
@@ -85,6 +100,16 @@ impl Finding {
     /// Non-numeric facts (an outlier's direction …), in order.
     pub fn labels(&self) -> Vec<(&'static str, &'static str)> {
         self.estimate.fields().labels()
+    }
+
+    /// `key = value, …, label = text`: the parameters and labels, numbers written by `num`.
+    pub fn params_text(&self, num: impl Fn(f64) -> String) -> String {
+        self.params()
+            .iter()
+            .map(|(k, v)| format!("{k} = {}", num(*v)))
+            .chain(self.labels().iter().map(|(k, v)| format!("{k} = {v}")))
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 
     /// What to do next about this cause (`advice` in the JSON).

@@ -106,25 +106,8 @@ fn fmt(x: f64) -> String {
 
 impl<'a> From<&'a Finding> for FindingLine<'a> {
     fn from(f: &'a Finding) -> FindingLine<'a> {
-        let e = &f.evidence;
-        let mut evidence = format!("{} = {}", e.statistic, fmt(e.value));
-        if let Some(p) = e.p_value {
-            evidence.push_str(&if p < 1e-4 {
-                format!(", p = {p:.1e}")
-            } else {
-                format!(", p = {p:.4}")
-            });
-        }
-        if let Some(s) = e.effect_size {
-            evidence.push_str(&format!(", effect size {}", fmt(s)));
-        }
-        let params = f
-            .params()
-            .iter()
-            .map(|(k, v)| format!("{k} = {}", fmt(*v)))
-            .chain(f.labels().iter().map(|(k, v)| format!("{k} = {v}")))
-            .collect::<Vec<_>>()
-            .join(", ");
+        let evidence = f.evidence.describe(fmt);
+        let params = f.params_text(fmt);
         FindingLine {
             effect: f.effect().name(),
             message: &f.message,
