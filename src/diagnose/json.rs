@@ -6,7 +6,7 @@
 //! with units, `labels`, `evidence` {`statistic`, `value`, `p_value`, `effect_size`},
 //! `message`), `base` and `extended` (each `terms`, `heldout_rms`, `heldout_nlpd`,
 //! `between_targets_rms`), `gain_pct` (held-out RMS of the readings),
-//! `gain_between_targets_pct` (leave-one-target-out, when a periodic term was judged),
+//! `gain_between_targets_pct` (leave-targets-out, when a periodic term was judged),
 //! `term_gains` (each judged term: `effect`, `scheme`, `without`, `with`, `gain_pct`,
 //! `kept`), `validation`, `checks`, `corrected`, `residuals`,
 //! `base_model` and `extended_model` (simulation files as YAML text), `notes`.

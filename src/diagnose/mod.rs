@@ -171,7 +171,7 @@ pub struct Diagnosis {
     pub extended: ModelFit,
     /// (base − extended)/base × 100 on the held-out RMS of the readings.
     pub gain_pct: f64,
-    /// The same on the leave-one-target-out RMS of the target means, when a periodic term
+    /// The same on the leave-targets-out RMS of the target means, when a periodic term
     /// was judged (a periodic error costs between the targets, not at them).
     pub gain_between_targets_pct: Option<f64>,
     /// Each found effect's term judged under the held-out scheme that can show it.
@@ -216,7 +216,7 @@ impl Diagnosis {
 }
 
 /// Validation used for `heldout_rms`.
-pub const VALIDATION: &str = "k-fold cross-validation over readings (10 folds, stratified by target and direction); periodic term: leave-one-target-out on the target means";
+pub const VALIDATION: &str = "k-fold cross-validation over readings (10 folds, stratified by target and direction); periodic term: leave-targets-out on the target means (each inner target predicted without a block of about a quarter period around it)";
 
 /// Diagnoses one measurement: the tests, each effect's findings, the terms kept by
 /// held-out prediction, the fitted models, the model checks and the parameters with the

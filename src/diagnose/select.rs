@@ -1,6 +1,6 @@
 //! Which found effects the extended model keeps: each term in the order of the vocabulary
 //! is kept when it improves held-out prediction ([`super::validate`]); a periodic term
-//! when it improves the leave-one-target-out RMS of the target means.
+//! when it improves the leave-targets-out RMS of the target means.
 
 use super::ModelFit;
 use super::analysis::Analysis;
@@ -22,7 +22,7 @@ pub enum Scheme {
     KFoldDensity,
     /// Leave-one-target-out on the target means, RMS: a periodic error costs between
     /// the targets, which a free mean per target hides from the readings.
-    LeaveOneTargetOut,
+    LeaveTargetsOut,
 }
 
 impl Scheme {
@@ -31,7 +31,7 @@ impl Scheme {
         match self {
             Scheme::KFoldRms => "k-fold over readings, RMS",
             Scheme::KFoldDensity => "k-fold over readings, log density",
-            Scheme::LeaveOneTargetOut => "leave-one-target-out, RMS of the target means",
+            Scheme::LeaveTargetsOut => "leave-targets-out (h-block), RMS of the target means",
         }
     }
 }
@@ -155,7 +155,7 @@ pub(crate) fn select(
     }
     let (between, periodic) = judge_periodic(a, &mut effects, notes);
     if let (Some(without), Some(with)) = between {
-        let gain = TermGain::new(Effect::Periodic, Scheme::LeaveOneTargetOut, without, with);
+        let gain = TermGain::new(Effect::Periodic, Scheme::LeaveTargetsOut, without, with);
         term_gains.push(gain);
         term_gains.sort_by_key(|g| g.effect);
     }
@@ -199,7 +199,7 @@ pub(crate) fn select(
     }
 }
 
-/// The periodic term: the leave-one-target-out RMS of the target means without and with
+/// The periodic term: the leave-targets-out RMS of the target means without and with
 /// it, and the term when it lowers that RMS.
 fn judge_periodic(
     a: &Analysis,
@@ -215,7 +215,7 @@ fn judge_periodic(
         ((Some(bb), Some(be)), Some(peak.clone()))
     } else {
         notes.push(format!(
-            "periodic: found, but the term does not improve the leave-one-target-out RMS ({} vs {} {}), so the extended model leaves it out",
+            "periodic: found, but the term does not improve the leave-targets-out RMS ({} vs {} {}), so the extended model leaves it out",
             fmt(be),
             fmt(bb),
             a.units.symbol()

@@ -217,17 +217,25 @@ pub(crate) fn score(
     }
 }
 
-/// Leave-one-target-out RMS of the target means `y` at `positions`: (base, extended with
-/// a sinusoid of `period`). Inner targets only (the ends would be extrapolated).
+/// Leave-targets-out RMS of the target means `y` at `positions`: (base, extended with a
+/// sinusoid of `period`). Each inner target is predicted from the targets outside a block
+/// of about a quarter period around it (h-block cross-validation, Burman, Chow and Nolan
+/// 1994): with one target left out a dense plan interpolates a long period almost as well
+/// without the term, and the gain the term brings between the targets stays hidden. The
+/// block is one target (leave-one-target-out) when the period is shorter than eight
+/// target spacings; only targets with the block inside the travel are predicted (the ends
+/// would be extrapolated).
 pub(crate) fn between_targets(positions: &[f64], y: &[f64], period: f64) -> (f64, f64) {
     let m = positions.len();
     if !(8..=3000).contains(&m) {
         return (f64::NAN, f64::NAN);
     }
+    let spacing = (positions[m - 1] - positions[0]) / (m - 1) as f64;
+    let h = half_block(period, spacing, m);
     let f = 1.0 / period;
     let (mut sb, mut se) = (0.0, 0.0);
-    for i in 1..m - 1 {
-        let others: Vec<usize> = (0..m).filter(|&k| k != i).collect();
+    for i in 1 + h..m - 1 - h {
+        let others: Vec<usize> = (0..m).filter(|&k| k.abs_diff(i) > h).collect();
         let p: Vec<f64> = others.iter().map(|&k| positions[k]).collect();
         let v: Vec<f64> = others.iter().map(|&k| y[k]).collect();
         let knots: Vec<[f64; 2]> = p.iter().zip(&v).map(|(a, b)| [*a, *b]).collect();
@@ -240,6 +248,45 @@ pub(crate) fn between_targets(positions: &[f64], y: &[f64], period: f64) -> (f64
         sb += (y[i] - base).powi(2);
         se += (y[i] - ext).powi(2);
     }
-    let k = (m - 2) as f64;
+    let k = (m - 2 - 2 * h) as f64;
     ((sb / k).sqrt(), (se / k).sqrt())
+}
+
+/// Targets left out on each side of the predicted one: a block of about a quarter period,
+/// keeping at least eight targets predicted and six to fit.
+fn half_block(period: f64, spacing: f64, m: usize) -> usize {
+    if !(spacing > 0.0 && period.is_finite()) {
+        return 0;
+    }
+    let wanted = (period / (8.0 * spacing)).floor() as usize;
+    wanted.min(m.saturating_sub(10) / 2)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A block of about a quarter period: ⌊period / (8 · spacing)⌋ targets on each side,
+    /// none below eight spacings, at most what leaves ten targets.
+    #[test]
+    fn half_block_by_hand() {
+        assert_eq!(half_block(5.0, 1.0, 50), 0);
+        assert_eq!(half_block(7.9, 1.0, 50), 0);
+        assert_eq!(half_block(11.0 * 0.4, 0.4, 85), 1);
+        assert_eq!(half_block(40.0, 1.0, 50), 5);
+        assert_eq!(half_block(400.0, 1.0, 14), 2);
+        assert_eq!(half_block(f64::INFINITY, 1.0, 50), 0);
+    }
+
+    /// A sine of period 12 spacings at 40 targets, no noise: the term predicts every
+    /// left-out target exactly, the smooth interpolation over the block (one target each
+    /// side) misses by 0.183 of the amplitude RMS.
+    #[test]
+    fn the_block_shows_a_long_period_between_the_targets() {
+        let positions: Vec<f64> = (0..40).map(f64::from).collect();
+        let y: Vec<f64> = positions.iter().map(|x| (TAU * x / 12.0).sin()).collect();
+        let (base, extended) = between_targets(&positions, &y, 12.0);
+        assert!(extended < 1e-6 * base, "{base} {extended}");
+        assert!((base - 0.183).abs() < 0.001, "{base}");
+    }
 }

@@ -469,10 +469,8 @@ fn require_recall<F, A>(
         "{name}: {:.1} % < 95 %; failures {failures:?}",
         success * 100.0
     );
-    // Measured: every named effect kept with a positive gain, but periodic in 56 of 60
-    // (its leave-one-target-out RMS does not fall in 4): held at 90 % until it does.
-    assert!(
-        gains as f64 >= 0.9 * named as f64,
+    assert_eq!(
+        gains, named,
         "{name}: a positive held-out gain in only {gains} of {named} named"
     );
 }

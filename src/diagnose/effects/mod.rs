@@ -30,7 +30,7 @@ pub(crate) enum Term {
     /// A term of the reading model's scatter, kept when it lowers the held-out negative
     /// log density (an RMS cannot see it).
     Density(fn(&mut ModelTerms)),
-    /// A term of the target means, kept when it lowers their leave-one-target-out RMS.
+    /// A term of the target means, kept when it lowers their leave-targets-out RMS.
     TargetMeans,
 }
 

@@ -1,7 +1,7 @@
 //! Periodic error along the axis (lead screw, scale, worm, encoder; Hemingray et al. 1971,
 //! §4). Searched in [`crate::diagnose::periodic`]: a Lomb–Scargle periodogram of the target
 //! means about a cubic trend, the declared pitch tested first. Judged by the
-//! leave-one-target-out RMS of the target means (a periodic error costs between the
+//! leave-targets-out RMS of the target means (a periodic error costs between the
 //! targets, not at them).
 
 use super::{Rule as EffectRule, Term};
