@@ -14,7 +14,9 @@
 //! With the standard test cycle and regular timing a drift *is* a linear trend of the run
 //! effects, so the two are told apart by a decomposition of the between-run variation:
 //! its linear part in time (drift, 1 degree of freedom) and what a straight line leaves
-//! (run offsets, n − 2 degrees of freedom), each tested against the pure scatter.
+//! (run offsets), each tested against the pure scatter. The run offsets are tested beyond
+//! the best warm-up curve as well, found or not: what a smooth curve in time explains is
+//! no zero shift.
 //! When the run offsets are real, a drift is judged against the run-to-run variation
 //! instead (random run effects: only a trend larger than the zero shifts is a drift).
 //! A warm-up, found by [`super::warm::search`], joins the smooth part: the run offsets are
@@ -266,7 +268,7 @@ pub(crate) struct CoefTest {
     pub df: f64,
 }
 
-/// Run offsets beyond a linear drift.
+/// Run offsets beyond the smooth model (a linear drift and a warm-up curve).
 #[derive(Debug, Clone)]
 pub(crate) struct RunTest {
     pub f: f64,
@@ -355,7 +357,18 @@ pub(crate) fn tests(
         out.df = out.full.df;
     }
     let (sigma2, df) = (out.sigma2, out.df);
-    out.runs = run_test(prep, &out.full, &out.trend, sigma2, df);
+    // Run offsets are what no smooth curve in time explains: tested beyond the linear
+    // trend with the best warm-up curve, found or not, so that a curvature of the run
+    // means is never taken for zero shifts; their sizes are what the smooth model leaves.
+    out.runs = match out.warm.as_ref() {
+        Some(w) => run_test(prep, &w.full, &w.smooth, w.full.sigma2(), w.full.df).map(|r| {
+            RunTest {
+                offsets: run_offsets(prep, &out.trend),
+                ..r
+            }
+        }),
+        None => run_test(prep, &out.full, &out.trend, sigma2, df),
+    };
     let runs_real = out.runs.as_ref().is_some_and(|r| r.p < alpha);
     if warm_found {
         let reference = drift_reference(&out, runs_real);
@@ -396,7 +409,17 @@ fn run_test(prep: &Prep, full: &TimeFit, trend: &TimeFit, sigma2: f64, df: f64) 
     }
     let ms = (trend.rss - full.rss).max(0.0) / df_lof;
     let f = ms / sigma2;
-    // Run effects after the drift: mean residual of the trend model per run.
+    Some(RunTest {
+        f,
+        df1: df_lof,
+        df2: df,
+        p: f_upper(f, df_lof, df),
+        offsets: run_offsets(prep, trend),
+    })
+}
+
+/// Run effects after the smooth model: its mean residual per run, centred.
+fn run_offsets(prep: &Prep, trend: &TimeFit) -> Vec<f64> {
     let mut sum = vec![0.0; prep.n];
     let mut count = vec![0usize; prep.n];
     for &k in &trend.rows {
@@ -412,13 +435,7 @@ fn run_test(prep: &Prep, full: &TimeFit, trend: &TimeFit, sigma2: f64, df: f64) 
     for o in &mut offsets {
         *o -= mean;
     }
-    Some(RunTest {
-        f,
-        df1: df_lof,
-        df2: df,
-        p: f_upper(f, df_lof, df),
-        offsets,
-    })
+    offsets
 }
 
 /// What a drift is judged against: the scatter (mean square, degrees of freedom) or, when

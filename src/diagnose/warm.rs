@@ -279,6 +279,9 @@ pub(crate) fn search(
     };
     let f = prof.sup.map(|g| g / ms);
     let p_column = [0, 1].map(|c| davies(f[c], df, prof.path[c]));
+    if std::env::var("WARM_DEBUG").is_ok() {
+        eprintln!("warm: tau {:.4} (range {:?}) sup {:?} path {:?} ms {ms:.4} df {df} against {against} f {f:?} p {p_column:?} runs_beyond {:?}", prof.tau, tau_range(prep), prof.sup, prof.path, runs_beyond.as_ref().map(|t| (t.f, t.p)));
+    }
     Some(WarmTest {
         tau: prof.tau,
         f,
