@@ -361,12 +361,12 @@ pub(crate) fn tests(
     // trend with the best warm-up curve, found or not, so that a curvature of the run
     // means is never taken for zero shifts; their sizes are what the smooth model leaves.
     out.runs = match out.warm.as_ref() {
-        Some(w) => run_test(prep, &w.full, &w.smooth, w.full.sigma2(), w.full.df).map(|r| {
-            RunTest {
+        Some(w) => {
+            run_test(prep, &w.full, &w.smooth, w.full.sigma2(), w.full.df).map(|r| RunTest {
                 offsets: run_offsets(prep, &out.trend),
                 ..r
-            }
-        }),
+            })
+        }
         None => run_test(prep, &out.full, &out.trend, sigma2, df),
     };
     let runs_real = out.runs.as_ref().is_some_and(|r| r.p < alpha);

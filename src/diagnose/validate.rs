@@ -71,7 +71,7 @@ impl Predictor {
         if terms.warm {
             // τ profiled on the training rows alone, as the rest of the model.
             let base = fit(prep, x, train, &ones, time_terms);
-            time_terms.warm = warm::profile(prep, &base, &ones).map(|p| p.tau);
+            time_terms.warm = warm::profile(prep, &base, &ones, true).map(|p| p.tau);
         }
         let time = fit(prep, x, train, &ones, time_terms);
         let mut count = vec![0usize; prep.cells()];

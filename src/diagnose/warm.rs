@@ -8,10 +8,11 @@
 //!
 //! Model: `(a + g·(P − P̄))·(1 − exp(−(t − t₀)/τ))` beside the cell effects and the linear
 //! trend (drift and thermal growth), t₀ the first reading. For a given τ the model is
-//! linear, so τ is profiled: a log-spaced grid from a quarter of a run to three times the
-//! test, refined by golden-section search on the gain of both columns. A shorter warm-up
-//! is over within the first run and cannot be told from a shift of that run; a longer
-//! one is a straight line over the test: a drift.
+//! linear, so τ is profiled: the test takes the best of a log-spaced grid from a quarter
+//! of a run to three times the test; the estimate refines it by golden-section search on
+//! the gain of both columns. A shorter warm-up is over within the first run and cannot be
+//! told from a shift of its first readings; a longer one is a straight line over the test:
+//! a drift.
 //!
 //! The test: each column's gain beyond the linear trend, largest over τ, as a squared t
 //! statistic. That maximum is not F-distributed (τ exists only under the alternative);
@@ -36,14 +37,15 @@ use super::time::{CellDemean, CoefTest, DriftTest, Terms, TimeFit, fit, warm_col
 use std::f64::consts::PI;
 
 /// Points of the τ grid.
-const GRID: usize = 40;
+const GRID: usize = 32;
 /// Golden-section steps of the refinement.
-const REFINE: usize = 24;
+const REFINE: usize = 36;
 
 /// The τ searched, in time units: a quarter of a run to three times the test.
 pub(crate) fn tau_range(prep: &Prep) -> Option<(f64, f64)> {
     let span = prep.t_span;
-    (prep.n >= 2 && span > 0.0 && span.is_finite()).then(|| (span / (4.0 * prep.n as f64), 3.0 * span))
+    (prep.n >= 2 && span > 0.0 && span.is_finite())
+        .then(|| (span / (4.0 * prep.n as f64), 3.0 * span))
 }
 
 /// The warm-up columns at one τ beyond a base fit.
@@ -113,8 +115,10 @@ pub(crate) struct Profile {
     pub path: [f64; 2],
 }
 
-/// Profiles the warm-up over τ beyond `base` (its rows and weights `scale`).
-pub(crate) fn profile(prep: &Prep, base: &TimeFit, scale: &[f64]) -> Option<Profile> {
+/// Profiles the warm-up over τ beyond `base` (its rows and weights `scale`); `refine`
+/// refines the best τ of the grid (the tests need only the grid: the gain is flat about
+/// its maximum; the estimates need τ itself).
+pub(crate) fn profile(prep: &Prep, base: &TimeFit, scale: &[f64], refine: bool) -> Option<Profile> {
     let (lo, hi) = tau_range(prep)?;
     if base.rows.len() < 3 {
         return None;
@@ -129,16 +133,23 @@ pub(crate) fn profile(prep: &Prep, base: &TimeFit, scale: &[f64]) -> Option<Prof
         let g = at_tau(prep, base, &dm, tau);
         for c in 0..2 {
             sup[c] = sup[c].max(g.single[c]);
-            if let Some(p) = previous.as_ref().filter(|p| !p[c].is_empty()) {
-                if !g.directions[c].is_empty() {
-                    path[c] += dot(&p[c], &g.directions[c]).abs().min(1.0).acos();
-                }
+            if let Some(p) = previous.as_ref().filter(|p| !p[c].is_empty())
+                && !g.directions[c].is_empty()
+            {
+                path[c] += dot(&p[c], &g.directions[c]).abs().min(1.0).acos();
             }
         }
         if g.joint > best.1 {
             best = (k, g.joint);
         }
         previous = Some(g.directions);
+    }
+    if !refine {
+        return Some(Profile {
+            tau: grid[best.0],
+            sup,
+            path,
+        });
     }
     let (a, b) = (
         grid[best.0.saturating_sub(1)].ln(),
@@ -147,8 +158,8 @@ pub(crate) fn profile(prep: &Prep, base: &TimeFit, scale: &[f64]) -> Option<Prof
     let joint = |ln_tau: f64| at_tau(prep, base, &dm, ln_tau.exp());
     let ln_tau = golden_max(a, b, |x| joint(x).joint);
     let refined = joint(ln_tau);
-    for c in 0..2 {
-        sup[c] = sup[c].max(refined.single[c]);
+    for (s, r) in sup.iter_mut().zip(refined.single) {
+        *s = s.max(r);
     }
     let tau = if refined.joint >= best.1 {
         ln_tau.exp()
@@ -201,7 +212,7 @@ pub(crate) struct FTest {
 fn f_test(small: &TimeFit, big: &TimeFit) -> Option<FTest> {
     let df1 = big.ls.rank as f64 - small.ls.rank as f64;
     let s2 = big.sigma2();
-    if df1 < 1.0 || !(s2 > 0.0) {
+    if df1 < 1.0 || s2.is_nan() || s2 <= 0.0 {
         return None;
     }
     let f = (small.rss - big.rss).max(0.0) / df1 / s2;
@@ -260,7 +271,7 @@ pub(crate) fn search(
     alpha: f64,
 ) -> Option<WarmTest> {
     let (full0, trend0) = fits;
-    let prof = profile(prep, trend0, scale)?;
+    let prof = profile(prep, trend0, scale, false)?;
     let terms = |runs| Terms {
         thermal: true,
         runs,
@@ -279,9 +290,6 @@ pub(crate) fn search(
     };
     let f = prof.sup.map(|g| g / ms);
     let p_column = [0, 1].map(|c| davies(f[c], df, prof.path[c]));
-    if std::env::var("WARM_DEBUG").is_ok() {
-        eprintln!("warm: tau {:.4} (range {:?}) sup {:?} path {:?} ms {ms:.4} df {df} against {against} f {f:?} p {p_column:?} runs_beyond {:?}", prof.tau, tau_range(prep), prof.sup, prof.path, runs_beyond.as_ref().map(|t| (t.f, t.p)));
-    }
     Some(WarmTest {
         tau: prof.tau,
         f,
@@ -348,7 +356,7 @@ fn profiled(
     terms: Terms,
 ) -> Option<TimeFit> {
     let base = fit(prep, values, active, scale, terms);
-    let tau = profile(prep, &base, scale)?.tau;
+    let tau = profile(prep, &base, scale, true)?.tau;
     let warm = Some(tau);
     Some(fit(prep, values, active, scale, Terms { warm, ..terms }))
 }
@@ -364,7 +372,12 @@ pub(crate) struct Beside {
 /// A linear term beside a warm-up: the fall of the residual sum of squares when it joins,
 /// τ profiled again with and without it (a τ chosen with the term's help would flatter
 /// it), as a t test of the term's coefficient `estimate`.
-fn beside_test(without: &TimeFit, with: &TimeFit, estimate: f64, reference: (f64, f64)) -> CoefTest {
+fn beside_test(
+    without: &TimeFit,
+    with: &TimeFit,
+    estimate: f64,
+    reference: (f64, f64),
+) -> CoefTest {
     let (ms, df) = reference;
     let f = (without.rss - with.rss).max(0.0) / ms;
     let t = f.sqrt() * estimate.signum();
@@ -440,6 +453,85 @@ pub(crate) fn linear_tests(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::measurement::{AxisData, RawReading};
+    use crate::units::{AxisKind, Direction};
+
+    /// A noiseless test in the standard cycle, one reading every 40 s: cell effects (a
+    /// shape and a reversal) plus `warm(position, time_s)`.
+    fn noiseless(targets: &[f64], runs: u32, warm: impl Fn(f64, f64) -> f64) -> AxisData {
+        let mut raw = Vec::new();
+        let mut k = 0.0;
+        for run in 1..=runs {
+            let up = targets.iter().map(|&p| (p, Direction::Up));
+            let down = targets.iter().rev().map(|&p| (p, Direction::Down));
+            for (p, direction) in up.chain(down) {
+                let time_s = 12.0 + 40.0 * k;
+                k += 1.0;
+                let cell = 0.003 * p * p - 0.5 * p + direction.sign() * 1.5;
+                raw.push(RawReading {
+                    target: p,
+                    direction,
+                    run,
+                    deviation: cell + warm(p, time_s),
+                    time_s: Some(time_s),
+                    temps_c: Vec::new(),
+                    line: 0,
+                });
+            }
+        }
+        AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "noiseless").unwrap()
+    }
+
+    /// By hand: A(1 − e^(−t/τ)) with τ = 9 min from t = 0, the first reading at 12 s,
+    /// so the level still to come at the first reading is A·e^(−12/540); and with
+    /// 20 µm/m about P = 0, at the mean target P̄ = 250 mm another 5 µm·e^(−12/540).
+    #[test]
+    fn recovers_amplitude_time_constant_and_growth_from_noiseless_data() {
+        let targets: Vec<f64> = (0..11).map(|i| 50.0 * i as f64).collect();
+        let (a, ppm, tau_s) = (-6.0, 20.0, 540.0);
+        let data = noiseless(&targets, 5, |p, t| {
+            (a + ppm * 1e-3 * p) * (1.0 - (-t / tau_s).exp())
+        });
+        let prep = Prep::new(&data);
+        let x: Vec<f64> = prep.rows.iter().map(|r| r.x).collect();
+        let all = vec![true; x.len()];
+        let ones = vec![1.0; prep.cells()];
+        let f = profiled(&prep, &x, &all, &ones, Terms::default()).unwrap();
+        let tau_h = tau_s / 3600.0;
+        let tau = f.tau.unwrap();
+        assert!((tau - tau_h).abs() < 1e-6 * tau_h, "τ {tau} h vs {tau_h} h");
+        let left = (-12.0 / tau_s).exp();
+        let want_a = (a + ppm * 1e-3 * 250.0) * left;
+        assert!((f.warm_a - want_a).abs() < 1e-6, "{} vs {want_a}", f.warm_a);
+        let want_g = ppm * 1e-3 * left;
+        assert!((f.warm_g - want_g).abs() < 1e-9, "{} vs {want_g}", f.warm_g);
+        assert!(f.rss < 1e-12, "{}", f.rss);
+    }
+
+    /// A linear drift beside the warm-up does not disturb it, and is told apart from it:
+    /// the profile with a drift column finds both exactly.
+    #[test]
+    fn separates_a_warm_up_from_a_linear_drift_in_noiseless_data() {
+        let targets: Vec<f64> = (0..8).map(|i| 100.0 * i as f64).collect();
+        let (a, tau_s, rate_per_s) = (4.0, 900.0, -2.0 / 3600.0);
+        let data = noiseless(&targets, 6, |_, t| {
+            a * (1.0 - (-t / tau_s).exp()) + rate_per_s * t
+        });
+        let prep = Prep::new(&data);
+        let x: Vec<f64> = prep.rows.iter().map(|r| r.x).collect();
+        let all = vec![true; x.len()];
+        let ones = vec![1.0; prep.cells()];
+        let drift = Terms {
+            drift: true,
+            ..Terms::default()
+        };
+        let f = profiled(&prep, &x, &all, &ones, drift).unwrap();
+        let tau = f.tau.unwrap() * 3600.0;
+        assert!((tau - tau_s).abs() < 1e-6 * tau_s, "τ {tau} s");
+        assert!((f.beta - (-2.0)).abs() < 1e-6, "drift {} µm/h", f.beta);
+        let want_a = a * (-12.0 / tau_s).exp();
+        assert!((f.warm_a - want_a).abs() < 1e-6, "{} vs {want_a}", f.warm_a);
+    }
 
     /// Davies' bound is the F tail with no path, and grows with the path.
     #[test]

@@ -259,7 +259,9 @@ plan:
             "m.yaml:2:21: model.warm_up_um needs a time constant: add model.warm_up_tau_min (> 0)"
         );
         assert_eq!(
-            e("kind: rotary\nmodel: {warm_up_arcsec: 3, warm_up_tau_min: -2}\nplan: {targets_deg: [0, 90]}\n"),
+            e(
+                "kind: rotary\nmodel: {warm_up_arcsec: 3, warm_up_tau_min: -2}\nplan: {targets_deg: [0, 90]}\n"
+            ),
             "m.yaml:2:43: model.warm_up_tau_min must be a finite number ≥ 0, found -2"
         );
         assert_eq!(

@@ -260,10 +260,7 @@ impl ErrorModel {
 impl ErrorModel {
     /// A warm-up needs finite values and, when it has an amplitude, a time constant.
     fn validate_warm_up(&self) -> Result<(), String> {
-        for (name, v) in [
-            ("warm_up", self.warm_up),
-            ("warm_up_ppm", self.warm_up_ppm),
-        ] {
+        for (name, v) in [("warm_up", self.warm_up), ("warm_up_ppm", self.warm_up_ppm)] {
             if !v.is_finite() {
                 return Err(format!("model.{name} must be a finite number, found {v}"));
             }

@@ -394,7 +394,11 @@ fn warm_up_case(seed: u64, without_times: bool) -> Case {
     plan.dwell_s = rng.range(5.0, 10.0);
     plan.feed_per_min = rng.range(500.0, 1500.0);
     let (start, end, _) = spacing_of(&plan);
-    let mut sim = linear(realistic(&mut rng, start, end, sigma, 4.0, 10.0), plan, seed);
+    let mut sim = linear(
+        realistic(&mut rng, start, end, sigma, 4.0, 10.0),
+        plan,
+        seed,
+    );
     let targets = sim.plan.target_positions(seed);
     let visits = sim.plan.schedule(&targets);
     let first_min = visits[0].time_s / 60.0;
@@ -449,15 +453,19 @@ fn require_warm_up(name: &str, seeds: std::ops::Range<u64>, without_times: bool)
             let targets = c.sim.plan.target_positions(c.seed);
             let first = c.sim.plan.schedule(&targets)[0].time_s / 60.0;
             let centre = (targets[0] + targets[targets.len() - 1]) / 2.0;
-            let level = model.warm_up
-                + model.warm_up_ppm * (centre - model.thermal_origin) / 1000.0;
+            let level =
+                model.warm_up + model.warm_up_ppm * (centre - model.thermal_origin) / 1000.0;
             let size = level * (-first / model.warm_up_tau_min).exp();
             let amplitude = param(d, Effect::WarmUp, "amplitude_um");
             let kept = d.extended.terms.iter().any(|t| t == "warm_up");
             tau_ok && rel_err(amplitude, size) <= 0.3 && kept && d.gain_pct > 0.0
         },
     );
-    assert!(others <= 0.05, "{name}: other findings in {:.1} %", others * 100.0);
+    assert!(
+        others <= 0.05,
+        "{name}: other findings in {:.1} %",
+        others * 100.0
+    );
 }
 
 #[test]

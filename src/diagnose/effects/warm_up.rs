@@ -11,7 +11,7 @@ use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, rel
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::prep::TimeUnit;
 use crate::diagnose::time::warm_shape;
-use crate::diagnose::warm::{WarmEstimate, WarmTest};
+use crate::diagnose::warm::{WarmEstimate, WarmTest, tau_range};
 use crate::diagnose::{ALPHA, model::r4};
 use crate::simulate::ErrorModel;
 use crate::units::AxisKind;
@@ -45,6 +45,17 @@ pub struct WarmUp {
     pub delta_bic_vs_run_offsets: f64,
     /// What it was tested against: `scatter` or `run-to-run variation`.
     pub tested_against: &'static str,
+    /// Whether the time constant is at an end of the range searched.
+    pub at_bound: Option<Bound>,
+}
+
+/// An end of the range of time constants searched.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Bound {
+    /// A quarter of a run: the warm-up was over within the first run.
+    Shortest,
+    /// Three times the test: the curve is barely bent.
+    Longest,
 }
 
 /// The time unit of a warm-up's times in keys: `min`, or `run` without time stamps.
@@ -98,7 +109,13 @@ impl Fields for WarmUp {
     }
 
     fn labels(&self) -> Vec<(&'static str, &'static str)> {
-        vec![("tested_against", self.tested_against)]
+        let mut labels = vec![("tested_against", self.tested_against)];
+        match self.at_bound {
+            Some(Bound::Shortest) => labels.push(("time_constant", "shortest searched")),
+            Some(Bound::Longest) => labels.push(("time_constant", "longest searched")),
+            None => {}
+        }
+        labels
     }
 }
 
@@ -134,6 +151,15 @@ impl WarmUp {
             delta_bic_vs_drift: w.delta_bic_drift,
             delta_bic_vs_run_offsets: w.delta_bic_runs,
             tested_against: w.against,
+            at_bound: tau_range(&a.prep).and_then(|(lo, hi)| {
+                if e.tau <= lo * 1.01 {
+                    Some(Bound::Shortest)
+                } else if e.tau >= hi / 1.01 {
+                    Some(Bound::Longest)
+                } else {
+                    None
+                }
+            }),
         }
     }
 
@@ -149,8 +175,17 @@ impl WarmUp {
             Some((f, p)) => format!("; free run offsets add F = {}, p = {}", fmt(f), fmt_p(p)),
             None => String::new(),
         };
+        let bound = match self.at_bound {
+            Some(Bound::Shortest) => {
+                "; the time constant is the shortest searched (a quarter of a run): the change came within the first run, where a warm-up cannot be told from a shift of the first readings"
+            }
+            Some(Bound::Longest) => {
+                "; the time constant is the longest searched (three times the test): the curve is barely bent, and its time constant and level are uncertain"
+            }
+            None => "",
+        };
         format!(
-            "the deviations approach a new level exponentially, as a machine still warming up (ISO 230-2 3.3): {} {ds} from the first reading to the final level{growth}, time constant {} {tw}; within 1 {ds} of it {} {tw} after the start, {} {ds} away at the end of the test (F = {} beyond a linear drift, p = {}, against the {}{beyond})",
+            "the deviations approach a new level exponentially, as a machine still warming up (ISO 230-2 3.3): {} {ds} from the first reading to the final level{growth}, time constant {} {tw}; within 1 {ds} of it {} {tw} after the start, {} {ds} away at the end of the test (F = {} beyond a linear drift, p = {}, against the {}{beyond}){bound}",
             fmt(self.amplitude),
             fmt(self.tau),
             fmt(self.time_to_within_1),
