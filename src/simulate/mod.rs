@@ -262,7 +262,7 @@ plan:
             e(
                 "kind: rotary\nmodel: {warm_up_arcsec: 3, warm_up_tau_min: -2}\nplan: {targets_deg: [0, 90]}\n"
             ),
-            "m.yaml:2:43: model.warm_up_tau_min must be a finite number ≥ 0, found -2"
+            "m.yaml:2:45: model.warm_up_tau_min must be a finite number ≥ 0, found -2"
         );
         assert_eq!(
             e("kind: rotary\nmodel: {warm_up_um: 3}\nplan: {targets_deg: [0, 90]}\n"),

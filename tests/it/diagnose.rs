@@ -434,6 +434,7 @@ fn warm_up_case(seed: u64, without_times: bool) -> Case {
 /// and not split into drift and run offsets; `accurate` holds in 95 % of the cases, other
 /// findings in at most 5 %.
 fn require_warm_up(name: &str, seeds: std::ops::Range<u64>, without_times: bool) {
+    let gains = std::sync::Mutex::new(Vec::new());
     let others = require_recall(
         name,
         seeds,
@@ -458,8 +459,16 @@ fn require_warm_up(name: &str, seeds: std::ops::Range<u64>, without_times: bool)
             let size = level * (-first / model.warm_up_tau_min).exp();
             let amplitude = param(d, Effect::WarmUp, "amplitude_um");
             let kept = d.extended.terms.iter().any(|t| t == "warm_up");
+            gains.lock().unwrap().push(d.gain_pct);
             tau_ok && rel_err(amplitude, size) <= 0.3 && kept && d.gain_pct > 0.0
         },
+    );
+    let mut gains = gains.into_inner().unwrap();
+    gains.sort_by(f64::total_cmp);
+    eprintln!(
+        "{name}: held-out gain {:.1} % (lowest), {:.1} % (median)",
+        gains[0],
+        gains[gains.len() / 2]
     );
     assert!(
         others <= 0.05,
@@ -957,6 +966,45 @@ fn extended_model_closes_the_loop() {
     assert!(again.has(Effect::Periodic));
     // The base model parses too.
     Simulation::from_yaml(&d.base_model.to_yaml(), "base.yaml").unwrap();
+}
+
+/// The extended model of a warm-up carries it as simulation keys, parses back, and
+/// simulating it finds the warm-up again with its time constant; its "effect removed"
+/// parameters are those of the warm machine (R falls).
+#[test]
+fn warm_up_extended_model_closes_the_loop() {
+    let case = warm_up_case(90_004, false);
+    let (_, d) = run_case(&case);
+    assert!(d.has(Effect::WarmUp), "{:?}", d.findings);
+    let yaml = d.extended_model.to_yaml();
+    assert!(
+        yaml.contains("warm_up_um") && yaml.contains("warm_up_tau_min"),
+        "{yaml}"
+    );
+    let sim =
+        Simulation::from_yaml(&yaml, "extended.yaml").unwrap_or_else(|e| panic!("{e}\n{yaml}"));
+    assert!(
+        rel_err(sim.model.warm_up_tau_min, case.truth) < 0.3,
+        "{yaml}"
+    );
+    let again = diagnose::diagnose(&sim.run(7), &options(3, None));
+    assert!(again.has(Effect::WarmUp), "{:?}", again.findings);
+    assert!(rel_err(param(&again, Effect::WarmUp, "tau_min"), case.truth) < 0.3);
+    let json = json_of(&d);
+    let corrected = json["corrected"].as_array().unwrap();
+    let without = corrected.iter().find(|c| c["effect"] == "warm_up").unwrap();
+    let r = &without["parameters"]["R"];
+    assert!(r["corrected"].as_f64().unwrap() < r["measured"].as_f64().unwrap());
+    let f = &json["findings"][0];
+    assert_eq!(f["effect"], "warm_up");
+    for key in [
+        "amplitude_um",
+        "tau_min",
+        "time_to_1um_min",
+        "remaining_at_end_um",
+    ] {
+        assert!(f["params"][key].is_number(), "{key}: {f}");
+    }
 }
 
 /// A periodic error the plan cannot resolve: no guess, advice on the plan that would.
