@@ -77,7 +77,7 @@ enum Command {
         progress: bool,
     },
     /// Model check and diagnosis of one measurement file: what the standard's model of the
-    /// axis gets wrong (drift, thermal growth, run offsets, periodic error, reversal or
+    /// axis gets wrong (drift, warm-up, thermal growth, run offsets, periodic error, reversal or
     /// scatter varying along the axis, outliers), with evidence and the held-out gain.
     Diagnose {
         /// Measurement file (long CSV or key=value layout).

@@ -1,7 +1,7 @@
 //! The tests of one measurement, run once and read by every effect.
 //!
 //! Order, chosen so that one effect does not pass for another: outliers (in the full time
-//! model), time effects (drift, thermal growth, run offsets; [`super::time`]), scatter
+//! model), time effects (drift, warm-up, thermal growth, run offsets; [`super::time`]), scatter
 //! along the axis ([`super::scatter`]; when found, outliers and time effects are redone
 //! with the scatter model as weights), then on readings corrected for the time effects the
 //! reversal along the axis ([`super::reversal`]) and the periodic error
@@ -49,15 +49,12 @@ impl<'a> Analysis<'a> {
         let known = prep.n >= 2 && tt.df >= 1.0 && tt.sigma2 > 0.0;
         let sigma = if known { tt.sigma2.sqrt() } else { f64::NAN };
         let m = prep.m;
-        // Readings corrected for the time effects (the trend model's drift and growth).
-        let v: Vec<f64> = prep
-            .rows
+        // Readings corrected for the time effects (the smooth model's drift, growth and
+        // warm-up).
+        let v: Vec<f64> = x
             .iter()
-            .zip(&x)
-            .map(|(r, x)| {
-                let t = r.t - prep.tbar;
-                x - (tt.trend.beta * t + tt.trend.gamma * (prep.positions[r.i] - prep.pbar) * t)
-            })
+            .enumerate()
+            .map(|(k, x)| x - tt.trend.effect(&prep, k))
             .collect();
         let (cm, cc) = prep.cell_means(&v, &active);
         let var_cell = |c: usize| tt.sigma2 * scale[c] * scale[c] / cc[c].max(1) as f64;
@@ -146,13 +143,19 @@ fn time_and_scatter(
         a
     };
     let mut scale = vec![1.0; prep.cells()];
-    let mut hits = outliers::detect(prep, x, &scale, ALPHA);
+    let mut hits = outliers::detect(prep, x, &scale, None, ALPHA);
     let mut active = mask(&hits);
     let mut tt = time::tests(prep, x, &active, &scale, ALPHA);
+    if let Some(tau) = tt.warm_tau(ALPHA).filter(|_| !hits.is_empty()) {
+        // Readings early in a warm-up are no outliers of a model that has it.
+        hits = outliers::detect(prep, x, &scale, Some(tau), ALPHA);
+        active = mask(&hits);
+        tt = time::tests(prep, x, &active, &scale, ALPHA);
+    }
     let mut sc = scatter::test(prep, &tt.full.residuals, tt.sigma2);
     if let Some(s) = sc.as_ref().filter(|s| s.p < ALPHA) {
         scale = s.rel_scale.clone();
-        hits = outliers::detect(prep, x, &scale, ALPHA);
+        hits = outliers::detect(prep, x, &scale, tt.warm_tau(ALPHA), ALPHA);
         active = mask(&hits);
         tt = time::tests(prep, x, &active, &scale, ALPHA);
         if let Some(s2) = scatter::test(prep, &tt.full.residuals, tt.sigma2) {

@@ -83,6 +83,8 @@ fn position_part(model: &ErrorModel) -> ErrorModel {
         thermal_growth_ppm_per_h: 0.0,
         run_offsets: Vec::new(),
         run_offset_sd: 0.0,
+        warm_up: 0.0,
+        warm_up_ppm: 0.0,
         ..model.clone()
     }
 }
@@ -164,12 +166,16 @@ mod tests {
             drift_per_h: 3.0,
             thermal_growth_ppm_per_h: 2.0,
             run_offsets: vec![1.0, -1.0],
+            warm_up: 5.0,
+            warm_up_ppm: 3.0,
+            warm_up_tau_min: 20.0,
             reversal: 4.0,
             ..ErrorModel::default()
         };
         let p = position_part(&model);
         assert_eq!((p.drift_per_h, p.thermal_growth_ppm_per_h), (0.0, 0.0));
         assert!(p.run_offsets.is_empty());
+        assert_eq!((p.warm_up, p.warm_up_ppm), (0.0, 0.0));
         assert_eq!(p.reversal, 4.0);
     }
 }

@@ -28,7 +28,7 @@ pub struct LeastSquares {
     q: Vec<Vec<f64>>,
 }
 
-fn dot(a: &[f64], b: &[f64]) -> f64 {
+pub(crate) fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
@@ -124,6 +124,19 @@ pub fn least_squares(cols: &[Vec<f64>], y: &[f64]) -> LeastSquares {
 }
 
 impl LeastSquares {
+    /// What the kept columns leave of `v` (`v` minus its projection on their span): how a
+    /// further column would enter the fit, without refitting.
+    pub fn residualize(&self, v: &[f64]) -> Vec<f64> {
+        let mut out = v.to_vec();
+        for _ in 0..2 {
+            for qk in &self.q {
+                let c = dot(qk, &out);
+                axpy(-c, qk, &mut out);
+            }
+        }
+        out
+    }
+
     /// Leverage h of row `row`: the diagonal of the hat matrix.
     pub fn leverage(&self, row: usize) -> f64 {
         self.q.iter().map(|qk| qk[row] * qk[row]).sum()

@@ -5,12 +5,13 @@
 //! at each target, one reversal value, independent scatter that does not depend on time.
 //! Hemingray, Cowley & Burdekin (1971), the critique of the NMTBA and VDI 3441 tests, list
 //! what breaks it and ask that each be measured and separated: progressive and periodic
-//! error, lost motion, drift, thermal growth and the unidirectional scatter. This module
+//! error, lost motion, drift, thermal growth and the unidirectional scatter; ISO 230-2
+//! clause 3.3 adds the warm-up a test should follow. This module
 //!
 //! 1. runs the tests once ([`analysis`]);
 //! 2. lets each effect of the vocabulary ([`Effect`], one file each in [`effects`]) name
-//!    its findings, each at level [`ALPHA`] (seven effects: the chance that data the base
-//!    model explains get any finding is below 7 × 0.2 % ≈ 1.4 %);
+//!    its findings, each at level [`ALPHA`] (eight effects: the chance that data the base
+//!    model explains get any finding is below 8 × 0.2 % ≈ 1.6 %);
 //! 3. extends the model with the terms found, keeps a term only when it improves held-out
 //!    prediction ([`select`], [`validate`]), and gives the extended model as a simulation
 //!    file, so the loop closes ([`fitted`]);
@@ -43,6 +44,7 @@ pub use select::{Scheme, TermGain};
 mod stats;
 mod time;
 mod validate;
+mod warm;
 
 pub use checks::ModelCheck;
 pub use effects::{Effect, Estimate, Typed};

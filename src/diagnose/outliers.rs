@@ -2,7 +2,7 @@
 //! estimate is only as good as its readings).
 //!
 //! Each reading's externally studentised residual in the full time model (cell effects,
-//! run effects, drift and thermal growth, so that a drift does not make the first and last
+//! run effects, drift, thermal growth and a warm-up found, so that a drift does not make the first and last
 //! runs look like outliers): t = r / (s₍₋ₖ₎ √(1 − h)), with s₍₋ₖ₎ the scatter without the
 //! reading and h its leverage; t follows Student's t with df − 1 degrees of freedom.
 //! The largest |t| is tested with a Bonferroni correction over all readings; a reading
@@ -26,8 +26,15 @@ pub(crate) struct Hit {
 }
 
 /// Finds outliers among `values` at family-wise level `alpha`; `scale` is the relative
-/// scatter per cell.
-pub(crate) fn detect(prep: &Prep, values: &[f64], scale: &[f64], alpha: f64) -> Vec<Hit> {
+/// scatter per cell; `warm` the time constant of a warm-up found, whose curve within the
+/// first run would otherwise leave its first readings as outliers.
+pub(crate) fn detect(
+    prep: &Prep,
+    values: &[f64],
+    scale: &[f64],
+    warm: Option<f64>,
+    alpha: f64,
+) -> Vec<Hit> {
     let mut hits = Vec::new();
     if prep.n < 3 {
         return hits;
@@ -41,6 +48,7 @@ pub(crate) fn detect(prep: &Prep, values: &[f64], scale: &[f64], alpha: f64) -> 
         thermal: true,
         runs: true,
         drift: true,
+        warm,
     };
     while hits.len() < cap {
         let f = fit(prep, values, &active, scale, terms);

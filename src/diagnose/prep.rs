@@ -66,6 +66,8 @@ pub(crate) struct Prep {
     pub hi: f64,
     /// Mean time of the readings.
     pub tbar: f64,
+    /// Time of the first reading: the start of the test, where a warm-up begins.
+    pub t0: f64,
     /// Time from the first to the last reading.
     pub t_span: f64,
 }
@@ -139,6 +141,7 @@ impl Prep {
             lo,
             hi,
             tbar,
+            t0: if tmin.is_finite() { tmin } else { 0.0 },
             t_span: (tmax - tmin).max(0.0),
         }
     }

@@ -1,4 +1,4 @@
-//! Effects in time: drift, thermal growth and run offsets.
+//! Effects in time: drift, warm-up, thermal growth and run offsets.
 //!
 //! Every fit has a fixed effect per cell (target, direction), so only what changes
 //! *between the approaches of one cell* identifies a time effect; the systematic
@@ -6,26 +6,42 @@
 //! Terms (Hemingray et al. 1971, §5.4 and conclusion 1; ISO 230-2 clause 3.3):
 //!
 //! * drift: `β·t`, uniform along the axis;
+//! * warm-up: `(a + g·(P − P̄))·(1 − exp(−(t − t₀)/τ))`, an exponential approach to a new
+//!   level from the start of the test ([`super::warm`]);
 //! * thermal growth: `γ·(P − P̄)·t`, proportional to position;
 //! * run offsets: one constant per run (zero-point instability).
 //!
 //! With the standard test cycle and regular timing a drift *is* a linear trend of the run
 //! effects, so the two are told apart by a decomposition of the between-run variation:
 //! its linear part in time (drift, 1 degree of freedom) and what a straight line leaves
-//! (run offsets, n − 2 degrees of freedom), each tested against the pure scatter.
+//! (run offsets), each tested against the pure scatter. The run offsets are tested beyond
+//! the best warm-up curve as well, found or not: what a smooth curve in time explains is
+//! no zero shift.
 //! When the run offsets are real, a drift is judged against the run-to-run variation
 //! instead (random run effects: only a trend larger than the zero shifts is a drift).
+//! A warm-up, found by [`super::warm::search`], joins the smooth part: the run offsets are
+//! then what the drift *and* the warm-up leave, so that a smooth approach in time is never
+//! taken for zero shifts.
 
 use super::linalg::{LeastSquares, least_squares};
 use super::prep::Prep;
 use super::stats::{f_upper, t_two_sided};
+use super::warm::{self, WarmEstimate, WarmTest};
 
 /// Which time terms a fit has.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct Terms {
     pub thermal: bool,
     pub runs: bool,
     pub drift: bool,
+    /// A warm-up with this time constant (time units): two columns, uniform and in
+    /// proportion to position, after all the others.
+    pub warm: Option<f64>,
+}
+
+/// The share of a warm-up reached `dt` after the start of the test: 1 − exp(−dt/τ).
+pub(crate) fn warm_shape(dt: f64, tau: f64) -> f64 {
+    -(-dt / tau).exp_m1()
 }
 
 /// A fit of the time model with cell fixed effects.
@@ -43,6 +59,13 @@ pub(crate) struct TimeFit {
     /// Column of each term in `ls`.
     pub thermal_col: Option<usize>,
     pub drift_col: Option<usize>,
+    /// Column of the uniform warm-up; the position-proportional one follows it.
+    pub warm_col: Option<usize>,
+    /// Warm-up: its time constant, the uniform level a and the level per position unit g
+    /// (about P̄) that the deviations approach (0 without the term).
+    pub tau: Option<f64>,
+    pub warm_a: f64,
+    pub warm_g: f64,
     /// Residual degrees of freedom: active rows − cells with rows − rank.
     pub df: f64,
     /// Residual sum of squares in scaled units.
@@ -62,6 +85,10 @@ impl TimeFit {
         if r.run > 0 && !self.alpha.is_empty() {
             e += self.alpha[r.run];
         }
+        if let Some(tau) = self.tau {
+            let level = self.warm_a + self.warm_g * (prep.positions[r.i] - prep.pbar);
+            e += level * warm_shape(r.t - prep.t0, tau);
+        }
         e
     }
 
@@ -73,6 +100,56 @@ impl TimeFit {
             f64::NAN
         }
     }
+}
+
+/// Demeaning within cells and weighting by 1/scale, over the rows of a fit: what every
+/// column and the values go through before the least squares.
+pub(crate) struct CellDemean<'a> {
+    cell_of: Vec<usize>,
+    count: Vec<usize>,
+    scale: &'a [f64],
+}
+
+impl<'a> CellDemean<'a> {
+    pub fn new(prep: &Prep, rows: &[usize], scale: &'a [f64]) -> CellDemean<'a> {
+        let cell_of: Vec<usize> = rows.iter().map(|&k| prep.cell(&prep.rows[k])).collect();
+        let mut count = vec![0usize; prep.cells()];
+        for &c in &cell_of {
+            count[c] += 1;
+        }
+        CellDemean {
+            cell_of,
+            count,
+            scale,
+        }
+    }
+
+    /// `v` (one value per fit row) minus its cell means, divided by the cell's scale.
+    pub fn apply(&self, v: &[f64]) -> Vec<f64> {
+        let mut sum = vec![0.0; self.count.len()];
+        for (x, &c) in v.iter().zip(&self.cell_of) {
+            sum[c] += x;
+        }
+        v.iter()
+            .zip(&self.cell_of)
+            .map(|(x, &c)| (x - sum[c] / self.count[c] as f64) / self.scale[c])
+            .collect()
+    }
+}
+
+/// The two warm-up columns at τ over `rows`, raw: the share reached, and that times the
+/// position about P̄.
+pub(crate) fn warm_columns(prep: &Prep, rows: &[usize], tau: f64) -> [Vec<f64>; 2] {
+    let shape: Vec<f64> = rows
+        .iter()
+        .map(|&k| warm_shape(prep.rows[k].t - prep.t0, tau))
+        .collect();
+    let growth = rows
+        .iter()
+        .zip(&shape)
+        .map(|(&k, e)| (prep.positions[prep.rows[k].i] - prep.pbar) * e)
+        .collect();
+    [shape, growth]
 }
 
 /// Fits `values` (one per row) over the `active` rows with cell effects and `terms`;
@@ -90,6 +167,7 @@ pub(crate) fn fit(
     let mut raw: Vec<Vec<f64>> = Vec::new();
     let mut thermal_col = None;
     let mut drift_col = None;
+    let mut warm_col = None;
     let mut run_cols = Vec::new();
     let t_of = |k: usize| prep.rows[k].t - prep.tbar;
     if terms.thermal {
@@ -114,29 +192,21 @@ pub(crate) fn fit(
         drift_col = Some(raw.len());
         raw.push(rows.iter().map(|&k| t_of(k)).collect());
     }
-    // Demean within cells, then weight.
-    let cell_of: Vec<usize> = rows.iter().map(|&k| prep.cell(&prep.rows[k])).collect();
-    let mut count = vec![0usize; cells];
-    for &c in &cell_of {
-        count[c] += 1;
+    if let Some(tau) = terms.warm {
+        warm_col = Some(raw.len());
+        raw.extend(warm_columns(prep, &rows, tau));
     }
-    let demean = |v: &[f64]| -> Vec<f64> {
-        let mut sum = vec![0.0; cells];
-        for (x, &c) in v.iter().zip(&cell_of) {
-            sum[c] += x;
-        }
-        v.iter()
-            .zip(&cell_of)
-            .map(|(x, &c)| (x - sum[c] / count[c] as f64) / scale[c])
-            .collect()
-    };
+    // Demean within cells, then weight.
+    let dm = CellDemean::new(prep, &rows, scale);
+    let (cell_of, count) = (&dm.cell_of, &dm.count);
     let y: Vec<f64> = rows.iter().map(|&k| values[k]).collect();
-    let cols: Vec<Vec<f64>> = raw.iter().map(|c| demean(c)).collect();
-    let ls = least_squares(&cols, &demean(&y));
+    let cols: Vec<Vec<f64>> = raw.iter().map(|c| dm.apply(c)).collect();
+    let ls = least_squares(&cols, &dm.apply(&y));
     let cells_used = count.iter().filter(|&&c| c > 0).count();
     let df = rows.len() as f64 - cells_used as f64 - ls.rank as f64;
     let beta = drift_col.map_or(0.0, |c| ls.coef[c]);
     let gamma = thermal_col.map_or(0.0, |c| ls.coef[c]);
+    let (warm_a, warm_g) = warm_col.map_or((0.0, 0.0), |c| (ls.coef[c], ls.coef[c + 1]));
     let mut alpha = Vec::new();
     if terms.runs {
         alpha = vec![0.0; prep.n];
@@ -152,7 +222,7 @@ pub(crate) fn fit(
         }
     }
     let mut sum = vec![0.0; cells];
-    for ((yv, f), &c) in y.iter().zip(&fitted_raw).zip(&cell_of) {
+    for ((yv, f), &c) in y.iter().zip(&fitted_raw).zip(cell_of) {
         sum[c] += yv - f;
     }
     let intercepts: Vec<f64> = (0..cells)
@@ -177,6 +247,10 @@ pub(crate) fn fit(
         alpha,
         thermal_col,
         drift_col,
+        warm_col,
+        tau: terms.warm,
+        warm_a,
+        warm_g,
         df,
         rss,
         intercepts,
@@ -194,7 +268,7 @@ pub(crate) struct CoefTest {
     pub df: f64,
 }
 
-/// Run offsets beyond a linear drift.
+/// Run offsets beyond the smooth model (a linear drift and a warm-up curve).
 #[derive(Debug, Clone)]
 pub(crate) struct RunTest {
     pub f: f64,
@@ -219,19 +293,30 @@ pub(crate) struct DriftTest {
 /// The time tests on the active rows.
 #[derive(Debug, Clone)]
 pub(crate) struct TimeTests {
-    /// Full model: thermal + run effects + drift (the pure-error reference).
+    /// Full model: thermal + run effects + drift, and the warm-up when found (the
+    /// pure-error reference).
     pub full: TimeFit,
-    /// Thermal + drift, no run effects.
+    /// The smooth part: thermal + drift, and the warm-up when found; no run effects.
     pub trend: TimeFit,
     pub sigma2: f64,
     pub df: f64,
     pub thermal: Option<CoefTest>,
     pub runs: Option<RunTest>,
     pub drift: Option<DriftTest>,
+    /// The warm-up search (found when its `p` is below the level).
+    pub warm: Option<WarmTest>,
 }
 
-/// Runs the tests at level `alpha` each; a significant thermal growth decides how the
-/// drift is read (see [`DriftTest::origin`]).
+impl TimeTests {
+    /// The time constant of the warm-up when one is found at level `alpha`.
+    pub fn warm_tau(&self, alpha: f64) -> Option<f64> {
+        self.warm.as_ref().filter(|w| w.p < alpha).map(|w| w.tau)
+    }
+}
+
+/// Runs the tests at level `alpha` each; a significant warm-up joins the smooth part and
+/// the full model, and a significant thermal growth decides how the drift is read (see
+/// [`DriftTest::origin`]).
 pub(crate) fn tests(
     prep: &Prep,
     values: &[f64],
@@ -243,6 +328,7 @@ pub(crate) fn tests(
         thermal: true,
         runs: true,
         drift: true,
+        warm: None,
     };
     let full = fit(prep, values, active, scale, all);
     let no_runs = Terms { runs: false, ..all };
@@ -253,6 +339,7 @@ pub(crate) fn tests(
         thermal: None,
         runs: None,
         drift: None,
+        warm: None,
         sigma2,
         df,
         full,
@@ -261,11 +348,42 @@ pub(crate) fn tests(
     if !(df >= 1.0 && sigma2 > 0.0) {
         return out;
     }
-    out.thermal = thermal_test(&out.full, sigma2, df);
-    out.runs = run_test(prep, &out.full, &out.trend, sigma2, df);
+    out.warm = warm::search(prep, values, active, scale, (&out.full, &out.trend), alpha);
+    let warm_found = out.warm.as_ref().is_some_and(|w| w.p < alpha);
+    if let Some(w) = out.warm.as_ref().filter(|_| warm_found) {
+        out.full = w.full.clone();
+        out.trend = w.smooth.clone();
+        out.sigma2 = out.full.sigma2();
+        out.df = out.full.df;
+    }
+    let (sigma2, df) = (out.sigma2, out.df);
+    // Run offsets are what no smooth curve in time explains: tested beyond the linear
+    // trend with the best warm-up curve, found or not, so that a curvature of the run
+    // means is never taken for zero shifts; their sizes are what the smooth model leaves.
+    out.runs = match out.warm.as_ref() {
+        Some(w) => {
+            run_test(prep, &w.full, &w.smooth, w.full.sigma2(), w.full.df).map(|r| RunTest {
+                offsets: run_offsets(prep, &out.trend),
+                ..r
+            })
+        }
+        None => run_test(prep, &out.full, &out.trend, sigma2, df),
+    };
     let runs_real = out.runs.as_ref().is_some_and(|r| r.p < alpha);
-    let thermal_found = out.thermal.as_ref().is_some_and(|t| t.p < alpha);
-    out.drift = drift_test(prep, &out, runs_real, thermal_found);
+    if warm_found {
+        let reference = drift_reference(&out, runs_real);
+        let beside =
+            warm::linear_tests(prep, values, active, scale, (sigma2, df), reference, alpha);
+        out.thermal = beside.thermal;
+        out.drift = beside.drift;
+        if let Some(w) = out.warm.as_mut() {
+            w.estimate = beside.kept.and_then(|f| WarmEstimate::of(&f, (w.ms, w.df)));
+        }
+    } else {
+        out.thermal = thermal_test(&out.full, sigma2, df);
+        let thermal_found = out.thermal.as_ref().is_some_and(|t| t.p < alpha);
+        out.drift = drift_test(prep, &out, runs_real, thermal_found);
+    }
     out
 }
 
@@ -291,7 +409,17 @@ fn run_test(prep: &Prep, full: &TimeFit, trend: &TimeFit, sigma2: f64, df: f64) 
     }
     let ms = (trend.rss - full.rss).max(0.0) / df_lof;
     let f = ms / sigma2;
-    // Run effects after the drift: mean residual of the trend model per run.
+    Some(RunTest {
+        f,
+        df1: df_lof,
+        df2: df,
+        p: f_upper(f, df_lof, df),
+        offsets: run_offsets(prep, trend),
+    })
+}
+
+/// Run effects after the smooth model: its mean residual per run, centred.
+fn run_offsets(prep: &Prep, trend: &TimeFit) -> Vec<f64> {
     let mut sum = vec![0.0; prep.n];
     let mut count = vec![0usize; prep.n];
     for &k in &trend.rows {
@@ -307,13 +435,22 @@ fn run_test(prep: &Prep, full: &TimeFit, trend: &TimeFit, sigma2: f64, df: f64) 
     for o in &mut offsets {
         *o -= mean;
     }
-    Some(RunTest {
-        f,
-        df1: df_lof,
-        df2: df,
-        p: f_upper(f, df_lof, df),
-        offsets,
-    })
+    offsets
+}
+
+/// What a drift is judged against: the scatter (mean square, degrees of freedom) or, when
+/// the run offsets are real, the run-to-run variation the smooth model leaves.
+pub(crate) fn drift_reference(tests: &TimeTests, runs_real: bool) -> (f64, f64, &'static str) {
+    if runs_real {
+        let df_lof_v = tests.runs.as_ref().map_or(1.0, |r| r.df1);
+        (
+            (tests.trend.rss - tests.full.rss).max(0.0) / df_lof_v,
+            df_lof_v,
+            "run-to-run variation",
+        )
+    } else {
+        (tests.sigma2, tests.df, "scatter")
+    }
 }
 
 /// Drift: the trend model's β (with γ), against the scatter or, when the run offsets are
@@ -324,18 +461,9 @@ fn drift_test(
     runs_real: bool,
     thermal_found: bool,
 ) -> Option<DriftTest> {
-    let (full, trend) = (&tests.full, &tests.trend);
+    let trend = &tests.trend;
     let bc = trend.drift_col.filter(|&c| trend.ls.kept[c])?;
-    let (err_ms, err_df, against) = if runs_real {
-        let df_lof_v = tests.runs.as_ref().map_or(1.0, |r| r.df1);
-        (
-            (trend.rss - full.rss).max(0.0) / df_lof_v,
-            df_lof_v,
-            "run-to-run variation",
-        )
-    } else {
-        (tests.sigma2, tests.df, "scatter")
-    };
+    let (err_ms, err_df, against) = drift_reference(tests, runs_real);
     let tc = trend.thermal_col.filter(|&c| trend.ls.kept[c]);
     let (estimate, var, origin) = match (thermal_found, tc) {
         (true, Some(gc)) if trend.gamma != 0.0 => {

@@ -8,8 +8,8 @@
 //!
 //! * base (the standard's model, the simulator with its assumptions): the bidirectional
 //!   mean at each target, one reversal value B̄ for the axis, nothing in time;
-//! * extended: plus the kept terms — drift and thermal growth (time regressors with cell
-//!   effects), run offsets, a reversal varying linearly along the axis, outliers left out
+//! * extended: plus the kept terms — drift, warm-up (its τ profiled on each fold's
+//!   training readings) and thermal growth (time regressors with cell effects), run offsets, a reversal varying linearly along the axis, outliers left out
 //!   of the fit, a scatter varying along the axis (changes only the predictive variance,
 //!   so it is judged by the mean negative log predictive density, not the RMS).
 //!
@@ -25,6 +25,7 @@ use super::periodic::Trend;
 use super::prep::Prep;
 use super::scatter;
 use super::time::{Terms, TimeFit, fit};
+use super::warm;
 use crate::simulate::model::interpolate;
 use crate::simulate::rng::Rng;
 use std::f64::consts::TAU;
@@ -36,6 +37,7 @@ pub(crate) const K: usize = 10;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(crate) struct ModelTerms {
     pub drift: bool,
+    pub warm: bool,
     pub thermal: bool,
     pub runs: bool,
     pub reversal: bool,
@@ -60,17 +62,18 @@ impl Predictor {
     /// Fits `terms` on the `train` rows of `x`.
     pub fn fit(prep: &Prep, x: &[f64], train: &[bool], terms: ModelTerms) -> Predictor {
         let ones = vec![1.0; prep.cells()];
-        let time = fit(
-            prep,
-            x,
-            train,
-            &ones,
-            Terms {
-                thermal: terms.thermal,
-                runs: terms.runs,
-                drift: terms.drift || terms.thermal,
-            },
-        );
+        let mut time_terms = Terms {
+            thermal: terms.thermal,
+            runs: terms.runs,
+            drift: terms.drift || terms.thermal,
+            warm: None,
+        };
+        if terms.warm {
+            // τ profiled on the training rows alone, as the rest of the model.
+            let base = fit(prep, x, train, &ones, time_terms);
+            time_terms.warm = warm::profile(prep, &base, &ones, true).map(|p| p.tau);
+        }
+        let time = fit(prep, x, train, &ones, time_terms);
         let mut count = vec![0usize; prep.cells()];
         for &k in &time.rows {
             count[prep.cell(&prep.rows[k])] += 1;

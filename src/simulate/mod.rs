@@ -151,6 +151,9 @@ model:
   scatter_um: 0.5
   periodic:
     - {pitch_mm: 10, amplitude_um: 1.0, phase_deg: 30}
+  warm_up_um: 3
+  warm_up_um_per_m: 4
+  warm_up_tau_min: 15
 plan:
   targets: {start_mm: 0, end_mm: 1000, count: 11, jitter_mm: 5}
   runs: 5
@@ -171,6 +174,8 @@ plan:
         let text = sim.to_yaml();
         assert!(text.contains("reversal_um: 4"), "{text}");
         assert!(text.contains("pitch_mm: 10"), "{text}");
+        assert!(text.contains("warm_up_um: 3"), "{text}");
+        assert!(text.contains("warm_up_tau_min: 15"), "{text}");
         let again = Simulation::from_yaml(&text, "again.yaml").unwrap();
         assert_eq!(again, sim);
     }
@@ -248,6 +253,20 @@ plan:
         assert_eq!(
             e("kind: linear\nmodel: {scatter_um: -1}\nplan: {targets_mm: [0, 100]}\n"),
             "m.yaml:2:21: model.scatter_um must be a finite number ≥ 0, found -1"
+        );
+        assert_eq!(
+            e("kind: linear\nmodel: {warm_up_um: 3}\nplan: {targets_mm: [0, 100]}\n"),
+            "m.yaml:2:21: model.warm_up_um needs a time constant: add model.warm_up_tau_min (> 0)"
+        );
+        assert_eq!(
+            e(
+                "kind: rotary\nmodel: {warm_up_arcsec: 3, warm_up_tau_min: -2}\nplan: {targets_deg: [0, 90]}\n"
+            ),
+            "m.yaml:2:45: model.warm_up_tau_min must be a finite number ≥ 0, found -2"
+        );
+        assert_eq!(
+            e("kind: rotary\nmodel: {warm_up_um: 3}\nplan: {targets_deg: [0, 90]}\n"),
+            "m.yaml:2:9: `model.warm_up_um` has a linear unit, but this is a rotary model; write `warm_up_arcsec`"
         );
         assert_eq!(
             e(""),

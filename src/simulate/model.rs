@@ -3,8 +3,9 @@
 //! Terms (Hemingray, Cowley and Burdekin 1971: progressive and periodic error, lost motion, drift,
 //! thermal growth, scatter): a linear scale error, a smooth systematic shape, periodic
 //! errors, a reversal value (constant or varying linearly along the axis), a drift in
-//! time uniform along the axis, a thermal growth proportional to position × time,
-//! per-run offsets, random scatter (constant or varying along the axis) and outliers.
+//! time uniform along the axis, a thermal growth proportional to position × time, a
+//! warm-up (an exponential approach to a new level, uniform and in proportion to
+//! position; ISO 230-2 clause 3.3), per-run offsets, random scatter (constant or varying along the axis) and outliers.
 //! Deviations in the axis's deviation unit (µm or arcsec), positions in mm or deg.
 
 use crate::units::{AxisKind, Direction};
@@ -72,6 +73,20 @@ pub struct ErrorModel {
     #[serde(skip_serializing_if = "is_zero")]
     #[serde(alias = "thermal_origin_mm", alias = "thermal_origin_deg")]
     pub thermal_origin: f64,
+    /// Warm-up: the deviations approach a new level, A·(1 − exp(−t/τ)) with t from the
+    /// start of the test (a first-order thermal response; ISO 230-2 clause 3.3). A, µm or
+    /// arcsec.
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "warm_up_um", alias = "warm_up_arcsec")]
+    pub warm_up: f64,
+    /// Position-dependent warm-up: ppm (µm/m) at the end state about `thermal_origin`,
+    /// approached with the same time constant.
+    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(alias = "warm_up_um_per_m")]
+    pub warm_up_ppm: f64,
+    /// Time constant τ of the warm-up, minutes.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub warm_up_tau_min: f64,
     /// Offset of each whole run, in run order.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     #[serde(alias = "run_offsets_um", alias = "run_offsets_arcsec")]
@@ -145,8 +160,17 @@ impl ErrorModel {
         }
     }
 
+    /// The share of the warm-up reached `time_s` after the start of the test.
+    pub fn warm_up_reached(&self, time_s: f64) -> f64 {
+        if self.warm_up_tau_min > 0.0 {
+            -(-time_s / 60.0 / self.warm_up_tau_min).exp_m1()
+        } else {
+            0.0
+        }
+    }
+
     /// The deterministic part of a reading: systematic + reversal/2 + drift + thermal
-    /// growth (without run offsets, scatter and outliers).
+    /// growth + warm-up (without run offsets, scatter and outliers).
     pub fn expected(
         &self,
         kind: AxisKind,
@@ -163,6 +187,18 @@ impl ErrorModel {
                 self.thermal_growth_ppm_per_h * hours,
                 position - self.thermal_origin,
             )
+            + self.warm_up_part(kind, position, time_s)
+    }
+
+    /// The warm-up's part of a reading at `position`, `time_s` after the start.
+    fn warm_up_part(&self, kind: AxisKind, position: f64, time_s: f64) -> f64 {
+        if self.warm_up == 0.0 && self.warm_up_ppm == 0.0 {
+            return 0.0;
+        }
+        let reached = self.warm_up_reached(time_s);
+        reached
+            * (self.warm_up
+                + kind.ppm_to_deviation(self.warm_up_ppm, position - self.thermal_origin))
     }
 
     /// Checks values a simulation cannot use.
@@ -181,6 +217,7 @@ impl ErrorModel {
                 ));
             }
         }
+        self.validate_warm_up()?;
         if !(0.0..=1.0).contains(&self.outlier_rate) {
             return Err(format!(
                 "model.outlier_rate must be between 0 and 1, found {}",
@@ -215,6 +252,34 @@ impl ErrorModel {
                 return Err("model.shape: knot positions must increase".into());
             }
             last = k[0];
+        }
+        Ok(())
+    }
+}
+
+impl ErrorModel {
+    /// A warm-up needs finite values and, when it has an amplitude, a time constant.
+    fn validate_warm_up(&self) -> Result<(), String> {
+        for (name, v) in [("warm_up", self.warm_up), ("warm_up_ppm", self.warm_up_ppm)] {
+            if !v.is_finite() {
+                return Err(format!("model.{name} must be a finite number, found {v}"));
+            }
+        }
+        let tau = self.warm_up_tau_min;
+        if !(tau >= 0.0 && tau.is_finite()) {
+            return Err(format!(
+                "model.warm_up_tau_min must be a finite number ≥ 0, found {tau}"
+            ));
+        }
+        if tau == 0.0 && (self.warm_up != 0.0 || self.warm_up_ppm != 0.0) {
+            let name = if self.warm_up != 0.0 {
+                "warm_up"
+            } else {
+                "warm_up_ppm"
+            };
+            return Err(format!(
+                "model.{name} needs a time constant: add model.warm_up_tau_min (> 0)"
+            ));
         }
         Ok(())
     }
@@ -288,5 +353,31 @@ mod tests {
         let down = m.expected(AxisKind::Linear, 1000.0, Direction::Down, 1800.0, travel);
         assert!((up - (10.0 + 2.0 + 1.0)).abs() < 1e-12);
         assert!((up - down - 4.0).abs() < 1e-12);
+    }
+
+    /// A(1 − e^(−t/τ)) + ppm·(P − origin)·(1 − e^(−t/τ)), by hand: after one time constant
+    /// 63.2 % of the way.
+    #[test]
+    fn warm_up_approaches_its_level() {
+        let m = ErrorModel {
+            warm_up: 5.0,
+            warm_up_ppm: 10.0,
+            warm_up_tau_min: 20.0,
+            thermal_origin: 100.0,
+            ..ErrorModel::default()
+        };
+        let travel = (0.0, 1000.0);
+        let at = |p: f64, s: f64| m.expected(AxisKind::Linear, p, Direction::Up, s, travel);
+        assert_eq!(at(100.0, 0.0), 0.0);
+        let share = 1.0 - (-1.0f64).exp();
+        assert!((at(100.0, 1200.0) - 5.0 * share).abs() < 1e-12);
+        assert!((at(1100.0, 1200.0) - (5.0 + 10.0) * share).abs() < 1e-12);
+        assert!((at(600.0, 1e9) - 10.0).abs() < 1e-9);
+        assert_eq!(m.validate(5, 11), Ok(()));
+        let no_tau = ErrorModel {
+            warm_up_tau_min: 0.0,
+            ..m
+        };
+        assert!(no_tau.validate(5, 11).is_err());
     }
 }

@@ -64,6 +64,15 @@ fn keys(ctx: Ctx) -> &'static [Key] {
                 "thermal_origin_deg",
                 None,
             ),
+            ("warm_up", "warm_up_um", "warm_up_arcsec", None),
+            ("warm_up_ppm", "warm_up_ppm", "warm_up_ppm", None),
+            ("warm_up_ppm", "warm_up_um_per_m", "warm_up_ppm", None),
+            (
+                "warm_up_tau_min",
+                "warm_up_tau_min",
+                "warm_up_tau_min",
+                None,
+            ),
             ("run_offsets", "run_offsets_um", "run_offsets_arcsec", None),
             (
                 "run_offset_sd",

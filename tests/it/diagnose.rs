@@ -380,6 +380,176 @@ fn scatter_case(seed: u64) -> Case {
     }
 }
 
+/// A warm-up (ISO 230-2 clause 3.3): the deviations approach a new level exponentially,
+/// A·(1 − e^(−t/τ)) from the start of the test, in a test of 20–60 min (dwell 5–10 s, as
+/// laser tests with averaging take) with τ 15–40 % of it, so that the curve shows: a
+/// longer τ is a straight line over the test (a drift), a shorter one is over within the
+/// first run. A: 6–12 σ from the first reading to the final level; in every third case
+/// part of it grows with the position (the screw's expansion, origin at one end).
+/// `without_times` reads the test as a file without time stamps.
+fn warm_up_case(seed: u64, without_times: bool) -> Case {
+    let mut rng = Rng::new(seed, 901);
+    let sigma = rng.range(0.3, 1.2);
+    let mut plan = standard_plan(&mut rng);
+    plan.dwell_s = rng.range(5.0, 10.0);
+    plan.feed_per_min = rng.range(500.0, 1500.0);
+    let (start, end, _) = spacing_of(&plan);
+    let mut sim = linear(
+        realistic(&mut rng, start, end, sigma, 4.0, 10.0),
+        plan,
+        seed,
+    );
+    let targets = sim.plan.target_positions(seed);
+    let visits = sim.plan.schedule(&targets);
+    let first_min = visits[0].time_s / 60.0;
+    let minutes = visits.last().unwrap().time_s / 60.0;
+    let tau = minutes * rng.range(0.15, 0.4);
+    // The size at the first reading, at the mean target.
+    let size = rng.range(6.0, 12.0) * sigma * sign(&mut rng);
+    let at_first = (-first_min / tau).exp();
+    let centre = (start + end) / 2.0;
+    if seed % 3 == 1 {
+        // Half of it in proportion to the position, zero at the start of the travel.
+        let ppm = 0.5 * size / ((centre - start) / 1000.0);
+        sim.model.warm_up_ppm = ppm / at_first;
+        sim.model.thermal_origin = start;
+        sim.model.warm_up = 0.5 * size / at_first;
+    } else {
+        sim.model.warm_up = size / at_first;
+    }
+    sim.model.warm_up_tau_min = tau;
+    if without_times {
+        sim.description = Some(NO_TIME_STAMPS.to_string());
+    }
+    Case {
+        sim,
+        seed,
+        pitch: None,
+        truth: tau,
+        at: None,
+    }
+}
+
+/// A warm-up is named, with its time constant and size, kept by the held-out prediction,
+/// and not split into drift and run offsets; `accurate` holds in 95 % of the cases, other
+/// findings in at most 5 %.
+fn require_warm_up(name: &str, seeds: std::ops::Range<u64>, without_times: bool) {
+    let gains = std::sync::Mutex::new(Vec::new());
+    let others = require_recall(
+        name,
+        seeds,
+        |s| warm_up_case(s, without_times),
+        Effect::WarmUp,
+        |c, d| {
+            let model = &c.sim.model;
+            let key = if without_times { "tau_run" } else { "tau_min" };
+            let tau = param(d, Effect::WarmUp, key);
+            let tau_ok = if without_times {
+                // Runs of the standard cycle: the test's runs over its minutes.
+                let minutes = test_hours(&c.sim, c.seed) * 60.0;
+                rel_err(tau * minutes / c.sim.plan.runs as f64, c.truth) <= 0.4
+            } else {
+                rel_err(tau, c.truth) <= 0.3
+            };
+            let targets = c.sim.plan.target_positions(c.seed);
+            let first = c.sim.plan.schedule(&targets)[0].time_s / 60.0;
+            let centre = (targets[0] + targets[targets.len() - 1]) / 2.0;
+            let level =
+                model.warm_up + model.warm_up_ppm * (centre - model.thermal_origin) / 1000.0;
+            let size = level * (-first / model.warm_up_tau_min).exp();
+            let amplitude = param(d, Effect::WarmUp, "amplitude_um");
+            let kept = d.extended.terms.iter().any(|t| t == "warm_up");
+            gains.lock().unwrap().push(d.gain_pct);
+            tau_ok && rel_err(amplitude, size) <= 0.3 && kept && d.gain_pct > 0.0
+        },
+    );
+    let mut gains = gains.into_inner().unwrap();
+    gains.sort_by(f64::total_cmp);
+    eprintln!(
+        "{name}: held-out gain {:.1} % (lowest), {:.1} % (median)",
+        gains[0],
+        gains[gains.len() / 2]
+    );
+    assert!(
+        others <= 0.05,
+        "{name}: other findings in {:.1} %",
+        others * 100.0
+    );
+}
+
+#[test]
+fn hidden_warm_up_is_found_with_its_time_constant() {
+    require_warm_up("warm_up", 90_000..90_000 + SEEDS, false);
+}
+
+#[test]
+fn hidden_warm_up_is_found_without_time_stamps() {
+    require_warm_up("warm_up without time_s", 95_000..95_000 + SEEDS, true);
+}
+
+/// Behaviour smooth in time is never named as run offsets alone, whatever the time
+/// constant of a warm-up, with and without time stamps. What it is named instead: a
+/// warm-up that is over within the first few readings (τ below a quarter of a run, the
+/// shortest the search tries) leaves those readings as outliers or nothing; one of
+/// 2–50 % of the test is a warm-up; one slower than the test is a straight line over it,
+/// a drift (or, in proportion to position, a thermal growth).
+#[test]
+fn smooth_time_behaviour_is_never_run_offsets_alone() {
+    let fractions = [0.005, 0.02, 0.1, 0.5, 1.0, 2.0, 4.0];
+    let results: Vec<(f64, bool, u64, String)> = fractions
+        .par_iter()
+        .flat_map(|&fraction| {
+            (0..30u64).into_par_iter().flat_map(move |s| {
+                [false, true].into_par_iter().map(move |without_times| {
+                    let mut case = warm_up_case(90_000 + s, without_times);
+                    let minutes = test_hours(&case.sim, case.seed) * 60.0;
+                    let targets = case.sim.plan.target_positions(case.seed);
+                    let first = case.sim.plan.schedule(&targets)[0].time_s / 60.0;
+                    let m = &mut case.sim.model;
+                    // The same size at the first reading, another time constant.
+                    let at_first = m.warm_up * (-first / m.warm_up_tau_min).exp();
+                    let at_first_ppm = m.warm_up_ppm * (-first / m.warm_up_tau_min).exp();
+                    let tau = fraction * minutes;
+                    m.warm_up = at_first * (first / tau).exp();
+                    m.warm_up_ppm = at_first_ppm * (first / tau).exp();
+                    m.warm_up_tau_min = tau;
+                    let (_, d) = run_case(&case);
+                    (fraction, without_times, s, d.effects_label())
+                })
+            })
+        })
+        .collect();
+    let alone: Vec<_> = results.iter().filter(|r| r.3 == "run_offset").collect();
+    assert!(alone.is_empty(), "{alone:?}");
+    for &fraction in &fractions {
+        let of = |name: &str| {
+            let n = results
+                .iter()
+                .filter(|r| r.0 == fraction && r.3.split(' ').any(|e| e == name))
+                .count();
+            n as f64 / 60.0
+        };
+        let linear = results
+            .iter()
+            .filter(|r| r.0 == fraction && (r.3.contains("drift") || r.3.contains("thermal")))
+            .count() as f64
+            / 60.0;
+        eprintln!(
+            "τ = {fraction} × the test: warm_up {:.0} %, drift or thermal_growth {:.0} %, run_offset {:.0} %, outlier {:.0} %",
+            of("warm_up") * 100.0,
+            linear * 100.0,
+            of("run_offset") * 100.0,
+            of("outlier") * 100.0
+        );
+        if (0.02..=0.5).contains(&fraction) {
+            assert!(of("warm_up") >= 0.85, "τ = {fraction} × the test");
+        }
+        if fraction >= 2.0 {
+            assert!(linear >= 0.9, "τ = {fraction} × the test");
+        }
+    }
+}
+
 /// Removes the time stamps (a file without `time_s`).
 fn without_times(mut data: AxisData) -> AxisData {
     for r in &mut data.readings {
@@ -388,10 +558,15 @@ fn without_times(mut data: AxisData) -> AxisData {
     data
 }
 
+/// The description of a simulated test that is read as a file without time stamps.
+const NO_TIME_STAMPS: &str = "read without time stamps";
+
 fn run_case(case: &Case) -> (AxisData, Diagnosis) {
     let data = case.sim.run(case.seed);
-    // Clean cases with seed ≡ 2 (mod 3) are read as files without time stamps.
-    let data = if case.truth == 0.0 && case.at.is_none() && case.seed % 3 == 2 {
+    // Clean cases with seed ≡ 2 (mod 3) are read as files without time stamps, and so are
+    // the cases that say so.
+    let clean_without = case.truth == 0.0 && case.at.is_none() && case.seed % 3 == 2;
+    let data = if clean_without || case.sim.description.as_deref() == Some(NO_TIME_STAMPS) {
         without_times(data)
     } else {
         data
@@ -423,14 +598,16 @@ fn rel_err(got: f64, want: f64) -> f64 {
 }
 
 /// Diagnoses `seeds` cases of `make` in parallel and requires that in at least 95 % of
-/// them `effect` is named and `accurate` holds; prints the rates and any other findings.
+/// them `effect` is named and `accurate` holds; prints the rates and any other findings,
+/// and returns the share of cases with a finding of another effect.
 fn require_recall<F, A>(
     name: &str,
     seeds: std::ops::Range<u64>,
     make: F,
     effect: Effect,
     accurate: A,
-) where
+) -> f64
+where
     F: Fn(u64) -> Case + Sync,
     A: Fn(&Case, &Diagnosis) -> bool + Sync,
 {
@@ -473,6 +650,7 @@ fn require_recall<F, A>(
         gains, named,
         "{name}: a positive held-out gain in only {gains} of {named} named"
     );
+    others as f64 / n
 }
 
 const SEEDS: u64 = 60;
@@ -502,7 +680,7 @@ fn hidden_drift_is_found_with_its_rate() {
                 AxisKind::Linear => "rate_um_per_h",
                 AxisKind::Rotary => "rate_arcsec_per_h",
             };
-            rel_err(param(d, Effect::Drift, key), c.truth) <= 0.20
+            rel_err(param(d, Effect::Drift, key), c.truth) <= 0.20 && !d.has(Effect::WarmUp)
         },
     );
 }
@@ -520,6 +698,7 @@ fn hidden_thermal_growth_is_found() {
                 c.truth,
             ) <= 0.30
                 && !d.has(Effect::Drift)
+                && !d.has(Effect::WarmUp)
         },
     );
 }
@@ -533,7 +712,7 @@ fn hidden_run_offsets_are_found_not_taken_for_drift() {
         Effect::RunOffset,
         |c, d| {
             let rms = param(d, Effect::RunOffset, "rms_um");
-            !d.has(Effect::Drift) && rel_err(rms, c.truth) <= 0.5
+            !d.has(Effect::Drift) && !d.has(Effect::WarmUp) && rel_err(rms, c.truth) <= 0.5
         },
     );
 }
@@ -809,6 +988,45 @@ fn extended_model_closes_the_loop() {
     Simulation::from_yaml(&d.base_model.to_yaml(), "base.yaml").unwrap();
 }
 
+/// The extended model of a warm-up carries it as simulation keys, parses back, and
+/// simulating it finds the warm-up again with its time constant; its "effect removed"
+/// parameters are those of the warm machine (R falls).
+#[test]
+fn warm_up_extended_model_closes_the_loop() {
+    let case = warm_up_case(90_004, false);
+    let (_, d) = run_case(&case);
+    assert!(d.has(Effect::WarmUp), "{:?}", d.findings);
+    let yaml = d.extended_model.to_yaml();
+    assert!(
+        yaml.contains("warm_up_um") && yaml.contains("warm_up_tau_min"),
+        "{yaml}"
+    );
+    let sim =
+        Simulation::from_yaml(&yaml, "extended.yaml").unwrap_or_else(|e| panic!("{e}\n{yaml}"));
+    assert!(
+        rel_err(sim.model.warm_up_tau_min, case.truth) < 0.3,
+        "{yaml}"
+    );
+    let again = diagnose::diagnose(&sim.run(7), &options(3, None));
+    assert!(again.has(Effect::WarmUp), "{:?}", again.findings);
+    assert!(rel_err(param(&again, Effect::WarmUp, "tau_min"), case.truth) < 0.3);
+    let json = json_of(&d);
+    let corrected = json["corrected"].as_array().unwrap();
+    let without = corrected.iter().find(|c| c["effect"] == "warm_up").unwrap();
+    let r = &without["parameters"]["R"];
+    assert!(r["corrected"].as_f64().unwrap() < r["measured"].as_f64().unwrap());
+    let f = &json["findings"][0];
+    assert_eq!(f["effect"], "warm_up");
+    for key in [
+        "amplitude_um",
+        "tau_min",
+        "time_to_1um_min",
+        "remaining_at_end_um",
+    ] {
+        assert!(f["params"][key].is_number(), "{key}: {f}");
+    }
+}
+
 /// A periodic error the plan cannot resolve: no guess, advice on the plan that would.
 #[test]
 fn unresolvable_periodic_error_gives_the_plan_that_would_resolve_it() {
@@ -1030,6 +1248,22 @@ fn each_finding_says_what_to_do_next() {
     let (run, target) = (f.param("run").unwrap(), f.param("target").unwrap());
     assert!(a.contains(&format!("to target {target} (")), "{a}");
     assert!(a.contains(&format!("in run {run}")), "{a}");
+
+    let (a, d) = advice_of(|s| warm_up_case(s, false), 90_000..90_010, Effect::WarmUp);
+    let to_1um = param(&d, Effect::WarmUp, "time_to_1um_min");
+    let tau = param(&d, Effect::WarmUp, "tau_min");
+    assert!(
+        a.starts_with("warm the machine up before re-testing (ISO 230-2 3.3)"),
+        "{a}"
+    );
+    assert!(
+        a.contains(&format!(
+            "it took {} min to come within 1 µm",
+            shown(to_1um)
+        )),
+        "{a}"
+    );
+    assert!(a.contains(&format!("(τ = {} min)", shown(tau))), "{a}");
 
     let (a, d) = advice_of(scatter_case, 70_000..70_010, Effect::ScatterVariation);
     let ratio = param(&d, Effect::ScatterVariation, "ratio_end_to_start");

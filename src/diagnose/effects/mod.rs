@@ -14,6 +14,7 @@ pub mod reversal_variation;
 pub mod run_offset;
 pub mod scatter_variation;
 pub mod thermal_growth;
+pub mod warm_up;
 
 use super::analysis::Analysis;
 use super::finding::{Fields, Finding};
@@ -122,8 +123,11 @@ macro_rules! effects {
 }
 
 effects! {
-    /// Deviations move with time, uniformly along the axis (warm-up; ISO 230-2 3.3).
+    /// Deviations move linearly with time, uniformly along the axis (ISO 230-2 3.3).
     Drift = "drift" in drift,
+    /// Deviations approach a new level exponentially: the machine still warming up
+    /// (ISO 230-2 3.3).
+    WarmUp = "warm_up" in warm_up,
     /// A time-dependent error proportional to position (screw or scale expansion).
     ThermalGrowth = "thermal_growth" in thermal_growth,
     /// Each run shifted as a whole, not ordered in time (zero-point instability).

@@ -1,6 +1,7 @@
 //! Run offsets: each run shifted as a whole, not in time order (zero-point instability;
 //! Hemingray et al. 1971, §5.4). Tested in [`crate::diagnose::time`] as what a straight
-//! line in time leaves of the between-run variation, against the pure scatter.
+//! line and a warm-up curve in time leave of the between-run variation, against the pure
+//! scatter.
 
 use super::{Rule as EffectRule, Term};
 use crate::diagnose::analysis::Analysis;
@@ -82,7 +83,7 @@ impl EffectRule for Rule {
             units: a.units,
             evidence: Evidence {
                 statistic: format!(
-                    "F of the run means beyond a linear drift ({}, {} df)",
+                    "F of the run means beyond a linear drift and a warm-up curve ({}, {} df)",
                     r.df1, r.df2
                 ),
                 value: r.f,
