@@ -120,12 +120,12 @@ impl Fields for WarmUp {
 
     /// ISO 230-2 3.3: a warm-up before the test, as long as the machine takes to settle.
     fn advice(&self, u: Units) -> String {
-        let unit = match u.time {
-            TimeUnit::Hours => "min",
-            TimeUnit::Runs => "runs of the test cycle",
+        let (unit, long) = match u.time {
+            TimeUnit::Hours => ("min", "min"),
+            TimeUnit::Runs => ("runs", "runs of the test cycle"),
         };
         format!(
-            "warm the machine up before re-testing (ISO 230-2 3.3): here it took {} {unit} to come within 1 {ds} of its final level (τ = {} {unit}), and {} {ds} remained at the last reading; a compensation table cannot remove a warm-up",
+            "warm the machine up before re-testing (ISO 230-2 3.3): here it took {} {long} to come within 1 {ds} of its final level (τ = {} {unit}), and {} {ds} remained at the last reading; a compensation table cannot remove a warm-up",
             fmt(self.time_to_within_1),
             fmt(self.tau),
             fmt(self.remaining_at_end.abs()),
