@@ -6,7 +6,7 @@ use crate::campaign::{AxisSpec, Campaign, CampaignInfo, MachineInfo, SensorKind}
 use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::gost27843::{Gost27843, SMethod};
 use crate::evaluate::{Evaluation, Standard, StandardId};
-use crate::judge::{self, Judgement, Limits, Spec, Verdict};
+use crate::judge::{self, Decision, DecisionRule, Judgement, Limits, Spec, Verdict};
 use crate::measurement::{self, AxisData};
 use crate::nde::{self, NdeCorrection};
 use crate::rules::{self, Finding, PlanContext, Severity};
@@ -101,11 +101,38 @@ impl CampaignResult {
             (Verdict::Fail, 0),
             (Verdict::Noncompliant, 0),
             (Verdict::Error, 0),
+            (Verdict::Inconclusive, 0),
         ]);
         for t in &self.tests {
             *counts.entry(t.verdict).or_default() += 1;
         }
         counts
+    }
+
+    /// Whether a test was judged by ISO 14253-1 (then `inconclusive` is a possible verdict).
+    pub fn uses_uncertainty_rule(&self) -> bool {
+        self.tests.iter().any(|t| {
+            t.judgement
+                .as_ref()
+                .is_some_and(|j| j.rule == DecisionRule::Iso14253_1)
+        })
+    }
+
+    /// `16 pass, 2 fail, 1 noncompliant, 0 error` (and `, 1 inconclusive` when a test was
+    /// judged by ISO 14253-1).
+    pub fn counts_text(&self) -> String {
+        let c = self.counts();
+        let mut text = format!(
+            "{} pass, {} fail, {} noncompliant, {} error",
+            c[&Verdict::Pass],
+            c[&Verdict::Fail],
+            c[&Verdict::Noncompliant],
+            c[&Verdict::Error]
+        );
+        if self.uses_uncertainty_rule() {
+            text.push_str(&format!(", {} inconclusive", c[&Verdict::Inconclusive]));
+        }
+        text
     }
 
     /// True when every test passes.
@@ -307,7 +334,10 @@ fn run_axis(
             };
             match &spec {
                 Err(e) => slot.error(e.clone()),
-                Ok(spec) => run_test(slot, &axis, spec.as_deref(), path, diagnose),
+                Ok(spec) => {
+                    let rule = campaign.info.decision_rule;
+                    run_test(slot, &axis, spec.as_deref(), rule, path, diagnose)
+                }
             }
         })
         .collect();
@@ -349,10 +379,13 @@ fn relative_name(base: &Path, path: &Path) -> String {
         .join("/")
 }
 
+/// `campaign_rule`: the campaign's decision rule; the axis's own and then its spec's come
+/// first.
 fn run_test(
     slot: Slot,
     axis: &AxisSpec,
     spec: Option<&Spec>,
+    campaign_rule: Option<DecisionRule>,
     path: &Path,
     diagnose: bool,
 ) -> AxisTest {
@@ -386,11 +419,21 @@ fn run_test(
         match Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
             Err(e) => (Verdict::Error, Some(e), None),
             Ok(limits) => {
-                let judgement = judge::judge(&evaluation, &limits);
+                let rule = (axis.raw.decision_rule)
+                    .or(spec.and_then(|s| s.decision_rule))
+                    .or(campaign_rule)
+                    .unwrap_or_default();
+                let decision = Decision {
+                    rule,
+                    expanded: None,
+                };
+                let judgement = judge::judge(&evaluation, &limits, &decision);
                 let verdict = if findings.iter().any(|f| f.severity == Severity::Error) {
                     Verdict::Noncompliant
                 } else if judgement.failed().next().is_some() {
                     Verdict::Fail
+                } else if judgement.inconclusive().next().is_some() {
+                    Verdict::Inconclusive
                 } else {
                     Verdict::Pass
                 };

@@ -1,6 +1,7 @@
 //! The campaign file's types. Core keys are fixed (scripts write them); everything a
 //! test report needs by ISO 230-2 clause 7.1 has a key of its own.
 
+use crate::judge::DecisionRule;
 use crate::simulate::Cycle;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::describe;
@@ -34,6 +35,13 @@ pub struct CampaignInfo {
     /// Default acceptance spec for every axis.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spec: Option<String>,
+    /// Default decision rule for every axis (`simple` when absent; ISO 14253-1).
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub decision_rule: Option<DecisionRule>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
     /// Allow data paths that are absolute or leave the campaign's folder.
@@ -111,6 +119,13 @@ pub struct AxisRaw {
     /// Per-parameter limits, µm (linear) or arcsec (rotary), overriding the spec.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub tolerances: BTreeMap<String, f64>,
+    /// Decision rule of this axis: overrides its spec's and the campaign's.
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub decision_rule: Option<DecisionRule>,
     /// Lead-screw or encoder pitch, mm or deg.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pitch: Option<f64>,

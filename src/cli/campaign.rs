@@ -157,6 +157,21 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
     let why = match t.verdict {
         Verdict::Error => t.error.clone().unwrap_or_default(),
         Verdict::Noncompliant => t.broken_rules_text(),
+        Verdict::Inconclusive => t
+            .judgement
+            .iter()
+            .flat_map(|j| j.inconclusive())
+            .map(|c| {
+                format!(
+                    "{} = {} {unit} ± {} {unit} at its limit {} {unit}",
+                    c.key,
+                    fmt_fixed(c.value.abs(), 2),
+                    fmt_fixed(c.expanded_uncertainty.unwrap_or(0.0), 2),
+                    fmt_fixed(c.limit, 2)
+                )
+            })
+            .collect::<Vec<_>>()
+            .join(", "),
         _ => t
             .judgement
             .iter()
@@ -181,15 +196,11 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
 
 /// The one-line count of verdicts.
 pub fn counts_line(result: &CampaignResult) -> String {
-    let c = result.counts();
     format!(
-        "{}: {} tests: {} pass, {} fail, {} noncompliant, {} error",
+        "{}: {} tests: {}",
         result.info.name,
         result.tests.len(),
-        c[&Verdict::Pass],
-        c[&Verdict::Fail],
-        c[&Verdict::Noncompliant],
-        c[&Verdict::Error]
+        result.counts_text()
     )
 }
 

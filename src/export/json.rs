@@ -86,6 +86,10 @@ struct Judged<'a> {
     limits: BTreeMap<&'a str, f64>,
     checks: &'a [Check],
     failed: Vec<&'a str>,
+    /// The checks within their uncertainty zone (ISO 14253-1).
+    inconclusive: Vec<&'a str>,
+    /// The decision rule that decided: `simple` or `iso14253-1`.
+    decision_rule: &'static str,
     not_applicable_limits: &'a [String],
     no_tolerance: bool,
 }
@@ -102,6 +106,8 @@ impl<'a> Judged<'a> {
                 .collect(),
             checks: &j.checks,
             failed: j.failed().map(|c| c.key.as_str()).collect(),
+            inconclusive: j.inconclusive().map(|c| c.key.as_str()).collect(),
+            decision_rule: j.rule.key(),
             not_applicable_limits: &j.not_applicable,
             no_tolerance: j.limits.is_empty(),
         }

@@ -34,7 +34,8 @@ impl Exporter for Junit {
 
     fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
         let count = |v: Verdict| result.tests.iter().filter(|t| t.verdict == v).count();
-        let failures = count(Verdict::Fail) + count(Verdict::Noncompliant);
+        let failures =
+            count(Verdict::Fail) + count(Verdict::Noncompliant) + count(Verdict::Inconclusive);
         let errors = count(Verdict::Error);
         let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
         let _ = writeln!(
@@ -58,7 +59,12 @@ impl Exporter for Junit {
                 .collect();
             let f = tests
                 .iter()
-                .filter(|t| matches!(t.verdict, Verdict::Fail | Verdict::Noncompliant))
+                .filter(|t| {
+                    matches!(
+                        t.verdict,
+                        Verdict::Fail | Verdict::Noncompliant | Verdict::Inconclusive
+                    )
+                })
                 .count();
             let e = tests.iter().filter(|t| t.verdict == Verdict::Error).count();
             let _ = writeln!(
@@ -88,6 +94,9 @@ impl Exporter for Junit {
                     for c in j.failed() {
                         body.push(c.over_limit(3, unit));
                     }
+                    for c in j.inconclusive() {
+                        body.push(c.within_uncertainty(3, unit));
+                    }
                 }
                 for finding in t.broken_rules() {
                     body.push(format!(
@@ -97,7 +106,7 @@ impl Exporter for Junit {
                 }
                 match t.verdict {
                     Verdict::Pass => out.push_str("/>\n"),
-                    Verdict::Fail | Verdict::Noncompliant => {
+                    Verdict::Fail | Verdict::Noncompliant | Verdict::Inconclusive => {
                         let message = body.first().cloned().unwrap_or_default();
                         let _ = write!(
                             out,

@@ -4,7 +4,6 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::Role;
-use crate::judge::Verdict;
 use crate::rules::Severity;
 use crate::units::fmt_fixed;
 use std::fmt::Write;
@@ -57,16 +56,12 @@ fn header(result: &CampaignResult) -> String {
     .filter_map(|(label, value)| value.as_ref().map(|v| format!("{label}: {}", cell(v))))
     .collect();
     facts.push(format!("Campaign file: {}", cell(&result.file_name)));
-    let counts = result.counts();
     format!(
-        "# {}\n\n{}\n\n**{}** tests: {} pass, {} fail, {} noncompliant, {} error\n\n",
+        "# {}\n\n{}\n\n**{}** tests: {}\n\n",
         cell(&info.name),
         facts.join(" · "),
         result.tests.len(),
-        counts[&Verdict::Pass],
-        counts[&Verdict::Fail],
-        counts[&Verdict::Noncompliant],
-        counts[&Verdict::Error]
+        result.counts_text()
     )
 }
 

@@ -12,6 +12,63 @@ use std::collections::BTreeMap;
 /// What the summary says of a test judged against no limit.
 pub const NO_TOLERANCE: &str = "no tolerance applied";
 
+/// How a measured value is compared with its limit.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum DecisionRule {
+    /// The value as if it were exact: conformance when |value| ≤ limit.
+    #[default]
+    #[serde(rename = "simple")]
+    Simple,
+    /// ISO 14253-1: conformance proven when |value| ≤ limit − U, nonconformance proven
+    /// when |value| > limit + U, inconclusive in between (U: the expanded uncertainty).
+    #[serde(rename = "iso14253-1")]
+    Iso14253_1,
+}
+
+impl DecisionRule {
+    /// The name as campaigns, specs and outputs write it.
+    pub fn key(self) -> &'static str {
+        match self {
+            DecisionRule::Simple => "simple",
+            DecisionRule::Iso14253_1 => "iso14253-1",
+        }
+    }
+}
+
+/// What one check proves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Outcome {
+    Pass,
+    Fail,
+    /// Within the uncertainty zone around the limit: neither proven (ISO 14253-1).
+    Inconclusive,
+}
+
+/// The decision rule of a test and the expanded uncertainty U of its parameters.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Decision<'a> {
+    pub rule: DecisionRule,
+    /// U (k = 2) by parameter key, in the parameter's unit; a parameter without one is
+    /// judged with U = 0.
+    pub expanded: Option<&'a BTreeMap<String, f64>>,
+}
+
+impl Decision<'_> {
+    /// The outcome of |value| against `limit` with expanded uncertainty `u`; a rounding
+    /// tolerance of 1e-12 keeps a value printed equal to the bound on its side.
+    pub fn outcome(&self, value: f64, limit: f64, u: f64) -> Outcome {
+        let v = value.abs();
+        match self.rule {
+            DecisionRule::Simple if v <= limit + 1e-12 => Outcome::Pass,
+            DecisionRule::Simple => Outcome::Fail,
+            DecisionRule::Iso14253_1 if v <= limit - u + 1e-12 => Outcome::Pass,
+            DecisionRule::Iso14253_1 if v > limit + u + 1e-12 => Outcome::Fail,
+            DecisionRule::Iso14253_1 => Outcome::Inconclusive,
+        }
+    }
+}
+
 /// Where a limit comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -89,8 +146,13 @@ pub struct Check {
     pub limit: f64,
     /// limit − |value|: negative when over the limit.
     pub margin: f64,
+    /// Conformance proven under the decision rule (`outcome` is `pass`).
     pub pass: bool,
     pub source: LimitSource,
+    /// The expanded uncertainty the rule used (k = 2), when it used one.
+    #[serde(rename = "U", skip_serializing_if = "Option::is_none")]
+    pub expanded_uncertainty: Option<f64>,
+    pub outcome: Outcome,
 }
 
 impl Check {
@@ -103,6 +165,22 @@ impl Check {
         } else {
             f64::INFINITY
         }
+    }
+
+    /// "E = 7.900 µm within U = 1.500 µm of its limit 8.000 µm (ISO 14253-1: neither
+    /// conformance nor nonconformance proven)": an inconclusive check; `unit` may be empty.
+    pub fn within_uncertainty(&self, decimals: usize, unit: &str) -> String {
+        let with_unit = |v: f64| match unit {
+            "" => fmt_fixed(v, decimals),
+            _ => format!("{} {unit}", fmt_fixed(v, decimals)),
+        };
+        format!(
+            "{} = {} within U = {} of its limit {} (ISO 14253-1: neither conformance nor nonconformance proven)",
+            self.key,
+            with_unit(self.value),
+            with_unit(self.expanded_uncertainty.unwrap_or(0.0)),
+            with_unit(self.limit)
+        )
     }
 
     /// "E = 8.930 µm over its limit 6.000 µm (margin -2.930)": a failed check in the words of
@@ -126,14 +204,24 @@ impl Check {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Judgement {
     pub limits: Limits,
+    /// The decision rule the checks were made by.
+    pub rule: DecisionRule,
     pub checks: Vec<Check>,
     /// Limits whose parameter does not apply to this test (e.g. A with n = 1).
     pub not_applicable: Vec<String>,
 }
 
 impl Judgement {
+    /// The checks whose nonconformance is proven.
     pub fn failed(&self) -> impl Iterator<Item = &Check> {
-        self.checks.iter().filter(|c| !c.pass)
+        self.checks.iter().filter(|c| c.outcome == Outcome::Fail)
+    }
+
+    /// The checks inside the uncertainty zone (ISO 14253-1).
+    pub fn inconclusive(&self) -> impl Iterator<Item = &Check> {
+        self.checks
+            .iter()
+            .filter(|c| c.outcome == Outcome::Inconclusive)
     }
 
     /// The check using the largest share of its tolerance.
@@ -144,22 +232,32 @@ impl Judgement {
     }
 }
 
-/// Checks every limited parameter: |value| ≤ limit passes. Signed parameters (B̄) are
-/// compared by magnitude.
-pub fn judge(evaluation: &Evaluation, limits: &Limits) -> Judgement {
+/// Checks every limited parameter under the `decision` rule: with `simple`, |value| ≤
+/// limit passes; with ISO 14253-1 the expanded uncertainty decides a zone around the limit.
+/// Signed parameters (B̄) are compared by magnitude.
+pub fn judge(evaluation: &Evaluation, limits: &Limits, decision: &Decision) -> Judgement {
     let mut checks = Vec::new();
     let mut not_applicable = Vec::new();
     // In the standard's order of parameters, then any others.
     for p in &evaluation.parameters {
         if let Some(&(limit, source)) = limits.values.get(p.key()) {
-            let margin = limit - p.value.abs();
+            let expanded = match decision.rule {
+                DecisionRule::Simple => None,
+                DecisionRule::Iso14253_1 => {
+                    let u = decision.expanded.and_then(|m| m.get(p.key()));
+                    Some(u.copied().unwrap_or(0.0))
+                }
+            };
+            let outcome = decision.outcome(p.value, limit, expanded.unwrap_or(0.0));
             checks.push(Check {
                 key: p.key().to_string(),
                 value: p.value,
                 limit,
-                margin,
-                pass: margin >= -1e-12,
+                margin: limit - p.value.abs(),
+                pass: outcome == Outcome::Pass,
                 source,
+                expanded_uncertainty: expanded,
+                outcome,
             });
         }
     }
@@ -170,6 +268,7 @@ pub fn judge(evaluation: &Evaluation, limits: &Limits) -> Judgement {
     }
     Judgement {
         limits: limits.clone(),
+        rule: decision.rule,
         checks,
         not_applicable,
     }
@@ -186,16 +285,21 @@ pub enum Verdict {
     Noncompliant,
     /// The axis could not be evaluated.
     Error,
+    /// No parameter is proven over its limit, but one lies within its uncertainty zone
+    /// (ISO 14253-1): neither conformance nor nonconformance is proven.
+    Inconclusive,
 }
 
 impl Verdict {
-    /// Order for lists that put what needs attention first: fail, noncompliant, error, pass.
+    /// Order for lists that put what needs attention first: fail, noncompliant,
+    /// inconclusive, error, pass.
     pub fn attention_rank(self) -> u8 {
         match self {
             Verdict::Fail => 0,
             Verdict::Noncompliant => 1,
-            Verdict::Error => 2,
-            Verdict::Pass => 3,
+            Verdict::Inconclusive => 2,
+            Verdict::Error => 3,
+            Verdict::Pass => 4,
         }
     }
 
@@ -205,6 +309,7 @@ impl Verdict {
             Verdict::Fail => "fail",
             Verdict::Noncompliant => "noncompliant",
             Verdict::Error => "error",
+            Verdict::Inconclusive => "inconclusive",
         }
     }
 }
@@ -212,5 +317,57 @@ impl Verdict {
 impl std::fmt::Display for Verdict {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outcome(rule: DecisionRule, value: f64, limit: f64, u: f64) -> Outcome {
+        Decision {
+            rule,
+            expanded: None,
+        }
+        .outcome(value, limit, u)
+    }
+
+    /// Every boundary of both rules with limit 8 and U = 1.5 (exact in binary): 6.5 is
+    /// limit − U, 9.5 is limit + U.
+    #[test]
+    fn decision_rule_boundaries() {
+        use DecisionRule::{Iso14253_1 as Iso, Simple};
+        use Outcome::{Fail, Inconclusive, Pass};
+        let cases = [
+            (6.5, Pass, Pass),
+            (6.5 + 1e-9, Pass, Inconclusive),
+            (8.0, Pass, Inconclusive),
+            (8.0 + 1e-9, Fail, Inconclusive),
+            (9.5, Fail, Inconclusive),
+            (9.5 + 1e-9, Fail, Fail),
+            // Signed values by magnitude (B̄).
+            (-6.5, Pass, Pass),
+            (-9.6, Fail, Fail),
+        ];
+        for (value, simple, iso) in cases {
+            assert_eq!(outcome(Simple, value, 8.0, 1.5), simple, "simple {value}");
+            assert_eq!(outcome(Iso, value, 8.0, 1.5), iso, "iso {value}");
+        }
+        // With U = 0 ISO 14253-1 decides as the simple rule.
+        for value in [7.9, 8.0, 8.0 + 1e-9] {
+            assert_eq!(
+                outcome(Iso, value, 8.0, 0.0),
+                outcome(Simple, value, 8.0, 0.0)
+            );
+        }
+    }
+
+    #[test]
+    fn rule_names_are_the_serialised_names() {
+        for rule in [DecisionRule::Simple, DecisionRule::Iso14253_1] {
+            assert_eq!(serde_json::to_value(rule).unwrap(), rule.key());
+            let back: DecisionRule = serde_json::from_value(rule.key().into()).unwrap();
+            assert_eq!(back, rule);
+        }
     }
 }

@@ -40,6 +40,10 @@ pub struct Spec {
     /// The standard whose parameters the limits name.
     #[serde(default)]
     pub standard: Option<String>,
+    /// Decision rule of the agreement (ISO 14253-1): overrides the campaign's, not an
+    /// axis's own.
+    #[serde(default, deserialize_with = "crate::yaml::optional_keyword")]
+    pub decision_rule: Option<super::DecisionRule>,
     #[serde(default)]
     pub linear: Vec<Band>,
     #[serde(default)]

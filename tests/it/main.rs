@@ -10,6 +10,7 @@ mod campaign;
 mod catalogue;
 mod cli;
 mod console;
+mod decision;
 mod diagnose;
 mod fuzz_corpus;
 mod gost27843;

@@ -146,6 +146,18 @@ impl VerdictText {
                     .join(", ")
             ),
             Verdict::Error => t.error.clone().unwrap_or_default(),
+            Verdict::Inconclusive => {
+                let zone: Vec<String> = t
+                    .judgement
+                    .iter()
+                    .flat_map(|j| j.inconclusive())
+                    .map(|c| symbol_of(t, &c.key))
+                    .collect();
+                format!(
+                    "Within the uncertainty zone of the limit (ISO 14253-1): {}. Neither conformance nor nonconformance is proven.",
+                    zone.join(", ")
+                )
+            }
         };
         VerdictText {
             key: t.verdict,

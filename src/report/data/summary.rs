@@ -27,6 +27,8 @@ struct Counts {
     fail: usize,
     noncompliant: usize,
     error: usize,
+    /// Shown when a test was judged by ISO 14253-1.
+    inconclusive: Option<usize>,
 }
 
 /// One axis test: its headline parameters (A, E, R, B of its standard), the parameter
@@ -78,6 +80,9 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
             fail: counts[&Verdict::Fail],
             noncompliant: counts[&Verdict::Noncompliant],
             error: counts[&Verdict::Error],
+            inconclusive: result
+                .uses_uncertainty_rule()
+                .then(|| counts[&Verdict::Inconclusive]),
         },
         rows: tests.into_iter().map(row).collect(),
         errors: with(Verdict::Error, |t| t.error.clone().unwrap_or_default()),

@@ -1,0 +1,91 @@
+//! Decision rules (ISO 14253-1) from the campaign, an axis and a spec: which decides, what
+//! `results.json` and the console say, and a wrong name in the user's words.
+
+use crate::common::{axcheck, scratch};
+
+const SPEC: &str = "name: agreed\nstandard: iso230-2\ndecision_rule: simple\nlinear:\n  - tolerances: {E: 20, R: 12}\n";
+
+/// Campaign iso14253-1; X follows it, Y says `simple`, Z's spec says `simple`, W's spec
+/// says `simple` but W itself `iso14253-1`: most specific first (axis, spec, campaign).
+#[test]
+fn the_axis_then_its_spec_then_the_campaign_decide() {
+    let dir = scratch("decision-rule");
+    std::fs::copy("tests/data/iso230-2_table2.csv", dir.join("data/x.csv")).unwrap();
+    std::fs::create_dir_all(dir.join("specs")).unwrap();
+    std::fs::write(dir.join("specs/agreed.yaml"), SPEC).unwrap();
+    let campaign = dir.join("campaign.yaml");
+    std::fs::write(
+        &campaign,
+        "campaign: {name: rules, decision_rule: iso14253-1}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/x.csv, tolerances: {E: 20}}\n      - {name: Y, kind: linear, data: data/x.csv, tolerances: {E: 20}, decision_rule: simple}\n      - {name: Z, kind: linear, data: data/x.csv, spec: agreed}\n      - {name: W, kind: linear, data: data/x.csv, spec: agreed, decision_rule: iso14253-1}\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+        "--no-diagnose",
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    // A test was judged by ISO 14253-1: the count says inconclusive too.
+    assert!(
+        stdout.contains("4 tests: 4 pass, 0 fail, 0 noncompliant, 0 error, 0 inconclusive"),
+        "{stdout}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
+    let rules: Vec<&str> = json["axes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["decision_rule"].as_str().unwrap())
+        .collect();
+    assert_eq!(rules, ["iso14253-1", "simple", "simple", "iso14253-1"]);
+    let check = &json["axes"][0]["checks"][0];
+    assert_eq!(check["key"], "E");
+    assert_eq!(check["outcome"], "pass");
+    assert!(check.get("U").is_some(), "ISO 14253-1 says the U it used");
+    assert!(json["axes"][1]["checks"][0].get("U").is_none());
+    assert_eq!(json["counts"]["inconclusive"], 0);
+    let summary = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    assert!(summary.contains("0 error, 0 inconclusive"), "{summary}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A wrong name on an axis fails that axis (the rest of the campaign goes on); on the
+/// campaign it stops the run (exit 2). Both name file, line, column and the names.
+#[test]
+fn a_wrong_rule_name_is_said_with_its_place_and_the_names() {
+    let dir = scratch("decision-rule-bad");
+    std::fs::copy("tests/data/iso230-2_table2.csv", dir.join("data/x.csv")).unwrap();
+    let campaign = dir.join("campaign.yaml");
+    let axes = "machines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/x.csv, decision_rule: iso-14253}\n      - {name: Y, kind: linear, data: data/x.csv}\n";
+    std::fs::write(&campaign, format!("campaign: {{name: rules}}\n{axes}")).unwrap();
+    let (code, stdout, stderr) = axcheck(&["check", campaign.to_str().unwrap()]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stdout.contains("1 pass, 0 fail, 0 noncompliant, 1 error"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("campaign.yaml:5:66: machines[0].axes[0].decision_rule: unknown decision_rule `iso-14253`; expected simple or iso14253-1"),
+        "{stdout}"
+    );
+    std::fs::write(
+        &campaign,
+        format!(
+            "campaign: {{name: rules, decision_rule: iso}}\n{}",
+            axes.replace(", decision_rule: iso-14253", "")
+        ),
+    )
+    .unwrap();
+    let (code, _, stderr) = axcheck(&["check", campaign.to_str().unwrap()]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("campaign.yaml:1:40: campaign.decision_rule: unknown decision_rule `iso`; expected simple or iso14253-1"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
