@@ -172,11 +172,33 @@ fn ends(e: &Evaluation, approach: Approach, term: Term, upper: bool) -> Vec<End>
     out
 }
 
-/// The end whose term is closest to `value` (the evaluator's max or min).
-fn closest(ends: Vec<End>, value: f64) -> Option<End> {
+/// The ends whose term is `value` (the evaluator's max or min; several on a tie), or the
+/// closest one.
+fn matching(ends: Vec<End>, value: f64) -> Vec<End> {
+    let off = |x: &End| (x.value - value).abs();
+    let tie = 1e-9 * value.abs().max(1.0);
+    let best = ends
+        .iter()
+        .map(off)
+        .filter(|d| d.is_finite())
+        .fold(f64::INFINITY, f64::min);
     ends.into_iter()
-        .filter(|x| x.value.is_finite())
-        .min_by(|a, b| (a.value - value).abs().total_cmp(&(b.value - value).abs()))
+        .filter(|x| off(x) <= best.max(tie))
+        .collect()
+}
+
+/// The pair of ends farthest apart: on a tie the longer length, the conservative one.
+fn farthest(top: &[End], bottom: &[End]) -> Option<(usize, usize)> {
+    let mut best: Option<(usize, usize, f64)> = None;
+    for (a, x) in top.iter().enumerate() {
+        for (b, y) in bottom.iter().enumerate() {
+            let length = (x.position - y.position).abs();
+            if best.is_none_or(|(_, _, l)| length > l) {
+                best = Some((a, b, length));
+            }
+        }
+    }
+    best.map(|(a, b, _)| (a, b))
 }
 
 fn quadrature(a: Option<f64>, b: Option<f64>) -> Option<f64> {
@@ -188,11 +210,12 @@ fn range(e: &Evaluation, p: &Parameter, term: Term) -> Extent {
         return Extent::range(travel(e));
     };
     let approach = p.def.approach;
-    let top = closest(ends(e, approach, term, true), hi);
-    let bottom = closest(ends(e, approach, term, false), lo);
-    let (Some(top), Some(bottom)) = (top, bottom) else {
+    let top = matching(ends(e, approach, term, true), hi);
+    let bottom = matching(ends(e, approach, term, false), lo);
+    let Some((a, b)) = farthest(&top, &bottom) else {
         return Extent::range(travel(e));
     };
+    let (top, bottom) = (&top[a], &bottom[b]);
     Extent {
         shape: Shape::Range,
         length: (top.position - bottom.position).abs(),

@@ -20,3 +20,4 @@ mod reports;
 mod rules;
 mod simulator;
 mod standards;
+mod uncertainty;
