@@ -4,8 +4,8 @@
 use serde::{Serialize, Serializer};
 
 /// How an input quantity's value turns into a standard uncertainty: the divisor of its
-/// distribution (GUM 4.3.7 for the rectangular; a stated multiple of a standard deviation is divided
-/// by its multiplier, GUM 4.3.3).
+/// distribution (GUM 4.3.7 for the rectangular; a stated multiple of a standard deviation
+/// is divided by its multiplier, GUM 4.3.3).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Distribution {
     /// A stated expanded uncertainty U with coverage factor `k` (a calibration

@@ -110,11 +110,9 @@ fn notes(setup: &Setup, e: &Evaluation) -> Vec<String> {
     use crate::evaluate::StandardId;
     use crate::units::AxisKind;
     let mut notes = Vec::new();
-    let measures = setup.instrument.kind.measures();
-    if measures.is_some_and(|m| m != e.kind) {
+    if let Some(m) = setup.instrument.kind.measures().filter(|&m| m != e.kind) {
         notes.push(format!(
-            "the instrument measures a {} quantity on a {} axis: its stated accuracy is taken in {}",
-            measures.map_or("", |m| if m == AxisKind::Linear { "linear" } else { "angular" }),
+            "an instrument for {m} axes on a {} axis: its stated accuracy is taken in {}",
             e.kind,
             e.kind.deviation_symbol()
         ));
@@ -133,7 +131,8 @@ fn notes(setup: &Setup, e: &Evaluation) -> Vec<String> {
         );
     } else if matches!(e.standard, StandardId::Vdi3441 | StandardId::Nmtba) {
         notes.push(format!(
-            "{}: instrument and environment only; the statistical part is computed for ISO 230-2 and GOST 27843",
+            "{}: instrument and environment only (the statistical part is computed for \
+             ISO 230-2 and GOST 27843)",
             e.standard.title()
         ));
     }

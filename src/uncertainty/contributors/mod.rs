@@ -32,9 +32,9 @@ use crate::units::AxisKind;
 /// Sensitivities of the refractive index of air (and so of the laser's wavelength in air)
 /// near 20 °C, 101.325 kPa and 50 %RH, in ppm per unit, from Edlén's equation in the
 /// shop-floor form of Stone and Zimmerman (NIST, "Index of Refraction of Air",
-/// Appendix B): n = 1 + 7.86·10⁻⁴·p/(273 + t) − 1.5·10⁻¹¹·RH·(t² + 160), p in kPa. The
-/// temperature's is that of the air's density (dry air); at 50 %RH the water vapour term
-/// adds 0.03 ppm/°C. The HP 5528A User's Guide (section 6) rounds them to 1 ppm per 1 °C,
+/// Appendix B): n = 1 + 7.86·10⁻⁴·p/(273 + t) − 1.5·10⁻¹¹·RH·(t² + 160), p in kPa.
+/// The temperature's is the air density's (dry air); at 50 %RH the water vapour term adds
+/// 0.03 ppm/°C. The HP 5528A User's Guide (section 6) rounds them to 1 ppm per 1 °C,
 /// per 2.5 mmHg and per 80 %RH.
 pub mod edlen {
     /// |∂n/∂t|, ppm per °C.
