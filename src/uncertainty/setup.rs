@@ -214,6 +214,20 @@ impl Default for Thermal {
 }
 
 impl Thermal {
+    /// Sets the mean and the change from the material sensors' (start, end) readings, °C:
+    /// the mean of all readings (as the NDE correction uses it) and the change of the
+    /// sensors' mean from start to end. No readings: left as they are.
+    pub fn set_from_sensors(&mut self, readings: &[(f64, f64)]) {
+        if readings.is_empty() {
+            return;
+        }
+        let count = readings.len() as f64;
+        let start = readings.iter().map(|r| r.0).sum::<f64>() / count;
+        let end = readings.iter().map(|r| r.1).sum::<f64>() / count;
+        self.mean_c = Some((start + end) / 2.0);
+        self.change_c = end - start;
+    }
+
     /// |T − 20 °C|: from the recorded mean, else the assumed band.
     pub fn offset_from_20_c(&self) -> f64 {
         self.mean_c
@@ -323,6 +337,18 @@ mod tests {
                     == (kind == InstrumentKind::LaserInterferometer)
             );
         }
+    }
+
+    /// ISO 230-2 Table 2's sensors: 21.8 → 22.9 and 22.4 → 23.1 °C: T = 22.55 °C,
+    /// ΔT = 23.0 − 22.1 = 0.9 °C.
+    #[test]
+    fn mean_and_change_from_start_and_end_readings() {
+        let mut t = Thermal::default();
+        t.set_from_sensors(&[]);
+        assert_eq!((t.mean_c, t.change_c), (None, 0.0));
+        t.set_from_sensors(&[(21.8, 22.9), (22.4, 23.1)]);
+        assert!((t.mean_c.unwrap() - 22.55).abs() < 1e-12);
+        assert!((t.change_c - 0.9).abs() < 1e-12);
     }
 
     #[test]

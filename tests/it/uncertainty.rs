@@ -182,8 +182,9 @@ fn iso_table_2_budget_checked_by_hand() {
     let mut setup = Setup::default();
     setup.thermal.nde_corrected = true;
     setup.thermal.coefficient_um_per_m_c = 11.0;
-    setup.thermal.mean_c = Some((21.8 + 22.9 + 22.4 + 23.1) / 4.0);
-    setup.thermal.change_c = (22.9 + 23.1) / 2.0 - (21.8 + 22.4) / 2.0;
+    setup
+        .thermal
+        .set_from_sensors(&[(21.8, 22.9), (22.4, 23.1)]);
     setup.air.as_mut().unwrap().temperature_change_c = 20.9 - 20.6;
     let u = uncertainty::evaluate(&setup, &e);
     let b = &u.budget;
@@ -229,7 +230,7 @@ fn iso_table_2_budget_checked_by_hand() {
     assert!(u.notes.is_empty(), "{:?}", u.notes);
 }
 
-/// A rotary axis (0° to 330° every 30°) measured with an angular interferometer: ±1″
+/// A rotary axis (five targets from 0° to 330°) measured with an angular interferometer: ±1″
 /// rectangular, 0.1″ steps, no length dependence, no air, no thermal expansion. Over the
 /// travel: u = √((1/√3)² + (0.05/√3)²) = 0.578071″, U = 1.156143″, whatever the angle.
 #[test]
@@ -250,6 +251,14 @@ fn rotary_budget_in_arcseconds() {
     check(e_budget, "calibration", 0.577_350, None);
     assert!(e_budget.line("mean_of_n").is_some());
     assert!(u.notes.is_empty(), "{:?}", u.notes);
+    // A laser's defaults on a rotary axis: its ppm part in arcsec, no air or thermal
+    // lines, and a note.
+    let u = uncertainty::evaluate(&Setup::default(), &e);
+    let names: Vec<&str> = u.budget.lines.iter().map(|l| l.contributor).collect();
+    assert_eq!(names, ["calibration", "resolution"]);
+    // 0.05 ppm of 330° = 0.05e-6 × 330 × 3600″ = 0.0594″.
+    assert_close("ppm of an angle", u.budget.lines[0].value, 0.0594, 1e-9);
+    assert!(u.notes[0].starts_with("an instrument for linear axes on a rotary axis"));
 }
 
 #[test]
