@@ -20,5 +20,6 @@ pub mod report;
 pub mod rules;
 pub mod simulate;
 pub mod suggest;
+pub mod uncertainty;
 pub mod units;
 pub mod yaml;

@@ -11,6 +11,7 @@ const LAYERS: &[&[&str]] = &[
     &["units", "suggest", "atomic"],
     &["measurement", "yaml"],
     &["evaluate", "nde", "simulate"],
+    &["uncertainty"],
     &["rules", "judge", "diagnose"],
     &["campaign"],
     &["batch"],

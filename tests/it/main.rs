@@ -21,3 +21,4 @@ mod reports;
 mod rules;
 mod simulator;
 mod standards;
+mod uncertainty;
