@@ -10,6 +10,7 @@ use crate::judge::{self, Decision, DecisionRule, Judgement, Limits, Spec, Verdic
 use crate::measurement::{self, AxisData};
 use crate::nde::{self, NdeCorrection};
 use crate::rules::{self, Finding, PlanContext, Severity};
+use crate::uncertainty::{InstrumentKind, Setup, Uncertainty};
 use crate::units::AxisKind;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -35,6 +36,8 @@ pub struct AxisTest {
     pub judgement: Option<Judgement>,
     pub findings: Vec<Finding>,
     pub nde: Option<NdeCorrection>,
+    /// The measurement uncertainty of the parameters (GUM budget, U with k = 2).
+    pub uncertainty: Option<Uncertainty>,
     /// Model check and diagnosis, when the run asked for it.
     pub diagnosis: Option<crate::diagnose::Diagnosis>,
     /// This test predicted by the models of each other diagnosed test of the axis.
@@ -272,6 +275,7 @@ impl Slot {
             judgement: None,
             findings: Vec::new(),
             nde: None,
+            uncertainty: None,
             diagnosis: None,
             out_of_test: Vec::new(),
         }
@@ -414,6 +418,8 @@ fn run_test(
     } else {
         crate::evaluate::evaluate(&data, axis.standard)
     };
+    let setup = uncertainty_setup(axis, &data, nde.as_ref());
+    let uncertainty = crate::uncertainty::evaluate(&setup, &evaluation);
     let (first, last) = data.measurement_travel();
     let (verdict, error, judgement) =
         match Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
@@ -425,7 +431,7 @@ fn run_test(
                     .unwrap_or_default();
                 let decision = Decision {
                     rule,
-                    expanded: None,
+                    expanded: Some(&uncertainty.expanded),
                 };
                 let judgement = judge::judge(&evaluation, &limits, &decision);
                 let verdict = if findings.iter().any(|f| f.severity == Severity::Error) {
@@ -452,6 +458,7 @@ fn run_test(
     });
     AxisTest {
         diagnosis,
+        uncertainty: Some(uncertainty),
         data: Some(data),
         evaluation: Some(evaluation),
         judgement,
@@ -459,6 +466,51 @@ fn run_test(
         nde,
         ..slot.outcome(verdict, error)
     }
+}
+
+/// What the uncertainty budget knows of a test from the campaign (clause 7.1 block): the
+/// instrument (its `kind`, else guessed from its name, else the axis kind's usual one),
+/// the air temperature's change, the material sensors' readings, the expansion
+/// coefficient and whether the deviations are corrected to 20 °C (NDE, clause 3.1).
+fn uncertainty_setup(axis: &AxisSpec, data: &AxisData, nde: Option<&NdeCorrection>) -> Setup {
+    let c = &axis.raw.conditions;
+    let kind = c.instrument.as_ref().and_then(|i| {
+        i.kind
+            .or_else(|| i.name.as_deref().and_then(InstrumentKind::from_name))
+    });
+    let mut setup = kind.map_or_else(|| Setup::for_axis(axis.raw.kind), Setup::for_instrument);
+    if let (Some(air), Some(a)) = (setup.air.as_mut(), c.air.as_ref())
+        && let (Some(start), Some(end)) = (a.temperature_start_c, a.temperature_end_c)
+    {
+        air.temperature_change_c = end - start;
+    }
+    let material: Vec<(f64, f64)> = c
+        .temperature_sensors
+        .iter()
+        .filter(|s| s.kind == SensorKind::Material)
+        .filter_map(|s| Some((s.start_c?, s.end_c?)))
+        .collect();
+    setup.thermal.set_from_sensors(&material);
+    if let Some(alpha) = c.nde.as_ref().and_then(|n| n.coefficient_um_per_m_c) {
+        setup.thermal.coefficient_um_per_m_c = alpha;
+    }
+    setup.thermal.nde_corrected = nde.is_some() || c.nde.as_ref().is_some_and(|n| n.corrected);
+    if let Some(n) = nde {
+        setup.thermal.mean_c = Some(n.mean_temperature_c);
+        // Corrected reading by reading: the change during the test is corrected too.
+        if has_material_temperatures(data) {
+            setup.thermal.change_c = 0.0;
+        }
+    }
+    setup
+}
+
+/// Whether the file gives a material temperature per reading (`temp_<name>_c` columns
+/// other than the air's), as the NDE correction reads them.
+fn has_material_temperatures(data: &AxisData) -> bool {
+    data.temperature_names
+        .iter()
+        .any(|n| !n.to_ascii_lowercase().contains("air"))
 }
 
 /// What the test-plan rules need to know of an axis from the campaign.
@@ -484,11 +536,7 @@ pub fn apply_nde(axis: &AxisSpec, data: AxisData) -> (AxisData, Option<NdeCorrec
     if nde.corrected {
         return (data, None);
     }
-    let temperature = if data
-        .temperature_names
-        .iter()
-        .any(|n| !n.to_ascii_lowercase().contains("air"))
-    {
+    let temperature = if has_material_temperatures(&data) {
         Some(nde::Temperature::PerReading)
     } else {
         let readings: Vec<f64> = axis

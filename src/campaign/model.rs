@@ -3,6 +3,7 @@
 
 use crate::judge::DecisionRule;
 use crate::simulate::Cycle;
+use crate::uncertainty::InstrumentKind;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::describe;
 use serde::de::{Deserializer, Error as _, IgnoredAny};
@@ -199,6 +200,14 @@ pub struct Conditions {
 pub struct Instrument {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
+    /// What kind of instrument (it sets the uncertainty budget's defaults); guessed from
+    /// `name` when absent.
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub kind: Option<InstrumentKind>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub serial: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]

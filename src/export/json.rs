@@ -17,6 +17,7 @@ use crate::evaluate::json::{ParameterValues, TargetIndices};
 use crate::judge::{Check, Judgement, Verdict};
 use crate::nde::NdeCorrection;
 use crate::rules::Finding;
+use crate::uncertainty::{BudgetLine, Uncertainty};
 use crate::units::{AxisKind, Travel};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -47,6 +48,8 @@ pub struct TestJson<'a> {
     judgement: Option<Judged<'a>>,
     rules: &'a [Finding],
     nde: Option<&'a NdeCorrection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    uncertainty: Option<UncertaintyJson<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     diagnosis: Option<&'a Diagnosis>,
     /// This test predicted by the models of the axis's other tests (several data files).
@@ -114,6 +117,37 @@ impl<'a> Judged<'a> {
     }
 }
 
+/// A test's measurement uncertainty: U (k = 2) per parameter and the budget over the full
+/// measurement travel, one line per contributor.
+#[derive(Serialize)]
+struct UncertaintyJson<'a> {
+    k: f64,
+    /// Deviation unit of U and of the budget: `um` or `arcsec`.
+    unit: &'static str,
+    #[serde(rename = "U")]
+    expanded: &'a BTreeMap<String, f64>,
+    /// The length the budget is for (the measurement travel), mm or deg.
+    budget_length: f64,
+    /// Combined standard uncertainty of the budget, deviation unit.
+    budget_u_c: f64,
+    budget: &'a [BudgetLine],
+    notes: &'a [String],
+}
+
+impl<'a> UncertaintyJson<'a> {
+    fn new(u: &'a Uncertainty) -> UncertaintyJson<'a> {
+        UncertaintyJson {
+            k: u.k,
+            unit: u.unit,
+            expanded: &u.expanded,
+            budget_length: u.budget.length,
+            budget_u_c: u.budget.combined,
+            budget: &u.budget.lines,
+            notes: &u.notes,
+        }
+    }
+}
+
 /// The JSON view of one test.
 pub fn test_json(t: &AxisTest) -> TestJson<'_> {
     TestJson {
@@ -150,6 +184,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         judgement: t.judgement.as_ref().map(Judged::new),
         rules: &t.findings,
         nde: t.nde.as_ref(),
+        uncertainty: t.uncertainty.as_ref().map(UncertaintyJson::new),
         diagnosis: t.diagnosis.as_ref(),
         out_of_test: &t.out_of_test,
         error: t.error.as_deref(),

@@ -17,7 +17,7 @@ use crate::units::AxisKind;
 use serde::Serialize;
 
 /// The measuring instrument's kind: it decides the defaults and which contributors apply.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum InstrumentKind {
     /// A laser interferometer measuring length in air, with environmental compensation.

@@ -7,6 +7,8 @@ const SPEC: &str = "name: agreed\nstandard: iso230-2\ndecision_rule: simple\nlin
 
 /// Campaign iso14253-1; X follows it, Y says `simple`, Z's spec says `simple`, W's spec
 /// says `simple` but W itself `iso14253-1`: most specific first (axis, spec, campaign).
+/// The file has no temperatures, so its budget assumes ±1 °C about 20 °C: U(E) = 14.08 µm,
+/// and E = 7.70 µm against 20 µm is inconclusive under ISO 14253-1 (7.70 > 20 − 14.08).
 #[test]
 fn the_axis_then_its_spec_then_the_campaign_decide() {
     let dir = scratch("decision-rule");
@@ -28,10 +30,13 @@ fn the_axis_then_its_spec_then_the_campaign_decide() {
         "--no-pdf",
         "--no-diagnose",
     ]);
-    assert_eq!(code, 0, "{stdout}{stderr}");
-    // A test was judged by ISO 14253-1: the count says inconclusive too.
+    assert_eq!(code, 1, "inconclusive fails the gate: {stdout}{stderr}");
     assert!(
-        stdout.contains("4 tests: 4 pass, 0 fail, 0 noncompliant, 0 error, 0 inconclusive"),
+        stdout.contains("4 tests: 2 pass, 0 fail, 0 noncompliant, 0 error, 2 inconclusive"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("INCONCLUSIVE M X  E = 7.70 µm ± 14.08 µm at its limit 20.00 µm"),
         "{stdout}"
     );
     let json: serde_json::Value =
@@ -43,14 +48,28 @@ fn the_axis_then_its_spec_then_the_campaign_decide() {
         .map(|a| a["decision_rule"].as_str().unwrap())
         .collect();
     assert_eq!(rules, ["iso14253-1", "simple", "simple", "iso14253-1"]);
-    let check = &json["axes"][0]["checks"][0];
+    let x = &json["axes"][0];
+    let check = &x["checks"][0];
     assert_eq!(check["key"], "E");
-    assert_eq!(check["outcome"], "pass");
-    assert!(check.get("U").is_some(), "ISO 14253-1 says the U it used");
+    assert_eq!(check["outcome"], "inconclusive");
+    assert_eq!(check["pass"], false);
+    // The U the rule used is the budget's U of E.
+    assert_eq!(check["U"], x["uncertainty"]["U"]["E"]);
+    assert!((check["U"].as_f64().unwrap() - 14.08).abs() < 0.005);
+    assert_eq!(x["uncertainty"]["k"], 2.0);
+    assert_eq!(x["verdict"], "inconclusive");
+    assert_eq!(x["inconclusive"], serde_json::json!(["E"]));
+    // Under the simple rule the same value passes and no U is used.
+    assert_eq!(json["axes"][1]["verdict"], "pass");
     assert!(json["axes"][1]["checks"][0].get("U").is_none());
-    assert_eq!(json["counts"]["inconclusive"], 0);
+    assert_eq!(json["counts"]["inconclusive"], 2);
     let summary = std::fs::read_to_string(out.join("summary.md")).unwrap();
-    assert!(summary.contains("0 error, 0 inconclusive"), "{summary}");
+    assert!(summary.contains("0 error, 2 inconclusive"), "{summary}");
+    let junit = std::fs::read_to_string(out.join("junit.xml")).unwrap();
+    assert!(
+        junit.contains("<failure type=\"inconclusive\" message=\"E = 7.700 µm within U = 14.085 µm of its limit 20.000 µm"),
+        "{junit}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -3,10 +3,11 @@
 //! and the diagnosis.
 
 use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
+use super::uncertainty::{UncertaintySection, uncertainty_section};
 use super::{CampaignHeader, generator, num, opt, pos, s_symbol, symbol_of};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::{DirectionResult, Evaluation, StandardId};
-use crate::judge::Verdict;
+use crate::judge::{Outcome, Verdict};
 use crate::report::diagnosis_data::{DiagnosisSection, diagnosis_section};
 use crate::rules::Finding;
 use crate::units::{Travel, fmt_position};
@@ -31,6 +32,7 @@ pub struct AxisReport<'a> {
     findings: &'a [Finding],
     has_charts: bool,
     diagnosis: Option<DiagnosisSection<'a>>,
+    uncertainty: Option<UncertaintySection<'a>>,
     generator: String,
 }
 
@@ -62,6 +64,11 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .diagnosis
             .as_ref()
             .map(|d| diagnosis_section(d, &t.out_of_test)),
+        uncertainty: t
+            .uncertainty
+            .as_ref()
+            .zip(kind)
+            .map(|(u, k)| uncertainty_section(u, k.deviation_symbol(), k.position_unit())),
         generator: generator(),
     }
 }
@@ -147,15 +154,24 @@ impl VerdictText {
             ),
             Verdict::Error => t.error.clone().unwrap_or_default(),
             Verdict::Inconclusive => {
+                let unit = t.kind().map_or("", |k| k.deviation_symbol());
                 let zone: Vec<String> = t
                     .judgement
                     .iter()
                     .flat_map(|j| j.inconclusive())
-                    .map(|c| symbol_of(t, &c.key))
+                    .map(|c| {
+                        format!(
+                            "{} = {} ± {} {unit} against {} {unit}",
+                            symbol_of(t, &c.key),
+                            num(c.value),
+                            num(c.expanded_uncertainty.unwrap_or(0.0)),
+                            num(c.limit)
+                        )
+                    })
                     .collect();
                 format!(
-                    "Within the uncertainty zone of the limit (ISO 14253-1): {}. Neither conformance nor nonconformance is proven.",
-                    zone.join(", ")
+                    "Within the uncertainty of the measurement at the limit (ISO 14253-1: limit ± U): {}. Neither conformance nor nonconformance is proven.",
+                    zone.join("; ")
                 )
             }
         };
@@ -174,6 +190,8 @@ struct ParameterRow {
     name: &'static str,
     clause: String,
     value: String,
+    /// The expanded uncertainty U (k = 2) of the value, `±0.87`, or `–`.
+    u: String,
     limit: String,
     margin: String,
     status: &'static str,
@@ -205,9 +223,17 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
                     .clause()
                     .replace(" (GB/T 17421.2 amendment No. 1)", ", amd. 1"),
                 value: num(p.value),
+                u: t.uncertainty
+                    .as_ref()
+                    .and_then(|u| u.expanded_of(p.key()))
+                    .map_or("–".into(), |u| format!("±{}", num(u))),
                 limit: check.map_or("–".into(), |c| num(c.limit)),
                 margin: check.map_or("–".into(), |c| num(c.margin)),
-                status: check.map_or("", |c| if c.pass { "pass" } else { "fail" }),
+                status: check.map_or("", |c| match c.outcome {
+                    Outcome::Pass => "pass",
+                    Outcome::Fail => "fail",
+                    Outcome::Inconclusive => "inconclusive",
+                }),
                 at,
             }
         })
@@ -220,6 +246,7 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
             _ => def.clause.to_string(),
         },
         value: "not applicable".into(),
+        u: "–".into(),
         limit: "–".into(),
         margin: "–".into(),
         status: "n/a",

@@ -9,6 +9,7 @@
 mod axis;
 mod conditions;
 mod summary;
+mod uncertainty;
 
 pub use axis::{AxisReport, axis_report};
 pub use summary::{Summary, summary};

@@ -1,0 +1,84 @@
+//! The report's measurement-uncertainty section: the budget over the measurement travel,
+//! one row per contributor (GUM: value, distribution, u, sensitivity, c·u, share), u_c
+//! and U with k = 2, and what was assumed.
+
+use super::num;
+use crate::uncertainty::{BudgetLine, Uncertainty};
+use crate::units::fmt_fixed;
+use serde::Serialize;
+
+#[derive(Serialize)]
+pub(super) struct UncertaintySection<'a> {
+    /// `µm` or `arcsec`.
+    unit: &'static str,
+    /// The length the budget is for, with its unit.
+    length: String,
+    rows: Vec<BudgetRow>,
+    combined: String,
+    expanded: String,
+    notes: &'a [String],
+}
+
+/// One contributor as text.
+#[derive(Serialize)]
+struct BudgetRow {
+    contributor: String,
+    value: String,
+    distribution: &'static str,
+    u: String,
+    sensitivity: String,
+    contribution: String,
+    share: String,
+}
+
+/// Three significant digits, at most six decimals (inputs range from ppm to kPa).
+fn sig(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return num(x);
+    }
+    let decimals = (2 - x.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    fmt_fixed(x, decimals).replace('-', "−")
+}
+
+impl BudgetRow {
+    fn new(l: &BudgetLine) -> BudgetRow {
+        BudgetRow {
+            contributor: l.contributor.replace('_', " "),
+            value: format!("{} {}", sig(l.value), l.unit),
+            distribution: l.distribution.name(),
+            u: sig(l.u),
+            sensitivity: sig(l.sensitivity),
+            contribution: sig(l.contribution),
+            share: format!("{} %", fmt_fixed(l.share * 100.0, 1)),
+        }
+    }
+}
+
+pub(super) fn uncertainty_section<'a>(
+    u: &'a Uncertainty,
+    unit: &'static str,
+    position_unit: &str,
+) -> UncertaintySection<'a> {
+    UncertaintySection {
+        unit,
+        length: format!("{} {position_unit}", fmt_fixed(u.budget.length, 3)),
+        rows: u.budget.lines.iter().map(BudgetRow::new).collect(),
+        combined: sig(u.budget.combined),
+        expanded: sig(u.budget.expanded),
+        notes: &u.notes,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::sig;
+
+    #[test]
+    fn three_significant_digits() {
+        assert_eq!(sig(1.154701), "1.15");
+        assert_eq!(sig(0.0004), "0.000400");
+        assert_eq!(sig(19.186299), "19.2");
+        assert_eq!(sig(1744.2), "1744");
+        assert_eq!(sig(-0.05), "−0.0500");
+    }
+}
