@@ -106,6 +106,50 @@ pub(crate) fn check_position(c: &CheckBar) -> Option<f64> {
     Some(if u.is_nan() { 0.5 } else { u })
 }
 
+/// What a chart of bands says: its key, headings and empty message.
+pub(crate) struct Wording {
+    empty: &'static str,
+    band_key: &'static str,
+    band_head: &'static str,
+    band_head_narrow: &'static str,
+    measured_head: &'static str,
+    inside: &'static str,
+    outside: &'static str,
+    scale_note: &'static str,
+}
+
+/// The model checks of the diagnosis.
+const MODEL_CHECKS: Wording = Wording {
+    empty: "No model checks to show.",
+    band_key: "simulated 95 % band (base model)",
+    band_head: "simulated 95 % band",
+    band_head_narrow: "95 % band",
+    measured_head: "measured",
+    inside: "measured",
+    outside: "measured, check outside",
+    scale_note: "each statistic on its own scale",
+};
+
+/// The decision of each limited parameter (ISO 14253-1): its value against the zone of
+/// the limit ± U, where neither conformance nor nonconformance is proven.
+const DECISION_ZONES: Wording = Wording {
+    empty: "No limited parameters to show.",
+    band_key: "limit ± U: inconclusive zone (ISO 14253-1)",
+    band_head: "limit − U … limit + U",
+    band_head_narrow: "limit ± U",
+    measured_head: "value",
+    inside: "value",
+    outside: "value, nonconformance proven",
+    scale_note: "each parameter on its own scale",
+};
+
+/// Decision zones: one row per limited parameter, its |value| against the zone limit ± U
+/// (left of the zone conformance is proven, right of it nonconformance), drawn as the
+/// model checks are. Size the height with [`model_checks_height`].
+pub fn decision_zones(bars: &[CheckBar], style: &Style) -> Scene {
+    band_rows(bars, style, &DECISION_ZONES)
+}
+
 /// Model checks: one row per statistic. Each row has its own scale: the band simulated from
 /// the base model (95 %) is a light grey bar in the middle third, the measured value a marker
 /// on that scale (a filled black circle, or a dark red diamond with a bold dark red label when
@@ -113,19 +157,24 @@ pub(crate) fn check_position(c: &CheckBar) -> Option<f64> {
 /// end with an arrow. The measured value and the band are printed at the right. A key and the
 /// column headings sit above the rows. Size the height with [`model_checks_height`].
 pub fn model_checks(bars: &[CheckBar], style: &Style) -> Scene {
+    band_rows(bars, style, &MODEL_CHECKS)
+}
+
+/// Rows of a value against a band, each on its own scale, in `words`.
+fn band_rows(bars: &[CheckBar], style: &Style, words: &'static Wording) -> Scene {
     if bars.is_empty() {
-        return message_chart(style, "No model checks to show.");
+        return message_chart(style, words.empty);
     }
     let numbers: Vec<(String, String)> = bars.iter().map(row_numbers).collect();
     let positions: Vec<Option<f64>> = bars.iter().map(check_position).collect();
     let clipped = positions.iter().flatten().any(|u| !(0.0..=1.0).contains(u));
     let any_outside = bars.iter().any(|c| c.outside);
     render(style, |root| {
-        let layout = Columns::of(root, bars, &numbers);
+        let layout = Columns::of(root, bars, &numbers, words);
         if bars.len() > 6 {
             draw_stripes(root, &layout, bars.len())?;
         }
-        draw_key(root, any_outside, clipped)?;
+        draw_key(root, words, any_outside, clipped)?;
         draw_headings(root, &layout)?;
         for (i, ((c, numbers), pos)) in bars.iter().zip(&numbers).zip(&positions).enumerate() {
             let mid = CHECK_TOP as i32 + ((i as f64 + 0.5) * layout.row_h).round() as i32;
@@ -154,6 +203,7 @@ fn row_numbers(c: &CheckBar) -> (String, String) {
 
 /// Where the columns lie (right edges of the texts, the scale's ends) and the row pitch.
 struct Columns {
+    words: &'static Wording,
     width: i32,
     band_head: &'static str,
     band_right: i32,
@@ -168,16 +218,19 @@ struct Columns {
     row_h: f64,
 }
 
-const MEASURED_HEAD: &str = "measured";
-
 impl Columns {
-    fn of(root: &Area, bars: &[CheckBar], numbers: &[(String, String)]) -> Columns {
+    fn of(
+        root: &Area,
+        bars: &[CheckBar],
+        numbers: &[(String, String)],
+        words: &'static Wording,
+    ) -> Columns {
         let (w, h) = root.dim_in_pixel();
         let (wi, hi) = (w as i32, h as i32);
         let band_head = if wi < 600 {
-            "95 % band"
+            words.band_head_narrow
         } else {
-            "simulated 95 % band"
+            words.band_head
         };
         let col_w = |head: &str, texts: &mut dyn Iterator<Item = &String>| {
             texts
@@ -186,7 +239,7 @@ impl Columns {
                 .ceil()
                 .min(wi as f64 / 3.0) as i32
         };
-        let measured_w = col_w(MEASURED_HEAD, &mut numbers.iter().map(|p| &p.0));
+        let measured_w = col_w(words.measured_head, &mut numbers.iter().map(|p| &p.0));
         let band_w = col_w(band_head, &mut numbers.iter().map(|p| &p.1));
         let band_right = wi - 10;
         let measured_right = band_right - band_w - 26;
@@ -204,6 +257,7 @@ impl Columns {
         let n = bars.len();
         let avail_h = (hi - CHECK_TOP as i32 - CHECK_BOTTOM as i32).max(n as i32) as f64;
         Columns {
+            words,
             width: wi,
             band_head,
             band_right,
@@ -244,16 +298,16 @@ enum Sample {
 }
 
 /// The key (row 1): the band, the markers and, when used, the arrow.
-fn draw_key(root: &Area, any_outside: bool, clipped: bool) -> Result<(), Failed> {
+fn draw_key(root: &Area, words: &Wording, any_outside: bool, clipped: bool) -> Result<(), Failed> {
     let wi = root.dim_in_pixel().0 as i32;
     let key_y = 14;
     let mut kx = 10;
     let mut key = vec![
-        (Sample::Band, "simulated 95 % band (base model)"),
-        (Sample::Mark(MARK_INSIDE), "measured"),
+        (Sample::Band, words.band_key),
+        (Sample::Mark(MARK_INSIDE), words.inside),
     ];
     if any_outside {
-        key.push((Sample::Mark(MARK_OUTSIDE), "measured, check outside"));
+        key.push((Sample::Mark(MARK_OUTSIDE), words.outside));
     }
     if clipped {
         key.push((Sample::Arrow, "beyond the scale"));
@@ -287,10 +341,15 @@ fn draw_headings(root: &Area, layout: &Columns) -> Result<(), Failed> {
     let head_y = top - 8;
     let head = |h| text_style(TICK_PX, true, INK, h, VPos::Bottom);
     let measured_at = (layout.measured_right, head_y);
-    draw_text(root, MEASURED_HEAD, measured_at, head(HPos::Right))?;
+    draw_text(
+        root,
+        layout.words.measured_head,
+        measured_at,
+        head(HPos::Right),
+    )?;
     let band_at = (layout.band_right, head_y);
     draw_text(root, layout.band_head, band_at, head(HPos::Right))?;
-    let scale_note = "each statistic on its own scale";
+    let scale_note = layout.words.scale_note;
     if KIT.text_width(scale_note, NOTE_PX) <= (layout.sx1 - layout.sx0) as f64 {
         let style = text_style(NOTE_PX, false, MUTED, HPos::Center, VPos::Bottom);
         let at = ((layout.sx0 + layout.sx1) / 2, head_y);

@@ -192,6 +192,10 @@ impl Reports {
             if let Some(d) = &test.diagnosis {
                 diagnosis_files(&mut files, d);
             }
+            let bars = data::decision_bars(test);
+            let height = check_chart::model_checks_height(bars.len());
+            let zones = check_chart::decision_zones(&bars, &style(height));
+            files.chart("decision", zones);
         }
         let ident = format!(
             "axcheck/{}/{}/{}/{}",

@@ -68,7 +68,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .uncertainty
             .as_ref()
             .zip(kind)
-            .map(|(u, k)| uncertainty_section(u, k.deviation_symbol(), k.position_unit())),
+            .map(|(u, k)| uncertainty_section(t, u, k.deviation_symbol(), k.position_unit())),
         generator: generator(),
     }
 }

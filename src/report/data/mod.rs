@@ -13,6 +13,7 @@ mod uncertainty;
 
 pub use axis::{AxisReport, axis_report};
 pub use summary::{Summary, summary};
+pub use uncertainty::decision_bars;
 
 use super::charts::{AxisChart, DirectionSeries, Span};
 use crate::batch::{AxisTest, CampaignResult};

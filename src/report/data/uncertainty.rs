@@ -2,7 +2,9 @@
 //! one row per contributor (GUM: value, distribution, u, sensitivity, c·u, share), u_c
 //! and U with k = 2, and what was assumed.
 
-use super::num;
+use super::{num, symbol_of};
+use crate::batch::AxisTest;
+use crate::report::check_chart::CheckBar;
 use crate::uncertainty::{BudgetLine, Uncertainty};
 use crate::units::fmt_fixed;
 use serde::Serialize;
@@ -14,6 +16,8 @@ pub(super) struct UncertaintySection<'a> {
     /// The length the budget is for, with its unit.
     length: String,
     rows: Vec<BudgetRow>,
+    /// A chart of each limited parameter's value against its limit ± U.
+    has_decision_chart: bool,
     combined: String,
     expanded: String,
     notes: &'a [String],
@@ -54,7 +58,29 @@ impl BudgetRow {
     }
 }
 
+/// Each limited parameter's |value| against its zone limit ± U (ISO 14253-1): left of the
+/// zone conformance is proven, right of it (marked) nonconformance, whatever rule decided.
+pub fn decision_bars(t: &AxisTest) -> Vec<CheckBar> {
+    let (Some(j), Some(u)) = (&t.judgement, &t.uncertainty) else {
+        return Vec::new();
+    };
+    j.checks
+        .iter()
+        .filter_map(|c| {
+            let zone = u.expanded_of(&c.key)?;
+            Some(CheckBar {
+                label: symbol_of(t, &c.key),
+                measured: c.value.abs(),
+                low: c.limit - zone,
+                high: c.limit + zone,
+                outside: c.value.abs() > c.limit + zone,
+            })
+        })
+        .collect()
+}
+
 pub(super) fn uncertainty_section<'a>(
+    t: &AxisTest,
     u: &'a Uncertainty,
     unit: &'static str,
     position_unit: &str,
@@ -63,6 +89,7 @@ pub(super) fn uncertainty_section<'a>(
         unit,
         length: format!("{} {position_unit}", fmt_fixed(u.budget.length, 3)),
         rows: u.budget.lines.iter().map(BudgetRow::new).collect(),
+        has_decision_chart: !decision_bars(t).is_empty(),
         combined: sig(u.budget.combined),
         expanded: sig(u.budget.expanded),
         notes: &u.notes,
