@@ -151,8 +151,9 @@ pub struct Options {
     pub jobs: usize,
     /// Run the model check and diagnosis of every axis test.
     pub diagnose: bool,
-    /// Drop each test's readings once it is evaluated (the CI gate needs only the
-    /// verdicts; reports need the readings). Keeps memory flat on large fleets.
+    /// Drop each test's readings and per-parameter uncertainty budgets once it is
+    /// evaluated (the CI gate needs only the verdicts; reports need the readings). Keeps
+    /// memory flat on large fleets.
     pub drop_data: bool,
 }
 
@@ -179,6 +180,11 @@ pub fn run(
                     progress(t);
                     if options.drop_data {
                         t.data = None;
+                        // The gate needs U, not each parameter's budget (a third of the
+                        // memory of a 10 000-axis check).
+                        if let Some(u) = &mut t.uncertainty {
+                            u.parameters = Vec::new();
+                        }
                     }
                 }
                 tests
