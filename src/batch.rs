@@ -10,7 +10,7 @@ use crate::judge::{self, Decision, DecisionRule, Judgement, Limits, Spec, Verdic
 use crate::measurement::{self, AxisData};
 use crate::nde::{self, NdeCorrection};
 use crate::rules::{self, Finding, PlanContext, Severity};
-use crate::uncertainty::{InstrumentKind, Setup, Uncertainty};
+use crate::uncertainty::{Distribution, InstrumentKind, Setup, Uncertainty};
 use crate::units::AxisKind;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -485,6 +485,9 @@ fn uncertainty_setup(axis: &AxisSpec, data: &AxisData, nde: Option<&NdeCorrectio
             .or_else(|| i.name.as_deref().and_then(InstrumentKind::from_name))
     });
     let mut setup = kind.map_or_else(|| Setup::for_axis(axis.raw.kind), Setup::for_instrument);
+    if let Some(i) = &c.instrument {
+        stated_instrument(&mut setup, i);
+    }
     if let (Some(air), Some(a)) = (setup.air.as_mut(), c.air.as_ref())
         && let (Some(start), Some(end)) = (a.temperature_start_c, a.temperature_end_c)
     {
@@ -509,6 +512,29 @@ fn uncertainty_setup(axis: &AxisSpec, data: &AxisData, nde: Option<&NdeCorrectio
         }
     }
     setup
+}
+
+/// What the campaign states of the instrument over its kind's defaults: its accuracy (a
+/// specification's limits, or a certificate's U with its k), resolution, dead path and
+/// beam walk.
+fn stated_instrument(setup: &mut Setup, i: &crate::campaign::Instrument) {
+    let ins = &mut setup.instrument;
+    if i.accuracy_fixed.is_some() || i.accuracy_ppm.is_some() {
+        ins.calibration_fixed = i.accuracy_fixed.unwrap_or(0.0);
+        ins.calibration_ppm = i.accuracy_ppm.unwrap_or(0.0);
+    }
+    if let Some(k) = i.accuracy_k {
+        ins.calibration_distribution = Distribution::Normal { k };
+    }
+    if let Some(r) = i.resolution {
+        ins.resolution = r;
+    }
+    if let Some(d) = i.dead_path_mm {
+        setup.dead_path_mm = d;
+    }
+    if let Some(w) = i.beam_walk_mm {
+        setup.misalignment_offset_mm = w;
+    }
 }
 
 /// Whether the file gives a material temperature per reading (`temp_<name>_c` columns

@@ -148,7 +148,39 @@ fn validated_axis(
     check_travels(&raw, base, index)?;
     check_pitch(&raw, base, index)?;
     check_tolerances(&raw, base, index)?;
+    check_instrument(&raw, base, index)?;
     Ok((raw, standard, data))
+}
+
+/// The instrument's stated accuracy, resolution, dead path and beam walk are numbers ≥ 0
+/// (a coverage factor > 0): they enter the uncertainty budget.
+fn check_instrument(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    let Some(i) = &raw.conditions.instrument else {
+        return Ok(());
+    };
+    let unit = raw.kind.deviation_unit();
+    let (accuracy, resolution) = (format!("accuracy_{unit}"), format!("resolution_{unit}"));
+    let fields = [
+        (accuracy.as_str(), i.accuracy_fixed, false),
+        ("accuracy_ppm", i.accuracy_ppm, false),
+        ("accuracy_k", i.accuracy_k, true),
+        (resolution.as_str(), i.resolution, false),
+        ("dead_path_mm", i.dead_path_mm, false),
+        ("beam_walk_mm", i.beam_walk_mm, false),
+    ];
+    for (key, value, positive) in fields {
+        let Some(v) = value else { continue };
+        let ok = v.is_finite() && if positive { v > 0.0 } else { v >= 0.0 };
+        if !ok {
+            let path = format!("{base}.conditions.instrument.{key}");
+            let want = if positive { "> 0" } else { "≥ 0" };
+            return Err(Located::new(
+                index.value(&path),
+                format!("{path}: expected a number {want}, got {v}"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Axis travel: a length > 0 or two ends in order; measurement travel: first < last.

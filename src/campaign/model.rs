@@ -208,6 +208,38 @@ pub struct Instrument {
         skip_serializing_if = "Option::is_none"
     )]
     pub kind: Option<InstrumentKind>,
+    /// Fixed part of its accuracy ±(fixed + ppm·L), µm (linear) or arcsec (rotary): a
+    /// specification's limits, or with `accuracy_k` a calibration certificate's U.
+    #[serde(
+        default,
+        alias = "accuracy_um",
+        alias = "accuracy_arcsec",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub accuracy_fixed: Option<f64>,
+    /// Length-proportional part of its accuracy, ppm of the measured length.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub accuracy_ppm: Option<f64>,
+    /// Coverage factor of a certificate's stated U (normal distribution); absent: the
+    /// accuracy is a specification's ± limits (rectangular).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub accuracy_k: Option<f64>,
+    /// Smallest step of its indication, µm or arcsec.
+    #[serde(
+        default,
+        alias = "resolution_um",
+        alias = "resolution_arcsec",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub resolution: Option<f64>,
+    /// Dead path: distance from the interferometer to the reflector at the datum, mm
+    /// (0 when the laser's software compensates it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dead_path_mm: Option<f64>,
+    /// Lateral walk of the beam on its target over the measurement travel, mm (cosine
+    /// error).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub beam_walk_mm: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub serial: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]

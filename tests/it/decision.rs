@@ -108,3 +108,54 @@ fn a_wrong_rule_name_is_said_with_its_place_and_the_names() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The instrument's stated accuracy enters the budget: an encoder with a certificate's
+/// U = 1 µm (k = 2) gives a calibration line of u = 0.5 µm (normal), its 0.05 µm steps a
+/// resolution line of 0.025/√3 µm (rectangular, half a step); a negative accuracy fails
+/// the axis naming the key as written.
+#[test]
+fn the_instruments_stated_accuracy_enters_the_budget() {
+    let dir = scratch("instrument-accuracy");
+    std::fs::copy("tests/data/iso230-2_table2.csv", dir.join("data/x.csv")).unwrap();
+    let campaign = dir.join("campaign.yaml");
+    let write = |accuracy: &str| {
+        std::fs::write(
+            &campaign,
+            format!("campaign: {{name: acc}}\nmachines:\n  - id: M\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv, conditions: {{instrument: {{kind: linear-encoder, accuracy_um: {accuracy}, accuracy_k: 2, resolution_um: 0.05}}}}}}\n"),
+        )
+        .unwrap();
+    };
+    write("1");
+    let out = dir.join("out");
+    let args = [
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ];
+    let (code, stdout, stderr) = axcheck(&args);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
+    let budget = json["axes"][0]["uncertainty"]["budget"].as_array().unwrap();
+    let line = |name: &str| budget.iter().find(|l| l["contributor"] == name).unwrap();
+    let calibration = line("calibration");
+    assert_eq!(calibration["value"], 1.0);
+    assert_eq!(calibration["distribution"], "normal");
+    assert!((calibration["u"].as_f64().unwrap() - 0.5).abs() < 1e-12);
+    let resolution = line("resolution");
+    assert!((resolution["value"].as_f64().unwrap() - 0.025).abs() < 1e-12);
+    assert!((resolution["u"].as_f64().unwrap() - 0.025 / 3f64.sqrt()).abs() < 1e-12);
+    // An encoder has no air path: no air lines.
+    assert!(budget.iter().all(|l| l["contributor"] != "air_pressure"));
+
+    write("-1");
+    let (code, stdout, _) = axcheck(&["check", campaign.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(
+        stdout.contains("conditions.instrument.accuracy_um: expected a number ≥ 0, got -1"),
+        "{stdout}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
