@@ -62,6 +62,12 @@ impl Context<'_> {
         self.extent.length / 1000.0
     }
 
+    /// α·L, µm per °C: the sensitivity of the range to a temperature error of the
+    /// positioning system (ISO 230-2 3.1), shared by the temperature contributors.
+    pub fn expansion_per_c(&self) -> f64 {
+        self.setup.thermal.coefficient_um_per_m_c * self.length_m()
+    }
+
     /// A range on a linear axis: where length-proportional errors act.
     pub fn linear_range(&self) -> bool {
         self.kind == AxisKind::Linear && self.extent.shape == Shape::Range

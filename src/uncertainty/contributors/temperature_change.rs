@@ -29,7 +29,7 @@ impl Contributor for TemperatureChange {
     }
 
     fn sensitivity(&self, ctx: &Context) -> f64 {
-        ctx.setup.thermal.coefficient_um_per_m_c * ctx.length_m()
+        ctx.expansion_per_c()
     }
 }
 
