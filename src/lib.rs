@@ -9,6 +9,7 @@
 pub mod atomic;
 pub mod batch;
 pub mod campaign;
+pub mod compensate;
 pub mod diagnose;
 pub mod evaluate;
 pub mod export;

@@ -101,6 +101,29 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The controller's compensation table for a measured axis (the correction it adds:
+    /// minus the mean deviation at each point and direction) and the parameters predicted
+    /// with it. Without --out the table goes to standard output.
+    Compensate {
+        /// Measurement file (long CSV or key=value layout).
+        file: PathBuf,
+        /// Controller whose table format to write.
+        #[arg(long, short)]
+        controller: String,
+        /// Table file to write (then a summary of measured and predicted parameters is
+        /// printed).
+        #[arg(long, short)]
+        out: Option<PathBuf>,
+        /// Equidistant grid step (mm or deg) from the first target; default: the targets.
+        #[arg(long)]
+        interval: Option<f64>,
+        /// Standard for the parameters measured and predicted.
+        #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
+        standard: StandardId,
+        /// Print JSON: the table and the parameters measured and predicted.
+        #[arg(long)]
+        json: bool,
+    },
     /// Simulate a positioning test from an error model and a test plan (YAML), or with
     /// --fleet a whole synthetic campaign for benchmarks.
     Simulate {
@@ -237,6 +260,24 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 cli::diagnose::render(&name, &diagnosis)
             };
             print(&text)?;
+        }
+        Command::Compensate {
+            file,
+            controller,
+            out,
+            interval,
+            standard,
+            json,
+        } => {
+            let data = measurement::read_file(&file)?;
+            let request = cli::compensate::Request {
+                controller: &controller,
+                out: out.as_deref(),
+                interval,
+                standard,
+                json,
+            };
+            print(&cli::compensate::run(&data, &request)?)?;
         }
         Command::Simulate {
             model,

@@ -1,6 +1,7 @@
 //! Command-line front end: parses arguments, calls the library, prints results.
 
 pub mod campaign;
+pub mod compensate;
 pub mod diagnose;
 pub mod eval;
 pub mod simulate;

@@ -13,6 +13,7 @@ const LAYERS: &[&[&str]] = &[
     &["evaluate", "nde", "simulate"],
     &["uncertainty"],
     &["rules", "judge", "diagnose"],
+    &["compensate"],
     &["campaign"],
     &["batch"],
     &["report"],

@@ -2,6 +2,7 @@
 //! the library and its heavy dependencies instead of one per file.
 
 mod common;
+mod compensate;
 
 mod architecture;
 mod bad_input;

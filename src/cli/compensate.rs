@@ -1,0 +1,110 @@
+//! `axcheck compensate`: the controller's correction table for a measured axis, and the
+//! parameters predicted with it.
+
+use super::text::{left, right};
+use anyhow::{Context, Result, anyhow};
+use axcheck::compensate::{self, Prediction, Table, controllers};
+use axcheck::evaluate::StandardId;
+use axcheck::evaluate::json::ParameterValues;
+use axcheck::measurement::AxisData;
+use axcheck::units::fmt_fixed;
+use serde::Serialize;
+use std::fmt::Write;
+use std::path::Path;
+
+/// What `compensate` was asked for.
+pub struct Request<'a> {
+    pub controller: &'a str,
+    pub out: Option<&'a Path>,
+    pub interval: Option<f64>,
+    pub standard: StandardId,
+    pub json: bool,
+}
+
+/// `--json`: the table, and the parameters as measured and predicted.
+#[derive(Serialize)]
+struct CompensationJson<'a> {
+    controller: &'a str,
+    /// Deviation unit of the corrections and parameters: `um` or `arcsec`.
+    unit: &'static str,
+    table: &'a Table,
+    measured: Parameters<'a>,
+    predicted: Parameters<'a>,
+    /// The table file written, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    file: Option<String>,
+}
+
+#[derive(Serialize)]
+struct Parameters<'a> {
+    parameters: ParameterValues<'a>,
+}
+
+/// Writes the table (to `out`, or standard output without it) and returns what to print.
+pub fn run(data: &AxisData, request: &Request) -> Result<String> {
+    let controller = controllers::find(request.controller).ok_or_else(|| {
+        anyhow!(
+            "unknown controller `{}`; known: {}",
+            request.controller,
+            controllers::names().join(", ")
+        )
+    })?;
+    if let Some(step) = request.interval
+        && !(step > 0.0 && step.is_finite())
+    {
+        return Err(anyhow!("--interval: expected a step > 0, got {step}"));
+    }
+    let table = compensate::table(data, compensate::grid(data, request.interval));
+    let file = controller.write(&table)?;
+    let prediction = compensate::predict(&table, data, request.standard);
+    if let Some(out) = request.out {
+        axcheck::atomic::write(out, file.as_bytes())
+            .with_context(|| format!("cannot write {}", out.display()))?;
+    }
+    if request.json {
+        let json = CompensationJson {
+            controller: controller.name(),
+            unit: data.kind.deviation_unit(),
+            table: &table,
+            measured: Parameters {
+                parameters: ParameterValues(&prediction.measured.parameters),
+            },
+            predicted: Parameters {
+                parameters: ParameterValues(&prediction.predicted.parameters),
+            },
+            file: request.out.map(|p| p.display().to_string()),
+        };
+        return Ok(serde_json::to_string_pretty(&json)? + "\n");
+    }
+    Ok(match request.out {
+        None => file,
+        Some(out) => summary(&prediction, data, out, controller.name()),
+    })
+}
+
+/// The parameters before and after, and where the table went.
+fn summary(p: &Prediction, data: &AxisData, out: &Path, controller: &str) -> String {
+    let unit = data.kind.deviation_symbol();
+    let mut text = format!("{controller} table written to {}\n\n", out.display());
+    let _ = writeln!(
+        text,
+        "{}  {}  {}",
+        left("Parameter", 10),
+        right(&format!("measured ({unit})"), 16),
+        right(&format!("predicted ({unit})"), 17)
+    );
+    for m in &p.measured.parameters {
+        let after = p.predicted.parameter(m.key()).map_or(f64::NAN, |q| q.value);
+        let _ = writeln!(
+            text,
+            "{}  {}  {}",
+            left(m.symbol(), 10),
+            right(&fmt_fixed(m.value, 2), 16),
+            right(&fmt_fixed(after, 2), 17)
+        );
+    }
+    text.push_str(
+        "\nThe floor is the repeatability: a table corrects the mean deviations, not the scatter about them.\n",
+    );
+    text
+}

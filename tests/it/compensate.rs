@@ -1,0 +1,101 @@
+//! Compensation tables: the table cancels a known error, read back from its file it gives
+//! what the prediction says, and the CLI writes it.
+
+use crate::common::{axcheck, scratch};
+use axcheck::compensate::{self, Table};
+use axcheck::evaluate::{self, StandardId};
+use axcheck::simulate::Simulation;
+use axcheck::units::AxisKind;
+
+/// A scale error of 15 ppm, a slow sine (period 600 mm, 3 µm) and a reversal of 5 µm over
+/// 1000 mm, 21 targets, scatter 0.3 µm.
+const AXIS: &str = "kind: linear\nseed: 3\nmodel:\n  scale_um_per_m: 15\n  periodic: [{pitch_mm: 600, amplitude_um: 3, phase_deg: 20}]\n  reversal_um: 5\n  scatter_um: 0.3\nplan:\n  targets: {start_mm: 0, end_mm: 1000, count: 21, jitter_mm: 8}\n  runs: 5\n";
+
+/// The generic CSV read back: position, correction ↑, correction ↓.
+fn read_back(text: &str) -> Table {
+    let mut table = Table {
+        kind: AxisKind::Linear,
+        positions: Vec::new(),
+        up: Vec::new(),
+        down: Vec::new(),
+    };
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("position_mm,correction_up_um,correction_down_um")
+    );
+    for line in lines {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        table.positions.push(v[0]);
+        table.up.push(v[1]);
+        table.down.push(v[2]);
+    }
+    table
+}
+
+#[test]
+fn the_table_read_back_cancels_a_known_error_as_predicted() {
+    let data = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(3);
+    let measured = evaluate::evaluate(&data, StandardId::Iso230_2);
+    let e = measured.parameter("E").unwrap().value;
+    assert!(e > 10.0, "the error is there to cancel: E = {e}");
+    for interval in [None, Some(50.0)] {
+        let table = compensate::table(&data, compensate::grid(&data, interval));
+        let file = compensate::controllers::find("csv")
+            .unwrap()
+            .write(&table)
+            .unwrap();
+        let back = read_back(&file);
+        let after = evaluate::evaluate(&compensate::apply(&back, &data), StandardId::Iso230_2);
+        let e_after = after.parameter("E").unwrap().value;
+        assert!(e_after < e / 4.0, "{interval:?}: E {e} -> {e_after}");
+        // The prediction is what the file does (to its 4 decimals).
+        let predicted = compensate::predict(&table, &data, StandardId::Iso230_2).predicted;
+        for p in &after.parameters {
+            let q = predicted.parameter(p.key()).unwrap().value;
+            assert!(
+                (p.value - q).abs() < 1e-3,
+                "{interval:?} {}: {} vs {q}",
+                p.key(),
+                p.value
+            );
+        }
+        // The repeatability is the floor: a table leaves R as it was.
+        let r = |e: &evaluate::Evaluation| e.parameter("R_up").unwrap().value;
+        assert!((r(&after) - r(&measured)).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn the_cli_writes_the_table_and_refuses_an_unknown_controller() {
+    let dir = scratch("compensate-cli");
+    let out = dir.join("x.csv");
+    let (code, stdout, stderr) = axcheck(&[
+        "compensate",
+        "tests/data/iso230-2_table2.csv",
+        "--controller",
+        "csv",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stdout.contains("E                       7.70               0.00"),
+        "{stdout}"
+    );
+    let table = std::fs::read_to_string(&out).unwrap();
+    // ISO 230-2 Table 2, target 1: x̄↑ = −1.60 µm, x̄↓ = 2.26 µm: corrections 1.6, −2.26.
+    assert!(table.contains("\n6.7110,1.6000,-2.2600\n"), "{table}");
+    let (code, _, stderr) = axcheck(&[
+        "compensate",
+        "tests/data/iso230-2_table2.csv",
+        "--controller",
+        "fanuc-0i",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        stderr.contains("unknown controller `fanuc-0i`; known: csv"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
