@@ -5,6 +5,7 @@ pub mod csv;
 pub mod json;
 pub mod junit;
 pub mod markdown;
+pub mod paths;
 #[cfg(feature = "parquet")]
 pub mod parquet;
 #[cfg(feature = "pdf")]
