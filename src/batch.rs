@@ -36,6 +36,8 @@ pub struct AxisTest {
     pub judgement: Option<Judgement>,
     pub findings: Vec<Finding>,
     pub nde: Option<NdeCorrection>,
+    /// The compensation table of the machine's controller and the parameters predicted.
+    pub compensation: Option<crate::compensate::Compensation>,
     /// The measurement uncertainty of the parameters (GUM budget, U with k = 2).
     pub uncertainty: Option<Uncertainty>,
     /// Model check and diagnosis, when the run asked for it.
@@ -281,6 +283,7 @@ impl Slot {
             judgement: None,
             findings: Vec::new(),
             nde: None,
+            compensation: None,
             uncertainty: None,
             diagnosis: None,
             out_of_test: Vec::new(),
@@ -462,8 +465,12 @@ fn run_test(
             },
         )
     });
+    let compensation = (slot.machine.controller.as_deref())
+        .and_then(crate::compensate::controllers::find)
+        .map(|c| crate::compensate::compensation(c, &data, axis.standard));
     AxisTest {
         diagnosis,
+        compensation,
         uncertainty: Some(uncertainty),
         data: Some(data),
         evaluation: Some(evaluation),

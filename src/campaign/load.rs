@@ -23,6 +23,16 @@ pub(super) fn machine(
         Ok(info) => info,
         Err(e) => return broken_machine(value, base, e.in_file(file).to_string()),
     };
+    if let Some(name) = &info.controller
+        && crate::compensate::controllers::find(name).is_none()
+    {
+        let names = crate::compensate::controllers::names();
+        let hint = crate::suggest::hint(name, &names);
+        let path = format!("{base}.controller");
+        let message = format!("{path}: unknown controller `{name}`{hint}");
+        let located = Located::new(index.value(&path), message);
+        return broken_machine(value, base, located.in_file(file).to_string());
+    }
     let axes = match value.get("axes") {
         Some(Value::Sequence(items)) => items
             .iter()

@@ -87,6 +87,10 @@ pub struct MachineInfo {
     pub location: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub notes: Option<String>,
+    /// The controller whose compensation table `run` writes for each axis
+    /// (`compensation/MACHINE/AXIS.<ext>`), e.g. `csv`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub controller: Option<String>,
     /// Lets `axes` through the unknown-key check: the loader reads the axes one by one
     /// from the document, so that a broken axis fails alone.
     #[serde(default, skip_serializing)]

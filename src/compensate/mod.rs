@@ -107,6 +107,34 @@ pub fn apply(table: &Table, data: &AxisData) -> AxisData {
     data.map_deviations(|r| r.deviation + table.correction(data.targets[r.target], r.direction))
 }
 
+/// A test's compensation by its machine's controller: the table, the file as the
+/// controller loads it (or why it cannot hold the table) and the parameters predicted.
+#[derive(Debug, Clone)]
+pub struct Compensation {
+    pub controller: &'static str,
+    /// The file's extension.
+    pub extension: &'static str,
+    pub table: Table,
+    pub file: Result<String, String>,
+    pub predicted: Evaluation,
+}
+
+/// The compensation of `data` by `controller` on the measured targets.
+pub fn compensation(
+    controller: &dyn controllers::Controller,
+    data: &AxisData,
+    standard: StandardId,
+) -> Compensation {
+    let table = table(data, grid(data, None));
+    Compensation {
+        controller: controller.name(),
+        extension: controller.extension(),
+        file: controller.write(&table).map_err(|e| e.to_string()),
+        predicted: predict(&table, data, standard).predicted,
+        table,
+    }
+}
+
 /// The parameters measured and predicted after compensation.
 #[derive(Debug, Clone)]
 pub struct Prediction {

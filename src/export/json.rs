@@ -11,6 +11,7 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
+use crate::compensate::Compensation;
 use crate::diagnose::Diagnosis;
 use crate::diagnose::cross::OutOfTest;
 use crate::evaluate::json::{ParameterValues, TargetIndices};
@@ -50,6 +51,9 @@ pub struct TestJson<'a> {
     nde: Option<&'a NdeCorrection>,
     #[serde(skip_serializing_if = "Option::is_none")]
     uncertainty: Option<UncertaintyJson<'a>>,
+    /// The machine's controller's table for this test and the parameters it predicts.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    compensation: Option<CompensationJson<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     diagnosis: Option<&'a Diagnosis>,
     /// This test predicted by the models of the axis's other tests (several data files).
@@ -148,6 +152,36 @@ impl<'a> UncertaintyJson<'a> {
     }
 }
 
+/// A test's compensation: the controller, the table file written (relative to the output
+/// folder) or why the controller refused it, and the parameters predicted with it.
+#[derive(Serialize)]
+struct CompensationJson<'a> {
+    controller: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    file: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    refused: Option<&'a str>,
+    predicted: PredictedJson<'a>,
+}
+
+#[derive(Serialize)]
+struct PredictedJson<'a> {
+    parameters: ParameterValues<'a>,
+}
+
+impl<'a> CompensationJson<'a> {
+    fn new(c: &'a Compensation, file: Option<&std::path::Path>) -> CompensationJson<'a> {
+        CompensationJson {
+            controller: c.controller,
+            file: file.map(|p| p.to_string_lossy().replace('\\', "/")),
+            refused: c.file.as_ref().err().map(String::as_str),
+            predicted: PredictedJson {
+                parameters: ParameterValues(&c.predicted.parameters),
+            },
+        }
+    }
+}
+
 /// The JSON view of one test.
 pub fn test_json(t: &AxisTest) -> TestJson<'_> {
     TestJson {
@@ -185,6 +219,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         rules: &t.findings,
         nde: t.nde.as_ref(),
         uncertainty: t.uncertainty.as_ref().map(UncertaintyJson::new),
+        compensation: None,
         diagnosis: t.diagnosis.as_ref(),
         out_of_test: &t.out_of_test,
         error: t.error.as_deref(),
@@ -232,10 +267,19 @@ fn results_head(result: &CampaignResult) -> Head<'_> {
 /// 48 MB, 0.8 s of one core) and set into the head as `to_vec_pretty` would place them.
 pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Error> {
     use rayon::prelude::*;
+    let tables = super::compensation::table_paths(result);
     let axes: Vec<Vec<u8>> = result
         .tests
         .par_iter()
-        .map(|t| serde_json::to_vec_pretty(&test_json(t)))
+        .zip(&tables)
+        .map(|(t, table)| {
+            let mut json = test_json(t);
+            json.compensation = t
+                .compensation
+                .as_ref()
+                .map(|c| CompensationJson::new(c, table.as_deref()));
+            serde_json::to_vec_pretty(&json)
+        })
         .collect::<Result<_, _>>()?;
     let mut out = serde_json::to_vec_pretty(&results_head(result))?;
     let empty = b"\"axes\": []\n}";

@@ -1,13 +1,14 @@
 //! Campaign outputs: one [`Exporter`] trait, one file per format (as hyperfine's export/).
 //! Each output is serialised in memory, then written atomically.
 
+pub mod compensation;
 pub mod csv;
 pub mod json;
 pub mod junit;
 pub mod markdown;
-pub mod paths;
 #[cfg(feature = "parquet")]
 pub mod parquet;
+pub mod paths;
 #[cfg(feature = "pdf")]
 pub mod pdf;
 pub mod table;
@@ -59,6 +60,7 @@ pub fn table_exporters() -> Vec<Box<dyn Exporter>> {
         Box::new(parquet::Parquet),
         Box::new(markdown::Markdown),
         Box::new(junit::Junit),
+        Box::new(compensation::Compensation),
     ]
 }
 

@@ -40,6 +40,14 @@ pub fn safe_name(text: &str) -> String {
 /// A path per test under `folder`, `MACHINE/AXIS.ext` (`AXIS-testK.ext` when an axis has
 /// several tests), unique even when names collide after sanitising.
 pub fn test_paths(result: &CampaignResult, folder: &str, ext: &str) -> Vec<PathBuf> {
+    test_stems(result, folder)
+        .into_iter()
+        .map(|stem| PathBuf::from(format!("{}.{ext}", stem.display())))
+        .collect()
+}
+
+/// [`test_paths`] without the extension (each test's file may take its own).
+pub fn test_stems(result: &CampaignResult, folder: &str) -> Vec<PathBuf> {
     let mut used: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
     let mut machine_dirs: BTreeMap<String, String> = BTreeMap::new();
     let mut taken_dirs: BTreeSet<String> = BTreeSet::new();
@@ -57,9 +65,7 @@ pub fn test_paths(result: &CampaignResult, folder: &str, ext: &str) -> Vec<PathB
                 safe_name(&t.axis)
             };
             let name = unique(&base, used.entry(dir.clone()).or_default());
-            PathBuf::from(folder)
-                .join(dir)
-                .join(format!("{name}.{ext}"))
+            PathBuf::from(folder).join(dir).join(name)
         })
         .collect()
 }

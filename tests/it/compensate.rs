@@ -99,3 +99,55 @@ fn the_cli_writes_the_table_and_refuses_an_unknown_controller() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A machine that names its controller gets a table per evaluated axis from `run`, and
+/// results.json its path and the parameters predicted; a misspelt controller fails that
+/// machine's axes with the names.
+#[test]
+fn a_campaign_machine_with_a_controller_gets_its_tables() {
+    let dir = scratch("compensate-campaign");
+    std::fs::copy("tests/data/iso230-2_table2.csv", dir.join("data/x.csv")).unwrap();
+    let campaign = dir.join("campaign.yaml");
+    let write = |controller: &str| {
+        std::fs::write(
+            &campaign,
+            format!("campaign: {{name: comp}}\nmachines:\n  - id: M\n    controller: {controller}\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv}}\n"),
+        )
+        .unwrap();
+    };
+    write("csv");
+    let out = dir.join("out");
+    let run = [
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ];
+    let (code, stdout, stderr) = axcheck(&run);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let table = std::fs::read_to_string(out.join("compensation/M/X.csv")).unwrap();
+    assert!(table.contains("\n6.7110,1.6000,-2.2600\n"), "{table}");
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
+    let c = &json["axes"][0]["compensation"];
+    assert_eq!(c["controller"], "csv");
+    assert_eq!(c["file"], "compensation/M/X.csv");
+    // On the measured targets the table cancels every mean: E and B go to 0; the
+    // unidirectional repeatabilities stay (R itself loses the reversal it held).
+    let predicted = &c["predicted"]["parameters"];
+    assert!(predicted["E"].as_f64().unwrap().abs() < 1e-9);
+    assert!(predicted["B"].as_f64().unwrap().abs() < 1e-9);
+    let measured = &json["axes"][0]["parameters"];
+    assert_eq!(predicted["R_up"], measured["R_up"]);
+    assert!(predicted["R"].as_f64().unwrap() < measured["R"].as_f64().unwrap());
+
+    write("cvs");
+    let (code, stdout, _) = axcheck(&["check", campaign.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(
+        stdout.contains("machines[0].controller: unknown controller `cvs` (did you mean `csv`?)"),
+        "{stdout}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
