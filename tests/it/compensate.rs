@@ -94,7 +94,7 @@ fn the_cli_writes_the_table_and_refuses_an_unknown_controller() {
     ]);
     assert_eq!(code, 2);
     assert!(
-        stderr.contains("unknown controller `fanuc-0i`; known: csv"),
+        stderr.contains("unknown controller `fanuc-0i`; known: csv, linuxcnc"),
         "{stderr}"
     );
     std::fs::remove_dir_all(&dir).unwrap();

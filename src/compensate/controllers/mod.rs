@@ -2,6 +2,7 @@
 //! (as the exporters are), with its units, limits and sign convention.
 
 pub mod csv;
+pub mod linuxcnc;
 
 use super::Table;
 
@@ -26,7 +27,7 @@ pub trait Controller: Sync {
 }
 
 /// Every controller, by name.
-pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv];
+pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv, &linuxcnc::LinuxCnc];
 
 /// The controller called `name`.
 pub fn find(name: &str) -> Option<&'static dyn Controller> {

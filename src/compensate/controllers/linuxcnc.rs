@@ -1,0 +1,109 @@
+//! `linuxcnc`: a joint compensation file of type 1 (`[JOINT_n] COMP_FILE = …`,
+//! `COMP_FILE_TYPE = 1`): one line per point, `nominal forward_trim reverse_trim`, in the
+//! joint's units (mm, or degrees on a rotary joint), three numbers and nothing else (the
+//! loader stops at the first line that is not three numbers: no header, no comment).
+//!
+//! LinuxCNC adds the trim to the commanded joint position, interpolating linearly between
+//! points on the commanded position and holding the end values beyond them, the forward
+//! trim when moving in the positive direction (LinuxCNC source: `src/emc/motion/control.c`,
+//! `compute_screw_comp`; the file read by `usrmotLoadComp` in `usrmotintf.cc`): so the
+//! trim is the correction, −x̄↑ forward and −x̄↓ reverse. Nominal positions must increase
+//! strictly; at most 256 points per joint (`EMCMOT_COMP_SIZE`). With a table, `BACKLASH`
+//! is not used: the reversal is in the two columns.
+
+use super::{Controller, Refused};
+use crate::compensate::Table;
+use crate::units::{AxisKind, fmt_fixed};
+
+pub struct LinuxCnc;
+
+/// Points per joint the motion controller holds (`EMCMOT_COMP_SIZE`).
+const MAX_POINTS: usize = 256;
+
+impl Controller for LinuxCnc {
+    fn name(&self) -> &'static str {
+        "linuxcnc"
+    }
+
+    fn extension(&self) -> &'static str {
+        "txt"
+    }
+
+    fn write(&self, table: &Table) -> Result<String, Refused> {
+        let refuse = |reason: String| Refused::Cannot {
+            controller: "linuxcnc",
+            reason,
+        };
+        if table.positions.len() > MAX_POINTS {
+            return Err(refuse(format!(
+                "{} points, but a joint holds at most {MAX_POINTS}; choose a larger --interval",
+                table.positions.len()
+            )));
+        }
+        if table.positions.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(refuse("the positions must increase strictly".into()));
+        }
+        // Corrections in µm or arcsec, the file in mm or degrees.
+        let per_unit = match table.kind {
+            AxisKind::Linear => 1000.0,
+            AxisKind::Rotary => 3600.0,
+        };
+        let mut out = String::new();
+        for ((p, u), d) in table.positions.iter().zip(&table.up).zip(&table.down) {
+            out.push_str(&format!(
+                "{} {} {}\n",
+                fmt_fixed(*p, 6),
+                fmt_fixed(u / per_unit, 7),
+                fmt_fixed(d / per_unit, 7)
+            ));
+        }
+        Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// x̄↑ = 2.1 µm, x̄↓ = 0.9 µm at 50 mm: trims −0.0021 and −0.0009 mm (forward,
+    /// reverse); no header line.
+    #[test]
+    fn golden_type_1_file() {
+        let table = Table {
+            kind: AxisKind::Linear,
+            positions: vec![0.0, 50.0, 100.0],
+            up: vec![0.0, -2.1, -3.8],
+            down: vec![0.0, -0.9, -2.5],
+        };
+        assert_eq!(
+            LinuxCnc.write(&table).unwrap(),
+            "0.000000 0.0000000 0.0000000\n50.000000 -0.0021000 -0.0009000\n100.000000 -0.0038000 -0.0025000\n"
+        );
+        let rotary = Table {
+            kind: AxisKind::Rotary,
+            positions: vec![0.0, 90.0],
+            up: vec![3.6, -7.2],
+            down: vec![0.0, 0.0],
+        };
+        assert_eq!(
+            LinuxCnc.write(&rotary).unwrap(),
+            "0.000000 0.0010000 0.0000000\n90.000000 -0.0020000 0.0000000\n"
+        );
+    }
+
+    #[test]
+    fn refuses_what_a_joint_cannot_hold() {
+        let n = MAX_POINTS + 1;
+        let big = Table {
+            kind: AxisKind::Linear,
+            positions: (0..n).map(|i| i as f64).collect(),
+            up: vec![0.0; n],
+            down: vec![0.0; n],
+        };
+        let err = LinuxCnc.write(&big).unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "linuxcnc: 257 points, but a joint holds at most 256; choose a larger --interval"
+        );
+    }
+}
