@@ -41,6 +41,13 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
     assert!(e > 10.0, "the error is there to cancel: E = {e}");
     for interval in [None, Some(50.0)] {
         let table = compensate::table(&data, compensate::grid(&data, interval));
+        // Every controller writes it (none refuses 21 or 20 points): a line per point,
+        // and the CSV's header.
+        for c in compensate::controllers::CONTROLLERS {
+            let lines = c.write(&table).unwrap().lines().count();
+            let header = usize::from(c.name() == "csv");
+            assert_eq!(lines, table.positions.len() + header, "{}", c.name());
+        }
         let file = compensate::controllers::find("csv")
             .unwrap()
             .write(&table)
