@@ -170,10 +170,7 @@ impl Check {
     /// "E = 7.900 µm within U = 1.500 µm of its limit 8.000 µm (ISO 14253-1: neither
     /// conformance nor nonconformance proven)": an inconclusive check; `unit` may be empty.
     pub fn within_uncertainty(&self, decimals: usize, unit: &str) -> String {
-        let with_unit = |v: f64| match unit {
-            "" => fmt_fixed(v, decimals),
-            _ => format!("{} {unit}", fmt_fixed(v, decimals)),
-        };
+        let with_unit = |v: f64| with_unit(v, decimals, unit);
         format!(
             "{} = {} within U = {} of its limit {} (ISO 14253-1: neither conformance nor nonconformance proven)",
             self.key,
@@ -186,10 +183,7 @@ impl Check {
     /// "E = 8.930 µm over its limit 6.000 µm (margin -2.930)": a failed check in the words of
     /// the findings lists (Markdown summary, JUnit); `unit` may be empty.
     pub fn over_limit(&self, decimals: usize, unit: &str) -> String {
-        let with_unit = |v: f64| match unit {
-            "" => fmt_fixed(v, decimals),
-            _ => format!("{} {unit}", fmt_fixed(v, decimals)),
-        };
+        let with_unit = |v: f64| with_unit(v, decimals, unit);
         format!(
             "{} = {} over its limit {} (margin {})",
             self.key,
@@ -197,6 +191,14 @@ impl Check {
             with_unit(self.limit),
             fmt_fixed(self.margin, decimals)
         )
+    }
+}
+
+/// `8.930 µm` (`8.930` when `unit` is empty): a value in the findings' words.
+fn with_unit(value: f64, decimals: usize, unit: &str) -> String {
+    match unit {
+        "" => fmt_fixed(value, decimals),
+        _ => format!("{} {unit}", fmt_fixed(value, decimals)),
     }
 }
 
