@@ -455,7 +455,7 @@ fn run_test(
                 (verdict, None, Some(judgement))
             }
         };
-    let diagnosis = diagnose.then(|| {
+    let diagnosis_of = || {
         crate::diagnose::diagnose(
             &data,
             &crate::diagnose::Options {
@@ -464,10 +464,23 @@ fn run_test(
                 ..crate::diagnose::Options::default()
             },
         )
-    });
+    };
+    let diagnosis = diagnose.then(diagnosis_of);
+    // The compensation's warnings come from the diagnosis, run for them when not asked for.
     let compensation = (slot.machine.controller.as_deref())
         .and_then(crate::compensate::controllers::find)
-        .map(|c| crate::compensate::compensation(c, &data, axis.standard));
+        .map(|c| {
+            let settings = crate::compensate::Settings::default();
+            let own;
+            let diagnosis = match &diagnosis {
+                Some(d) => d,
+                None => {
+                    own = diagnosis_of();
+                    &own
+                }
+            };
+            crate::compensate::compensation(c, &data, axis.standard, &settings, diagnosis)
+        });
     AxisTest {
         diagnosis,
         compensation,

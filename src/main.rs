@@ -114,9 +114,14 @@ enum Command {
         /// printed).
         #[arg(long, short)]
         out: Option<PathBuf>,
-        /// Equidistant grid step (mm or deg) from the first target; default: the targets.
+        /// Grid step (mm or deg) of an equidistant table; default: the measured targets
+        /// where the controller takes any points, else their mean spacing.
         #[arg(long)]
         interval: Option<f64>,
+        /// Reference point (mm or deg): the grid passes through it and the correction is
+        /// zero there; default: the first grid point, corrections as measured.
+        #[arg(long)]
+        reference: Option<f64>,
         /// Standard for the parameters measured and predicted.
         #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
         standard: StandardId,
@@ -266,6 +271,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             controller,
             out,
             interval,
+            reference,
             standard,
             json,
         } => {
@@ -273,7 +279,10 @@ fn run(cli: Cli) -> Result<ExitCode> {
             let request = cli::compensate::Request {
                 controller: &controller,
                 out: out.as_deref(),
-                interval,
+                settings: axcheck::compensate::Settings {
+                    interval,
+                    reference,
+                },
                 standard,
                 json,
             };

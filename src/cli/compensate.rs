@@ -16,7 +16,7 @@ use std::path::Path;
 pub struct Request<'a> {
     pub controller: &'a str,
     pub out: Option<&'a Path>,
-    pub interval: Option<f64>,
+    pub settings: compensate::Settings,
     pub standard: StandardId,
     pub json: bool,
 }
@@ -49,13 +49,14 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
             controllers::names().join(", ")
         )
     })?;
-    if let Some(step) = request.interval
+    if let Some(step) = request.settings.interval
         && !(step > 0.0 && step.is_finite())
     {
         return Err(anyhow!("--interval: expected a step > 0, got {step}"));
     }
-    let table = compensate::table(data, compensate::grid(data, request.interval));
-    let file = controller.write(&table)?;
+    let refused = |e| anyhow!("{}: {e}", controller.name());
+    let table = compensate::held_table(controller, data, &request.settings).map_err(refused)?;
+    let file = controller.write(&table).map_err(refused)?;
     let prediction = compensate::predict(&table, data, request.standard);
     if let Some(out) = request.out {
         axcheck::atomic::write(out, file.as_bytes())

@@ -161,7 +161,10 @@ struct CompensationJson<'a> {
     file: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     refused: Option<&'a str>,
-    predicted: PredictedJson<'a>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    predicted: Option<PredictedJson<'a>>,
+    /// Why the table may not achieve the prediction (drift, aliasing, n = 1, outliers).
+    warnings: &'a [crate::compensate::Warning],
 }
 
 #[derive(Serialize)]
@@ -174,10 +177,11 @@ impl<'a> CompensationJson<'a> {
         CompensationJson {
             controller: c.controller,
             file: file.map(|p| p.to_string_lossy().replace('\\', "/")),
-            refused: c.file.as_ref().err().map(String::as_str),
-            predicted: PredictedJson {
+            refused: c.outcome.as_ref().err().map(String::as_str),
+            predicted: c.outcome.as_ref().ok().map(|c| PredictedJson {
                 parameters: ParameterValues(&c.predicted.parameters),
-            },
+            }),
+            warnings: &c.warnings,
         }
     }
 }

@@ -18,6 +18,8 @@ fn read_back(text: &str) -> Table {
         positions: Vec::new(),
         up: Vec::new(),
         down: Vec::new(),
+        reference: 0.0,
+        modulo_deg: None,
     };
     let mut lines = text.lines();
     assert_eq!(
@@ -40,18 +42,19 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
     let e = measured.parameter("E").unwrap().value;
     assert!(e > 10.0, "the error is there to cancel: E = {e}");
     for interval in [None, Some(50.0)] {
-        let table = compensate::table(&data, compensate::grid(&data, interval));
-        // Every controller writes it (none refuses 21 or 20 points): a line per point,
-        // and the CSV's header.
+        let settings = compensate::Settings {
+            interval,
+            reference: None,
+        };
+        // Every controller holds and writes it (none refuses 21 targets or 20 mm steps).
         for c in compensate::controllers::CONTROLLERS {
-            let lines = c.write(&table).unwrap().lines().count();
-            let header = usize::from(c.name() == "csv");
-            assert_eq!(lines, table.positions.len() + header, "{}", c.name());
+            let held = compensate::held_table(*c, &data, &settings).unwrap();
+            let file = c.write(&held).unwrap();
+            assert!(file.lines().count() >= held.positions.len(), "{}", c.name());
         }
-        let file = compensate::controllers::find("csv")
-            .unwrap()
-            .write(&table)
-            .unwrap();
+        let csv = compensate::controllers::find("csv").unwrap();
+        let table = compensate::held_table(csv, &data, &settings).unwrap();
+        let file = csv.write(&table).unwrap();
         let back = read_back(&file);
         let after = evaluate::evaluate(&compensate::apply(&back, &data), StandardId::Iso230_2);
         let e_after = after.parameter("E").unwrap().value;

@@ -3,7 +3,7 @@
 //! `_arcsec`). The correction is the value the controller adds to reach the target: minus
 //! the mean deviation x̄↑ / x̄↓ there (ISO 230-2 2.7: deviation = actual − target).
 
-use super::{Controller, Refused};
+use super::{Controller, Directions, Format, Refused, Spacing};
 use crate::compensate::Table;
 use crate::units::fmt_fixed;
 
@@ -16,6 +16,18 @@ impl Controller for Csv {
 
     fn extension(&self) -> &'static str {
         "csv"
+    }
+
+    /// Any points, both directions, no wrap; printed to 0.0001 µm or arcsec.
+    fn format(&self) -> Format {
+        Format {
+            spacing: Spacing::Free,
+            max_points: usize::MAX,
+            directions: Directions::Bidirectional,
+            modulo: false,
+            quantum_um: 1e-4,
+            quantum_arcsec: 1e-4,
+        }
     }
 
     fn write(&self, table: &Table) -> Result<String, Refused> {
@@ -47,6 +59,8 @@ mod tests {
             positions: vec![0.0, 100.0],
             up: vec![-1.5, 2.0],
             down: vec![0.5, 0.0],
+            reference: 0.0,
+            modulo_deg: None,
         };
         assert_eq!(
             Csv.write(&table).unwrap(),

@@ -11,7 +11,7 @@
 //! strictly; at most 256 points per joint (`EMCMOT_COMP_SIZE`). With a table, `BACKLASH`
 //! is not used: the reversal is in the two columns.
 
-use super::{Controller, Refused};
+use super::{Controller, Directions, Format, Refused, Spacing};
 use crate::compensate::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
@@ -29,19 +29,23 @@ impl Controller for LinuxCnc {
         "txt"
     }
 
-    fn write(&self, table: &Table) -> Result<String, Refused> {
-        let refuse = |reason: String| Refused::Cannot {
-            controller: "linuxcnc",
-            reason,
-        };
-        if table.positions.len() > MAX_POINTS {
-            return Err(refuse(format!(
-                "{} points, but a joint holds at most {MAX_POINTS}; choose a larger --interval",
-                table.positions.len()
-            )));
+    /// Any increasing list of up to 256 points, forward and reverse trims, no wrap (a
+    /// rotary joint's table covers the positions the joint takes); the file prints 0.1 nm
+    /// or 1e-7°.
+    fn format(&self) -> Format {
+        Format {
+            spacing: Spacing::Free,
+            max_points: MAX_POINTS,
+            directions: Directions::Bidirectional,
+            modulo: false,
+            quantum_um: 1e-4,
+            quantum_arcsec: 3.6e-4,
         }
+    }
+
+    fn write(&self, table: &Table) -> Result<String, Refused> {
         if table.positions.windows(2).any(|w| w[1] <= w[0]) {
-            return Err(refuse("the positions must increase strictly".into()));
+            return Err(Refused::Grid("the positions must increase strictly".into()));
         }
         // Corrections in µm or arcsec, the file in mm or degrees.
         let per_unit = match table.kind {
@@ -74,6 +78,8 @@ mod tests {
             positions: vec![0.0, 50.0, 100.0],
             up: vec![0.0, -2.1, -3.8],
             down: vec![0.0, -0.9, -2.5],
+            reference: 0.0,
+            modulo_deg: None,
         };
         assert_eq!(
             LinuxCnc.write(&table).unwrap(),
@@ -84,6 +90,8 @@ mod tests {
             positions: vec![0.0, 90.0],
             up: vec![3.6, -7.2],
             down: vec![0.0, 0.0],
+            reference: 0.0,
+            modulo_deg: None,
         };
         assert_eq!(
             LinuxCnc.write(&rotary).unwrap(),
@@ -93,17 +101,13 @@ mod tests {
 
     #[test]
     fn refuses_what_a_joint_cannot_hold() {
-        let n = MAX_POINTS + 1;
-        let big = Table {
-            kind: AxisKind::Linear,
-            positions: (0..n).map(|i| i as f64).collect(),
-            up: vec![0.0; n],
-            down: vec![0.0; n],
-        };
-        let err = LinuxCnc.write(&big).unwrap_err().to_string();
+        let data = crate::compensate::testing::straight(0.0, 1.0, MAX_POINTS + 1);
+        let err = crate::compensate::held_table(&LinuxCnc, &data, &Default::default())
+            .unwrap_err()
+            .to_string();
         assert_eq!(
             err,
-            "linuxcnc: 257 points, but a joint holds at most 256; choose a larger --interval"
+            "257 points, but the table holds at most 256; choose --interval 1.004 mm or more"
         );
     }
 }

@@ -1,0 +1,107 @@
+//! The correction table as a controller holds it, and its effect on the readings.
+//!
+//! A deviation is actual − target (ISO 230-2 2.7). A controller that adds the correction c
+//! to reach a target moves to target + c + X(target), so the correction that cancels the
+//! mean deviation is c = −x̄ at each target and direction.
+
+use crate::measurement::AxisData;
+use crate::units::{AxisKind, Direction};
+use serde::Serialize;
+
+/// A correction table on the controller's grid: one correction per point and direction,
+/// in the deviation unit (µm or arcsec). A controller with one table per axis holds
+/// `up` = `down` (or `down` − `up` constant, the reversal its backlash parameter adds).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Table {
+    #[serde(skip)]
+    pub kind: AxisKind,
+    /// Grid positions, mm or deg, ascending.
+    pub positions: Vec<f64>,
+    /// Correction added on approaches in the positive direction (↑).
+    pub up: Vec<f64>,
+    /// Correction added on approaches in the negative direction (↓).
+    pub down: Vec<f64>,
+    /// The reference point (mm or deg), a grid point: where the controller's table starts
+    /// counting (FANUC) or the correction is zero (with `--reference`).
+    pub reference: f64,
+    /// One revolution (deg) when the table wraps around a rotary axis: positions from 0
+    /// to the revolution, the last point the first one again.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub modulo_deg: Option<f64>,
+}
+
+/// Linear interpolation of `values` at `positions` (ascending) at `x`; constant beyond the
+/// ends (controllers hold the end value; the grid covers the travel).
+pub fn linear(positions: &[f64], values: &[f64], x: f64) -> f64 {
+    match positions.len() {
+        0 => 0.0,
+        1 => values[0],
+        n => {
+            if x <= positions[0] {
+                return values[0];
+            }
+            if x >= positions[n - 1] {
+                return values[n - 1];
+            }
+            let k = positions.partition_point(|p| *p <= x) - 1;
+            let t = (x - positions[k]) / (positions[k + 1] - positions[k]);
+            values[k] + t * (values[k + 1] - values[k])
+        }
+    }
+}
+
+/// `position` folded into one revolution [0, `revolution`).
+pub fn wrap(position: f64, revolution: f64) -> f64 {
+    position.rem_euclid(revolution)
+}
+
+impl Table {
+    /// The correction the controller adds at `position` approached in `direction`
+    /// (a modulo table looks up the position within the revolution).
+    pub fn correction(&self, position: f64, direction: Direction) -> f64 {
+        let values = match direction {
+            Direction::Up => &self.up,
+            Direction::Down => &self.down,
+        };
+        let x = self.modulo_deg.map_or(position, |r| wrap(position, r));
+        linear(&self.positions, values, x)
+    }
+
+    /// The direction-independent part at each point: (c↑ + c↓)/2, what a controller with
+    /// one table per axis holds.
+    pub fn mean(&self) -> Vec<f64> {
+        self.up
+            .iter()
+            .zip(&self.down)
+            .map(|(u, d)| (u + d) / 2.0)
+            .collect()
+    }
+
+    /// The correction a backlash parameter adds on ↓ approaches relative to ↑ ones,
+    /// c↓ − c↑ averaged over the points (= x̄↑ − x̄↓, the mean reversal B̄ of ISO 230-2 2.14).
+    pub fn reversal_correction(&self) -> f64 {
+        let n = self.positions.len().max(1) as f64;
+        self.up
+            .iter()
+            .zip(&self.down)
+            .map(|(u, d)| d - u)
+            .sum::<f64>()
+            / n
+    }
+
+    /// The table with every correction rounded to `quantum` (the controller's unit).
+    pub fn quantised(mut self, quantum: f64) -> Table {
+        if quantum > 0.0 {
+            for v in self.up.iter_mut().chain(self.down.iter_mut()) {
+                *v = (*v / quantum).round() * quantum;
+            }
+        }
+        self
+    }
+}
+
+/// The readings as they would be with `table` active: each deviation plus the correction
+/// at its target and direction.
+pub fn apply(table: &Table, data: &AxisData) -> AxisData {
+    data.map_deviations(|r| r.deviation + table.correction(data.targets[r.target], r.direction))
+}

@@ -1,0 +1,88 @@
+//! When not to compensate: what the diagnosis finds that a static table cannot fix, or
+//! that the table would bake in. A table corrects the mean deviation at each position; it
+//! holds only if that mean is a property of the position (Hemingray et al. 1971, §4).
+
+use super::Table;
+use crate::diagnose::Diagnosis;
+use crate::diagnose::effects::Effect;
+use crate::diagnose::effects::periodic::Periodic;
+use crate::measurement::AxisData;
+use crate::units::fmt_fixed;
+use serde::Serialize;
+
+/// A reason the table may not achieve its prediction on the machine.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Warning {
+    /// Stable key: `time_effect`, `aliased_periodic`, `single_run`, `outliers`.
+    pub key: &'static str,
+    pub message: String,
+}
+
+/// The warnings for a table built from `data`, given its diagnosis.
+pub fn warnings(data: &AxisData, diagnosis: &Diagnosis, table: &Table) -> Vec<Warning> {
+    let mut out = Vec::new();
+    out.extend(time_effects(diagnosis));
+    out.extend(aliased_periodic(diagnosis, table));
+    if data.runs() < 2 {
+        out.push(Warning {
+            key: "single_run",
+            message: "one run per direction (n = 1): the table follows the scatter of a single approach, and no repeatability says how much of it will recur (ISO 230-2 2.11 needs n ≥ 2); repeat the test before compensating".into(),
+        });
+    }
+    let outliers = diagnosis.of(Effect::Outlier).count();
+    if outliers > 0 {
+        out.push(Warning {
+            key: "outliers",
+            message: format!(
+                "outlying readings in the data used ({outliers}): the table follows them at their targets; re-measure or remove them before compensating"
+            ),
+        });
+    }
+    out
+}
+
+/// Drift, warm-up and thermal growth change the deviations with time: a table records
+/// them at the moment of the test (ISO 230-2 3.3: the machine at thermal equilibrium).
+fn time_effects(diagnosis: &Diagnosis) -> Option<Warning> {
+    let found: Vec<String> = [Effect::Drift, Effect::WarmUp, Effect::ThermalGrowth]
+        .into_iter()
+        .filter(|e| diagnosis.has(*e))
+        .map(|e| e.name().replace('_', " "))
+        .collect();
+    if found.is_empty() {
+        return None;
+    }
+    Some(Warning {
+        key: "time_effect",
+        message: format!(
+            "{} during the test: the deviations changed with time, and a static table fixes them as they were at one moment (ISO 230-2 3.3; Hemingray et al. 1971, §4); bring the machine to thermal equilibrium and measure again, or compensate the time effect separately",
+            found.join(", ")
+        ),
+    })
+}
+
+/// A periodic error shorter than four table intervals: linear interpolation between points
+/// cannot follow it, and from a coarser table it aliases into a slower error that is not
+/// on the machine.
+fn aliased_periodic(diagnosis: &Diagnosis, table: &Table) -> Option<Warning> {
+    let spacing = table
+        .positions
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(0.0, f64::max);
+    let p = diagnosis
+        .estimates::<Periodic>()
+        .find(|p| p.period < 4.0 * spacing)?;
+    let unit = table.kind.position_unit();
+    Some(Warning {
+        key: "aliased_periodic",
+        message: format!(
+            "periodic error of period {} {unit} (amplitude {} {}): the table's points up to {} {unit} apart cannot follow it (it needs at most a quarter period, {} {unit}) and interpolating it aliases; correct it with a finer --interval if the plan resolves it, or leave it to the scatter",
+            fmt_fixed(p.period, 3),
+            fmt_fixed(p.amplitude, 2),
+            table.kind.deviation_symbol(),
+            fmt_fixed(spacing, 3),
+            fmt_fixed(p.period / 4.0, 3)
+        ),
+    })
+}
