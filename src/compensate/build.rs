@@ -97,3 +97,91 @@ fn zero_at_reference(table: &mut Table, one_table: bool) {
         *v -= shift;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compensate::controllers::Spacing;
+    use crate::compensate::testing::axis;
+    use crate::units::AxisKind;
+
+    fn format(directions: Directions, modulo: bool) -> Format {
+        Format {
+            spacing: Spacing::Free,
+            max_points: 1000,
+            directions,
+            modulo,
+            quantum_um: 0.0,
+            quantum_arcsec: 0.0,
+        }
+    }
+
+    /// x̄↑ = 2 + 0.01·P µm, x̄↓ = x̄↑ − 4 µm (a reversal B = 4 µm) at 0, 100, 200 mm.
+    fn data() -> AxisData {
+        axis(AxisKind::Linear, &[0.0, 100.0, 200.0], 3, |p, d| {
+            2.0 + 0.01 * p - if d == Direction::Down { 4.0 } else { 0.0 }
+        })
+    }
+
+    fn close(a: &[f64], b: &[f64]) -> bool {
+        a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-12)
+    }
+
+    #[test]
+    fn bidirectional_corrections_are_minus_the_means_interpolated() {
+        let f = format(Directions::Bidirectional, false);
+        let t = table(&data(), vec![0.0, 50.0, 200.0], &f, &Settings::default());
+        assert!(close(&t.up, &[-2.0, -2.5, -4.0]));
+        assert!(close(&t.down, &[2.0, 1.5, 0.0]));
+        assert_eq!(t.reference, 0.0);
+    }
+
+    /// One table: the mean −(x̄↑ + x̄↓)/2 = −(0.01·P); with a backlash parameter ↑ and ↓
+    /// keep ∓2 µm about it (B̄ = x̄↑ − x̄↓ = 4 µm), without one both get the mean.
+    #[test]
+    fn one_table_controllers_get_the_mean_and_maybe_the_reversal() {
+        let positions = vec![0.0, 100.0, 200.0];
+        let with = format(Directions::Unidirectional { backlash: true }, false);
+        let t = table(&data(), positions.clone(), &with, &Settings::default());
+        assert!(close(&t.mean(), &[0.0, -1.0, -2.0]));
+        assert!(close(&t.up, &[-2.0, -3.0, -4.0]));
+        assert!((t.reversal_correction() - 4.0).abs() < 1e-12);
+        let without = format(Directions::Unidirectional { backlash: false }, false);
+        let t = table(&data(), positions, &without, &Settings::default());
+        assert!(close(&t.up, &[0.0, -1.0, -2.0]) && t.up == t.down);
+    }
+
+    /// With the reference at 100 mm the ↑ correction is zero there: −3 µm added to all.
+    #[test]
+    fn the_reference_point_gets_zero() {
+        let f = format(Directions::Bidirectional, false);
+        let s = Settings {
+            interval: None,
+            reference: Some(100.0),
+        };
+        let t = table(&data(), vec![0.0, 100.0, 200.0], &f, &s);
+        assert!(close(&t.up, &[1.0, 0.0, -1.0]));
+        assert!(close(&t.down, &[5.0, 4.0, 3.0]));
+        assert_eq!(t.reference, 100.0);
+    }
+
+    /// A rotary axis measured −90…450° (one and a half turns), x̄ = 10·sin(θ) + 0.01·θ
+    /// arcsec: the modulo table at θ averages the turns that pass θ, and 0° and 360° get
+    /// one value. At 90°: turns at 90 and 450 → −(10 + 0.9 + 10 + 4.5)/2 = −12.7.
+    #[test]
+    fn a_modulo_table_folds_the_turns() {
+        let targets: Vec<f64> = (0..=12).map(|k| -90.0 + k as f64 * 45.0).collect();
+        let data = axis(AxisKind::Rotary, &targets, 2, |p, _| {
+            10.0 * p.to_radians().sin() + 0.01 * p
+        });
+        let f = format(Directions::Bidirectional, true);
+        let positions: Vec<f64> = (0..=4).map(|k| k as f64 * 90.0).collect();
+        let t = table(&data, positions, &f, &Settings::default());
+        assert_eq!(t.modulo_deg, Some(360.0));
+        assert!((t.up[1] - -12.7).abs() < 1e-9, "{:?}", t.up);
+        // 0°: turns at 0 and 360 → −(0 + 3.6)/2 = −1.8; 360°: turns at 0 and 360 as well.
+        assert!((t.up[0] - -1.8).abs() < 1e-9 && t.up[0] == t.up[4]);
+        // Looked up at 450° (= 90°) the correction is the 90° one.
+        assert_eq!(t.correction(450.0, Direction::Up), t.up[1]);
+    }
+}

@@ -86,3 +86,90 @@ fn too_many(data: &AxisData, points: usize, max: usize) -> Refused {
         fmt_fixed((least * 1000.0).ceil() / 1000.0, 3)
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compensate::controllers::Directions;
+    use crate::compensate::testing::{axis, straight};
+    use crate::units::AxisKind;
+
+    fn format(spacing: Spacing, modulo: bool) -> Format {
+        Format {
+            spacing,
+            max_points: 100,
+            directions: Directions::Bidirectional,
+            modulo,
+            quantum_um: 0.1,
+            quantum_arcsec: 0.1,
+        }
+    }
+
+    fn settings(interval: Option<f64>, reference: Option<f64>) -> Settings {
+        Settings {
+            interval,
+            reference,
+        }
+    }
+
+    /// Targets 3, 7, 12, 20: free spacing keeps them; equidistant without an interval
+    /// takes the mean spacing 17/3 = 5.667 mm from the first target and covers the last
+    /// (3 + 3 × 5.667 = 20.001 ≥ 20).
+    #[test]
+    fn free_keeps_the_targets_equidistant_covers_the_travel() {
+        let data = axis(AxisKind::Linear, &[3.0, 7.0, 12.0, 20.0], 2, |_, _| 0.0);
+        let free = grid(&data, &format(Spacing::Free, false), &Settings::default()).unwrap();
+        assert_eq!(free, [3.0, 7.0, 12.0, 20.0]);
+        let eq = grid(&data, &format(Spacing::Equidistant, false), &Settings::default()).unwrap();
+        assert_eq!(eq.len(), 4);
+        assert!((eq[1] - 8.667).abs() < 1e-9 && (eq[3] - 20.001).abs() < 1e-9);
+    }
+
+    /// Every 5 mm through the reference 10.5 over the travel 3…20: from 0.5 (at or before
+    /// 3) to 20.5 (at or after 20), 5 points.
+    #[test]
+    fn an_interval_through_the_reference() {
+        let data = axis(AxisKind::Linear, &[3.0, 7.0, 12.0, 20.0], 2, |_, _| 0.0);
+        let g = grid(
+            &data,
+            &format(Spacing::Free, false),
+            &settings(Some(5.0), Some(10.5)),
+        )
+        .unwrap();
+        assert_eq!(g, [0.5, 5.5, 10.5, 15.5, 20.5]);
+    }
+
+    /// A rotary axis measured 0…360° every 45° on a modulo controller: 0…360 every 45°;
+    /// an interval of 50° does not divide the revolution and is refused.
+    #[test]
+    fn a_whole_revolution_gives_a_modulo_grid() {
+        let targets: Vec<f64> = (0..=8).map(|k| k as f64 * 45.0).collect();
+        let data = axis(AxisKind::Rotary, &targets, 2, |_, _| 0.0);
+        let f = format(Spacing::Equidistant, true);
+        assert!(modulo(&data, &f));
+        assert!(!modulo(&data, &format(Spacing::Equidistant, false)));
+        assert_eq!(grid(&data, &f, &Settings::default()).unwrap(), targets);
+        let err = grid(&data, &f, &settings(Some(50.0), None)).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "a modulo table needs an interval that divides 360°, got 50.0000°"
+        );
+    }
+
+    /// 1 000 mm every 5 mm is 201 points, over the 100 the format holds: the least
+    /// interval that fits is 1000/99 = 10.102 mm, rounded up to the micrometre.
+    #[test]
+    fn too_many_points_names_the_interval_that_fits() {
+        let data = straight(0.0, 250.0, 5);
+        let err = grid(
+            &data,
+            &format(Spacing::Equidistant, false),
+            &settings(Some(5.0), None),
+        )
+        .unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "201 points, but the table holds at most 100; choose --interval 10.102 mm or more"
+        );
+    }
+}
