@@ -122,6 +122,9 @@ enum Command {
         /// zero there; default: the first grid point, corrections as measured.
         #[arg(long)]
         reference: Option<f64>,
+        /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
+        #[arg(long)]
+        pitch: Option<f64>,
         /// Standard for the parameters measured and predicted.
         #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
         standard: StandardId,
@@ -272,6 +275,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             out,
             interval,
             reference,
+            pitch,
             standard,
             json,
         } => {
@@ -283,6 +287,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                     interval,
                     reference,
                 },
+                pitch,
                 standard,
                 json,
             };

@@ -3,7 +3,8 @@
 
 use super::text::{left, right};
 use anyhow::{Context, Result, anyhow};
-use axcheck::compensate::{self, Prediction, Table, controllers};
+use axcheck::compensate::{self, Table, Warning, controllers};
+use axcheck::evaluate::Evaluation;
 use axcheck::evaluate::StandardId;
 use axcheck::evaluate::json::ParameterValues;
 use axcheck::measurement::AxisData;
@@ -17,6 +18,8 @@ pub struct Request<'a> {
     pub controller: &'a str,
     pub out: Option<&'a Path>,
     pub settings: compensate::Settings,
+    /// Lead-screw or encoder pitch, for the diagnosis' periodic error.
+    pub pitch: Option<f64>,
     pub standard: StandardId,
     pub json: bool,
 }
@@ -30,6 +33,8 @@ struct CompensationJson<'a> {
     table: &'a Table,
     measured: Parameters<'a>,
     predicted: Parameters<'a>,
+    /// Why the table may not achieve the prediction on the machine.
+    warnings: &'a [Warning],
     /// The table file written, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     file: Option<String>,
@@ -40,7 +45,8 @@ struct Parameters<'a> {
     parameters: ParameterValues<'a>,
 }
 
-/// Writes the table (to `out`, or standard output without it) and returns what to print.
+/// Writes the table (to `out`, or standard output without it) and returns what to print;
+/// the warnings go to standard error when the table goes to standard output.
 pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     let controller = controllers::find(request.controller).ok_or_else(|| {
         anyhow!(
@@ -54,37 +60,66 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     {
         return Err(anyhow!("--interval: expected a step > 0, got {step}"));
     }
-    let refused = |e| anyhow!("{}: {e}", controller.name());
-    let table = compensate::held_table(controller, data, &request.settings).map_err(refused)?;
-    let file = controller.write(&table).map_err(refused)?;
-    let prediction = compensate::predict(&table, data, request.standard);
+    let options = axcheck::diagnose::Options {
+        pitch: request.pitch,
+        standard: request.standard,
+        ..Default::default()
+    };
+    let diagnosis = axcheck::diagnose::diagnose(data, &options);
+    let c = compensate::compensation(
+        controller,
+        data,
+        request.standard,
+        &request.settings,
+        &diagnosis,
+    );
+    let done = c.outcome.map_err(|refused| anyhow!(refused))?;
     if let Some(out) = request.out {
-        axcheck::atomic::write(out, file.as_bytes())
+        axcheck::atomic::write(out, done.file.as_bytes())
             .with_context(|| format!("cannot write {}", out.display()))?;
     }
+    let measured = axcheck::evaluate::evaluate(data, request.standard);
     if request.json {
         let json = CompensationJson {
             controller: controller.name(),
             unit: data.kind.deviation_unit(),
-            table: &table,
+            table: &done.table,
             measured: Parameters {
-                parameters: ParameterValues(&prediction.measured.parameters),
+                parameters: ParameterValues(&measured.parameters),
             },
             predicted: Parameters {
-                parameters: ParameterValues(&prediction.predicted.parameters),
+                parameters: ParameterValues(&done.predicted.parameters),
             },
+            warnings: &c.warnings,
             file: request.out.map(|p| p.display().to_string()),
         };
         return Ok(serde_json::to_string_pretty(&json)? + "\n");
     }
     Ok(match request.out {
-        None => file,
-        Some(out) => summary(&prediction, data, out, controller.name()),
+        None => {
+            for w in &c.warnings {
+                eprintln!("axcheck: warning: {}", w.message);
+            }
+            done.file
+        }
+        Some(out) => {
+            let mut text = summary(&measured, &done.predicted, data, out, controller.name());
+            for w in &c.warnings {
+                let _ = writeln!(text, "Warning: {}", w.message);
+            }
+            text
+        }
     })
 }
 
 /// The parameters before and after, and where the table went.
-fn summary(p: &Prediction, data: &AxisData, out: &Path, controller: &str) -> String {
+fn summary(
+    measured: &Evaluation,
+    predicted: &Evaluation,
+    data: &AxisData,
+    out: &Path,
+    controller: &str,
+) -> String {
     let unit = data.kind.deviation_symbol();
     let mut text = format!("{controller} table written to {}\n\n", out.display());
     let _ = writeln!(
@@ -94,8 +129,8 @@ fn summary(p: &Prediction, data: &AxisData, out: &Path, controller: &str) -> Str
         right(&format!("measured ({unit})"), 16),
         right(&format!("predicted ({unit})"), 17)
     );
-    for m in &p.measured.parameters {
-        let after = p.predicted.parameter(m.key()).map_or(f64::NAN, |q| q.value);
+    for m in &measured.parameters {
+        let after = predicted.parameter(m.key()).map_or(f64::NAN, |q| q.value);
         let _ = writeln!(
             text,
             "{}  {}  {}",
