@@ -470,7 +470,10 @@ fn run_test(
     let compensation = (slot.machine.controller.as_deref())
         .and_then(crate::compensate::controllers::find)
         .map(|c| {
-            let settings = crate::compensate::Settings::default();
+            let settings = crate::compensate::Settings {
+                pitch: axis.raw.pitch,
+                ..Default::default()
+            };
             let own;
             let diagnosis = match &diagnosis {
                 Some(d) => d,

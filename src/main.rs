@@ -286,8 +286,8 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 settings: axcheck::compensate::Settings {
                     interval,
                     reference,
+                    pitch,
                 },
-                pitch,
                 standard,
                 json,
             };

@@ -18,8 +18,6 @@ pub struct Request<'a> {
     pub controller: &'a str,
     pub out: Option<&'a Path>,
     pub settings: compensate::Settings,
-    /// Lead-screw or encoder pitch, for the diagnosis' periodic error.
-    pub pitch: Option<f64>,
     pub standard: StandardId,
     pub json: bool,
 }
@@ -61,7 +59,7 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
         return Err(anyhow!("--interval: expected a step > 0, got {step}"));
     }
     let options = axcheck::diagnose::Options {
-        pitch: request.pitch,
+        pitch: request.settings.pitch,
         standard: request.standard,
         ..Default::default()
     };

@@ -158,6 +158,7 @@ mod tests {
         let s = Settings {
             interval: None,
             reference: Some(100.0),
+            ..Default::default()
         };
         let t = table(&data(), vec![0.0, 100.0, 200.0], &f, &s);
         assert!(close(&t.up, &[1.0, 0.0, -1.0]));

@@ -109,6 +109,7 @@ mod tests {
         Settings {
             interval,
             reference,
+            ..Default::default()
         }
     }
 
@@ -120,7 +121,12 @@ mod tests {
         let data = axis(AxisKind::Linear, &[3.0, 7.0, 12.0, 20.0], 2, |_, _| 0.0);
         let free = grid(&data, &format(Spacing::Free, false), &Settings::default()).unwrap();
         assert_eq!(free, [3.0, 7.0, 12.0, 20.0]);
-        let eq = grid(&data, &format(Spacing::Equidistant, false), &Settings::default()).unwrap();
+        let eq = grid(
+            &data,
+            &format(Spacing::Equidistant, false),
+            &Settings::default(),
+        )
+        .unwrap();
         assert_eq!(eq.len(), 4);
         assert!((eq[1] - 8.667).abs() < 1e-9 && (eq[3] - 20.001).abs() < 1e-9);
     }

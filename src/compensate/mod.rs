@@ -33,6 +33,9 @@ pub struct Settings {
     /// The reference point, mm or deg: the grid passes through it and the correction is
     /// zero there. `None`: the first grid point, corrections as measured (−x̄).
     pub reference: Option<f64>,
+    /// The declared lead-screw or encoder pitch, mm or deg: a periodic error of that period
+    /// that the table's points cannot follow is warned of, found by the diagnosis or not.
+    pub pitch: Option<f64>,
 }
 
 /// The table as `controller` holds it for `data`, or why it cannot hold it.
@@ -88,7 +91,7 @@ pub fn compensation(
         })
         .map_err(|e| format!("{}: {e}", controller.name()));
     let warnings = match &outcome {
-        Ok(c) => warnings::warnings(data, diagnosis, &c.table),
+        Ok(c) => warnings::warnings(data, diagnosis, &c.table, settings.pitch),
         Err(_) => Vec::new(),
     };
     Compensation {

@@ -19,14 +19,19 @@ pub struct Warning {
 }
 
 /// The warnings for a table built from `data`, given its diagnosis.
-pub fn warnings(data: &AxisData, diagnosis: &Diagnosis, table: &Table) -> Vec<Warning> {
+pub fn warnings(
+    data: &AxisData,
+    diagnosis: &Diagnosis,
+    table: &Table,
+    pitch: Option<f64>,
+) -> Vec<Warning> {
     let mut out = Vec::new();
     out.extend(time_effects(diagnosis));
-    out.extend(aliased_periodic(diagnosis, table));
+    out.extend(aliased_periodic(diagnosis, table).or_else(|| aliased_pitch(pitch, table)));
     if data.runs() < 2 {
         out.push(Warning {
             key: "single_run",
-            message: "one run per direction (n = 1): the table follows the scatter of a single approach, and no repeatability says how much of it will recur (ISO 230-2 2.11 needs n ≥ 2); repeat the test before compensating".into(),
+            message: "one run per direction (n = 1): the table follows the scatter of a single approach, and no repeatability says how much of it will recur (ISO 230-2 4.3.2: five approaches per direction); repeat the test before compensating".into(),
         });
     }
     let outliers = diagnosis.of(Effect::Outlier).count();
@@ -65,11 +70,7 @@ fn time_effects(diagnosis: &Diagnosis) -> Option<Warning> {
 /// cannot follow it, and from a coarser table it aliases into a slower error that is not
 /// on the machine.
 fn aliased_periodic(diagnosis: &Diagnosis, table: &Table) -> Option<Warning> {
-    let spacing = table
-        .positions
-        .windows(2)
-        .map(|w| w[1] - w[0])
-        .fold(0.0, f64::max);
+    let spacing = widest_spacing(table);
     let p = diagnosis
         .estimates::<Periodic>()
         .find(|p| p.period < 4.0 * spacing)?;
@@ -83,6 +84,35 @@ fn aliased_periodic(diagnosis: &Diagnosis, table: &Table) -> Option<Warning> {
             table.kind.deviation_symbol(),
             fmt_fixed(spacing, 3),
             fmt_fixed(p.period / 4.0, 3)
+        ),
+    })
+}
+
+/// The widest interval between the table's points.
+fn widest_spacing(table: &Table) -> f64 {
+    table
+        .positions
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(0.0, f64::max)
+}
+
+/// A declared pitch the table's points cannot follow: whatever periodic error the screw or
+/// scale has at that pitch, the readings sampled it at the targets and the table carries
+/// those samples between them (Hemingray et al. 1971, §4).
+fn aliased_pitch(pitch: Option<f64>, table: &Table) -> Option<Warning> {
+    let pitch = pitch.filter(|p| *p > 0.0)?;
+    let spacing = widest_spacing(table);
+    if pitch >= 4.0 * spacing {
+        return None;
+    }
+    let unit = table.kind.position_unit();
+    Some(Warning {
+        key: "aliased_periodic",
+        message: format!(
+            "the declared pitch {} {unit} is shorter than four table intervals ({} {unit}): a periodic error of that pitch is sampled at the points and interpolated between them, so the table would alias it; measure the pitch separately (a short test over a few pitches) before compensating it",
+            fmt_fixed(pitch, 3),
+            fmt_fixed(4.0 * spacing, 3)
         ),
     })
 }

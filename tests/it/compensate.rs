@@ -45,6 +45,7 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
         let settings = compensate::Settings {
             interval,
             reference: None,
+            ..Default::default()
         };
         // Every controller holds and writes it (none refuses 21 targets or 20 mm steps).
         for c in compensate::controllers::CONTROLLERS {
@@ -160,4 +161,45 @@ fn a_campaign_machine_with_a_controller_gets_its_tables() {
         "{stdout}"
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// When not to compensate: each simulated axis carries one thing a static table cannot
+/// fix or would bake in, and gets that warning and no other; a clean axis gets none.
+#[test]
+fn the_diagnosis_warns_when_a_table_will_not_hold() {
+    use axcheck::diagnose::{Options, diagnose};
+    let cases = [
+        ("warn-drift.yaml", None, vec!["time_effect"]),
+        ("warn-single-run.yaml", None, vec!["single_run"]),
+        ("warn-outlier.yaml", None, vec!["outliers"]),
+        // A 40 mm period: 20 mm between points cannot follow it; 5 mm can.
+        ("warn-periodic.yaml", Some(20.0), vec!["aliased_periodic"]),
+        ("warn-periodic.yaml", Some(5.0), vec![]),
+    ];
+    let csv = compensate::controllers::find("csv").unwrap();
+    for (file, interval, expected) in cases {
+        let text = std::fs::read_to_string(format!("tests/data/compensation/{file}")).unwrap();
+        let data = Simulation::from_yaml(&text, file).unwrap().run(5);
+        let diagnosis = diagnose(&data, &Options::default());
+        let settings = compensate::Settings {
+            interval,
+            ..Default::default()
+        };
+        let c = compensate::compensation(csv, &data, StandardId::Iso230_2, &settings, &diagnosis);
+        let keys: Vec<&str> = c.warnings.iter().map(|w| w.key).collect();
+        assert_eq!(keys, expected, "{file} {interval:?}: {:?}", c.warnings);
+    }
+    // A declared pitch of 5 mm cannot be followed by points 20 mm apart, found or not.
+    let data = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(3);
+    let settings = compensate::Settings {
+        interval: Some(20.0),
+        reference: None,
+        pitch: Some(5.0),
+    };
+    let diagnosis = diagnose(&data, &Options::default());
+    let c = compensate::compensation(csv, &data, StandardId::Iso230_2, &settings, &diagnosis);
+    assert_eq!(c.warnings.len(), 1, "{:?}", c.warnings);
+    assert!(c.warnings[0].message.starts_with(
+        "the declared pitch 5.000 mm is shorter than four table intervals (80.000 mm)"
+    ));
 }
