@@ -470,9 +470,11 @@ fn run_test(
     let compensation = (slot.machine.controller.as_deref())
         .and_then(crate::compensate::controllers::find)
         .map(|c| {
+            let table = axis.raw.compensation.unwrap_or_default();
             let settings = crate::compensate::Settings {
+                interval: table.interval,
+                reference: table.reference,
                 pitch: axis.raw.pitch,
-                ..Default::default()
             };
             let own;
             let diagnosis = match &diagnosis {

@@ -157,6 +157,7 @@ fn validated_axis(
     })?;
     check_travels(&raw, base, index)?;
     check_pitch(&raw, base, index)?;
+    check_compensation(&raw, base, index)?;
     check_tolerances(&raw, base, index)?;
     check_instrument(&raw, base, index)?;
     Ok((raw, standard, data))
@@ -227,6 +228,31 @@ fn check_pitch(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), L
         )),
         _ => Ok(()),
     }
+}
+
+/// The table's interval is > 0 and its reference a finite position.
+fn check_compensation(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    let Some(c) = raw.compensation else {
+        return Ok(());
+    };
+    let bad = |key: &str, want: &str| {
+        let path = format!("{base}.compensation.{key}");
+        Err(Located::new(
+            index.value(&path),
+            format!("{path}: expected {want}"),
+        ))
+    };
+    if let Some(i) = c.interval
+        && !(i > 0.0 && i.is_finite())
+    {
+        return bad("interval", "an interval > 0");
+    }
+    if let Some(r) = c.reference
+        && !r.is_finite()
+    {
+        return bad("reference", "a position");
+    }
+    Ok(())
 }
 
 /// Every limit names a parameter that can be limited, and is a number ≥ 0.

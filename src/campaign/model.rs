@@ -137,8 +137,24 @@ pub struct AxisRaw {
     /// GOST 27843 only: S from ranges, formula (6).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub s_from_ranges: bool,
+    /// The compensation table's grid, when the machine names a controller.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compensation: Option<CompensationRaw>,
     #[serde(default)]
     pub conditions: Conditions,
+}
+
+/// An axis's compensation table: `compensation: {interval: 50, reference: 0}` (mm or deg).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CompensationRaw {
+    /// Spacing of an equidistant table; default: the controller's (the targets, or their
+    /// mean spacing).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub interval: Option<f64>,
+    /// The reference point: the grid passes through it and the correction is zero there.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reference: Option<f64>,
 }
 
 /// The test conditions clause 7.1 asks the report to state.

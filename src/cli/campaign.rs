@@ -247,13 +247,19 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     for line in problems(&result, "all in summary.md") {
         println!("{line}");
     }
+    let tables = result.tests.iter().any(|t| t.compensation.is_some());
     println!(
-        "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.parquet, results.json, junit.xml{}",
+        "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.parquet, results.json, junit.xml{}{}",
         out.display(),
         written.len(),
         start.elapsed().as_secs_f64(),
         if pdf {
             ", summary.pdf, reports/MACHINE/AXIS.pdf"
+        } else {
+            ""
+        },
+        if tables {
+            ", compensation/MACHINE/AXIS.*"
         } else {
             ""
         }

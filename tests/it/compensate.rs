@@ -203,3 +203,45 @@ fn the_diagnosis_warns_when_a_table_will_not_hold() {
         "the declared pitch 5.000 mm is shorter than four table intervals (80.000 mm)"
     ));
 }
+
+/// An axis's `compensation: {interval, reference}` sets its table's grid: every 20 mm
+/// through 0, zero ↑ correction at 0; a misspelt key is named with the right one.
+#[test]
+fn a_campaign_axis_sets_its_table_grid() {
+    let dir = scratch("compensate-grid");
+    std::fs::copy("tests/data/iso230-2_table2.csv", dir.join("data/x.csv")).unwrap();
+    let campaign = dir.join("campaign.yaml");
+    let write = |keys: &str| {
+        std::fs::write(
+            &campaign,
+            format!("campaign: {{name: comp}}\nmachines:\n  - id: M\n    controller: linuxcnc\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv, compensation: {{{keys}}}}}\n"),
+        )
+        .unwrap();
+    };
+    write("interval: 20, reference: 0");
+    let out = dir.join("out");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(stdout.contains(", compensation/MACHINE/AXIS.*"), "{stdout}");
+    let table = std::fs::read_to_string(out.join("compensation/M/X.txt")).unwrap();
+    let first: Vec<&str> = table.lines().take(2).collect();
+    // Table 2's targets run from 6.711 mm: the grid starts at 0 (at or before the first
+    // target) and the ↑ trim is 0 there; ↓ keeps the reversal −(x̄↓ − x̄↑) = −3.86 µm.
+    assert_eq!(first[0], "0.000000 0.0000000 -0.0038600");
+    assert!(first[1].starts_with("20.000000 "), "{table}");
+    write("interval: 20, refrence: 0");
+    let (code, stdout, _) = axcheck(&["check", campaign.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(
+        stdout
+            .contains("compensation.refrence: unknown key `refrence` (did you mean `reference`?)"),
+        "{stdout}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
