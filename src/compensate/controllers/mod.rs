@@ -5,6 +5,7 @@
 
 pub mod csv;
 pub mod linuxcnc;
+pub mod twincat;
 
 use super::Table;
 use crate::units::AxisKind;
@@ -83,7 +84,7 @@ pub trait Controller: Sync {
 }
 
 /// Every controller, by name.
-pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv, &linuxcnc::LinuxCnc];
+pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv, &linuxcnc::LinuxCnc, &twincat::TwinCat];
 
 /// The controller called `name`.
 pub fn find(name: &str) -> Option<&'static dyn Controller> {
