@@ -135,7 +135,9 @@ impl List {
             "# positions kw_startpos + i * interval and values in {unit}; values = measured\n"
         ));
         out.push_str("# error actual - nominal (.pos moving +, .neg moving -)\n");
-        out.push_str("# kopf.achs_nr: the axis' logical number, as achs_kw_log_ax_nr[i] in [STUP]\n");
+        out.push_str(
+            "# kopf.achs_nr: the axis' logical number, as achs_kw_log_ax_nr[i] in [STUP]\n",
+        );
         let mut line = |key: &str, value: i64| out.push_str(&format!("{key:<28} {value}\n"));
         line("kopf.achs_nr", 1);
         line("kw.ssfk.unit", 1);
