@@ -4,7 +4,9 @@
 //! unit its values are rounded to.
 
 pub mod csv;
+pub mod heidenhain;
 pub mod linuxcnc;
+pub mod twincat;
 
 use super::Table;
 use crate::units::AxisKind;
@@ -83,7 +85,12 @@ pub trait Controller: Sync {
 }
 
 /// Every controller, by name.
-pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv, &linuxcnc::LinuxCnc];
+pub const CONTROLLERS: &[&dyn Controller] = &[
+    &csv::Csv,
+    &linuxcnc::LinuxCnc,
+    &heidenhain::Heidenhain,
+    &twincat::TwinCat,
+];
 
 /// The controller called `name`.
 pub fn find(name: &str) -> Option<&'static dyn Controller> {

@@ -1,0 +1,275 @@
+//! `heidenhain`: a nonlinear axis-error compensation table `*.COM` of the HEIDENHAIN TNC
+//! 620/640 generation (the table concept of the MANUALplus 620 Technical Manual), in the
+//! control's table text format: `BEGIN NAME.COM MM`, a header line naming the columns, one
+//! fixed-width row per point, `[END]`. Columns: `NR`; `AXISPOS`, the point's position
+//! relative to the machine datum (MP_refPosition); a column named after the compensated
+//! axis (its key in CfgAxes/axisList) holding the values; `BACKLASH`, "the compensation
+//! values measured in the negative direction of traverse".
+//!
+//! The axis key is not known to a writer (`Controller::write` gets the table only), so the
+//! table names its value column and itself `AXIS`: replace it with the axis key (`X`, and
+//! the file `X.COM`), keeping the columns aligned. A key left `AXIS` names no axis; a wrong
+//! key would make it a cross compensation (the column's axis as a function of the `.CMA`
+//! column's), so it is not guessed.
+//!
+//! Units: mm (degrees on a rotary axis) for positions and values, printed to 4 decimals:
+//! the table as held is the correction rounded to 0.1 µm or 0.0001° (0.36″), at
+//! positions rounded to 0.0001 mm or °.
+//!
+//! Sign: HEIDENHAIN has the axis error entered "with the correct sign": positive when the
+//! travel is too long (linear compensation MP720, TNC 407 Technical Manual §1.6.3), and its
+//! nonlinear example enters the plotted "Error in Z [mm]" curve (§1.6.4). That is the
+//! deviation e = actual − target, so the table holds −correction: −correction↑ in the axis
+//! column, −correction↓ in `BACKLASH`. Inferred for the TNC 620/640 tables, not stated.
+//!
+//! Backlash: `BACKLASH` read as the ↓ values themselves, not their difference from the ↑
+//! ones (the manual's wording; medium confidence: check by approaching one point from both
+//! sides with the table active). The reversal is then in the table: set MP_backLash to 0,
+//! which the control otherwise adds at every reversal, also of nonlinear compensation.
+//!
+//! Points: equidistant. The MANUALplus example spaces them 5 mm from a start point and the
+//! TNC 407 generation required a power-of-two spacing from a datum; no source says an
+//! AXISPOS column may be irregular, and equidistant points are valid either way. At most 256
+//! per table (TNC 407 module 9095, error 3; the TNC 620/640 limit was not found), with a
+//! total over all tables not stated. Linear interpolation between points (TNC 306/407
+//! manuals); outside the table: not stated (the grid covers the measured travel).
+//! Rotary axes: only entries 0…360° are recognised (TNC 407 §1.6.4), so a table outside
+//! that is refused; measured over a whole revolution it is 0…360° with one value at both
+//! ends. Reference point: positions are machine-datum positions, so the measured targets
+//! must be too; `--reference` shifts the values to zero there.
+//!
+//! Loading: the `.COM` table is assigned in a `.CMA` table (standard name `config.cma`),
+//! one column per compensated axis holding `.COM` names line by line, and an `ACTIVE`
+//! column whose line marked `*` is active ([axis column in .COM] = F(axis column in .CMA));
+//! several lines may exist, one active (MANUALplus 620 Technical Manual p. 718). Stored in
+//! the PLC partition [recalled]; the machine parameter that enables nonlinear compensation
+//! on TNC 620/640 (MP730 on the TNC 407) was not found.
+//!
+//! Sources: HEIDENHAIN Technical Manual MANUALplus 620 (01/2012) §6.10.3 pp. 713–718
+//! (easymanua.ls/heidenhain/manualplus-620/manual/506189?p=716, ?p=718); Technical
+//! Manual TNC 407/415/425 (01.98) §1.6.3–1.6.4 pp. 4-26…4-31 and module 9095
+//! (azmanual.top/manuals/797826, pages 151, 153, 156, 622); the TNC table text format as
+//! read and written by pyLSV2 (`drunsinn/pyLSV2`, `pyLSV2/table_reader.py`).
+//! Unconfirmed: the exact `.COM` header and column widths (the `NR` column, the widths
+//! chosen here), the sign for TNC 620/640, `BACKLASH` as absolute ↓ values, the 256-point
+//! limit on TNC 620/640, the behaviour outside the table, the enabling parameter.
+
+use super::{Controller, Directions, Format, Refused, Spacing};
+use crate::compensate::Table;
+use crate::compensate::grid::REVOLUTION_DEG;
+use crate::units::{AxisKind, fmt_fixed};
+
+pub struct Heidenhain;
+
+/// Entries per `.COM` table (TNC 407 module 9095).
+const MAX_POINTS: usize = 256;
+
+/// Decimals of positions and values (0.0001 mm or °).
+const DECIMALS: usize = 4;
+
+/// The value column's name until the user gives the axis key.
+const AXIS_KEY: &str = "AXIS";
+
+/// The columns and their widths.
+const COLUMNS: [(&str, usize); 4] = [("NR", 6), ("AXISPOS", 14), (AXIS_KEY, 14), ("BACKLASH", 14)];
+
+/// One value step in the deviation unit: 0.1 µm, or 0.0001° = 0.36″.
+fn value_step(kind: AxisKind) -> f64 {
+    match kind {
+        AxisKind::Linear => 0.1,
+        AxisKind::Rotary => 0.36,
+    }
+}
+
+/// `value` to 4 decimals with its sign, as TNC tables print numbers (`+0.0025`).
+fn signed(value: f64) -> String {
+    let s = fmt_fixed(value, DECIMALS);
+    if s.starts_with('-') {
+        s
+    } else {
+        format!("+{s}")
+    }
+}
+
+/// `position` on the table's 0.0001 step.
+fn snapped(position: f64) -> f64 {
+    let scale = 10f64.powi(DECIMALS as i32);
+    (position * scale).round() / scale + 0.0
+}
+
+/// Why the control cannot hold `table`, if it cannot.
+fn check(table: &Table) -> Result<(), Refused> {
+    let positions: Vec<f64> = table.positions.iter().map(|p| snapped(*p)).collect();
+    if positions.len() > MAX_POINTS {
+        return Err(Refused::Grid(format!(
+            "{} points, but a .COM table holds at most {MAX_POINTS}",
+            positions.len()
+        )));
+    }
+    if positions.windows(2).any(|w| w[1] <= w[0]) {
+        return Err(Refused::Grid(
+            "the positions must increase by 0.0001 or more".into(),
+        ));
+    }
+    let (first, last) = (positions[0], positions[positions.len() - 1]);
+    if table.kind == AxisKind::Rotary && (first < 0.0 || last > REVOLUTION_DEG) {
+        return Err(Refused::Range(format!(
+            "the table runs from {}° to {}°, but the control recognises only 0…360°",
+            fmt_fixed(first, DECIMALS),
+            fmt_fixed(last, DECIMALS)
+        )));
+    }
+    Ok(())
+}
+
+/// `fields` padded to the columns' widths.
+fn row(fields: [&str; 4]) -> String {
+    let mut line: String = COLUMNS
+        .iter()
+        .zip(fields)
+        .map(|((_, width), field)| format!("{field:<width$}"))
+        .collect();
+    line.push('\n');
+    line
+}
+
+impl Controller for Heidenhain {
+    fn name(&self) -> &'static str {
+        "heidenhain"
+    }
+
+    fn extension(&self) -> &'static str {
+        "com"
+    }
+
+    /// Equidistant points, up to 256, the ↑ values and the ↓ ones (`BACKLASH`), 0…360°
+    /// tables for rotary axes, values printed to 0.0001 mm or ° (0.1 µm, 0.36″).
+    fn format(&self) -> Format {
+        Format {
+            spacing: Spacing::Equidistant,
+            max_points: MAX_POINTS,
+            directions: Directions::Bidirectional,
+            modulo: true,
+            quantum_um: value_step(AxisKind::Linear),
+            quantum_arcsec: value_step(AxisKind::Rotary),
+        }
+    }
+
+    /// The corrections rounded to the printed step and the points moved onto it.
+    fn hold(&self, table: Table) -> Result<Table, Refused> {
+        let step = value_step(table.kind);
+        let mut table = table.quantised(step);
+        check(&table)?;
+        for p in table.positions.iter_mut() {
+            *p = snapped(*p);
+        }
+        table.reference = snapped(table.reference);
+        Ok(table)
+    }
+
+    fn write(&self, table: &Table) -> Result<String, Refused> {
+        check(table)?;
+        // Corrections in µm or arcsec, the table in mm or degrees; it holds the error.
+        let per_unit = table.kind.deviation_units_per_position_unit();
+        let names = COLUMNS.map(|(name, _)| name);
+        let mut out = format!("BEGIN {AXIS_KEY}.COM MM\n");
+        out.push_str(&row(names));
+        for (nr, ((p, u), d)) in table
+            .positions
+            .iter()
+            .zip(&table.up)
+            .zip(&table.down)
+            .enumerate()
+        {
+            let nr = nr.to_string();
+            let (p, u, d) = (signed(*p), signed(-u / per_unit), signed(-d / per_unit));
+            out.push_str(&row([&nr, &p, &u, &d]));
+        }
+        out.push_str("[END]\n");
+        Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compensate::testing::axis;
+    use crate::compensate::{Settings, held_table, linear};
+    use crate::units::Direction;
+
+    /// The axis of the `twincat` example: irregular targets −100, −70, −55, −20, 0 mm,
+    /// x̄↑ = 0, 3.0, 1.53, −2.0, 1.0 µm, x̄↓ = x̄↑ + 2.0 µm, --interval 25. Interpolated at
+    /// −100, −75, −50, −25, 0 mm: x̄↑ = 0, 2.5, 1.025714, −1.495714, 1.0 µm; x̄↓ = 2.0,
+    /// 4.5, 3.025714, 0.504286, 3.0 µm. Held corrections −x̄ to 0.1 µm; the table holds
+    /// −correction in mm: AXIS +0.0000, +0.0025, +0.0010, −0.0015, +0.0010; BACKLASH
+    /// +0.0020, +0.0045, +0.0030, +0.0005, +0.0030.
+    #[test]
+    fn golden_linear_table_resampled_on_an_interval() {
+        let targets = [-100.0, -70.0, -55.0, -20.0, 0.0];
+        let up = [0.0, 3.0, 1.53, -2.0, 1.0];
+        let data = axis(AxisKind::Linear, &targets, 2, |p, dir| {
+            linear(&targets, &up, p) + if dir == Direction::Down { 2.0 } else { 0.0 }
+        });
+        let settings = Settings {
+            interval: Some(25.0),
+            reference: None,
+        };
+        let table = held_table(&Heidenhain, &data, &settings).unwrap();
+        assert_eq!(
+            Heidenhain.write(&table).unwrap(),
+            include_str!("../../../tests/data/compensation/heidenhain-linear.com")
+        );
+    }
+
+    /// A rotary axis measured every 45° over 0…360°, x̄↑ = 1.0, 3.6, 7.3, −1.8, 2.0″ at
+    /// 0, 90, 180, 270, 360°, x̄↓ = x̄↑ − 1.44″, --interval 90: 0° and 360° one position
+    /// (x̄↑ = 1.5″, x̄↓ = 0.06″). Held corrections −x̄ to 0.36″ = 0.0001°: ↑ −4, −10, −20,
+    /// +5, −4 steps; ↓ 0, −6, −16, +9, 0. The table holds −correction in degrees: AXIS
+    /// +0.0004, +0.0010, +0.0020, −0.0005, +0.0004; BACKLASH +0.0000, +0.0006, +0.0016,
+    /// −0.0009, +0.0000.
+    #[test]
+    fn golden_rotary_table_over_one_revolution() {
+        let targets: Vec<f64> = (0..=8).map(|k| k as f64 * 45.0).collect();
+        let data = axis(AxisKind::Rotary, &targets, 2, |p, dir| {
+            let up = match p as i64 {
+                0 => 1.0,
+                90 => 3.6,
+                180 => 7.3,
+                270 => -1.8,
+                360 => 2.0,
+                _ => 0.0,
+            };
+            up - if dir == Direction::Down { 1.44 } else { 0.0 }
+        });
+        let settings = Settings {
+            interval: Some(90.0),
+            reference: None,
+        };
+        let table = held_table(&Heidenhain, &data, &settings).unwrap();
+        assert_eq!(
+            Heidenhain.write(&table).unwrap(),
+            include_str!("../../../tests/data/compensation/heidenhain-rotary.com")
+        );
+    }
+
+    #[test]
+    fn refuses_what_a_com_table_cannot_hold() {
+        let data = crate::compensate::testing::straight(0.0, 1.0, MAX_POINTS + 1);
+        let err = held_table(&Heidenhain, &data, &Default::default()).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "257 points, but the table holds at most 256; choose --interval 1.004 mm or more"
+        );
+        // A rotary axis measured −45…45°: the control sees only 0…360°.
+        let targets = [-45.0, 0.0, 45.0];
+        let data = axis(AxisKind::Rotary, &targets, 2, |_, _| 1.0);
+        let err = held_table(&Heidenhain, &data, &Default::default()).unwrap_err();
+        assert_eq!(
+            err,
+            Refused::Range(
+                "the table runs from -45.0000° to 45.0000°, but the control recognises only 0…360°"
+                    .into()
+            )
+        );
+    }
+}
