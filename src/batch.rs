@@ -470,11 +470,12 @@ fn run_test(
     let compensation = (slot.machine.controller.as_deref())
         .and_then(crate::compensate::controllers::find)
         .map(|c| {
-            let table = axis.raw.compensation.unwrap_or_default();
+            let table = axis.raw.compensation.clone().unwrap_or_default();
             let settings = crate::compensate::Settings {
                 interval: table.interval,
                 reference: table.reference,
                 pitch: axis.raw.pitch,
+                axis: Some(table.axis.unwrap_or_else(|| axis.raw.name.clone())),
             };
             let own;
             let diagnosis = match &diagnosis {

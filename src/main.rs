@@ -125,6 +125,10 @@ enum Command {
         /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
         #[arg(long)]
         pitch: Option<f64>,
+        /// The axis's name on the controller, for formats that name it (HEIDENHAIN `X`,
+        /// Siemens `X1`); default: a placeholder in the file to replace.
+        #[arg(long)]
+        axis: Option<String>,
         /// Standard for the parameters measured and predicted.
         #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
         standard: StandardId,
@@ -276,6 +280,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             interval,
             reference,
             pitch,
+            axis,
             standard,
             json,
         } => {
@@ -287,6 +292,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                     interval,
                     reference,
                     pitch,
+                    axis,
                 },
                 standard,
                 json,

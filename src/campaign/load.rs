@@ -232,7 +232,7 @@ fn check_pitch(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), L
 
 /// The table's interval is > 0 and its reference a finite position.
 fn check_compensation(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
-    let Some(c) = raw.compensation else {
+    let Some(c) = &raw.compensation else {
         return Ok(());
     };
     let bad = |key: &str, want: &str| {

@@ -144,10 +144,15 @@ pub struct AxisRaw {
     pub conditions: Conditions,
 }
 
-/// An axis's compensation table: `compensation: {interval: 50, reference: 0}` (mm or deg).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+/// An axis's compensation table: `compensation: {interval: 50, reference: 0, axis: X1}`
+/// (mm or deg).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CompensationRaw {
+    /// The axis's name on the controller, where the file names it; default: the axis's
+    /// `name`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axis: Option<String>,
     /// Spacing of an equidistant table; default: the controller's (the targets, or their
     /// mean spacing).
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -58,6 +58,7 @@ pub fn table(data: &AxisData, positions: Vec<f64>, format: &Format, settings: &S
         down: per_direction(Direction::Down),
         reference: settings.reference.unwrap_or(positions[0]),
         modulo_deg: wraps.then_some(REVOLUTION_DEG),
+        axis: settings.axis.clone(),
         positions,
     };
     let one = match format.directions {

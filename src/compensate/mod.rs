@@ -25,7 +25,7 @@ use crate::measurement::AxisData;
 use controllers::{Controller, Refused};
 
 /// What the user chose about the table (`--interval`, `--reference`).
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Settings {
     /// Spacing of an equidistant grid, mm or deg; `None`: the controller's default (the
     /// measured targets, or their mean spacing).
@@ -36,6 +36,9 @@ pub struct Settings {
     /// The declared lead-screw or encoder pitch, mm or deg: a periodic error of that period
     /// that the table's points cannot follow is warned of, found by the diagnosis or not.
     pub pitch: Option<f64>,
+    /// The axis's name on the controller, for formats that name it (HEIDENHAIN's column,
+    /// Siemens' machine axis); in campaigns the axis's name unless `compensation.axis`.
+    pub axis: Option<String>,
 }
 
 /// The table as `controller` holds it for `data`, or why it cannot hold it.

@@ -28,6 +28,10 @@ pub struct Table {
     /// to the revolution, the last point the first one again.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub modulo_deg: Option<f64>,
+    /// The axis's name on the controller (`X`, Siemens `X1`), for formats that name it;
+    /// `None`: the file carries a placeholder to replace.
+    #[serde(skip)]
+    pub axis: Option<String>,
 }
 
 /// Linear interpolation of `values` at `positions` (ascending) at `x`; constant beyond the

@@ -20,6 +20,7 @@ fn read_back(text: &str) -> Table {
         down: Vec::new(),
         reference: 0.0,
         modulo_deg: None,
+        axis: None,
     };
     let mut lines = text.lines();
     assert_eq!(

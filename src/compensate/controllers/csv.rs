@@ -61,6 +61,7 @@ mod tests {
             down: vec![0.5, 0.0],
             reference: 0.0,
             modulo_deg: None,
+            axis: None,
         };
         assert_eq!(
             Csv.write(&table).unwrap(),

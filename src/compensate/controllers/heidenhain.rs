@@ -171,8 +171,10 @@ impl Controller for Heidenhain {
         check(table)?;
         // Corrections in µm or arcsec, the table in mm or degrees; it holds the error.
         let per_unit = table.kind.deviation_units_per_position_unit();
-        let names = COLUMNS.map(|(name, _)| name);
-        let mut out = format!("BEGIN {AXIS_KEY}.COM MM\n");
+        // The axis key names the value column and the table (X.COM).
+        let key = table.axis.as_deref().unwrap_or(AXIS_KEY);
+        let names = COLUMNS.map(|(name, _)| if name == AXIS_KEY { key } else { name });
+        let mut out = format!("BEGIN {key}.COM MM\n");
         out.push_str(&row(names));
         for (nr, ((p, u), d)) in table
             .positions
@@ -213,6 +215,7 @@ mod tests {
         let settings = Settings {
             interval: Some(25.0),
             reference: None,
+            ..Default::default()
         };
         let table = held_table(&Heidenhain, &data, &settings).unwrap();
         assert_eq!(
@@ -244,6 +247,7 @@ mod tests {
         let settings = Settings {
             interval: Some(90.0),
             reference: None,
+            ..Default::default()
         };
         let table = held_table(&Heidenhain, &data, &settings).unwrap();
         assert_eq!(

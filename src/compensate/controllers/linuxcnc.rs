@@ -80,6 +80,7 @@ mod tests {
             down: vec![0.0, -0.9, -2.5],
             reference: 0.0,
             modulo_deg: None,
+            axis: None,
         };
         assert_eq!(
             LinuxCnc.write(&table).unwrap(),
@@ -92,6 +93,7 @@ mod tests {
             down: vec![0.0, 0.0],
             reference: 0.0,
             modulo_deg: None,
+            axis: None,
         };
         assert_eq!(
             LinuxCnc.write(&rotary).unwrap(),

@@ -258,6 +258,7 @@ mod tests {
         let settings = Settings {
             interval: Some(25.0),
             reference: None,
+            ..Default::default()
         };
         let table = held_table(&TwinCat, &data, &settings).unwrap();
         assert_eq!(table.positions, [-100.0, -75.0, -50.0, -25.0, 0.0]);
@@ -292,6 +293,7 @@ mod tests {
         let settings = Settings {
             interval: Some(90.0),
             reference: None,
+            ..Default::default()
         };
         let table = held_table(&TwinCat, &data, &settings).unwrap();
         assert_eq!(table.modulo_deg, Some(360.0));
@@ -314,6 +316,7 @@ mod tests {
         let settings = Settings {
             interval: Some(0.33335),
             reference: None,
+            ..Default::default()
         };
         let err = held_table(&TwinCat, &data, &settings).unwrap_err();
         assert!(matches!(err, Refused::Grid(_)), "{err}");
@@ -325,6 +328,7 @@ mod tests {
             down: vec![0.0, 0.0],
             reference: 0.0,
             modulo_deg: None,
+            axis: None,
         };
         assert!(matches!(TwinCat.write(&table), Err(Refused::Range(_))));
         // Irregular points cannot be written as start and interval.
