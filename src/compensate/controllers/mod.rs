@@ -4,7 +4,9 @@
 //! unit its values are rounded to.
 
 pub mod csv;
+pub mod ecmc;
 pub mod linuxcnc;
+pub mod siemens_840d;
 
 use super::Table;
 use crate::units::AxisKind;
@@ -83,7 +85,12 @@ pub trait Controller: Sync {
 }
 
 /// Every controller, by name.
-pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv, &linuxcnc::LinuxCnc];
+pub const CONTROLLERS: &[&dyn Controller] = &[
+    &csv::Csv,
+    &linuxcnc::LinuxCnc,
+    &siemens_840d::Siemens840d,
+    &ecmc::Ecmc,
+];
 
 /// The controller called `name`.
 pub fn find(name: &str) -> Option<&'static dyn Controller> {
