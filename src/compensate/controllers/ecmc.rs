@@ -13,18 +13,19 @@
 //! sign should a version differ: check the actual position with the table enabled and
 //! disabled at one point.
 //!
-//! Positions in any increasing order (non-decreasing is checked), any spacing; at least 3
-//! rows (fewer are refused here, as ecmc refuses them), no upper limit (a `std::vector`).
+//! Positions increasing (ecmc checks non-decreasing; axcheck writes them strictly
+//! increasing), any spacing; `PREC=` lines only set how ecmc echoes the table, and
+//! axcheck writes none. At least 3 rows (fewer are refused here, as ecmc refuses them),
+//! no upper limit (a `std::vector`).
 //! Linear interpolation between rows; beyond the first and last row their values hold. The
 //! correction acts on the feedback, in both directions: one table per axis, the mean of ↑
 //! and ↓, and no backlash (the reversal stays, as the prediction shows). Applied only once
 //! the encoder is homed (an absolute encoder at start-up). The values are the corrections
 //! as measured; `--reference` shifts them to 0 at a reference point (the homing position,
 //! say: homing is then unchanged), a constant no ISO 230-2 parameter sees. A rotary axis
-//! measured over
-//! a whole revolution gets a table of 0…360° (0° and 360° one position, one value), looked
-//! up at the position modulo 360 with `Cfg.SetAxisEncLookupTableRange(axis,360)`, which the
-//! file says in a comment.
+//! measured over a whole revolution gets a table of 0…360° (0° and 360° one position, one
+//! value), looked up at the position modulo 360 with
+//! `Cfg.SetAxisEncLookupTableRange(axis,360)`, which the file says in a comment.
 //!
 //! Loaded in the IOC start-up script after the axis's encoder is configured:
 //! `ecmcConfigOrDie "Cfg.LoadAxisEncLookupTable(${ECMC_AXIS_NO},FILE)"` and

@@ -15,8 +15,11 @@
 //! interpolation between points; below MIN and above MAX the first and last values stay
 //! active (not on a modulo table). One table for both directions (direction-dependent LEC
 //! exists only through CEC tables): the file holds the mean of ↑ and ↓, and a `;` comment
-//! states the mean reversal for MD32450 `$MA_BACKLASH` (positive when the encoder leads
-//! the machine part, the normal case: = x̄↓ − x̄↑). Siemens advises a value of 0 at the
+//! states the mean reversal for MD32450 `$MA_BACKLASH`, positive when the encoder leads
+//! the machine part (the normal case, K3): then ↑ approaches stop short and ↓ ones
+//! overshoot, so MD32450 = x̄↓ − x̄↑ (inferred from that wording, not confirmed). The NC
+//! adds it on one side of a reversal, the table splits it ± half about the mean: a
+//! constant apart, which no ISO 230-2 parameter sees. Siemens advises a value of 0 at the
 //! reference point (no jump when LEC becomes active after referencing): that is what
 //! `--reference` does, and the file says which value it has there. A rotary axis measured
 //! over a whole revolution gets a modulo table: `IS_MODULO = 1`, MIN 0, MAX 360, the value at
@@ -24,13 +27,13 @@
 //!
 //! Loading: the table can be written only while MD32700 `$MA_ENC_COMP_ENABLE[0] = 0`: run
 //! the INI (copy it into the NC and start it as a part program), then set MD32700 = 1 (which
-//! write-protects the table) and reset the NC; the compensation acts once the axis is
+//! write-protects the table) and POWER ON / NCK reset; the compensation acts once the axis is
 //! referenced. Sources: SINUMERIK 840D sl Function Manual Extended Functions, K3
 //! Compensation, "Interpolatory compensation / Measuring system error compensation"
 //! (6FC5397-1BP40-3BA1, 03/2013, pp. 238–242: sign, table variables, example file,
 //! end values, MD38000) and SINUMERIK 808D Function Manual 01/2017 pp. 106–109 (modulo rules,
 //! loading with MD32700, at most 200 points on the 808D); SINUMERIK 808D ADVANCED Parameter
-//! Manual, MD32450 BACKLASH (sign).
+//! Manual 08/2013 (6FC5397-8EP40-0BA0), MD32450 BACKLASH (sign).
 //!
 //! Limits: points are limited by MD38000 `$MA_MM_ENC_COMP_MAX_POINTS` (0 ≤ N ≤ MD38000 − 1),
 //! which the machine builder sets per axis; the file states how many it needs. axcheck
@@ -122,7 +125,7 @@ fn step(table: &Table) -> Result<f64, Refused> {
     let p = &table.positions;
     if p.len() < 2 {
         return Err(Refused::Grid(
-            "an LEC table needs at least 2 points: give a smaller --interval".into(),
+            "an LEC table needs at least 2 points (MIN, MAX and STEP)".into(),
         ));
     }
     if p.len() > MAX_POINTS {
