@@ -4,8 +4,11 @@
 //! unit its values are rounded to.
 
 pub mod csv;
+pub mod ecmc;
+pub mod fanuc;
 pub mod heidenhain;
 pub mod linuxcnc;
+pub mod siemens_840d;
 pub mod twincat;
 
 use super::Table;
@@ -88,8 +91,11 @@ pub trait Controller: Sync {
 pub const CONTROLLERS: &[&dyn Controller] = &[
     &csv::Csv,
     &linuxcnc::LinuxCnc,
+    &siemens_840d::Siemens840d,
+    &fanuc::Fanuc,
     &heidenhain::Heidenhain,
     &twincat::TwinCat,
+    &ecmc::Ecmc,
 ];
 
 /// The controller called `name`.
