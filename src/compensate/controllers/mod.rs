@@ -4,6 +4,7 @@
 //! unit its values are rounded to.
 
 pub mod csv;
+pub mod fanuc;
 pub mod linuxcnc;
 
 use super::Table;
@@ -83,7 +84,7 @@ pub trait Controller: Sync {
 }
 
 /// Every controller, by name.
-pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv, &linuxcnc::LinuxCnc];
+pub const CONTROLLERS: &[&dyn Controller] = &[&csv::Csv, &linuxcnc::LinuxCnc, &fanuc::Fanuc];
 
 /// The controller called `name`.
 pub fn find(name: &str) -> Option<&'static dyn Controller> {
