@@ -3,17 +3,19 @@
 //! error data as a table (point number → value) and the same data in the punch format.
 //!
 //! **Format.** The data are *incremental*: the value at point number N is the change of
-//! the correction over the section that ends at N's position, in detection units (1 µm or
-//! 0.001° assumed: IS-B) × the magnification 3623, an integer in −128…127 per point (FOCAS
-//! `IODBPI.data` is a `char`, the API's comment says "incremental"; older controls hold only
-//! −7…+7: the file states its largest value). The points are equidistant (3624, written in
-//! 0.001 mm or 0.001°), numbered around the reference point 3620, whose number covers the
-//! section that *ends* at the reference position: the − end of the travel is
-//! 3620 − (its distance / 3624) + 1 (3621), the + end 3620 + distance / 3624 (3622), so the
-//! correction is zero at the reference and the running sum of the values elsewhere (FANUC
-//! 0i-PB Parameter Manual B-63980EN/01 p. 100 example). Point numbers 0…1023 are shared by
-//! all axes of the control [recalled]; two tables per axis use two ranges of them, so axcheck
-//! holds at most 512 points per direction.
+//! the correction over the section that ends at N's position ("the compensation value is
+//! output at the compensation position No. corresponding to each section", FANUC 0i-PB
+//! Parameter Manual B-63980EN/01 p. 100), in detection units (1 µm or 0.001° assumed: IS-B)
+//! × the magnification 3623, an integer in −128…127 per point (FOCAS `IODBPI.data` is a
+//! `char`, its header comment says "incremental"; old controls hold only −7…+7: the file
+//! states its largest value). The points are equidistant (3624, written in 0.001 mm or
+//! 0.001°) and numbered around the reference point 3620, whose number covers the section
+//! that *ends* at the reference position; the − end of the travel is 3620 − (its distance
+//! / 3624) + 1 (3621), the + end 3620 + distance / 3624 (3622) [recalled from the 16i
+//! manual's example, consistent with p. 100]; so the correction is zero at the reference
+//! and the running sum of the values elsewhere. Point numbers 0…1023 are shared by all axes
+//! of the control [recalled]; two tables per axis use two ranges of them, so axcheck holds
+//! at most 512 points per direction.
 //!
 //! **Numbering.** Point number = grid index: number i covers the section from grid point
 //! i − 1 to i, the − end (index 0) has no number, 3620 = the reference's index, 3621 = 1,
@@ -51,7 +53,9 @@
 //! Power off and on, then return to the reference position.
 //!
 //! Unconfirmed: the sign, the punch syntax, the unit of 3627, the 1024 numbers (30i-series
-//! more), the range 3623 ≤ 100, backlash with bidirectional compensation.
+//! more; the old 0-series had 128 per axis), the − end formula, the range 3623 ≤ 100,
+//! backlash with bidirectional compensation, how the ↓ table's increments are counted (here
+//! like the ↑ one, from the − end towards +).
 
 use super::{Controller, Directions, Format, Refused, Spacing};
 use crate::compensate::Table;
