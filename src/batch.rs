@@ -475,7 +475,7 @@ fn run_test(
                 interval: table.interval,
                 reference: table.reference,
                 pitch: axis.raw.pitch,
-                axis: Some(table.axis.unwrap_or_else(|| axis.raw.name.clone())),
+                axis: table.axis,
             };
             let own;
             let diagnosis = match &diagnosis {

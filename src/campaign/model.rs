@@ -149,8 +149,8 @@ pub struct AxisRaw {
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CompensationRaw {
-    /// The axis's name on the controller, where the file names it; default: the axis's
-    /// `name`.
+    /// The axis's name on the controller, where the file names it (HEIDENHAIN `X`, Siemens
+    /// `X1`); default: a placeholder in the file.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub axis: Option<String>,
     /// Spacing of an equidistant table; default: the controller's (the targets, or their

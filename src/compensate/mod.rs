@@ -37,7 +37,9 @@ pub struct Settings {
     /// that the table's points cannot follow is warned of, found by the diagnosis or not.
     pub pitch: Option<f64>,
     /// The axis's name on the controller, for formats that name it (HEIDENHAIN's column,
-    /// Siemens' machine axis); in campaigns the axis's name unless `compensation.axis`.
+    /// Siemens' machine axis `X1`): `--axis`, `compensation.axis` in campaigns; `None`: the
+    /// file carries a placeholder to replace (a campaign's axis name need not be the
+    /// controller's).
     pub axis: Option<String>,
 }
 

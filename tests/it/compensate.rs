@@ -196,6 +196,7 @@ fn the_diagnosis_warns_when_a_table_will_not_hold() {
         interval: Some(20.0),
         reference: None,
         pitch: Some(5.0),
+        axis: None,
     };
     let diagnosis = diagnose(&data, &Options::default());
     let c = compensate::compensation(csv, &data, StandardId::Iso230_2, &settings, &diagnosis);

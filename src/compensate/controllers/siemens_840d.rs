@@ -3,8 +3,9 @@
 //! `$AA_ENC_COMP[0,N,AX1]=value` per point N, then `$AA_ENC_COMP_STEP`, `_MIN`, `_MAX`,
 //! `_IS_MODULO` and `M17`, in mm (degrees on a rotary axis; inches if MD10240
 //! SCALING_SYSTEM_IS_METRIC = 0, which axcheck does not write). Measuring system 0 (the
-//! first encoder). The Table has no axis name: the file says `AX1` and a comment asks the
-//! user to replace it by the machine axis (X1, Y1, …).
+//! first encoder). The machine axis is the table's `axis` (`--axis X1`, campaign
+//! `compensation: {axis: X1}`); without it the file says `AX1` and a comment asks the user
+//! to replace it by the machine axis (X1, Y1, …).
 //!
 //! Sign: the NC modifies the actual position value by the table value, and "a positive
 //! compensation value causes the corresponding machine axis to move in the negative
@@ -101,20 +102,21 @@ impl Controller for Siemens840d {
         let unit = table.kind.position_unit();
         let value = |correction: f64| fmt_fixed(-correction / per_unit, DECIMALS);
         let mean = table.mean();
+        let axis = table.axis.as_deref().unwrap_or(AXIS);
         let mut out = String::from("%_N_AX_EEC_INI\nCHANDATA(1)\n");
         out.push_str(&header(table, &mean, per_unit));
         for (k, c) in mean.iter().enumerate() {
-            out.push_str(&format!("$AA_ENC_COMP[0,{k},{AXIS}]={}\n", value(*c)));
+            out.push_str(&format!("$AA_ENC_COMP[0,{k},{axis}]={}\n", value(*c)));
         }
         let position = |p: f64| fmt_fixed(p, DECIMALS);
         out.push_str(&format!(
-            "$AA_ENC_COMP_STEP[0,{AXIS}]={} ; {unit}\n",
+            "$AA_ENC_COMP_STEP[0,{axis}]={} ; {unit}\n",
             position(step)
         ));
-        out.push_str(&format!("$AA_ENC_COMP_MIN[0,{AXIS}]={}\n", position(first)));
-        out.push_str(&format!("$AA_ENC_COMP_MAX[0,{AXIS}]={}\n", position(last)));
+        out.push_str(&format!("$AA_ENC_COMP_MIN[0,{axis}]={}\n", position(first)));
+        out.push_str(&format!("$AA_ENC_COMP_MAX[0,{axis}]={}\n", position(last)));
         let modulo = u8::from(table.modulo_deg.is_some());
-        out.push_str(&format!("$AA_ENC_COMP_IS_MODULO[0,{AXIS}]={modulo}\nM17\n"));
+        out.push_str(&format!("$AA_ENC_COMP_IS_MODULO[0,{axis}]={modulo}\nM17\n"));
         Ok(out)
     }
 }
@@ -163,12 +165,17 @@ fn header(table: &Table, mean: &[f64], per_unit: f64) -> String {
     let backlash = -table.reversal_correction() / per_unit;
     format!(
         "; LEC table written by axcheck, {axis}, measuring system 1 ([0,...])\n\
-         ; Replace AX1 by the machine axis name (X1, Y1, ...) in every line before loading.\n\
+         {}\
          ; Values in {unit}: the mean deviation x-bar (actual - target) of both directions;\n\
          ; the NC subtracts them (a positive value moves the axis negative).\n\
          {}\
          ; Needs MD38000 $MA_MM_ENC_COMP_MAX_POINTS[0] >= {}; load with MD32700 $MA_ENC_COMP_ENABLE[0]=0, then set it to 1.\n\
          ; MD32450 $MA_BACKLASH[0]={} ; mean reversal, {unit} (positive: the encoder leads the machine part)\n",
+        match table.axis {
+            None =>
+                "; Replace AX1 by the machine axis name (X1, Y1, ...) in every line before loading.\n",
+            Some(_) => "",
+        },
         reference(table, mean, per_unit),
         table.positions.len(),
         fmt_fixed(backlash, DECIMALS),
@@ -224,6 +231,7 @@ mod tests {
         let settings = Settings {
             interval: Some(25.0),
             reference: Some(50.0),
+            ..Default::default()
         };
         let table = held_table(&Siemens840d, &irregular_linear(), &settings).unwrap();
         assert_eq!(table.positions, [0.0, 25.0, 50.0, 75.0, 100.0]);
@@ -259,6 +267,7 @@ mod tests {
         let settings = Settings {
             interval: Some(0.01),
             reference: None,
+            ..Default::default()
         };
         let err = held_table(&Siemens840d, &data, &settings).unwrap_err();
         assert_eq!(
@@ -272,6 +281,7 @@ mod tests {
             down: vec![0.0; 3],
             reference: 0.0,
             modulo_deg: None,
+            axis: None,
         };
         assert!(matches!(Siemens840d.write(&uneven), Err(Refused::Grid(_))));
     }
