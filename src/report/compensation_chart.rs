@@ -7,12 +7,11 @@
 //! 900 px wide shown about 16 cm wide (900 × 420).
 
 use super::chart_kit::{
-    Area, Chart, DASHED, DOWN, Failed, INK, LegendItem, Marker, SOLID, Stroke, UP, X_DESC_H,
-    X_TICK_H, draw_line, draw_marker, padded_range, render,
+    Area, AxesSpec, Chart, DASHED, DOWN, Failed, INK, LegendItem, Marker, SOLID, Stroke, UP,
+    X_DESC_H, X_TICK_H, draw_line, draw_marker, message_chart, padded_range, render, round_px,
 };
 use super::charts::{DASHED_THIN, DOWN_LIGHT, KIT, UP_LIGHT, build_panel, curve, y_range};
 use super::scene::Scene;
-use crate::report::chart_kit::{AxesSpec, message_chart, round_px};
 use plotters::style::RGBColor;
 
 pub use super::chart_kit::Style;
