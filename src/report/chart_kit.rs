@@ -1,6 +1,7 @@
-//! What the report's chart modules ([`super::charts`] and [`super::diagnosis_charts`]) share:
-//! the look (tones, text sizes, dash patterns), the canvas, text measuring and fitting,
-//! number formatting, line, marker and legend drawing, and the axes with grid and ticks.
+//! What the report's chart modules ([`super::charts`], [`super::diagnosis_charts`] and
+//! [`super::compensation_chart`]) share: the look (tones, text sizes, dash patterns), the
+//! canvas, text measuring and fitting, number formatting, line, marker and legend drawing,
+//! and the axes with grid and ticks.
 //!
 //! Where the two modules measure text differently, the difference is a field of
 //! [`Conventions`] and each module passes its own, so every chart keeps its layout.

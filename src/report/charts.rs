@@ -74,8 +74,8 @@ pub struct RatioBar {
 // ---------------------------------------------------------------------------------------------
 // Look
 
-const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
-const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
+pub(super) const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
+pub(super) const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
 const BAR_OK: RGBColor = RGBColor(0x9D, 0xAF, 0xC8);
 const BAR_OK_EDGE: RGBColor = RGBColor(0x5F, 0x73, 0x8F);
 const BAR_OVER: RGBColor = RGBColor(0x6E, 0x14, 0x14);
@@ -84,11 +84,11 @@ const BAR_OVER: RGBColor = RGBColor(0x6E, 0x14, 0x14);
 const SPAN_PX: f64 = 14.0;
 
 /// Dash patterns in pixels: on, off, on, off …
-const DASHED_THIN: &[f64] = &[6.0, 4.0];
+pub(super) const DASHED_THIN: &[f64] = &[6.0, 4.0];
 const DASH_DOT: &[f64] = &[9.0, 3.5, 2.0, 3.5];
 
 /// How these charts measure text (see [`Conventions`]).
-const KIT: Conventions = Conventions {
+pub(super) const KIT: Conventions = Conventions {
     narrow_superscripts: false,
 };
 
@@ -119,7 +119,7 @@ fn x_range(positions: &[f64]) -> Option<(f64, f64)> {
 }
 
 /// The y range: every value and zero, padded by 8 %.
-fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+pub(super) fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
     let (lo, hi) = extent(values.into_iter().chain([0.0]))?;
     let span = hi - lo;
     // Zero is inside, so only data that is all (practically) zero has no extent.
@@ -142,7 +142,11 @@ fn to_px(c: (i32, i32)) -> Px {
 // Axis charts
 
 /// Builds one panel's chart with grid, ticks, frame and zero line.
-fn build_panel<'a>(area: &'a Area, frame: &AxesSpec, y_label_w: u32) -> Result<Chart<'a>, Failed> {
+pub(super) fn build_panel<'a>(
+    area: &'a Area,
+    frame: &AxesSpec,
+    y_label_w: u32,
+) -> Result<Chart<'a>, Failed> {
     let chart = build_axes(area, frame, y_label_w)?;
 
     // The zero line.
@@ -209,7 +213,7 @@ fn draw_direction(
 }
 
 /// Pixel points of a per-target curve (non-finite values are skipped).
-fn curve(chart: &Chart, positions: &[f64], values: &[f64]) -> Vec<Px> {
+pub(super) fn curve(chart: &Chart, positions: &[f64], values: &[f64]) -> Vec<Px> {
     positions
         .iter()
         .zip(values)

@@ -11,6 +11,7 @@ mod canvas;
 pub(crate) mod chart_kit;
 pub mod charts;
 mod check_chart;
+pub mod compensation_chart;
 pub mod data;
 pub mod diagnosis_charts;
 pub mod diagnosis_data;
@@ -196,6 +197,15 @@ impl Reports {
             let height = check_chart::model_checks_height(bars.len());
             let zones = check_chart::decision_zones(&bars, &style(height));
             files.chart("decision", zones);
+            let done = test
+                .compensation
+                .as_ref()
+                .and_then(|c| c.outcome.as_ref().ok());
+            if let Some(done) = done {
+                let chart = data::compensation_chart(e, done);
+                let scene = compensation_chart::compensation(&chart, &style(CHART_HEIGHT_PX));
+                files.chart("compensation", scene);
+            }
         }
         let ident = format!(
             "axcheck/{}/{}/{}/{}",

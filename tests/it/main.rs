@@ -18,6 +18,7 @@ mod gost27843;
 mod iso230_2;
 mod outputs;
 mod properties;
+mod report_compensation;
 mod reports;
 mod rules;
 mod simulator;

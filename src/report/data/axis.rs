@@ -2,6 +2,7 @@
 //! parameters with their limits, the per-target table of Table 2, the test-plan findings
 //! and the diagnosis.
 
+use super::compensation::{CompensationSection, compensation_section};
 use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
 use super::uncertainty::{UncertaintySection, uncertainty_section};
 use super::{CampaignHeader, generator, num, opt, pos, s_symbol, symbol_of};
@@ -33,6 +34,8 @@ pub struct AxisReport<'a> {
     has_charts: bool,
     diagnosis: Option<DiagnosisSection<'a>>,
     uncertainty: Option<UncertaintySection<'a>>,
+    /// The table of the machine's controller (only when the machine names one).
+    compensation: Option<CompensationSection<'a>>,
     generator: String,
 }
 
@@ -69,6 +72,11 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .as_ref()
             .zip(kind)
             .map(|(u, k)| uncertainty_section(t, u, k.deviation_symbol(), k.position_unit())),
+        compensation: t
+            .compensation
+            .as_ref()
+            .zip(e)
+            .map(|(c, e)| compensation_section(c, e)),
         generator: generator(),
     }
 }

@@ -3,15 +3,18 @@
 //! lay out; they compute nothing and evaluate no user text.
 //!
 //! [`axis`] is the test report of one axis (ISO 230-2 clause 7), [`conditions`] its test
-//! conditions (clause 7.1), [`summary`] the campaign summary; [`axis_chart`] gives the
+//! conditions (clause 7.1), [`compensation`] its compensation table and the parameters
+//! predicted with it, [`summary`] the campaign summary; [`axis_chart`] gives the
 //! data of the figures of ISO 230-2 Fig. 2a/2b.
 
 mod axis;
+mod compensation;
 mod conditions;
 mod summary;
 mod uncertainty;
 
 pub use axis::{AxisReport, axis_report};
+pub use compensation::compensation_chart;
 pub use summary::{Summary, summary};
 pub use uncertainty::decision_bars;
 
