@@ -107,28 +107,16 @@ enum Command {
     Compensate {
         /// Measurement file (long CSV or key=value layout).
         file: PathBuf,
-        /// Controller whose table format to write.
+        /// Controller whose table format to write: csv, linuxcnc, siemens-840d, fanuc,
+        /// heidenhain, twincat, ecmc.
         #[arg(long, short)]
         controller: String,
         /// Table file to write (then a summary of measured and predicted parameters is
         /// printed).
         #[arg(long, short)]
         out: Option<PathBuf>,
-        /// Grid step (mm or deg) of an equidistant table; default: the measured targets
-        /// where the controller takes any points, else their mean spacing.
-        #[arg(long)]
-        interval: Option<f64>,
-        /// Reference point (mm or deg): the grid passes through it and the correction is
-        /// zero there; default: the first grid point, corrections as measured.
-        #[arg(long)]
-        reference: Option<f64>,
-        /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
-        #[arg(long)]
-        pitch: Option<f64>,
-        /// The axis's name on the controller, for formats that name it (HEIDENHAIN `X`,
-        /// Siemens `X1`); default: a placeholder in the file to replace.
-        #[arg(long)]
-        axis: Option<String>,
+        #[command(flatten)]
+        table: cli::compensate::TableArgs,
         /// Standard for the parameters measured and predicted.
         #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
         standard: StandardId,
@@ -277,10 +265,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             file,
             controller,
             out,
-            interval,
-            reference,
-            pitch,
-            axis,
+            table,
             standard,
             json,
         } => {
@@ -288,12 +273,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             let request = cli::compensate::Request {
                 controller: &controller,
                 out: out.as_deref(),
-                settings: axcheck::compensate::Settings {
-                    interval,
-                    reference,
-                    pitch,
-                    axis,
-                },
+                settings: table.into(),
                 standard,
                 json,
             };

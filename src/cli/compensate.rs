@@ -13,6 +13,37 @@ use serde::Serialize;
 use std::fmt::Write;
 use std::path::Path;
 
+/// The table's grid and naming (`--interval`, `--reference`, `--pitch`, `--axis`).
+#[derive(Debug, clap::Args)]
+pub struct TableArgs {
+    /// Grid step (mm or deg) of an equidistant table; default: the measured targets where
+    /// the controller takes any points, else their mean spacing.
+    #[arg(long)]
+    interval: Option<f64>,
+    /// Reference point (mm or deg): the grid passes through it and the correction is zero
+    /// there; default: the first grid point, corrections as measured.
+    #[arg(long)]
+    reference: Option<f64>,
+    /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
+    #[arg(long)]
+    pitch: Option<f64>,
+    /// The axis's name on the controller, for formats that name it (HEIDENHAIN `X`,
+    /// Siemens `X1`); default: a placeholder in the file to replace.
+    #[arg(long)]
+    axis: Option<String>,
+}
+
+impl From<TableArgs> for compensate::Settings {
+    fn from(a: TableArgs) -> compensate::Settings {
+        compensate::Settings {
+            interval: a.interval,
+            reference: a.reference,
+            pitch: a.pitch,
+            axis: a.axis,
+        }
+    }
+}
+
 /// What `compensate` was asked for.
 pub struct Request<'a> {
     pub controller: &'a str,

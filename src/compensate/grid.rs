@@ -82,7 +82,7 @@ fn too_many(data: &AxisData, points: usize, max: usize) -> Refused {
     let unit = data.kind.position_unit();
     let least = (last - first) / (max.saturating_sub(1).max(1)) as f64;
     Refused::Grid(format!(
-        "{points} points, but the table holds at most {max}; choose --interval {} {unit} or more",
+        "{points} points, but the table holds at most {max}; choose an interval of {} {unit} or more (--interval, or compensation: {{interval}} in a campaign)",
         fmt_fixed((least * 1000.0).ceil() / 1000.0, 3)
     ))
 }
@@ -175,7 +175,7 @@ mod tests {
         .unwrap_err();
         assert_eq!(
             err.to_string(),
-            "201 points, but the table holds at most 100; choose --interval 10.102 mm or more"
+            "201 points, but the table holds at most 100; choose an interval of 10.102 mm or more (--interval, or compensation: {interval} in a campaign)"
         );
     }
 }

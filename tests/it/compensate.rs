@@ -106,7 +106,7 @@ fn the_cli_writes_the_table_and_refuses_an_unknown_controller() {
     ]);
     assert_eq!(code, 2);
     assert!(
-        stderr.contains("unknown controller `fanuc-0i`; known: csv, linuxcnc"),
+        stderr.contains("unknown controller `fanuc-0i`; known: csv, linuxcnc, siemens-840d, fanuc, heidenhain, twincat, ecmc\n"),
         "{stderr}"
     );
     std::fs::remove_dir_all(&dir).unwrap();

@@ -94,7 +94,7 @@ fn too_few(table: &Table) -> Refused {
     let unit = table.kind.position_unit();
     let hint = match (p.first(), p.last()) {
         (Some(first), Some(last)) if last > first => format!(
-            ": choose --interval {} {unit} or less",
+            ": choose an interval of {} {unit} or less (--interval, or compensation: {{interval}} in a campaign)",
             fmt_fixed(((last - first) / 2.0 * 1000.0).floor() / 1000.0, 3)
         ),
         _ => String::new(),
@@ -182,7 +182,7 @@ mod tests {
         assert_eq!(
             Ecmc.write(&table).unwrap_err(),
             Refused::Grid(
-                "2 points, but an ecmc lookup table needs at least 3: choose --interval 50.000 mm or less"
+                "2 points, but an ecmc lookup table needs at least 3: choose an interval of 50.000 mm or less (--interval, or compensation: {interval} in a campaign)"
                     .into()
             )
         );

@@ -262,7 +262,7 @@ mod tests {
         let err = held_table(&Heidenhain, &data, &Default::default()).unwrap_err();
         assert_eq!(
             err.to_string(),
-            "257 points, but the table holds at most 256; choose --interval 1.004 mm or more"
+            "257 points, but the table holds at most 256; choose an interval of 1.004 mm or more (--interval, or compensation: {interval} in a campaign)"
         );
         // A rotary axis measured −45…45°: the control sees only 0…360°.
         let targets = [-45.0, 0.0, 45.0];

@@ -109,7 +109,7 @@ mod tests {
             .to_string();
         assert_eq!(
             err,
-            "257 points, but the table holds at most 256; choose --interval 1.004 mm or more"
+            "257 points, but the table holds at most 256; choose an interval of 1.004 mm or more (--interval, or compensation: {interval} in a campaign)"
         );
     }
 }

@@ -272,7 +272,7 @@ mod tests {
         let err = held_table(&Siemens840d, &data, &settings).unwrap_err();
         assert_eq!(
             err.to_string(),
-            "10001 points, but the table holds at most 5000; choose --interval 0.021 mm or more"
+            "10001 points, but the table holds at most 5000; choose an interval of 0.021 mm or more (--interval, or compensation: {interval} in a campaign)"
         );
         let uneven = Table {
             kind: AxisKind::Linear,

@@ -309,7 +309,7 @@ mod tests {
         let err = held_table(&TwinCat, &data, &Default::default()).unwrap_err();
         assert_eq!(
             err.to_string(),
-            "1501 points, but the table holds at most 1500; choose --interval 1.001 mm or more"
+            "1501 points, but the table holds at most 1500; choose an interval of 1.001 mm or more (--interval, or compensation: {interval} in a campaign)"
         );
         // 0.33335 mm is 3333.5 steps of 0.1 µm: the points would drift from the list's.
         let data = crate::compensate::testing::straight(0.0, 1.0, 3);
