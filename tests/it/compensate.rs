@@ -247,3 +247,41 @@ fn a_campaign_axis_sets_its_table_grid() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A rotary axis measured over three turns (0…1080° every 40°): every controller with
+/// modulo tables gets one revolution, 0…360° every 40°, the ends one value, the modulo
+/// flag in its file; the others get the whole travel. The table looked up at 1000° is the
+/// one at 280°.
+#[test]
+fn a_rotary_axis_over_a_turn_gets_a_modulo_table() {
+    let data = axcheck::measurement::read_file(std::path::Path::new(
+        "tests/data/compensation/rotary-three-turns.csv",
+    ))
+    .unwrap();
+    assert_eq!(data.measurement_travel(), (0.0, 1080.0));
+    let flags = [
+        ("siemens-840d", "$AA_ENC_COMP_IS_MODULO[0,AX1]=1"),
+        ("fanuc", "3625   = 360000"),
+        ("heidenhain", "\n9     +360.0000 "),
+        ("twincat", "kw.ssfk.modulo               1"),
+        ("ecmc", "Cfg.SetAxisEncLookupTableRange(${ECMC_AXIS_NO},360)"),
+    ];
+    for c in compensate::controllers::CONTROLLERS {
+        let table = compensate::held_table(*c, &data, &Default::default()).unwrap();
+        let file = c.write(&table).unwrap();
+        let flag = flags.iter().find(|(name, _)| *name == c.name());
+        if table.modulo_deg.is_none() {
+            assert!(flag.is_none(), "{} should wrap", c.name());
+            assert_eq!(table.positions.last(), Some(&1080.0), "{}", c.name());
+            continue;
+        }
+        let (_, flag) = flag.unwrap_or_else(|| panic!("{} wraps", c.name()));
+        assert!(file.contains(flag), "{}:\n{file}", c.name());
+        let expected: Vec<f64> = (0..=9).map(|k| k as f64 * 40.0).collect();
+        assert_eq!(table.positions, expected, "{}", c.name());
+        assert_eq!(table.up[0], table.up[9], "{}", c.name());
+        assert_eq!(table.down[0], table.down[9], "{}", c.name());
+        let at = |p| table.correction(p, axcheck::units::Direction::Up);
+        assert_eq!(at(1000.0), at(280.0), "{}", c.name());
+    }
+}

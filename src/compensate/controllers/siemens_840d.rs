@@ -195,7 +195,7 @@ fn reference(table: &Table, mean: &[f64], per_unit: f64) -> String {
         format!("; Value 0 at the reference point {at} {unit}, as Siemens advises.\n")
     } else {
         format!(
-            "; Value {value} {unit} at {at} {unit}: Siemens advises 0 at the reference point (axcheck --reference POSITION).\n"
+            "; Value {value} {unit} at {at} {unit}: Siemens advises 0 at the reference point (--reference, or compensation: {{reference}} in a campaign).\n"
         )
     }
 }
