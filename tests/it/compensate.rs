@@ -264,7 +264,10 @@ fn a_rotary_axis_over_a_turn_gets_a_modulo_table() {
         ("fanuc", "3625   = 360000"),
         ("heidenhain", "\n9     +360.0000 "),
         ("twincat", "kw.ssfk.modulo               1"),
-        ("ecmc", "Cfg.SetAxisEncLookupTableRange(${ECMC_AXIS_NO},360)"),
+        (
+            "ecmc",
+            "Cfg.SetAxisEncLookupTableRange(${ECMC_AXIS_NO},360)",
+        ),
     ];
     for c in compensate::controllers::CONTROLLERS {
         let table = compensate::held_table(*c, &data, &Default::default()).unwrap();
