@@ -106,18 +106,3 @@ pub fn compensation(
         warnings,
     }
 }
-
-/// The parameters measured and predicted after compensation.
-#[derive(Debug, Clone)]
-pub struct Prediction {
-    pub measured: Evaluation,
-    pub predicted: Evaluation,
-}
-
-/// Evaluates `data` by `standard` as measured and with `table` applied.
-pub fn predict(table: &Table, data: &AxisData, standard: StandardId) -> Prediction {
-    Prediction {
-        measured: evaluate::evaluate(data, standard),
-        predicted: evaluate::evaluate(&apply(table, data), standard),
-    }
-}

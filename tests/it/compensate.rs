@@ -62,7 +62,10 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
         let e_after = after.parameter("E").unwrap().value;
         assert!(e_after < e / 4.0, "{interval:?}: E {e} -> {e_after}");
         // The prediction is what the file does (to its 4 decimals).
-        let predicted = compensate::predict(&table, &data, StandardId::Iso230_2).predicted;
+        let diagnosis = axcheck::diagnose::diagnose(&data, &Default::default());
+        let compensation =
+            compensate::compensation(csv, &data, StandardId::Iso230_2, &settings, &diagnosis);
+        let predicted = compensation.outcome.unwrap().predicted;
         for p in &after.parameters {
             let q = predicted.parameter(p.key()).unwrap().value;
             assert!(
