@@ -48,33 +48,33 @@ impl Controller for Csv {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::units::AxisKind;
+    use crate::compensate::testing::axis;
+    use crate::compensate::{Settings, held_table};
+    use crate::units::{AxisKind, Direction};
 
-    /// Two points: x̄↑ = 1.5, x̄↓ = −0.5 at 0 mm and x̄↑ = −2, x̄↓ = 0 at 100 mm give the
-    /// corrections −1.5, 0.5 and 2, 0.
+    /// Targets 0, 30, 70, 100 mm; x̄↑ = 0, 3, −1, 2 µm; x̄↓ = x̄↑ + 2 µm. Every 25 mm: x̄↑
+    /// interpolated is 0, 2.5, 1, −0.5, 2 (at 50: 3 + 20/40 × (−1 − 3) = 1), so the
+    /// corrections −x̄↑ are 0, −2.5, −1, 0.5, −2 and −x̄↓ two less.
     #[test]
-    fn header_units_and_signs_by_hand() {
-        let table = Table {
-            kind: AxisKind::Linear,
-            positions: vec![0.0, 100.0],
-            up: vec![-1.5, 2.0],
-            down: vec![0.5, 0.0],
-            reference: 0.0,
-            modulo_deg: None,
-            axis: None,
+    fn golden_table_resampled_by_hand() {
+        let targets = [0.0, 30.0, 70.0, 100.0];
+        let data = axis(AxisKind::Linear, &targets, 2, |p, d| {
+            let i = targets.iter().position(|t| *t == p).unwrap();
+            [0.0, 3.0, -1.0, 2.0][i] + if d == Direction::Down { 2.0 } else { 0.0 }
+        });
+        let settings = Settings {
+            interval: Some(25.0),
+            ..Default::default()
         };
+        let table = held_table(&Csv, &data, &settings).unwrap();
         assert_eq!(
             Csv.write(&table).unwrap(),
-            "position_mm,correction_up_um,correction_down_um\n0.0000,-1.5000,0.5000\n100.0000,2.0000,0.0000\n"
+            include_str!("../../../tests/data/compensation/csv-linear.csv")
         );
-        let rotary = Table {
-            kind: AxisKind::Rotary,
-            ..table
-        };
-        assert!(
-            Csv.write(&rotary)
-                .unwrap()
-                .starts_with("position_deg,correction_up_arcsec,")
-        );
+        let rotary = axis(AxisKind::Rotary, &[0.0, 90.0], 2, |_, _| 1.0);
+        let table = held_table(&Csv, &rotary, &Settings::default()).unwrap();
+        assert!(Csv.write(&table).unwrap().starts_with(
+            "position_deg,correction_up_arcsec,correction_down_arcsec\n0.0000,-1.0000,-1.0000\n"
+        ));
     }
 }

@@ -68,35 +68,39 @@ impl Controller for LinuxCnc {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::compensate::testing::axis;
+    use crate::compensate::{Settings, held_table};
+    use crate::units::Direction;
 
-    /// x̄↑ = 2.1 µm, x̄↓ = 0.9 µm at 50 mm: trims −0.0021 and −0.0009 mm (forward,
-    /// reverse); no header line.
+    /// Targets 0, 30, 70, 100 mm; x̄↑ = 0, 3, −1, 2 µm; x̄↓ = x̄↑ + 2 µm; every 25 mm with
+    /// the reference at 50 mm. Corrections −x̄↑ on the grid: 0, −2.5, −1, 0.5, −2 µm; zero at
+    /// 50 adds 1: trims ↑ 1, −1.5, 0, 1.5, −1 µm and ↓ two less, written in mm.
     #[test]
-    fn golden_type_1_file() {
-        let table = Table {
-            kind: AxisKind::Linear,
-            positions: vec![0.0, 50.0, 100.0],
-            up: vec![0.0, -2.1, -3.8],
-            down: vec![0.0, -0.9, -2.5],
-            reference: 0.0,
-            modulo_deg: None,
-            axis: None,
+    fn golden_type_1_file_by_hand() {
+        let targets = [0.0, 30.0, 70.0, 100.0];
+        let data = axis(AxisKind::Linear, &targets, 2, |p, d| {
+            let i = targets.iter().position(|t| *t == p).unwrap();
+            [0.0, 3.0, -1.0, 2.0][i] + if d == Direction::Down { 2.0 } else { 0.0 }
+        });
+        let settings = Settings {
+            interval: Some(25.0),
+            reference: Some(50.0),
+            ..Default::default()
         };
+        let table = held_table(&LinuxCnc, &data, &settings).unwrap();
         assert_eq!(
             LinuxCnc.write(&table).unwrap(),
-            "0.000000 0.0000000 0.0000000\n50.000000 -0.0021000 -0.0009000\n100.000000 -0.0038000 -0.0025000\n"
+            include_str!("../../../tests/data/compensation/linuxcnc-linear.txt")
         );
-        let rotary = Table {
-            kind: AxisKind::Rotary,
-            positions: vec![0.0, 90.0],
-            up: vec![3.6, -7.2],
-            down: vec![0.0, 0.0],
-            reference: 0.0,
-            modulo_deg: None,
-            axis: None,
-        };
+        // A rotary joint in degrees: x̄↑ = −3.6″, 7.2″ → trims 0.001°, −0.002°.
+        let rotary = axis(AxisKind::Rotary, &[0.0, 90.0], 2, |p, d| match d {
+            Direction::Up if p == 0.0 => -3.6,
+            Direction::Up => 7.2,
+            Direction::Down => 0.0,
+        });
+        let table = held_table(&LinuxCnc, &rotary, &Settings::default()).unwrap();
         assert_eq!(
-            LinuxCnc.write(&rotary).unwrap(),
+            LinuxCnc.write(&table).unwrap(),
             "0.000000 0.0010000 0.0000000\n90.000000 -0.0020000 0.0000000\n"
         );
     }
