@@ -59,6 +59,7 @@ pub fn table(data: &AxisData, positions: Vec<f64>, format: &Format, settings: &S
         reference: settings.reference.unwrap_or(positions[0]),
         modulo_deg: wraps.then_some(REVOLUTION_DEG),
         axis: settings.axis.clone(),
+        interpolation: Default::default(),
         positions,
     };
     let one = match format.directions {

@@ -16,7 +16,7 @@ pub mod table;
 pub(crate) mod testing;
 pub mod warnings;
 
-pub use table::{Table, apply, linear};
+pub use table::{Interpolation, Table, apply, linear};
 pub use warnings::Warning;
 
 use crate::diagnose::Diagnosis;
@@ -51,7 +51,9 @@ pub fn held_table(
 ) -> Result<Table, Refused> {
     let format = controller.format();
     let positions = grid::grid(data, &format, settings)?;
-    controller.hold(build::table(data, positions, &format, settings))
+    let mut table = build::table(data, positions, &format, settings);
+    table.interpolation = controller.interpolation();
+    controller.hold(table)
 }
 
 /// A compensation that the controller can hold: its table, file and prediction.

@@ -32,6 +32,21 @@ pub struct Table {
     /// `None`: the file carries a placeholder to replace.
     #[serde(skip)]
     pub axis: Option<String>,
+    /// How the controller applies the table between its points.
+    pub interpolation: Interpolation,
+}
+
+/// How a controller applies its table between points.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Interpolation {
+    /// Linearly between points, the end values held beyond them.
+    #[default]
+    Linear,
+    /// Each point's value from that point to the next (a staircase: FANUC outputs a
+    /// section's value where the axis passes its point); the first value before the first
+    /// point.
+    Steps,
 }
 
 /// Linear interpolation of `values` at `positions` (ascending) at `x`; constant beyond the
@@ -54,6 +69,13 @@ pub fn linear(positions: &[f64], values: &[f64], x: f64) -> f64 {
     }
 }
 
+/// The value of the last point at or before `x` (the first value before the table).
+pub fn step(positions: &[f64], values: &[f64], x: f64) -> f64 {
+    // A position within 1e-9 of a point is that point (targets on the grid).
+    let k = positions.partition_point(|p| *p <= x + 1e-9);
+    values.get(k.saturating_sub(1)).copied().unwrap_or(0.0)
+}
+
 /// `position` folded into one revolution [0, `revolution`).
 pub fn wrap(position: f64, revolution: f64) -> f64 {
     position.rem_euclid(revolution)
@@ -68,7 +90,10 @@ impl Table {
             Direction::Down => &self.down,
         };
         let x = self.modulo_deg.map_or(position, |r| wrap(position, r));
-        linear(&self.positions, values, x)
+        match self.interpolation {
+            Interpolation::Linear => linear(&self.positions, values, x),
+            Interpolation::Steps => step(&self.positions, values, x),
+        }
     }
 
     /// The direction-independent part at each point: (c↑ + c↓)/2, what a controller with
@@ -108,4 +133,29 @@ impl Table {
 /// at its target and direction.
 pub fn apply(table: &Table, data: &AxisData) -> AxisData {
     data.map_deviations(|r| r.deviation + table.correction(data.targets[r.target], r.direction))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Points 0, 10, 20 with 1, 2, 3: linear gives 1.5 at 5 and holds the ends; steps give
+    /// the last point's value at or before x (a target within 1e-9 of a point is on it).
+    #[test]
+    fn linear_and_steps_by_hand() {
+        let (p, v) = ([0.0, 10.0, 20.0], [1.0, 2.0, 3.0]);
+        assert_eq!(linear(&p, &v, 5.0), 1.5);
+        assert_eq!(linear(&p, &v, -5.0), 1.0);
+        assert_eq!(linear(&p, &v, 25.0), 3.0);
+        for (x, want) in [
+            (-5.0, 1.0),
+            (0.0, 1.0),
+            (9.99, 1.0),
+            (10.0 - 1e-12, 2.0),
+            (15.0, 2.0),
+            (25.0, 3.0),
+        ] {
+            assert_eq!(step(&p, &v, x), want, "at {x}");
+        }
+    }
 }

@@ -21,6 +21,7 @@ fn read_back(text: &str) -> Table {
         reference: 0.0,
         modulo_deg: None,
         axis: None,
+        interpolation: Default::default(),
     };
     let mut lines = text.lines();
     assert_eq!(

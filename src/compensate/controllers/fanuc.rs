@@ -39,8 +39,10 @@
 //!
 //! **Interpolation.** FANUC outputs a section's value as pulses where the axis passes the
 //! point ("the compensation value is output at the circled position", B-63980EN/01), a
-//! staircase; the prediction interpolates linearly between points, which is exact at the
-//! points: give `--interval` equal to the target spacing so the targets are points.
+//! staircase: the prediction applies each point's held correction from that point to the
+//! next ([`Interpolation::Steps`]; which end of the section the step sits at is read from
+//! the manual's figure, not confirmed). Between points the staircase leaves up to one
+//! section's increment: a finer `--interval` follows the error more closely.
 //!
 //! **Backlash.** Bidirectional compensation (3605#0 = 1, A-77810E) keeps a table per
 //! direction; backlash 1851/1852 is left as it was during the measurement (the − direction
@@ -58,8 +60,8 @@
 //! like the ↑ one, from the − end towards +).
 
 use super::{Controller, Directions, Format, Refused, Spacing};
-use crate::compensate::Table;
 use crate::compensate::table::wrap;
+use crate::compensate::{Interpolation, Table};
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 use std::fmt::Write;
 
@@ -95,6 +97,11 @@ impl Controller for Fanuc {
 
     /// Equidistant, a table per direction, modulo over a turn, up to 512 points per
     /// direction (the control's 1024 numbers, shared by all axes); detection unit × 1.
+    /// A staircase: each point's value from that point to the next.
+    fn interpolation(&self) -> Interpolation {
+        Interpolation::Steps
+    }
+
     fn format(&self) -> Format {
         Format {
             spacing: Spacing::Equidistant,

@@ -11,7 +11,7 @@ pub mod linuxcnc;
 pub mod siemens_840d;
 pub mod twincat;
 
-use super::Table;
+use super::{Interpolation, Table};
 use crate::units::AxisKind;
 
 /// Why a controller cannot hold a table.
@@ -77,6 +77,10 @@ pub trait Controller: Sync {
     fn extension(&self) -> &'static str;
     /// What its table can hold.
     fn format(&self) -> Format;
+    /// How it applies the table between points: linearly unless it says otherwise.
+    fn interpolation(&self) -> Interpolation {
+        Interpolation::Linear
+    }
     /// The table as the controller holds it: by default its corrections rounded to the
     /// format's unit. The prediction applies this table.
     fn hold(&self, table: Table) -> Result<Table, Refused> {

@@ -282,6 +282,7 @@ mod tests {
             reference: 0.0,
             modulo_deg: None,
             axis: None,
+            interpolation: Default::default(),
         };
         assert!(matches!(Siemens840d.write(&uneven), Err(Refused::Grid(_))));
     }

@@ -329,6 +329,7 @@ mod tests {
             reference: 0.0,
             modulo_deg: None,
             axis: None,
+            interpolation: Default::default(),
         };
         assert!(matches!(TwinCat.write(&table), Err(Refused::Range(_))));
         // Irregular points cannot be written as start and interval.

@@ -4,7 +4,7 @@
 
 use super::conditions::Row;
 use super::{num, pos};
-use crate::compensate::{Compensated, Compensation, Table};
+use crate::compensate::{Compensated, Compensation, Interpolation, Table};
 use crate::evaluate::Evaluation;
 use crate::report::compensation_chart::CompensationChart;
 use crate::units::{AxisKind, Direction};
@@ -22,6 +22,8 @@ pub struct CompensationSection<'a> {
     parameters: Vec<PredictedRow>,
     /// Why the repeatability is the floor, with the clause of the parameters that stay.
     floor: String,
+    /// How the controller applies the table between its points, for the prediction's note.
+    applied: &'static str,
     warnings: Vec<&'a str>,
 }
 
@@ -63,6 +65,10 @@ pub(super) fn compensation_section<'a>(
             floor(measured),
         ),
     };
+    let applied = match c.outcome.as_ref().map(|d| d.table.interpolation) {
+        Ok(Interpolation::Steps) => "each point's value held up to the next point",
+        _ => "interpolated linearly between its points",
+    };
     CompensationSection {
         controller: c.controller,
         refusal,
@@ -70,6 +76,7 @@ pub(super) fn compensation_section<'a>(
         unit,
         parameters,
         floor,
+        applied,
         warnings,
     }
 }
