@@ -15,6 +15,7 @@ fn main() {
             jobs: 1,
             diagnose: true,
             drop_data: false,
+            compensate: true,
         },
         &|_| {},
     );

@@ -157,6 +157,9 @@ pub struct Options {
     /// evaluated (the CI gate needs only the verdicts; reports need the readings). Keeps
     /// memory flat on large fleets.
     pub drop_data: bool,
+    /// Compute each test's compensation table where its machine names a controller (with
+    /// the diagnosis its warnings need); the CI gate writes no tables and skips them.
+    pub compensate: bool,
 }
 
 /// Evaluates every axis of `campaign`; `progress` is called once per finished test.
@@ -177,7 +180,7 @@ pub fn run(
     let evaluate_all = || -> Vec<AxisTest> {
         work.par_iter()
             .flat_map_iter(|(machine, entry)| {
-                let mut tests = run_axis(campaign, machine, entry, &specs, options.diagnose);
+                let mut tests = run_axis(campaign, machine, entry, &specs, options);
                 for t in &mut tests {
                     progress(t);
                     if options.drop_data {
@@ -300,7 +303,7 @@ fn run_axis(
     machine: &Arc<MachineInfo>,
     entry: &crate::campaign::AxisEntry,
     specs: &BTreeMap<String, Result<Arc<Spec>, String>>,
-    diagnose: bool,
+    options: Options,
 ) -> Vec<AxisTest> {
     let slot = Slot {
         machine: machine.clone(),
@@ -349,7 +352,7 @@ fn run_axis(
                 Err(e) => slot.error(e.clone()),
                 Ok(spec) => {
                     let rule = campaign.info.decision_rule;
-                    run_test(slot, &axis, spec.as_deref(), rule, path, diagnose)
+                    run_test(slot, &axis, spec.as_deref(), rule, path, options)
                 }
             }
         })
@@ -400,7 +403,7 @@ fn run_test(
     spec: Option<&Spec>,
     campaign_rule: Option<DecisionRule>,
     path: &Path,
-    diagnose: bool,
+    options: Options,
 ) -> AxisTest {
     let data = match measurement::read_file(path) {
         Ok(d) => d,
@@ -465,9 +468,10 @@ fn run_test(
             },
         )
     };
-    let diagnosis = diagnose.then(diagnosis_of);
+    let diagnosis = options.diagnose.then(diagnosis_of);
     // The compensation's warnings come from the diagnosis, run for them when not asked for.
     let compensation = (slot.machine.controller.as_deref())
+        .filter(|_| options.compensate)
         .and_then(crate::compensate::controllers::find)
         .map(|c| {
             let table = axis.raw.compensation.clone().unwrap_or_default();

@@ -238,6 +238,7 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
             jobs: options.jobs,
             diagnose: campaign.info.output.diagnose && !options.no_diagnose,
             drop_data: false,
+            compensate: true,
         },
         options.progress,
     );
@@ -273,6 +274,7 @@ pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Re
         jobs,
         diagnose,
         drop_data: true,
+        compensate: false,
     };
     let result = evaluate_with(&Campaign::load(path)?, options, progress);
     println!("{}", counts_line(&result));

@@ -57,6 +57,7 @@ fn run(path: &Path) -> CampaignResult {
         jobs: 1,
         diagnose: true,
         drop_data: false,
+        compensate: true,
     };
     batch::run(&campaign, options, &|_| {})
 }

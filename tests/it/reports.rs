@@ -253,6 +253,7 @@ fn templates_compile_without_warnings_and_identically() {
             jobs: 2,
             diagnose: true,
             drop_data: false,
+            compensate: true,
         },
         &|_| {},
     );
