@@ -4,7 +4,8 @@
 //! [`measurement`] reads test files, [`rules`] checks each test plan against the standard,
 //! [`evaluate`] computes the parameters of a standard (pure, no I/O), [`judge`] compares
 //! them with tolerance limits, [`batch`] runs a whole campaign in parallel and [`export`]
-//! writes its outputs. [`simulate`] is the axis error model that produces test data.
+//! writes its outputs; `history` keeps every run's results and [`trend`] follows each
+//! axis across them. [`simulate`] is the axis error model that produces test data.
 
 pub mod atomic;
 pub mod batch;
@@ -13,6 +14,8 @@ pub mod compensate;
 pub mod diagnose;
 pub mod evaluate;
 pub mod export;
+#[cfg(feature = "parquet")]
+pub mod history;
 pub mod judge;
 pub mod measurement;
 pub mod nde;
@@ -21,6 +24,7 @@ pub mod report;
 pub mod rules;
 pub mod simulate;
 pub mod suggest;
+pub mod trend;
 pub mod uncertainty;
 pub mod units;
 pub mod yaml;

@@ -12,10 +12,11 @@ const LAYERS: &[&[&str]] = &[
     &["measurement", "yaml"],
     &["evaluate", "nde", "simulate"],
     &["uncertainty"],
-    &["rules", "judge", "diagnose"],
+    &["rules", "judge", "diagnose", "trend"],
     &["compensate"],
     &["campaign"],
     &["batch"],
+    &["history"],
     &["report"],
     &["export"],
 ];
