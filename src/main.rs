@@ -59,6 +59,10 @@ enum Command {
         /// default is a line at every tenth of the campaign).
         #[arg(long)]
         progress: bool,
+        /// Append the run's results to the inspection history in this folder (default:
+        /// `campaign.history`, relative to the campaign file).
+        #[arg(long)]
+        history: Option<PathBuf>,
     },
     /// The CI gate: evaluate a campaign and write nothing (exit 0: every axis passes,
     /// 1: any axis fails, is noncompliant or has an error, 2: the campaign cannot be read).
@@ -207,6 +211,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             no_diagnose,
             templates,
             progress,
+            history,
         } => {
             let options = cli::campaign::RunOptions {
                 out: &out,
@@ -215,6 +220,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 no_diagnose,
                 templates: templates.as_deref(),
                 progress: progress_of(progress),
+                history: history.as_deref(),
             };
             return Ok(ExitCode::from(cli::campaign::run(&campaign, &options)?));
         }

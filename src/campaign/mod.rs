@@ -40,6 +40,8 @@ pub struct Campaign {
     /// Folder that relative paths resolve against.
     pub dir: PathBuf,
     pub info: CampaignInfo,
+    /// `campaign.history` resolved against the campaign's folder (checked by the path rule).
+    pub history: Option<PathBuf>,
     /// Standard for axes that name none.
     pub standard: StandardId,
     pub machines: Vec<Machine>,
@@ -102,6 +104,8 @@ impl Campaign {
             None => StandardId::Iso230_2,
             Some(s) => parse_standard(s, "campaign.standard", &index).map_err(fail)?,
         };
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        let history = history_dir(&info, &dir, &index).map_err(fail)?;
         let machine_values = match top.get("machines") {
             None => return Err(fail(Located::new(root, "missing the `machines:` list"))),
             Some(Value::Sequence(items)) => items,
@@ -125,8 +129,9 @@ impl Campaign {
             .collect();
         let campaign = Campaign {
             file: path.to_path_buf(),
-            dir: path.parent().map(Path::to_path_buf).unwrap_or_default(),
+            dir,
             info,
+            history,
             standard,
             machines,
         };
@@ -201,6 +206,31 @@ fn top_level<'v>(
         }
     }
     Ok(top)
+}
+
+/// `campaign.history` inside the campaign's folder (unless `allow_outside_paths`).
+fn history_dir(
+    info: &CampaignInfo,
+    dir: &Path,
+    index: &LocationIndex,
+) -> Result<Option<PathBuf>, Located> {
+    let Some(history) = &info.history else {
+        return Ok(None);
+    };
+    let located = |message: String| {
+        Located::new(
+            index.value("campaign.history"),
+            format!("campaign.history: {message}"),
+        )
+    };
+    if history.trim().is_empty() {
+        return Err(located(
+            "expected a folder, e.g. `history: history`, got an empty text".into(),
+        ));
+    }
+    data::inside(dir, history, info.allow_outside_paths)
+        .map(Some)
+        .map_err(located)
 }
 
 /// The standard named at `path`.

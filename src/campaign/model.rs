@@ -48,6 +48,10 @@ pub struct CampaignInfo {
     /// Allow data paths that are absolute or leave the campaign's folder.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub allow_outside_paths: bool,
+    /// Folder of the inspection history `run` appends to (relative to the campaign file,
+    /// under the same path rule as data files); `--history` overrides it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub history: Option<String>,
     #[serde(default)]
     pub output: OutputOptions,
 }

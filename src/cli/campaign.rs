@@ -215,6 +215,8 @@ pub struct RunOptions<'a> {
     /// Skip the model check and diagnosis (also `campaign.output.diagnose: false`).
     pub no_diagnose: bool,
     pub progress: Progress,
+    /// Folder of the inspection history to append to (overrides `campaign.history`).
+    pub history: Option<&'a Path>,
 }
 
 /// `axcheck run`.
@@ -223,6 +225,11 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let out = options.out;
     let campaign = Campaign::load(path)?;
     check_output_dir(&campaign, out)?;
+    let history = (options.history.map(Path::to_path_buf)).or_else(|| campaign.history.clone());
+    if history.is_some() {
+        // Before the evaluation: a history needs the run's date.
+        axcheck::history::run_date(&campaign.info, &campaign.file.display().to_string())?;
+    }
     // A broken manifest is refused before the evaluation; the output paths themselves are
     // checked by `write_all` before anything is written.
     axcheck::atomic::OutputDir::open(out)?;
@@ -265,7 +272,30 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
             ""
         }
     );
+    if let Some(dir) = &history {
+        println!("{}", append_history(&result, dir)?);
+    }
     Ok(exit_code(&result))
+}
+
+/// Appends the run to the history in `dir`; the line that says where.
+fn append_history(result: &CampaignResult, dir: &Path) -> Result<String> {
+    let start = Instant::now();
+    let records = axcheck::history::records(result)?;
+    let written = axcheck::history::append(dir, &records)
+        .with_context(|| format!("appending the run to the history {}", dir.display()))?;
+    Ok(match written {
+        Some(path) => format!(
+            "History: {} rows appended to {} after {:.2} s",
+            records.len(),
+            path.display(),
+            start.elapsed().as_secs_f64()
+        ),
+        None => format!(
+            "History: no test was evaluated; {} left as it was",
+            dir.display()
+        ),
+    })
 }
 
 /// `axcheck check`: the CI gate; writes nothing.

@@ -1,7 +1,111 @@
 //! The inspection history: every run's axis results appended to a dataset of Parquet files
 //! (one per campaign run, identified by campaign name and date: a rerun replaces its file),
 //! read back as trend series. I/O at the edge; the rows are [`Record`]s.
+//!
+//! Layout: `DIR/year=YYYY/<campaign-slug>_<YYYY-MM-DD>.parquet` (Hive-style partitions, so
+//! DuckDB and polars add a `year` column when asked). Each file is written atomically
+//! ([`crate::atomic::write`]: `.NAME.axcheck-tmp-PID`, then a rename), so a reader sees a
+//! complete file or none, and temporary files never match `*.parquet`.
 
 pub mod record;
+mod rows;
+mod series;
+mod store;
 
 pub use record::{Record, SCHEMA_VERSION};
+pub use rows::{records, run_date};
+pub use series::series;
+pub use store::{append, file_path, read};
+
+use std::path::PathBuf;
+
+/// Why the history cannot be written or read.
+#[derive(Debug, thiserror::Error)]
+pub enum HistoryError {
+    #[error(
+        "{file}: campaign.date: a history needs the campaign's date (YYYY-MM-DD, e.g. `date: 2026-11-20`), the run's identity with its name"
+    )]
+    MissingDate { file: String },
+    #[error("{file}: campaign.date: expected a date YYYY-MM-DD, got `{date}`")]
+    BadDate { file: String, date: String },
+    #[error(
+        "{file}: campaign.name: a history needs the campaign's name (the run's identity with its date)"
+    )]
+    MissingName { file: String },
+    #[error(
+        "the rows to append belong to more than one campaign run ({first} and {other}); append one run at a time"
+    )]
+    MixedRuns { first: String, other: String },
+    #[error(
+        "{path} holds the history of campaign `{found}`, not `{campaign}`: their names give the same file name on this date; rename one of the campaigns"
+    )]
+    NameClash {
+        path: PathBuf,
+        campaign: String,
+        found: String,
+    },
+    #[error("the history folder {path} does not exist")]
+    NoHistory { path: PathBuf },
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{path}: not a readable Parquet file of the history: {message}")]
+    Parquet { path: PathBuf, message: String },
+    #[error(
+        "{path}: no column `{column}`; this is not an axcheck history file (schema version {SCHEMA_VERSION})"
+    )]
+    MissingColumn { path: PathBuf, column: &'static str },
+    #[error("{path}: column `{column}` has type {found}, expected {expected}")]
+    WrongType {
+        path: PathBuf,
+        column: &'static str,
+        found: String,
+        expected: &'static str,
+    },
+    #[error(
+        "{path}: schema_version {found} is unknown to this axcheck (it reads version {SCHEMA_VERSION}); use a newer axcheck"
+    )]
+    UnknownVersion { path: PathBuf, found: String },
+    #[error("{path}: row {row}: column `{column}` is empty")]
+    MissingValue {
+        path: PathBuf,
+        row: usize,
+        column: &'static str,
+    },
+}
+
+/// `Plant 2 annual inspection` → `plant-2-annual-inspection`: lower-case letters and digits
+/// (any script), everything else a single `-`; `campaign` when nothing is left.
+pub fn slug(name: &str) -> String {
+    let mut slug = String::new();
+    for c in name.chars() {
+        if c.is_alphanumeric() {
+            slug.extend(c.to_lowercase());
+        } else if !slug.is_empty() && !slug.ends_with('-') {
+            slug.push('-');
+        }
+    }
+    while slug.ends_with('-') {
+        slug.pop();
+    }
+    if slug.is_empty() {
+        "campaign".into()
+    } else {
+        slug
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::slug;
+
+    #[test]
+    fn slugs_keep_letters_and_digits() {
+        assert_eq!(slug("Plant 2 annual inspection"), "plant-2-annual-inspection");
+        assert_eq!(slug("  --Hall B / 2026--  "), "hall-b-2026");
+        assert_eq!(slug("Завод №2"), "завод-2");
+        assert_eq!(slug("../.."), "campaign");
+    }
+}

@@ -1,0 +1,76 @@
+//! A run's results as history rows: one per evaluated parameter of each axis test.
+
+use super::{HistoryError, Record, SCHEMA_VERSION};
+use crate::batch::{AxisTest, CampaignResult};
+use crate::campaign::CampaignInfo;
+use chrono::NaiveDate;
+
+/// The run's date (`campaign.date`), which a history needs; `file` names the campaign file
+/// in the error.
+pub fn run_date(info: &CampaignInfo, file: &str) -> Result<NaiveDate, HistoryError> {
+    if info.name.trim().is_empty() {
+        return Err(HistoryError::MissingName { file: file.into() });
+    }
+    let date = info.date.as_deref().ok_or_else(|| HistoryError::MissingDate {
+        file: file.into(),
+    })?;
+    NaiveDate::parse_from_str(date, "%Y-%m-%d").map_err(|_| HistoryError::BadDate {
+        file: file.into(),
+        date: date.into(),
+    })
+}
+
+/// One row per (axis test, evaluated parameter), in campaign order then the standard's
+/// parameter order. Tests without an evaluation (errors before it) have no rows; a value
+/// that could not be computed (not finite) has none either.
+pub fn records(result: &CampaignResult) -> Result<Vec<Record>, HistoryError> {
+    let date = run_date(&result.info, &result.file_name)?;
+    Ok(result
+        .tests
+        .iter()
+        .flat_map(|t| test_records(&result.info.name, date, t))
+        .collect())
+}
+
+fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
+    let (Some(evaluation), Some(kind), Some(standard)) = (&t.evaluation, t.kind(), t.standard())
+    else {
+        return Vec::new();
+    };
+    // Not diagnosed: empty; diagnosed with nothing found: `none`.
+    let effects = t
+        .diagnosis
+        .as_ref()
+        .map(|d| d.effects_label())
+        .unwrap_or_default();
+    evaluation
+        .parameters
+        .iter()
+        .filter(|p| p.value.is_finite())
+        .map(|p| {
+            let key = p.key();
+            Record {
+                schema_version: SCHEMA_VERSION,
+                campaign: campaign.to_string(),
+                date,
+                machine: t.machine.id.clone(),
+                serial: t.machine.serial.clone(),
+                axis: t.axis.clone(),
+                test: u32::try_from(t.test).unwrap_or(u32::MAX),
+                kind: kind.to_string(),
+                standard: standard.key().to_string(),
+                verdict: t.verdict.name().to_string(),
+                parameter: key.to_string(),
+                unit: kind.deviation_unit().to_string(),
+                value: p.value,
+                limit: t
+                    .judgement
+                    .as_ref()
+                    .and_then(|j| j.limits.values.get(key))
+                    .map(|(limit, _)| *limit),
+                uncertainty: t.uncertainty.as_ref().and_then(|u| u.expanded_of(key)),
+                effects: effects.clone(),
+            }
+        })
+        .collect()
+}
