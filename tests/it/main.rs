@@ -15,6 +15,7 @@ mod decision;
 mod diagnose;
 mod fuzz_corpus;
 mod gost27843;
+mod history;
 mod iso230_2;
 mod outputs;
 mod properties;
