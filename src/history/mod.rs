@@ -103,7 +103,10 @@ mod tests {
 
     #[test]
     fn slugs_keep_letters_and_digits() {
-        assert_eq!(slug("Plant 2 annual inspection"), "plant-2-annual-inspection");
+        assert_eq!(
+            slug("Plant 2 annual inspection"),
+            "plant-2-annual-inspection"
+        );
         assert_eq!(slug("  --Hall B / 2026--  "), "hall-b-2026");
         assert_eq!(slug("Завод №2"), "завод-2");
         assert_eq!(slug("../.."), "campaign");

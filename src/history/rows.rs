@@ -11,9 +11,10 @@ pub fn run_date(info: &CampaignInfo, file: &str) -> Result<NaiveDate, HistoryErr
     if info.name.trim().is_empty() {
         return Err(HistoryError::MissingName { file: file.into() });
     }
-    let date = info.date.as_deref().ok_or_else(|| HistoryError::MissingDate {
-        file: file.into(),
-    })?;
+    let date = info
+        .date
+        .as_deref()
+        .ok_or_else(|| HistoryError::MissingDate { file: file.into() })?;
     NaiveDate::parse_from_str(date, "%Y-%m-%d").map_err(|_| HistoryError::BadDate {
         file: file.into(),
         date: date.into(),

@@ -73,7 +73,10 @@ fn parquet_bytes(records: &[Record]) -> PolarsResult<Vec<u8>> {
     let columns = vec![
         Column::new(
             "schema_version".into(),
-            records.iter().map(|r| r.schema_version).collect::<Vec<u32>>(),
+            records
+                .iter()
+                .map(|r| r.schema_version)
+                .collect::<Vec<u32>>(),
         ),
         Column::new("campaign".into(), strings(|r| &r.campaign)),
         Series::new(
@@ -109,7 +112,10 @@ fn parquet_bytes(records: &[Record]) -> PolarsResult<Vec<u8>> {
         ),
         Column::new(
             "limit".into(),
-            records.iter().map(|r| r.limit).collect::<Vec<Option<f64>>>(),
+            records
+                .iter()
+                .map(|r| r.limit)
+                .collect::<Vec<Option<f64>>>(),
         ),
         Column::new(
             "uncertainty".into(),
@@ -253,12 +259,13 @@ impl Columns<'_> {
     }
 
     fn check_version(&self) -> Result<(), HistoryError> {
-        let versions = self.df.column("schema_version").map_err(|_| {
-            HistoryError::MissingColumn {
-                path: self.path.to_path_buf(),
-                column: "schema_version",
-            }
-        })?;
+        let versions =
+            self.df
+                .column("schema_version")
+                .map_err(|_| HistoryError::MissingColumn {
+                    path: self.path.to_path_buf(),
+                    column: "schema_version",
+                })?;
         let unknown = versions
             .as_materialized_series()
             .iter()

@@ -82,7 +82,9 @@ fn assert_rows_match_results(records: &[Record], results: &Value) {
         let machine = axis["machine"].as_str().unwrap();
         let test = u32::try_from(axis["test"].as_u64().unwrap()).unwrap();
         for (key, value) in parameters {
-            let Some(value) = value.as_f64() else { continue };
+            let Some(value) = value.as_f64() else {
+                continue;
+            };
             expected += 1;
             let row = find(records, machine, test, key);
             assert_eq!(row.axis, axis["axis"].as_str().unwrap());
@@ -122,14 +124,21 @@ fn a_run_appends_one_file_whose_rows_are_its_parameters_and_a_rerun_replaces_it(
     assert_eq!(e.serial.as_deref(), Some("S-1"));
     assert_eq!((e.kind.as_str(), e.unit.as_str()), ("linear", "um"));
     assert!(!e.effects.is_empty(), "diagnosed: effects or `none`");
-    assert!(records.iter().all(|r| r.machine != "M3"), "errors have no rows");
+    assert!(
+        records.iter().all(|r| r.machine != "M3"),
+        "errors have no rows"
+    );
     assert!(find(&records, "M2", 1, "E").serial.is_none());
 
     let before = std::fs::read(hist.join(name)).unwrap();
     let (code, log) = run(&campaign, &out, &["--history", s(&hist)]);
     assert_eq!(code, 1, "{log}");
     assert_eq!(files(&hist), [name], "a rerun replaces, never duplicates");
-    assert_eq!(std::fs::read(hist.join(name)).unwrap(), before, "same bytes");
+    assert_eq!(
+        std::fs::read(hist.join(name)).unwrap(),
+        before,
+        "same bytes"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -152,7 +161,10 @@ fn campaign_history_key_dates_in_year_folders_and_series() {
         ]
     );
     let records = history::read(&hist).unwrap();
-    assert!(records.iter().all(|r| r.effects.is_empty()), "not diagnosed");
+    assert!(
+        records.iter().all(|r| r.effects.is_empty()),
+        "not diagnosed"
+    );
     let series = history::series(&records);
     let e: Vec<_> = series.iter().filter(|s| s.parameter == "E").collect();
     assert_eq!(e.len(), 2, "M1 X and M2 Z");
@@ -170,8 +182,12 @@ fn campaign_history_key_dates_in_year_folders_and_series() {
     assert_eq!(m1.unit, "um");
     let mut sorted = series.clone();
     sorted.sort_by(|a, b| {
-        (&a.machine, &a.serial, &a.axis, &a.parameter)
-            .cmp(&(&b.machine, &b.serial, &b.axis, &b.parameter))
+        (&a.machine, &a.serial, &a.axis, &a.parameter).cmp(&(
+            &b.machine,
+            &b.serial,
+            &b.axis,
+            &b.parameter,
+        ))
     });
     assert_eq!(series, sorted, "sorted by machine, serial, axis, parameter");
     std::fs::remove_dir_all(&dir).unwrap();
@@ -226,7 +242,9 @@ fn record(campaign: &str, schema_version: u32) -> Record {
 fn reading_checks_the_schema_and_skips_temporary_files() {
     let dir = scratch("history-schema");
     let hist = dir.join("hist");
-    let written = history::append(&hist, &[record("Plant", 1)]).unwrap().unwrap();
+    let written = history::append(&hist, &[record("Plant", 1)])
+        .unwrap()
+        .unwrap();
     let temp = written.with_file_name(".plant_2026-11-20.parquet.axcheck-tmp-4242");
     std::fs::write(&temp, b"PAR1 half a file").unwrap();
     assert_eq!(history::read(&hist).unwrap(), [record("Plant", 1)]);
@@ -245,13 +263,18 @@ fn reading_checks_the_schema_and_skips_temporary_files() {
     std::fs::create_dir_all(&broken).unwrap();
     std::fs::write(broken.join("junk.parquet"), b"not parquet").unwrap();
     let e = history::read(&broken).unwrap_err().to_string();
-    assert!(e.contains("junk.parquet: not a readable Parquet file"), "{e}");
+    assert!(
+        e.contains("junk.parquet: not a readable Parquet file"),
+        "{e}"
+    );
 
     let foreign = dir.join("foreign");
     std::fs::create_dir_all(&foreign).unwrap();
     let mut df = polars::df!("schema_version" => [1u32], "campaign" => ["x"]).unwrap();
     let file = std::fs::File::create(foreign.join("other.parquet")).unwrap();
-    polars::prelude::ParquetWriter::new(file).finish(&mut df).unwrap();
+    polars::prelude::ParquetWriter::new(file)
+        .finish(&mut df)
+        .unwrap();
     let e = history::read(&foreign).unwrap_err().to_string();
     assert!(e.contains("other.parquet: no column `date`"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
@@ -264,7 +287,11 @@ fn a_history_is_read_while_another_process_appends() {
     let dir = scratch("history-concurrent");
     let hist = dir.join("hist");
     let first = campaign(&dir, "Plant", Some("2024-11-20"), "");
-    let (code, log) = run(&first, &dir.join("out"), &["--history", s(&hist), "--no-diagnose"]);
+    let (code, log) = run(
+        &first,
+        &dir.join("out"),
+        &["--history", s(&hist), "--no-diagnose"],
+    );
     assert_eq!(code, 1, "{log}");
     let rows_per_run = history::read(&hist).unwrap().len();
     assert!(rows_per_run > 0);
