@@ -54,8 +54,14 @@ fn top_module(path: &Path) -> String {
     first.trim_end_matches(".rs").to_string()
 }
 
-/// The top-level modules that `code` names as `crate::x` or in `crate::{x, y}`.
+/// The top-level modules that `code` names as `crate::x` or in `crate::{x, y}` (outside
+/// comments: a doc comment may point up to where its values come from).
 fn uses(code: &str) -> Vec<String> {
+    let code: String = code
+        .lines()
+        .filter(|line| !line.trim_start().starts_with("//"))
+        .collect::<Vec<_>>()
+        .join("\n");
     let mut out = Vec::new();
     for (i, _) in code.match_indices("crate::") {
         let rest = &code[i + "crate::".len()..];

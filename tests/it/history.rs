@@ -334,3 +334,23 @@ fn a_history_is_read_while_another_process_appends() {
     assert!(reads > 1, "read while appending");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A measurement, not a check: `AXCHECK_HISTORY=DIR cargo test --release history_read_time
+/// -- --ignored --nocapture` prints the time to read a history and regroup it as series.
+#[test]
+#[ignore]
+fn history_read_time() {
+    let Some(dir) = std::env::var_os("AXCHECK_HISTORY") else {
+        return;
+    };
+    let start = std::time::Instant::now();
+    let records = history::read(Path::new(&dir)).unwrap();
+    let read = start.elapsed().as_secs_f64();
+    let series = history::series(&records);
+    println!(
+        "{} rows read in {read:.2} s; {} series in {:.2} s more",
+        records.len(),
+        series.len(),
+        start.elapsed().as_secs_f64() - read
+    );
+}
