@@ -21,6 +21,8 @@ const WEAR_START: f64 = 1.0;
 const WEAR_RATE: f64 = 1.2;
 /// B's limit in the general spec (linear axes up to 1000 mm); B̄ gets the same here.
 const B_LIMIT: f64 = 8.0;
+/// The wearing axis's scatter σ, µm: each Bᵢ scatters by s = σ·√(2/5) = 0.19 µm.
+const WEAR_SCATTER: f64 = 0.3;
 
 fn first_inspection() -> NaiveDate {
     NaiveDate::from_ymd_opt(2020, 3, 16).unwrap()
@@ -61,6 +63,7 @@ fn simulation(axis: usize, date: NaiveDate) -> Simulation {
     let mut model = stable_model(axis);
     if axis == WEARING {
         model.reversal = -(WEAR_START + WEAR_RATE * years_since_first(date));
+        model.scatter = WEAR_SCATTER;
     }
     let targets: Vec<f64> = (0..11)
         .map(|i| 5.0 + i as f64 * (TRAVEL - 10.0) / 10.0)
@@ -134,6 +137,9 @@ fn true_crossing() -> NaiveDate {
         .unwrap()
 }
 
+/// Seed 0 here; over 60 seeds (tried once, by hand) B̄'s slope was within its SE 51
+/// times and within 2 SE 58 times, its forecast −50…+56 days from the truth, B's forecast
+/// 28…155 days early, and 2 of about 13 700 stable series were flagged.
 #[test]
 fn the_wearing_axis_is_found_and_nothing_else_is_flagged() {
     let options = Options::default();
@@ -152,11 +158,12 @@ fn the_wearing_axis_is_found_and_nothing_else_is_flagged() {
     assert!((slope + WEAR_RATE).abs() <= se, "B̄ slope {slope} ± {se}");
     let forecast = mean.forecast_date.unwrap();
     let off = (forecast - true_crossing()).num_days();
-    assert!(off.abs() <= 30, "B̄ forecast {forecast}, {off} days off");
+    assert!(off.abs() <= 60, "B̄ forecast {forecast}, {off} days off");
     assert!(mean.flagged);
 
     // B, the largest |Bᵢ| over the targets, runs above the true reversal by the largest
-    // of 11 noisy values, so it crosses a little earlier; its slope is the same.
+    // of 11 noisy values (on average 1.6 s = 0.30 µm, rarely over 3 s = 0.57 µm), so it
+    // crosses 0.25 to 0.5 years earlier; its slope is the same.
     let (_, b) = find(&fits, WEARING, "B");
     let (slope, se) = (b.slope_per_year.unwrap(), b.slope_se.unwrap());
     assert!((slope - WEAR_RATE).abs() <= se, "B slope {slope} ± {se}");
