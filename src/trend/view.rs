@@ -136,3 +136,85 @@ fn quote(s: &str) -> String {
         s.to_string()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trend::{Options, fit};
+
+    fn example() -> Series {
+        let date = |y| NaiveDate::from_ymd_opt(y, 1, 1).unwrap();
+        Series {
+            machine: "M1".into(),
+            serial: Some("S-7".into()),
+            axis: "X".into(),
+            parameter: "B_mean".into(),
+            unit: "um".into(),
+            limit: Some(2.0),
+            points: vec![
+                Point {
+                    date: date(2023),
+                    value: 1.0,
+                },
+                Point {
+                    date: date(2024),
+                    value: 2.5,
+                },
+            ],
+        }
+    }
+
+    #[test]
+    fn json_has_the_issues_keys() {
+        let series = example();
+        let trend = fit(&series, &Options::default());
+        let value: serde_json::Value = serde_json::from_str(&json([(&series, &trend)])).unwrap();
+        let axis = &value["axes"][0];
+        let keys: Vec<&str> = axis
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(String::as_str)
+            .collect();
+        assert_eq!(
+            keys,
+            [
+                "machine",
+                "serial",
+                "axis",
+                "parameter",
+                "symbol",
+                "unit",
+                "limit",
+                "points",
+                "slope_per_year",
+                "slope_se",
+                "forecast_date",
+                "flagged",
+                "reason"
+            ]
+        );
+        assert_eq!(axis["symbol"], "B̄");
+        assert_eq!(axis["points"][1]["date"], "2024-01-01");
+        assert_eq!(axis["slope_se"], serde_json::Value::Null);
+        assert_eq!(axis["forecast_date"], "2024-01-01");
+        assert_eq!(axis["reason"], "over its limit 2.0 µm since 2024-01-01");
+    }
+
+    #[test]
+    fn csv_has_one_row_per_series() {
+        let series = example();
+        let trend = fit(&series, &Options::default());
+        let text = csv([(&series, &trend)]);
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], CSV_COLUMNS.join(","));
+        assert_eq!(
+            lines[1],
+            format!(
+                "M1,S-7,X,B_mean,um,2,2,2023-01-01,1,2024-01-01,2.5,{},,2024-01-01,true,\
+                 over its limit 2.0 µm since 2024-01-01",
+                1.5 * 365.25 / 365.0
+            )
+        );
+    }
+}
