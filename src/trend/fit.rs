@@ -194,7 +194,8 @@ fn judge_limit(
     };
     let t_cross = (sign * limit - intercept) / slope;
     let days = (t_cross * DAYS_PER_YEAR).round();
-    let Some(date) = (days.is_finite() && days >= 0.0 && days < 1e7)
+    let Some(date) = (0.0..1e7)
+        .contains(&days)
         .then(|| trend.origin.checked_add_days(Days::new(days as u64)))
         .flatten()
     else {
