@@ -1,6 +1,13 @@
 //! Inspection trends: one parameter of one axis over its inspections, the slope per year
 //! (robust to one odd inspection), and the date it will reach its limit. Pure: the series
-//! come from the history store (`crate::history`), the results go to JSON, CSV and charts.
+//! come from the history store (the `history` module, a higher layer), the results go to
+//! JSON, CSV and charts.
+
+pub mod fit;
+pub mod sen;
+pub mod view;
+
+pub use fit::{Options, Trend, fit};
 
 use chrono::NaiveDate;
 use serde::Serialize;

@@ -24,4 +24,5 @@ mod reports;
 mod rules;
 mod simulator;
 mod standards;
+mod trend;
 mod uncertainty;
