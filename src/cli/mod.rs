@@ -6,6 +6,8 @@ pub mod diagnose;
 pub mod eval;
 pub mod simulate;
 pub mod text;
+#[cfg(feature = "parquet")]
+pub mod trend;
 
 /// `--json` output: `value`'s JSON with the input file's name added last, pretty-printed.
 pub fn json_with_file<T: serde::Serialize>(value: &T, file: &str) -> serde_json::Result<String> {

@@ -187,3 +187,80 @@ fn the_wearing_axis_is_found_and_nothing_else_is_flagged() {
         .collect();
     assert!(others.is_empty(), "flagged stable series: {others:#?}");
 }
+
+/// `axcheck trend` end to end: five yearly runs of a campaign whose X reversal grows by
+/// 1.5 µm a year and whose Y is stable, each appended with `--history`; the trend flags
+/// X's reversal (first in the list, with a forecast) and nothing of Y, and writes the CSV.
+#[test]
+fn the_trend_command_flags_the_wearing_axis_of_a_history() {
+    use crate::common::{axcheck, scratch};
+    let dir = scratch("trend-cli");
+    let s = |p: &std::path::Path| p.to_str().unwrap().to_string();
+    let history = dir.join("history");
+    for (k, year) in (2021..=2025).enumerate() {
+        for (axis, reversal) in [("x", 1.0 + 1.5 * k as f64), ("y", 1.0)] {
+            let model = dir.join(format!("{axis}.yaml"));
+            std::fs::write(
+                &model,
+                format!("kind: linear\nseed: {}\nmodel:\n  scale_um_per_m: 2\n  reversal_um: {reversal}\n  scatter_um: 0.2\nplan:\n  targets: {{start_mm: 0, end_mm: 500, count: 11, jitter_mm: 4}}\n  runs: 5\n", 10 + k),
+            )
+            .unwrap();
+            let csv = dir.join(format!("data/{axis}.csv"));
+            let (code, _, err) = axcheck(&["simulate", &s(&model), "-o", &s(&csv)]);
+            assert_eq!(code, 0, "{err}");
+        }
+        let campaign = dir.join("campaign.yaml");
+        std::fs::write(
+            &campaign,
+            format!("campaign: {{name: wear, date: {year}-06-01, spec: general}}\nmachines:\n  - id: M\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv, tolerances: {{B: 9}}}}\n      - {{name: Y, kind: linear, data: data/y.csv, tolerances: {{B: 9}}}}\n"),
+        )
+        .unwrap();
+        let out = dir.join("out");
+        let (code, stdout, err) = axcheck(&[
+            "run",
+            &s(&campaign),
+            "--out",
+            &s(&out),
+            "--no-pdf",
+            "--history",
+            &s(&history),
+        ]);
+        assert!(code <= 1, "{stdout}{err}");
+    }
+    let out = dir.join("trends");
+    let (code, stdout, err) = axcheck(&["trend", &s(&history), "--json", "--out", &s(&out)]);
+    assert_eq!(code, 0, "{err}");
+    let json: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let axes = json["axes"].as_array().unwrap();
+    let flagged: Vec<&serde_json::Value> = axes.iter().filter(|a| a["flagged"] == true).collect();
+    // Flagged first, all of them X, B among them with a forecast.
+    assert!(!flagged.is_empty());
+    assert!(axes[..flagged.len()].iter().all(|a| a["flagged"] == true));
+    assert!(flagged.iter().all(|a| a["axis"] == "X"), "{flagged:?}");
+    let b = flagged
+        .iter()
+        .find(|a| a["parameter"] == "B")
+        .expect("B flagged");
+    assert_eq!(b["points"].as_array().unwrap().len(), 5);
+    assert!(b["forecast_date"].is_string(), "{b}");
+    let slope = b["slope_per_year"].as_f64().unwrap();
+    assert!((slope - 1.5).abs() < 0.5, "{slope}");
+    for key in [
+        "machine",
+        "axis",
+        "parameter",
+        "unit",
+        "limit",
+        "points",
+        "slope_per_year",
+        "slope_se",
+        "forecast_date",
+        "flagged",
+        "reason",
+    ] {
+        assert!(b.get(key).is_some(), "{key}");
+    }
+    let table = std::fs::read_to_string(out.join("trends.csv")).unwrap();
+    assert_eq!(table.lines().count(), axes.len() + 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -1,0 +1,89 @@
+//! `axcheck trend`: every machine, axis and parameter of an inspection history, its slope
+//! per year and the date it reaches its limit; the flagged series first.
+
+use anyhow::{Context, Result, anyhow};
+use axcheck::history;
+use axcheck::trend::{self, Series, Trend};
+use rayon::prelude::*;
+use std::fmt::Write;
+use std::path::Path;
+
+/// What `trend` was asked for.
+pub struct Request<'a> {
+    pub dir: &'a Path,
+    pub json: bool,
+    /// Folder for `trends.csv`.
+    pub out: Option<&'a Path>,
+    pub horizon_years: f64,
+}
+
+/// Flagged lines printed before "… and N more".
+const SHOWN: usize = 20;
+
+/// Reads the history, fits every series and returns what to print.
+pub fn run(request: &Request) -> Result<String> {
+    if !(request.horizon_years > 0.0 && request.horizon_years.is_finite()) {
+        return Err(anyhow!(
+            "--horizon: expected a number of years > 0, got {}",
+            request.horizon_years
+        ));
+    }
+    let records = history::read(request.dir)?;
+    if records.is_empty() {
+        return Err(anyhow!(
+            "{}: no inspections in this history (run a campaign with --history {} first)",
+            request.dir.display(),
+            request.dir.display()
+        ));
+    }
+    let options = trend::fit::Options {
+        horizon_years: request.horizon_years,
+    };
+    let series = history::series(&records);
+    let fits: Vec<Trend> = series
+        .par_iter()
+        .map(|s| trend::fit::fit(s, &options))
+        .collect();
+    // Flagged first; the series' own order (machine, axis, parameter) within each group.
+    let mut order: Vec<usize> = (0..series.len()).collect();
+    order.sort_by_key(|&k| !fits[k].flagged);
+    let pairs: Vec<(&Series, &Trend)> = order.iter().map(|&k| (&series[k], &fits[k])).collect();
+    if let Some(out) = request.out {
+        let path = out.join("trends.csv");
+        axcheck::atomic::write(&path, trend::view::csv(pairs.iter().copied()).as_bytes())
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if request.json {
+        return Ok(trend::view::json(pairs.iter().copied()) + "\n");
+    }
+    Ok(summary(&records, &pairs, request))
+}
+
+/// The inspections read, the flagged series with their reasons, and where the table went.
+fn summary(records: &[history::Record], pairs: &[(&Series, &Trend)], r: &Request) -> String {
+    let mut dates: Vec<_> = records.iter().map(|x| x.date).collect();
+    dates.sort();
+    dates.dedup();
+    let flagged: Vec<_> = pairs.iter().filter(|(_, t)| t.flagged).collect();
+    let mut text = format!(
+        "{}: {} inspection dates ({} to {}), {} series; {} flagged (horizon {} years)\n",
+        r.dir.display(),
+        dates.len(),
+        dates[0],
+        dates[dates.len() - 1],
+        pairs.len(),
+        flagged.len(),
+        r.horizon_years
+    );
+    for (s, t) in flagged.iter().take(SHOWN) {
+        let reason = t.reason.as_deref().unwrap_or("");
+        let _ = writeln!(text, "  {} {} {}: {reason}", s.machine, s.axis, s.parameter);
+    }
+    if flagged.len() > SHOWN {
+        let _ = writeln!(text, "  … and {} more", flagged.len() - SHOWN);
+    }
+    if let Some(out) = r.out {
+        let _ = writeln!(text, "Table: {}", out.join("trends.csv").display());
+    }
+    text
+}
