@@ -109,19 +109,7 @@ enum Command {
     /// (`run --history DIR`): slope per year (Theil–Sen), the date it reaches its limit,
     /// and the series that will cross within the horizon or are worsening.
     #[cfg(feature = "parquet")]
-    Trend {
-        /// The history folder.
-        dir: PathBuf,
-        /// Print JSON (a stable interface): `axes: [{machine, axis, parameter, …}]`.
-        #[arg(long)]
-        json: bool,
-        /// Folder for `trends.csv`.
-        #[arg(long)]
-        out: Option<PathBuf>,
-        /// Years after the latest inspection within which a forecast crossing is flagged.
-        #[arg(long, default_value_t = 2.0)]
-        horizon: f64,
-    },
+    Trend(cli::trend::Args),
     /// The controller's compensation table for a measured axis (the correction it adds:
     /// minus the mean deviation at each point and direction) and the parameters predicted
     /// with it. Without --out the table goes to standard output.
@@ -285,20 +273,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             print(&text)?;
         }
         #[cfg(feature = "parquet")]
-        Command::Trend {
-            dir,
-            json,
-            out,
-            horizon,
-        } => {
-            let request = cli::trend::Request {
-                dir: &dir,
-                json,
-                out: out.as_deref(),
-                horizon_years: horizon,
-            };
-            print(&cli::trend::run(&request)?)?;
-        }
+        Command::Trend(args) => print(&cli::trend::run(&args)?)?,
         Command::Compensate {
             file,
             controller,

@@ -6,29 +6,36 @@ use axcheck::history;
 use axcheck::trend::{self, Series, Trend};
 use rayon::prelude::*;
 use std::fmt::Write;
-use std::path::Path;
+use std::path::PathBuf;
 
 /// What `trend` was asked for.
-pub struct Request<'a> {
-    pub dir: &'a Path,
-    pub json: bool,
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The history folder (`run --history DIR`).
+    dir: PathBuf,
+    /// Print JSON (a stable interface): `axes: [{machine, axis, parameter, …}]`.
+    #[arg(long)]
+    json: bool,
     /// Folder for `trends.csv`.
-    pub out: Option<&'a Path>,
-    pub horizon_years: f64,
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Years after the latest inspection within which a forecast crossing is flagged.
+    #[arg(long = "horizon", default_value_t = 2.0)]
+    horizon_years: f64,
 }
 
 /// Flagged lines printed before "… and N more".
 const SHOWN: usize = 20;
 
 /// Reads the history, fits every series and returns what to print.
-pub fn run(request: &Request) -> Result<String> {
+pub fn run(request: &Args) -> Result<String> {
     if !(request.horizon_years > 0.0 && request.horizon_years.is_finite()) {
         return Err(anyhow!(
             "--horizon: expected a number of years > 0, got {}",
             request.horizon_years
         ));
     }
-    let records = history::read(request.dir)?;
+    let records = history::read(&request.dir)?;
     if records.is_empty() {
         return Err(anyhow!(
             "{}: no inspections in this history (run a campaign with --history {} first)",
@@ -48,7 +55,7 @@ pub fn run(request: &Request) -> Result<String> {
     let mut order: Vec<usize> = (0..series.len()).collect();
     order.sort_by_key(|&k| !fits[k].flagged);
     let pairs: Vec<(&Series, &Trend)> = order.iter().map(|&k| (&series[k], &fits[k])).collect();
-    if let Some(out) = request.out {
+    if let Some(out) = &request.out {
         let path = out.join("trends.csv");
         axcheck::atomic::write(&path, trend::view::csv(pairs.iter().copied()).as_bytes())
             .with_context(|| format!("cannot write {}", path.display()))?;
@@ -60,7 +67,7 @@ pub fn run(request: &Request) -> Result<String> {
 }
 
 /// The inspections read, the flagged series with their reasons, and where the table went.
-fn summary(records: &[history::Record], pairs: &[(&Series, &Trend)], r: &Request) -> String {
+fn summary(records: &[history::Record], pairs: &[(&Series, &Trend)], r: &Args) -> String {
     let mut dates: Vec<_> = records.iter().map(|x| x.date).collect();
     dates.sort();
     dates.dedup();
@@ -82,7 +89,7 @@ fn summary(records: &[history::Record], pairs: &[(&Series, &Trend)], r: &Request
     if flagged.len() > SHOWN {
         let _ = writeln!(text, "  … and {} more", flagged.len() - SHOWN);
     }
-    if let Some(out) = r.out {
+    if let Some(out) = &r.out {
         let _ = writeln!(text, "Table: {}", out.join("trends.csv").display());
     }
     text
