@@ -264,3 +264,41 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
     assert_eq!(table.lines().count(), axes.len() + 1);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The example plant's committed history (2022–2026, `example-campaign/history`): the trend
+/// flags VMC-07 Y, whose nut wears (reversal +1.2 µm a year), worsening significantly in B̄;
+/// of the other axes only ROTARY-T A, whose R↑ is over its limit at the latest inspection.
+#[test]
+fn the_example_history_flags_the_wearing_axis() {
+    let (code, stdout, err) =
+        crate::common::axcheck(&["trend", "example-campaign/history", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let json: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let flagged: Vec<(String, String, String)> = json["axes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|a| a["flagged"] == true)
+        .map(|a| {
+            let s = |k: &str| a[k].as_str().unwrap().to_string();
+            (s("machine"), s("axis"), s("parameter"))
+        })
+        .collect();
+    let of = |m: &str, x: &str| flagged.iter().filter(|f| f.0 == m && f.1 == x).count();
+    assert!(of("VMC-07", "Y") >= 4, "{flagged:?}");
+    assert!(flagged.contains(&("VMC-07".into(), "Y".into(), "B_mean".into())));
+    assert_eq!(
+        of("VMC-07", "Y") + of("ROTARY-T", "A"),
+        flagged.len(),
+        "{flagged:?}"
+    );
+    let b = json["axes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|a| a["machine"] == "VMC-07" && a["axis"] == "Y" && a["parameter"] == "B_mean")
+        .unwrap();
+    let slope = b["slope_per_year"].as_f64().unwrap();
+    // B̄ = x̄↑ − x̄↓ grows in magnitude by the model's 1.2 µm a year.
+    assert!((slope.abs() - 1.2).abs() < 0.2, "{slope}");
+}
