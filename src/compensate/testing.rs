@@ -35,3 +35,22 @@ pub fn straight(first: f64, step: f64, count: usize) -> AxisData {
     let targets: Vec<f64> = (0..count).map(|k| first + k as f64 * step).collect();
     axis(AxisKind::Linear, &targets, 2, |_, _| 0.0)
 }
+
+/// The value at the target `p` (one of `targets`).
+pub fn at(p: f64, targets: &[f64], values: &[f64]) -> f64 {
+    values[targets.iter().position(|t| *t == p).expect("a target")]
+}
+
+/// The hand-worked linear axis of the controllers' examples: targets 0, 30, 70, 100 mm,
+/// x̄↑ = 0, 3, −1, 2 µm and x̄↓ = x̄↑ + 2 µm.
+pub fn irregular_linear() -> AxisData {
+    let targets = [0.0, 30.0, 70.0, 100.0];
+    axis(AxisKind::Linear, &targets, 2, |p, direction| {
+        let up = at(p, &targets, &[0.0, 3.0, -1.0, 2.0]);
+        if direction == Direction::Up {
+            up
+        } else {
+            up + 2.0
+        }
+    })
+}

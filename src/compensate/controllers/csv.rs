@@ -48,20 +48,16 @@ impl Controller for Csv {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compensate::testing::axis;
+    use crate::compensate::testing::{axis, irregular_linear};
     use crate::compensate::{Settings, held_table};
-    use crate::units::{AxisKind, Direction};
+    use crate::units::AxisKind;
 
     /// Targets 0, 30, 70, 100 mm; x̄↑ = 0, 3, −1, 2 µm; x̄↓ = x̄↑ + 2 µm. Every 25 mm: x̄↑
     /// interpolated is 0, 2.5, 1, −0.5, 2 (at 50: 3 + 20/40 × (−1 − 3) = 1), so the
     /// corrections −x̄↑ are 0, −2.5, −1, 0.5, −2 and −x̄↓ two less.
     #[test]
     fn golden_table_resampled_by_hand() {
-        let targets = [0.0, 30.0, 70.0, 100.0];
-        let data = axis(AxisKind::Linear, &targets, 2, |p, d| {
-            let i = targets.iter().position(|t| *t == p).unwrap();
-            [0.0, 3.0, -1.0, 2.0][i] + if d == Direction::Down { 2.0 } else { 0.0 }
-        });
+        let data = irregular_linear();
         let settings = Settings {
             interval: Some(25.0),
             ..Default::default()

@@ -68,7 +68,7 @@ impl Controller for LinuxCnc {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compensate::testing::axis;
+    use crate::compensate::testing::{axis, irregular_linear};
     use crate::compensate::{Settings, held_table};
     use crate::units::Direction;
 
@@ -77,11 +77,7 @@ mod tests {
     /// 50 adds 1: trims ↑ 1, −1.5, 0, 1.5, −1 µm and ↓ two less, written in mm.
     #[test]
     fn golden_type_1_file_by_hand() {
-        let targets = [0.0, 30.0, 70.0, 100.0];
-        let data = axis(AxisKind::Linear, &targets, 2, |p, d| {
-            let i = targets.iter().position(|t| *t == p).unwrap();
-            [0.0, 3.0, -1.0, 2.0][i] + if d == Direction::Down { 2.0 } else { 0.0 }
-        });
+        let data = irregular_linear();
         let settings = Settings {
             interval: Some(25.0),
             reference: Some(50.0),

@@ -203,23 +203,9 @@ fn reference(table: &Table, mean: &[f64], per_unit: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compensate::testing::axis;
+    use crate::compensate::testing::{at, axis, irregular_linear};
     use crate::compensate::{Settings, held_table};
     use crate::units::Direction;
-
-    /// The value at the target `p`.
-    fn at(p: f64, targets: &[f64], values: &[f64]) -> f64 {
-        values[targets.iter().position(|t| *t == p).expect("a target")]
-    }
-
-    /// x̄↑ at the targets 0, 30, 70, 100 mm: 0, 3, −1, 2 µm; x̄↓ = x̄↑ + 2 µm.
-    fn irregular_linear() -> crate::measurement::AxisData {
-        let targets = [0.0, 30.0, 70.0, 100.0];
-        axis(AxisKind::Linear, &targets, 2, |p, dir| {
-            let up = at(p, &targets, &[0.0, 3.0, -1.0, 2.0]);
-            if dir == Direction::Up { up } else { up + 2.0 }
-        })
-    }
 
     /// `--interval 25 --reference 50`: the grid 0, 25, 50, 75, 100 mm. x̄↑ interpolated
     /// there: 0; 3·25/30 = 2.5; 3 − 4·20/40 = 1; −1 + 3·5/30 = −0.5; 2. x̄↓ = x̄↑ + 2, so the
