@@ -54,3 +54,40 @@ pub fn irregular_linear() -> AxisData {
         }
     })
 }
+
+/// The hand-worked linear axis of the TwinCAT and HEIDENHAIN examples: targets −100, −70,
+/// −55, −20, 0 mm, x̄↑ = 0, 3.0, 1.53, −2.0, 1.0 µm and x̄↓ = x̄↑ + 2.0 µm.
+pub fn negative_linear() -> AxisData {
+    let targets = [-100.0, -70.0, -55.0, -20.0, 0.0];
+    let up = [0.0, 3.0, 1.53, -2.0, 1.0];
+    axis(AxisKind::Linear, &targets, 2, |p, direction| {
+        at(p, &targets, &up)
+            + if direction == Direction::Down {
+                2.0
+            } else {
+                0.0
+            }
+    })
+}
+
+/// The hand-worked rotary axis of the TwinCAT and HEIDENHAIN examples: every 45° over
+/// 0…360°, x̄↑ = 1.0, 3.6, 7.3, −1.8, 2.0″ at 0, 90, 180, 270, 360° (0 at the odd
+/// multiples of 45°) and x̄↓ = x̄↑ − 1.44″.
+pub fn quarter_turns_rotary() -> AxisData {
+    let targets: Vec<f64> = (0..=8).map(|k| k as f64 * 45.0).collect();
+    axis(AxisKind::Rotary, &targets, 2, |p, direction| {
+        let up = match p as i64 {
+            0 => 1.0,
+            90 => 3.6,
+            180 => 7.3,
+            270 => -1.8,
+            360 => 2.0,
+            _ => 0.0,
+        };
+        up - if direction == Direction::Down {
+            1.44
+        } else {
+            0.0
+        }
+    })
+}

@@ -195,9 +195,8 @@ impl Controller for Heidenhain {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compensate::testing::axis;
-    use crate::compensate::{Settings, held_table, linear};
-    use crate::units::Direction;
+    use crate::compensate::testing::{axis, negative_linear, quarter_turns_rotary};
+    use crate::compensate::{Settings, held_table};
 
     /// The axis of the `twincat` example: irregular targets −100, −70, −55, −20, 0 mm,
     /// x̄↑ = 0, 3.0, 1.53, −2.0, 1.0 µm, x̄↓ = x̄↑ + 2.0 µm, --interval 25. Interpolated at
@@ -207,11 +206,7 @@ mod tests {
     /// +0.0020, +0.0045, +0.0030, +0.0005, +0.0030.
     #[test]
     fn golden_linear_table_resampled_on_an_interval() {
-        let targets = [-100.0, -70.0, -55.0, -20.0, 0.0];
-        let up = [0.0, 3.0, 1.53, -2.0, 1.0];
-        let data = axis(AxisKind::Linear, &targets, 2, |p, dir| {
-            linear(&targets, &up, p) + if dir == Direction::Down { 2.0 } else { 0.0 }
-        });
+        let data = negative_linear();
         let settings = Settings {
             interval: Some(25.0),
             reference: None,
@@ -232,18 +227,7 @@ mod tests {
     /// −0.0009, +0.0000.
     #[test]
     fn golden_rotary_table_over_one_revolution() {
-        let targets: Vec<f64> = (0..=8).map(|k| k as f64 * 45.0).collect();
-        let data = axis(AxisKind::Rotary, &targets, 2, |p, dir| {
-            let up = match p as i64 {
-                0 => 1.0,
-                90 => 3.6,
-                180 => 7.3,
-                270 => -1.8,
-                360 => 2.0,
-                _ => 0.0,
-            };
-            up - if dir == Direction::Down { 1.44 } else { 0.0 }
-        });
+        let data = quarter_turns_rotary();
         let settings = Settings {
             interval: Some(90.0),
             reference: None,
