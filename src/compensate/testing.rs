@@ -91,3 +91,17 @@ pub fn quarter_turns_rotary() -> AxisData {
         }
     })
 }
+
+/// The hand-worked rotary axis of the Siemens and ecmc examples: targets 0, 90, 180, 270,
+/// 360°, x̄↑ = 0, 3.6, −7.2, 1.8, 3.6″ and x̄↓ = x̄↑ + 3.6″.
+pub fn whole_turn_rotary() -> AxisData {
+    let targets = [0.0, 90.0, 180.0, 270.0, 360.0];
+    axis(AxisKind::Rotary, &targets, 2, |p, direction| {
+        let up = at(p, &targets, &[0.0, 3.6, -7.2, 1.8, 3.6]);
+        if direction == Direction::Up {
+            up
+        } else {
+            up + 3.6
+        }
+    })
+}

@@ -130,25 +130,15 @@ fn header(table: &Table) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compensate::testing::axis;
+    use crate::compensate::testing::{axis, irregular_linear, whole_turn_rotary};
     use crate::compensate::{Settings, held_table};
-    use crate::units::Direction;
-
-    /// The value at the target `p`.
-    fn at(p: f64, targets: &[f64], values: &[f64]) -> f64 {
-        values[targets.iter().position(|t| *t == p).expect("a target")]
-    }
 
     /// Targets 0, 30, 70, 100 mm (uneven, kept as they are): x̄↑ = 0, 3, −1, 2 µm, x̄↓ =
     /// x̄↑ + 2 µm; mean x̄ = 1, 4, 0, 3 µm. The LUT holds the correction −x̄ in mm: −0.001,
     /// −0.004, 0, −0.003 (the reversal of −2 µm is not in it).
     #[test]
     fn golden_linear_on_the_measured_targets() {
-        let targets = [0.0, 30.0, 70.0, 100.0];
-        let data = axis(AxisKind::Linear, &targets, 2, |p, dir| {
-            let up = at(p, &targets, &[0.0, 3.0, -1.0, 2.0]);
-            if dir == Direction::Up { up } else { up + 2.0 }
-        });
+        let data = irregular_linear();
         let table = held_table(&Ecmc, &data, &Settings::default()).unwrap();
         assert_eq!(table.up, table.down);
         assert_eq!(
@@ -162,11 +152,7 @@ mod tests {
     /// 3.6, 3.6″; the LUT holds −x̄ in degrees: −0.001, −0.0015, 0.0015, −0.001, −0.001.
     #[test]
     fn golden_rotary_modulo() {
-        let targets = [0.0, 90.0, 180.0, 270.0, 360.0];
-        let data = axis(AxisKind::Rotary, &targets, 2, |p, dir| {
-            let up = at(p, &targets, &[0.0, 3.6, -7.2, 1.8, 3.6]);
-            if dir == Direction::Up { up } else { up + 3.6 }
-        });
+        let data = whole_turn_rotary();
         let table = held_table(&Ecmc, &data, &Settings::default()).unwrap();
         assert_eq!(table.modulo_deg, Some(360.0));
         assert_eq!(

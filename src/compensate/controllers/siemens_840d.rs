@@ -203,9 +203,8 @@ fn reference(table: &Table, mean: &[f64], per_unit: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compensate::testing::{at, axis, irregular_linear};
+    use crate::compensate::testing::{irregular_linear, whole_turn_rotary};
     use crate::compensate::{Settings, held_table};
-    use crate::units::Direction;
 
     /// `--interval 25 --reference 50`: the grid 0, 25, 50, 75, 100 mm. x̄↑ interpolated
     /// there: 0; 3·25/30 = 2.5; 3 − 4·20/40 = 1; −1 + 3·5/30 = −0.5; 2. x̄↓ = x̄↑ + 2, so the
@@ -234,11 +233,7 @@ mod tests {
     /// --reference: the value at 0° is 0.001°, and the file says so.
     #[test]
     fn golden_rotary_modulo() {
-        let targets = [0.0, 90.0, 180.0, 270.0, 360.0];
-        let data = axis(AxisKind::Rotary, &targets, 2, |p, dir| {
-            let up = at(p, &targets, &[0.0, 3.6, -7.2, 1.8, 3.6]);
-            if dir == Direction::Up { up } else { up + 3.6 }
-        });
+        let data = whole_turn_rotary();
         let table = held_table(&Siemens840d, &data, &Settings::default()).unwrap();
         assert_eq!(table.modulo_deg, Some(360.0));
         assert_eq!(
