@@ -14,7 +14,6 @@ pub mod compensate;
 pub mod diagnose;
 pub mod evaluate;
 pub mod export;
-#[cfg(feature = "parquet")]
 pub mod history;
 pub mod judge;
 pub mod measurement;

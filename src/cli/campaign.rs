@@ -4,10 +4,12 @@ use anyhow::{Context, Result, bail};
 use axcheck::batch::{self, AxisTest, CampaignResult};
 use axcheck::campaign::Campaign;
 use axcheck::export;
+use axcheck::history::AxisTrends;
 use axcheck::judge::Verdict;
 use axcheck::units::fmt_fixed;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
@@ -235,10 +237,11 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     axcheck::atomic::OutputDir::open(out)?;
     let mut exporters = export::table_exporters();
     let pdf = !options.no_pdf && campaign.info.output.pdf;
-    if pdf {
-        let reports = axcheck::report::Reports::new(options.templates)?;
-        exporters.push(Box::new(export::pdf::Pdf { reports }));
-    }
+    // Built before the evaluation, so bad templates stop the run at once.
+    let reports = match pdf {
+        true => Some(axcheck::report::Reports::new(options.templates)?),
+        false => None,
+    };
     let result = evaluate_with(
         &campaign,
         batch::Options {
@@ -249,6 +252,15 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         },
         options.progress,
     );
+    // The history first: the reports show each axis over it, this run included.
+    let trends = match &history {
+        Some(dir) => Some(append_history(&result, dir)?),
+        None => None,
+    };
+    if let Some(reports) = reports {
+        let trends = trends.as_ref().map(|(_, t)| Arc::clone(t));
+        exporters.push(Box::new(export::pdf::Pdf { reports, trends }));
+    }
     let written = export::write_all(&result, &exporters, out)
         .with_context(|| format!("writing the outputs to {}", out.display()))?;
     println!("{}", counts_line(&result));
@@ -272,30 +284,64 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
             ""
         }
     );
-    if let Some(dir) = &history {
-        println!("{}", append_history(&result, dir)?);
+    if let Some((line, trends)) = &trends {
+        println!("{line}");
+        print!("{}", flagged_lines(trends));
     }
     Ok(exit_code(&result))
 }
 
-/// Appends the run to the history in `dir`; the line that says where.
-fn append_history(result: &CampaignResult, dir: &Path) -> Result<String> {
+/// Appends the run to the history in `dir` and fits the trends of the run's axes over it;
+/// the line that says where, and the trends.
+fn append_history(result: &CampaignResult, dir: &Path) -> Result<(String, Arc<AxisTrends>)> {
     let start = Instant::now();
     let records = axcheck::history::records(result)?;
     let written = axcheck::history::append(dir, &records)
         .with_context(|| format!("appending the run to the history {}", dir.display()))?;
-    Ok(match written {
-        Some(path) => format!(
-            "History: {} rows appended to {} after {:.2} s",
-            records.len(),
-            path.display(),
-            start.elapsed().as_secs_f64()
-        ),
-        None => format!(
+    let Some(path) = written else {
+        let line = format!(
             "History: no test was evaluated; {} left as it was",
             dir.display()
-        ),
-    })
+        );
+        return Ok((line, Arc::default()));
+    };
+    let all = axcheck::history::read(dir)
+        .with_context(|| format!("reading the history {}", dir.display()))?;
+    let trends = AxisTrends::of_run(&all, &records, Default::default());
+    let line = format!(
+        "History: {} rows appended to {} after {:.2} s",
+        records.len(),
+        path.display(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok((line, Arc::new(trends)))
+}
+
+/// Flagged series printed by `run` before "… and N more".
+const FLAGGED_SHOWN: usize = 10;
+
+/// The run's axes whose trends are flagged, a line each (nothing when none is).
+fn flagged_lines(trends: &AxisTrends) -> String {
+    let flagged: Vec<_> = trends.flagged().collect();
+    let Some((first, last)) = trends.dates().filter(|_| !flagged.is_empty()) else {
+        return String::new();
+    };
+    let mut text = format!(
+        "Trends ({first} to {last}, horizon {} years): {} series flagged\n",
+        trends.options.horizon_years,
+        flagged.len()
+    );
+    for (s, t) in flagged.iter().take(FLAGGED_SHOWN) {
+        let reason = t.reason.as_deref().unwrap_or("");
+        text += &format!("  {} {} {}: {reason}\n", s.machine, s.axis, s.parameter);
+    }
+    if flagged.len() > FLAGGED_SHOWN {
+        text += &format!(
+            "  … and {} more (axcheck trend HISTORY lists them all)\n",
+            flagged.len() - FLAGGED_SHOWN
+        );
+    }
+    text
 }
 
 /// `axcheck check`: the CI gate; writes nothing.

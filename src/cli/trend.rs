@@ -6,7 +6,7 @@ use axcheck::history;
 use axcheck::trend::{self, Series, Trend};
 use rayon::prelude::*;
 use std::fmt::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// What `trend` was asked for.
 #[derive(Debug, clap::Args)]
@@ -16,7 +16,8 @@ pub struct Args {
     /// Print JSON (a stable interface): `axes: [{machine, axis, parameter, …}]`.
     #[arg(long)]
     json: bool,
-    /// Folder for `trends.csv`.
+    /// Folder for `trends.csv` (every series) and `trends.pdf` (the flagged axes first, a
+    /// chart per parameter).
     #[arg(long)]
     out: Option<PathBuf>,
     /// Years after the latest inspection within which a forecast crossing is flagged.
@@ -56,14 +57,27 @@ pub fn run(request: &Args) -> Result<String> {
     order.sort_by_key(|&k| !fits[k].flagged);
     let pairs: Vec<(&Series, &Trend)> = order.iter().map(|&k| (&series[k], &fits[k])).collect();
     if let Some(out) = &request.out {
-        let path = out.join("trends.csv");
-        axcheck::atomic::write(&path, trend::view::csv(pairs.iter().copied()).as_bytes())
-            .with_context(|| format!("cannot write {}", path.display()))?;
+        write_outputs(out, &pairs, request)?;
     }
     if request.json {
         return Ok(trend::view::json(pairs.iter().copied()) + "\n");
     }
     Ok(summary(&records, &pairs, request))
+}
+
+/// `OUT/trends.csv` and `OUT/trends.pdf`.
+fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &Args) -> Result<()> {
+    let path = out.join("trends.csv");
+    axcheck::atomic::write(&path, trend::view::csv(pairs.iter().copied()).as_bytes())
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    let reports = axcheck::report::Reports::new(None)?;
+    let history = request.dir.display().to_string();
+    let pdf = reports
+        .trends(&history, pairs, request.horizon_years, "trends.csv")
+        .context("typesetting trends.pdf")?;
+    let path = out.join("trends.pdf");
+    axcheck::atomic::write(&path, &pdf.pdf)
+        .with_context(|| format!("cannot write {}", path.display()))
 }
 
 /// The inspections read, the flagged series with their reasons, and where the table went.
@@ -90,7 +104,12 @@ fn summary(records: &[history::Record], pairs: &[(&Series, &Trend)], r: &Args) -
         let _ = writeln!(text, "  … and {} more", flagged.len() - SHOWN);
     }
     if let Some(out) = &r.out {
-        let _ = writeln!(text, "Table: {}", out.join("trends.csv").display());
+        let _ = writeln!(
+            text,
+            "Table: {}; charts: {}",
+            out.join("trends.csv").display(),
+            out.join("trends.pdf").display()
+        );
     }
     text
 }

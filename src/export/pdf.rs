@@ -2,11 +2,16 @@
 
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::CampaignResult;
+use crate::history::AxisTrends;
 use crate::report::{self, Reports};
 use std::path::PathBuf;
+use std::sync::Arc;
 
 pub struct Pdf {
     pub reports: Reports,
+    /// The trends of the run's axes over the inspection history, when the run keeps one:
+    /// each axis report gets its history section, the summary the flagged series.
+    pub trends: Option<Arc<AxisTrends>>,
 }
 
 /// Reports typeset between two evictions of Typst's caches.
@@ -27,11 +32,15 @@ impl Exporter for Pdf {
         let mut files = typeset_all(&jobs, rayon::current_num_threads(), |job| match job {
             Job::Summary => Ok(OutputFile {
                 path: "summary.pdf".into(),
-                bytes: self.reports.summary(result)?.pdf,
+                bytes: (self.reports)
+                    .summary_with_trends(result, self.trends.as_deref())?
+                    .pdf,
             }),
             Job::Axis(test, path) => Ok(OutputFile {
                 path: path.clone(),
-                bytes: self.reports.axis(result, test)?.pdf,
+                bytes: (self.reports)
+                    .axis_with_history(result, test, self.trends.as_deref())?
+                    .pdf,
             }),
         })
         .map_err(|e| ExportError::Format {

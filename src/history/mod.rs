@@ -7,14 +7,18 @@
 //! ([`crate::atomic::write`]: `.NAME.axcheck-tmp-PID`, then a rename), so a reader sees a
 //! complete file or none, and temporary files never match `*.parquet`.
 
+mod axes;
 pub mod record;
 mod rows;
 mod series;
+#[cfg(feature = "parquet")]
 mod store;
 
+pub use axes::{AxisKey, AxisTrends};
 pub use record::{Record, SCHEMA_VERSION};
 pub use rows::{records, run_date};
 pub use series::series;
+#[cfg(feature = "parquet")]
 pub use store::{append, file_path, read};
 
 use std::path::PathBuf;

@@ -22,9 +22,12 @@ mod shaping;
 #[cfg(test)]
 mod svg_probe;
 mod text_lines;
+pub mod trend_chart;
 pub mod world;
 
 use crate::batch::{AxisTest, CampaignResult};
+use crate::history::AxisTrends;
+use crate::trend::{Series, Trend};
 use scene::Scene;
 use std::collections::HashMap;
 use std::path::Path;
@@ -42,7 +45,12 @@ pub const TEMPLATES: &[(&str, &str)] = &[
         include_str!("../../templates/axis-report.typ"),
     ),
     ("summary.typ", include_str!("../../templates/summary.typ")),
+    ("trends.typ", include_str!("../../templates/trends.typ")),
 ];
+
+/// Templates a customised copy may lack (added after the copy was made): the built-in
+/// one is used.
+const NEWER_TEMPLATES: &[&str] = &["trends.typ"];
 
 /// A report that could not be produced.
 #[derive(Debug, thiserror::Error)]
@@ -117,6 +125,11 @@ pub struct Reports {
 const CHART_WIDTH_PX: u32 = 900;
 const CHART_HEIGHT_PX: u32 = 420;
 const UNIDIRECTIONAL_HEIGHT_PX: u32 = 600;
+/// A trend chart, three to a row: about 5.7 cm wide at the charts' scale.
+const TREND_STYLE: trend_chart::Style = trend_chart::Style {
+    width_px: 320,
+    height_px: 210,
+};
 
 impl Reports {
     /// With the built-in templates, or those in `dir` (a customised copy of `templates/`).
@@ -125,9 +138,19 @@ impl Reports {
         for (name, text) in TEMPLATES {
             let text = match dir {
                 None => text.to_string(),
-                Some(dir) => std::fs::read_to_string(dir.join(name)).map_err(|e| {
-                    ReportError::Templates(format!("{}: {e}", dir.join(name).display()))
-                })?,
+                Some(dir) => match std::fs::read_to_string(dir.join(name)) {
+                    Ok(text) => text,
+                    Err(e)
+                        if e.kind() == std::io::ErrorKind::NotFound
+                            && NEWER_TEMPLATES.contains(name) =>
+                    {
+                        text.to_string()
+                    }
+                    Err(e) => {
+                        let path = dir.join(name);
+                        return Err(ReportError::Templates(format!("{}: {e}", path.display())));
+                    }
+                },
             };
             templates.insert(format!("/{name}"), text);
         }
@@ -177,8 +200,33 @@ impl Reports {
 
     /// The report of one axis test.
     pub fn axis(&self, result: &CampaignResult, test: &AxisTest) -> Result<Rendered, ReportError> {
+        self.axis_with_history(result, test, None)
+    }
+
+    /// The report of one axis test, with its history section when `trends` has the axis.
+    pub fn axis_with_history(
+        &self,
+        result: &CampaignResult,
+        test: &AxisTest,
+        trends: Option<&AxisTrends>,
+    ) -> Result<Rendered, ReportError> {
         let document = test.label();
-        let mut files = Files::data(&document, &data::axis_report(result, test))?;
+        let mut report = data::axis_report(result, test);
+        let mut history_charts = Vec::new();
+        if let Some(trends) = trends {
+            let m = &test.machine;
+            let pairs = trends.axis(&m.id, m.serial.as_deref(), &test.axis);
+            if let Some((section, charts)) =
+                data::trends::history_section(pairs, trends.options.horizon_years)
+            {
+                report = report.with_history(section);
+                history_charts = charts;
+            }
+        }
+        let mut files = Files::data(&document, &report)?;
+        for (name, chart) in history_charts {
+            files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
+        }
         if let Some(e) = &test.evaluation {
             let (chart, up, down) = data::axis_chart(e);
             let style = |height_px| charts::Style {
@@ -217,8 +265,23 @@ impl Reports {
 
     /// The campaign summary.
     pub fn summary(&self, result: &CampaignResult) -> Result<Rendered, ReportError> {
+        self.summary_with_trends(result, None)
+    }
+
+    /// The campaign summary, listing the flagged series of `trends`.
+    pub fn summary_with_trends(
+        &self,
+        result: &CampaignResult,
+        trends: Option<&AxisTrends>,
+    ) -> Result<Rendered, ReportError> {
         let document = "summary";
-        let mut files = Files::data(document, &data::summary(result))?;
+        let mut summary = data::summary(result);
+        if let Some(t) =
+            trends.and_then(|t| data::trends::trends_summary(t.all(), t.options.horizon_years))
+        {
+            summary = summary.with_trends(t);
+        }
+        let mut files = Files::data(document, &summary)?;
         let bars = ratio_bars(result);
         let style = charts::Style {
             width_px: CHART_WIDTH_PX,
@@ -228,6 +291,31 @@ impl Reports {
         let ident = format!("axcheck/{}/summary", result.info.name);
         let date = result.info.date.as_deref();
         self.compile(document, "/summary.typ", files, date, ident)
+    }
+
+    /// `trends.pdf`: the series of a history (named `history` in the text), flagged axes
+    /// first; `table` names the CSV that holds every row.
+    pub fn trends(
+        &self,
+        history: &str,
+        pairs: &[(&Series, &Trend)],
+        horizon_years: f64,
+        table: &str,
+    ) -> Result<Rendered, ReportError> {
+        let document = "trends";
+        let (doc, charts) = data::trends::trends_document(history, pairs, horizon_years, table);
+        let mut files = Files::data(document, &doc)?;
+        for (name, chart) in charts {
+            files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
+        }
+        let date = (!doc.last.is_empty()).then_some(doc.last.as_str());
+        self.compile(
+            document,
+            "/trends.typ",
+            files,
+            date,
+            "axcheck/trends".into(),
+        )
     }
 }
 

@@ -216,17 +216,44 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
         )
         .unwrap();
         let out = dir.join("out");
+        // The last inspection writes its reports: they show the axes over the history.
+        let pdf = if year == 2025 { "--jobs=2" } else { "--no-pdf" };
         let (code, stdout, err) = axcheck(&[
             "run",
             &s(&campaign),
             "--out",
             &s(&out),
-            "--no-pdf",
+            pdf,
             "--history",
             &s(&history),
         ]);
         assert!(code <= 1, "{stdout}{err}");
+        if year == 2025 {
+            assert!(stdout.contains("series flagged\n  M X A:"), "{stdout}");
+            assert!(
+                stdout.contains("  M X B: reaches its limit 9.0 µm"),
+                "{stdout}"
+            );
+            assert!(!stdout.contains("  M Y "), "{stdout}");
+        }
     }
+    let x_report = pdf_text(&dir.join("out/reports/M/X.pdf"));
+    assert!(
+        x_report.contains("Inspection history (5 inspections, 2021-06-01 to 2025-06-01)"),
+        "{x_report}"
+    );
+    assert!(x_report.contains("parameters flagged"), "{x_report}");
+    let y_report = pdf_text(&dir.join("out/reports/M/Y.pdf"));
+    assert!(y_report.contains("No parameter is flagged"), "{y_report}");
+    let summary = pdf_text(&dir.join("out/summary.pdf"));
+    assert!(
+        summary.contains("Trends over the inspection history"),
+        "{summary}"
+    );
+    assert!(
+        summary.contains("series of these axes are flagged"),
+        "{summary}"
+    );
     let out = dir.join("trends");
     let (code, stdout, err) = axcheck(&["trend", &s(&history), "--json", "--out", &s(&out)]);
     assert_eq!(code, 0, "{err}");
@@ -262,7 +289,26 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
     }
     let table = std::fs::read_to_string(out.join("trends.csv")).unwrap();
     assert_eq!(table.lines().count(), axes.len() + 1);
+    // The charts: the flagged axis X first, then Y; the same bytes on a second run.
+    let charts = pdf_text(&out.join("trends.pdf"));
+    let (x, y) = (charts.find("axis X"), charts.find("axis Y"));
+    assert!(x.is_some() && y.is_some() && x < y, "{charts}");
+    assert!(
+        charts.contains("5 dates, 2021-06-01 to 2025-06-01"),
+        "{charts}"
+    );
+    let first = std::fs::read(out.join("trends.pdf")).unwrap();
+    let (code, _, err) = axcheck(&["trend", &s(&history), "--out", &s(&out)]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(first, std::fs::read(out.join("trends.pdf")).unwrap());
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The text of a PDF's pages, in order.
+fn pdf_text(path: &std::path::Path) -> String {
+    let doc = lopdf::Document::load(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let pages: Vec<u32> = doc.get_pages().keys().copied().collect();
+    doc.extract_text(&pages).unwrap()
 }
 
 /// The example plant's committed history (2022–2026, `example-campaign/history`): the trend

@@ -36,7 +36,17 @@ pub struct AxisReport<'a> {
     uncertainty: Option<UncertaintySection<'a>>,
     /// The table of the machine's controller (only when the machine names one).
     compensation: Option<CompensationSection<'a>>,
+    /// The axis over the inspection history (only when the run keeps one).
+    history: Option<super::trends::HistorySection>,
     generator: String,
+}
+
+impl AxisReport<'_> {
+    /// The report with the axis's history section.
+    pub fn with_history(mut self, history: super::trends::HistorySection) -> Self {
+        self.history = Some(history);
+        self
+    }
 }
 
 /// The data of one axis report.
@@ -77,6 +87,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .as_ref()
             .zip(e)
             .map(|(c, e)| compensation_section(c, e)),
+        history: None,
         generator: generator(),
     }
 }

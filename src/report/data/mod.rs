@@ -11,6 +11,7 @@ mod axis;
 mod compensation;
 mod conditions;
 mod summary;
+pub mod trends;
 mod uncertainty;
 
 pub use axis::{AxisReport, axis_report};

@@ -17,7 +17,17 @@ pub struct Summary<'a> {
     errors: Vec<Problem>,
     noncompliant: Vec<Problem>,
     has_chart: bool,
+    /// The flagged series of the run's axes (only when the run keeps a history).
+    trends: Option<super::trends::TrendsSummary>,
     generator: String,
+}
+
+impl Summary<'_> {
+    /// The summary with the trends of the run's axes.
+    pub fn with_trends(mut self, trends: super::trends::TrendsSummary) -> Self {
+        self.trends = Some(trends);
+        self
+    }
 }
 
 #[derive(Serialize)]
@@ -91,6 +101,7 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
             .tests
             .iter()
             .any(|t| t.judgement.as_ref().and_then(|j| j.worst()).is_some()),
+        trends: None,
         generator: generator(),
     }
 }
