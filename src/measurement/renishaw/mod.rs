@@ -155,7 +155,7 @@ pub fn parse(bytes: &[u8], file: &str) -> Result<RenishawTest, ReadError> {
     header.test_type = targets.test_type.clone();
     header.flags = targets.flags.clone();
     let run_section = sections.require("RUNS", "expected `Run-count:N`", file)?;
-    let run_count = runs::run_count(run_section, targets.positions.len(), file)?;
+    let run_count = runs::run_count(run_section, targets.positions.len(), file, &mut notes)?;
     let deviations = sections.require(
         "DEVIATIONS",
         "expected `Run Target Data:` and one `run target deviation` line per reading",

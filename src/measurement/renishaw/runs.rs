@@ -2,9 +2,9 @@
 //! run × target matrix, read by the target column, turned into readings in the order they
 //! were measured.
 
-use super::ARCSEC_PER_MRAD;
 use super::targets::Targets;
 use super::text::{Line, Section, shown};
+use super::{ARCSEC_PER_MRAD, unused_keys};
 use crate::measurement::error::{Location, ReadError, ReadErrorKind};
 use crate::measurement::{MAX_DEVIATION, MAX_READINGS, RawReading, parse_number};
 use crate::units::{AxisKind, Direction};
@@ -23,7 +23,15 @@ pub(super) fn run_count(
     section: &Section,
     targets: usize,
     file: &str,
+    notes: &mut Vec<String>,
 ) -> Result<RunCount, ReadError> {
+    let unused: Vec<String> = section
+        .lines
+        .iter()
+        .filter(|l| l.key_value().is_none_or(|kv| kv.normal != "runcount"))
+        .map(|l| shown(l.text()))
+        .collect();
+    unused_keys("RUNS", &unused, notes);
     let Some((line, value)) = section.lines.iter().find_map(|l| {
         l.key_value()
             .filter(|kv| kv.normal == "runcount")

@@ -70,7 +70,7 @@ pub(super) fn read(
             .filter(|kv| parse_number(kv.key, false).is_err());
         if block == Block::Inside && key_value.is_none() {
             let before = out.positions.len();
-            positions(line, &mut out, file)?;
+            positions(line, line.raw, &mut out, file)?;
             per_line.push(out.positions.len() - before);
             continue;
         }
@@ -90,11 +90,7 @@ pub(super) fn read(
                 // The values start on the next line; a file that starts them here is read too.
                 if !kv.value.is_empty() {
                     let before = out.positions.len();
-                    let rest = Line {
-                        number: line.number,
-                        raw: kv.value,
-                    };
-                    positions(&rest, &mut out, file)?;
+                    positions(line, kv.value, &mut out, file)?;
                     per_line.push(out.positions.len() - before);
                 }
             }
@@ -156,9 +152,9 @@ fn target_count(line: &Line, value: &str, file: &str) -> Result<usize, ReadError
     Ok(count)
 }
 
-/// The positions on one line of the `Targets :` block.
-fn positions(line: &Line, out: &mut Targets, file: &str) -> Result<(), ReadError> {
-    for token in line.raw.split_whitespace() {
+/// The positions in `text`, a part of `line` in the `Targets :` block.
+fn positions(line: &Line, text: &str, out: &mut Targets, file: &str) -> Result<(), ReadError> {
+    for token in text.split_whitespace() {
         let value = parse_number(token, false).map_err(|_| {
             ReadError::new(
                 Location::at(file, line.number, line.column_of(token)),
