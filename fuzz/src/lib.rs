@@ -36,6 +36,27 @@ pub fn keyvalue(data: &[u8]) {
     }
 }
 
+/// The Renishaw `.rtl`/`.rta` reader, as linear and as rotary, then each standard's
+/// evaluation and, with the file's own material temperature and expansion coefficient,
+/// the NDE correction.
+pub fn renishaw(data: &[u8]) {
+    let _ = measurement::renishaw::looks_like(data);
+    for file in ["fuzz.rtl", "fuzz.rta"] {
+        let Ok(test) = measurement::renishaw::parse(data, file) else {
+            continue;
+        };
+        check_data(&test.data);
+        for standard in StandardId::ALL {
+            let _ = serde_json::to_vec(&evaluate::evaluate(&test.data, standard).json());
+        }
+        if let Some(env) = &test.environment
+            && let (Some(t), Some(k)) = (env.material_temp_c(), env.expansion_ppm_per_c)
+        {
+            let _ = nde::correct(&test.data, k, nde::Temperature::Constant(t));
+        }
+    }
+}
+
 /// The layout-detecting reader, then everything that consumes a test: each standard's
 /// evaluation and JSON, the rules, judging against the built-in specs, the NDE correction
 /// and the CSV writer (whose output is read again).

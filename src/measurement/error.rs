@@ -169,6 +169,60 @@ pub enum ReadErrorKind {
     },
     #[error("{0}")]
     KeyValue(String),
+    // Renishaw .rtl/.rta
+    #[error(
+        "not a Renishaw .rtl/.rta file: {found}; such a file starts with `HEADER::`, then `TARGET DATA::`, `RUNS::`, `DEVIATIONS::` … `EOF::`"
+    )]
+    RenishawNotRenishaw { found: String },
+    #[error(
+        "the file holds more than {limit}; a Renishaw positioning test is far smaller (is this the right file?)"
+    )]
+    RenishawTooLarge { limit: String },
+    #[error(
+        "this is a Renishaw dynamic capture (.rtx: a `Data:` block of samples over time), not a positioning test; export the test as .rtl (linear) or .rta (rotary)"
+    )]
+    RenishawDynamic,
+    #[error("no `{section}` section; {expected}")]
+    RenishawMissingSection { section: String, expected: String },
+    #[error(
+        "section `{section}` appears twice (first on line {first_line}); a Renishaw file has each section once"
+    )]
+    RenishawDuplicateSection { section: String, first_line: usize },
+    #[error(
+        "the file ends inside `{section}` without `EOF::`: it looks cut short; copy the file again from the laser PC"
+    )]
+    RenishawNoEof { section: String },
+    #[error("`{section}` has no `{key}` line; expected {expected}")]
+    RenishawMissingKey {
+        section: String,
+        key: String,
+        expected: String,
+    },
+    #[error("`{key}`: expected {expected}, found `{found}`")]
+    RenishawBadValue {
+        key: String,
+        expected: String,
+        found: String,
+    },
+    #[error("Target-count says {said} but {found} targets follow `Targets :`")]
+    RenishawTargetCount { said: usize, found: usize },
+    #[error("Run-count says {said} but {found}")]
+    RenishawRunCount { said: usize, found: String },
+    #[error("run {run} has no reading at target {target} ({position})")]
+    RenishawMissingReading {
+        run: u32,
+        target: usize,
+        position: String,
+    },
+    #[error("run {run} lists target {target} ({position}) twice (first on line {first_line})")]
+    RenishawDuplicateReading {
+        run: u32,
+        target: usize,
+        position: String,
+        first_line: usize,
+    },
+    #[error("{0}")]
+    Renishaw(String),
 }
 
 #[cfg(test)]

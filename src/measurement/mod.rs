@@ -8,6 +8,7 @@
 pub mod csv;
 pub mod error;
 pub mod keyvalue;
+pub mod renishaw;
 
 pub use error::{Location, ReadError, ReadErrorKind};
 

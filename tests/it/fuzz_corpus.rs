@@ -36,6 +36,11 @@ fn keyvalue_corpus() {
 }
 
 #[test]
+fn renishaw_corpus() {
+    replay("renishaw", targets::renishaw);
+}
+
+#[test]
 fn evaluate_corpus() {
     replay("evaluate", targets::evaluate);
 }
