@@ -48,6 +48,21 @@ pub fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     result
 }
 
+/// Makes the renames and removals in `dir` durable: after a power loss the folder holds
+/// the old names or the new ones (a rename is atomic, but stays in memory until its
+/// folder is synced). A no-op where folders cannot be opened (Windows).
+pub fn sync_dir(dir: &Path) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::fs::File::open(dir)?.sync_all()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = dir;
+        Ok(())
+    }
+}
+
 const TEMP_MARK: &str = ".axcheck-tmp-";
 
 /// The temporary name [`write`] uses for `name` in process `pid`.
@@ -328,6 +343,7 @@ impl OutputDir {
     /// produce (and the folders axcheck created for them, when empty), and records exactly
     /// this run's outputs.
     pub fn finish(self) -> Result<(), OutputError> {
+        let mut emptied = BTreeSet::new();
         for stale in self.owned_files.difference(&self.new_files) {
             let path = self.root.join(stale);
             // Only a regular file inside real folders: never through a link.
@@ -336,7 +352,13 @@ impl OutputDir {
                 .all(|d| matches!(entry(&self.root.join(d)), Ok(Entry::Dir)));
             if inside && matches!(entry(&path)?, Entry::File) {
                 std::fs::remove_file(&path).map_err(io_error(&path))?;
+                emptied.insert(path.parent().map(Path::to_path_buf).unwrap_or_default());
             }
+        }
+        // The removals reach the disk before the manifest that no longer lists them: a
+        // power loss must not bring back a file the manifest has forgotten.
+        for dir in &emptied {
+            sync_dir(dir).map_err(io_error(dir))?;
         }
         // Deepest first; a folder that is not empty (a user's file in it) stays.
         let unused: Vec<&PathBuf> = self.owned_dirs.difference(&self.new_dirs).collect();
@@ -368,7 +390,10 @@ impl OutputDir {
             text.push('\n');
         }
         let path = self.manifest_path();
-        write(&path, text.as_bytes()).map_err(io_error(&path))
+        write(&path, text.as_bytes()).map_err(io_error(&path))?;
+        // The manifest's rename reaches the disk before any output is written (prepare)
+        // and before the run ends (finish): a power loss keeps the old or the new one.
+        sync_dir(&self.root).map_err(io_error(&self.root))
     }
 
     /// Removes `.NAME.axcheck-tmp-PID` files of processes that no longer run, where NAME

@@ -102,6 +102,19 @@ impl Files {
     }
 }
 
+fn read_template(dir: &Path, name: &str) -> Result<String, ReportError> {
+    let path = dir.join(name);
+    crate::campaign::paths::check_real(dir, Path::new(name), "templates folder").map_err(
+        |outside| {
+            ReportError::Templates(format!(
+                "{outside}; copy the template into the folder instead of linking it"
+            ))
+        },
+    )?;
+    crate::files::read_to_string(&path)
+        .map_err(|e| ReportError::Templates(format!("{}: {e}", path.display())))
+}
+
 /// A compiled PDF and the warnings Typst gave.
 pub struct Rendered {
     pub pdf: Vec<u8>,
@@ -119,15 +132,15 @@ const CHART_HEIGHT_PX: u32 = 420;
 const UNIDIRECTIONAL_HEIGHT_PX: u32 = 600;
 
 impl Reports {
-    /// With the built-in templates, or those in `dir` (a customised copy of `templates/`).
+    /// With the built-in templates, or those in `dir` (a customised copy of `templates/`):
+    /// regular files whose real paths stay in `dir` (a link in a shared templates folder
+    /// does not put another file into the reports).
     pub fn new(dir: Option<&Path>) -> Result<Reports, ReportError> {
         let mut templates = HashMap::new();
         for (name, text) in TEMPLATES {
             let text = match dir {
                 None => text.to_string(),
-                Some(dir) => std::fs::read_to_string(dir.join(name)).map_err(|e| {
-                    ReportError::Templates(format!("{}: {e}", dir.join(name).display()))
-                })?,
+                Some(dir) => read_template(dir, name)?,
             };
             templates.insert(format!("/{name}"), text);
         }
