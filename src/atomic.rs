@@ -19,6 +19,11 @@
 //! 5. [`OutputDir::finish`] removes the previous run's outputs this run no longer produces
 //!    (an axis taken out of the campaign, PDFs after `--no-pdf`), then writes the manifest
 //!    with exactly this run's outputs.
+//!
+//! Each manifest write is followed by a sync of the folder ([`sync_dir`]), so a power loss
+//! keeps the old manifest or the new one, and never a removal the manifest has forgotten.
+//! One run at a time per folder is the caller's part ([`crate::lock`] is above this layer;
+//! `run` takes it before [`OutputDir::open`]).
 
 use std::collections::BTreeSet;
 use std::io::Write;
