@@ -19,6 +19,11 @@
 //! 5. [`OutputDir::finish`] removes the previous run's outputs this run no longer produces
 //!    (an axis taken out of the campaign, PDFs after `--no-pdf`), then writes the manifest
 //!    with exactly this run's outputs.
+//!
+//! Each manifest write is followed by a sync of the folder ([`sync_dir`]), so a power loss
+//! keeps the old manifest or the new one, and never a removal the manifest has forgotten.
+//! One run at a time per folder is the caller's part ([`crate::lock`] is above this layer;
+//! `run` takes it before [`OutputDir::open`]).
 
 use std::collections::BTreeSet;
 use std::io::Write;
@@ -46,6 +51,21 @@ pub fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         let _ = std::fs::remove_file(&tmp);
     }
     result
+}
+
+/// Makes the renames and removals in `dir` durable: after a power loss the folder holds
+/// the old names or the new ones (a rename is atomic, but stays in memory until its
+/// folder is synced). A no-op where folders cannot be opened (Windows).
+pub fn sync_dir(dir: &Path) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::fs::File::open(dir)?.sync_all()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = dir;
+        Ok(())
+    }
 }
 
 const TEMP_MARK: &str = ".axcheck-tmp-";
@@ -328,6 +348,7 @@ impl OutputDir {
     /// produce (and the folders axcheck created for them, when empty), and records exactly
     /// this run's outputs.
     pub fn finish(self) -> Result<(), OutputError> {
+        let mut emptied = BTreeSet::new();
         for stale in self.owned_files.difference(&self.new_files) {
             let path = self.root.join(stale);
             // Only a regular file inside real folders: never through a link.
@@ -336,7 +357,13 @@ impl OutputDir {
                 .all(|d| matches!(entry(&self.root.join(d)), Ok(Entry::Dir)));
             if inside && matches!(entry(&path)?, Entry::File) {
                 std::fs::remove_file(&path).map_err(io_error(&path))?;
+                emptied.insert(path.parent().map(Path::to_path_buf).unwrap_or_default());
             }
+        }
+        // The removals reach the disk before the manifest that no longer lists them: a
+        // power loss must not bring back a file the manifest has forgotten.
+        for dir in &emptied {
+            sync_dir(dir).map_err(io_error(dir))?;
         }
         // Deepest first; a folder that is not empty (a user's file in it) stays.
         let unused: Vec<&PathBuf> = self.owned_dirs.difference(&self.new_dirs).collect();
@@ -368,7 +395,10 @@ impl OutputDir {
             text.push('\n');
         }
         let path = self.manifest_path();
-        write(&path, text.as_bytes()).map_err(io_error(&path))
+        write(&path, text.as_bytes()).map_err(io_error(&path))?;
+        // The manifest's rename reaches the disk before any output is written (prepare)
+        // and before the run ends (finish): a power loss keeps the old or the new one.
+        sync_dir(&self.root).map_err(io_error(&self.root))
     }
 
     /// Removes `.NAME.axcheck-tmp-PID` files of processes that no longer run, where NAME

@@ -240,10 +240,12 @@ fn load_spec(dir: &Path, name: &str, allow_outside: bool) -> Result<Spec, String
     } else {
         format!("specs/{name}.yaml")
     };
-    let candidate = crate::campaign::data::inside(dir, &relative, allow_outside)
+    let candidate = crate::campaign::paths::contained(dir, &relative, allow_outside)
         .map_err(|e| format!("spec `{name}`: {e}"))?;
-    if candidate.is_file() {
-        let text = std::fs::read_to_string(&candidate)
+    // Anything at the path is the spec (a folder or a pipe there is an error, not a
+    // reason to take the built-in spec of that name).
+    if std::fs::symlink_metadata(&candidate).is_ok() {
+        let text = crate::files::read_to_string(&candidate)
             .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;
         return Spec::from_yaml(&text, &candidate.display().to_string()).map_err(|e| e.to_string());
     }

@@ -14,8 +14,10 @@ pub mod compensate;
 pub mod diagnose;
 pub mod evaluate;
 pub mod export;
+pub mod files;
 pub mod history;
 pub mod judge;
+pub mod lock;
 pub mod measurement;
 pub mod nde;
 #[cfg(feature = "pdf")]

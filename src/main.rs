@@ -63,6 +63,10 @@ enum Command {
         /// `campaign.history`, relative to the campaign file).
         #[arg(long)]
         history: Option<PathBuf>,
+        /// When another run is writing to the output (or history) folder, wait for it to
+        /// finish instead of stopping at once.
+        #[arg(long)]
+        wait: bool,
     },
     /// The CI gate: evaluate a campaign and write nothing (exit 0: every axis passes,
     /// 1: any axis fails, is noncompliant or has an error, 2: the campaign cannot be read).
@@ -217,6 +221,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             templates,
             progress,
             history,
+            wait,
         } => {
             let options = cli::campaign::RunOptions {
                 out: &out,
@@ -226,6 +231,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 templates: templates.as_deref(),
                 progress: progress_of(progress),
                 history: history.as_deref(),
+                wait,
             };
             return Ok(ExitCode::from(cli::campaign::run(&campaign, &options)?));
         }

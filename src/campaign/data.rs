@@ -70,10 +70,10 @@ impl DataSource {
         match self {
             DataSource::Files(files) => files
                 .iter()
-                .map(|f| inside(base, f, allow_outside))
+                .map(|f| super::paths::contained(base, f, allow_outside))
                 .collect(),
             DataSource::Glob { dir, glob } => {
-                let root = inside(base, dir, allow_outside)?;
+                let root = super::paths::contained(base, dir, allow_outside)?;
                 if !root.is_dir() {
                     return Err(format!("data folder {} does not exist", root.display()));
                 }
@@ -82,14 +82,15 @@ impl DataSource {
                     .compile_matcher();
                 let hidden_ok = glob.starts_with('.');
                 let mut found = Vec::new();
-                // Symbolic links are not followed: a link loop cannot hang the walk.
+                // Links to folders are not followed (a link loop cannot hang the walk); a
+                // link to a file, or a special file, is a match, checked like any other.
                 for entry in walkdir::WalkDir::new(&root)
                     .follow_links(false)
                     .sort_by_file_name()
                 {
                     let entry =
                         entry.map_err(|e| format!("cannot list {}: {e}", root.display()))?;
-                    if !entry.file_type().is_file() {
+                    if !super::paths::may_match(&entry) {
                         continue;
                     }
                     let rel = entry.path().strip_prefix(&root).unwrap_or(entry.path());
@@ -104,6 +105,7 @@ impl DataSource {
                     return Err(format!("no file in {} matches `{glob}`", root.display()));
                 }
                 found.sort();
+                super::paths::check_matches(base, &found, allow_outside)?;
                 Ok(found)
             }
         }

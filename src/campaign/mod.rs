@@ -7,6 +7,7 @@
 pub mod data;
 mod load;
 pub mod model;
+pub mod paths;
 
 pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, Instrument, MachineInfo, Nde, OutputOptions,
@@ -77,9 +78,9 @@ pub struct AxisSpec {
 const TOP_KEYS: [&str; 2] = ["campaign", "machines"];
 
 impl Campaign {
-    /// Loads a campaign file from disk.
+    /// Loads a campaign file from disk (a regular file only: [`crate::files`]).
     pub fn load(path: &Path) -> Result<Campaign, CampaignError> {
-        let text = std::fs::read_to_string(path).map_err(|e| CampaignError::Unreadable {
+        let text = crate::files::read_to_string(path).map_err(|e| CampaignError::Unreadable {
             file: path.display().to_string(),
             reason: e.to_string(),
         })?;
@@ -228,7 +229,7 @@ fn history_dir(
             "expected a folder, e.g. `history: history`, got an empty text".into(),
         ));
     }
-    data::inside(dir, history, info.allow_outside_paths)
+    paths::contained(dir, history, info.allow_outside_paths)
         .map(Some)
         .map_err(located)
 }

@@ -219,6 +219,8 @@ pub struct RunOptions<'a> {
     pub progress: Progress,
     /// Folder of the inspection history to append to (overrides `campaign.history`).
     pub history: Option<&'a Path>,
+    /// Wait for another run that holds the output or history folder (`--wait`).
+    pub wait: bool,
 }
 
 /// `axcheck run`.
@@ -232,6 +234,9 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         // Before the evaluation: a history needs the run's date.
         axcheck::history::run_date(&campaign.info, &campaign.file.display().to_string())?;
     }
+    // One writer per folder, from before the manifest is read until the history is
+    // appended: a second run on the folder stops here (or waits), not half-way.
+    let _locks = lock_folders(out, history.as_deref(), options.wait)?;
     // A broken manifest is refused before the evaluation; the output paths themselves are
     // checked by `write_all` before anything is written.
     axcheck::atomic::OutputDir::open(out)?;
@@ -289,6 +294,37 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         print!("{}", flagged_lines(trends));
     }
     Ok(exit_code(&result))
+}
+
+/// Locks the output folder and the history folder (once when they are one), in the order
+/// of their real paths so that two waiting runs never hold one each.
+fn lock_folders(
+    out: &Path,
+    history: Option<&Path>,
+    wait: bool,
+) -> Result<Vec<axcheck::lock::FolderLock>> {
+    let real = |p: &Path| axcheck::campaign::paths::real_path(p).unwrap_or_else(|_| p.into());
+    let mut folders: Vec<(PathBuf, &Path)> = std::iter::once(out)
+        .chain(history)
+        .map(|p| (real(p), p))
+        .collect();
+    folders.sort();
+    folders.dedup_by(|a, b| a.0 == b.0);
+    let mut locks = Vec::new();
+    for (_, dir) in folders {
+        let lock = axcheck::lock::FolderLock::acquire(dir, wait, |locked| {
+            eprintln!("axcheck: {locked}; waiting for it to finish (--wait)");
+        })?;
+        if let Some(ended) = &lock.taken_over {
+            eprintln!(
+                "axcheck: {} holds the lock file of a run that ended without removing it ({}); taken over",
+                dir.display(),
+                ended.describe()
+            );
+        }
+        locks.push(lock);
+    }
+    Ok(locks)
 }
 
 /// Appends the run to the history in `dir` and fits the trends of the run's axes over it;

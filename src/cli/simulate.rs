@@ -7,7 +7,7 @@ use std::path::Path;
 
 /// Simulates `model` and returns the CSV text.
 pub fn run(model: &Path, seed: Option<u64>) -> Result<String> {
-    let text = std::fs::read_to_string(model)
+    let text = axcheck::files::read_to_string(model)
         .with_context(|| format!("cannot read the model file {}", model.display()))?;
     let sim = Simulation::from_yaml(&text, &model.display().to_string())?;
     let seed = seed.unwrap_or(sim.seed);

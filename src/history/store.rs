@@ -36,16 +36,18 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
         path: path.clone(),
         message: e.to_string(),
     })?;
-    crate::atomic::write(&path, &bytes).map_err(|source| HistoryError::Io {
-        path: path.clone(),
-        source,
-    })?;
+    crate::atomic::write(&path, &bytes)
+        .and_then(|()| crate::atomic::sync_dir(path.parent().unwrap_or(dir)))
+        .map_err(|source| HistoryError::Io {
+            path: path.clone(),
+            source,
+        })?;
     Ok(Some(path))
 }
 
 /// Refuses to replace the file of another campaign whose name has the same slug.
 fn check_same_campaign(path: &Path, campaign: &str) -> Result<(), HistoryError> {
-    let Ok(file) = std::fs::File::open(path) else {
+    let Ok(crate::files::Opened { file, .. }) = crate::files::open(path) else {
         return Ok(());
     };
     let found = ParquetReader::new(file)
@@ -168,10 +170,12 @@ fn history_files(dir: &Path) -> Result<Vec<PathBuf>, HistoryError> {
 
 /// One history file's rows, its schema checked.
 pub fn read_file(path: &Path) -> Result<Vec<Record>, HistoryError> {
-    let file = std::fs::File::open(path).map_err(|source| HistoryError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let file = crate::files::open(path)
+        .map_err(|e| HistoryError::Io {
+            path: path.to_path_buf(),
+            source: e.into(),
+        })?
+        .file;
     let df = ParquetReader::new(file)
         .finish()
         .map_err(|e| HistoryError::Parquet {

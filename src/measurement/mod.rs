@@ -373,12 +373,14 @@ pub fn read<R: BufRead>(mut reader: R, file: &str) -> Result<AxisData, ReadError
     }
 }
 
-/// Opens and reads a measurement file (the one place this module touches the file system).
+/// Opens and reads a measurement file (the one place this module touches the file system):
+/// a regular file only, refused when it changes while it is read ([`crate::files`]).
 pub fn read_file(path: &Path) -> Result<AxisData, ReadError> {
     let name = path.display().to_string();
-    let file = std::fs::File::open(path)
-        .map_err(|e| ReadError::new(Location::file(&name), ReadErrorKind::Io(e.to_string())))?;
-    read(std::io::BufReader::with_capacity(64 * 1024, file), &name)
+    crate::files::read_with(path, |file| {
+        read(std::io::BufReader::with_capacity(64 * 1024, file), &name)
+    })
+    .map_err(|e| ReadError::new(Location::file(&name), ReadErrorKind::Io(e.to_string())))?
 }
 
 /// Reads lines of at most [`MAX_LINE_BYTES`] as UTF-8 text with their 1-based numbers,

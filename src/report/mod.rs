@@ -110,6 +110,19 @@ impl Files {
     }
 }
 
+fn read_template(dir: &Path, name: &str) -> Result<String, ReportError> {
+    let path = dir.join(name);
+    crate::campaign::paths::check_real(dir, Path::new(name), "templates folder").map_err(
+        |outside| {
+            ReportError::Templates(format!(
+                "{outside}; copy the template into the folder instead of linking it"
+            ))
+        },
+    )?;
+    crate::files::read_to_string(&path)
+        .map_err(|e| ReportError::Templates(format!("{}: {e}", path.display())))
+}
+
 /// A compiled PDF and the warnings Typst gave.
 pub struct Rendered {
     pub pdf: Vec<u8>,
@@ -132,25 +145,22 @@ const TREND_STYLE: trend_chart::Style = trend_chart::Style {
 };
 
 impl Reports {
-    /// With the built-in templates, or those in `dir` (a customised copy of `templates/`).
+    /// With the built-in templates, or those in `dir` (a customised copy of `templates/`):
+    /// regular files whose real paths stay in `dir` (a link in a shared templates folder
+    /// does not put another file into the reports).
     pub fn new(dir: Option<&Path>) -> Result<Reports, ReportError> {
         let mut templates = HashMap::new();
         for (name, text) in TEMPLATES {
             let text = match dir {
                 None => text.to_string(),
-                Some(dir) => match std::fs::read_to_string(dir.join(name)) {
-                    Ok(text) => text,
-                    Err(e)
-                        if e.kind() == std::io::ErrorKind::NotFound
-                            && NEWER_TEMPLATES.contains(name) =>
-                    {
-                        text.to_string()
-                    }
-                    Err(e) => {
-                        let path = dir.join(name);
-                        return Err(ReportError::Templates(format!("{}: {e}", path.display())));
-                    }
-                },
+                // A copy made before a template existed lacks it: the built-in one.
+                Some(dir)
+                    if NEWER_TEMPLATES.contains(name)
+                        && std::fs::symlink_metadata(dir.join(name)).is_err() =>
+                {
+                    text.to_string()
+                }
+                Some(dir) => read_template(dir, name)?,
             };
             templates.insert(format!("/{name}"), text);
         }

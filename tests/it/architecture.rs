@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 /// The top-level modules from the bottom up: a module may use only modules of a lower
 /// layer (its own layer's modules are independent of each other).
 const LAYERS: &[&[&str]] = &[
-    &["units", "suggest", "atomic"],
-    &["measurement", "yaml"],
+    &["units", "suggest", "atomic", "files"],
+    &["measurement", "yaml", "lock"],
     &["evaluate", "nde", "simulate"],
     &["uncertainty"],
     &["rules", "judge", "diagnose", "trend"],

@@ -16,6 +16,8 @@ mod diagnose;
 mod fuzz_corpus;
 mod gost27843;
 mod history;
+#[cfg(unix)]
+mod hostile_fs;
 mod iso230_2;
 mod outputs;
 mod properties;

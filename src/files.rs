@@ -1,0 +1,232 @@
+//! Reading the files a user names (measurements, campaigns, specs, templates): only
+//! regular files.
+//!
+//! A named pipe given as a data file would block the run forever, and a device such as
+//! `/dev/zero` never ends, so the file type is checked before opening (`stat`, which
+//! never blocks). The file is then opened without blocking (`O_NONBLOCK` on unix, in case
+//! it was swapped for a pipe in between), and the opened handle is checked again: still a
+//! regular file, and the same one (device and inode on unix). After the read the handle's
+//! size and modification time are compared with those at opening, so a file that is
+//! written while axcheck reads it is noticed instead of giving half a measurement.
+
+use std::fs::{File, Metadata};
+use std::io::Read;
+use std::path::Path;
+use std::time::SystemTime;
+
+/// Why a file the user named is not read.
+#[derive(Debug, thiserror::Error)]
+pub enum FileError {
+    #[error(
+        "it is {0}, not a regular file; axcheck reads only regular files (a pipe, socket or device may block or never end)"
+    )]
+    NotRegular(&'static str),
+    #[error(
+        "the file was replaced while axcheck opened it; run again when nobody is changing the folder"
+    )]
+    Replaced,
+    #[error(
+        "the file changed while axcheck read it (its size or modification time differ before and after the read); run again once it is complete"
+    )]
+    Changed,
+    #[error("{0}")]
+    Io(#[from] std::io::Error),
+}
+
+impl From<FileError> for std::io::Error {
+    fn from(e: FileError) -> std::io::Error {
+        match e {
+            FileError::Io(e) => e,
+            other => std::io::Error::other(other.to_string()),
+        }
+    }
+}
+
+/// What a file that is not regular is, for messages (`None`: a regular file).
+pub fn special_kind(metadata: &Metadata) -> Option<&'static str> {
+    let kind = metadata.file_type();
+    if kind.is_file() {
+        return None;
+    }
+    if kind.is_dir() {
+        return Some("a folder");
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if kind.is_fifo() {
+            return Some("a named pipe (FIFO)");
+        }
+        if kind.is_socket() {
+            return Some("a socket");
+        }
+        if kind.is_char_device() {
+            return Some("a character device");
+        }
+        if kind.is_block_device() {
+            return Some("a block device");
+        }
+    }
+    Some("a special file")
+}
+
+fn regular(metadata: &Metadata) -> Result<(), FileError> {
+    match special_kind(metadata) {
+        None => Ok(()),
+        Some(kind) => Err(FileError::NotRegular(kind)),
+    }
+}
+
+/// The same file (on unix: device and inode; elsewhere the checks before cannot tell).
+fn same_file(a: &Metadata, b: &Metadata) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        a.dev() == b.dev() && a.ino() == b.ino()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (a, b);
+        true
+    }
+}
+
+/// An opened regular file with its size and modification time at opening.
+#[derive(Debug)]
+pub struct Opened {
+    pub file: File,
+    size: u64,
+    modified: Option<SystemTime>,
+}
+
+impl Opened {
+    /// Refuses the file when its size or modification time changed since it was opened.
+    pub fn check_unchanged(&self) -> Result<(), FileError> {
+        let now = self.file.metadata()?;
+        if now.len() != self.size || now.modified().ok() != self.modified {
+            return Err(FileError::Changed);
+        }
+        Ok(())
+    }
+}
+
+/// Opens `path` (links followed) for reading if it is a regular file; refuses pipes,
+/// sockets, devices and folders without opening them.
+pub fn open(path: &Path) -> Result<Opened, FileError> {
+    let before = std::fs::metadata(path)?;
+    regular(&before)?;
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        // A pipe swapped in after the check opens at once instead of waiting for a writer.
+        options.custom_flags(rustix::fs::OFlags::NONBLOCK.bits() as i32);
+    }
+    let file = options.open(path)?;
+    let after = file.metadata()?;
+    regular(&after)?;
+    if !same_file(&before, &after) {
+        return Err(FileError::Replaced);
+    }
+    Ok(Opened {
+        file,
+        size: after.len(),
+        modified: after.modified().ok(),
+    })
+}
+
+/// Opens `path` as [`open`] does, gives the file to `read`, and refuses the result when
+/// the file changed while `read` ran (whatever `read` returned).
+pub fn read_with<T>(path: &Path, read: impl FnOnce(&mut File) -> T) -> Result<T, FileError> {
+    let mut opened = open(path)?;
+    let value = read(&mut opened.file);
+    opened.check_unchanged()?;
+    Ok(value)
+}
+
+/// The bytes of the regular file `path`.
+pub fn read(path: &Path) -> Result<Vec<u8>, FileError> {
+    read_with(path, |file| {
+        let mut bytes = Vec::new();
+        file.read_to_end(&mut bytes).map(|_| bytes)
+    })?
+    .map_err(FileError::Io)
+}
+
+/// The text of the regular file `path` (UTF-8).
+pub fn read_to_string(path: &Path) -> Result<String, FileError> {
+    String::from_utf8(read(path)?).map_err(|_| {
+        FileError::Io(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        ))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Write;
+    use std::path::PathBuf;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("axcheck-files-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn regular_files_are_read_and_folders_refused() {
+        let dir = scratch("regular");
+        std::fs::write(dir.join("a.txt"), "text").unwrap();
+        assert_eq!(read_to_string(&dir.join("a.txt")).unwrap(), "text");
+        let e = read(&dir).unwrap_err().to_string();
+        assert!(e.starts_with("it is a folder, not a regular file"), "{e}");
+        assert!(matches!(read(&dir.join("none")), Err(FileError::Io(_))));
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn pipes_and_devices_are_refused_without_blocking() {
+        let dir = scratch("special");
+        let pipe = dir.join("pipe.csv");
+        rustix::fs::mkfifoat(
+            rustix::fs::CWD,
+            &pipe,
+            rustix::fs::Mode::from_raw_mode(0o600),
+        )
+        .unwrap();
+        // No writer ever opens the pipe: a plain open would wait forever.
+        let e = read(&pipe).unwrap_err().to_string();
+        assert!(
+            e.starts_with("it is a named pipe (FIFO), not a regular file"),
+            "{e}"
+        );
+        let e = read(Path::new("/dev/zero")).unwrap_err().to_string();
+        assert!(e.starts_with("it is a character device"), "{e}");
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn a_file_written_during_the_read_is_refused() {
+        let dir = scratch("changed");
+        let path = dir.join("growing.csv");
+        std::fs::write(&path, "first half\n").unwrap();
+        let result = read_with(&path, |file| {
+            let mut text = String::new();
+            file.read_to_string(&mut text).unwrap();
+            let mut writer = std::fs::OpenOptions::new()
+                .append(true)
+                .open(&path)
+                .unwrap();
+            writer.write_all(b"second half\n").unwrap();
+            text
+        });
+        assert!(matches!(result, Err(FileError::Changed)), "{result:?}");
+        assert!(read_with(&path, |_| ()).is_ok());
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+}

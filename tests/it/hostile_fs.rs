@@ -1,0 +1,795 @@
+//! The hostile file-system catalogue: a campaign folder prepared by someone else, with
+//! links that lead out of it, pipes, sockets, devices and folders where files should be,
+//! and two runs on one output folder. Each case asserts the error's words, that every
+//! other axis is still evaluated, and that nothing read from a refused file (a marker
+//! in the files outside) reaches any output. Every run has a deadline, so a regression
+//! that blocks on a pipe or a lock fails instead of hanging the test binary.
+
+use crate::common::{data_path, scratch};
+use std::io::{BufRead, Read};
+use std::os::unix::fs::symlink;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Written into every file outside the campaign folder: it must appear in no output.
+const MARKER: &str = "OUTSIDE_MARKER_5f1c";
+const DEADLINE: Duration = Duration::from_secs(120);
+
+fn spawn(args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_axcheck"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("axcheck starts")
+}
+
+/// Waits for `child` until `limit`, then kills it and fails: (exit code, stdout, stderr).
+fn finish(mut child: Child, limit: Duration) -> (i32, String, String) {
+    let pipe = |mut r: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            let _ = r.read_to_string(&mut text);
+            text
+        })
+    };
+    let stdout = pipe(Box::new(child.stdout.take().unwrap()));
+    let stderr = pipe(Box::new(child.stderr.take().unwrap()));
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("axcheck did not finish within {limit:?}: it blocks");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let (stdout, stderr) = (stdout.join().unwrap(), stderr.join().unwrap());
+    (status.code().unwrap_or(-1), stdout, stderr)
+}
+
+/// `axcheck ARGS` with the deadline.
+fn axcheck(args: &[&str]) -> (i32, String, String) {
+    finish(spawn(args), DEADLINE)
+}
+
+fn real(path: &Path) -> String {
+    std::fs::canonicalize(path).unwrap().display().to_string()
+}
+
+fn fifo(path: &Path) {
+    rustix::fs::mkfifoat(
+        rustix::fs::CWD,
+        path,
+        rustix::fs::Mode::from_raw_mode(0o600),
+    )
+    .unwrap();
+}
+
+/// The folder outside every campaign (one for each test, `name`): files with the marker,
+/// a good measurement, a pipe.
+fn outside(name: &str) -> PathBuf {
+    let away = scratch(&format!("hostile-outside-{name}"));
+    let secret = format!("{MARKER},direction,run,deviation_um\n0,up,1,1\n0,down,1,1\n");
+    std::fs::write(away.join("secret.csv"), &secret).unwrap();
+    std::fs::create_dir_all(away.join("folder")).unwrap();
+    std::fs::write(away.join("folder/x.csv"), &secret).unwrap();
+    let spec =
+        format!("name: {MARKER}\nlinear:\n  - {{up_to_mm: 10, tolerances: {{{MARKER}: 1}}}}\n");
+    std::fs::write(away.join("spec.yaml"), &spec).unwrap();
+    std::fs::write(away.join("folder/spec.yaml"), &spec).unwrap();
+    std::fs::copy(data_path("iso230-2_table2.csv"), away.join("good.csv")).unwrap();
+    fifo(&away.join("pipe.csv"));
+    away
+}
+
+/// Every output file, the console and the error texts hold no byte of the files outside.
+fn assert_nothing_leaked(out: &Path, console: &str) {
+    for secret in [MARKER, "root:x:0:0"] {
+        assert!(
+            !console.contains(secret),
+            "`{secret}` on the console:\n{console}"
+        );
+        for entry in walkdir::WalkDir::new(out)
+            .into_iter()
+            .filter_map(Result::ok)
+        {
+            if entry.file_type().is_file() {
+                let bytes = std::fs::read(entry.path()).unwrap();
+                assert!(
+                    !bytes.windows(secret.len()).any(|w| w == secret.as_bytes()),
+                    "`{secret}` in {}",
+                    entry.path().display()
+                );
+            }
+        }
+    }
+}
+
+/// A case: axis name, its `data:` (and keys), the verdict, and the words of its error.
+struct Case {
+    name: &'static str,
+    entry: String,
+    verdict: &'static str,
+    words: Vec<String>,
+}
+
+fn case(name: &'static str, entry: &str, verdict: &'static str, words: &[String]) -> Case {
+    Case {
+        name,
+        entry: entry.to_string(),
+        verdict,
+        words: words.to_vec(),
+    }
+}
+
+/// Runs `cases` as the axes of one campaign in `dir` beside a good axis; checks each
+/// verdict and error, the good axis, and that no marker leaked. Returns the cases checked.
+fn run_catalogue(dir: &Path, head: &str, cases: &[Case]) -> usize {
+    let mut yaml = format!(
+        "campaign: {{name: Hostile, spec: general{head}}}\nmachines:\n  - id: GOOD\n    axes:\n      - {{name: X, kind: linear, data: data/good.csv}}\n  - id: HOSTILE\n    axes:\n"
+    );
+    for c in cases {
+        yaml.push_str(&format!(
+            "      - {{name: {}, kind: linear, {}}}\n",
+            c.name, c.entry
+        ));
+    }
+    let campaign = dir.join("campaign.yaml");
+    std::fs::write(&campaign, yaml).unwrap();
+    let out = dir.join("out");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+        "--no-diagnose",
+    ]);
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    let results: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
+    let entries = results["axes"].as_array().unwrap();
+    let good = entries.iter().find(|a| a["machine"] == "GOOD").unwrap();
+    assert_eq!(good["verdict"], "pass", "the good axis is still evaluated");
+    let junit = std::fs::read_to_string(out.join("junit.xml")).unwrap();
+    for c in cases {
+        let axis = entries
+            .iter()
+            .find(|a| a["machine"] == "HOSTILE" && a["axis"] == c.name)
+            .unwrap_or_else(|| panic!("{} missing from results.json", c.name));
+        assert_eq!(axis["verdict"], c.verdict, "{}: {axis}", c.name);
+        let error = axis["error"].as_str().unwrap_or("");
+        for word in &c.words {
+            assert!(
+                error.contains(word.as_str()),
+                "{}: `{error}` should say `{word}`",
+                c.name
+            );
+        }
+        assert!(junit.contains(c.name), "{} in junit.xml", c.name);
+    }
+    assert_nothing_leaked(&out, &format!("{stdout}{stderr}"));
+    cases.len()
+}
+
+/// Links out of the campaign folder are refused by their real path and named; links that
+/// stay inside work; pipes, sockets, devices and folders are refused by their type.
+#[test]
+fn links_out_and_special_files_fail_their_axis_alone() {
+    let away = outside("links");
+    let dir = scratch("hostile");
+    let data = dir.join("data");
+    let good = data_path("iso230-2_table2.csv");
+    std::fs::copy(&good, data.join("good.csv")).unwrap();
+    let (secret, folder) = (away.join("secret.csv"), away.join("folder"));
+    let link = |target: &Path, name: &str| symlink(target, dir.join(name)).unwrap();
+    link(&secret, "data/link-abs.csv");
+    let away_name = away.file_name().unwrap().to_str().unwrap();
+    link(
+        Path::new(&format!("../../{away_name}/secret.csv")),
+        "data/link-rel.csv",
+    );
+    link(Path::new("chain-2.csv"), "data/chain-1.csv");
+    link(Path::new("chain-3.csv"), "data/chain-2.csv");
+    link(&secret, "data/chain-3.csv");
+    link(&folder, "data/out-dir");
+    std::fs::create_dir_all(data.join("mixed")).unwrap();
+    std::fs::copy(&good, data.join("mixed/x-1.csv")).unwrap();
+    link(&secret, "data/mixed/x-2.csv");
+    link(Path::new("/etc/passwd"), "data/passwd.csv");
+    link(Path::new("/dev/zero"), "data/zero.csv");
+    link(&away.join("absent.csv"), "data/dangling-out.csv");
+    std::fs::create_dir_all(dir.join("specs")).unwrap();
+    link(&away.join("spec.yaml"), "specs/outside.yaml");
+    link(&folder, "other");
+    // Links that stay inside.
+    link(Path::new("good.csv"), "data/alias.csv");
+    link(&data.join("good.csv"), "data/alias-abs.csv");
+    link(Path::new("alias.csv"), "data/alias-chain.csv");
+    std::fs::create_dir_all(data.join("sub")).unwrap();
+    std::fs::copy(&good, data.join("sub/x-1.csv")).unwrap();
+    link(Path::new("sub"), "data/inside-dir");
+    // Files that are not regular files.
+    fifo(&data.join("pipe.csv"));
+    link(Path::new("pipe.csv"), "data/pipe-link.csv");
+    std::fs::create_dir_all(data.join("pipes")).unwrap();
+    fifo(&data.join("pipes/x-1.csv"));
+    std::fs::copy(&good, data.join("pipes/x-2.csv")).unwrap();
+    let _socket = std::os::unix::net::UnixListener::bind(data.join("socket.csv")).unwrap();
+    std::fs::create_dir_all(data.join("dir.csv")).unwrap();
+    link(Path::new("dir.csv"), "data/dir-link.csv");
+    fifo(&dir.join("specs/pipe.yaml"));
+    std::fs::create_dir_all(dir.join("specs/folder.yaml")).unwrap();
+    link(Path::new("absent.csv"), "data/dangling-in.csv");
+    link(Path::new("loop-2.csv"), "data/loop-1.csv");
+    link(Path::new("loop-1.csv"), "data/loop-2.csv");
+
+    let root = real(&dir);
+    let out_of = |what: &str, to: &str| {
+        vec![format!(
+            "{what} is a link to {to}, outside the campaign folder {root}; set campaign.allow_outside_paths: true to allow it"
+        )]
+    };
+    let through = |what: &str, link: &str, to: &str| {
+        vec![format!(
+            "{what} lies in {link}, a link to {to}, outside the campaign folder {root}; set campaign.allow_outside_paths: true"
+        )]
+    };
+    let (secret_real, folder_real) = (real(&secret), real(&folder));
+    let words = |w: &str| vec![w.to_string()];
+    let pipe = "it is a named pipe (FIFO), not a regular file; axcheck reads only regular files";
+    let cases = vec![
+        case(
+            "link-abs",
+            "data: data/link-abs.csv",
+            "error",
+            &out_of("data/link-abs.csv", &secret_real),
+        ),
+        case(
+            "link-rel",
+            "data: data/link-rel.csv",
+            "error",
+            &out_of("data/link-rel.csv", &secret_real),
+        ),
+        case(
+            "link-chain",
+            "data: data/chain-1.csv",
+            "error",
+            &out_of("data/chain-1.csv", &secret_real),
+        ),
+        case(
+            "folder-link",
+            "data: data/out-dir/x.csv",
+            "error",
+            &through("data/out-dir/x.csv", "data/out-dir", &folder_real),
+        ),
+        case(
+            "glob-folder-link",
+            "data: {dir: data/out-dir, glob: \"*.csv\"}",
+            "error",
+            &out_of("data/out-dir", &folder_real),
+        ),
+        case(
+            "glob-match-link",
+            "data: {dir: data/mixed, glob: \"x-*.csv\"}",
+            "error",
+            &out_of("data/mixed/x-2.csv", &secret_real),
+        ),
+        case(
+            "climb-after-link",
+            "data: data/out-dir/../secret.csv",
+            "error",
+            &through("data/out-dir/../secret.csv", "data/out-dir", &folder_real),
+        ),
+        case(
+            "list-with-link",
+            "data: [data/good.csv, data/link-abs.csv]",
+            "error",
+            &out_of("data/link-abs.csv", &secret_real),
+        ),
+        case(
+            "etc-passwd",
+            "data: data/passwd.csv",
+            "error",
+            &out_of("data/passwd.csv", &real(Path::new("/etc/passwd"))),
+        ),
+        case(
+            "dev-zero-link",
+            "data: data/zero.csv",
+            "error",
+            &out_of("data/zero.csv", "/dev/zero"),
+        ),
+        case(
+            "dangling-out",
+            "data: data/dangling-out.csv",
+            "error",
+            &out_of(
+                "data/dangling-out.csv",
+                &format!("{}/absent.csv", real(&away)),
+            ),
+        ),
+        case(
+            "spec-link",
+            "data: data/good.csv, spec: outside",
+            "error",
+            &out_of(
+                "spec `outside`: specs/outside.yaml",
+                &real(&away.join("spec.yaml")),
+            ),
+        ),
+        case(
+            "spec-path-link",
+            "data: data/good.csv, spec: specs/outside.yaml",
+            "error",
+            &out_of("specs/outside.yaml", &real(&away.join("spec.yaml"))),
+        ),
+        case(
+            "spec-folder-link",
+            "data: data/good.csv, spec: other/spec.yaml",
+            "error",
+            &through("other/spec.yaml", "other", &folder_real),
+        ),
+        case("alias", "data: data/alias.csv", "pass", &[]),
+        case("alias-abs", "data: data/alias-abs.csv", "pass", &[]),
+        case("alias-chain", "data: data/alias-chain.csv", "pass", &[]),
+        case(
+            "inside-folder-glob",
+            "data: {dir: data/inside-dir, glob: \"*.csv\"}",
+            "pass",
+            &[],
+        ),
+        case(
+            "inside-folder-file",
+            "data: data/inside-dir/x-1.csv",
+            "pass",
+            &[],
+        ),
+        case("fifo", "data: data/pipe.csv", "error", &words(pipe)),
+        case(
+            "fifo-link",
+            "data: data/pipe-link.csv",
+            "error",
+            &words(pipe),
+        ),
+        case(
+            "socket",
+            "data: data/socket.csv",
+            "error",
+            &words("it is a socket, not a regular file"),
+        ),
+        case(
+            "dir-named-csv",
+            "data: data/dir.csv",
+            "error",
+            &words("data/dir.csv: could not read the file: it is a folder, not a regular file"),
+        ),
+        case(
+            "link-to-dir",
+            "data: data/dir-link.csv",
+            "error",
+            &words("it is a folder, not a regular file"),
+        ),
+        case(
+            "spec-fifo",
+            "data: data/good.csv, spec: pipe",
+            "error",
+            &words(&format!("pipe.yaml: cannot read the spec: {pipe}")),
+        ),
+        case(
+            "spec-folder",
+            "data: data/good.csv, spec: folder",
+            "error",
+            &words("folder.yaml: cannot read the spec: it is a folder, not a regular file"),
+        ),
+        case(
+            "dangling-in",
+            "data: data/dangling-in.csv",
+            "error",
+            &words("No such file or directory"),
+        ),
+        case(
+            "link-loop",
+            "data: data/loop-1.csv",
+            "error",
+            &words("symbolic links"),
+        ),
+    ];
+    let mut count = run_catalogue(&dir, "", &cases);
+
+    // A glob that matches a pipe fails that test alone; the other file is evaluated.
+    let (code, stdout, stderr) = {
+        let yaml = "campaign: {name: Pipes}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: {dir: data/pipes, glob: \"x-*.csv\"}}\n";
+        std::fs::write(dir.join("pipes.yaml"), yaml).unwrap();
+        axcheck(&["check", dir.join("pipes.yaml").to_str().unwrap()])
+    };
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    assert!(
+        stdout.contains("2 tests: 1 pass, 0 fail, 0 noncompliant, 1 error"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains(&format!(
+            "data/pipes/x-1.csv: could not read the file: {pipe}"
+        )),
+        "{stdout}"
+    );
+    count += 1;
+    eprintln!("hostile file-system cases: {count}");
+    assert!(count >= 29, "{count}");
+    std::fs::remove_dir_all(dir).unwrap();
+    std::fs::remove_dir_all(away).unwrap();
+}
+
+/// With `allow_outside_paths: true` links and absolute paths out are followed, but a
+/// device or a pipe is still refused by its type, and a folder is not a file.
+#[test]
+fn allowed_outside_paths_still_read_only_regular_files() {
+    let away = outside("allowed");
+    let dir = scratch("hostile-allowed");
+    std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
+    symlink("/dev/zero", dir.join("data/zero.csv")).unwrap();
+    symlink(away.join("good.csv"), dir.join("data/away.csv")).unwrap();
+    let device = "it is a character device, not a regular file";
+    let words = |w: &str| vec![w.to_string()];
+    let cases = vec![
+        case(
+            "dev-zero",
+            "data: /dev/zero",
+            "error",
+            &words(&format!("/dev/zero: could not read the file: {device}")),
+        ),
+        case(
+            "dev-zero-link",
+            "data: data/zero.csv",
+            "error",
+            &words(device),
+        ),
+        case("dev-null", "data: /dev/null", "error", &words(device)),
+        case(
+            "outside-fifo",
+            &format!("data: {}", away.join("pipe.csv").display()),
+            "error",
+            &words("it is a named pipe (FIFO)"),
+        ),
+        case(
+            "outside-folder",
+            &format!("data: {}", away.join("folder").display()),
+            "error",
+            &words("it is a folder, not a regular file"),
+        ),
+        case("outside-good-link", "data: data/away.csv", "pass", &[]),
+    ];
+    let count = run_catalogue(&dir, ", allow_outside_paths: true", &cases);
+    assert_eq!(count, 6);
+    std::fs::remove_dir_all(dir).unwrap();
+    std::fs::remove_dir_all(away).unwrap();
+}
+
+/// A history folder and a template that lead out are refused before anything is written
+/// there; a campaign file or a measurement that is a pipe, a device or a folder is
+/// refused at once by `check` and `eval`.
+#[test]
+fn history_templates_and_named_files_are_checked_too() {
+    let away = outside("named");
+    let dir = scratch("hostile-named");
+    std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
+    std::fs::create_dir_all(away.join("history")).unwrap();
+    symlink(away.join("history"), dir.join("history")).unwrap();
+    symlink(away.join("not-yet"), dir.join("later")).unwrap();
+    let root = real(&dir);
+    for (name, target) in [
+        ("history", real(&away.join("history"))),
+        ("later", format!("{}/not-yet", real(&away))),
+    ] {
+        let yaml = format!(
+            "campaign: {{name: H, date: 2026-11-20, history: {name}}}\nmachines:\n  - id: M\n    axes:\n      - {{name: X, kind: linear, data: data/good.csv}}\n"
+        );
+        let campaign = dir.join(format!("{name}.yaml"));
+        std::fs::write(&campaign, yaml).unwrap();
+        let out = dir.join("out");
+        let (code, _, stderr) = axcheck(&[
+            "run",
+            campaign.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--no-pdf",
+        ]);
+        assert_eq!(code, 2, "{stderr}");
+        let want = format!(
+            "campaign.history: {name} is a link to {target}, outside the campaign folder {root}; set campaign.allow_outside_paths: true to allow it"
+        );
+        assert!(stderr.contains(&want), "{stderr}");
+    }
+    assert_eq!(
+        std::fs::read_dir(away.join("history")).unwrap().count(),
+        0,
+        "nothing written outside"
+    );
+    assert!(!away.join("not-yet").exists());
+
+    // A template in a shared templates folder that links to another file.
+    let templates = dir.join("templates");
+    std::fs::create_dir_all(&templates).unwrap();
+    for name in ["style.typ", "axis-report.typ", "summary.typ"] {
+        let source = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("templates")
+            .join(name);
+        std::fs::copy(source, templates.join(name)).unwrap();
+    }
+    std::fs::remove_file(templates.join("summary.typ")).unwrap();
+    symlink(away.join("spec.yaml"), templates.join("summary.typ")).unwrap();
+    let yaml = "campaign: {name: T}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n";
+    std::fs::write(dir.join("t.yaml"), yaml).unwrap();
+    let out = dir.join("out-t");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        dir.join("t.yaml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--templates",
+        templates.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+    let want = format!(
+        "summary.typ is a link to {}, outside the templates folder {}",
+        real(&away.join("spec.yaml")),
+        real(&templates)
+    );
+    assert!(stderr.contains(&want), "{stderr}");
+    assert!(!format!("{stdout}{stderr}").contains(MARKER));
+    assert!(
+        !out.exists(),
+        "a run that stops before writing leaves no folder"
+    );
+
+    // Files named on the command line.
+    fifo(&dir.join("campaign-pipe.yaml"));
+    fifo(&dir.join("data/pipe.csv"));
+    let pipe = "it is a named pipe (FIFO), not a regular file";
+    let named: Vec<(Vec<String>, String)> = vec![
+        (
+            vec![
+                "check".into(),
+                dir.join("campaign-pipe.yaml").display().to_string(),
+            ],
+            format!("campaign-pipe.yaml: cannot read the campaign file: {pipe}"),
+        ),
+        (
+            vec![
+                "eval".into(),
+                dir.join("data/pipe.csv").display().to_string(),
+            ],
+            format!("pipe.csv: could not read the file: {pipe}"),
+        ),
+        (
+            vec!["eval".into(), "/dev/zero".into()],
+            "/dev/zero: could not read the file: it is a character device, not a regular file"
+                .into(),
+        ),
+        (
+            vec!["diagnose".into(), dir.join("data").display().to_string()],
+            "data: could not read the file: it is a folder, not a regular file".into(),
+        ),
+    ];
+    for (args, want) in named {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (code, _, stderr) = axcheck(&args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert!(
+            stderr.contains(&want),
+            "{args:?}: `{stderr}` should say `{want}`"
+        );
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+    std::fs::remove_dir_all(away).unwrap();
+}
+
+/// A small campaign in `dir` (one good axis) for the lock tests.
+fn small_campaign(dir: &Path) -> PathBuf {
+    std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
+    let yaml = "campaign: {name: L, date: 2026-11-20}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n";
+    let campaign = dir.join("campaign.yaml");
+    std::fs::write(&campaign, yaml).unwrap();
+    campaign
+}
+
+fn run_args<'a>(campaign: &'a Path, out: &'a Path, extra: &[&'a str]) -> Vec<&'a str> {
+    let mut args = vec![
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+        "--no-diagnose",
+    ];
+    args.extend_from_slice(extra);
+    args
+}
+
+/// A second run on a folder that another run holds stops at once with who holds it
+/// (exit 2), or with `--wait` waits for it and then writes; a history folder is held
+/// the same way, and a link in place of the lock file is refused.
+#[test]
+fn a_held_output_folder_stops_a_second_run_or_makes_it_wait() {
+    let dir = scratch("hostile-lock");
+    let campaign = small_campaign(&dir);
+    let out = dir.join("out");
+    let held = axcheck::lock::FolderLock::acquire(&out, false, |_| {}).unwrap();
+    let start = Instant::now();
+    let (code, stdout, stderr) = axcheck(&run_args(&campaign, &out, &[]));
+    assert_eq!(code, 2, "{stdout}{stderr}");
+    assert!(start.elapsed() < Duration::from_secs(30), "stops at once");
+    let want = format!("another axcheck run (pid {}, started ", std::process::id());
+    assert!(stderr.contains(&want), "{stderr}");
+    assert!(
+        stderr.contains(&format!(") is writing to {}", out.display())),
+        "{stderr}"
+    );
+    assert!(stderr.contains("run again with --wait"), "{stderr}");
+    assert!(!stderr.contains("was not written by axcheck"), "{stderr}");
+    assert!(!out.join("results.json").exists());
+
+    // --wait: the run waits while the folder is held, then writes.
+    let mut waiting = spawn(&run_args(&campaign, &out, &["--wait"]));
+    let mut first_line = String::new();
+    std::io::BufReader::new(waiting.stderr.as_mut().unwrap())
+        .read_line(&mut first_line)
+        .unwrap();
+    assert!(
+        first_line.contains("is writing to")
+            && first_line.contains("waiting for it to finish (--wait)"),
+        "{first_line}"
+    );
+    std::thread::sleep(Duration::from_millis(300));
+    assert!(
+        waiting.try_wait().unwrap().is_none(),
+        "still waiting while the folder is held"
+    );
+    assert!(!out.join("results.json").exists());
+    drop(held);
+    let (code, stdout, stderr) = finish(waiting, DEADLINE);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(out.join("results.json").exists());
+    assert!(
+        !out.join(axcheck::lock::LOCK_FILE).exists(),
+        "the lock file is removed after the run"
+    );
+
+    // The history folder is held the same way.
+    let history = dir.join("history");
+    let held = axcheck::lock::FolderLock::acquire(&history, false, |_| {}).unwrap();
+    let (code, _, stderr) = axcheck(&run_args(
+        &campaign,
+        &out,
+        &["--history", history.to_str().unwrap()],
+    ));
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains(&format!(") is writing to {}", history.display())),
+        "{stderr}"
+    );
+    drop(held);
+    let (code, _, stderr) = axcheck(&run_args(
+        &campaign,
+        &out,
+        &["--history", history.to_str().unwrap()],
+    ));
+    assert_eq!(code, 0, "{stderr}");
+
+    // A link planted in place of the lock file is not followed.
+    std::fs::write(dir.join("victim.txt"), "keep").unwrap();
+    symlink(dir.join("victim.txt"), out.join(axcheck::lock::LOCK_FILE)).unwrap();
+    let (code, _, stderr) = axcheck(&run_args(&campaign, &out, &[]));
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains(".axcheck.lock is a symbolic link, not axcheck's lock file"),
+        "{stderr}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("victim.txt")).unwrap(),
+        "keep"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Two runs started together on one output folder: without `--wait` each writes or stops
+/// with the lock message (never "not written by axcheck"); with `--wait` both write.
+#[test]
+fn two_runs_at_once_on_one_output_folder() {
+    let dir = scratch("hostile-concurrent");
+    let (code, _, stderr) = axcheck(&[
+        "simulate",
+        "--fleet",
+        "60",
+        "--seed",
+        "3",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    let campaign = dir.join("campaign.yaml");
+    let out = dir.join("out");
+    for wait in [false, true] {
+        let extra: &[&str] = if wait { &["--wait"] } else { &[] };
+        let children = [
+            spawn(&run_args(&campaign, &out, extra)),
+            spawn(&run_args(&campaign, &out, extra)),
+        ];
+        let mut written = 0;
+        for child in children {
+            let (code, stdout, stderr) = finish(child, DEADLINE);
+            assert!(!stderr.contains("was not written by axcheck"), "{stderr}");
+            match code {
+                0 | 1 => written += 1,
+                2 => assert!(
+                    !wait && stderr.contains("another axcheck run (pid "),
+                    "{stdout}{stderr}"
+                ),
+                _ => panic!("{stdout}{stderr}"),
+            }
+        }
+        assert!(
+            written >= 1 && (!wait || written == 2),
+            "wait {wait}: {written} runs wrote"
+        );
+        let results: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
+        assert_eq!(results["axes"].as_array().unwrap().len(), 60);
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// The lock of a run that was killed is released by the system; the next run takes the
+/// lock file over and says so.
+#[test]
+fn the_lock_of_a_killed_run_is_taken_over() {
+    let dir = scratch("hostile-stale");
+    let campaign = small_campaign(&dir);
+    // A real run that holds its output folder: it waits (--wait) for the history folder
+    // this test holds (folders are locked in the order of their paths: a-out first).
+    let (out, history) = (dir.join("a-out"), dir.join("b-history"));
+    let held = axcheck::lock::FolderLock::acquire(&history, false, |_| {}).unwrap();
+    let mut holder = spawn(&run_args(
+        &campaign,
+        &out,
+        &["--history", history.to_str().unwrap(), "--wait"],
+    ));
+    let mut line = String::new();
+    std::io::BufReader::new(holder.stderr.as_mut().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    assert!(
+        line.contains(&format!("is writing to {}", history.display())),
+        "{line}"
+    );
+    let lock_text = std::fs::read_to_string(out.join(axcheck::lock::LOCK_FILE)).unwrap();
+    assert!(
+        lock_text.contains(&format!("pid {}\n", holder.id())),
+        "{lock_text}"
+    );
+    holder.kill().unwrap();
+    holder.wait().unwrap();
+    drop(held);
+    assert!(
+        out.join(axcheck::lock::LOCK_FILE).exists(),
+        "a killed run leaves its lock file"
+    );
+
+    let (code, stdout, stderr) = axcheck(&run_args(&campaign, &out, &[]));
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let want = format!(
+        "holds the lock file of a run that ended without removing it (pid {}, started ",
+        holder.id()
+    );
+    assert!(stderr.contains(&want), "{stderr}");
+    assert!(out.join("results.json").exists());
+    assert!(!out.join(axcheck::lock::LOCK_FILE).exists());
+    std::fs::remove_dir_all(dir).unwrap();
+}
