@@ -17,6 +17,7 @@ mod fuzz_corpus;
 mod gost27843;
 mod history;
 mod iso230_2;
+mod layouts;
 mod outputs;
 mod properties;
 mod report_compensation;
