@@ -195,28 +195,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             standard,
             s_from_ranges,
             json,
-        } => {
-            if s_from_ranges && standard != StandardId::Gost27843 {
-                bail!("--s-from-ranges applies to --standard gost27843 only");
-            }
-            let measurement::ReadTest { data, recognised } =
-                measurement::read_file(&file, sheet.name())?;
-            let evaluation = if s_from_ranges {
-                gost27843::Gost27843 {
-                    s_method: gost27843::SMethod::Ranges,
-                }
-                .evaluate(&data)
-            } else {
-                axcheck::evaluate::evaluate(&data, standard)
-            };
-            let name = file.display().to_string();
-            let text = if json {
-                cli::json_with_read(&evaluation.json(), &name, &recognised)?
-            } else {
-                cli::eval::render(&name, &recognised, &evaluation)
-            };
-            print(&text)?;
-        }
+        } => eval(&file, &sheet, standard, s_from_ranges, json)?,
         Command::Run {
             campaign,
             out,
@@ -328,6 +307,35 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `axcheck eval`: the parameters of one file, and what it was read as.
+fn eval(
+    file: &std::path::Path,
+    sheet: &cli::SheetArg,
+    standard: StandardId,
+    s_from_ranges: bool,
+    json: bool,
+) -> Result<()> {
+    if s_from_ranges && standard != StandardId::Gost27843 {
+        bail!("--s-from-ranges applies to --standard gost27843 only");
+    }
+    let measurement::ReadTest { data, recognised } = measurement::read_file(file, sheet.name())?;
+    let evaluation = if s_from_ranges {
+        gost27843::Gost27843 {
+            s_method: gost27843::SMethod::Ranges,
+        }
+        .evaluate(&data)
+    } else {
+        axcheck::evaluate::evaluate(&data, standard)
+    };
+    let name = file.display().to_string();
+    let text = if json {
+        cli::json_with_read(&evaluation.json(), &name, &recognised)?
+    } else {
+        cli::eval::render(&name, &recognised, &evaluation)
+    };
+    print(&text)
 }
 
 fn progress_of(every_test: bool) -> cli::campaign::Progress {
