@@ -439,7 +439,7 @@ fn campaign_axis_errors_in_the_users_words() {
         ),
         (
             "{name: X, kind: linear, data: {dir: d, glb: x}}".into(),
-            "c.yaml:5:48: machines[0].axes[0].data.glb: unknown key `glb` (did you mean `glob`?); expected {dir: FOLDER, glob: PATTERN}",
+            "c.yaml:5:48: machines[0].axes[0].data.glb: unknown key `glb` (did you mean `glob`?); expected {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME}",
         ),
         (
             format!("{{{base}, 1: 2}}"),
