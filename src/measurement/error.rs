@@ -264,7 +264,7 @@ pub enum ReadErrorKind {
     )]
     EmptySheet,
     #[error(
-        "the workbook is larger than {limit_mib} MiB; the book of a positioning test is a few hundred kB (is this the right file?)"
+        "the workbook is (or unpacks to) more than {limit_mib} MiB; the book of a positioning test is a few hundred kB (is this the right file?)"
     )]
     BookTooLarge { limit_mib: usize },
     #[error("the sheet has more than {limit} cells; keep one test per sheet")]

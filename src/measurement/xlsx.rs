@@ -25,6 +25,10 @@ use super::{AxisData, Location, MAX_READINGS};
 use calamine::{DataRef, Reader as _, Xlsx};
 use std::io::Cursor;
 
+/// Most bytes a workbook may unpack to (its parts' sizes as its ZIP directory declares
+/// them, which the unpacking holds to): a test's book unpacks to a few MB, and calamine
+/// keeps some parts (the shared strings) whole in memory.
+pub const MAX_BOOK_UNPACKED: u64 = 128 << 20;
 /// Rows holding anything that may stand above the header (titles, dates, notes).
 pub const HEADER_SEARCH_ROWS: usize = 20;
 /// Most cells a sheet may hold: a long table of [`MAX_READINGS`] readings with a time and
@@ -49,6 +53,7 @@ pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<Read
         let what = what.to_string();
         return Err(whole(ReadErrorKind::UnsupportedBook { what }));
     }
+    check_unpacked_size(bytes).map_err(whole)?;
     let mut book = Xlsx::new(Cursor::new(bytes)).map_err(|e| whole(not_a_book(&e)))?;
     let names = book.sheet_names();
     let (name, mut notes) = choose_sheet(&names, sheet).map_err(whole)?;
@@ -114,6 +119,22 @@ fn unsupported(bytes: &[u8]) -> Option<&'static str> {
     head.windows(ods.len())
         .any(|w| w == ods)
         .then_some("OpenDocument (.ods)")
+}
+
+/// Refuses a book whose parts unpack to more than [`MAX_BOOK_UNPACKED`] (a ZIP bomb).
+fn check_unpacked_size(bytes: &[u8]) -> Result<(), ReadErrorKind> {
+    let mut archive = zip::ZipArchive::new(Cursor::new(bytes)).map_err(|e| not_a_book(&e))?;
+    let mut total = 0u64;
+    for k in 0..archive.len() {
+        let part = archive.by_index_raw(k).map_err(|e| not_a_book(&e))?;
+        total = total.saturating_add(part.size());
+    }
+    if total > MAX_BOOK_UNPACKED {
+        return Err(ReadErrorKind::BookTooLarge {
+            limit_mib: (MAX_BOOK_UNPACKED >> 20) as usize,
+        });
+    }
+    Ok(())
 }
 
 /// calamine's reason, kept short: a hostile file can make it long.
@@ -202,12 +223,20 @@ enum Table {
     Wide(WideTable),
 }
 
+/// The table of a sheet, once its header is found.
+struct Found {
+    table: Table,
+    kind: TableKind,
+    /// The header's first and last column (1-based) and its row.
+    first: usize,
+    last: usize,
+    header_row: usize,
+}
+
 /// A sheet being read row by row: looking for the header, then feeding the table.
 struct SheetReader {
     place: Place,
-    /// The table, its kind, and its first and last column (1-based), once the header is
-    /// found.
-    table: Option<(Table, TableKind, usize, usize, usize)>,
+    table: Option<Found>,
     /// Rows above the header that held something.
     skipped: Vec<usize>,
     comments: usize,
@@ -234,7 +263,10 @@ impl SheetReader {
             return Ok(());
         }
         let place = &self.place;
-        let Some((table, _, first, last, _)) = &mut self.table else {
+        let Some(Found {
+            table, first, last, ..
+        }) = &mut self.table
+        else {
             return self.header(number, &cells);
         };
         let mut fields: Vec<Field> = (*first..=*last)
@@ -264,10 +296,12 @@ impl SheetReader {
         Ok(())
     }
 
-    /// A row before the header: the header if it names a layout's columns, else skipped.
+    /// A row before the header: the header if it names a layout's columns, else skipped
+    /// (a row of one cell is a title, whatever it says: `Run 3` is not a header).
     fn header(&mut self, number: usize, cells: &[(u32, Value)]) -> Result<(), ReadError> {
         let names: Vec<String> = cells.iter().map(|(_, v)| v.name()).collect();
-        let Some(kind) = table_kind(&names) else {
+        let kind = (names.len() > 1).then(|| table_kind(&names)).flatten();
+        let Some(kind) = kind else {
             self.skipped.push(number);
             if self.skipped.len() >= HEADER_SEARCH_ROWS {
                 let rows = HEADER_SEARCH_ROWS;
@@ -294,13 +328,25 @@ impl SheetReader {
             TableKind::Long => Table::Long(LongTable::from_header(&header, &self.place)?),
             TableKind::Wide => Table::Wide(WideTable::from_header(&header, &self.place)?),
         };
-        self.table = Some((table, kind, first, last, number));
+        self.table = Some(Found {
+            table,
+            kind,
+            first,
+            last,
+            header_row: number,
+        });
         Ok(())
     }
 
     /// The test, its table's kind and the notes.
     fn finish(self) -> Result<(AxisData, TableKind, Vec<String>), ReadError> {
-        let Some((table, kind, _, _, header_row)) = self.table else {
+        let Some(Found {
+            table,
+            kind,
+            header_row,
+            ..
+        }) = self.table
+        else {
             let kind = if self.skipped.is_empty() {
                 ReadErrorKind::EmptySheet
             } else {

@@ -398,12 +398,21 @@ fn hostile_books_are_named() {
     );
     let e = with(&|rows| {
         for row in rows.iter_mut() {
-            row.truncate(1);
+            row.truncate(2);
         }
+        rows[0][1] = s("remark");
     });
     assert!(
-        e.contains("cell A1: no run columns after `target_mm`"),
+        e.contains("cell B1: unknown column `remark`; the wide layout"),
         "{e}"
+    );
+    // A title of one cell is never the header, even one that names a column.
+    let mut titled = wide_rows(&data);
+    titled.insert(0, vec![s("Run 3")]);
+    let read = read_bytes(&book(&[("X axis", titled)]), "b.xlsx", None).unwrap();
+    assert_eq!(
+        read.recognised.notes[0],
+        "row 1 above the header (row 2) skipped"
     );
     let e = read_bytes(&zip_of("readme.txt", b"hello"), "b.xlsx", None).unwrap_err();
     assert!(
