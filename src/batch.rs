@@ -7,7 +7,7 @@ use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::gost27843::{Gost27843, SMethod};
 use crate::evaluate::{Evaluation, Standard, StandardId};
 use crate::judge::{self, Decision, DecisionRule, Judgement, Limits, Spec, Verdict};
-use crate::measurement::{self, AxisData};
+use crate::measurement::{self, AxisData, Recognised};
 use crate::nde::{self, NdeCorrection};
 use crate::rules::{self, Finding, PlanContext, Severity};
 use crate::uncertainty::{Distribution, InstrumentKind, Setup, Uncertainty};
@@ -31,6 +31,8 @@ pub struct AxisTest {
     pub tests: usize,
     pub verdict: Verdict,
     pub error: Option<String>,
+    /// The layout the measurement file was read as and what was assumed or skipped.
+    pub recognised: Option<Recognised>,
     pub data: Option<AxisData>,
     pub evaluation: Option<Evaluation>,
     pub judgement: Option<Judgement>,
@@ -283,6 +285,7 @@ impl Slot {
             tests: self.tests,
             verdict,
             error,
+            recognised: None,
             data: None,
             evaluation: None,
             judgement: None,
@@ -407,8 +410,8 @@ fn run_test(
     path: &Path,
     options: Options,
 ) -> AxisTest {
-    let data = match measurement::read_file(path) {
-        Ok(d) => d,
+    let (data, recognised) = match measurement::read_file(path, axis.data.sheet()) {
+        Ok(read) => (read.data, read.recognised),
         Err(e) => return slot.error(e.to_string()),
     };
     if data.kind != axis.raw.kind {
@@ -420,7 +423,10 @@ fn run_test(
             slot.axis,
             axis.raw.kind
         );
-        return slot.error(message);
+        return AxisTest {
+            recognised: Some(recognised),
+            ..slot.error(message)
+        };
     }
     let (data, nde) = apply_nde(axis, data);
     let findings = rules::check(&plan_context(axis), &data);
@@ -494,6 +500,7 @@ fn run_test(
             crate::compensate::compensation(c, &data, axis.standard, &settings, diagnosis)
         });
     AxisTest {
+        recognised: Some(recognised),
         diagnosis,
         compensation,
         uncertainty: Some(uncertainty),

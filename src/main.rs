@@ -23,8 +23,11 @@ struct Cli {
 enum Command {
     /// Evaluate one measurement file: the axis parameters and the per-target table.
     Eval {
-        /// Measurement file (long CSV or key=value layout, chosen by content).
+        /// Measurement file (long or wide CSV, XLSX workbook, or ecmc key=value; the
+        /// layout is recognised from the content).
         file: PathBuf,
+        #[command(flatten)]
+        sheet: cli::SheetArg,
         /// Standard: iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba.
         #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
         standard: StandardId,
@@ -88,8 +91,10 @@ enum Command {
     /// axis gets wrong (drift, warm-up, thermal growth, run offsets, periodic error, reversal or
     /// scatter varying along the axis, outliers), with evidence and the held-out gain.
     Diagnose {
-        /// Measurement file (long CSV or key=value layout).
+        /// Measurement file (long or wide CSV, XLSX workbook, or ecmc key=value).
         file: PathBuf,
+        #[command(flatten)]
+        sheet: cli::SheetArg,
         /// Standard for the parameters shown as measured and with effects removed.
         #[arg(long, short, default_value = "iso230-2", value_parser = parse_standard)]
         standard: StandardId,
@@ -118,8 +123,10 @@ enum Command {
     /// minus the mean deviation at each point and direction) and the parameters predicted
     /// with it. Without --out the table goes to standard output.
     Compensate {
-        /// Measurement file (long CSV or key=value layout).
+        /// Measurement file (long or wide CSV, XLSX workbook, or ecmc key=value).
         file: PathBuf,
+        #[command(flatten)]
+        sheet: cli::SheetArg,
         /// Controller whose table format to write: csv, linuxcnc, siemens-840d, fanuc,
         /// heidenhain, twincat, ecmc.
         #[arg(long, short)]
@@ -188,30 +195,11 @@ fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
         Command::Eval {
             file,
+            sheet,
             standard,
             s_from_ranges,
             json,
-        } => {
-            if s_from_ranges && standard != StandardId::Gost27843 {
-                bail!("--s-from-ranges applies to --standard gost27843 only");
-            }
-            let data = measurement::read_file(&file)?;
-            let evaluation = if s_from_ranges {
-                gost27843::Gost27843 {
-                    s_method: gost27843::SMethod::Ranges,
-                }
-                .evaluate(&data)
-            } else {
-                axcheck::evaluate::evaluate(&data, standard)
-            };
-            let name = file.display().to_string();
-            let text = if json {
-                cli::json_with_file(&evaluation.json(), &name)?
-            } else {
-                cli::eval::render(&name, &evaluation)
-            };
-            print(&text)?;
-        }
+        } => eval(&file, &sheet, standard, s_from_ranges, json)?,
         Command::Run {
             campaign,
             out,
@@ -250,6 +238,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
         Command::Diagnose {
             file,
+            sheet,
             standard,
             pitch,
             simulations,
@@ -257,7 +246,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             write_model,
             json,
         } => {
-            let data = measurement::read_file(&file)?;
+            let data = measurement::read_file(&file, sheet.name())?.data;
             let options = axcheck::diagnose::Options {
                 pitch,
                 simulations,
@@ -282,13 +271,14 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Trend(args) => print(&cli::trend::run(&args)?)?,
         Command::Compensate {
             file,
+            sheet,
             controller,
             out,
             table,
             standard,
             json,
         } => {
-            let data = measurement::read_file(&file)?;
+            let data = measurement::read_file(&file, sheet.name())?.data;
             let request = cli::compensate::Request {
                 controller: &controller,
                 out: out.as_deref(),
@@ -323,6 +313,35 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `axcheck eval`: the parameters of one file, and what it was read as.
+fn eval(
+    file: &std::path::Path,
+    sheet: &cli::SheetArg,
+    standard: StandardId,
+    s_from_ranges: bool,
+    json: bool,
+) -> Result<()> {
+    if s_from_ranges && standard != StandardId::Gost27843 {
+        bail!("--s-from-ranges applies to --standard gost27843 only");
+    }
+    let measurement::ReadTest { data, recognised } = measurement::read_file(file, sheet.name())?;
+    let evaluation = if s_from_ranges {
+        gost27843::Gost27843 {
+            s_method: gost27843::SMethod::Ranges,
+        }
+        .evaluate(&data)
+    } else {
+        axcheck::evaluate::evaluate(&data, standard)
+    };
+    let name = file.display().to_string();
+    let text = if json {
+        cli::json_with_read(&evaluation.json(), &name, &recognised)?
+    } else {
+        cli::eval::render(&name, &recognised, &evaluation)
+    };
+    print(&text)
 }
 
 fn progress_of(every_test: bool) -> cli::campaign::Progress {

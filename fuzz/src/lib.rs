@@ -29,6 +29,25 @@ pub fn csv(data: &[u8]) {
     }
 }
 
+/// The wide CSV reader.
+pub fn wide(data: &[u8]) {
+    if let Ok(axis) = measurement::wide::parse(data, "fuzz.csv") {
+        check_data(&axis);
+    }
+}
+
+/// The workbook reader: the first sheet, then a named one (the name from the input's
+/// last bytes, so both the found and the not-found paths run).
+pub fn xlsx(data: &[u8]) {
+    if let Ok(axis) = measurement::xlsx::parse(data, "fuzz.xlsx", None) {
+        check_data(&axis);
+    }
+    let name = String::from_utf8_lossy(&data[data.len().saturating_sub(8)..]);
+    if let Ok(axis) = measurement::xlsx::parse(data, "fuzz.xlsx", Some(&name)) {
+        check_data(&axis);
+    }
+}
+
 /// The ecmc key=value reader.
 pub fn keyvalue(data: &[u8]) {
     if let Ok(axis) = measurement::keyvalue::parse(data, "fuzz.dat") {
@@ -61,7 +80,7 @@ pub fn renishaw(data: &[u8]) {
 /// evaluation and JSON, the rules, judging against the built-in specs, the NDE correction
 /// and the CSV writer (whose output is read again).
 pub fn evaluate(data: &[u8]) {
-    let Ok(axis) = measurement::read(data, "fuzz") else {
+    let Ok(axis) = measurement::read(data, "fuzz").map(|t| t.data) else {
         return;
     };
     check_data(&axis);
@@ -186,7 +205,11 @@ pub fn spec(data: &[u8]) {
 fn fixtures() -> &'static (AxisData, AxisData) {
     static DATA: OnceLock<(AxisData, AxisData)> = OnceLock::new();
     DATA.get_or_init(|| {
-        let read = |text: &str| measurement::read(text.as_bytes(), "fixture.csv").unwrap();
+        let read = |text: &str| {
+            measurement::read(text.as_bytes(), "fixture.csv")
+                .unwrap()
+                .data
+        };
         (read(LINEAR), read(ROTARY))
     })
 }

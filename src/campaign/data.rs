@@ -14,6 +14,8 @@ pub enum DataSource {
     Files(Vec<String>),
     /// Every file under `dir` whose path relative to `dir` matches `glob`.
     Glob { dir: String, glob: String },
+    /// One workbook and the sheet to read (the first when `None`).
+    Book { file: String, sheet: Option<String> },
 }
 
 /// A `data:` that is none of its forms: where in it (`""`, `[1]`, `.dir`), whether the
@@ -38,7 +40,8 @@ impl BadData {
 }
 
 /// What `data:` may be, for messages.
-const FORMS: &str = "a file path, a list of paths, or {dir: FOLDER, glob: PATTERN}";
+const FORMS: &str =
+    "a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME}";
 
 impl DataSource {
     pub fn from_value(value: &serde_norway::Value) -> Result<DataSource, BadData> {
@@ -57,7 +60,7 @@ impl DataSource {
                 })
                 .collect::<Result<Vec<_>, _>>()
                 .map(DataSource::Files),
-            Value::Mapping(map) => glob_from_map(map),
+            Value::Mapping(map) => from_map(map),
             other => Err(BadData::value(
                 "",
                 format!("expected {FORMS}, got {}", describe(other)),
@@ -65,9 +68,18 @@ impl DataSource {
         }
     }
 
+    /// The sheet to read in every file (`{file, sheet}`); `None`: the first of a workbook.
+    pub fn sheet(&self) -> Option<&str> {
+        match self {
+            DataSource::Book { sheet, .. } => sheet.as_deref(),
+            _ => None,
+        }
+    }
+
     /// The files, resolved against `base` and sorted (a glob's matches by path).
     pub fn resolve(&self, base: &Path, allow_outside: bool) -> Result<Vec<PathBuf>, String> {
         match self {
+            DataSource::Book { file, .. } => inside(base, file, allow_outside).map(|p| vec![p]),
             DataSource::Files(files) => files
                 .iter()
                 .map(|f| super::paths::contained(base, f, allow_outside))
@@ -112,43 +124,56 @@ impl DataSource {
     }
 }
 
-/// `{dir: FOLDER, glob: PATTERN}`.
-fn glob_from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
-    let (mut dir, mut glob) = (None, None);
+/// The keys of `data:` as a mapping.
+const MAP_KEYS: &[&str] = &["dir", "glob", "file", "sheet"];
+
+/// `{dir: FOLDER, glob: PATTERN}` or `{file: BOOK, sheet: NAME}` (sheet optional).
+fn from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
+    let (mut dir, mut glob, mut file, mut sheet) = (None, None, None, None);
     for (k, v) in map {
         let Some(key) = k.as_str() else {
-            return Err(BadData::value(
-                "",
-                "expected {dir: FOLDER, glob: PATTERN}".into(),
-            ));
+            return Err(BadData::value("", format!("expected {FORMS}")));
         };
         let (slot, what) = match key {
             "dir" => (&mut dir, "a folder"),
             "glob" => (&mut glob, "a pattern such as \"*.csv\""),
+            "file" => (&mut file, "a file path"),
+            "sheet" => (&mut sheet, "a sheet's name"),
             other => {
                 return Err(BadData {
                     path: format!(".{other}"),
                     at_key: true,
                     message: format!(
-                        "unknown key `{other}`{}; expected {{dir: FOLDER, glob: PATTERN}}",
-                        crate::suggest::hint(other, &["dir", "glob"])
+                        "unknown key `{other}`{}; expected {{dir: FOLDER, glob: PATTERN}} or {{file: BOOK, sheet: NAME}}",
+                        crate::suggest::hint(other, MAP_KEYS)
                     ),
                 });
             }
         };
-        match v.as_str() {
-            Some(text) => *slot = Some(text.to_string()),
-            None => {
+        // A sheet named `2024` is written unquoted: a whole number is its name.
+        let number_name = v.as_u64().map(|n| n.to_string()).filter(|_| key == "sheet");
+        match v.as_str().map(str::to_string).or(number_name) {
+            Some(text) if !text.trim().is_empty() => *slot = Some(text),
+            _ => {
                 let message = format!("expected {what}, got {}", describe(v));
                 return Err(BadData::value(format!(".{key}"), message));
             }
         }
     }
-    match (dir, glob) {
-        (Some(dir), Some(glob)) => Ok(DataSource::Glob { dir, glob }),
-        _ => Err(BadData::value(
+    match (dir, glob, file, sheet) {
+        (Some(dir), Some(glob), None, None) => Ok(DataSource::Glob { dir, glob }),
+        (None, None, Some(file), sheet) => Ok(DataSource::Book { file, sheet }),
+        (None, None, None, Some(_)) => Err(BadData::value(
+            "",
+            "`sheet` needs its `file`, e.g. {file: data/x.xlsx, sheet: X axis}".into(),
+        )),
+        (_, _, None, None) => Err(BadData::value(
             "",
             "expected both `dir` and `glob`, e.g. {dir: data/vmc07, glob: \"x-*.csv\"}".into(),
+        )),
+        _ => Err(BadData::value(
+            "",
+            "give either {dir, glob} or {file, sheet}, not keys of both".into(),
         )),
     }
 }
@@ -240,7 +265,7 @@ mod tests {
         let v: serde_norway::Value = serde_norway::from_str("12").unwrap();
         assert_eq!(
             DataSource::from_value(&v).unwrap_err().message,
-            "expected a file path, a list of paths, or {dir: FOLDER, glob: PATTERN}, got the number 12"
+            "expected a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME}, got the number 12"
         );
         let v: serde_norway::Value = serde_norway::from_str("[a.csv, 2]").unwrap();
         let e = DataSource::from_value(&v).unwrap_err();
@@ -253,6 +278,55 @@ mod tests {
         assert_eq!(
             (e.path.as_str(), e.message.as_str()),
             (".dir", "expected a folder, got a list of 1 item")
+        );
+    }
+
+    #[test]
+    fn book_and_sheet() {
+        let parse = |text: &str| {
+            let v: serde_norway::Value = serde_norway::from_str(text).unwrap();
+            DataSource::from_value(&v)
+        };
+        let book = parse("{file: b.xlsx, sheet: X axis}").unwrap();
+        assert_eq!(book.sheet(), Some("X axis"));
+        assert_eq!(
+            book.resolve(Path::new("camp"), false).unwrap(),
+            vec![Path::new("camp/b.xlsx")]
+        );
+        assert_eq!(parse("{file: b.xlsx}").unwrap().sheet(), None);
+        let e = parse("{file: b.xlsx, shet: X}").unwrap_err();
+        assert_eq!(e.path, ".shet");
+        assert!(
+            e.at_key && e.message.contains("did you mean `sheet`"),
+            "{}",
+            e.message
+        );
+        assert!(
+            parse("{sheet: X}")
+                .unwrap_err()
+                .message
+                .contains("needs its `file`")
+        );
+        assert!(
+            parse("{dir: d, file: b.xlsx}")
+                .unwrap_err()
+                .message
+                .contains("not keys of both")
+        );
+        assert_eq!(
+            parse("{file: b.xlsx, sheet: 2024}").unwrap().sheet(),
+            Some("2024")
+        );
+        let e = parse("{file: b.xlsx, sheet: [X]}").unwrap_err();
+        assert_eq!(
+            (e.path.as_str(), e.message.as_str()),
+            (".sheet", "expected a sheet's name, got a list of 1 item")
+        );
+        assert!(
+            parse("{file: ../b.xlsx}")
+                .unwrap()
+                .resolve(Path::new("c"), false)
+                .is_err()
         );
     }
 }

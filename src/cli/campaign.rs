@@ -106,6 +106,11 @@ pub fn check_output_dir(campaign: &Campaign, out: &Path) -> Result<()> {
                 .filter_map(|f| campaign.dir.join(f).parent().map(Path::to_path_buf))
                 .collect(),
             axcheck::campaign::data::DataSource::Glob { dir, .. } => vec![campaign.dir.join(dir)],
+            axcheck::campaign::data::DataSource::Book { file, .. } => (campaign.dir.join(file))
+                .parent()
+                .map(Path::to_path_buf)
+                .into_iter()
+                .collect(),
         };
         for folder in folders {
             if let Some(data) = canonical(&folder)

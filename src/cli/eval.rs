@@ -2,6 +2,7 @@
 
 use super::text::{left, right};
 use axcheck::evaluate::{Evaluation, StandardId};
+use axcheck::measurement::Recognised;
 use axcheck::units::{Direction, fmt_fixed, fmt_position};
 use std::fmt::Write;
 
@@ -10,8 +11,9 @@ const TARGETS_PER_BLOCK: usize = 5;
 const LABEL: usize = 14;
 const CELL: usize = 7;
 
-/// The report printed by `axcheck eval`.
-pub fn render(file: &str, e: &Evaluation) -> String {
+/// The report printed by `axcheck eval`: the file, what it was read as, the parameters
+/// and the per-target table.
+pub fn render(file: &str, recognised: &Recognised, e: &Evaluation) -> String {
     let mut out = String::new();
     let unit = e.kind.deviation_symbol();
     let pos = e.kind.position_symbol();
@@ -20,6 +22,10 @@ pub fn render(file: &str, e: &Evaluation) -> String {
         e.targets[e.targets.len() - 1].position,
     );
     let _ = writeln!(out, "{file}");
+    let _ = writeln!(out, "read as {}", recognised.layout.name());
+    for note in &recognised.notes {
+        let _ = writeln!(out, "  {note}");
+    }
     let _ = writeln!(
         out,
         "{} · {} axis · {} targets {} … {} {pos} · n = {} per direction · coverage factor {}",

@@ -34,6 +34,10 @@ pub struct TestJson<'a> {
     test: usize,
     tests: usize,
     file: Option<&'a str>,
+    /// The layout the file was read as (with the sheet of a workbook) and the notes on
+    /// what was assumed or skipped.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    recognised: Option<&'a crate::measurement::Recognised>,
     kind: Option<AxisKind>,
     standard: Option<&'static str>,
     unit: Option<&'static str>,
@@ -195,6 +199,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         test: t.test,
         tests: t.tests,
         file: t.file.as_deref(),
+        recognised: t.recognised.as_ref(),
         kind: t.kind(),
         standard: t.standard().map(|s| s.key()),
         unit: t.kind().map(|k| k.deviation_unit()),

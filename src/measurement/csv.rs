@@ -10,10 +10,9 @@
 //! `run` (approach index j, 1-based); optional `time_s` and `temp_<name>_c`. Separators
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
 
-use super::error::{Location, ReadError, ReadErrorKind};
-use super::{
-    AxisData, Lines, MAX_READINGS, MAX_TEMPERATURES, NumberError, RawReading, parse_number,
-};
+use super::error::{ReadError, ReadErrorKind};
+use super::table::{Place, Row, TableReader, Value, read_text};
+use super::{AxisData, MAX_READINGS, MAX_TEMPERATURES, RawReading};
 use crate::suggest::did_you_mean;
 use crate::units::{AxisKind, Direction, fmt_fixed};
 use std::io::BufRead;
@@ -101,9 +100,34 @@ fn classify(name: &str, temps: &mut Vec<String>) -> Result<Column, ReadErrorKind
     Ok(column)
 }
 
+/// True when `name` (trimmed, lower case) is a long-layout column, or so nearly one that
+/// the file is taken for a long CSV with a mistake in its header: a column without its
+/// unit, or a misspelt one.
+pub(crate) fn is_long_column(name: &str) -> bool {
+    KNOWN.contains(&name)
+        || name.starts_with("temp_")
+        || UNITLESS.contains(&name)
+        || did_you_mean(name, KNOWN).is_some()
+}
+
+/// Column names that lack their unit, each with the names to write instead.
+const UNITLESS: &[&str] = &[
+    "target",
+    "position",
+    "target_position",
+    "deviation",
+    "error",
+    "dev",
+    "actual",
+    "actual_position",
+    "reading",
+    "time",
+    "t",
+];
+
 /// Splits one line at `sep`, honouring double quotes; returns each field with its
 /// 1-based character column.
-fn split_fields(line: &str, sep: char) -> Vec<(usize, String)> {
+pub(crate) fn split_fields(line: &str, sep: char) -> Vec<(usize, String)> {
     let mut fields = Vec::new();
     let mut field = String::new();
     let mut start = 1;
@@ -134,7 +158,8 @@ fn split_fields(line: &str, sep: char) -> Vec<(usize, String)> {
     fields
 }
 
-fn detect_separator(header: &str) -> char {
+/// The separator of a header line: `;`, else tab, else `,`.
+pub(crate) fn detect_separator(header: &str) -> char {
     if header.contains(';') {
         ';'
     } else if header.contains('\t') {
@@ -146,50 +171,20 @@ fn detect_separator(header: &str) -> char {
 
 /// Parses the long CSV layout.
 pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
-    let mut lines = Lines::new(reader, file);
-    let (header_line, header) = read_header(&mut lines, file)?;
-    let layout = Layout::from_header(&header, header_line, file)?;
-    let mut raw = Vec::new();
-    while let Some((number, text)) = lines.next_line()? {
-        let trimmed = text.trim();
-        if trimmed.is_empty() || trimmed.starts_with('#') {
-            continue;
-        }
-        if raw.len() >= MAX_READINGS {
-            return Err(ReadError::new(
-                Location::line(file, number),
-                ReadErrorKind::TooManyReadings {
-                    limit: MAX_READINGS,
-                },
-            ));
-        }
-        raw.push(layout.reading(text, number, file)?);
-    }
-    if raw.is_empty() {
-        return Err(ReadError::new(
-            Location::line(file, header_line),
-            ReadErrorKind::NoReadings,
-        ));
-    }
-    AxisData::from_raw(layout.kind, raw, layout.temps, file)
+    read(reader, file).map(|(data, _)| data)
 }
 
-/// The header: the first line that is neither blank nor a comment, with its number.
-fn read_header<R: BufRead>(lines: &mut Lines<R>, file: &str) -> Result<(usize, String), ReadError> {
-    loop {
-        match lines.next_line()? {
-            None => return Err(ReadError::new(Location::file(file), ReadErrorKind::Empty)),
-            Some((_, text)) if text.trim().is_empty() || text.trim_start().starts_with('#') => {}
-            Some((number, text)) => return Ok((number, text.to_string())),
-        }
-    }
+/// Parses the long CSV layout; also returns what was assumed or skipped.
+pub(crate) fn read<R: BufRead>(
+    reader: R,
+    file: &str,
+) -> Result<(AxisData, Vec<String>), ReadError> {
+    read_text::<LongTable, R>(reader, file)
 }
 
-/// What the header says: the columns, where the required ones are, and the units.
-struct Layout {
-    sep: char,
-    /// With `;` or tab separators a decimal comma is accepted.
-    decimal_comma: bool,
+/// The long table being read: what the header says (the columns, where the required ones
+/// are, the units) and the readings so far.
+pub(crate) struct LongTable {
     columns: Vec<Column>,
     /// Column names as written (trimmed, lower case), for messages.
     names: Vec<String>,
@@ -205,13 +200,13 @@ struct Layout {
     factor: f64,
     /// The value column holds actual positions P_ij, not deviations.
     is_actual: bool,
+    raw: Vec<RawReading>,
 }
 
-impl Layout {
-    fn from_header(header: &str, header_line: usize, file: &str) -> Result<Layout, ReadError> {
-        let sep = detect_separator(header);
-        let fields = classify_header(header, sep, header_line, file)?;
-        let header_err = |kind| ReadError::new(Location::line(file, header_line), kind);
+impl TableReader for LongTable {
+    fn from_header(header: &Row, place: &Place) -> Result<LongTable, ReadError> {
+        let fields = classify_header(header, place)?;
+        let header_err = |kind| ReadError::new(place.line(header.number), kind);
         let one = |pred: &dyn Fn(&Column) -> bool, what: &str, expected: &str| {
             fields.only(pred, what, expected).map_err(header_err)
         };
@@ -249,9 +244,7 @@ impl Layout {
                 value_kind,
             )));
         }
-        Ok(Layout {
-            sep,
-            decimal_comma: sep != ',',
+        Ok(LongTable {
             columns,
             names,
             temps,
@@ -263,44 +256,75 @@ impl Layout {
             time,
             factor,
             is_actual,
+            raw: Vec::new(),
         })
     }
 
-    /// One data row as a reading.
-    fn reading(&self, text: &str, number: usize, file: &str) -> Result<RawReading, ReadError> {
-        let err = |column, kind| ReadError::new(Location::at(file, number, column), kind);
-        let fields = split_fields(text, self.sep);
-        if fields.len() != self.columns.len() {
-            return Err(err(
-                1,
-                ReadErrorKind::FieldCount {
-                    expected: self.columns.len(),
-                    found: fields.len(),
+    fn add(&mut self, row: &Row, place: &Place) -> Result<(), ReadError> {
+        if self.raw.len() >= MAX_READINGS {
+            return Err(ReadError::new(
+                place.line(row.number),
+                ReadErrorKind::TooManyReadings {
+                    limit: MAX_READINGS,
                 },
             ));
         }
-        let number_at = |k: usize| self.number(&fields[k], &self.names[k], number, file);
+        let reading = self.reading(row, place)?;
+        self.raw.push(reading);
+        Ok(())
+    }
+
+    fn finish(self, place: &Place) -> Result<(AxisData, Vec<String>), ReadError> {
+        let mut notes = Vec::new();
+        if self.is_actual {
+            notes.push(format!(
+                "`{}` holds actual positions: deviations taken as actual − target (ISO 230-2 clause 2.5)",
+                self.names[self.value]
+            ));
+        }
+        if self.time.is_none() {
+            notes.push("no time_s column: the rows are taken in the order of measurement".into());
+        }
+        let data = AxisData::from_raw_in(self.kind, self.raw, self.temps, place)?;
+        Ok((data, notes))
+    }
+}
+
+impl LongTable {
+    /// One data row as a reading.
+    fn reading(&self, row: &Row, place: &Place) -> Result<RawReading, ReadError> {
+        let number = row.number;
+        let fields = &row.fields;
+        if fields.len() != self.columns.len() {
+            let kind = ReadErrorKind::FieldCount {
+                expected: self.columns.len(),
+                found: fields.len(),
+            };
+            return Err(place.error(number, 1, kind));
+        }
+        let number_at = |k: usize| place.number(number, &fields[k], &self.names[k]);
         let target = number_at(self.target)? + 0.0; // normalise -0.0
         let deviation = self.deviation(target, number_at(self.value)?);
         if deviation.abs() > super::MAX_DEVIATION {
-            let (col, text) = &fields[self.value];
-            return Err(err(
-                *col,
-                ReadErrorKind::Implausible {
-                    column: self.names[self.value].clone(),
-                    value: text.trim().to_string(),
-                    limit: format!("{}", super::MAX_DEVIATION),
-                    unit: self.kind.deviation_unit().to_string(),
-                },
-            ));
+            let field = &fields[self.value];
+            let kind = ReadErrorKind::Implausible {
+                column: self.names[self.value].clone(),
+                value: field.value.shown(),
+                limit: format!("{}", super::MAX_DEVIATION),
+                unit: self.kind.deviation_unit().to_string(),
+            };
+            return Err(place.error(number, field.column, kind));
         }
-        let (dcol, dtext) = &fields[self.direction];
-        let direction =
-            Direction::parse(dtext).ok_or_else(|| err(*dcol, unknown_direction(dtext)))?;
-        let (rcol, rtext) = &fields[self.run];
-        let run = parse_run(rtext).ok_or_else(|| {
-            let found = rtext.trim().to_string();
-            err(*rcol, ReadErrorKind::InvalidRun { found })
+        let d = &fields[self.direction];
+        let direction = match &d.value {
+            Value::Text(text) => Direction::parse(text),
+            _ => None,
+        }
+        .ok_or_else(|| place.error(number, d.column, unknown_direction(&d.value.shown())))?;
+        let r = &fields[self.run];
+        let run = parse_run(&r.value).ok_or_else(|| {
+            let found = r.value.shown();
+            place.error(number, r.column, ReadErrorKind::InvalidRun { found })
         })?;
         let time_s = self.time.map(number_at).transpose()?;
         let mut temps_c = vec![0.0; self.temps.len()];
@@ -328,25 +352,6 @@ impl Layout {
         } else {
             value * self.factor
         }
-    }
-
-    /// The number in one field, or an error naming its column.
-    fn number(
-        &self,
-        (col, text): &(usize, String),
-        column: &str,
-        number: usize,
-        file: &str,
-    ) -> Result<f64, ReadError> {
-        parse_number(text, self.decimal_comma).map_err(|e| {
-            let column = column.to_string();
-            let found = text.trim().to_string();
-            let kind = match e {
-                NumberError::NotANumber => ReadErrorKind::NotANumber { column, found },
-                NumberError::NonFinite => ReadErrorKind::NonFinite { column, found },
-            };
-            ReadError::new(Location::at(file, number, *col), kind)
-        })
     }
 }
 
@@ -383,21 +388,16 @@ impl Header {
 }
 
 /// Classifies every header field; a column named twice is an error.
-fn classify_header(
-    header: &str,
-    sep: char,
-    header_line: usize,
-    file: &str,
-) -> Result<Header, ReadError> {
-    let err = |column, kind| ReadError::new(Location::at(file, header_line, column), kind);
+fn classify_header(header: &Row, place: &Place) -> Result<Header, ReadError> {
     let mut temps = Vec::new();
     let mut columns = Vec::new();
     let mut names: Vec<String> = Vec::new();
-    for (col, raw_name) in split_fields(header, sep) {
-        let name = raw_name.trim().to_ascii_lowercase();
-        let column = classify(&name, &mut temps).map_err(|k| err(col, k))?;
+    for field in &header.fields {
+        let err = |kind| place.error(header.number, field.column, kind);
+        let name = field.value.name();
+        let column = classify(&name, &mut temps).map_err(err)?;
         if names.contains(&name) {
-            return Err(err(col, ReadErrorKind::DuplicateColumn { name }));
+            return Err(err(ReadErrorKind::DuplicateColumn { name }));
         }
         columns.push(column);
         names.push(name);
@@ -410,7 +410,12 @@ fn classify_header(
 }
 
 /// A target column of one kind with a value column of the other.
-fn mixed_units(target: &str, kind: AxisKind, value: &str, value_kind: AxisKind) -> ReadErrorKind {
+pub(crate) fn mixed_units(
+    target: &str,
+    kind: AxisKind,
+    value: &str,
+    value_kind: AxisKind,
+) -> ReadErrorKind {
     let describe = |k: AxisKind| match k {
         AxisKind::Linear => "a length".to_string(),
         AxisKind::Rotary => "an angle".to_string(),
@@ -431,11 +436,19 @@ fn unknown_direction(text: &str) -> ReadErrorKind {
     ReadErrorKind::UnknownDirection { found, suggestion }
 }
 
-/// A run number: a positive integer (`3`, ` 3 `, `3.0`).
-fn parse_run(text: &str) -> Option<u32> {
-    let t = text.trim();
-    let t = t.strip_suffix(".0").unwrap_or(t);
-    t.parse::<u32>().ok().filter(|&r| r >= 1)
+/// A run number: a positive integer (`3`, ` 3 `, `3.0`, or a sheet's number 3).
+fn parse_run(value: &Value) -> Option<u32> {
+    match value {
+        Value::Text(text) => {
+            let t = text.trim();
+            let t = t.strip_suffix(".0").unwrap_or(t);
+            t.parse::<u32>().ok().filter(|&r| r >= 1)
+        }
+        Value::Number(x) if x.fract() == 0.0 && *x >= 1.0 && *x <= f64::from(u32::MAX) => {
+            Some(*x as u32)
+        }
+        _ => None,
+    }
 }
 
 /// Writes `data` in the long CSV layout, readings in measurement order; `comments` become

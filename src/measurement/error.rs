@@ -3,12 +3,15 @@
 
 use std::fmt;
 
-/// Where in a measurement file something went wrong (1-based line and column).
+/// Where in a measurement file something went wrong (1-based line and column); in a
+/// workbook, the sheet with its row and column (shown as a cell, `C7`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Location {
     pub file: String,
     pub line: Option<usize>,
     pub column: Option<usize>,
+    /// The sheet of a workbook: then `line` is its row and `column` its column.
+    pub sheet: Option<String>,
 }
 
 impl Location {
@@ -17,6 +20,7 @@ impl Location {
             file: file.to_string(),
             line: None,
             column: None,
+            sheet: None,
         }
     }
 
@@ -25,6 +29,7 @@ impl Location {
             file: file.to_string(),
             line: Some(line),
             column: None,
+            sheet: None,
         }
     }
 
@@ -33,13 +38,43 @@ impl Location {
             file: file.to_string(),
             line: Some(line),
             column: Some(column),
+            sheet: None,
         }
     }
+
+    /// The same place in `sheet` of a workbook.
+    pub fn in_sheet(self, sheet: &str) -> Location {
+        Location {
+            sheet: Some(sheet.to_string()),
+            ..self
+        }
+    }
+}
+
+/// A spreadsheet column's letters: 1 → `A`, 27 → `AA`.
+pub fn column_letters(column: usize) -> String {
+    let mut letters = Vec::new();
+    let mut c = column;
+    while c > 0 {
+        let rem = (c - 1) % 26;
+        letters.push(b'A' + rem as u8);
+        c = (c - 1) / 26;
+    }
+    letters.reverse();
+    String::from_utf8(letters).unwrap_or_default()
 }
 
 impl fmt::Display for Location {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.file)?;
+        if let Some(sheet) = &self.sheet {
+            write!(f, ", sheet \"{sheet}\"")?;
+            return match (self.line, self.column) {
+                (Some(row), Some(column)) => write!(f, ", cell {}{row}", column_letters(column)),
+                (Some(row), None) => write!(f, ", row {row}"),
+                _ => Ok(()),
+            };
+        }
         if let Some(line) = self.line {
             write!(f, ":{line}")?;
             if let Some(column) = self.column {
@@ -223,6 +258,79 @@ pub enum ReadErrorKind {
     },
     #[error("{0}")]
     Renishaw(String),
+    #[error("column `{column}`: the cell is empty; expected a number")]
+    EmptyCell { column: String },
+    #[error("column `{column}`: expected a number, found {found}")]
+    WrongCellType { column: String, found: String },
+    #[error("no layout recognised; tried: {tried}")]
+    Unrecognised { tried: String },
+    #[error(
+        "unknown column `{name}`{}; the wide layout has target_mm or target_deg first, then up_J_UNIT and down_J_UNIT for each run J (up_1_um, down_1_um, …; units um, nm, mm, arcsec or deg)",
+        crate::suggest::phrase(suggestion.as_deref())
+    )]
+    UnknownWideColumn {
+        name: String,
+        suggestion: Option<String>,
+    },
+    #[error("the first column is `{found}`; the wide layout starts with target_mm or target_deg")]
+    TargetNotFirst { found: String },
+    #[error(
+        "no run columns after `{target}`; the wide layout has up_J_UNIT and down_J_UNIT for each run J (up_1_um, down_1_um, …)"
+    )]
+    NoRunColumns { target: String },
+    #[error(
+        "column `{column}` has no `{missing}`: every run is measured in both directions (ISO 230-2 clause 2.2, 4.3); add the column or remove this one"
+    )]
+    UnpairedRun { column: String, missing: String },
+    #[error(
+        "run {missing} has no columns but runs {found} have; number the runs 1 … n without gaps"
+    )]
+    MissingRun { missing: u32, found: String },
+    #[error("target {target} already has a row ({first}); give each target one row")]
+    DuplicateTarget { target: String, first: String },
+    #[error("a sheet (\"{sheet}\") was named, but the file is a {layout}, not a workbook")]
+    SheetOfText { sheet: String, layout: String },
+    #[error(
+        "the file is a ZIP archive but not an XLSX workbook ({reason}); save the sheet as .xlsx or CSV"
+    )]
+    NotABook { reason: String },
+    #[error(
+        "{what} workbooks are not read (their reader loads every cell of every sheet at once); save the sheet as .xlsx or CSV"
+    )]
+    UnsupportedBook { what: String },
+    #[error(
+        "no sheet named \"{name}\"{}; the book's sheets are {sheets}",
+        crate::suggest::phrase(suggestion.as_deref())
+    )]
+    UnknownSheet {
+        name: String,
+        sheets: String,
+        suggestion: Option<String>,
+    },
+    #[error("the book has no sheet")]
+    NoSheets,
+    #[error(
+        "no header row in the first {rows} rows of the sheet that hold anything; expected one such as target_mm, direction, run, deviation_um (long) or target_mm, up_1_um, down_1_um, … (wide)"
+    )]
+    NoHeaderRow { rows: usize },
+    #[error(
+        "the sheet is empty; expected a header row such as target_mm, direction, run, deviation_um (long) or target_mm, up_1_um, down_1_um, … (wide), then the readings"
+    )]
+    EmptySheet,
+    #[error(
+        "the workbook is (or unpacks to) more than {limit_mib} MiB; the book of a positioning test is a few hundred kB (is this the right file?)"
+    )]
+    BookTooLarge { limit_mib: usize },
+    #[error("the sheet has more than {limit} cells; keep one test per sheet")]
+    TooManyCells { limit: usize },
+    #[error(
+        "the cell holds `{found}` but its column has no header; give the column a name or clear it"
+    )]
+    CellOutsideHeader { found: String },
+    #[error(
+        "the sheet's cells are not stored in row order; save the book again with a spreadsheet program"
+    )]
+    CellsOutOfOrder,
 }
 
 #[cfg(test)]
@@ -234,5 +342,12 @@ mod tests {
         assert_eq!(Location::at("a.csv", 3, 7).to_string(), "a.csv:3:7");
         assert_eq!(Location::line("a.csv", 3).to_string(), "a.csv:3");
         assert_eq!(Location::file("a.csv").to_string(), "a.csv");
+        let cell = Location::at("b.xlsx", 7, 3).in_sheet("X axis");
+        assert_eq!(cell.to_string(), "b.xlsx, sheet \"X axis\", cell C7");
+        let row = Location::line("b.xlsx", 2).in_sheet("S");
+        assert_eq!(row.to_string(), "b.xlsx, sheet \"S\", row 2");
+        assert_eq!(column_letters(26), "Z");
+        assert_eq!(column_letters(28), "AB");
+        assert_eq!(column_letters(16384), "XFD");
     }
 }

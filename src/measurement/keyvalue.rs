@@ -41,6 +41,17 @@ struct Entry {
 
 /// Parses the key=value layout.
 pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
+    read(reader, file).map(|(data, _)| data)
+}
+
+/// Most ignored metadata keys named in the notes.
+const MAX_IGNORED_SHOWN: usize = 8;
+
+/// Parses the key=value layout; also returns what was assumed or skipped.
+pub(crate) fn read<R: BufRead>(
+    reader: R,
+    file: &str,
+) -> Result<(AxisData, Vec<String>), ReadError> {
     let mut lines = Lines::new(reader, file);
     let mut entries = Entries::default();
     let mut count = 0usize;
@@ -74,7 +85,22 @@ pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
     let (kind, factor) = unit(&entries.unit, file)?;
     entries.check(file)?;
     let raw = entries.readings(kind, factor, file)?;
-    AxisData::from_raw(kind, raw, Vec::new(), file)
+    let mut notes = Vec::new();
+    if entries.unit.is_none() {
+        notes.push("no UNIT: the readings are taken in mm".to_string());
+    }
+    notes.push(
+        "deviations taken as REF_DATA − TGT_DATA; order of measurement: each cycle forward through the positions, then backward".into(),
+    );
+    if !entries.ignored.is_empty() {
+        let mut shown: Vec<&str> = entries.ignored.iter().map(String::as_str).collect();
+        if shown.len() > MAX_IGNORED_SHOWN {
+            shown.truncate(MAX_IGNORED_SHOWN);
+            shown.push("…");
+        }
+        notes.push(format!("metadata keys ignored: {}", shown.join(", ")));
+    }
+    Ok((AxisData::from_raw(kind, raw, Vec::new(), file)?, notes))
 }
 
 /// A key=value error at `line`, `column`.
@@ -147,6 +173,8 @@ struct Entries {
     fwd: BTreeMap<(usize, usize), Entry>,
     /// `REF_DATA_BWD[i,j]`.
     bwd: BTreeMap<(usize, usize), Entry>,
+    /// Plain keys other than UNIT, CYCLES and POSITIONS, in order of first appearance.
+    ignored: Vec<String>,
 }
 
 impl Entries {
@@ -158,7 +186,15 @@ impl Entries {
                 "UNIT" => self.unit = Some((line.value.to_string(), line.number)),
                 "CYCLES" => self.cycles = Some((line.count()?, line.number)),
                 "POSITIONS" => self.positions = Some((line.count()?, line.number)),
-                _ => {} // REF_PV, TEST_PV, TGT_SET_PV, DEC, …: metadata
+                // REF_PV, TEST_PV, TGT_SET_PV, DEC, …: metadata. Bounded: the notes name
+                // a few, and a file of 300 000 distinct keys must not be scanned quadratically.
+                other => {
+                    if self.ignored.len() <= MAX_IGNORED_SHOWN
+                        && !self.ignored.iter().any(|k| k == other)
+                    {
+                        self.ignored.push(other.to_string());
+                    }
+                }
             }
             return Ok(());
         };

@@ -8,9 +8,16 @@
 pub mod csv;
 pub mod error;
 pub mod keyvalue;
+pub mod layout;
 pub mod renishaw;
+pub(crate) mod table;
+pub mod wide;
+pub mod xlsx;
 
 pub use error::{Location, ReadError, ReadErrorKind};
+pub use layout::{Layout, ReadTest, Recognised};
+use table::Place;
+pub use table::TableKind;
 
 use crate::units::{AxisKind, Direction, fmt_position};
 use std::collections::HashMap;
@@ -91,16 +98,24 @@ impl AxisData {
         temperature_names: Vec<String>,
         file: &str,
     ) -> Result<AxisData, ReadError> {
+        let place = Place::text(file, false);
+        AxisData::from_raw_in(kind, raw, temperature_names, &place)
+    }
+
+    /// [`AxisData::from_raw`] with errors located in `place` (a text file or a sheet).
+    pub(crate) fn from_raw_in(
+        kind: AxisKind,
+        raw: Vec<RawReading>,
+        temperature_names: Vec<String>,
+        place: &Place,
+    ) -> Result<AxisData, ReadError> {
         if raw.is_empty() {
-            return Err(ReadError::new(
-                Location::file(file),
-                ReadErrorKind::NoReadings,
-            ));
+            return Err(ReadError::new(place.whole(), ReadErrorKind::NoReadings));
         }
         let targets = distinct_sorted(raw.iter().map(|r| r.target), f64::total_cmp);
         let run_labels = distinct_sorted(raw.iter().map(|r| r.run), u32::cmp);
-        let cells = Cells::index(&raw, &targets, &run_labels, kind, file)?;
-        cells.check_complete(&raw, &targets, &run_labels, kind, file)?;
+        let cells = Cells::index(&raw, &targets, &run_labels, kind, place)?;
+        cells.check_complete(&raw, &targets, &run_labels, kind, place)?;
 
         // Every (target, direction) has its n distinct runs: the grid has one cell per reading.
         let (m, n) = (targets.len(), run_labels.len());
@@ -206,7 +221,7 @@ impl Cells {
         targets: &[f64],
         run_labels: &[u32],
         kind: AxisKind,
-        file: &str,
+        place: &Place,
     ) -> Result<Cells, ReadError> {
         let target_index = |t: f64| {
             targets
@@ -223,7 +238,7 @@ impl Cells {
             let d = r.direction.index();
             if let Some(first_line) = seen.insert((i, d, j), r.line) {
                 return Err(ReadError::new(
-                    Location::line(file, r.line),
+                    place.line(r.line),
                     ReadErrorKind::DuplicateReading {
                         target: fmt_target(kind, r.target),
                         direction: r.direction.name().into(),
@@ -246,7 +261,7 @@ impl Cells {
         targets: &[f64],
         run_labels: &[u32],
         kind: AxisKind,
-        file: &str,
+        place: &Place,
     ) -> Result<(), ReadError> {
         let n = run_labels.len();
         for (i, &target) in targets.iter().enumerate() {
@@ -261,7 +276,7 @@ impl Cells {
                     .map(|(r, _)| r)
             };
             let first_line = at_target().next().map_or(0, |r| r.line);
-            let location = Location::line(file, first_line);
+            let location = place.line(first_line);
             if up == 0 || down == 0 {
                 let present = if up == 0 { "down" } else { "up" };
                 return Err(ReadError::new(
@@ -335,50 +350,96 @@ pub fn fmt_target(kind: AxisKind, position: f64) -> String {
     format!("{} {}", fmt_position(position), kind.position_unit())
 }
 
-/// The layouts axcheck reads.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Format {
-    /// One row per reading with unit-carrying column names.
-    LongCsv,
-    /// `KEY=VALUE` lines with `TGT_DATA[i]`, `REF_DATA_FWD[i,j]`, `REF_DATA_BWD[i,j]`.
-    KeyValue,
+/// Largest workbook read: a positioning test's book is a few hundred kB.
+pub const MAX_BOOK_BYTES: usize = 16 << 20;
+
+/// Reads a measurement in any layout from `reader`, choosing the layout by content; a
+/// workbook's first sheet.
+pub fn read<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadError> {
+    read_sheet(reader, file, None)
 }
 
-/// Chooses the layout from the content: the first line that is neither blank nor a
-/// comment decides (`NAME=…` or `NAME[…]=…` means key=value).
-pub fn detect_format(head: &[u8]) -> Format {
-    let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(head);
-    for line in head.split(|&b| b == b'\n') {
-        let line = line.trim_ascii();
-        if line.is_empty() || line.starts_with(b"#") {
-            continue;
-        }
-        return if keyvalue::looks_like_key_value(line) {
-            Format::KeyValue
-        } else {
-            Format::LongCsv
-        };
-    }
-    Format::LongCsv
-}
-
-/// Reads a measurement in either layout from `reader`, choosing the layout by content.
-pub fn read<R: BufRead>(mut reader: R, file: &str) -> Result<AxisData, ReadError> {
+/// Reads a measurement in any layout from `reader`, choosing the layout by content;
+/// `sheet` names the sheet of a workbook (the first when `None`; an error for a file that
+/// is not a workbook).
+pub fn read_sheet<R: BufRead>(
+    mut reader: R,
+    file: &str,
+    sheet: Option<&str>,
+) -> Result<ReadTest, ReadError> {
     let head = reader
         .fill_buf()
         .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
-    match detect_format(head) {
-        Format::LongCsv => csv::parse(reader, file),
-        Format::KeyValue => keyvalue::parse(reader, file),
+    let how = layout::recognise(head).map_err(|kind| ReadError::new(Location::file(file), kind))?;
+    let text_layout = match how {
+        layout::Reader::Book => {
+            let limit = MAX_BOOK_BYTES;
+            let bytes = read_all(
+                reader,
+                limit,
+                file,
+                ReadErrorKind::BookTooLarge {
+                    limit_mib: limit >> 20,
+                },
+            )?;
+            return xlsx::read(&bytes, file, sheet);
+        }
+        layout::Reader::KeyValue => Layout::KeyValue,
+        layout::Reader::Table(TableKind::Long) => Layout::LongCsv,
+        layout::Reader::Table(TableKind::Wide) => Layout::WideCsv,
+    };
+    if let Some(sheet) = sheet {
+        let kind = ReadErrorKind::SheetOfText {
+            sheet: sheet.to_string(),
+            layout: text_layout.name(),
+        };
+        return Err(ReadError::new(Location::file(file), kind));
     }
+    let (data, notes) = match text_layout {
+        Layout::KeyValue => keyvalue::read(reader, file)?,
+        Layout::WideCsv => wide::read(reader, file)?,
+        _ => csv::read(reader, file)?,
+    };
+    Ok(ReadTest {
+        data,
+        recognised: Recognised {
+            layout: text_layout,
+            notes,
+        },
+    })
+}
+
+/// The whole of `reader`, refused with `too_large` past `limit` bytes (for the readers
+/// that need all of a file in memory).
+pub(crate) fn read_all<R: std::io::Read>(
+    reader: R,
+    limit: usize,
+    file: &str,
+    too_large: ReadErrorKind,
+) -> Result<Vec<u8>, ReadError> {
+    use std::io::Read;
+    let mut bytes = Vec::new();
+    reader
+        .take(limit as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
+    if bytes.len() > limit {
+        return Err(ReadError::new(Location::file(file), too_large));
+    }
+    Ok(bytes)
 }
 
 /// Opens and reads a measurement file (the one place this module touches the file system):
-/// a regular file only, refused when it changes while it is read ([`crate::files`]).
-pub fn read_file(path: &Path) -> Result<AxisData, ReadError> {
+/// a regular file only, refused when it changes while it is read ([`crate::files`]);
+/// `sheet` as in [`read_sheet`].
+pub fn read_file(path: &Path, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
     let name = path.display().to_string();
     crate::files::read_with(path, |file| {
-        read(std::io::BufReader::with_capacity(64 * 1024, file), &name)
+        read_sheet(
+            std::io::BufReader::with_capacity(64 * 1024, file),
+            &name,
+            sheet,
+        )
     })
     .map_err(|e| ReadError::new(Location::file(&name), ReadErrorKind::Io(e.to_string())))?
 }
@@ -478,17 +539,6 @@ pub(crate) enum NumberError {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn detects_layout_by_content() {
-        assert_eq!(detect_format(b"# c\nUNIT=mm\n"), Format::KeyValue);
-        assert_eq!(detect_format(b"TGT_DATA[1]=3\n"), Format::KeyValue);
-        assert_eq!(
-            detect_format(b"\xEF\xBB\xBFtarget_mm,direction,run,deviation_um\n"),
-            Format::LongCsv
-        );
-        assert_eq!(detect_format(b""), Format::LongCsv);
-    }
 
     #[test]
     fn numbers() {

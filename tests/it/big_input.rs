@@ -121,7 +121,7 @@ fn assert_refused(path: &Path, message: &str) -> usize {
     let (code, _, stderr) = axcheck(&["eval", path.to_str().unwrap()]);
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains(message), "want `{message}` in: {stderr}");
-    let (result, peak) = peak_allocated(|| measurement::read_file(path));
+    let (result, peak) = peak_allocated(|| measurement::read_file(path, None));
     let e = result.expect_err("the big file is refused");
     assert!(e.to_string().contains(message), "{e}");
     assert!(

@@ -10,7 +10,9 @@ pub fn data_path(name: &str) -> PathBuf {
 }
 
 pub fn load(name: &str) -> AxisData {
-    measurement::read_file(&data_path(name)).unwrap_or_else(|e| panic!("{e}"))
+    measurement::read_file(&data_path(name), None)
+        .map(|t| t.data)
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 pub fn assert_close(what: &str, got: f64, want: f64, tol: f64) {

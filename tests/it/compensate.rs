@@ -258,10 +258,12 @@ fn a_campaign_axis_sets_its_table_grid() {
 /// one at 280°.
 #[test]
 fn a_rotary_axis_over_a_turn_gets_a_modulo_table() {
-    let data = axcheck::measurement::read_file(std::path::Path::new(
-        "tests/data/compensation/rotary-three-turns.csv",
-    ))
-    .unwrap();
+    let data = axcheck::measurement::read_file(
+        std::path::Path::new("tests/data/compensation/rotary-three-turns.csv"),
+        None,
+    )
+    .unwrap()
+    .data;
     assert_eq!(data.measurement_travel(), (0.0, 1080.0));
     let flags = [
         ("siemens-840d", "$AA_ENC_COMP_IS_MODULO[0,AX1]=1"),

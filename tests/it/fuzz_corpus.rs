@@ -54,3 +54,13 @@ fn campaign_corpus() {
 fn spec_corpus() {
     replay("spec", targets::spec);
 }
+
+#[test]
+fn wide_corpus() {
+    replay("wide", targets::wide);
+}
+
+#[test]
+fn xlsx_corpus() {
+    replay("xlsx", targets::xlsx);
+}

@@ -19,6 +19,7 @@ mod history;
 #[cfg(unix)]
 mod hostile_fs;
 mod iso230_2;
+mod layouts;
 mod outputs;
 mod properties;
 mod report_compensation;

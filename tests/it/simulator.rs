@@ -84,7 +84,7 @@ fn written_file_reads_back_identically() {
     let sim = simulation(8.0, 3.0, 0.7, 5);
     let data = sim.run(5);
     let text = csv::write(&data, &["test".into()]);
-    let back = measurement::read(text.as_bytes(), "sim.csv").unwrap();
+    let back = measurement::read(text.as_bytes(), "sim.csv").unwrap().data;
     assert_eq!(back.targets, data.targets);
     assert_eq!(back.run_labels, data.run_labels);
     for i in 0..data.target_count() {

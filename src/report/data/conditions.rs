@@ -65,8 +65,21 @@ pub(super) fn condition_rows(c: &Conditions, kind: AxisKind, t: &AxisTest) -> Ve
         ("Air (start → end)", c.air.as_ref().map(air)),
         ("Pressure of air or oil", c.fluid_pressure.clone()),
         ("Approaches per direction", approaches),
+        (
+            "Measurement file read as",
+            t.recognised.as_ref().map(read_as),
+        ),
         ("Notes", c.notes.clone()),
     ])
+}
+
+/// The layout the file was read as, then what was assumed or skipped: `wide CSV; 11
+/// targets × 5 runs per direction; order of measurement assumed: …`.
+fn read_as(r: &crate::measurement::Recognised) -> String {
+    std::iter::once(r.layout.name())
+        .chain(r.notes.iter().cloned())
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// The instrument's name with its serial number, and where it stood. An instrument block

@@ -1,0 +1,340 @@
+//! The table the long and the wide layouts are read from, whether it comes from CSV text
+//! or from a workbook's sheet: rows of fields, each the text as written (a CSV field, a
+//! sheet's text cell) or a number (a sheet's numeric cell, taken as stored, never through
+//! a locale's text), each with its place for errors (`file:line:column`, or the sheet and
+//! cell).
+
+use super::error::{Location, ReadError, ReadErrorKind};
+use super::{AxisData, Lines, NumberError, parse_number};
+use std::io::BufRead;
+
+/// What one field holds.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Value {
+    /// Text as written (trimmed when read as a number or a name).
+    Text(String),
+    /// A sheet's numeric cell.
+    Number(f64),
+    /// A sheet's cell that is neither text nor a number (a date, a truth value, an error
+    /// such as `#DIV/0!`): what it is, for messages.
+    Other(String),
+    /// Nothing (a sheet's empty cell inside the table).
+    Empty,
+}
+
+impl Value {
+    /// The field as a column name: trimmed, lower case.
+    pub(crate) fn name(&self) -> String {
+        match self {
+            Value::Text(t) => t.trim().to_ascii_lowercase(),
+            Value::Number(x) => crate::units::fmt_position(*x),
+            Value::Other(what) => what.clone(),
+            Value::Empty => String::new(),
+        }
+    }
+
+    /// The field as shown in messages.
+    pub(crate) fn shown(&self) -> String {
+        match self {
+            Value::Text(t) => t.trim().to_string(),
+            other => other.name(),
+        }
+    }
+
+    /// True for an empty cell or blank text.
+    pub(crate) fn is_blank(&self) -> bool {
+        match self {
+            Value::Text(t) => t.trim().is_empty(),
+            Value::Empty => true,
+            _ => false,
+        }
+    }
+}
+
+/// One field with its 1-based column: the character column of a CSV line, the column of
+/// a sheet (A = 1).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Field {
+    pub column: usize,
+    pub value: Value,
+}
+
+/// One row: its 1-based line (CSV) or row (sheet) and its fields, one per header column.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Row {
+    pub number: usize,
+    pub fields: Vec<Field>,
+}
+
+/// Where a table comes from: the file (and sheet) errors name, and whether text numbers
+/// may use a decimal comma.
+#[derive(Debug, Clone)]
+pub(crate) struct Place {
+    pub file: String,
+    pub sheet: Option<String>,
+    pub decimal_comma: bool,
+}
+
+impl Place {
+    pub(crate) fn text(file: &str, decimal_comma: bool) -> Place {
+        Place {
+            file: file.to_string(),
+            sheet: None,
+            decimal_comma,
+        }
+    }
+
+    /// A sheet: its text cells hold numbers with a decimal point only (`1,234` could be a
+    /// thousands separator).
+    pub(crate) fn sheet(file: &str, sheet: &str) -> Place {
+        Place {
+            file: file.to_string(),
+            sheet: Some(sheet.to_string()),
+            decimal_comma: false,
+        }
+    }
+
+    fn located(&self, location: Location) -> Location {
+        match &self.sheet {
+            Some(sheet) => location.in_sheet(sheet),
+            None => location,
+        }
+    }
+
+    pub(crate) fn whole(&self) -> Location {
+        self.located(Location::file(&self.file))
+    }
+
+    pub(crate) fn line(&self, number: usize) -> Location {
+        self.located(Location::line(&self.file, number))
+    }
+
+    pub(crate) fn at(&self, number: usize, column: usize) -> Location {
+        self.located(Location::at(&self.file, number, column))
+    }
+
+    /// `line 7` in a text file, `row 7` in a sheet.
+    pub(crate) fn line_word(&self, number: usize) -> String {
+        match self.sheet {
+            Some(_) => format!("row {number}"),
+            None => format!("line {number}"),
+        }
+    }
+
+    pub(crate) fn error(&self, number: usize, column: usize, kind: ReadErrorKind) -> ReadError {
+        ReadError::new(self.at(number, column), kind)
+    }
+
+    /// The number in `field` of row `number`, or an error naming its `column`.
+    pub(crate) fn number(
+        &self,
+        number: usize,
+        field: &Field,
+        column: &str,
+    ) -> Result<f64, ReadError> {
+        let column = column.to_string();
+        let kind = match &field.value {
+            Value::Number(x) if x.is_finite() => return Ok(*x),
+            Value::Number(x) => ReadErrorKind::NonFinite {
+                column,
+                found: x.to_string(),
+            },
+            Value::Text(t) if t.trim().is_empty() => ReadErrorKind::EmptyCell { column },
+            Value::Text(t) => match parse_number(t, self.decimal_comma) {
+                Ok(x) => return Ok(x),
+                Err(NumberError::NotANumber) => ReadErrorKind::NotANumber {
+                    column,
+                    found: t.trim().to_string(),
+                },
+                Err(NumberError::NonFinite) => ReadErrorKind::NonFinite {
+                    column,
+                    found: t.trim().to_string(),
+                },
+            },
+            Value::Other(what) => ReadErrorKind::WrongCellType {
+                column,
+                found: what.clone(),
+            },
+            Value::Empty => ReadErrorKind::EmptyCell { column },
+        };
+        Err(self.error(number, field.column, kind))
+    }
+}
+
+/// A reader of one table layout, fed its header and then its rows in order.
+pub(crate) trait TableReader: Sized {
+    /// The layout's columns from the header row, or why the header is wrong.
+    fn from_header(header: &Row, place: &Place) -> Result<Self, ReadError>;
+    /// One data row.
+    fn add(&mut self, row: &Row, place: &Place) -> Result<(), ReadError>;
+    /// The validated test and what was assumed in reading it.
+    fn finish(self, place: &Place) -> Result<(AxisData, Vec<String>), ReadError>;
+}
+
+/// Which table a header row announces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum TableKind {
+    /// One row per reading ([`super::csv`]).
+    Long,
+    /// One row per target, a column per run and direction ([`super::wide`]).
+    Wide,
+}
+
+impl TableKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            TableKind::Long => "long table",
+            TableKind::Wide => "wide table",
+        }
+    }
+}
+
+/// The table a header announces: wide when a column is named `up_…`/`down_…`, or when it
+/// starts with the target and has no column of the long layout; long when a column is
+/// (or nearly is) one of the long layout's; else none.
+pub(crate) fn table_kind(names: &[String]) -> Option<TableKind> {
+    let first_is_target = names
+        .first()
+        .is_some_and(|n| n.starts_with("target_") || n == "target");
+    let has_long_column = names
+        .iter()
+        .any(|n| n != "target" && !n.starts_with("target_") && super::csv::is_long_column(n));
+    if names.iter().any(|n| super::wide::is_run_column(n)) || (first_is_target && !has_long_column)
+    {
+        Some(TableKind::Wide)
+    } else if names.iter().any(|n| super::csv::is_long_column(n)) {
+        Some(TableKind::Long)
+    } else {
+        None
+    }
+}
+
+/// Reads a CSV table of layout `T`: the header is the first line that is neither blank nor
+/// a `#` comment; its separator (`,`, `;` or tab) holds for every line, and with `;` or
+/// tab a decimal comma is read. Returns the test and what was assumed or skipped.
+pub(crate) fn read_text<T: TableReader, R: BufRead>(
+    reader: R,
+    file: &str,
+) -> Result<(AxisData, Vec<String>), ReadError> {
+    let mut lines = Lines::new(reader, file);
+    let mut comments = 0usize;
+    let (header_line, header) = loop {
+        match lines.next_line()? {
+            None => return Err(ReadError::new(Location::file(file), ReadErrorKind::Empty)),
+            Some((_, text)) if text.trim().is_empty() => {}
+            Some((_, text)) if text.trim_start().starts_with('#') => comments += 1,
+            Some((number, text)) => break (number, text.to_string()),
+        }
+    };
+    let sep = super::csv::detect_separator(&header);
+    let place = Place::text(file, sep != ',');
+    let header_row = text_row(&header, sep, header_line);
+    let mut table = T::from_header(&header_row, &place)?;
+    let width = header_row.fields.len();
+    let mut rows = 0usize;
+    while let Some((number, text)) = lines.next_line()? {
+        let trimmed = text.trim();
+        if trimmed.is_empty() {
+            continue;
+        }
+        if trimmed.starts_with('#') {
+            comments += 1;
+            continue;
+        }
+        let row = text_row(text, sep, number);
+        if row.fields.len() != width {
+            let found = row.fields.len();
+            let kind = ReadErrorKind::FieldCount {
+                expected: width,
+                found,
+            };
+            return Err(place.error(number, 1, kind));
+        }
+        table.add(&row, &place)?;
+        rows += 1;
+    }
+    if rows == 0 {
+        return Err(ReadError::new(
+            place.line(header_line),
+            ReadErrorKind::NoReadings,
+        ));
+    }
+    let (data, table_notes) = table.finish(&place)?;
+    let mut notes = Vec::new();
+    match sep {
+        ';' => notes.push("separator `;`, decimal comma or point".to_string()),
+        '\t' => notes.push("separator tab, decimal comma or point".to_string()),
+        _ => {}
+    }
+    if comments > 0 {
+        let s = if comments == 1 { "" } else { "s" };
+        notes.push(format!("{comments} comment line{s} (#) skipped"));
+    }
+    notes.extend(table_notes);
+    Ok((data, notes))
+}
+
+/// A CSV line as a row of text fields.
+fn text_row(text: &str, sep: char, number: usize) -> Row {
+    Row {
+        number,
+        fields: super::csv::split_fields(text, sep)
+            .into_iter()
+            .map(|(column, text)| Field {
+                column,
+                value: Value::Text(text),
+            })
+            .collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn names(list: &[&str]) -> Vec<String> {
+        list.iter().map(|s| s.to_string()).collect()
+    }
+
+    #[test]
+    fn header_kinds() {
+        let long = names(&["target_mm", "direction", "run", "deviation_um"]);
+        assert_eq!(table_kind(&long), Some(TableKind::Long));
+        let wide = names(&["target_mm", "up_1_um", "down_1_um"]);
+        assert_eq!(table_kind(&wide), Some(TableKind::Wide));
+        // A typo in a run column still reads as wide, so its reader can name the typo.
+        let typo = names(&["target_deg", "up1_arcsec", "down_1_arcsec"]);
+        assert_eq!(table_kind(&typo), Some(TableKind::Wide));
+        let only_target = names(&["target_mm", "up1"]);
+        assert_eq!(table_kind(&only_target), Some(TableKind::Wide));
+        let long_typo = names(&["target_mm", "direction", "run", "deviaton_um"]);
+        assert_eq!(table_kind(&long_typo), Some(TableKind::Long));
+        assert_eq!(table_kind(&names(&["name", "age"])), None);
+        assert_eq!(table_kind(&[]), None);
+    }
+
+    #[test]
+    fn numbers_from_text_and_cells() {
+        let place = Place::sheet("b.xlsx", "S");
+        let field = |value| Field { column: 3, value };
+        assert_eq!(place.number(7, &field(Value::Number(1.5)), "x"), Ok(1.5));
+        assert_eq!(
+            place.number(7, &field(Value::Text(" 2.5 ".into())), "x"),
+            Ok(2.5)
+        );
+        let e = place
+            .number(7, &field(Value::Text("1,5".into())), "up_1_um")
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "b.xlsx, sheet \"S\", cell C7: column `up_1_um`: expected a number, found `1,5`"
+        );
+        let e = place.number(7, &field(Value::Empty), "x").unwrap_err();
+        assert!(e.to_string().contains("the cell is empty"), "{e}");
+        let e = place
+            .number(7, &field(Value::Other("the error #DIV/0!".into())), "x")
+            .unwrap_err();
+        assert!(e.to_string().ends_with("found the error #DIV/0!"), "{e}");
+    }
+}
