@@ -33,6 +33,9 @@ pub struct AxisTest {
     pub error: Option<String>,
     /// The layout the measurement file was read as and what was assumed or skipped.
     pub recognised: Option<Recognised>,
+    /// The test conditions taken from the measurement file where the campaign gives
+    /// none (e.g. "air temperature, pressure and humidity"; see `AxisSpec::completed_by`).
+    pub conditions_from_file: Vec<&'static str>,
     pub data: Option<AxisData>,
     pub evaluation: Option<Evaluation>,
     pub judgement: Option<Judgement>,
@@ -286,6 +289,7 @@ impl Slot {
             verdict,
             error,
             recognised: None,
+            conditions_from_file: Vec::new(),
             data: None,
             evaluation: None,
             judgement: None,
@@ -428,6 +432,13 @@ fn run_test(
             ..slot.error(message)
         };
     }
+    // The file's own conditions (a Renishaw ENVIRONMENT) fill what the campaign leaves out.
+    let completed = (recognised.info.as_ref())
+        .and_then(|info| axis.completed_by(info))
+        .map(|(spec, taken)| (Arc::new(spec), taken));
+    let from_file = completed.as_ref().map_or(Vec::new(), |(_, t)| t.clone());
+    let spec_arc = completed.map(|(s, _)| s);
+    let axis: &AxisSpec = spec_arc.as_deref().unwrap_or(axis);
     let (data, nde) = apply_nde(axis, data);
     let findings = rules::check(&plan_context(axis), &data);
     let evaluation = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
@@ -499,8 +510,13 @@ fn run_test(
             };
             crate::compensate::compensation(c, &data, axis.standard, &settings, diagnosis)
         });
+    let mut slot = slot;
+    if let Some(spec) = spec_arc {
+        slot.spec = Some(spec);
+    }
     AxisTest {
         recognised: Some(recognised),
+        conditions_from_file: from_file,
         diagnosis,
         compensation,
         uncertainty: Some(uncertainty),

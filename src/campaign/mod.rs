@@ -5,6 +5,7 @@
 //! campaign is still evaluated. Every error names the campaign file, line and column.
 
 pub mod data;
+mod file_info;
 mod load;
 pub mod model;
 pub mod paths;

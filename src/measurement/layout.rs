@@ -2,14 +2,14 @@
 //! its extension alone), and what was assumed or skipped in reading it.
 //!
 //! [`recognise`] looks at the file's first bytes: a ZIP archive is a workbook
-//! ([`super::xlsx`]); otherwise the first line that is neither blank nor a `#` comment
+//! ([`super::xlsx`]), a first line `HEADER::` a Renishaw laser file
+//! ([`super::renishaw`]); otherwise the first line that is neither blank nor a `#` comment
 //! decides: `KEY=VALUE` is the ecmc layout ([`super::keyvalue`]), a header naming the
 //! long layout's columns is the long CSV ([`super::csv`]), one naming `up_J_UNIT` /
 //! `down_J_UNIT` columns after the target is the wide CSV ([`super::wide`]). A file none
 //! of them recognises is refused with what each tried and the line that failed it.
 //!
-//! A reader that needs the whole file in memory (a workbook; the Renishaw `.rtl`/`.rta`
-//! reader of issue 17) plugs in as a [`Reader`] variant: a check on the head in
+//! A reader that needs the whole file in memory (a workbook, a Renishaw file) plugs in as a [`Reader`] variant: a check on the head in
 //! [`recognise`] before the text layouts, a line in [`tried`], and an arm in
 //! [`super::read_sheet`] that reads the bytes with [`super::read_all`] and returns its
 //! [`Layout`] with its notes.
@@ -68,6 +68,9 @@ impl Layout {
 pub struct Recognised {
     pub layout: Layout,
     pub notes: Vec<String>,
+    /// What the file says of its test beyond the readings (Renishaw USER-TEXT and
+    /// ENVIRONMENT), when it says anything.
+    pub info: Option<super::FileInfo>,
 }
 
 impl Serialize for Recognised {
@@ -83,6 +86,8 @@ impl Serialize for Recognised {
             #[serde(skip_serializing_if = "Option::is_none")]
             table: Option<TableKind>,
             notes: &'a [String],
+            #[serde(skip_serializing_if = "Option::is_none")]
+            file_info: Option<&'a super::FileInfo>,
         }
         let (sheet, table) = match &self.layout {
             Layout::Xlsx { sheet, table } => (Some(sheet.as_str()), Some(*table)),
@@ -94,6 +99,7 @@ impl Serialize for Recognised {
             sheet,
             table,
             notes: &self.notes,
+            file_info: self.info.as_ref(),
         }
         .serialize(serializer)
     }
@@ -114,6 +120,8 @@ pub(crate) enum Reader {
     KeyValue,
     /// A CSV table, long or wide.
     Table(TableKind),
+    /// A Renishaw `.rtl`/`.rta` file, read whole.
+    Renishaw,
 }
 
 /// The first bytes of a ZIP archive (an XLSX or ODS workbook) and of an OLE2 compound
@@ -125,6 +133,9 @@ pub(crate) const OLE_MAGIC: &[u8] = b"\xD0\xCF\x11\xE0\xA1\xB1\x1A\xE1";
 pub(crate) fn recognise(head: &[u8]) -> Result<Reader, ReadErrorKind> {
     if head.starts_with(ZIP_MAGIC) || head.starts_with(OLE_MAGIC) {
         return Ok(Reader::Book);
+    }
+    if super::renishaw::looks_like(head) {
+        return Ok(Reader::Renishaw);
     }
     let Some((number, line)) = first_content_line(head) else {
         // Blank or comments only: the long CSV reader says the file is empty.
@@ -157,6 +168,7 @@ fn tried(number: usize, text: Option<&str>) -> String {
     };
     [
         "XLSX workbook: the file does not start as a ZIP archive (PK\\x03\\x04)".to_string(),
+        "Renishaw .rtl/.rta: the first line is not `HEADER::`".to_string(),
         format!("ecmc key=value: {line} is not KEY=VALUE"),
         format!("long CSV: {line} names none of target_mm|target_deg, direction, run, deviation_um …"),
         format!(
@@ -231,6 +243,7 @@ mod tests {
         let r = Recognised {
             layout: sheet,
             notes: vec!["n".into()],
+            info: None,
         };
         assert_eq!(
             serde_json::to_string(&r).unwrap(),

@@ -7,6 +7,7 @@
 
 pub mod csv;
 pub mod error;
+pub mod info;
 pub mod keyvalue;
 pub mod layout;
 pub mod renishaw;
@@ -15,6 +16,7 @@ pub mod wide;
 pub mod xlsx;
 
 pub use error::{Location, ReadError, ReadErrorKind};
+pub use info::FileInfo;
 pub use layout::{Layout, ReadTest, Recognised};
 use table::Place;
 pub use table::TableKind;
@@ -384,17 +386,15 @@ pub fn read_sheet<R: BufRead>(
             )?;
             return xlsx::read(&bytes, file, sheet);
         }
+        layout::Reader::Renishaw => {
+            refuse_sheet(sheet, Layout::RenishawRtl, file)?;
+            return read_renishaw(reader, file);
+        }
         layout::Reader::KeyValue => Layout::KeyValue,
         layout::Reader::Table(TableKind::Long) => Layout::LongCsv,
         layout::Reader::Table(TableKind::Wide) => Layout::WideCsv,
     };
-    if let Some(sheet) = sheet {
-        let kind = ReadErrorKind::SheetOfText {
-            sheet: sheet.to_string(),
-            layout: text_layout.name(),
-        };
-        return Err(ReadError::new(Location::file(file), kind));
-    }
+    refuse_sheet(sheet, text_layout.clone(), file)?;
     let (data, notes) = match text_layout {
         Layout::KeyValue => keyvalue::read(reader, file)?,
         Layout::WideCsv => wide::read(reader, file)?,
@@ -405,6 +405,40 @@ pub fn read_sheet<R: BufRead>(
         recognised: Recognised {
             layout: text_layout,
             notes,
+            info: None,
+        },
+    })
+}
+
+/// A sheet named for a file that is not a workbook is an error, not ignored.
+fn refuse_sheet(sheet: Option<&str>, layout: Layout, file: &str) -> Result<(), ReadError> {
+    match sheet {
+        None => Ok(()),
+        Some(sheet) => {
+            let kind = ReadErrorKind::SheetOfText {
+                sheet: sheet.to_string(),
+                layout: layout.name(),
+            };
+            Err(ReadError::new(Location::file(file), kind))
+        }
+    }
+}
+
+/// A Renishaw `.rtl`/`.rta` file: read whole (it is small), its USER-TEXT and
+/// ENVIRONMENT kept as the file's [`FileInfo`].
+fn read_renishaw<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadError> {
+    let test = renishaw::read(reader, file)?;
+    let info = Some(test.info()).filter(|i| !i.is_empty());
+    let layout = match test.rotary {
+        true => Layout::RenishawRta,
+        false => Layout::RenishawRtl,
+    };
+    Ok(ReadTest {
+        data: test.data,
+        recognised: Recognised {
+            layout,
+            notes: test.notes,
+            info,
         },
     })
 }

@@ -104,6 +104,7 @@ pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<Read
         recognised: Recognised {
             layout: Layout::Xlsx { sheet: name, table },
             notes,
+            info: None,
         },
     })
 }

@@ -23,6 +23,7 @@ mod layouts;
 mod outputs;
 mod properties;
 mod report_compensation;
+mod renishaw;
 mod reports;
 mod rules;
 mod simulator;

@@ -54,6 +54,7 @@ pub use environment::{Environment, MaterialSensor, StartEnd};
 pub use header::Header;
 pub use user_text::UserText;
 
+use super::info::{FileInfo, MaterialReading};
 use super::error::{Location, ReadError, ReadErrorKind};
 use super::{AxisData, MAX_READINGS};
 use crate::units::AxisKind;
@@ -97,6 +98,44 @@ pub struct OtherSection {
     pub line: usize,
     /// The non-blank lines, trimmed.
     pub lines: Vec<String>,
+}
+
+impl RenishawTest {
+    /// USER-TEXT and ENVIRONMENT as the campaign-independent [`FileInfo`]; pressure from
+    /// hPa back to the campaigns' kPa, the start/end means for pressure and humidity
+    /// (a campaign's `air:` has one value of each).
+    pub fn info(&self) -> FileInfo {
+        let u = &self.user_text;
+        let e = self.environment.clone().unwrap_or_default();
+        FileInfo {
+            machine: u.machine.clone(),
+            serial: u.serial.clone(),
+            date: u.date.clone(),
+            operator: u.operator.clone(),
+            axis: u.axis.clone(),
+            location: u.location.clone(),
+            air_temperature_start_c: e.air_temp_c.start,
+            air_temperature_end_c: e.air_temp_c.end,
+            // To the compensators' resolution: 0.01 kPa, 0.1 %RH (more digits would be noise).
+            air_pressure_kpa: e.air_pressure_hpa.mean().map(|hpa| round(hpa / 10.0, 100.0)),
+            air_humidity_pct: e.air_humidity_percent.mean().map(|h| round(h, 10.0)),
+            material_sensors: e
+                .material_temps_c
+                .iter()
+                .map(|s| MaterialReading {
+                    name: format!("Renishaw material sensor {}", s.sensor),
+                    start_c: s.temp_c.start,
+                    end_c: s.temp_c.end,
+                })
+                .collect(),
+            expansion_um_per_m_c: e.expansion_ppm_per_c,
+        }
+    }
+}
+
+/// `x` to the nearest 1/`per`.
+fn round(x: f64, per: f64) -> f64 {
+    (x * per).round() / per
 }
 
 /// True when the bytes start like a Renishaw file: the first non-blank line is
@@ -191,10 +230,10 @@ pub fn parse(bytes: &[u8], file: &str) -> Result<RenishawTest, ReadError> {
 fn summary(data: &AxisData, targets: &targets::Targets, run_count: usize, rotary: bool) -> String {
     let layout = if rotary {
         format!(
-            "Renishaw .rta (rotary): targets in degrees, deviations in mrad converted to arcsec (1 mrad = {ARCSEC_PER_MRAD:.3}″; units of .rta inferred from third-party readers)"
+            "targets in degrees, deviations in mrad converted to arcsec (1 mrad = {ARCSEC_PER_MRAD:.3}″; units of .rta inferred from third-party readers)"
         )
     } else {
-        "Renishaw .rtl (linear): targets in mm, deviations in µm".to_string()
+        "targets in mm, deviations in µm".to_string()
     };
     let listed = match targets.per_line {
         Some(k) if targets.positions.len() > k => format!(" listed {k} per line"),

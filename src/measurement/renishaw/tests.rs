@@ -211,7 +211,7 @@ fn linear_rtl_with_crlf_windows_1252_and_environment_equals_the_long_csv() {
     assert_eq!(
         test.notes,
         [
-            "Renishaw .rtl (linear): targets in mm, deviations in µm; 11 targets listed 5 per line; 10 runs read as 5 cycles, odd runs up (↑) and even runs down (↓)",
+            "targets in mm, deviations in µm; 11 targets listed 5 per line; 10 runs read as 5 cycles, odd runs up (↑) and even runs down (↓)",
             "ENVIRONMENT:: states no units: read as °C, kPa (converted to hPa), % relative humidity and ppm/°C",
             "ENVIRONMENT:: Mat temp 2, 3 read −10 °C at start and end: taken as no sensor fitted",
             "the text is not UTF-8: read as Windows-1252 (letters in the user text may be wrong if the laser PC used another code page)",
@@ -243,7 +243,7 @@ fn linear_rtl_with_lf_utf8_and_equipment_equals_the_long_csv() {
     assert_eq!(
         test.notes,
         [
-            "Renishaw .rtl (linear): targets in mm, deviations in µm; 11 targets listed 4 per line; 10 runs read as 5 cycles, odd runs up (↑) and even runs down (↓)",
+            "targets in mm, deviations in µm; 11 targets listed 4 per line; 10 runs read as 5 cycles, odd runs up (↑) and even runs down (↓)",
             &format!(
                 "section EQUIPMENT:: (line {}, 2 lines) kept but not used",
                 line_of(&rtl.bytes(), "EQUIPMENT::")
@@ -312,7 +312,7 @@ fn rotary_rta_in_mrad_equals_the_long_csv_in_arcsec() {
     // −0.012 mrad at target 1, run 1: −0.012 × 206.264806… = −2.4752″.
     assert!((test.data.deviation(0, Direction::Up, 0) - -2.475_177_675).abs() < 1e-9);
     assert!(test.notes[0].starts_with(
-        "Renishaw .rta (rotary): targets in degrees, deviations in mrad converted to arcsec (1 mrad = 206.265″;"
+        "targets in degrees, deviations in mrad converted to arcsec (1 mrad = 206.265″;"
     ));
     assert!(
         test.notes[0].ends_with(

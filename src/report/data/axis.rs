@@ -12,6 +12,7 @@ use crate::judge::{Outcome, Verdict};
 use crate::report::diagnosis_data::{DiagnosisSection, diagnosis_section};
 use crate::rules::Finding;
 use crate::units::{Travel, fmt_position};
+use crate::measurement::FileInfo;
 use serde::Serialize;
 
 /// Everything `axis-report.typ` shows.
@@ -115,13 +116,30 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
         kind.map_or(String::new(), |k| format!(" ({k})"))
     );
     let test = (t.tests > 1).then(|| format!("{} of {} tests of this axis", t.test, t.tests));
+    // What the file says of itself fills what the campaign leaves out, marked as such.
+    let info = t.recognised.as_ref().and_then(|r| r.info.as_ref());
+    let file = |f: fn(&FileInfo) -> &Option<String>| {
+        info.and_then(|i| f(i).as_ref())
+            .map(|v| format!("{v} (measurement file)"))
+    };
+    let differs = |f: fn(&FileInfo) -> &Option<String>, campaign: &str| {
+        info.and_then(|i| f(i).clone()).filter(|v| v.trim() != campaign)
+    };
     Row::present([
         ("Machine", Some(m.id.clone())),
+        ("Machine in the file", differs(|i| &i.machine, &m.id)),
         ("Model", m.model.clone()),
-        ("Serial number", m.serial.clone()),
+        (
+            "Serial number",
+            m.serial.clone().or_else(|| file(|i| &i.serial)),
+        ),
         ("Type", m.machine_type.clone()),
-        ("Location", m.location.clone()),
+        (
+            "Location",
+            m.location.clone().or_else(|| file(|i| &i.location)),
+        ),
         ("Axis", Some(axis)),
+        ("Axis in the file", differs(|i| &i.axis, &t.axis)),
         ("Axis travel", travel),
         ("Measurement travel", measured),
         ("Measurement file", t.file.clone()),
@@ -131,8 +149,14 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
             "Acceptance spec",
             t.judgement.as_ref().map(|j| j.limits.describe()),
         ),
-        ("Test date", result.info.date.clone()),
-        ("Inspector", result.info.inspector.clone()),
+        (
+            "Test date",
+            result.info.date.clone().or_else(|| file(|i| &i.date)),
+        ),
+        (
+            "Inspector",
+            result.info.inspector.clone().or_else(|| file(|i| &i.operator)),
+        ),
     ])
 }
 

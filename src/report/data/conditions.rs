@@ -69,6 +69,10 @@ pub(super) fn condition_rows(c: &Conditions, kind: AxisKind, t: &AxisTest) -> Ve
             "Measurement file read as",
             t.recognised.as_ref().map(read_as),
         ),
+        (
+            "Taken from the measurement file",
+            (!t.conditions_from_file.is_empty()).then(|| t.conditions_from_file.join(", ")),
+        ),
         ("Notes", c.notes.clone()),
     ])
 }
