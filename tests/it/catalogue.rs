@@ -12,6 +12,56 @@ fn rows(extra: &str) -> String {
     )
 }
 
+/// A small Renishaw `.rtl` (2 targets, 2 cycles) with `target_count` on its line, these
+/// `deviations` lines (run, target, µm) and `end` after them.
+fn rtl(target_count: usize, deviations: &str, end: &str) -> Vec<u8> {
+    format!(
+        "HEADER::\nFile type : rtl\n\nTARGET DATA::\nTarget-count: {target_count}\nTargets :\n0.000000  100.000000 \nFlags: 0 0 2 0\n\nRUNS::\nRun-count:4\n\nDEVIATIONS::\n{deviations}\n{end}"
+    )
+    .into_bytes()
+}
+
+/// The deviations of [`rtl`]: even runs from the last target down.
+const RTL_RUNS: &str = "1 1 1.0\n1 2 2.0\n2 2 2.5\n2 1 1.5\n3 1 1.1\n3 2 2.1\n4 2 2.4\n4 1 1.4\n";
+
+/// Broken lab files: Renishaw `.rtl` and wide tables.
+fn broken_lab_files() -> Vec<(&'static str, Vec<u8>, &'static str)> {
+    let junk: Vec<u8> = (0..2048u32).map(|k| (k.wrapping_mul(40503) >> 7) as u8).collect();
+    vec![
+        ("cut-short.rtl", rtl(2, RTL_RUNS, ""), "without `EOF::`"),
+        (
+            "target-count.rtl",
+            rtl(3, RTL_RUNS, "EOF::\n"),
+            "Target-count says 3 but 2 targets follow",
+        ),
+        (
+            "missing-reading.rtl",
+            rtl(2, &RTL_RUNS.replace("3 2 2.1\n", ""), "EOF::\n"),
+            "run 3 has no reading at target 2 (100 mm)",
+        ),
+        (
+            "twice.rtl",
+            rtl(2, &format!("{RTL_RUNS}3 1 1.2\n"), "EOF::\n"),
+            "run 3 lists target 1 (0 mm) twice",
+        ),
+        (
+            "junk.rtl",
+            junk,
+            "Renishaw .rtl/.rta: the first line is not `HEADER::`",
+        ),
+        (
+            "wide-no-down.csv",
+            "target_mm,up_1_um,up_2_um\n0,1,2\n100,2,3\n".into(),
+            "down_1_um",
+        ),
+        (
+            "wide-text.csv",
+            "target_mm,up_1_um,down_1_um\n0,1,x\n100,2,3\n".into(),
+            "`x`",
+        ),
+    ]
+}
+
 /// (name, file content, what the error must say).
 fn broken_files() -> Vec<(&'static str, Vec<u8>, &'static str)> {
     let mut huge_line = HEADER.as_bytes().to_vec();
@@ -197,7 +247,8 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
     )
     .unwrap();
 
-    let files = broken_files();
+    let mut files = broken_files();
+    files.extend(broken_lab_files());
     let mut yaml = String::from(
         "campaign: {name: Catalogue, spec: general}\nmachines:\n  - id: GOOD\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n  - id: FILES\n    axes:\n",
     );
