@@ -13,6 +13,7 @@ mod cli;
 mod console;
 mod decision;
 mod diagnose;
+mod external;
 mod fuzz_corpus;
 mod gost27843;
 mod history;
