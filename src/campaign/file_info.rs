@@ -39,11 +39,13 @@ fn complete(c: &mut Conditions, info: &FileInfo) -> Vec<&'static str> {
             }));
         taken.push("material temperatures");
     }
-    if let Some(nde) = c.nde.as_mut().filter(|n| n.coefficient_um_per_m_c.is_none()) {
-        if let Some(alpha) = info.expansion_um_per_m_c {
-            nde.coefficient_um_per_m_c = Some(alpha);
-            taken.push("expansion coefficient");
-        }
+    let asked = c
+        .nde
+        .as_mut()
+        .filter(|n| n.coefficient_um_per_m_c.is_none());
+    if let (Some(nde), Some(alpha)) = (asked, info.expansion_um_per_m_c) {
+        nde.coefficient_um_per_m_c = Some(alpha);
+        taken.push("expansion coefficient");
     }
     taken
 }
@@ -99,7 +101,11 @@ mod tests {
         };
         let taken = complete(&mut c, &info());
         let air = c.air.unwrap();
-        assert_eq!(air.temperature_start_c, Some(19.8), "the campaign's value wins");
+        assert_eq!(
+            air.temperature_start_c,
+            Some(19.8),
+            "the campaign's value wins"
+        );
         assert_eq!(air.temperature_end_c, Some(20.9));
         assert_eq!(air.pressure_kpa, Some(101.2));
         assert_eq!(c.temperature_sensors.len(), 1);

@@ -26,7 +26,9 @@ const RTL_RUNS: &str = "1 1 1.0\n1 2 2.0\n2 2 2.5\n2 1 1.5\n3 1 1.1\n3 2 2.1\n4 
 
 /// Broken lab files: Renishaw `.rtl` and wide tables.
 fn broken_lab_files() -> Vec<(&'static str, Vec<u8>, &'static str)> {
-    let junk: Vec<u8> = (0..2048u32).map(|k| (k.wrapping_mul(40503) >> 7) as u8).collect();
+    let junk: Vec<u8> = (0..2048u32)
+        .map(|k| (k.wrapping_mul(40503) >> 7) as u8)
+        .collect();
     vec![
         ("cut-short.rtl", rtl(2, RTL_RUNS, ""), "without `EOF::`"),
         (

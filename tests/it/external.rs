@@ -31,7 +31,11 @@ fn every_real_file_is_read_by_the_layout_of_its_content() {
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert_eq!(read.recognised.layout, layout, "{}", path.display());
         let e = evaluate(&read.data, StandardId::Iso230_2);
-        assert!(e.parameters.iter().all(|p| p.value.is_finite() || read.data.runs() < 2));
+        assert!(
+            e.parameters
+                .iter()
+                .all(|p| p.value.is_finite() || read.data.runs() < 2)
+        );
     }
 }
 

@@ -133,7 +133,10 @@ fn a_campaign_reads_a_renishaw_file_as_the_long_csv_and_keeps_what_it_says() {
         "Taken from the measurement file",
         "air temperature, pressure and humidity, material temperatures",
     ] {
-        assert!(report.contains(words), "{words} missing from the report:\n{report}");
+        assert!(
+            report.contains(words),
+            "{words} missing from the report:\n{report}"
+        );
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

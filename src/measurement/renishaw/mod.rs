@@ -54,8 +54,8 @@ pub use environment::{Environment, MaterialSensor, StartEnd};
 pub use header::Header;
 pub use user_text::UserText;
 
-use super::info::{FileInfo, MaterialReading};
 use super::error::{Location, ReadError, ReadErrorKind};
+use super::info::{FileInfo, MaterialReading};
 use super::{AxisData, MAX_READINGS};
 use crate::units::AxisKind;
 use std::io::Read;
@@ -117,7 +117,10 @@ impl RenishawTest {
             air_temperature_start_c: e.air_temp_c.start,
             air_temperature_end_c: e.air_temp_c.end,
             // To the compensators' resolution: 0.01 kPa, 0.1 %RH (more digits would be noise).
-            air_pressure_kpa: e.air_pressure_hpa.mean().map(|hpa| round(hpa / 10.0, 100.0)),
+            air_pressure_kpa: e
+                .air_pressure_hpa
+                .mean()
+                .map(|hpa| round(hpa / 10.0, 100.0)),
             air_humidity_pct: e.air_humidity_percent.mean().map(|h| round(h, 10.0)),
             material_sensors: e
                 .material_temps_c

@@ -9,10 +9,10 @@ use super::{CampaignHeader, generator, num, opt, pos, s_symbol, symbol_of};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::{DirectionResult, Evaluation, StandardId};
 use crate::judge::{Outcome, Verdict};
+use crate::measurement::FileInfo;
 use crate::report::diagnosis_data::{DiagnosisSection, diagnosis_section};
 use crate::rules::Finding;
 use crate::units::{Travel, fmt_position};
-use crate::measurement::FileInfo;
 use serde::Serialize;
 
 /// Everything `axis-report.typ` shows.
@@ -123,7 +123,8 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
             .map(|v| format!("{v} (measurement file)"))
     };
     let differs = |f: fn(&FileInfo) -> &Option<String>, campaign: &str| {
-        info.and_then(|i| f(i).clone()).filter(|v| v.trim() != campaign)
+        info.and_then(|i| f(i).clone())
+            .filter(|v| v.trim() != campaign)
     };
     Row::present([
         ("Machine", Some(m.id.clone())),
@@ -155,7 +156,11 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
         ),
         (
             "Inspector",
-            result.info.inspector.clone().or_else(|| file(|i| &i.operator)),
+            result
+                .info
+                .inspector
+                .clone()
+                .or_else(|| file(|i| &i.operator)),
         ),
     ])
 }
