@@ -134,7 +134,7 @@ pub(super) fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64
 // ---------------------------------------------------------------------------------------------
 // Drawing primitives (in backend pixels, on the root area)
 
-fn to_px(c: (i32, i32)) -> Px {
+pub(super) fn to_px(c: (i32, i32)) -> Px {
     (c.0 as f64, c.1 as f64)
 }
 

@@ -13,7 +13,7 @@ use super::chart_kit::{
     X_TICK_H, draw_line, draw_marker, draw_text, message_chart, padded_range, render, round_px,
     text_style,
 };
-use super::charts::{KIT, build_panel, y_range};
+use super::charts::{KIT, build_panel, to_px, y_range};
 use super::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::RGBColor;
@@ -111,9 +111,9 @@ pub fn trend(chart: &TrendChart, style: &Style) -> Scene {
     })
 }
 
+/// The backend pixel of (decimal year, value).
 fn px(chart: &Chart, x: f64, y: f64) -> (f64, f64) {
-    let (a, b) = chart.backend_coord(&(x, y));
-    (a as f64, b as f64)
+    to_px(chart.backend_coord(&(x, y)))
 }
 
 /// The band as a filled polygon (upper edge left to right, lower edge back).

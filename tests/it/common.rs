@@ -48,3 +48,10 @@ pub fn scratch(name: &str) -> PathBuf {
 pub fn copy_data(dir: &std::path::Path, name: &str) {
     std::fs::copy(data_path(name), dir.join("data").join(name)).unwrap();
 }
+
+/// The text of a PDF's pages, in order.
+pub fn pdf_text(path: &std::path::Path) -> String {
+    let doc = lopdf::Document::load(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let pages: Vec<u32> = doc.get_pages().keys().copied().collect();
+    doc.extract_text(&pages).unwrap()
+}

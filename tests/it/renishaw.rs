@@ -3,7 +3,7 @@
 //! says of itself (USER-TEXT, ENVIRONMENT) reaches the report, `results.json` and, where
 //! the campaign asks for it, the correction to 20 °C (ISO 230-2 clause 3.1).
 
-use crate::common::{axcheck, data_path, scratch};
+use crate::common::{axcheck, data_path, pdf_text, scratch};
 use axcheck::measurement::{self, AxisData};
 use axcheck::units::Direction;
 
@@ -158,10 +158,4 @@ fn eval_names_the_renishaw_layout_and_what_it_assumed() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("Renishaw"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
-}
-
-fn pdf_text(path: &std::path::Path) -> String {
-    let doc = lopdf::Document::load(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let pages: Vec<u32> = doc.get_pages().keys().copied().collect();
-    doc.extract_text(&pages).unwrap()
 }

@@ -193,7 +193,7 @@ fn the_wearing_axis_is_found_and_nothing_else_is_flagged() {
 /// X's reversal (first in the list, with a forecast) and nothing of Y, and writes the CSV.
 #[test]
 fn the_trend_command_flags_the_wearing_axis_of_a_history() {
-    use crate::common::{axcheck, scratch};
+    use crate::common::{axcheck, pdf_text, scratch};
     let dir = scratch("trend-cli");
     let s = |p: &std::path::Path| p.to_str().unwrap().to_string();
     let history = dir.join("history");
@@ -302,13 +302,6 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
     assert_eq!(code, 0, "{err}");
     assert_eq!(first, std::fs::read(out.join("trends.pdf")).unwrap());
     std::fs::remove_dir_all(&dir).unwrap();
-}
-
-/// The text of a PDF's pages, in order.
-fn pdf_text(path: &std::path::Path) -> String {
-    let doc = lopdf::Document::load(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let pages: Vec<u32> = doc.get_pages().keys().copied().collect();
-    doc.extract_text(&pages).unwrap()
 }
 
 /// The example plant's committed history (2022–2026, `example-campaign/history`): the trend

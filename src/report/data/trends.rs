@@ -218,6 +218,16 @@ mod tests {
     }
 }
 
+/// The distinct inspection dates of these series, in order.
+fn inspection_dates<'a>(series: impl Iterator<Item = &'a Series>) -> Vec<NaiveDate> {
+    let mut dates: Vec<NaiveDate> = series
+        .flat_map(|s| s.points.iter().map(|p| p.date))
+        .collect();
+    dates.sort();
+    dates.dedup();
+    dates
+}
+
 /// The chart drawn for a row, by name.
 pub type NamedChart = (String, TrendChart);
 
@@ -246,13 +256,8 @@ pub fn history_section(
 ) -> Option<(HistorySection, Vec<NamedChart>)> {
     let mut pairs: Vec<(&Series, &Trend)> = pairs.iter().map(|(s, t)| (s, t)).collect();
     in_parameter_order(&mut pairs);
-    let dates = pairs
-        .iter()
-        .flat_map(|(s, _)| s.points.iter().map(|p| p.date));
-    let (first, last) = (dates.clone().min()?, dates.clone().max()?);
-    let mut distinct: Vec<NaiveDate> = dates.collect();
-    distinct.sort();
-    distinct.dedup();
+    let dates = inspection_dates(pairs.iter().map(|(s, _)| *s));
+    let (first, last) = (*dates.first()?, *dates.last()?);
     let charted = charted_parameters(&pairs);
     let mut charts = Vec::new();
     let mut rows = Vec::new();
@@ -267,7 +272,7 @@ pub fn history_section(
     let section = HistorySection {
         first: first.to_string(),
         last: last.to_string(),
-        inspections: distinct.len(),
+        inspections: dates.len(),
         horizon_years: crate::units::fmt_position(horizon_years),
         flagged: rows.iter().filter(|r| r.flagged).count(),
         rows,
@@ -317,10 +322,8 @@ pub fn trends_summary<'a>(
     horizon_years: f64,
 ) -> Option<TrendsSummary> {
     let pairs: Vec<&(Series, Trend)> = pairs.into_iter().collect();
-    let dates = pairs
-        .iter()
-        .flat_map(|(s, _)| s.points.iter().map(|p| p.date));
-    let (first, last) = (dates.clone().min()?, dates.max()?);
+    let dates = inspection_dates(pairs.iter().map(|(s, _)| s));
+    let (first, last) = (dates.first()?, dates.last()?);
     let flagged = pairs
         .iter()
         .filter(|(_, t)| t.flagged)
@@ -389,12 +392,7 @@ pub fn trends_document(
     }
     let mut axes: Vec<_> = by_axis.into_iter().collect();
     axes.sort_by_key(|(_, v)| !v.iter().any(|(_, t)| t.flagged));
-    let mut dates: Vec<NaiveDate> = pairs
-        .iter()
-        .flat_map(|(s, _)| s.points.iter().map(|p| p.date))
-        .collect();
-    dates.sort();
-    dates.dedup();
+    let dates = inspection_dates(pairs.iter().map(|(s, _)| *s));
     let flagged_axes = axes
         .iter()
         .filter(|(_, v)| v.iter().any(|(_, t)| t.flagged))
