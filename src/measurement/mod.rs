@@ -427,7 +427,11 @@ fn refuse_sheet(sheet: Option<&str>, layout: Layout, file: &str) -> Result<(), R
 /// A Renishaw `.rtl`/`.rta` file: read whole (it is small), its USER-TEXT and
 /// ENVIRONMENT kept as the file's [`FileInfo`].
 fn read_renishaw<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadError> {
-    let test = renishaw::read(reader, file)?;
+    let limit = renishaw::MAX_FILE_BYTES;
+    let too_large = ReadErrorKind::RenishawTooLarge {
+        limit: format!("{limit} bytes"),
+    };
+    let test = renishaw::parse(&read_all(reader, limit, file, too_large)?, file)?;
     let info = Some(test.info()).filter(|i| !i.is_empty());
     let layout = match test.rotary {
         true => Layout::RenishawRta,

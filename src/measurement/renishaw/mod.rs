@@ -58,7 +58,6 @@ use super::error::{Location, ReadError, ReadErrorKind};
 use super::info::{FileInfo, MaterialReading};
 use super::{AxisData, MAX_READINGS};
 use crate::units::AxisKind;
-use std::io::Read;
 
 /// Largest file read: 100 000 readings at ~30 bytes a line is 3 MB.
 pub const MAX_FILE_BYTES: usize = 8 * 1024 * 1024;
@@ -153,16 +152,6 @@ pub fn looks_like(head: &[u8]) -> bool {
     let rest = &head[start..];
     let end = rest.iter().position(|&b| b == b'\n').unwrap_or(rest.len());
     rest[..end].trim_ascii() == b"HEADER::"
-}
-
-/// Reads at most [`MAX_FILE_BYTES`] from `reader` and parses them.
-pub fn read<R: Read>(reader: R, file: &str) -> Result<RenishawTest, ReadError> {
-    let mut bytes = Vec::new();
-    reader
-        .take(MAX_FILE_BYTES as u64 + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
-    parse(&bytes, file)
 }
 
 /// Parses a whole `.rtl` / `.rta` file. `file` names it in errors, and its extension

@@ -412,10 +412,12 @@ fn detection_is_by_content() {
 }
 
 #[test]
-fn read_takes_a_reader() {
+fn the_dispatch_recognises_it_and_reads_it_from_a_reader() {
     let bytes = rotary_rta().bytes();
+    let read = crate::measurement::read(&bytes[..], "c.rta").unwrap();
+    assert_eq!(read.data, parse(&bytes, "c.rta").unwrap().data);
     assert_eq!(
-        read(&bytes[..], "c.rta").unwrap(),
-        parse(&bytes, "c.rta").unwrap()
+        read.recognised.layout,
+        crate::measurement::Layout::RenishawRta
     );
 }
