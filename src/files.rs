@@ -5,7 +5,8 @@
 //! `/dev/zero` never ends, so the file type is checked before opening (`stat`, which
 //! never blocks). The file is then opened without blocking (`O_NONBLOCK` on unix, in case
 //! it was swapped for a pipe in between), and the opened handle is checked again: still a
-//! regular file, and the same one (device and inode on unix). After the read the handle's
+//! regular file (one renamed over the path in between, as an atomic write does, is read
+//! whole: the history on shared storage is replaced that way). After the read the handle's
 //! size and modification time are compared with those at opening, so a file that is
 //! written while axcheck reads it is noticed instead of giving half a measurement.
 
@@ -21,10 +22,6 @@ pub enum FileError {
         "it is {0}, not a regular file; axcheck reads only regular files (a pipe, socket or device may block or never end)"
     )]
     NotRegular(&'static str),
-    #[error(
-        "the file was replaced while axcheck opened it; run again when nobody is changing the folder"
-    )]
-    Replaced,
     #[error(
         "the file changed while axcheck read it (its size or modification time differ before and after the read); run again once it is complete"
     )]
@@ -77,20 +74,6 @@ fn regular(metadata: &Metadata) -> Result<(), FileError> {
     }
 }
 
-/// The same file (on unix: device and inode; elsewhere the checks before cannot tell).
-fn same_file(a: &Metadata, b: &Metadata) -> bool {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::MetadataExt;
-        a.dev() == b.dev() && a.ino() == b.ino()
-    }
-    #[cfg(not(unix))]
-    {
-        let _ = (a, b);
-        true
-    }
-}
-
 /// An opened regular file with its size and modification time at opening.
 #[derive(Debug)]
 pub struct Opened {
@@ -124,11 +107,10 @@ pub fn open(path: &Path) -> Result<Opened, FileError> {
         options.custom_flags(rustix::fs::OFlags::NONBLOCK.bits() as i32);
     }
     let file = options.open(path)?;
+    // The handle is what is read: a regular file, whichever. Another regular file renamed
+    // over the path between the check and the open (an atomic write) is read whole.
     let after = file.metadata()?;
     regular(&after)?;
-    if !same_file(&before, &after) {
-        return Err(FileError::Replaced);
-    }
     Ok(Opened {
         file,
         size: after.len(),

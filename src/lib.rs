@@ -20,6 +20,7 @@ pub mod judge;
 pub mod lock;
 pub mod measurement;
 pub mod nde;
+pub mod panics;
 #[cfg(feature = "pdf")]
 pub mod report;
 pub mod rules;

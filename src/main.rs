@@ -172,6 +172,7 @@ fn parse_standard(text: &str) -> Result<StandardId, String> {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    axcheck::panics::install_quiet_hook();
     match run(cli) {
         Ok(code) => code,
         Err(e) => {

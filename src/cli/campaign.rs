@@ -262,14 +262,18 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         },
         options.progress,
     );
-    // The history first: the reports show each axis over it, this run included.
-    let trends = match &history {
-        Some(dir) => Some(append_history(&result, dir)?),
-        None => None,
+    // The history first: the reports show each axis over it, this run included. A history
+    // that cannot be appended to or read costs the reports their history, not the outputs.
+    let appended = history.as_deref().map(|dir| append_history(&result, dir));
+    let trends = match &appended {
+        Some(Ok(appended)) => appended.trends.clone(),
+        _ => None,
     };
     if let Some(reports) = reports {
-        let trends = trends.as_ref().map(|(_, t)| Arc::clone(t));
-        exporters.push(Box::new(export::pdf::Pdf { reports, trends }));
+        exporters.push(Box::new(export::pdf::Pdf {
+            reports,
+            trends: trends.clone(),
+        }));
     }
     let written = export::write_all(&result, &exporters, out)
         .with_context(|| format!("writing the outputs to {}", out.display()))?;
@@ -294,8 +298,17 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
             ""
         }
     );
-    if let Some((line, trends)) = &trends {
-        println!("{line}");
+    match appended {
+        Some(Ok(appended)) => println!("{}", appended.line),
+        Some(Err(e)) => {
+            return Err(e.context(format!(
+                "the outputs are written, but the run is not in the history {}",
+                history.unwrap_or_default().display()
+            )));
+        }
+        None => {}
+    }
+    if let Some(trends) = &trends {
         print!("{}", flagged_lines(trends));
     }
     Ok(exit_code(&result))
@@ -332,9 +345,17 @@ fn lock_folders(
     Ok(locks)
 }
 
-/// Appends the run to the history in `dir` and fits the trends of the run's axes over it;
-/// the line that says where, and the trends.
-fn append_history(result: &CampaignResult, dir: &Path) -> Result<(String, Arc<AxisTrends>)> {
+/// The run appended to its history: the line that says where, and the trends of the run's
+/// axes over the whole history (none when the history cannot be read back).
+struct Appended {
+    line: String,
+    trends: Option<Arc<AxisTrends>>,
+}
+
+/// Appends the run to the history in `dir` and fits the trends of the run's axes over it.
+/// A history file that cannot be read (another run's, damaged) leaves the reports without
+/// their history sections, said in the line; it does not undo the append.
+fn append_history(result: &CampaignResult, dir: &Path) -> Result<Appended> {
     let start = Instant::now();
     let records = axcheck::history::records(result)?;
     let written = axcheck::history::append(dir, &records)
@@ -344,18 +365,31 @@ fn append_history(result: &CampaignResult, dir: &Path) -> Result<(String, Arc<Ax
             "History: no test was evaluated; {} left as it was",
             dir.display()
         );
-        return Ok((line, Arc::default()));
+        return Ok(Appended { line, trends: None });
     };
-    let all = axcheck::history::read(dir)
-        .with_context(|| format!("reading the history {}", dir.display()))?;
-    let trends = AxisTrends::of_run(&all, &records, Default::default());
-    let line = format!(
-        "History: {} rows appended to {} after {:.2} s",
+    let appended = format!(
+        "History: {} rows appended to {}",
         records.len(),
-        path.display(),
-        start.elapsed().as_secs_f64()
+        path.display()
     );
-    Ok((line, Arc::new(trends)))
+    let elapsed = || start.elapsed().as_secs_f64();
+    Ok(match axcheck::history::read(dir) {
+        Ok(all) => Appended {
+            line: format!("{appended} after {:.2} s", elapsed()),
+            trends: Some(Arc::new(AxisTrends::of_run(
+                &all,
+                &records,
+                Default::default(),
+            ))),
+        },
+        Err(e) => Appended {
+            line: format!(
+                "{appended} after {:.2} s; no trends in the reports, as the history cannot be read: {e}",
+                elapsed()
+            ),
+            trends: None,
+        },
+    })
 }
 
 /// Flagged series printed by `run` before "… and N more".

@@ -50,15 +50,18 @@ fn check_same_campaign(path: &Path, campaign: &str) -> Result<(), HistoryError> 
     let Ok(crate::files::Opened { file, .. }) = crate::files::open(path) else {
         return Ok(());
     };
-    let found = ParquetReader::new(file)
-        .with_columns(Some(vec!["campaign".into()]))
-        .with_slice(Some((0, 1)))
-        .finish()
-        .ok()
-        .and_then(|df| {
-            let column = df.column("campaign").ok()?.str().ok()?.clone();
-            column.get(0).map(str::to_string)
-        });
+    let found = crate::panics::contained(|| {
+        ParquetReader::new(file)
+            .with_columns(Some(vec!["campaign".into()]))
+            .with_slice(Some((0, 1)))
+            .finish()
+    })
+    .ok()
+    .and_then(Result::ok)
+    .and_then(|df| {
+        let column = df.column("campaign").ok()?.str().ok()?.clone();
+        column.get(0).map(str::to_string)
+    });
     match found {
         Some(found) if found != campaign => Err(HistoryError::NameClash {
             path: path.to_path_buf(),
@@ -168,6 +171,11 @@ fn history_files(dir: &Path) -> Result<Vec<PathBuf>, HistoryError> {
     Ok(files)
 }
 
+/// What to do with a history file that cannot be read: the others are not read either, so
+/// that no trend silently misses an inspection.
+const UNREADABLE_ADVICE: &str =
+    "restore it from a backup, or move it out of the history folder to read the others";
+
 /// One history file's rows, its schema checked.
 pub fn read_file(path: &Path) -> Result<Vec<Record>, HistoryError> {
     let file = crate::files::open(path)
@@ -176,11 +184,13 @@ pub fn read_file(path: &Path) -> Result<Vec<Record>, HistoryError> {
             source: e.into(),
         })?
         .file;
-    let df = ParquetReader::new(file)
-        .finish()
-        .map_err(|e| HistoryError::Parquet {
+    // polars panics on some damaged footers: contained, that file is an error.
+    let df = crate::panics::contained(|| ParquetReader::new(file).finish())
+        .map_err(|panic| format!("it is damaged (the Parquet reader failed: {panic})"))
+        .and_then(|read| read.map_err(|e| e.to_string()))
+        .map_err(|message| HistoryError::Parquet {
             path: path.to_path_buf(),
-            message: e.to_string(),
+            message: format!("{message}; {UNREADABLE_ADVICE}"),
         })?;
     Columns { df: &df, path }.records()
 }

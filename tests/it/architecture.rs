@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 /// The top-level modules from the bottom up: a module may use only modules of a lower
 /// layer (its own layer's modules are independent of each other).
 const LAYERS: &[&[&str]] = &[
-    &["units", "suggest", "atomic", "files"],
+    &["units", "suggest", "atomic", "files", "panics"],
     &["measurement", "yaml", "lock"],
     &["evaluate", "nde", "simulate"],
     &["uncertainty"],

@@ -354,3 +354,118 @@ fn history_read_time() {
         start.elapsed().as_secs_f64() - read
     );
 }
+
+/// `count` damaged copies of `bytes`, the same on every run: cut short, or 1 to 8 bytes
+/// overwritten (a small linear congruential generator, so no seed can drift).
+fn damaged_copies(bytes: &[u8], count: usize) -> Vec<Vec<u8>> {
+    let mut state: u64 = 0x2026_1123;
+    let mut next = |below: usize| {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 33) as usize) % below
+    };
+    (0..count)
+        .map(|k| {
+            let mut copy = bytes.to_vec();
+            if k % 3 == 0 {
+                copy.truncate(next(bytes.len()));
+            } else {
+                for _ in 0..=next(8) {
+                    let at = next(copy.len());
+                    copy[at] = next(256) as u8;
+                }
+            }
+            copy
+        })
+        .collect()
+}
+
+/// A history file of a few rows and the bytes of one damaged copy that polars' reader
+/// panics on (found among the damaged copies; the test says so if none is any more).
+fn history_file_and_a_damaged_copy(dir: &Path) -> (PathBuf, Vec<u8>) {
+    let hist = dir.join("mutants");
+    let rows: Vec<Record> = ["A", "E", "R", "B"]
+        .iter()
+        .map(|p| Record {
+            parameter: (*p).into(),
+            ..record("Other", 1)
+        })
+        .collect();
+    let path = history::append(&hist, &rows).unwrap().unwrap();
+    let good = std::fs::read(&path).unwrap();
+    let (mut refused, mut panicked) = (0, None);
+    let copies = damaged_copies(&good, 300);
+    for copy in &copies {
+        std::fs::write(&path, copy).unwrap();
+        // A panic escaping here fails the test.
+        let Err(e) = history::read(&hist) else {
+            continue; // a changed value in a data page: Parquet pages carry no checksum here
+        };
+        let e = e.to_string();
+        assert!(e.starts_with(&format!("{}: ", path.display())), "{e}");
+        if e.contains("not a readable Parquet file") {
+            assert!(e.contains("move it out of the history folder"), "{e}");
+        }
+        refused += 1;
+        if e.contains("it is damaged (the Parquet reader failed: ") && panicked.is_none() {
+            panicked = Some(copy.clone());
+        }
+    }
+    assert!(refused >= 200, "{refused} of 300 damaged copies refused");
+    let panicked = panicked.expect("no damaged copy makes polars panic now: pick other copies");
+    (path, panicked)
+}
+
+/// A damaged file in a shared history is an error naming it, never a crash: `trend` stops
+/// with exit 2 and says what to do; `run` still writes every output, its reports without
+/// the history sections. A history that cannot be appended to fails the run only after
+/// its outputs are written.
+#[test]
+fn a_damaged_history_file_is_named_and_loses_no_output() {
+    let dir = scratch("history-damaged");
+    let (_, damaged) = history_file_and_a_damaged_copy(&dir);
+    let hist = dir.join("hist");
+    let other = hist.join("year=2025/other_2025-11-20.parquet");
+    std::fs::create_dir_all(other.parent().unwrap()).unwrap();
+    std::fs::write(&other, &damaged).unwrap();
+
+    let plant = campaign(&dir, "Plant", Some("2026-11-20"), "");
+    let out = dir.join("out");
+    let (code, log) = run(&plant, &out, &["--history", s(&hist), "--no-diagnose"]);
+    assert_eq!(code, 1, "M3's file is missing: {log}");
+    assert!(!log.contains("panicked"), "{log}");
+    assert!(
+        log.contains("no trends in the reports, as the history cannot be read: "),
+        "{log}"
+    );
+    assert!(log.contains("other_2025-11-20.parquet"), "{log}");
+    assert!(out.join("results.json").is_file(), "{log}");
+    assert!(hist.join("year=2026/plant_2026-11-20.parquet").is_file());
+
+    let (code, stdout, stderr) = axcheck(&["trend", s(&hist)]);
+    assert_eq!(code, 2, "{stdout}{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let expected = format!(
+        "{}: not a readable Parquet file of the history: it is damaged (the Parquet reader failed: ",
+        other.display()
+    );
+    assert!(stderr.contains(&expected), "{stderr}");
+
+    // A history whose year folder cannot be made: the outputs first, then exit 2.
+    let blocked = dir.join("blocked");
+    std::fs::create_dir_all(&blocked).unwrap();
+    std::fs::write(blocked.join("year=2026"), b"a file where a folder goes").unwrap();
+    let out2 = dir.join("out2");
+    let (code, log) = run(&plant, &out2, &["--history", s(&blocked), "--no-diagnose"]);
+    assert_eq!(code, 2, "{log}");
+    assert!(
+        log.contains(&format!(
+            "the outputs are written, but the run is not in the history {}",
+            blocked.display()
+        )),
+        "{log}"
+    );
+    assert!(out2.join("results.json").is_file(), "{log}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
