@@ -315,8 +315,9 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
 }
 
 /// Locks the output folder and the history folder (once when they are one), in the order
-/// of their real paths so that two waiting runs never hold one each.
-fn lock_folders(
+/// of their real paths so that two waiting runs never hold one each. Also the one folder
+/// that `trend --out` and `simulate --fleet` write.
+pub(crate) fn lock_folders(
     out: &Path,
     history: Option<&Path>,
     wait: bool,

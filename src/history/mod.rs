@@ -19,7 +19,7 @@ pub use record::{Record, SCHEMA_VERSION};
 pub use rows::{records, run_date};
 pub use series::series;
 #[cfg(feature = "parquet")]
-pub use store::{append, file_path, read};
+pub use store::{append, file_path, read, read_bytes};
 
 use std::path::PathBuf;
 

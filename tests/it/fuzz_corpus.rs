@@ -64,3 +64,16 @@ fn wide_corpus() {
 fn xlsx_corpus() {
     replay("xlsx", targets::xlsx);
 }
+
+/// The `history` target (`fuzz/fuzz_targets/history.rs`, built with polars, so not in
+/// `fuzz/src/lib.rs`): the seeds read whole, every corpus file without a panic.
+#[test]
+fn history_corpus() {
+    let seed = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("fuzz/corpus/history/plant-2-annual-inspection_2022-11-20.parquet");
+    let rows = axcheck::history::read_bytes(&std::fs::read(&seed).unwrap(), &seed).unwrap();
+    assert_eq!(rows.len(), 201);
+    replay("history", |bytes| {
+        let _ = axcheck::history::read_bytes(bytes, std::path::Path::new("fuzz.parquet"));
+    });
+}

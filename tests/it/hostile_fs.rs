@@ -793,3 +793,36 @@ fn the_lock_of_a_killed_run_is_taken_over() {
     assert!(!out.join(axcheck::lock::LOCK_FILE).exists());
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+/// `trend --out` and `simulate --fleet` write folders too: a held one stops them at once
+/// with who holds it, and nothing is written into it.
+#[test]
+fn trend_and_simulate_stop_at_a_held_folder() {
+    let dir = scratch("hostile-lock-other");
+    let out = dir.join("trends");
+    let held = axcheck::lock::FolderLock::acquire(&out, false, |_| {}).unwrap();
+    let want = format!("another axcheck run (pid {}, started ", std::process::id());
+    let history = Path::new(env!("CARGO_MANIFEST_DIR")).join("example-campaign/history");
+    let (code, stdout, stderr) = axcheck(&[
+        "trend",
+        history.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{stdout}{stderr}");
+    assert!(stderr.contains(&want), "{stderr}");
+    assert!(!out.join("trends.csv").exists() && !out.join("trends.pdf").exists());
+
+    let (code, stdout, stderr) =
+        axcheck(&["simulate", "--fleet", "3", "--out", out.to_str().unwrap()]);
+    assert_eq!(code, 2, "{stdout}{stderr}");
+    assert!(stderr.contains(&want), "{stderr}");
+    assert!(!out.join("campaign.yaml").exists());
+    drop(held);
+    let (code, stdout, stderr) =
+        axcheck(&["simulate", "--fleet", "3", "--out", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(out.join("campaign.yaml").exists());
+    assert!(!out.join(".axcheck.lock").exists(), "released at the end");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
