@@ -231,7 +231,8 @@ impl OutputDir {
             line,
             problem: problem.to_string(),
         };
-        let bytes = std::fs::read(&path).map_err(io_error(&path))?;
+        // A regular file now, but read as one even if swapped for a pipe since the check.
+        let bytes = crate::files::read(&path).map_err(|e| io_error(&path)(e.into()))?;
         let text = String::from_utf8(bytes).map_err(|_| bad(1, "not UTF-8 text"))?;
         if !text.starts_with(MANIFEST_MAGIC) {
             return Err(bad(1, "it does not start with `# axcheck output manifest`"));

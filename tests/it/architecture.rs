@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 /// The top-level modules from the bottom up: a module may use only modules of a lower
 /// layer (its own layer's modules are independent of each other).
 const LAYERS: &[&[&str]] = &[
-    &["units", "suggest", "atomic", "files", "panics"],
-    &["measurement", "yaml", "lock"],
+    &["units", "suggest", "files", "panics"],
+    &["measurement", "yaml", "lock", "atomic"],
     &["evaluate", "nde", "simulate"],
     &["uncertainty"],
     &["rules", "judge", "diagnose", "trend"],
