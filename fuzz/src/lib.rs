@@ -182,6 +182,25 @@ pub fn campaign(data: &[u8]) {
     }
 }
 
+/// The simulation-file loader (`axcheck simulate MODEL.yaml`, `diagnose --write-model`):
+/// a model that loads is simulated, written as CSV and read back and evaluated, and its
+/// own YAML must load again (what `--write-model` writes, `simulate` reads).
+pub fn model(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(sim) = axcheck::simulate::Simulation::from_yaml(text, "fuzz-model.yaml") else {
+        return;
+    };
+    let again = axcheck::simulate::Simulation::from_yaml(&sim.to_yaml(), "again.yaml");
+    assert!(again.is_ok(), "{again:?}\n{}", sim.to_yaml());
+    let axis = sim.run(sim.seed);
+    let csv = measurement::csv::write(&axis, &[]);
+    if let Ok(read) = measurement::csv::parse(csv.as_bytes(), "simulated.csv") {
+        check_data(&read);
+    }
+}
+
 /// The acceptance-spec loader, then each band lookup and a judgement against it.
 pub fn spec(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else {

@@ -118,6 +118,7 @@ impl TestPlan {
         if !(self.dwell_s >= 0.0 && self.overrun >= 0.0) {
             return Err("plan.dwell_s and plan.overrun must be ≥ 0".into());
         }
+        self.check_size()?;
         match (&self.targets, &self.target_list) {
             (Some(_), Some(_)) => {
                 Err("plan: give either targets or a target list, not both".into())
@@ -158,6 +159,25 @@ impl TestPlan {
                 Ok(())
             }
         }
+    }
+
+    /// Refuses a plan whose file no reader would take (every cycle reads each target once
+    /// in each direction per run): it would only exhaust the memory.
+    fn check_size(&self) -> Result<(), String> {
+        let targets = match (&self.targets, &self.target_list) {
+            (Some(t), _) => t.count,
+            (None, Some(list)) => list.len(),
+            (None, None) => 0,
+        };
+        let readings = self.runs.saturating_mul(targets).saturating_mul(2);
+        let limit = crate::measurement::MAX_READINGS;
+        if readings > limit {
+            return Err(format!(
+                "plan.runs: {} runs × {targets} targets × 2 directions = {readings} readings; a measurement file holds at most {limit}",
+                self.runs
+            ));
+        }
+        Ok(())
     }
 
     /// The target positions, rounded to 0.001 (what a file records).

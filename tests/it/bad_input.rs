@@ -631,6 +631,11 @@ fn simulation_errors_in_the_users_words() {
             "m.yaml:2:8: model: `scale_ppm` is given twice, under two of its spellings; keep one",
         ),
         (
+            "kind: linear\nplan: {targets: {start_mm: 0, end_mm: 1000, count: 5001}, runs: 10}\n"
+                .into(),
+            "m.yaml:2:65: plan.runs: 10 runs × 5001 targets × 2 directions = 100020 readings; a measurement file holds at most 100000",
+        ),
+        (
             "kind: linear\nplan: {targets_mm: [0, 100], dwell_s: -1}\n".into(),
             "m.yaml:2:39: plan.dwell_s and plan.overrun_mm must be ≥ 0",
         ),

@@ -56,6 +56,11 @@ fn spec_corpus() {
 }
 
 #[test]
+fn model_corpus() {
+    replay("model", targets::model);
+}
+
+#[test]
 fn wide_corpus() {
     replay("wide", targets::wide);
 }
