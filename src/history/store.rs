@@ -184,20 +184,22 @@ pub fn read_file(path: &Path) -> Result<Vec<Record>, HistoryError> {
             source: e.into(),
         })?
         .file;
-    rows_of(ParquetReader::new(file), path)
+    rows_of(file, path)
 }
 
 /// The rows of a history file's bytes, as [`read_file`] reads them (`path` names it in the
 /// errors; the fuzz target reads bytes).
 pub fn read_bytes(bytes: &[u8], path: &Path) -> Result<Vec<Record>, HistoryError> {
-    rows_of(ParquetReader::new(std::io::Cursor::new(bytes)), path)
+    rows_of(std::io::Cursor::new(bytes), path)
 }
 
 fn rows_of<R: polars::io::mmap::MmapBytesReader>(
-    reader: ParquetReader<R>,
+    source: R,
     path: &Path,
 ) -> Result<Vec<Record>, HistoryError> {
-    // polars panics on some damaged footers: contained, that file is an error.
+    // polars panics on some damaged files: contained, that file is an error. Decoded on
+    // this thread (the files are read in parallel already), so that the panic is too.
+    let reader = ParquetReader::new(source).read_parallel(ParallelStrategy::None);
     let df = crate::panics::contained(|| reader.finish())
         .map_err(|panic| format!("it is damaged (the Parquet reader failed: {panic})"))
         .and_then(|read| read.map_err(|e| e.to_string()))
