@@ -66,6 +66,10 @@ enum Command {
         /// `campaign.history`, relative to the campaign file).
         #[arg(long)]
         history: Option<PathBuf>,
+        /// Years after the latest inspection within which a forecast crossing of a limit
+        /// is flagged (default: `campaign.trend_horizon_years`, else 2).
+        #[arg(long = "horizon")]
+        horizon_years: Option<f64>,
         /// When another run is writing to the output (or history) folder, wait for it to
         /// finish instead of stopping at once.
         #[arg(long)]
@@ -210,6 +214,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             templates,
             progress,
             history,
+            horizon_years,
             wait,
         } => {
             let options = cli::campaign::RunOptions {
@@ -220,6 +225,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 templates: templates.as_deref(),
                 progress: progress_of(progress),
                 history: history.as_deref(),
+                horizon_years,
                 wait,
             };
             return Ok(ExitCode::from(cli::campaign::run(&campaign, &options)?));

@@ -108,6 +108,7 @@ impl Campaign {
         };
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let history = history_dir(&info, &dir, &index).map_err(fail)?;
+        check_horizon(&info, &index).map_err(fail)?;
         let machine_values = match top.get("machines") {
             None => return Err(fail(Located::new(root, "missing the `machines:` list"))),
             Some(Value::Sequence(items)) => items,
@@ -208,6 +209,17 @@ fn top_level<'v>(
         }
     }
     Ok(top)
+}
+
+/// `campaign.trend_horizon_years`, when given, is a number of years > 0.
+fn check_horizon(info: &CampaignInfo, index: &LocationIndex) -> Result<(), Located> {
+    match info.trend_horizon_years {
+        Some(years) if !(years > 0.0 && years.is_finite()) => Err(Located::new(
+            index.value("campaign.trend_horizon_years"),
+            format!("campaign.trend_horizon_years: expected a number of years > 0, got {years}"),
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// `campaign.history` inside the campaign's folder (unless `allow_outside_paths`).

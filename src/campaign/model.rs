@@ -52,6 +52,10 @@ pub struct CampaignInfo {
     /// under the same path rule as data files); `--history` overrides it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub history: Option<String>,
+    /// Years after the latest inspection within which `run` flags a forecast crossing of
+    /// a limit (as `trend --horizon`; 2 when absent); `--horizon` overrides it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trend_horizon_years: Option<f64>,
     #[serde(default)]
     pub output: OutputOptions,
 }

@@ -224,6 +224,8 @@ pub struct RunOptions<'a> {
     pub progress: Progress,
     /// Folder of the inspection history to append to (overrides `campaign.history`).
     pub history: Option<&'a Path>,
+    /// Trend horizon in years (`--horizon`; overrides `campaign.trend_horizon_years`).
+    pub horizon_years: Option<f64>,
     /// Wait for another run that holds the output or history folder (`--wait`).
     pub wait: bool,
 }
@@ -235,6 +237,7 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let campaign = Campaign::load(path)?;
     check_output_dir(&campaign, out)?;
     let history = (options.history.map(Path::to_path_buf)).or_else(|| campaign.history.clone());
+    let horizon = trend_options(options.horizon_years, &campaign)?;
     if history.is_some() {
         // Before the evaluation: a history needs the run's date.
         axcheck::history::run_date(&campaign.info, &campaign.file.display().to_string())?;
@@ -264,7 +267,7 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     );
     // The history first: the reports show each axis over it, this run included. A history
     // that cannot be appended to or read costs the reports their history, not the outputs.
-    let appended = history.as_deref().map(|dir| append_history(&result, dir));
+    let appended = (history.as_deref()).map(|dir| append_history(&result, dir, horizon));
     let trends = match &appended {
         Some(Ok(appended)) => appended.trends.clone(),
         _ => None,
@@ -346,6 +349,25 @@ pub(crate) fn lock_folders(
     Ok(locks)
 }
 
+/// The trend horizon of a run: `--horizon`, else `campaign.trend_horizon_years`, else 2.
+fn trend_options(
+    horizon_years: Option<f64>,
+    campaign: &Campaign,
+) -> Result<axcheck::trend::fit::Options> {
+    let mut options = axcheck::trend::fit::Options::default();
+    match horizon_years {
+        Some(years) if !(years > 0.0 && years.is_finite()) => {
+            anyhow::bail!("--horizon: expected a number of years > 0, got {years}")
+        }
+        Some(years) => options.horizon_years = years,
+        None => {
+            let from_campaign = campaign.info.trend_horizon_years;
+            options.horizon_years = from_campaign.unwrap_or(options.horizon_years);
+        }
+    }
+    Ok(options)
+}
+
 /// The run appended to its history: the line that says where, and the trends of the run's
 /// axes over the whole history (none when the history cannot be read back).
 struct Appended {
@@ -356,7 +378,11 @@ struct Appended {
 /// Appends the run to the history in `dir` and fits the trends of the run's axes over it.
 /// A history file that cannot be read (another run's, damaged) leaves the reports without
 /// their history sections, said in the line; it does not undo the append.
-fn append_history(result: &CampaignResult, dir: &Path) -> Result<Appended> {
+fn append_history(
+    result: &CampaignResult,
+    dir: &Path,
+    horizon: axcheck::trend::fit::Options,
+) -> Result<Appended> {
     let start = Instant::now();
     let records = axcheck::history::records(result)?;
     let written = axcheck::history::append(dir, &records)
@@ -377,11 +403,7 @@ fn append_history(result: &CampaignResult, dir: &Path) -> Result<Appended> {
     Ok(match axcheck::history::read(dir) {
         Ok(all) => Appended {
             line: format!("{appended} after {:.2} s", elapsed()),
-            trends: Some(Arc::new(AxisTrends::of_run(
-                &all,
-                &records,
-                Default::default(),
-            ))),
+            trends: Some(Arc::new(AxisTrends::of_run(&all, &records, horizon))),
         },
         Err(e) => Appended {
             line: format!(

@@ -301,6 +301,47 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
     let (code, _, err) = axcheck(&["trend", &s(&history), "--out", &s(&out)]);
     assert_eq!(code, 0, "{err}");
     assert_eq!(first, std::fs::read(out.join("trends.pdf")).unwrap());
+
+    // The run's horizon: B reaches 9 µm about 1.3 years after 2025-06-01, so a campaign's
+    // 1-year horizon does not flag that crossing, and `--horizon 3` (which wins) does.
+    let campaign = dir.join("campaign.yaml");
+    let text = std::fs::read_to_string(&campaign).unwrap();
+    std::fs::write(
+        &campaign,
+        text.replace("spec: general}", "spec: general, trend_horizon_years: 1}"),
+    )
+    .unwrap();
+    let run = |extra: &[&str]| {
+        let mut args = vec!["run", campaign.to_str().unwrap(), "--no-pdf", "--history"];
+        let (history, out) = (s(&history), s(&dir.join("out")));
+        args.extend([history.as_str(), "--out", out.as_str()]);
+        args.extend_from_slice(extra);
+        let (code, stdout, err) = axcheck(&args);
+        assert!(code <= 1, "{stdout}{err}");
+        stdout
+    };
+    let one_year = run(&[]);
+    assert!(one_year.contains("horizon 1 years)"), "{one_year}");
+    assert!(!one_year.contains("M X B: reaches its limit"), "{one_year}");
+    let three_years = run(&["--horizon", "3"]);
+    assert!(three_years.contains("horizon 3 years)"), "{three_years}");
+    assert!(
+        three_years.contains("M X B: reaches its limit 9.0 µm"),
+        "{three_years}"
+    );
+    std::fs::write(
+        &campaign,
+        text.replace("spec: general}", "spec: general, trend_horizon_years: 0}"),
+    )
+    .unwrap();
+    let (code, _, err) = axcheck(&["check", campaign.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    let want = format!(
+        "{}:1:{}: campaign.trend_horizon_years: expected a number of years > 0, got 0",
+        campaign.display(),
+        text.find("spec: general}").unwrap() + 37
+    );
+    assert!(err.contains(&want), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
