@@ -48,6 +48,18 @@ pub fn parse(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<AxisData, 
 /// Reads the sheet `sheet` (or the first) of the workbook in `bytes`, saying which sheet
 /// and table it found and what it skipped.
 pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
+    // calamine can panic on a damaged book (an overflowing cell reference, found by
+    // fuzzing): contained, the book is refused like any other that is not one.
+    crate::panics::contained(|| read_book(bytes, file, sheet)).unwrap_or_else(|panic| {
+        let reason = format!("the workbook is damaged ({panic})");
+        Err(ReadError::new(
+            Location::file(file),
+            ReadErrorKind::NotABook { reason },
+        ))
+    })
+}
+
+fn read_book(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
     let whole = |kind| ReadError::new(Location::file(file), kind);
     if let Some(what) = unsupported(bytes) {
         let what = what.to_string();
