@@ -213,13 +213,15 @@ fn top_level<'v>(
 
 /// `campaign.trend_horizon_years`, when given, is a number of years > 0.
 fn check_horizon(info: &CampaignInfo, index: &LocationIndex) -> Result<(), Located> {
-    match info.trend_horizon_years {
-        Some(years) if !(years > 0.0 && years.is_finite()) => Err(Located::new(
-            index.value("campaign.trend_horizon_years"),
-            format!("campaign.trend_horizon_years: expected a number of years > 0, got {years}"),
-        )),
-        _ => Ok(()),
-    }
+    let Some(years) = info.trend_horizon_years else {
+        return Ok(());
+    };
+    crate::trend::fit::Options::with_horizon(years)
+        .map(|_| ())
+        .map_err(|e| {
+            let at = index.value("campaign.trend_horizon_years");
+            Located::new(at, format!("campaign.trend_horizon_years: {e}"))
+        })
 }
 
 /// `campaign.history` inside the campaign's folder (unless `allow_outside_paths`).

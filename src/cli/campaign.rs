@@ -1,6 +1,6 @@
 //! `axcheck run` and `axcheck check`: a whole campaign.
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result, anyhow, bail};
 use axcheck::batch::{self, AxisTest, CampaignResult};
 use axcheck::campaign::Campaign;
 use axcheck::export;
@@ -354,18 +354,13 @@ fn trend_options(
     horizon_years: Option<f64>,
     campaign: &Campaign,
 ) -> Result<axcheck::trend::fit::Options> {
-    let mut options = axcheck::trend::fit::Options::default();
-    match horizon_years {
-        Some(years) if !(years > 0.0 && years.is_finite()) => {
-            anyhow::bail!("--horizon: expected a number of years > 0, got {years}")
-        }
-        Some(years) => options.horizon_years = years,
-        None => {
-            let from_campaign = campaign.info.trend_horizon_years;
-            options.horizon_years = from_campaign.unwrap_or(options.horizon_years);
-        }
+    use axcheck::trend::fit::Options;
+    match (horizon_years, campaign.info.trend_horizon_years) {
+        (Some(years), _) => Options::with_horizon(years).map_err(|e| anyhow!("--horizon: {e}")),
+        // Checked when the campaign was loaded.
+        (None, Some(years)) => Ok(Options::with_horizon(years).unwrap_or_default()),
+        (None, None) => Ok(Options::default()),
     }
-    Ok(options)
 }
 
 /// The run appended to its history: the line that says where, and the trends of the run's
@@ -407,7 +402,7 @@ fn append_history(
         },
         Err(e) => Appended {
             line: format!(
-                "{appended} after {:.2} s; no trends in the reports, as the history cannot be read: {e}",
+                "{appended} after {:.2} s; no trends, as the history cannot be read: {e}",
                 elapsed()
             ),
             trends: None,

@@ -30,12 +30,8 @@ const SHOWN: usize = 20;
 
 /// Reads the history, fits every series and returns what to print.
 pub fn run(request: &Args) -> Result<String> {
-    if !(request.horizon_years > 0.0 && request.horizon_years.is_finite()) {
-        return Err(anyhow!(
-            "--horizon: expected a number of years > 0, got {}",
-            request.horizon_years
-        ));
-    }
+    let options = trend::fit::Options::with_horizon(request.horizon_years)
+        .map_err(|e| anyhow!("--horizon: {e}"))?;
     let records = history::read(&request.dir)?;
     if records.is_empty() {
         return Err(anyhow!(
@@ -44,9 +40,6 @@ pub fn run(request: &Args) -> Result<String> {
             request.dir.display()
         ));
     }
-    let options = trend::fit::Options {
-        horizon_years: request.horizon_years,
-    };
     let series = history::series(&records);
     let fits: Vec<Trend> = series
         .par_iter()

@@ -52,6 +52,7 @@ fn check_same_campaign(path: &Path, campaign: &str) -> Result<(), HistoryError> 
     };
     let found = crate::panics::contained(|| {
         ParquetReader::new(file)
+            .read_parallel(ParallelStrategy::None)
             .with_columns(Some(vec!["campaign".into()]))
             .with_slice(Some((0, 1)))
             .finish()

@@ -33,6 +33,18 @@ impl Default for Options {
     }
 }
 
+impl Options {
+    /// A horizon of `years`, which must be a number of years > 0 (the message says so).
+    pub fn with_horizon(years: f64) -> Result<Options, String> {
+        match years > 0.0 && years.is_finite() {
+            true => Ok(Options {
+                horizon_years: years,
+            }),
+            false => Err(format!("expected a number of years > 0, got {years}")),
+        }
+    }
+}
+
 /// A series' trend. Time t is in years from `origin` (days / 365.25).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trend {

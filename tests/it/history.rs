@@ -436,7 +436,7 @@ fn a_damaged_history_file_is_named_and_loses_no_output() {
     assert_eq!(code, 1, "M3's file is missing: {log}");
     assert!(!log.contains("panicked"), "{log}");
     assert!(
-        log.contains("no trends in the reports, as the history cannot be read: "),
+        log.contains("no trends, as the history cannot be read: "),
         "{log}"
     );
     assert!(log.contains("other_2025-11-20.parquet"), "{log}");
