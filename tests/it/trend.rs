@@ -342,6 +342,19 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
         text.find("spec: general}").unwrap() + 37
     );
     assert!(err.contains(&want), "{err}");
+    let (code, _, err) = axcheck(&["trend", &s(&history), "--horizon", "0"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("--horizon: expected a number of years > 0, got 0"),
+        "{err}"
+    );
+    std::fs::write(&campaign, &text).unwrap();
+    let (code, _, err) = axcheck(&["run", &s(&campaign), "--no-pdf", "--horizon", "inf"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("--horizon: expected a number of years > 0, got inf"),
+        "{err}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
