@@ -69,5 +69,9 @@ impl AxisTrends {
 }
 
 fn key(r: &Record) -> AxisKey {
-    (r.machine.clone(), r.serial.clone(), r.axis.clone())
+    (
+        r.machine.to_string(),
+        r.serial.as_deref().map(str::to_string),
+        r.axis.to_string(),
+    )
 }

@@ -2,38 +2,43 @@
 //! any engine can filter and pivot it).
 
 use chrono::NaiveDate;
-use serde::Serialize;
+use std::sync::Arc;
+
+/// A text column's value. Shared: a history repeats each machine, axis, parameter and unit
+/// on thousands of rows, and a reader keeps one copy of each per file (a row takes about
+/// a third of the memory of owned strings).
+pub type Text = Arc<str>;
 
 /// The version of the history's schema, stored in every row (`schema_version`).
 pub const SCHEMA_VERSION: u32 = 1;
 
 /// One parameter of one axis test of one campaign run.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Record {
     pub schema_version: u32,
     /// Campaign name and date: the run's identity.
-    pub campaign: String,
+    pub campaign: Text,
     pub date: NaiveDate,
-    pub machine: String,
-    pub serial: Option<String>,
-    pub axis: String,
+    pub machine: Text,
+    pub serial: Option<Text>,
+    pub axis: Text,
     /// Test number within the axis (1 for a single file).
     pub test: u32,
     /// `linear` or `rotary`.
-    pub kind: String,
+    pub kind: Text,
     /// Standard key (`iso230-2`, …).
-    pub standard: String,
+    pub standard: Text,
     /// The test's verdict (`pass`, `fail`, …).
-    pub verdict: String,
+    pub verdict: Text,
     /// Parameter key as in `eval --json`.
-    pub parameter: String,
+    pub parameter: Text,
     /// Deviation unit: `um` or `arcsec`.
-    pub unit: String,
+    pub unit: Text,
     pub value: f64,
     /// The limit that applied, if any.
     pub limit: Option<f64>,
     /// Expanded uncertainty U of the parameter, if evaluated.
     pub uncertainty: Option<f64>,
     /// The diagnosis' effects, space-separated (`drift periodic`), or `none`.
-    pub effects: String,
+    pub effects: Text,
 }

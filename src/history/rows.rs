@@ -1,5 +1,6 @@
 //! A run's results as history rows: one per evaluated parameter of each axis test.
 
+use super::record::Text;
 use super::{HistoryError, Record, SCHEMA_VERSION};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::CampaignInfo;
@@ -44,6 +45,16 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
         .as_ref()
         .map(|d| d.effects_label())
         .unwrap_or_default();
+    // One copy of each text for the test's rows.
+    let text = |s: &str| -> Text { s.into() };
+    let (campaign, machine, axis) = (text(campaign), text(&t.machine.id), text(&t.axis));
+    let serial = t.machine.serial.as_deref().map(text);
+    let (kind_text, standard_key) = (text(&kind.to_string()), text(standard.key()));
+    let (verdict, unit, effects) = (
+        text(t.verdict.name()),
+        text(kind.deviation_unit()),
+        text(&effects),
+    );
     evaluation
         .parameters
         .iter()
@@ -52,17 +63,17 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
             let key = p.key();
             Record {
                 schema_version: SCHEMA_VERSION,
-                campaign: campaign.to_string(),
+                campaign: campaign.clone(),
                 date,
-                machine: t.machine.id.clone(),
-                serial: t.machine.serial.clone(),
-                axis: t.axis.clone(),
+                machine: machine.clone(),
+                serial: serial.clone(),
+                axis: axis.clone(),
                 test: u32::try_from(t.test).unwrap_or(u32::MAX),
-                kind: kind.to_string(),
-                standard: standard.key().to_string(),
-                verdict: t.verdict.name().to_string(),
-                parameter: key.to_string(),
-                unit: kind.deviation_unit().to_string(),
+                kind: kind_text.clone(),
+                standard: standard_key.clone(),
+                verdict: verdict.clone(),
+                parameter: text(key),
+                unit: unit.clone(),
                 value: p.value,
                 limit: t
                     .judgement

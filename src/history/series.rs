@@ -17,12 +17,7 @@ type Key<'a> = (&'a str, Option<&'a str>, &'a str, &'a str);
 pub fn series(records: &[Record]) -> Vec<Series> {
     let mut groups: BTreeMap<Key, BTreeMap<NaiveDate, Vec<&Record>>> = BTreeMap::new();
     for r in records.iter().filter(|r| r.value.is_finite()) {
-        let key = (
-            r.machine.as_str(),
-            r.serial.as_deref(),
-            r.axis.as_str(),
-            r.parameter.as_str(),
-        );
+        let key = (&*r.machine, r.serial.as_deref(), &*r.axis, &*r.parameter);
         groups
             .entry(key)
             .or_default()
@@ -45,7 +40,7 @@ pub fn series(records: &[Record]) -> Vec<Series> {
                 parameter: parameter.to_string(),
                 unit: latest
                     .and_then(|rows| rows.first())
-                    .map(|r| r.unit.clone())
+                    .map(|r| r.unit.to_string())
                     .unwrap_or_default(),
                 limit: latest.and_then(|rows| rows.iter().find_map(|r| r.limit)),
                 points: inspections
@@ -76,10 +71,10 @@ mod tests {
     fn row(date: &str, serial: Option<&str>, test: u32, value: f64, limit: f64) -> Record {
         Record {
             schema_version: SCHEMA_VERSION,
-            campaign: format!("plant {date}"),
+            campaign: format!("plant {date}").into(),
             date: NaiveDate::parse_from_str(date, "%Y-%m-%d").unwrap(),
             machine: "VMC-07".into(),
-            serial: serial.map(str::to_string),
+            serial: serial.map(Into::into),
             axis: "X".into(),
             test,
             kind: "linear".into(),
@@ -90,7 +85,7 @@ mod tests {
             value,
             limit: Some(limit),
             uncertainty: None,
-            effects: String::new(),
+            effects: "".into(),
         }
     }
 

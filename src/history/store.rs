@@ -1,6 +1,7 @@
 //! The history's Parquet files: written atomically through polars, one per campaign run,
 //! and read back with their schema checked.
 
+use super::record::Text;
 use super::{HistoryError, Record, SCHEMA_VERSION, slug};
 use chrono::{Datelike, NaiveDate};
 use polars::prelude::*;
@@ -249,10 +250,15 @@ impl Columns<'_> {
         }
     }
 
-    fn strings(&self, name: &'static str) -> Result<Vec<Option<String>>, HistoryError> {
+    /// A text column, each distinct value held once (see [`Text`]).
+    fn strings(&self, name: &'static str) -> Result<Vec<Option<Text>>, HistoryError> {
         let column = self.column(name, DataType::String, "text (string)")?;
         let ca = column.str().map_err(|e| self.polars(e))?;
-        Ok(ca.iter().map(|s| s.map(str::to_string)).collect())
+        let mut seen: std::collections::HashMap<&str, Text> = Default::default();
+        let texts = ca
+            .iter()
+            .map(|value| value.map(|s| seen.entry(s).or_insert_with(|| s.into()).clone()));
+        Ok(texts.collect())
     }
 
     fn u32s(&self, name: &'static str) -> Result<Vec<Option<u32>>, HistoryError> {

@@ -67,7 +67,7 @@ fn files(dir: &Path) -> Vec<String> {
 fn find<'a>(records: &'a [Record], machine: &str, test: u32, parameter: &str) -> &'a Record {
     records
         .iter()
-        .find(|r| r.machine == machine && r.test == test && r.parameter == parameter)
+        .find(|r| &*r.machine == machine && r.test == test && &*r.parameter == parameter)
         .unwrap_or_else(|| panic!("no row {machine} test {test} {parameter}"))
 }
 
@@ -87,11 +87,11 @@ fn assert_rows_match_results(records: &[Record], results: &Value) {
             };
             expected += 1;
             let row = find(records, machine, test, key);
-            assert_eq!(row.axis, axis["axis"].as_str().unwrap());
+            assert_eq!(&*row.axis, axis["axis"].as_str().unwrap());
             assert_eq!(row.value, value, "{machine} {test} {key}");
-            assert_eq!(row.verdict, axis["verdict"].as_str().unwrap());
-            assert_eq!(row.unit, axis["unit"].as_str().unwrap());
-            assert_eq!(row.standard, axis["standard"].as_str().unwrap());
+            assert_eq!(&*row.verdict, axis["verdict"].as_str().unwrap());
+            assert_eq!(&*row.unit, axis["unit"].as_str().unwrap());
+            assert_eq!(&*row.standard, axis["standard"].as_str().unwrap());
             assert_eq!(row.limit, axis["limits"][key].as_f64(), "limit of {key}");
             assert_eq!(
                 row.uncertainty,
@@ -119,13 +119,13 @@ fn a_run_appends_one_file_whose_rows_are_its_parameters_and_a_rerun_replaces_it(
         serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
     assert_rows_match_results(&records, &results);
     let e = find(&records, "M1", 1, "E");
-    assert_eq!(e.campaign, "Plant 2 annual inspection");
+    assert_eq!(&*e.campaign, "Plant 2 annual inspection");
     assert_eq!(e.date.to_string(), "2026-11-20");
     assert_eq!(e.serial.as_deref(), Some("S-1"));
-    assert_eq!((e.kind.as_str(), e.unit.as_str()), ("linear", "um"));
+    assert_eq!((&*e.kind, &*e.unit), ("linear", "um"));
     assert!(!e.effects.is_empty(), "diagnosed: effects or `none`");
     assert!(
-        records.iter().all(|r| r.machine != "M3"),
+        records.iter().all(|r| &*r.machine != "M3"),
         "errors have no rows"
     );
     assert!(find(&records, "M2", 1, "E").serial.is_none());
