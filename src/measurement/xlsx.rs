@@ -48,37 +48,23 @@ pub fn parse(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<AxisData, 
 /// Reads the sheet `sheet` (or the first) of the workbook in `bytes`, saying which sheet
 /// and table it found and what it skipped.
 pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
-    // calamine can panic on a damaged book (an overflowing cell reference, found by
-    // fuzzing): contained, the book is refused like any other that is not one.
-    crate::panics::contained(|| read_book(bytes, file, sheet)).unwrap_or_else(|panic| {
-        let reason = format!("the workbook is damaged ({panic})");
-        Err(ReadError::new(
-            Location::file(file),
-            ReadErrorKind::NotABook { reason },
-        ))
-    })
-}
-
-fn read_book(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
     let whole = |kind| ReadError::new(Location::file(file), kind);
     if let Some(what) = unsupported(bytes) {
         let what = what.to_string();
         return Err(whole(ReadErrorKind::UnsupportedBook { what }));
     }
     check_unpacked_size(bytes).map_err(whole)?;
-    let mut book = Xlsx::new(Cursor::new(bytes)).map_err(|e| whole(not_a_book(&e)))?;
-    let names = book.sheet_names();
+    let mut book = calamine(|| Xlsx::new(Cursor::new(bytes))).map_err(whole)?;
+    let names = calamine(|| Ok::<_, String>(book.sheet_names())).map_err(whole)?;
     let (name, mut notes) = choose_sheet(&names, sheet).map_err(whole)?;
     let place = Place::sheet(file, &name);
-    let mut cells = book
-        .worksheet_cells_reader(&name)
-        .map_err(|e| ReadError::new(place.whole(), not_a_book(&e)))?;
+    let mut cells = calamine(|| book.worksheet_cells_reader(&name))
+        .map_err(|kind| ReadError::new(place.whole(), kind))?;
     let mut sheet_reader = SheetReader::new(place.clone());
     let mut row: Option<(u32, Vec<(u32, Value)>)> = None;
     let mut count = 0usize;
-    while let Some(cell) = cells
-        .next_cell()
-        .map_err(|e| ReadError::new(place.whole(), not_a_book(&e)))?
+    while let Some(cell) =
+        calamine(|| cells.next_cell()).map_err(|kind| ReadError::new(place.whole(), kind))?
     {
         let (r, c) = cell.get_position();
         let value = value_of(cell.get_value());
@@ -148,6 +134,18 @@ fn check_unpacked_size(bytes: &[u8]) -> Result<(), ReadErrorKind> {
         });
     }
     Ok(())
+}
+
+/// A call into calamine: its error, or its panic on a damaged book (an overflowing cell
+/// reference panics under overflow checks, found by fuzzing), as a book refused. Only
+/// calamine is contained, so that a panic of this reader's own code stays a bug.
+fn calamine<T, E: std::fmt::Display>(
+    call: impl FnOnce() -> Result<T, E>,
+) -> Result<T, ReadErrorKind> {
+    match crate::panics::contained(call) {
+        Ok(result) => result.map_err(|e| not_a_book(&e)),
+        Err(panic) => Err(not_a_book(&format!("the workbook is damaged: {panic}"))),
+    }
 }
 
 /// calamine's reason, kept short: a hostile file can make it long.
