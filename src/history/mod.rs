@@ -8,6 +8,8 @@
 //! complete file or none, and temporary files never match `*.parquet`.
 
 mod axes;
+#[cfg(feature = "parquet")]
+mod pages;
 pub mod record;
 mod rows;
 mod series;

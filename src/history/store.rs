@@ -180,35 +180,31 @@ const UNREADABLE_ADVICE: &str =
 
 /// One history file's rows, its schema checked.
 pub fn read_file(path: &Path) -> Result<Vec<Record>, HistoryError> {
-    let file = crate::files::open(path)
-        .map_err(|e| HistoryError::Io {
-            path: path.to_path_buf(),
-            source: e.into(),
-        })?
-        .file;
-    rows_of(file, path)
+    let bytes = crate::files::read(path).map_err(|e| HistoryError::Io {
+        path: path.to_path_buf(),
+        source: e.into(),
+    })?;
+    read_bytes(&bytes, path)
 }
 
 /// The rows of a history file's bytes, as [`read_file`] reads them (`path` names it in the
 /// errors; the fuzz target reads bytes).
 pub fn read_bytes(bytes: &[u8], path: &Path) -> Result<Vec<Record>, HistoryError> {
-    rows_of(std::io::Cursor::new(bytes), path)
-}
-
-fn rows_of<R: polars::io::mmap::MmapBytesReader>(
-    source: R,
-    path: &Path,
-) -> Result<Vec<Record>, HistoryError> {
     // polars panics on some damaged files: contained, that file is an error. Decoded on
     // this thread (the files are read in parallel already), so that the panic is too.
-    let reader = ParquetReader::new(source).read_parallel(ParallelStrategy::None);
-    let df = crate::panics::contained(|| reader.finish())
-        .map_err(|panic| format!("it is damaged (the Parquet reader failed: {panic})"))
-        .and_then(|read| read.map_err(|e| e.to_string()))
-        .map_err(|message| HistoryError::Parquet {
-            path: path.to_path_buf(),
-            message: format!("{message}; {UNREADABLE_ADVICE}"),
-        })?;
+    // Some damage makes it abort instead: the page headers are checked first.
+    let reader =
+        ParquetReader::new(std::io::Cursor::new(bytes)).read_parallel(ParallelStrategy::None);
+    let df = crate::panics::contained(|| {
+        super::pages::check(bytes).map_err(|e| format!("it is damaged ({e})"))?;
+        reader.finish().map_err(|e| e.to_string())
+    })
+    .map_err(|panic| format!("it is damaged (the Parquet reader failed: {panic})"))
+    .and_then(|read| read)
+    .map_err(|message| HistoryError::Parquet {
+        path: path.to_path_buf(),
+        message: format!("{message}; {UNREADABLE_ADVICE}"),
+    })?;
     Columns { df: &df, path }.records()
 }
 
