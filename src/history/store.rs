@@ -48,11 +48,15 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
 
 /// Refuses to replace the file of another campaign whose name has the same slug.
 fn check_same_campaign(path: &Path, campaign: &str) -> Result<(), HistoryError> {
-    let Ok(crate::files::Opened { file, .. }) = crate::files::open(path) else {
+    // A file that cannot be read (or is damaged: checked as `read_bytes` does) is replaced.
+    let Ok(bytes) = crate::files::read(path) else {
         return Ok(());
     };
+    if super::pages::check(&bytes).is_err() {
+        return Ok(());
+    }
     let found = crate::panics::contained(|| {
-        ParquetReader::new(file)
+        ParquetReader::new(std::io::Cursor::new(&bytes))
             .read_parallel(ParallelStrategy::None)
             .with_columns(Some(vec!["campaign".into()]))
             .with_slice(Some((0, 1)))
