@@ -179,7 +179,7 @@ impl FolderLock {
                 Err(std::fs::TryLockError::WouldBlock) => {
                     let locked = Locked {
                         dir: dir.to_path_buf(),
-                        holder: read_holder(&mut file),
+                        holder: read_written_holder(&mut file),
                     };
                     if !wait {
                         return Err(LockError::Locked(locked));
@@ -198,10 +198,13 @@ impl FolderLock {
             }
             let previous = read_holder(&mut file);
             let holder = Holder::this_process();
+            // Written first, then cut to length: a reader never sees an empty lock file
+            // that a previous holder had filled.
             (|| {
-                file.set_len(0)?;
+                let text = holder.text();
                 file.rewind()?;
-                file.write_all(holder.text().as_bytes())
+                file.write_all(text.as_bytes())?;
+                file.set_len(text.len() as u64)
             })()
             .map_err(io)?;
             return Ok(FolderLock {
@@ -292,6 +295,19 @@ fn still_in_place(file: &File, path: &Path) -> bool {
         let _ = (file, path);
         true
     }
+}
+
+/// The holder of a held lock. A run writes its holder text just after it locks, so an
+/// empty text means it is about to: wait for it a little (at most 0.2 s) to name it.
+fn read_written_holder(file: &mut File) -> Holder {
+    for _ in 0..40 {
+        let holder = read_holder(file);
+        if !holder.is_empty() {
+            return holder;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    read_holder(file)
 }
 
 fn read_holder(file: &mut File) -> Holder {
