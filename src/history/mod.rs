@@ -9,6 +9,8 @@
 
 mod axes;
 #[cfg(feature = "parquet")]
+mod footer;
+#[cfg(feature = "parquet")]
 mod pages;
 pub mod record;
 mod rows;

@@ -12,8 +12,10 @@ use std::io::Cursor;
 /// kilobytes, a page of a 10 000-axis run a few megabytes.
 const MAX_PAGE_BYTES: usize = 256 << 20;
 
-/// Refuses a file whose data pages claim more values than their row group has rows.
+/// Refuses a file whose footer claims more than it holds ([`super::footer`]) or whose data
+/// pages claim more values than their row group has rows.
 pub fn check(bytes: &[u8]) -> Result<(), String> {
+    super::footer::check(bytes)?;
     let metadata = read_metadata(&mut Cursor::new(bytes)).map_err(|e| e.to_string())?;
     let buffer = Buffer::from(bytes.to_vec());
     for (g, group) in metadata.row_groups.iter().enumerate() {

@@ -272,5 +272,28 @@ plan:
             e(""),
             "m.yaml:1:1: expected a mapping with kind, model and plan, got an empty file"
         );
+        // Found by fuzzing: an infinite end made every target `inf`, then a panic.
+        assert_eq!(
+            e("kind: linear\nplan:\n  targets: {start_mm: 10, end_mm: .inf, count: 13}\n"),
+            "m.yaml:3:35: plan.targets.end_mm must be a number within ±1000000, found inf"
+        );
+        assert_eq!(
+            e("kind: linear\nplan: {targets_mm: [0, 0.0004], dwell_s: 1}\n"),
+            "m.yaml:2:20: plan.targets_mm: targets 0 and 0.0004 are the same position as recorded (to 0.001)"
+        );
+        assert_eq!(
+            e("kind: linear\nplan: {targets_mm: [0, 1e300]}\n"),
+            "m.yaml:2:20: plan.targets_mm: targets must be numbers within ±1000000, found 1e300"
+        );
+        assert_eq!(
+            e(
+                "kind: rotary\nplan:\n  targets: {start_deg: 0, end_deg: 0.01, count: 11, jitter_deg: 0}\n"
+            ),
+            "m.yaml:3:12: plan.targets: targets 0.0010 apart, each moved by up to 0 (jitter), can come closer than 0.002, and positions are recorded to 0.001; widen the spacing or lower the jitter"
+        );
+        assert_eq!(
+            e("kind: linear\nplan: {targets_mm: [0, 100], dwell_s: .inf}\n"),
+            "m.yaml:2:39: plan.dwell_s must be a finite number ≥ 0"
+        );
     }
 }

@@ -95,6 +95,28 @@ pub struct TestPlan {
     pub overrun: f64,
 }
 
+/// Largest |position| of a target or an overrun, mm or deg: a kilometre of travel, or
+/// a thousand turns; beyond it the positions would lose their thousandths.
+const MAX_POSITION: f64 = 1e6;
+
+/// Closest two generated targets may come before their offsets: twice the recording step,
+/// so that they stay apart after rounding to it.
+const MIN_GAP: f64 = 0.002;
+
+/// A number as a message shows it: `1e300`, not three hundred digits.
+fn shown(x: f64) -> String {
+    if x.abs() < 1e15 {
+        x.to_string()
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// A target as the simulated file records it: to 0.001 mm or deg.
+fn round_to_recorded(x: f64) -> f64 {
+    (x * 1000.0).round() / 1000.0 + 0.0
+}
+
 /// One approach in the order of measurement.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Visit {
@@ -115,8 +137,13 @@ impl TestPlan {
         if !(self.feed_per_min > 0.0 && self.feed_per_min.is_finite()) {
             return Err("plan.feed must be > 0".into());
         }
-        if !(self.dwell_s >= 0.0 && self.overrun >= 0.0) {
-            return Err("plan.dwell_s and plan.overrun must be ≥ 0".into());
+        if !(self.dwell_s >= 0.0 && self.dwell_s.is_finite()) {
+            return Err("plan.dwell_s must be a finite number ≥ 0".into());
+        }
+        if !(self.overrun >= 0.0 && self.overrun < MAX_POSITION) {
+            return Err(format!(
+                "plan.overrun must be ≥ 0 and less than {MAX_POSITION}"
+            ));
         }
         self.check_size()?;
         match (&self.targets, &self.target_list) {
@@ -129,6 +156,14 @@ impl TestPlan {
             (Some(t), None) => {
                 if t.count == 0 {
                     return Err("plan.targets.count must be at least 1".into());
+                }
+                for (key, x) in [("start", t.start), ("end", t.end)] {
+                    if !(x.abs() <= MAX_POSITION) {
+                        return Err(format!(
+                            "plan.targets.{key} must be a number within ±{MAX_POSITION}, found {}",
+                            shown(x)
+                        ));
+                    }
                 }
                 if t.count > 1 && t.end.partial_cmp(&t.start) != Some(std::cmp::Ordering::Greater) {
                     return Err("plan.targets: end must be greater than start".into());
@@ -144,17 +179,41 @@ impl TestPlan {
                         spacing / 2.0
                     ));
                 }
+                if spacing - 2.0 * t.jitter < MIN_GAP {
+                    return Err(format!(
+                        "plan.targets: targets {spacing:.4} apart, each moved by up to {} \
+                         (jitter), can come closer than {MIN_GAP}, and positions are recorded \
+                         to 0.001; widen the spacing or lower the jitter",
+                        t.jitter
+                    ));
+                }
                 Ok(())
             }
             (None, Some(list)) => {
                 if list.is_empty() {
                     return Err("plan: the target list is empty".into());
                 }
+                if let Some(x) = list.iter().find(|x| !(x.abs() <= MAX_POSITION)) {
+                    return Err(format!(
+                        "plan.target_list: targets must be numbers within ±{MAX_POSITION}, found {}",
+                        shown(*x)
+                    ));
+                }
                 if list
                     .windows(2)
                     .any(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
                 {
                     return Err("plan: listed targets must increase".into());
+                }
+                if let Some(w) = list
+                    .windows(2)
+                    .find(|w| round_to_recorded(w[1]) <= round_to_recorded(w[0]))
+                {
+                    return Err(format!(
+                        "plan.target_list: targets {} and {} are the same position as recorded \
+                         (to 0.001)",
+                        w[0], w[1]
+                    ));
                 }
                 Ok(())
             }
@@ -182,7 +241,7 @@ impl TestPlan {
 
     /// The target positions, rounded to 0.001 (what a file records).
     pub fn target_positions(&self, seed: u64) -> Vec<f64> {
-        let round = |x: f64| (x * 1000.0).round() / 1000.0 + 0.0;
+        let round = round_to_recorded;
         if let Some(list) = &self.target_list {
             return list.iter().map(|&x| round(x)).collect();
         }

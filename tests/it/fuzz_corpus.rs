@@ -78,6 +78,26 @@ fn history_corpus() {
         .join("fuzz/corpus/history/plant-2-annual-inspection_2022-11-20.parquet");
     let rows = axcheck::history::read_bytes(&std::fs::read(&seed).unwrap(), &seed).unwrap();
     assert_eq!(rows.len(), 201);
+    // Footers whose list lengths made polars reserve 13 and 20 GB and abort: refused first.
+    for (name, claim) in [
+        (
+            "footer-list-length-20GB",
+            "a list claims 317064368 elements",
+        ),
+        (
+            "footer-list-length-13GB",
+            "a list claims 212307468 elements",
+        ),
+    ] {
+        let path = seed.with_file_name(name);
+        let e = axcheck::history::read_bytes(&std::fs::read(&path).unwrap(), &path)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("its footer is damaged at byte") && e.contains(claim),
+            "{e}"
+        );
+    }
     replay("history", |bytes| {
         let _ = axcheck::history::read_bytes(bytes, std::path::Path::new("fuzz.parquet"));
     });
