@@ -103,6 +103,11 @@ const MAX_POSITION: f64 = 1e6;
 /// so that they stay apart after rounding to it.
 const MIN_GAP: f64 = 0.002;
 
+/// Finite and within ±[`MAX_POSITION`].
+fn within_travel(x: f64) -> bool {
+    x.is_finite() && x.abs() <= MAX_POSITION
+}
+
 /// A number as a message shows it: `1e300`, not three hundred digits.
 fn shown(x: f64) -> String {
     if x.abs() < 1e15 {
@@ -158,7 +163,7 @@ impl TestPlan {
                     return Err("plan.targets.count must be at least 1".into());
                 }
                 for (key, x) in [("start", t.start), ("end", t.end)] {
-                    if !(x.abs() <= MAX_POSITION) {
+                    if !within_travel(x) {
                         return Err(format!(
                             "plan.targets.{key} must be a number within ±{MAX_POSITION}, found {}",
                             shown(x)
@@ -193,7 +198,7 @@ impl TestPlan {
                 if list.is_empty() {
                     return Err("plan: the target list is empty".into());
                 }
-                if let Some(x) = list.iter().find(|x| !(x.abs() <= MAX_POSITION)) {
+                if let Some(x) = list.iter().find(|x| !within_travel(**x)) {
                     return Err(format!(
                         "plan.target_list: targets must be numbers within ±{MAX_POSITION}, found {}",
                         shown(*x)
