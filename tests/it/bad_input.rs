@@ -637,7 +637,7 @@ fn simulation_errors_in_the_users_words() {
         ),
         (
             "kind: linear\nplan: {targets_mm: [0, 100], dwell_s: -1}\n".into(),
-            "m.yaml:2:39: plan.dwell_s and plan.overrun_mm must be ≥ 0",
+            "m.yaml:2:39: plan.dwell_s must be a finite number ≥ 0",
         ),
         (
             "kind: linear\nplan: {targets: {start_mm: 0, end_mm: 100, count: 3, jitter_mm: 80}}\n"
