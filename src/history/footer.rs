@@ -240,27 +240,34 @@ impl Walk<'_> {
     /// A structure's fields, those of `schema` read as polars reads them.
     fn structure(&mut self, schema: Schema) -> Walked {
         let mut last_id = 0i16;
-        loop {
-            let header = self.byte()?;
-            let kind = header & 0x0f;
-            if kind == 0 {
-                return Ok(());
-            }
-            if kind > 12 {
-                return Err(Stop::Unreadable);
-            }
-            let id = match header >> 4 {
-                0 => self.zigzag()? as i16,
-                delta => last_id
-                    .checked_add(i16::from(delta))
-                    .ok_or(Stop::Unreadable)?,
-            };
+        while let Some((kind, id)) = self.field_header(last_id)? {
             match schema.iter().find(|(known, _)| *known == id) {
                 Some((_, read)) => self.known(*read)?,
                 None => self.skip_value(kind, SKIP_DEPTH)?,
             }
             last_id = id;
         }
+        Ok(())
+    }
+
+    /// A field's type and id (`None` at the end of the structure), as polars reads them:
+    /// the id as a delta from the last one, or in full after a zero delta.
+    fn field_header(&mut self, last_id: i16) -> Result<Option<(u8, i16)>, Stop> {
+        let header = self.byte()?;
+        let kind = header & 0x0f;
+        if kind == 0 {
+            return Ok(None);
+        }
+        if kind > 12 {
+            return Err(Stop::Unreadable);
+        }
+        let id = match header >> 4 {
+            0 => self.zigzag()? as i16,
+            delta => last_id
+                .checked_add(i16::from(delta))
+                .ok_or(Stop::Unreadable)?,
+        };
+        Ok(Some((kind, id)))
     }
 
     fn known(&mut self, read: Read) -> Walked {
@@ -315,23 +322,11 @@ impl Walk<'_> {
 
     fn skip_struct(&mut self, depth: u8) -> Walked {
         let mut last_id = 0i16;
-        loop {
-            let header = self.byte()?;
-            let kind = header & 0x0f;
-            if kind == 0 {
-                return Ok(());
-            }
-            if kind > 12 {
-                return Err(Stop::Unreadable);
-            }
-            last_id = match header >> 4 {
-                0 => self.zigzag()? as i16,
-                delta => last_id
-                    .checked_add(i16::from(delta))
-                    .ok_or(Stop::Unreadable)?,
-            };
+        while let Some((kind, id)) = self.field_header(last_id)? {
             self.skip_value(kind, depth)?;
+            last_id = id;
         }
+        Ok(())
     }
 }
 
