@@ -261,18 +261,18 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 standard,
             };
             let diagnosis = axcheck::diagnose::diagnose(&data, &options);
-            if let Some(path) = &write_model {
-                axcheck::atomic::write(path, diagnosis.extended_model.to_yaml().as_bytes())
-                    .with_context(|| format!("cannot write {}", path.display()))?;
-                eprintln!("axcheck: wrote the extended model to {}", path.display());
-            }
+            let written = write_model
+                .as_deref()
+                .map(|path| write_extended_model(path, &diagnosis.extended_model));
             let name = file.display().to_string();
             let text = if json {
                 cli::json_with_file(&diagnosis, &name)?
             } else {
                 cli::diagnose::render(&name, &diagnosis)
             };
+            // The diagnosis is printed even when its model could not be written.
             print(&text)?;
+            written.transpose()?;
         }
         #[cfg(feature = "parquet")]
         Command::Trend(args) => print(&cli::trend::run(&args)?)?,
@@ -357,6 +357,25 @@ fn progress_of(every_test: bool) -> cli::campaign::Progress {
     } else {
         cli::campaign::Progress::Auto
     }
+}
+
+/// Writes `diagnose --write-model`'s file, only if `axcheck simulate` would accept it: a
+/// model whose plan the simulator refuses (targets closer than the 0.001 it records) is
+/// not written, and the error says why.
+fn write_extended_model(
+    path: &std::path::Path,
+    model: &axcheck::simulate::Simulation,
+) -> Result<()> {
+    if let Err(why) = model.validate_as_written() {
+        anyhow::bail!(
+            "did not write the extended model to {}: `axcheck simulate` would refuse it: {why}",
+            path.display()
+        );
+    }
+    axcheck::atomic::write(path, model.to_yaml().as_bytes())
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    eprintln!("axcheck: wrote the extended model to {}", path.display());
+    Ok(())
 }
 
 /// Prints to stdout; a closed pipe (`| head`) is not an error.

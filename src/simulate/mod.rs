@@ -70,6 +70,12 @@ impl Simulation {
         self.model.validate(self.plan.runs, m)
     }
 
+    /// [`Simulation::validate`] with the keys spelled as the written file spells them
+    /// (`plan.targets_mm`), for a model made in code before it is written.
+    pub fn validate_as_written(&self) -> Result<(), String> {
+        self.validate().map_err(|m| yaml::respell(&m, self.kind).0)
+    }
+
     /// Runs the simulation with `seed` (the file's seed unless overridden).
     pub fn run(&self, seed: u64) -> AxisData {
         let kind = self.kind;

@@ -274,6 +274,13 @@ pub(crate) fn spell(path: &str, field: &str, kind: AxisKind) -> String {
 /// A check's message (which names keys by their internal names, `model.scatter`) with
 /// the keys as the file spells them (`model.scatter_um`), at the first key's location.
 pub(crate) fn locate(message: &str, kind: AxisKind, index: &LocationIndex) -> Located {
+    let (out, first) = respell(message, kind);
+    let at = first.and_then(|p| index.value(&p)).or(index.value(""));
+    Located::new(at, out)
+}
+
+/// A check's message with the keys as the file spells them, and the first key's path.
+pub(crate) fn respell(message: &str, kind: AxisKind) -> (String, Option<String>) {
     let mut out = String::new();
     let mut first = None;
     let mut rest = message;
@@ -293,8 +300,7 @@ pub(crate) fn locate(message: &str, kind: AxisKind, index: &LocationIndex) -> Lo
         rest = &rest[start + token.len()..];
     }
     out.push_str(rest);
-    let at = first.and_then(|p| index.value(&p)).or(index.value(""));
-    Located::new(at, out)
+    (out, first)
 }
 
 /// `model.scatter` as `model.scatter_um`: each internal name (or a name it starts with,

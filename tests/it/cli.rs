@@ -208,3 +208,40 @@ fn diagnose_json_and_the_extended_model_close_the_loop() {
     );
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn diagnose_does_not_write_a_model_that_simulate_would_refuse() {
+    // Targets 0.0004 mm apart are one position in a simulated file (recorded to 0.001):
+    // the model is not written, the diagnosis is still printed, and the exit is 2.
+    let dir = crate::common::scratch("close-model");
+    let csv = dir.join("data/close.csv");
+    let mut text = String::from("target_mm,direction,run,deviation_um\n");
+    for (i, target) in ["0", "0.0004", "10", "20", "30"].iter().enumerate() {
+        for run in 1..=3 {
+            for dir in ["up", "down"] {
+                let dev = (i as f64 * 1.3 + run as f64 * 0.7).sin();
+                text.push_str(&format!("{target},{dir},{run},{dev:.3}\n"));
+            }
+        }
+    }
+    std::fs::write(&csv, text).unwrap();
+    let model = dir.join("model.yaml");
+    let (code, out, err) = axcheck(&[
+        "diagnose",
+        csv.to_str().unwrap(),
+        "--write-model",
+        model.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.contains("Held-out error"), "{out}");
+    assert!(
+        err.contains(&format!(
+            "did not write the extended model to {}: `axcheck simulate` would refuse it: \
+             plan.targets_mm: targets 0 and 0.0004 are the same position as recorded (to 0.001)",
+            model.display()
+        )),
+        "{err}"
+    );
+    assert!(!model.exists());
+    std::fs::remove_dir_all(dir).unwrap();
+}
