@@ -250,7 +250,8 @@ fn load_spec(dir: &Path, name: &str, allow_outside: bool) -> Result<Spec, String
     // Anything at the path is the spec (a folder or a pipe there is an error, not a
     // reason to take the built-in spec of that name).
     if std::fs::symlink_metadata(&candidate).is_ok() {
-        let text = crate::files::read_to_string(&candidate)
+        let root = crate::campaign::paths::root(dir, allow_outside);
+        let text = crate::files::read_to_string_within(&candidate, root.as_deref())
             .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;
         return Spec::from_yaml(&text, &candidate.display().to_string()).map_err(|e| e.to_string());
     }
@@ -347,6 +348,7 @@ fn run_axis(
         Some(None) => Err("spec not loaded".to_string()),
     };
     let tests = files.len();
+    let root = crate::campaign::paths::root(&campaign.dir, campaign.info.allow_outside_paths);
     let mut results: Vec<AxisTest> = files
         .iter()
         .enumerate()
@@ -361,7 +363,15 @@ fn run_axis(
                 Err(e) => slot.error(e.clone()),
                 Ok(spec) => {
                     let rule = campaign.info.decision_rule;
-                    run_test(slot, &axis, spec.as_deref(), rule, path, options)
+                    run_test(
+                        slot,
+                        &axis,
+                        spec.as_deref(),
+                        rule,
+                        path,
+                        root.as_deref(),
+                        options,
+                    )
                 }
             }
         })
@@ -405,16 +415,17 @@ fn relative_name(base: &Path, path: &Path) -> String {
 }
 
 /// `campaign_rule`: the campaign's decision rule; the axis's own and then its spec's come
-/// first.
+/// first. `root`: the folder the data file must be opened in ([`crate::campaign::paths::root`]).
 fn run_test(
     slot: Slot,
     axis: &AxisSpec,
     spec: Option<&Spec>,
     campaign_rule: Option<DecisionRule>,
     path: &Path,
+    root: Option<&Path>,
     options: Options,
 ) -> AxisTest {
-    let (data, recognised) = match measurement::read_file(path, axis.data.sheet()) {
+    let (data, recognised) = match measurement::read_file_within(path, axis.data.sheet(), root) {
         Ok(read) => (read.data, read.recognised),
         Err(e) => return slot.error(e.to_string()),
     };

@@ -12,7 +12,7 @@
 
 use std::fs::{File, Metadata};
 use std::io::Read;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
 /// Why a file the user named is not read.
@@ -26,6 +26,12 @@ pub enum FileError {
         "the file changed while axcheck read it (its size or modification time differ before and after the read); run again once it is complete"
     )]
     Changed,
+    #[error(
+        "it was opened as {}, outside the folder {} (a link on its way was changed after the path was checked); nothing was read from it",
+        real.display(),
+        root.display()
+    )]
+    Outside { real: PathBuf, root: PathBuf },
     #[error("{0}")]
     Io(#[from] std::io::Error),
 }
@@ -96,6 +102,42 @@ impl Opened {
 /// Opens `path` (links followed) for reading if it is a regular file; refuses pipes,
 /// sockets, devices and folders without opening them.
 pub fn open(path: &Path) -> Result<Opened, FileError> {
+    open_within(path, None)
+}
+
+/// [`open`], and when `root` (a folder's real path) is given, refuses the opened file
+/// unless it lies inside it. The caller checked the path's real path before; this checks
+/// what the system actually opened, so a link changed in between (a race with whoever
+/// can write the folder) is caught before a byte is read.
+pub fn open_within(path: &Path, root: Option<&Path>) -> Result<Opened, FileError> {
+    let opened = open_regular(path)?;
+    if let Some(root) = root {
+        let real = opened_real_path(&opened.file, path)?;
+        if !real.starts_with(root) {
+            return Err(FileError::Outside {
+                real,
+                root: root.to_path_buf(),
+            });
+        }
+    }
+    Ok(opened)
+}
+
+/// The real path of the file behind `file`: on Linux what the kernel opened
+/// (`/proc/self/fd`); elsewhere `path` resolved again, a narrower window than none.
+fn opened_real_path(file: &File, path: &Path) -> std::io::Result<PathBuf> {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::fd::AsRawFd;
+        if let Ok(real) = std::fs::read_link(format!("/proc/self/fd/{}", file.as_raw_fd())) {
+            return Ok(real);
+        }
+    }
+    let _ = file;
+    std::fs::canonicalize(path)
+}
+
+fn open_regular(path: &Path) -> Result<Opened, FileError> {
     let before = std::fs::metadata(path)?;
     regular(&before)?;
     let mut options = std::fs::OpenOptions::new();
@@ -118,10 +160,14 @@ pub fn open(path: &Path) -> Result<Opened, FileError> {
     })
 }
 
-/// Opens `path` as [`open`] does, gives the file to `read`, and refuses the result when
-/// the file changed while `read` ran (whatever `read` returned).
-pub fn read_with<T>(path: &Path, read: impl FnOnce(&mut File) -> T) -> Result<T, FileError> {
-    let mut opened = open(path)?;
+/// Opens `path` as [`open_within`] does, gives the file to `read`, and refuses the result
+/// when the file changed while `read` ran (whatever `read` returned).
+pub fn read_with<T>(
+    path: &Path,
+    root: Option<&Path>,
+    read: impl FnOnce(&mut File) -> T,
+) -> Result<T, FileError> {
+    let mut opened = open_within(path, root)?;
     let value = read(&mut opened.file);
     opened.check_unchanged()?;
     Ok(value)
@@ -129,7 +175,12 @@ pub fn read_with<T>(path: &Path, read: impl FnOnce(&mut File) -> T) -> Result<T,
 
 /// The bytes of the regular file `path`.
 pub fn read(path: &Path) -> Result<Vec<u8>, FileError> {
-    read_with(path, |file| {
+    read_within(path, None)
+}
+
+/// The bytes of the regular file `path`, opened inside `root` ([`open_within`]).
+pub fn read_within(path: &Path, root: Option<&Path>) -> Result<Vec<u8>, FileError> {
+    read_with(path, root, |file| {
         let mut bytes = Vec::new();
         file.read_to_end(&mut bytes).map(|_| bytes)
     })?
@@ -138,7 +189,12 @@ pub fn read(path: &Path) -> Result<Vec<u8>, FileError> {
 
 /// The text of the regular file `path` (UTF-8).
 pub fn read_to_string(path: &Path) -> Result<String, FileError> {
-    String::from_utf8(read(path)?).map_err(|_| {
+    read_to_string_within(path, None)
+}
+
+/// The text of the regular file `path` (UTF-8), opened inside `root` ([`open_within`]).
+pub fn read_to_string_within(path: &Path, root: Option<&Path>) -> Result<String, FileError> {
+    String::from_utf8(read_within(path, root)?).map_err(|_| {
         FileError::Io(std::io::Error::new(
             std::io::ErrorKind::InvalidData,
             "stream did not contain valid UTF-8",
@@ -192,12 +248,42 @@ mod tests {
         std::fs::remove_dir_all(dir).unwrap();
     }
 
+    #[cfg(unix)]
+    #[test]
+    fn what_was_opened_must_lie_inside_the_root() {
+        let dir = scratch("within");
+        let (inside, outside) = (dir.join("campaign"), dir.join("elsewhere"));
+        std::fs::create_dir_all(inside.join("data")).unwrap();
+        std::fs::create_dir_all(&outside).unwrap();
+        std::fs::write(inside.join("data/a.csv"), "in").unwrap();
+        std::fs::write(outside.join("secret.csv"), "root:x:0:0").unwrap();
+        // As after a link was swapped in once the path had been checked.
+        std::os::unix::fs::symlink(outside.join("secret.csv"), inside.join("data/b.csv")).unwrap();
+        let root = std::fs::canonicalize(&inside).unwrap();
+        let a = read_to_string_within(&inside.join("data/a.csv"), Some(&root)).unwrap();
+        assert_eq!(a, "in");
+        let e = read_to_string_within(&inside.join("data/b.csv"), Some(&root)).unwrap_err();
+        let secret = std::fs::canonicalize(outside.join("secret.csv")).unwrap();
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "it was opened as {}, outside the folder {} (a link on its way was changed \
+                 after the path was checked); nothing was read from it",
+                secret.display(),
+                root.display()
+            )
+        );
+        // Without a root, links are followed as before.
+        assert!(read_to_string(&inside.join("data/b.csv")).is_ok());
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+
     #[test]
     fn a_file_written_during_the_read_is_refused() {
         let dir = scratch("changed");
         let path = dir.join("growing.csv");
         std::fs::write(&path, "first half\n").unwrap();
-        let result = read_with(&path, |file| {
+        let result = read_with(&path, None, |file| {
             let mut text = String::new();
             file.read_to_string(&mut text).unwrap();
             let mut writer = std::fs::OpenOptions::new()
@@ -208,7 +294,7 @@ mod tests {
             text
         });
         assert!(matches!(result, Err(FileError::Changed)), "{result:?}");
-        assert!(read_with(&path, |_| ()).is_ok());
+        assert!(read_with(&path, None, |_| ()).is_ok());
         std::fs::remove_dir_all(dir).unwrap();
     }
 }

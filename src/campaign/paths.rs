@@ -24,6 +24,21 @@ pub fn contained(base: &Path, relative: &str, allow_outside: bool) -> Result<Pat
     Ok(path)
 }
 
+/// The real path of the campaign folder `base`, inside which every file read for the
+/// campaign must be opened ([`crate::files::open_within`]); `None` when the campaign
+/// allows outside paths, or when the folder cannot be resolved (nothing is read then).
+pub fn root(base: &Path, allow_outside: bool) -> Option<PathBuf> {
+    if allow_outside {
+        return None;
+    }
+    let base = if base.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        base
+    };
+    real_path(base).ok()
+}
+
 /// A path whose real path leaves its folder.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outside {

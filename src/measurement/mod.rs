@@ -471,8 +471,18 @@ pub(crate) fn read_all<R: std::io::Read>(
 /// a regular file only, refused when it changes while it is read ([`crate::files`]);
 /// `sheet` as in [`read_sheet`].
 pub fn read_file(path: &Path, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
+    read_file_within(path, sheet, None)
+}
+
+/// [`read_file`], refused unless the file opened lies inside the folder `root` (a real
+/// path; [`crate::files::open_within`]).
+pub fn read_file_within(
+    path: &Path,
+    sheet: Option<&str>,
+    root: Option<&Path>,
+) -> Result<ReadTest, ReadError> {
     let name = path.display().to_string();
-    crate::files::read_with(path, |file| {
+    crate::files::read_with(path, root, |file| {
         read_sheet(
             std::io::BufReader::with_capacity(64 * 1024, file),
             &name,

@@ -89,9 +89,11 @@ fn outside(name: &str) -> PathBuf {
     away
 }
 
-/// Every output file, the console and the error texts hold no byte of the files outside.
+/// Every output file, the console and the error texts hold no byte of the files outside
+/// (in either case: the readers quote a column's name in lower case).
 fn assert_nothing_leaked(out: &Path, console: &str) {
-    for secret in [MARKER, "root:x:0:0"] {
+    let lower = MARKER.to_lowercase();
+    for secret in [MARKER, lower.as_str(), "root:x:0:0"] {
         assert!(
             !console.contains(secret),
             "`{secret}` on the console:\n{console}"
@@ -592,6 +594,73 @@ fn history_templates_and_named_files_are_checked_too() {
 }
 
 /// A small campaign in `dir` (one good axis) for the lock tests.
+/// A link swapped between the path check and the open: while a thread keeps replacing
+/// `data/x.csv` by a link inside the folder or one to the outside (each an atomic rename),
+/// every run either reads the inside file, refuses the link by its real path, or refuses
+/// what it opened; no byte of the outside file reaches the console, and the good axis is
+/// evaluated every time.
+#[test]
+fn a_link_swapped_while_the_run_reads_never_leaks() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let dir = scratch("hostile-race");
+    let away = outside("race");
+    let campaign = small_campaign(&dir);
+    let mut yaml = std::fs::read_to_string(&campaign).unwrap();
+    yaml.push_str("      - {name: R, kind: linear, data: data/x.csv}\n");
+    std::fs::write(&campaign, yaml).unwrap();
+    let (link, swap) = (dir.join("data/x.csv"), dir.join("data/.swap"));
+    let targets = [PathBuf::from("good.csv"), away.join("secret.csv")];
+    symlink(&targets[0], &link).unwrap();
+    /// Stops the swapping when dropped, also when an assertion fails (the scope waits
+    /// for the swapping thread before it lets the failure through).
+    struct StopOnDrop<'a>(&'a AtomicBool);
+    impl Drop for StopOnDrop<'_> {
+        fn drop(&mut self) {
+            self.0.store(true, Ordering::Relaxed);
+        }
+    }
+    let stop = AtomicBool::new(false);
+    let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
+    std::thread::scope(|scope| {
+        scope.spawn(|| {
+            for k in 0.. {
+                if stop.load(Ordering::Relaxed) {
+                    break;
+                }
+                let _ = std::fs::remove_file(&swap);
+                symlink(&targets[k % 2], &swap).unwrap();
+                std::fs::rename(&swap, &link).unwrap();
+            }
+        });
+        let _stop = StopOnDrop(&stop);
+        for _ in 0..60 {
+            let (code, stdout, stderr) = axcheck(&["check", campaign.to_str().unwrap()]);
+            let console = format!("{stdout}{stderr}");
+            assert!(code == 0 || code == 1, "{console}");
+            assert_nothing_leaked(&dir.join("no-outputs"), &console);
+            assert!(
+                !console.contains(" M X "),
+                "the good axis passes: {console}"
+            );
+            if code == 0 {
+                read += 1;
+            } else if console
+                .contains("was changed after the path was checked); nothing was read from it")
+            {
+                opened_outside += 1;
+            } else {
+                assert!(console.contains("outside the campaign folder"), "{console}");
+                refused += 1;
+            }
+        }
+    });
+    eprintln!(
+        "swapped link: {read} read inside, {refused} refused by path, {opened_outside} refused when opened"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+    std::fs::remove_dir_all(away).unwrap();
+}
+
 fn small_campaign(dir: &Path) -> PathBuf {
     std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
     let yaml = "campaign: {name: L, date: 2026-11-20}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n";
