@@ -173,7 +173,9 @@ pub fn run(
     options: Options,
     progress: &(dyn Fn(&AxisTest) + Sync),
 ) -> CampaignResult {
-    let specs = load_specs(campaign);
+    // The folder every file read for the campaign must be opened in.
+    let root = crate::campaign::paths::root(&campaign.dir, campaign.info.allow_outside_paths);
+    let specs = load_specs(campaign, root.as_deref());
     let work: Vec<(Arc<MachineInfo>, &crate::campaign::AxisEntry)> = campaign
         .machines
         .iter()
@@ -185,7 +187,8 @@ pub fn run(
     let evaluate_all = || -> Vec<AxisTest> {
         work.par_iter()
             .flat_map_iter(|(machine, entry)| {
-                let mut tests = run_axis(campaign, machine, entry, &specs, options);
+                let mut tests =
+                    run_axis(campaign, machine, entry, &specs, root.as_deref(), options);
                 for t in &mut tests {
                     progress(t);
                     if options.drop_data {
@@ -222,14 +225,17 @@ pub fn run(
 
 /// Every spec the campaign names, loaded once: `specs/NAME.yaml` beside the campaign, a
 /// path to a `.yaml` file, or a spec built into axcheck.
-fn load_specs(campaign: &Campaign) -> BTreeMap<String, Result<Arc<Spec>, String>> {
+fn load_specs(
+    campaign: &Campaign,
+    root: Option<&Path>,
+) -> BTreeMap<String, Result<Arc<Spec>, String>> {
     let mut specs = BTreeMap::new();
     for (_, entry) in campaign.axes() {
         if let Ok(axis) = &entry.spec
             && let Some(name) = &axis.spec
             && !specs.contains_key(name)
         {
-            let spec = load_spec(&campaign.dir, name, campaign.info.allow_outside_paths);
+            let spec = load_spec(&campaign.dir, name, campaign.info.allow_outside_paths, root);
             specs.insert(name.clone(), spec.map(Arc::new));
         }
     }
@@ -237,8 +243,14 @@ fn load_specs(campaign: &Campaign) -> BTreeMap<String, Result<Arc<Spec>, String>
 }
 
 /// A spec named by path, or `specs/NAME.yaml` beside the campaign, or a built-in one; the
-/// path follows the campaign's path rule (inside its folder unless `allow_outside_paths`).
-fn load_spec(dir: &Path, name: &str, allow_outside: bool) -> Result<Spec, String> {
+/// path follows the campaign's path rule (inside its folder unless `allow_outside_paths`),
+/// and the file opened must lie in `root` ([`crate::files::open_within`]).
+fn load_spec(
+    dir: &Path,
+    name: &str,
+    allow_outside: bool,
+    root: Option<&Path>,
+) -> Result<Spec, String> {
     let is_path = name.ends_with(".yaml") || name.ends_with(".yml");
     let relative = if is_path {
         name.to_string()
@@ -250,8 +262,7 @@ fn load_spec(dir: &Path, name: &str, allow_outside: bool) -> Result<Spec, String
     // Anything at the path is the spec (a folder or a pipe there is an error, not a
     // reason to take the built-in spec of that name).
     if std::fs::symlink_metadata(&candidate).is_ok() {
-        let root = crate::campaign::paths::root(dir, allow_outside);
-        let text = crate::files::read_to_string_within(&candidate, root.as_deref())
+        let text = crate::files::read_to_string_within(&candidate, root)
             .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;
         return Spec::from_yaml(&text, &candidate.display().to_string()).map_err(|e| e.to_string());
     }
@@ -313,6 +324,7 @@ fn run_axis(
     machine: &Arc<MachineInfo>,
     entry: &crate::campaign::AxisEntry,
     specs: &BTreeMap<String, Result<Arc<Spec>, String>>,
+    root: Option<&Path>,
     options: Options,
 ) -> Vec<AxisTest> {
     let slot = Slot {
@@ -348,7 +360,6 @@ fn run_axis(
         Some(None) => Err("spec not loaded".to_string()),
     };
     let tests = files.len();
-    let root = crate::campaign::paths::root(&campaign.dir, campaign.info.allow_outside_paths);
     let mut results: Vec<AxisTest> = files
         .iter()
         .enumerate()
@@ -363,15 +374,7 @@ fn run_axis(
                 Err(e) => slot.error(e.clone()),
                 Ok(spec) => {
                     let rule = campaign.info.decision_rule;
-                    run_test(
-                        slot,
-                        &axis,
-                        spec.as_deref(),
-                        rule,
-                        path,
-                        root.as_deref(),
-                        options,
-                    )
+                    run_test(slot, &axis, spec.as_deref(), rule, path, root, options)
                 }
             }
         })

@@ -31,12 +31,17 @@ pub fn root(base: &Path, allow_outside: bool) -> Option<PathBuf> {
     if allow_outside {
         return None;
     }
-    let base = if base.as_os_str().is_empty() {
+    real_path(folder(base)).ok()
+}
+
+/// The folder `base` as the system names it: `.` for the empty path of a campaign file
+/// named without a folder.
+fn folder(base: &Path) -> &Path {
+    if base.as_os_str().is_empty() {
         Path::new(".")
     } else {
         base
-    };
-    real_path(base).ok()
+    }
 }
 
 /// A path whose real path leaves its folder.
@@ -77,12 +82,8 @@ impl std::fmt::Display for Outside {
 /// A path that does not exist resolves as far as it does (a history folder a run will
 /// create); one that cannot be resolved at all (a link loop) is left to the read, which
 /// fails on it without reading anything.
-pub fn check_real(base: &Path, relative: &Path, folder: &'static str) -> Result<(), Outside> {
-    let base = if base.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        base
-    };
+pub fn check_real(base: &Path, relative: &Path, folder_name: &'static str) -> Result<(), Outside> {
+    let base = folder(base);
     let (Ok(root), Ok(real)) = (real_path(base), real_path(&base.join(relative))) else {
         return Ok(());
     };
@@ -104,7 +105,7 @@ pub fn check_real(base: &Path, relative: &Path, folder: &'static str) -> Result<
                 through,
                 real: link_real,
                 root,
-                folder,
+                folder: folder_name,
             });
         }
     }
@@ -113,7 +114,7 @@ pub fn check_real(base: &Path, relative: &Path, folder: &'static str) -> Result<
         through: None,
         real,
         root,
-        folder,
+        folder: folder_name,
     })
 }
 
