@@ -99,14 +99,9 @@ impl Opened {
     }
 }
 
-/// Opens `path` (links followed) for reading if it is a regular file; refuses pipes,
-/// sockets, devices and folders without opening them.
-pub fn open(path: &Path) -> Result<Opened, FileError> {
-    open_within(path, None)
-}
-
-/// [`open`], and when `root` (a folder's real path) is given, refuses the opened file
-/// unless it lies inside it. The caller checked the path's real path before; this checks
+/// Opens `path` (links followed) for reading if it is a regular file, refusing pipes,
+/// sockets, devices and folders without opening them; and when `root` (a folder's real
+/// path) is given, refuses the opened file unless it lies inside it. The caller checked the path's real path before; this checks
 /// what the system actually opened, so a link changed in between (a race with whoever
 /// can write the folder) is caught before a byte is read.
 pub fn open_within(path: &Path, root: Option<&Path>) -> Result<Opened, FileError> {
@@ -137,6 +132,7 @@ fn opened_real_path(file: &File, path: &Path) -> std::io::Result<PathBuf> {
     std::fs::canonicalize(path)
 }
 
+/// The regular-file part of [`open_within`].
 fn open_regular(path: &Path) -> Result<Opened, FileError> {
     let before = std::fs::metadata(path)?;
     regular(&before)?;
