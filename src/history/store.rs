@@ -32,7 +32,8 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
         });
     }
     let path = file_path(dir, &first.campaign, first.date);
-    check_same_campaign(&path, &first.campaign)?;
+    let root = crate::campaign::paths::real_path(dir).ok();
+    check_same_campaign(&path, &first.campaign, root.as_deref())?;
     let bytes = parquet_bytes(records).map_err(|e| HistoryError::Parquet {
         path: path.clone(),
         message: e.to_string(),
@@ -47,9 +48,14 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
 }
 
 /// Refuses to replace the file of another campaign whose name has the same slug.
-fn check_same_campaign(path: &Path, campaign: &str) -> Result<(), HistoryError> {
-    // A file that cannot be read (or is damaged: checked as `read_bytes` does) is replaced.
-    let Ok(bytes) = crate::files::read(path) else {
+fn check_same_campaign(
+    path: &Path,
+    campaign: &str,
+    root: Option<&Path>,
+) -> Result<(), HistoryError> {
+    // A file that cannot be read (or is damaged: checked as `read_bytes` does) is replaced;
+    // one opened outside the history folder is never read.
+    let Ok(bytes) = crate::files::read_within(path, root) else {
         return Ok(());
     };
     if super::pages::check(&bytes).is_err() {
@@ -153,9 +159,12 @@ pub fn read(dir: &Path) -> Result<Vec<Record>, HistoryError> {
         });
     }
     let files = history_files(dir)?;
+    // Each file is opened inside the folder's real path, resolved once: a folder on the
+    // way swapped for a link after the walk is refused, not read.
+    let root = crate::campaign::paths::real_path(dir).ok();
     let per_file: Vec<Vec<Record>> = files
         .par_iter()
-        .map(|path| read_file(path))
+        .map(|path| read_file(path, root.as_deref()))
         .collect::<Result<_, _>>()?;
     Ok(per_file.into_iter().flatten().collect())
 }
@@ -182,9 +191,10 @@ fn history_files(dir: &Path) -> Result<Vec<PathBuf>, HistoryError> {
 const UNREADABLE_ADVICE: &str =
     "restore it from a backup, or move it out of the history folder to read the others";
 
-/// One history file's rows, its schema checked.
-pub fn read_file(path: &Path) -> Result<Vec<Record>, HistoryError> {
-    let bytes = crate::files::read(path).map_err(|e| HistoryError::Io {
+/// One history file's rows, its schema checked; refused unless the file opened lies
+/// inside `root` (a real path; [`crate::files::open_within`]).
+pub fn read_file(path: &Path, root: Option<&Path>) -> Result<Vec<Record>, HistoryError> {
+    let bytes = crate::files::read_within(path, root).map_err(|e| HistoryError::Io {
         path: path.to_path_buf(),
         source: e.into(),
     })?;

@@ -119,7 +119,9 @@ fn read_template(dir: &Path, name: &str) -> Result<String, ReportError> {
             ))
         },
     )?;
-    crate::files::read_to_string(&path)
+    // Opened inside the folder's real path: a link swapped after the check is refused.
+    let root = crate::campaign::paths::root(dir, false);
+    crate::files::read_to_string_within(&path, root.as_deref())
         .map_err(|e| ReportError::Templates(format!("{}: {e}", path.display())))
 }
 

@@ -238,6 +238,62 @@ fn record(campaign: &str, schema_version: u32) -> Record {
     }
 }
 
+/// While a thread swaps the year folder of a history for a link to another folder (out
+/// of the way, link in, link out, back), every read either gives the history's own rows or
+/// refuses a file it opened outside the history folder: the other folder's rows (campaign
+/// `Away`) never come back.
+#[cfg(unix)]
+#[test]
+fn a_year_folder_swapped_for_a_link_while_the_history_is_read_never_leaks() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let dir = scratch("history-race");
+    let hist = dir.join("hist");
+    let mine = history::append(&hist, &[record("Plant", 1)])
+        .unwrap()
+        .unwrap();
+    let away = history::append(&dir.join("away"), &[record("Away", 1)])
+        .unwrap()
+        .unwrap();
+    std::fs::rename(&away, away.with_file_name(mine.file_name().unwrap())).unwrap();
+    let (year, aside) = (mine.parent().unwrap().to_path_buf(), dir.join("aside"));
+    let away_year = away.parent().unwrap().to_path_buf();
+    let stop = AtomicBool::new(false);
+    let (mut read, mut refused, mut missing) = (0, 0, 0);
+    std::thread::scope(|scope| {
+        scope.spawn(|| {
+            while !stop.load(Ordering::Relaxed) {
+                std::fs::rename(&year, &aside).unwrap();
+                std::os::unix::fs::symlink(&away_year, &year).unwrap();
+                std::fs::remove_file(&year).unwrap();
+                std::fs::rename(&aside, &year).unwrap();
+            }
+        });
+        // Stops the swapping also when an assertion fails (the scope waits for it).
+        struct StopOnDrop<'a>(&'a AtomicBool);
+        impl Drop for StopOnDrop<'_> {
+            fn drop(&mut self) {
+                self.0.store(true, Ordering::Relaxed);
+            }
+        }
+        let _stop = StopOnDrop(&stop);
+        for _ in 0..10_000 {
+            match history::read(&hist) {
+                Ok(rows) => {
+                    assert!(rows.iter().all(|r| &*r.campaign == "Plant"), "{rows:?}");
+                    read += 1;
+                }
+                Err(e) if e.to_string().contains("nothing was read from it") => refused += 1,
+                Err(e) => {
+                    assert!(!e.to_string().contains("Away"), "{e}");
+                    missing += 1;
+                }
+            }
+        }
+    });
+    eprintln!("swapped year folder: {read} read, {refused} refused when opened, {missing} missed");
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
 #[test]
 fn reading_checks_the_schema_and_skips_temporary_files() {
     let dir = scratch("history-schema");
