@@ -55,3 +55,30 @@ pub fn pdf_text(path: &std::path::Path) -> String {
     let pages: Vec<u32> = doc.get_pages().keys().copied().collect();
     doc.extract_text(&pages).unwrap()
 }
+
+/// Runs `body` while another thread calls `swap` over and over (a race with whoever can
+/// write a folder), from the first swap on. The swapping stops when `body` returns, and also
+/// when it fails: the scope waits for the thread before it lets the failure through.
+pub fn while_swapping<T>(mut swap: impl FnMut() + Send, body: impl FnOnce() -> T) -> T {
+    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+    struct StopOnDrop<'a>(&'a AtomicBool);
+    impl Drop for StopOnDrop<'_> {
+        fn drop(&mut self) {
+            self.0.store(true, Ordering::Relaxed);
+        }
+    }
+    let (stop, swaps) = (AtomicBool::new(false), AtomicUsize::new(0));
+    std::thread::scope(|scope| {
+        scope.spawn(|| {
+            while !stop.load(Ordering::Relaxed) {
+                swap();
+                swaps.fetch_add(1, Ordering::Relaxed);
+            }
+        });
+        let _stop = StopOnDrop(&stop);
+        while swaps.load(Ordering::Relaxed) == 0 {
+            std::thread::yield_now();
+        }
+        body()
+    })
+}

@@ -5,7 +5,7 @@
 //! in the files outside) reaches any output. Every run has a deadline, so a regression
 //! that blocks on a pipe or a lock fails instead of hanging the test binary.
 
-use crate::common::{data_path, scratch};
+use crate::common::{data_path, scratch, while_swapping};
 use std::io::{BufRead, Read};
 use std::os::unix::fs::symlink;
 use std::path::{Path, PathBuf};
@@ -601,7 +601,6 @@ fn history_templates_and_named_files_are_checked_too() {
 /// evaluated every time.
 #[test]
 fn a_link_swapped_while_the_run_reads_never_leaks() {
-    use std::sync::atomic::{AtomicBool, Ordering};
     let dir = scratch("hostile-race");
     let away = outside("race");
     let campaign = small_campaign(&dir);
@@ -611,28 +610,15 @@ fn a_link_swapped_while_the_run_reads_never_leaks() {
     let (link, swap) = (dir.join("data/x.csv"), dir.join("data/.swap"));
     let targets = [PathBuf::from("good.csv"), away.join("secret.csv")];
     symlink(&targets[0], &link).unwrap();
-    /// Stops the swapping when dropped, also when an assertion fails (the scope waits
-    /// for the swapping thread before it lets the failure through).
-    struct StopOnDrop<'a>(&'a AtomicBool);
-    impl Drop for StopOnDrop<'_> {
-        fn drop(&mut self) {
-            self.0.store(true, Ordering::Relaxed);
-        }
-    }
-    let stop = AtomicBool::new(false);
-    let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
-    std::thread::scope(|scope| {
-        scope.spawn(|| {
-            for k in 0.. {
-                if stop.load(Ordering::Relaxed) {
-                    break;
-                }
-                let _ = std::fs::remove_file(&swap);
-                symlink(&targets[k % 2], &swap).unwrap();
-                std::fs::rename(&swap, &link).unwrap();
-            }
-        });
-        let _stop = StopOnDrop(&stop);
+    let mut k = 0;
+    let swapping = || {
+        let _ = std::fs::remove_file(&swap);
+        symlink(&targets[k % 2], &swap).unwrap();
+        std::fs::rename(&swap, &link).unwrap();
+        k += 1;
+    };
+    let (read, refused, opened_outside) = while_swapping(swapping, || {
+        let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
         for _ in 0..60 {
             let (code, stdout, stderr) = axcheck(&["check", campaign.to_str().unwrap()]);
             let console = format!("{stdout}{stderr}");
@@ -653,6 +639,7 @@ fn a_link_swapped_while_the_run_reads_never_leaks() {
                 refused += 1;
             }
         }
+        (read, refused, opened_outside)
     });
     eprintln!(
         "swapped link: {read} read inside, {refused} refused by path, {opened_outside} refused when opened"
