@@ -648,6 +648,61 @@ fn a_link_swapped_while_the_run_reads_never_leaks() {
     std::fs::remove_dir_all(away).unwrap();
 }
 
+/// While a thread swaps `style.typ` of a shared templates folder between a link to a
+/// template inside it and a link to a file outside (not UTF-8, so that reading it shows),
+/// every `Reports::new` reads the inside template or refuses the link, by its real path or
+/// at the open; the outside file is never read.
+#[test]
+fn a_template_swapped_for_a_link_while_it_is_read_is_never_read() {
+    let dir = scratch("hostile-template-race");
+    let away = outside("template-race");
+    std::fs::write(away.join("style.typ"), [0xff, 0xfe, 0x00]).unwrap();
+    let templates = dir.join("templates");
+    std::fs::create_dir_all(&templates).unwrap();
+    let source = Path::new(env!("CARGO_MANIFEST_DIR")).join("templates");
+    for (from, to) in [
+        ("style.typ", "inside-style.typ"),
+        ("axis-report.typ", "axis-report.typ"),
+        ("summary.typ", "summary.typ"),
+    ] {
+        std::fs::copy(source.join(from), templates.join(to)).unwrap();
+    }
+    let (link, swap) = (templates.join("style.typ"), templates.join(".swap"));
+    let targets = [PathBuf::from("inside-style.typ"), away.join("style.typ")];
+    symlink(&targets[0], &link).unwrap();
+    let mut k = 0;
+    let swapping = || {
+        let _ = std::fs::remove_file(&swap);
+        symlink(&targets[k % 2], &swap).unwrap();
+        std::fs::rename(&swap, &link).unwrap();
+        k += 1;
+    };
+    let (read, refused, opened_outside) = while_swapping(swapping, || {
+        let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
+        let start = Instant::now();
+        while opened_outside < 3 && start.elapsed() < Duration::from_secs(10) {
+            let Err(e) = axcheck::report::Reports::new(Some(&templates)) else {
+                read += 1;
+                continue;
+            };
+            let e = e.to_string();
+            assert!(!e.contains("UTF-8"), "the outside file was read: {e}");
+            if e.contains("was changed after the path was checked); nothing was read from it") {
+                opened_outside += 1;
+            } else {
+                assert!(e.contains("outside the templates folder"), "{e}");
+                refused += 1;
+            }
+        }
+        (read, refused, opened_outside)
+    });
+    eprintln!(
+        "swapped template: {read} read inside, {refused} refused by path, {opened_outside} refused when opened"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+    std::fs::remove_dir_all(away).unwrap();
+}
+
 fn small_campaign(dir: &Path) -> PathBuf {
     std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
     let yaml = "campaign: {name: L, date: 2026-11-20}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n";
