@@ -593,7 +593,6 @@ fn history_templates_and_named_files_are_checked_too() {
     std::fs::remove_dir_all(away).unwrap();
 }
 
-/// A small campaign in `dir` (one good axis) for the lock tests.
 /// A link swapped between the path check and the open: while a thread keeps replacing
 /// `data/x.csv` by a link inside the folder or one to the outside (each an atomic rename),
 /// every run either reads the inside file, refuses the link by its real path, or refuses
@@ -607,16 +606,10 @@ fn a_link_swapped_while_the_run_reads_never_leaks() {
     let mut yaml = std::fs::read_to_string(&campaign).unwrap();
     yaml.push_str("      - {name: R, kind: linear, data: data/x.csv}\n");
     std::fs::write(&campaign, yaml).unwrap();
-    let (link, swap) = (dir.join("data/x.csv"), dir.join("data/.swap"));
-    let targets = [PathBuf::from("good.csv"), away.join("secret.csv")];
-    symlink(&targets[0], &link).unwrap();
-    let mut k = 0;
-    let swapping = || {
-        let _ = std::fs::remove_file(&swap);
-        symlink(&targets[k % 2], &swap).unwrap();
-        std::fs::rename(&swap, &link).unwrap();
-        k += 1;
-    };
+    let swapping = link_swapper(
+        dir.join("data/x.csv"),
+        [PathBuf::from("good.csv"), away.join("secret.csv")],
+    );
     let (read, refused, opened_outside) = while_swapping(swapping, || {
         let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
         for _ in 0..60 {
@@ -667,16 +660,10 @@ fn a_template_swapped_for_a_link_while_it_is_read_is_never_read() {
     ] {
         std::fs::copy(source.join(from), templates.join(to)).unwrap();
     }
-    let (link, swap) = (templates.join("style.typ"), templates.join(".swap"));
-    let targets = [PathBuf::from("inside-style.typ"), away.join("style.typ")];
-    symlink(&targets[0], &link).unwrap();
-    let mut k = 0;
-    let swapping = || {
-        let _ = std::fs::remove_file(&swap);
-        symlink(&targets[k % 2], &swap).unwrap();
-        std::fs::rename(&swap, &link).unwrap();
-        k += 1;
-    };
+    let swapping = link_swapper(
+        templates.join("style.typ"),
+        [PathBuf::from("inside-style.typ"), away.join("style.typ")],
+    );
     let (read, refused, opened_outside) = while_swapping(swapping, || {
         let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
         let start = Instant::now();
@@ -703,6 +690,21 @@ fn a_template_swapped_for_a_link_while_it_is_read_is_never_read() {
     std::fs::remove_dir_all(away).unwrap();
 }
 
+/// Makes `link` a link to `targets[0]`, and gives what swaps it for a link to the other
+/// target, by turns; each swap an atomic rename (a new link beside it, renamed over it).
+fn link_swapper(link: PathBuf, targets: [PathBuf; 2]) -> impl FnMut() + Send {
+    symlink(&targets[0], &link).unwrap();
+    let swap = link.with_file_name(".swap");
+    let mut k = 1;
+    move || {
+        let _ = std::fs::remove_file(&swap);
+        symlink(&targets[k % 2], &swap).unwrap();
+        std::fs::rename(&swap, &link).unwrap();
+        k += 1;
+    }
+}
+
+/// A small campaign in `dir` (one good axis) for the lock and race tests.
 fn small_campaign(dir: &Path) -> PathBuf {
     std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
     let yaml = "campaign: {name: L, date: 2026-11-20}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n";
