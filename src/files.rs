@@ -101,9 +101,10 @@ impl Opened {
 
 /// Opens `path` (links followed) for reading if it is a regular file, refusing pipes,
 /// sockets, devices and folders without opening them; and when `root` (a folder's real
-/// path) is given, refuses the opened file unless it lies inside it. The caller checked the path's real path before; this checks
-/// what the system actually opened, so a link changed in between (a race with whoever
-/// can write the folder) is caught before a byte is read.
+/// path) is given, refuses the opened file unless it lies inside it. The caller checked
+/// the path's real path before; this checks what the system actually opened, so a link
+/// changed in between (a race with whoever can write the folder) is caught before a byte
+/// is read.
 pub fn open_within(path: &Path, root: Option<&Path>) -> Result<Opened, FileError> {
     let opened = open_regular(path)?;
     if let Some(root) = root {

@@ -24,9 +24,10 @@ pub fn contained(base: &Path, relative: &str, allow_outside: bool) -> Result<Pat
     Ok(path)
 }
 
-/// The real path of the campaign folder `base`, inside which every file read for the
-/// campaign must be opened ([`crate::files::open_within`]); `None` when the campaign
-/// allows outside paths, or when the folder cannot be resolved (nothing is read then).
+/// The real path of the folder `base` (a campaign's, the templates' or a history's),
+/// inside which every file read from it must be opened ([`crate::files::open_within`]);
+/// `None` when the campaign allows outside paths, or when the folder cannot be resolved
+/// (nothing can be read from it then).
 pub fn root(base: &Path, allow_outside: bool) -> Option<PathBuf> {
     if allow_outside {
         return None;

@@ -32,7 +32,7 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
         });
     }
     let path = file_path(dir, &first.campaign, first.date);
-    let root = crate::campaign::paths::real_path(dir).ok();
+    let root = crate::campaign::paths::root(dir, false);
     check_same_campaign(&path, &first.campaign, root.as_deref())?;
     let bytes = parquet_bytes(records).map_err(|e| HistoryError::Parquet {
         path: path.clone(),
@@ -161,7 +161,7 @@ pub fn read(dir: &Path) -> Result<Vec<Record>, HistoryError> {
     let files = history_files(dir)?;
     // Each file is opened inside the folder's real path, resolved once: a folder on the
     // way swapped for a link after the walk is refused, not read.
-    let root = crate::campaign::paths::real_path(dir).ok();
+    let root = crate::campaign::paths::root(dir, false);
     let per_file: Vec<Vec<Record>> = files
         .par_iter()
         .map(|path| read_file(path, root.as_deref()))

@@ -110,7 +110,9 @@ impl Files {
     }
 }
 
-fn read_template(dir: &Path, name: &str) -> Result<String, ReportError> {
+/// `root`: the real path of `dir`, which the opened template must lie in
+/// ([`crate::files::open_within`]): a link swapped after the check is refused.
+fn read_template(dir: &Path, root: Option<&Path>, name: &str) -> Result<String, ReportError> {
     let path = dir.join(name);
     crate::campaign::paths::check_real(dir, Path::new(name), "templates folder").map_err(
         |outside| {
@@ -119,9 +121,7 @@ fn read_template(dir: &Path, name: &str) -> Result<String, ReportError> {
             ))
         },
     )?;
-    // Opened inside the folder's real path: a link swapped after the check is refused.
-    let root = crate::campaign::paths::root(dir, false);
-    crate::files::read_to_string_within(&path, root.as_deref())
+    crate::files::read_to_string_within(&path, root)
         .map_err(|e| ReportError::Templates(format!("{}: {e}", path.display())))
 }
 
@@ -152,6 +152,7 @@ impl Reports {
     /// does not put another file into the reports).
     pub fn new(dir: Option<&Path>) -> Result<Reports, ReportError> {
         let mut templates = HashMap::new();
+        let root = dir.and_then(|dir| crate::campaign::paths::root(dir, false));
         for (name, text) in TEMPLATES {
             let text = match dir {
                 None => text.to_string(),
@@ -162,7 +163,7 @@ impl Reports {
                 {
                     text.to_string()
                 }
-                Some(dir) => read_template(dir, name)?,
+                Some(dir) => read_template(dir, root.as_deref(), name)?,
             };
             templates.insert(format!("/{name}"), text);
         }
