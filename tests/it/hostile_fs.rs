@@ -610,8 +610,8 @@ fn a_link_swapped_while_the_run_reads_never_leaks() {
         dir.join("data/x.csv"),
         [PathBuf::from("good.csv"), away.join("secret.csv")],
     );
-    let (read, refused, opened_outside) = while_swapping(swapping, || {
-        let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
+    let tally = while_swapping(swapping, || {
+        let mut tally = RaceTally::default();
         for _ in 0..60 {
             let (code, stdout, stderr) = axcheck(&["check", campaign.to_str().unwrap()]);
             let console = format!("{stdout}{stderr}");
@@ -622,21 +622,14 @@ fn a_link_swapped_while_the_run_reads_never_leaks() {
                 "the good axis passes: {console}"
             );
             if code == 0 {
-                read += 1;
-            } else if console
-                .contains("was changed after the path was checked); nothing was read from it")
-            {
-                opened_outside += 1;
+                tally.read += 1;
             } else {
-                assert!(console.contains("outside the campaign folder"), "{console}");
-                refused += 1;
+                tally.refused(&console, "outside the campaign folder");
             }
         }
-        (read, refused, opened_outside)
+        tally
     });
-    eprintln!(
-        "swapped link: {read} read inside, {refused} refused by path, {opened_outside} refused when opened"
-    );
+    eprintln!("swapped link: {tally}");
     std::fs::remove_dir_all(dir).unwrap();
     std::fs::remove_dir_all(away).unwrap();
 }
@@ -664,30 +657,55 @@ fn a_template_swapped_for_a_link_while_it_is_read_is_never_read() {
         templates.join("style.typ"),
         [PathBuf::from("inside-style.typ"), away.join("style.typ")],
     );
-    let (read, refused, opened_outside) = while_swapping(swapping, || {
-        let (mut read, mut refused, mut opened_outside) = (0, 0, 0);
+    let tally = while_swapping(swapping, || {
+        let mut tally = RaceTally::default();
         let start = Instant::now();
-        while opened_outside < 3 && start.elapsed() < Duration::from_secs(10) {
+        while tally.refused_at_open < 3 && start.elapsed() < Duration::from_secs(10) {
             let Err(e) = axcheck::report::Reports::new(Some(&templates)) else {
-                read += 1;
+                tally.read += 1;
                 continue;
             };
             let e = e.to_string();
             assert!(!e.contains("UTF-8"), "the outside file was read: {e}");
-            if e.contains("was changed after the path was checked); nothing was read from it") {
-                opened_outside += 1;
-            } else {
-                assert!(e.contains("outside the templates folder"), "{e}");
-                refused += 1;
-            }
+            tally.refused(&e, "outside the templates folder");
         }
-        (read, refused, opened_outside)
+        tally
     });
-    eprintln!(
-        "swapped template: {read} read inside, {refused} refused by path, {opened_outside} refused when opened"
-    );
+    eprintln!("swapped template: {tally}");
     std::fs::remove_dir_all(dir).unwrap();
     std::fs::remove_dir_all(away).unwrap();
+}
+
+/// What the reads of a link race came to: the inside target read, the link refused by its
+/// real path, or what was opened refused before a byte of it was read.
+#[derive(Default)]
+struct RaceTally {
+    read: usize,
+    refused_by_path: usize,
+    refused_at_open: usize,
+}
+
+impl RaceTally {
+    /// Counts a refused read by its message: refused at the open, or else by its real path,
+    /// which must then say `outside`.
+    fn refused(&mut self, message: &str, outside: &str) {
+        if message.contains("was changed after the path was checked); nothing was read from it") {
+            self.refused_at_open += 1;
+        } else {
+            assert!(message.contains(outside), "{message}");
+            self.refused_by_path += 1;
+        }
+    }
+}
+
+impl std::fmt::Display for RaceTally {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(
+            f,
+            "{} read inside, {} refused by path, {} refused when opened",
+            self.read, self.refused_by_path, self.refused_at_open
+        )
+    }
 }
 
 /// Makes `link` a link to `targets[0]`, and gives what swaps it for a link to the other
