@@ -25,7 +25,7 @@ fn main() {
                 let start = Instant::now();
                 for _ in 0..iterations {
                     let table = held_table(*c, black_box(&data), &settings).expect("held");
-                    let file = c.write(&table).expect("written");
+                    let file = c.write(&table, &[]).expect("written");
                     black_box((file, evaluate(&apply(&table, &data), StandardId::Iso230_2)));
                 }
                 start.elapsed().as_secs_f64() * 1e6 / iterations as f64

@@ -512,7 +512,13 @@ fn run_test(
                 interval: table.interval,
                 reference: table.reference,
                 pitch: axis.raw.pitch,
-                axis: table.axis,
+                place: crate::compensate::Place {
+                    axis: table.axis,
+                    measuring_system: table.measuring_system,
+                    number: None,
+                },
+                active: None,
+                conditions: axis.raw.conditions.compensation.clone(),
             };
             let own;
             let diagnosis = match &diagnosis {

@@ -29,4 +29,5 @@ pub mod suggest;
 pub mod trend;
 pub mod uncertainty;
 pub mod units;
+pub mod verify;
 pub mod yaml;

@@ -132,7 +132,7 @@ enum Command {
         #[command(flatten)]
         sheet: cli::SheetArg,
         /// Controller whose table format to write: csv, linuxcnc, siemens-840d, fanuc,
-        /// heidenhain, twincat, ecmc.
+        /// heidenhain, twincat, ecmc (10.0.0 and later), ecmc-9.6.
         #[arg(long, short)]
         controller: String,
         /// Table file to write (then a summary of measured and predicted parameters is
@@ -285,11 +285,12 @@ fn run(cli: Cli) -> Result<ExitCode> {
             standard,
             json,
         } => {
+            let controller = cli::compensate::controller(&controller)?;
             let data = measurement::read_file(&file, sheet.name())?.data;
             let request = cli::compensate::Request {
-                controller: &controller,
+                controller,
                 out: out.as_deref(),
-                settings: table.into(),
+                settings: table.settings(controller, data.kind)?,
                 standard,
                 json,
             };

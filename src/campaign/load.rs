@@ -2,10 +2,12 @@
 //! with its error (file, line, column), and the rest of the campaign is still evaluated.
 
 use super::data::DataSource;
-use super::{AxisEntry, AxisRaw, AxisSpec, CampaignInfo, Machine, MachineInfo, parse_standard};
+use super::{
+    AxisEntry, AxisRaw, AxisSpec, CampaignInfo, Machine, MachineInfo, model, parse_standard,
+};
 use crate::evaluate::StandardId;
 use crate::evaluate::catalogue;
-use crate::units::Travel;
+use crate::units::{AxisKind, Travel};
 use crate::yaml::{self, Located, LocationIndex, deserialize_at};
 use serde_norway::Value;
 
@@ -252,7 +254,70 @@ fn check_compensation(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Resul
     {
         return bad("reference", "a position");
     }
+    if let Some(m) = c.measuring_system
+        && m > 1
+    {
+        return bad(
+            "measuring_system",
+            "0 (the first encoder) or 1 (a direct measuring system)",
+        );
+    }
+    let base = format!("{base}.compensation");
+    if let Some(model::ActiveRaw::Stated(a)) = &c.active {
+        check_backlash(
+            raw.kind,
+            a.backlash_um,
+            a.backlash_arcsec,
+            &format!("{base}.active"),
+            index,
+        )?;
+    }
+    if let Some(v) = &c.verifies {
+        let at = format!("{base}.verifies");
+        check_backlash(raw.kind, v.backlash_um, v.backlash_arcsec, &at, index)?;
+        if let Some(model::ActiveRaw::Stated(a)) = &v.active {
+            check_backlash(
+                raw.kind,
+                a.backlash_um,
+                a.backlash_arcsec,
+                &format!("{at}.active"),
+                index,
+            )?;
+        }
+    }
     Ok(())
+}
+
+/// A backlash in the axis's deviation unit (`backlash_um` on a linear axis,
+/// `backlash_arcsec` on a rotary one), a finite number.
+fn check_backlash(
+    kind: AxisKind,
+    um: Option<f64>,
+    arcsec: Option<f64>,
+    base: &str,
+    index: &LocationIndex,
+) -> Result<(), Located> {
+    let (right, wrong, value, other) = match kind {
+        AxisKind::Linear => ("backlash_um", "backlash_arcsec", um, arcsec),
+        AxisKind::Rotary => ("backlash_arcsec", "backlash_um", arcsec, um),
+    };
+    if other.is_some() {
+        let path = format!("{base}.{wrong}");
+        return Err(Located::new(
+            index.key(&path),
+            format!("{path}: a {kind} axis states its backlash as {right}"),
+        ));
+    }
+    match value {
+        Some(v) if !v.is_finite() => {
+            let path = format!("{base}.{right}");
+            Err(Located::new(
+                index.value(&path),
+                format!("{path}: expected a number"),
+            ))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Every limit names a parameter that can be limited, and is a number ≥ 0.

@@ -168,6 +168,98 @@ pub struct CompensationRaw {
     /// The reference point: the grid passes through it and the correction is zero there.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub reference: Option<f64>,
+    /// Siemens: the measuring system the table is for, 0 (the first encoder, default) or 1
+    /// (a direct measuring system the axis is closed on).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub measuring_system: Option<u8>,
+    /// What was active during this test (ISO 230-2 3.2): `none`, or the table file in the
+    /// controller's format and its backlash parameter; absent: not stated (a warning says
+    /// so). With `verifies`, the table verified.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub active: Option<ActiveRaw>,
+    /// This test re-measures the axis after a table was loaded: the measurement before
+    /// and the table, to compare the prediction with this test.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub verifies: Option<VerifiesRaw>,
+}
+
+/// What was active during a test: `active: none`, or `active: {file: FILE, backlash_um: N}`
+/// (`backlash_arcsec` on a rotary axis).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ActiveRaw {
+    None,
+    Stated(ActiveStated),
+}
+
+/// A stated active compensation: the controller's table file (relative to the campaign,
+/// like data files) and its backlash parameter, µm or arcsec.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ActiveStated {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub backlash_um: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub backlash_arcsec: Option<f64>,
+}
+
+/// `verifies: {before: FILE, table: FILE, backlash_um: N, active: …}`: the measurement
+/// before the table was loaded, the table (in the controller's format) and the backlash
+/// loaded with it, and what was active during the measurement before (default `none`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VerifiesRaw {
+    pub before: String,
+    pub table: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub backlash_um: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub backlash_arcsec: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub active: Option<ActiveRaw>,
+}
+
+impl Serialize for ActiveRaw {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self {
+            ActiveRaw::None => serializer.serialize_str("none"),
+            ActiveRaw::Stated(s) => s.serialize(serializer),
+        }
+    }
+}
+
+/// Reads `none` or the mapping, and says which two it accepts when given neither.
+impl<'de> Deserialize<'de> for ActiveRaw {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<ActiveRaw, D::Error> {
+        struct ActiveVisitor;
+
+        impl<'de> serde::de::Visitor<'de> for ActiveVisitor {
+            type Value = ActiveRaw;
+
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("`none` or {file: TABLE, backlash_um: N}")
+            }
+
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<ActiveRaw, E> {
+                match v {
+                    "none" => Ok(ActiveRaw::None),
+                    _ => Err(E::invalid_value(serde::de::Unexpected::Str(v), &self)),
+                }
+            }
+
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                map: A,
+            ) -> Result<ActiveRaw, A::Error> {
+                let stated =
+                    ActiveStated::deserialize(serde::de::value::MapAccessDeserializer::new(map))?;
+                Ok(ActiveRaw::Stated(stated))
+            }
+        }
+
+        deserializer.deserialize_any(ActiveVisitor)
+    }
 }
 
 /// The test conditions clause 7.1 asks the report to state.

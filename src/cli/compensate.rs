@@ -3,12 +3,13 @@
 
 use super::text::{left, right};
 use anyhow::{Context, Result, anyhow};
-use axcheck::compensate::{self, Table, Warning, controllers};
+use axcheck::compensate::controllers::{self, Controller};
+use axcheck::compensate::{self, Mode, Table, Warning};
 use axcheck::evaluate::Evaluation;
 use axcheck::evaluate::StandardId;
 use axcheck::evaluate::json::ParameterValues;
 use axcheck::measurement::AxisData;
-use axcheck::units::fmt_fixed;
+use axcheck::units::{AxisKind, fmt_fixed};
 use serde::Serialize;
 use std::fmt::Write;
 use std::path::Path;
@@ -28,25 +29,119 @@ pub struct TableArgs {
     #[arg(long)]
     pitch: Option<f64>,
     /// The axis's name on the controller, for formats that name it (HEIDENHAIN `X`,
-    /// Siemens `X1`); default: a placeholder in the file to replace.
+    /// Siemens `X1`) and to pick its table from an active file of several; default: the
+    /// active table's, else a placeholder in the file to replace.
     #[arg(long)]
     axis: Option<String>,
+    /// Siemens: the measuring system, 0 (the first encoder) or 1 (a direct measuring
+    /// system the axis is closed on); default: the active table's, else 0.
+    #[arg(long, value_parser = clap::value_parser!(u8).range(0..=1))]
+    measuring_system: Option<u8>,
+    /// The table active during the measurement, in the controller's format, or `none`:
+    /// the table written is then the active one plus this measurement's correction.
+    /// Without it the state is unknown, and a warning says to add the values to whatever
+    /// was active.
+    #[arg(long, value_name = "TABLE|none")]
+    active: Option<String>,
+    /// The backlash parameter active during the measurement, µm or arcsec (Siemens
+    /// MD32450, LinuxCNC BACKLASH without a table, …).
+    #[arg(long, value_name = "N")]
+    active_backlash: Option<f64>,
 }
 
-impl From<TableArgs> for compensate::Settings {
-    fn from(a: TableArgs) -> compensate::Settings {
-        compensate::Settings {
-            interval: a.interval,
-            reference: a.reference,
-            pitch: a.pitch,
-            axis: a.axis,
-        }
+impl TableArgs {
+    /// The settings, with the active table read as `controller` reads it for an axis of
+    /// `kind`.
+    pub fn settings(
+        self,
+        controller: &dyn Controller,
+        kind: AxisKind,
+    ) -> Result<compensate::Settings> {
+        let place = compensate::Place {
+            axis: self.axis,
+            measuring_system: self.measuring_system,
+            number: None,
+        };
+        let active = active_state(
+            self.active.as_deref(),
+            self.active_backlash,
+            controller,
+            kind,
+            place.axis.as_deref(),
+        )?;
+        Ok(compensate::Settings {
+            interval: self.interval,
+            reference: self.reference,
+            pitch: self.pitch,
+            place,
+            active,
+            conditions: None,
+        })
     }
+}
+
+/// The active state given on the command line: `None` when neither `--active` nor
+/// `--active-backlash` says anything.
+pub fn active_state(
+    table: Option<&str>,
+    backlash: Option<f64>,
+    controller: &dyn Controller,
+    kind: AxisKind,
+    axis: Option<&str>,
+) -> Result<Option<compensate::Active>> {
+    if let Some(b) = backlash
+        && !b.is_finite()
+    {
+        return Err(anyhow!("--active-backlash: expected a number, got {b}"));
+    }
+    let table = match table {
+        None if backlash.is_none() => return Ok(None),
+        None | Some("none") => None,
+        Some(path) => Some((
+            path.to_string(),
+            read_table(Path::new(path), controller, kind, axis)?,
+        )),
+    };
+    Ok(Some(compensate::Active {
+        file: table.as_ref().map(|(p, _)| p.clone()),
+        table: table.map(|(_, t)| t),
+        backlash,
+    }))
+}
+
+/// A table file as `controller` reads it, its errors naming the file.
+pub fn read_table(
+    path: &Path,
+    controller: &dyn Controller,
+    kind: AxisKind,
+    axis: Option<&str>,
+) -> Result<Table> {
+    let text = axcheck::files::read_to_string(path)
+        .with_context(|| format!("cannot read the table {}", path.display()))?;
+    controller
+        .read(&text, controllers::Reading { kind, axis })
+        .map_err(|e| {
+            anyhow!(
+                "{}: {e} (read as a {} table)",
+                path.display(),
+                controller.name()
+            )
+        })
+}
+
+/// The controller called `name`, or the error that lists the known ones.
+pub fn controller(name: &str) -> Result<&'static dyn Controller> {
+    controllers::find(name).ok_or_else(|| {
+        anyhow!(
+            "unknown controller `{name}`; known: {}",
+            controllers::names().join(", ")
+        )
+    })
 }
 
 /// What `compensate` was asked for.
 pub struct Request<'a> {
-    pub controller: &'a str,
+    pub controller: &'static dyn Controller,
     pub out: Option<&'a Path>,
     pub settings: compensate::Settings,
     pub standard: StandardId,
@@ -57,6 +152,11 @@ pub struct Request<'a> {
 #[derive(Serialize)]
 struct CompensationJson<'a> {
     controller: &'a str,
+    /// `absolute` (the whole correction) or `incremental` (on the active table).
+    mode: Mode,
+    /// The active table's file, when one was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    active_file: Option<&'a str>,
     /// Deviation unit of the corrections and parameters: `um` or `arcsec`.
     unit: &'static str,
     table: &'a Table,
@@ -77,13 +177,7 @@ struct Parameters<'a> {
 /// Writes the table (to `out`, or standard output without it) and returns what to print;
 /// the warnings go to standard error when the table goes to standard output.
 pub fn run(data: &AxisData, request: &Request) -> Result<String> {
-    let controller = controllers::find(request.controller).ok_or_else(|| {
-        anyhow!(
-            "unknown controller `{}`; known: {}",
-            request.controller,
-            controllers::names().join(", ")
-        )
-    })?;
+    let controller = request.controller;
     if let Some(step) = request.settings.interval
         && !(step > 0.0 && step.is_finite())
     {
@@ -111,6 +205,8 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     if request.json {
         let json = CompensationJson {
             controller: controller.name(),
+            mode: c.mode,
+            active_file: c.active_file.as_deref(),
             unit: data.kind.deviation_unit(),
             table: &done.table,
             measured: Parameters {
@@ -132,7 +228,13 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
             done.file
         }
         Some(out) => {
-            let mut text = summary(&measured, &done.predicted, data, out, controller.name());
+            let mut text = format!(
+                "{} table written to {} ({})\n\n",
+                controller.name(),
+                out.display(),
+                mode_words(c.mode, c.active_file.as_deref())
+            );
+            text.push_str(&summary(&measured, &done.predicted, data));
             for w in &c.warnings {
                 let _ = writeln!(text, "Warning: {}", w.message);
             }
@@ -141,16 +243,23 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     })
 }
 
-/// The parameters before and after, and where the table went.
-fn summary(
-    measured: &Evaluation,
-    predicted: &Evaluation,
-    data: &AxisData,
-    out: &Path,
-    controller: &str,
-) -> String {
+/// What the table is: the whole correction or the active one plus this measurement's.
+fn mode_words(mode: Mode, active: Option<&str>) -> String {
+    match (mode, active) {
+        (Mode::Incremental, Some(file)) => {
+            format!("incremental: the active table {file} plus this measurement's correction")
+        }
+        (Mode::Incremental, None) => {
+            "incremental: the active backlash plus this measurement's correction".into()
+        }
+        (Mode::Absolute, _) => "absolute: this measurement's correction alone".into(),
+    }
+}
+
+/// The parameters measured and predicted.
+fn summary(measured: &Evaluation, predicted: &Evaluation, data: &AxisData) -> String {
     let unit = data.kind.deviation_symbol();
-    let mut text = format!("{controller} table written to {}\n\n", out.display());
+    let mut text = String::new();
     let _ = writeln!(
         text,
         "{}  {}  {}",

@@ -1,11 +1,12 @@
 //! The table that cancels the mean deviations x̄↑ and x̄↓ (ISO 230-2 2.8), resampled onto
 //! the controller's grid: one table per direction where the controller holds two, the mean
 //! (and the reversal for its backlash parameter) where it holds one; folded onto one
-//! revolution for a modulo table; shifted to zero at the reference point when one is given.
+//! revolution for a modulo table; added to the correction that was active during the test
+//! (the deviations are what it left); shifted to zero at the reference point when one is
+//! given.
 
-use super::Settings;
 use super::controllers::{Directions, Format};
-use super::grid::{REVOLUTION_DEG, modulo};
+use super::grid::REVOLUTION_DEG;
 use super::table::{Table, linear};
 use crate::measurement::AxisData;
 use crate::units::Direction;
@@ -21,7 +22,8 @@ fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
 }
 
 /// The correction −x̄ at `p`: interpolated between the targets, and on a modulo table
-/// the mean over every turn of the measured travel that passes `p`.
+/// the mean over every turn of the measured travel that passes `p` (a point no turn
+/// passes holds the nearer end's value, as beyond the ends of a straight table).
 fn correction_at(data: &AxisData, means: &[f64], p: f64, wraps: bool) -> f64 {
     if !wraps {
         return -linear(&data.targets, means, p);
@@ -32,12 +34,15 @@ fn correction_at(data: &AxisData, means: &[f64], p: f64, wraps: bool) -> f64 {
     let values: Vec<f64> = turns
         .map(|k| -linear(&data.targets, means, p + k as f64 * REVOLUTION_DEG))
         .collect();
-    values.iter().sum::<f64>() / values.len().max(1) as f64
+    if values.is_empty() {
+        return -linear(&data.targets, means, p);
+    }
+    values.iter().sum::<f64>() / values.len() as f64
 }
 
-/// The table for `data` on `positions` in `format`.
-pub fn table(data: &AxisData, positions: Vec<f64>, format: &Format, settings: &Settings) -> Table {
-    let wraps = modulo(data, format);
+/// The table for `data` alone on `positions` in `format`, as measured (no reference
+/// point), wrapping over a revolution when `wraps`.
+pub fn measured(data: &AxisData, positions: Vec<f64>, format: &Format, wraps: bool) -> Table {
     let per_direction = |direction| {
         let m = means(data, direction);
         let mut c: Vec<f64> = positions
@@ -56,23 +61,25 @@ pub fn table(data: &AxisData, positions: Vec<f64>, format: &Format, settings: &S
         kind: data.kind,
         up: per_direction(Direction::Up),
         down: per_direction(Direction::Down),
-        reference: settings.reference.unwrap_or(positions[0]),
+        reference: positions[0],
         modulo_deg: wraps.then_some(REVOLUTION_DEG),
-        axis: settings.axis.clone(),
+        place: Default::default(),
         interpolation: Default::default(),
         positions,
     };
-    let one = match format.directions {
-        Directions::Unidirectional { backlash } => {
-            one_table(&mut table, backlash);
-            true
-        }
-        Directions::Bidirectional => false,
-    };
-    if settings.reference.is_some() {
-        zero_at_reference(&mut table, one);
+    if let Directions::Unidirectional { backlash } = format.directions {
+        one_table(&mut table, backlash);
     }
     table
+}
+
+/// `total`, the correction active during the test, added at each point and direction:
+/// what the controller must hold for the measured deviations to vanish.
+pub fn add(table: &mut Table, total: &Table) {
+    for (k, p) in table.positions.iter().enumerate() {
+        table.up[k] += total.correction(*p, Direction::Up);
+        table.down[k] += total.correction(*p, Direction::Down);
+    }
 }
 
 /// One table per axis: the mean correction in both directions, ± half the mean reversal
@@ -88,12 +95,14 @@ fn one_table(table: &mut Table, backlash: bool) {
     table.down = mean.iter().map(|m| m + half).collect();
 }
 
-/// Shifts both directions so the correction written at the reference point is zero (the
-/// ↑ one, or the mean on a one-table controller): homing there is unchanged. A constant
-/// changes no ISO 230-2 parameter.
-fn zero_at_reference(table: &mut Table, one_table: bool) {
-    let up = table.correction(table.reference, Direction::Up);
-    let down = table.correction(table.reference, Direction::Down);
+/// Shifts both directions so the correction written at `reference` is zero (the ↑ one,
+/// or the mean on a one-table controller): homing there is unchanged. A constant changes
+/// no ISO 230-2 parameter.
+pub fn zero_at_reference(table: &mut Table, reference: f64, format: &Format) {
+    table.reference = reference;
+    let up = table.correction(reference, Direction::Up);
+    let down = table.correction(reference, Direction::Down);
+    let one_table = matches!(format.directions, Directions::Unidirectional { .. });
     let shift = if one_table { (up + down) / 2.0 } else { up };
     for v in table.up.iter_mut().chain(table.down.iter_mut()) {
         *v -= shift;
@@ -132,7 +141,7 @@ mod tests {
     #[test]
     fn bidirectional_corrections_are_minus_the_means_interpolated() {
         let f = format(Directions::Bidirectional, false);
-        let t = table(&data(), vec![0.0, 50.0, 200.0], &f, &Settings::default());
+        let t = measured(&data(), vec![0.0, 50.0, 200.0], &f, false);
         assert!(close(&t.up, &[-2.0, -2.5, -4.0]));
         assert!(close(&t.down, &[2.0, 1.5, 0.0]));
         assert_eq!(t.reference, 0.0);
@@ -144,12 +153,12 @@ mod tests {
     fn one_table_controllers_get_the_mean_and_maybe_the_reversal() {
         let positions = vec![0.0, 100.0, 200.0];
         let with = format(Directions::Unidirectional { backlash: true }, false);
-        let t = table(&data(), positions.clone(), &with, &Settings::default());
+        let t = measured(&data(), positions.clone(), &with, false);
         assert!(close(&t.mean(), &[0.0, -1.0, -2.0]));
         assert!(close(&t.up, &[-2.0, -3.0, -4.0]));
         assert!((t.reversal_correction() - 4.0).abs() < 1e-12);
         let without = format(Directions::Unidirectional { backlash: false }, false);
-        let t = table(&data(), positions, &without, &Settings::default());
+        let t = measured(&data(), positions, &without, false);
         assert!(close(&t.up, &[0.0, -1.0, -2.0]) && t.up == t.down);
     }
 
@@ -157,12 +166,8 @@ mod tests {
     #[test]
     fn the_reference_point_gets_zero() {
         let f = format(Directions::Bidirectional, false);
-        let s = Settings {
-            interval: None,
-            reference: Some(100.0),
-            ..Default::default()
-        };
-        let t = table(&data(), vec![0.0, 100.0, 200.0], &f, &s);
+        let mut t = measured(&data(), vec![0.0, 100.0, 200.0], &f, false);
+        zero_at_reference(&mut t, 100.0, &f);
         assert!(close(&t.up, &[1.0, 0.0, -1.0]));
         assert!(close(&t.down, &[5.0, 4.0, 3.0]));
         assert_eq!(t.reference, 100.0);
@@ -179,7 +184,12 @@ mod tests {
         });
         let f = format(Directions::Bidirectional, true);
         let positions: Vec<f64> = (0..=4).map(|k| k as f64 * 90.0).collect();
-        let t = table(&data, positions, &f, &Settings::default());
+        let t = measured(
+            &data,
+            positions,
+            &f,
+            crate::compensate::grid::modulo(&data, &f),
+        );
         assert_eq!(t.modulo_deg, Some(360.0));
         assert!((t.up[1] - -12.7).abs() < 1e-9, "{:?}", t.up);
         // 0°: turns at 0 and 360 → −(0 + 3.6)/2 = −1.8; 360°: turns at 0 and 360 as well.

@@ -28,12 +28,28 @@ pub struct Table {
     /// to the revolution, the last point the first one again.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub modulo_deg: Option<f64>,
-    /// The axis's name on the controller (`X`, Siemens `X1`), for formats that name it;
-    /// `None`: the file carries a placeholder to replace.
+    /// Where the table sits on the controller: its axis name and the controller's own
+    /// numbering, for formats that name them.
     #[serde(skip)]
-    pub axis: Option<String>,
+    pub place: Place,
     /// How the controller applies the table between its points.
     pub interpolation: Interpolation,
+}
+
+/// Where a table sits on the controller, as the user gives it or an active table's file
+/// names it; each format reads the part it has, and a table built on an active one keeps
+/// its place.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Place {
+    /// The axis's name on the controller (HEIDENHAIN's column `X`, Siemens' machine axis
+    /// `X1`); `None`: the file carries a placeholder to replace.
+    pub axis: Option<String>,
+    /// Siemens: the measuring system, 0 (the first encoder) or 1 (a direct, second
+    /// measuring system the axis is closed on); `None`: 0.
+    pub measuring_system: Option<u8>,
+    /// TwinCAT: the axis's logical number `kopf.achs_nr`; FANUC: the first pitch error
+    /// number of the + direction table (3621); `None`: the format's default.
+    pub number: Option<usize>,
 }
 
 /// How a controller applies its table between points.
@@ -132,7 +148,18 @@ impl Table {
 /// The readings as they would be with `table` active: each deviation plus the correction
 /// at its target and direction.
 pub fn apply(table: &Table, data: &AxisData) -> AxisData {
-    data.map_deviations(|r| r.deviation + table.correction(data.targets[r.target], r.direction))
+    apply_change(table, None, data)
+}
+
+/// The readings as they would be with `new` active in place of `old` (the correction
+/// active during the test; `None`: nothing): each deviation plus the difference of the
+/// two corrections at its target and direction.
+pub fn apply_change(new: &Table, old: Option<&Table>, data: &AxisData) -> AxisData {
+    data.map_deviations(|r| {
+        let p = data.targets[r.target];
+        let before = old.map_or(0.0, |t| t.correction(p, r.direction));
+        r.deviation + new.correction(p, r.direction) - before
+    })
 }
 
 #[cfg(test)]

@@ -41,7 +41,7 @@ mod reversal;
 mod scatter;
 mod select;
 pub use select::{Scheme, TermGain};
-mod stats;
+pub mod stats;
 mod time;
 mod validate;
 mod warm;

@@ -14,7 +14,7 @@ const LAYERS: &[&[&str]] = &[
     &["uncertainty"],
     &["rules", "judge", "diagnose", "trend"],
     &["compensate"],
-    &["campaign"],
+    &["campaign", "verify"],
     &["batch"],
     &["history"],
     &["report"],

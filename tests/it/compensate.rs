@@ -20,7 +20,7 @@ fn read_back(text: &str) -> Table {
         down: Vec::new(),
         reference: 0.0,
         modulo_deg: None,
-        axis: None,
+        place: Default::default(),
         interpolation: Default::default(),
     };
     let mut lines = text.lines();
@@ -52,12 +52,12 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
         // Every controller holds and writes it (none refuses 21 targets or 20 mm steps).
         for c in compensate::controllers::CONTROLLERS {
             let held = compensate::held_table(*c, &data, &settings).unwrap();
-            let file = c.write(&held).unwrap();
+            let file = c.write(&held, &[]).unwrap();
             assert!(file.lines().count() >= held.positions.len(), "{}", c.name());
         }
         let csv = compensate::controllers::find("csv").unwrap();
         let table = compensate::held_table(csv, &data, &settings).unwrap();
-        let file = csv.write(&table).unwrap();
+        let file = csv.write(&table, &[]).unwrap();
         let back = read_back(&file);
         let after = evaluate::evaluate(&compensate::apply(&back, &data), StandardId::Iso230_2);
         let e_after = after.parameter("E").unwrap().value;
@@ -188,6 +188,7 @@ fn the_diagnosis_warns_when_a_table_will_not_hold() {
         let diagnosis = diagnose(&data, &Options::default());
         let settings = compensate::Settings {
             interval,
+            active: Some(compensate::Active::default()),
             ..Default::default()
         };
         let c = compensate::compensation(csv, &data, StandardId::Iso230_2, &settings, &diagnosis);
@@ -198,9 +199,9 @@ fn the_diagnosis_warns_when_a_table_will_not_hold() {
     let data = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(3);
     let settings = compensate::Settings {
         interval: Some(20.0),
-        reference: None,
         pitch: Some(5.0),
-        axis: None,
+        active: Some(compensate::Active::default()),
+        ..Default::default()
     };
     let diagnosis = diagnose(&data, &Options::default());
     let c = compensate::compensation(csv, &data, StandardId::Iso230_2, &settings, &diagnosis);
@@ -277,7 +278,7 @@ fn a_rotary_axis_over_a_turn_gets_a_modulo_table() {
     ];
     for c in compensate::controllers::CONTROLLERS {
         let table = compensate::held_table(*c, &data, &Default::default()).unwrap();
-        let file = c.write(&table).unwrap();
+        let file = c.write(&table, &[]).unwrap();
         let flag = flags.iter().find(|(name, _)| *name == c.name());
         if table.modulo_deg.is_none() {
             assert!(flag.is_none(), "{} should wrap", c.name());

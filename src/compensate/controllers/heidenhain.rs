@@ -53,10 +53,21 @@
 //! Unconfirmed: the exact `.COM` header and column widths (the `NR` column, the widths
 //! chosen here), the sign for TNC 620/640, `BACKLASH` as absolute ↓ values, the 256-point
 //! limit on TNC 620/640, the behaviour outside the table, the enabling parameter.
+//!
+//! Read back as the TNC table text format is read (pyLSV2's `table_reader.py`, the best
+//! public description): the `BEGIN NAME.COM [MM|INCH]` line, an optional `#STRUCTBEGIN …
+//! #STRUCTEND` block, the column line, rows cut at the columns' positions (a column runs
+//! from its name to the next name, the last one to the end of the row), `[END]`. Columns
+//! `AXISPOS`, the axis column (the one named, else the only one besides `NR`, `AXISPOS`
+//! and `BACKLASH`) and `BACKLASH` if present (else the axis column in both directions);
+//! INCH tables are converted to mm. Refused, with the line: a cell that is not a number
+//! (a decimal comma too: it is not known how the control reads it), positions that do not
+//! increase, more than 256 rows.
 
-use super::{Controller, Directions, Format, Refused, Spacing};
-use crate::compensate::Table;
+use super::reading::{self, Points, numbered};
+use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use crate::compensate::grid::REVOLUTION_DEG;
+use crate::compensate::{Place, Table};
 use crate::units::{AxisKind, fmt_fixed};
 
 pub struct Heidenhain;
@@ -167,12 +178,18 @@ impl Controller for Heidenhain {
         Ok(table)
     }
 
-    fn write(&self, table: &Table) -> Result<String, Refused> {
+    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+        read(text, reading)
+    }
+
+    /// `notes` are not written: the table format has no comments (they are in the console,
+    /// the report and `results.json`).
+    fn write(&self, table: &Table, _notes: &[String]) -> Result<String, Refused> {
         check(table)?;
         // Corrections in µm or arcsec, the table in mm or degrees; it holds the error.
         let per_unit = table.kind.deviation_units_per_position_unit();
         // The axis key names the value column and the table (X.COM).
-        let key = table.axis.as_deref().unwrap_or(AXIS_KEY);
+        let key = table.place.axis.as_deref().unwrap_or(AXIS_KEY);
         let names = COLUMNS.map(|(name, _)| if name == AXIS_KEY { key } else { name });
         let mut out = format!("BEGIN {key}.COM MM\n");
         out.push_str(&row(names));
@@ -190,6 +207,190 @@ impl Controller for Heidenhain {
         out.push_str("[END]\n");
         Ok(out)
     }
+}
+
+/// A `.COM` table's columns: each name and the byte where its cell starts.
+struct Columns {
+    names: Vec<(String, usize)>,
+}
+
+impl Columns {
+    fn of(line: &str) -> Columns {
+        let mut names = Vec::new();
+        let mut start = None;
+        for (i, c) in line.char_indices().chain([(line.len(), ' ')]) {
+            match (c.is_whitespace(), start) {
+                (false, None) => start = Some(i),
+                (true, Some(s)) => {
+                    names.push((line[s..i].to_string(), s));
+                    start = None;
+                }
+                _ => {}
+            }
+        }
+        Columns { names }
+    }
+
+    fn index(&self, name: &str) -> Option<usize> {
+        self.names
+            .iter()
+            .position(|(n, _)| n.eq_ignore_ascii_case(name))
+    }
+
+    /// The cell of column `k` in `row`: from its start to the next column's, the last one
+    /// to the end of the row.
+    fn cell<'r>(&self, row: &'r str, k: usize) -> &'r str {
+        let start = self.names[k].1.min(row.len());
+        let end = self
+            .names
+            .get(k + 1)
+            .map_or(row.len(), |(_, s)| (*s).min(row.len()));
+        row.get(start..end.max(start)).unwrap_or("").trim()
+    }
+
+    /// The value column: the one named `axis`, else the only one that is not `NR`,
+    /// `AXISPOS` or `BACKLASH`.
+    fn axis(&self, axis: Option<&str>, line: usize) -> Result<usize, Unreadable> {
+        let others: Vec<usize> = (0..self.names.len())
+            .filter(|&k| {
+                let n = self.names[k].0.to_ascii_uppercase();
+                !matches!(n.as_str(), "NR" | "AXISPOS" | "BACKLASH")
+            })
+            .collect();
+        let wanted: Vec<usize> = match axis {
+            Some(a) => others
+                .iter()
+                .copied()
+                .filter(|&k| self.names[k].0.eq_ignore_ascii_case(a))
+                .collect(),
+            None => others.clone(),
+        };
+        let listed: Vec<&str> = others.iter().map(|&k| self.names[k].0.as_str()).collect();
+        match (wanted.as_slice(), axis) {
+            ([k], _) => Ok(*k),
+            ([], Some(a)) => Err(Unreadable::at(
+                line,
+                format!(
+                    "no column `{a}`; the table's axis columns: {}",
+                    listed.join(", ")
+                ),
+            )),
+            ([], None) => Err(Unreadable::at(
+                line,
+                "no axis column beside NR, AXISPOS and BACKLASH",
+            )),
+            _ => Err(Unreadable::at(
+                line,
+                format!(
+                    "several axis columns ({}): name the axis (--axis, or compensation: {{axis}})",
+                    listed.join(", ")
+                ),
+            )),
+        }
+    }
+}
+
+/// The unit of a `BEGIN NAME.COM [MM|INCH]` line: mm per table unit.
+fn begin_line(line: &str, at: usize) -> Result<f64, Unreadable> {
+    let words: Vec<&str> = line.split_whitespace().collect();
+    match words.as_slice() {
+        ["BEGIN", name, rest @ ..] if name.to_ascii_uppercase().ends_with(".COM") => match rest {
+            [] | ["MM", ..] => Ok(1.0),
+            ["INCH", ..] => Ok(25.4),
+            [other, ..] => Err(Unreadable::at(
+                at,
+                format!("unknown unit `{other}` (MM or INCH)"),
+            )),
+        },
+        _ => Err(Unreadable::at(
+            at,
+            format!("expected `BEGIN NAME.COM MM`, got `{}`", line.trim()),
+        )),
+    }
+}
+
+/// The table of a `.COM` file.
+fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    let mut lines = numbered(text).filter(|(_, l)| !l.trim().is_empty());
+    let (at, begin) = lines
+        .next()
+        .ok_or_else(|| Unreadable::file("empty file: expected `BEGIN NAME.COM MM`"))?;
+    let mm = begin_line(begin, at)?;
+    let (mut at, mut header) = lines
+        .next()
+        .ok_or_else(|| Unreadable::file("no column line after BEGIN"))?;
+    if header.trim_start().starts_with("#STRUCTBEGIN") {
+        lines.find(|(_, l)| l.trim_start().starts_with("#STRUCTEND"));
+        (at, header) = lines
+            .next()
+            .ok_or_else(|| Unreadable::file("no column line after #STRUCTEND"))?;
+    }
+    let columns = Columns::of(header);
+    let need = |name: &str| {
+        columns
+            .index(name)
+            .ok_or_else(|| Unreadable::at(at, format!("no column `{name}`")))
+    };
+    let position = need("AXISPOS")?;
+    let axis = columns.axis(reading.axis, at)?;
+    let backlash = columns.index("BACKLASH");
+    let per_unit = reading.kind.deviation_units_per_position_unit() * mm;
+    let mut points = Points {
+        kind: reading.kind,
+        positions: Vec::new(),
+        up: Vec::new(),
+        down: Vec::new(),
+    };
+    let mut rows = Vec::new();
+    let mut ended = false;
+    for (line, row) in lines {
+        if matches!(row.trim(), "[END]" | "END") {
+            ended = true;
+            break;
+        }
+        let cell = |k: usize| {
+            let c = columns.cell(row, k);
+            if c.contains(',') {
+                return Err(Unreadable::field(
+                    line,
+                    &columns.names[k].0,
+                    format!("`{c}`: a decimal comma; write the number with a point"),
+                ));
+            }
+            reading::number(c, line, &columns.names[k].0)
+        };
+        // The table holds the error: the correction is minus it.
+        let up = -cell(axis)? * per_unit;
+        points.positions.push(cell(position)? * mm);
+        points.up.push(up);
+        points
+            .down
+            .push(backlash.map_or(Ok(up), |b| cell(b).map(|v| -v * per_unit))?);
+        rows.push(line);
+    }
+    if !ended {
+        return Err(Unreadable::file(
+            "no `[END]` line: the table may be cut short",
+        ));
+    }
+    reading::enough(points.positions.len(), 1, "the table")?;
+    if points.positions.len() > MAX_POINTS {
+        return Err(Unreadable::at(
+            rows[MAX_POINTS],
+            format!(
+                "row {}: a .COM table holds at most {MAX_POINTS}",
+                MAX_POINTS + 1
+            ),
+        ));
+    }
+    reading::increasing(&points.positions, &rows, "AXISPOS")?;
+    let modulo = reading::one_revolution(reading.kind, &points.positions);
+    let key = columns.names[axis].0.clone();
+    let place = Place {
+        axis: (key != AXIS_KEY).then_some(key),
+        ..Place::default()
+    };
+    Ok(points.table(None, modulo, place, Default::default()))
 }
 
 #[cfg(test)]
@@ -214,7 +415,7 @@ mod tests {
         };
         let table = held_table(&Heidenhain, &data, &settings).unwrap();
         assert_eq!(
-            Heidenhain.write(&table).unwrap(),
+            Heidenhain.write(&table, &[]).unwrap(),
             include_str!("../../../tests/data/compensation/heidenhain-linear.com")
         );
     }
@@ -235,7 +436,7 @@ mod tests {
         };
         let table = held_table(&Heidenhain, &data, &settings).unwrap();
         assert_eq!(
-            Heidenhain.write(&table).unwrap(),
+            Heidenhain.write(&table, &[]).unwrap(),
             include_str!("../../../tests/data/compensation/heidenhain-rotary.com")
         );
     }

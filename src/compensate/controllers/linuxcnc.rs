@@ -9,9 +9,20 @@
 //! `compute_screw_comp`; the file read by `usrmotLoadComp` in `usrmotintf.cc`): so the
 //! trim is the correction, −x̄↑ forward and −x̄↓ reverse. Nominal positions must increase
 //! strictly; at most 256 points per joint (`EMCMOT_COMP_SIZE`). With a table, `BACKLASH`
-//! is not used: the reversal is in the two columns.
+//! is not used: the reversal is in the two columns. Notes go after the points, as `# `
+//! lines: the loader stops reading at the first of them.
+//!
+//! Read back as the loader reads (`sscanf("%lf %lf %lf")` per line, `break` at the first
+//! line that is not three numbers; text after the third number is ignored): type 1
+//! (`nominal forward_trim reverse_trim`) and type 0 (`nominal forward_actual
+//! reverse_actual`, trims = nominal − actual), told apart by their size, as the file does
+//! not say which (a trim is near 0, an actual position near its nominal one). Refused, with
+//! the line: a first line that is not three numbers (LinuxCNC would load no table), points
+//! after the line where the loader stops (it would not load them), positions that do not
+//! increase, more than 256 points.
 
-use super::{Controller, Directions, Format, Refused, Spacing};
+use super::reading::{self, Points, numbered};
+use super::{Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use crate::compensate::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
@@ -43,7 +54,7 @@ impl Controller for LinuxCnc {
         }
     }
 
-    fn write(&self, table: &Table) -> Result<String, Refused> {
+    fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
         if table.positions.windows(2).any(|w| w[1] <= w[0]) {
             return Err(Refused::Grid("the positions must increase strictly".into()));
         }
@@ -61,7 +72,127 @@ impl Controller for LinuxCnc {
                 fmt_fixed(d / per_unit, 7)
             ));
         }
+        out.push_str(&super::commented("# ", notes));
         Ok(out)
+    }
+
+    /// `BACKLASH` is not used while a table is loaded (`control.c`): the reversal goes
+    /// into the two columns.
+    fn backlash(&self) -> Backlash {
+        Backlash::UnusedWithTable
+    }
+
+    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+        let (rows, lines) = loaded_rows(text)?;
+        if rows.len() > MAX_POINTS {
+            return Err(Unreadable::at(
+                lines[MAX_POINTS],
+                format!(
+                    "point {}: a joint holds at most {MAX_POINTS} (LinuxCNC: \"too many compensation entries\")",
+                    MAX_POINTS + 1
+                ),
+            ));
+        }
+        let nominal: Vec<f64> = rows.iter().map(|r| r[0]).collect();
+        reading::increasing(&nominal, &lines, "nominal")?;
+        let trims = file_type(&rows)?;
+        let per_unit = reading.kind.deviation_units_per_position_unit();
+        let trim = |r: &[f64; 3], k: usize| match trims {
+            FileType::Trims => r[k] * per_unit,
+            FileType::Actual => (r[0] - r[k]) * per_unit,
+        };
+        let points = Points {
+            kind: reading.kind,
+            up: rows.iter().map(|r| trim(r, 1)).collect(),
+            down: rows.iter().map(|r| trim(r, 2)).collect(),
+            positions: nominal,
+        };
+        Ok(points.table(None, false, Default::default(), self.interpolation()))
+    }
+}
+
+/// The rows LinuxCNC loads and their lines: from the first line while each line is three
+/// numbers. A first line that is not, or points after the line where loading stops, are
+/// refused: the joint would hold no table, or not all of it.
+fn loaded_rows(text: &str) -> Result<(Vec<[f64; 3]>, Vec<usize>), Unreadable> {
+    let mut lines = numbered(text);
+    let mut rows = Vec::new();
+    let mut at = Vec::new();
+    let stop = loop {
+        match lines.next() {
+            None => break None,
+            Some((line, l)) => match three_numbers(l) {
+                Some(r) => {
+                    rows.push(r);
+                    at.push(line);
+                }
+                None => break Some((line, l)),
+            },
+        }
+    };
+    let Some((stop, stop_text)) = stop else {
+        return reading::enough(rows.len(), 1, "the table").map(|_| (rows, at));
+    };
+    if rows.is_empty() {
+        return Err(Unreadable::at(
+            stop,
+            format!(
+                "`{}` is not three numbers (nominal, forward, reverse): LinuxCNC stops reading here and would load no table",
+                stop_text.trim()
+            ),
+        ));
+    }
+    if let Some((line, _)) = lines.find(|(_, l)| three_numbers(l).is_some()) {
+        return Err(Unreadable::at(
+            line,
+            format!(
+                "a point after line {stop} (`{}`), where LinuxCNC stops reading: it would not be loaded; remove line {stop} or move it below the points",
+                stop_text.trim()
+            ),
+        ));
+    }
+    Ok((rows, at))
+}
+
+/// Three numbers at the start of `line`, as `sscanf("%lf %lf %lf")` reads them (each
+/// after optional white space; what follows the third is ignored); `None` when it would
+/// not read three, or one is not finite.
+fn three_numbers(line: &str) -> Option<[f64; 3]> {
+    let mut rest = line;
+    let mut out = [0.0; 3];
+    for v in out.iter_mut() {
+        let t = rest.trim_start();
+        let n = reading::float_prefix(t);
+        *v = t[..n].parse::<f64>().ok().filter(|x| x.is_finite())?;
+        rest = &t[n..];
+    }
+    Some(out)
+}
+
+/// The type of a comp file (`COMP_FILE_TYPE`).
+#[derive(Debug, PartialEq)]
+enum FileType {
+    /// Type 1: the trims themselves.
+    Trims,
+    /// Type 0: the actual positions, trims = nominal − actual.
+    Actual,
+}
+
+/// Type 1 when the second and third columns are nearer 0 than the nominal positions, type
+/// 0 when nearer the nominal positions; refused when the sizes do not tell (every nominal
+/// position near 0).
+fn file_type(rows: &[[f64; 3]]) -> Result<FileType, Unreadable> {
+    let largest = |f: &dyn Fn(&[f64; 3]) -> f64| rows.iter().map(f).fold(0.0, f64::max);
+    let as_trims = largest(&|r| r[1].abs().max(r[2].abs()));
+    let as_actual = largest(&|r| (r[0] - r[1]).abs().max((r[0] - r[2]).abs()));
+    if as_trims * 10.0 < as_actual {
+        Ok(FileType::Trims)
+    } else if as_actual * 10.0 < as_trims {
+        Ok(FileType::Actual)
+    } else {
+        Err(Unreadable::file(format!(
+            "cannot tell type 1 (trims up to {as_trims}) from type 0 (actual positions, trims up to {as_actual}): the nominal positions are too close to the trims"
+        )))
     }
 }
 
@@ -85,7 +216,7 @@ mod tests {
         };
         let table = held_table(&LinuxCnc, &data, &settings).unwrap();
         assert_eq!(
-            LinuxCnc.write(&table).unwrap(),
+            LinuxCnc.write(&table, &[]).unwrap(),
             include_str!("../../../tests/data/compensation/linuxcnc-linear.txt")
         );
         // A rotary joint in degrees: x̄↑ = −3.6″, 7.2″ → trims 0.001°, −0.002°.
@@ -96,7 +227,7 @@ mod tests {
         });
         let table = held_table(&LinuxCnc, &rotary, &Settings::default()).unwrap();
         assert_eq!(
-            LinuxCnc.write(&table).unwrap(),
+            LinuxCnc.write(&table, &[]).unwrap(),
             "0.000000 0.0010000 0.0000000\n90.000000 -0.0020000 0.0000000\n"
         );
     }

@@ -1,18 +1,21 @@
-//! Controllers: each writes a [`Table`] in its own file format, one file per controller
-//! (as the exporters are), and declares what its table can hold ([`Format`]): the spacing
-//! of its points, how many, one table per direction or one per axis, modulo tables, the
-//! unit its values are rounded to.
+//! Controllers: each writes a [`Table`] in its own file format and reads it back as the
+//! controller would load it, one file per controller (as the exporters are), and declares
+//! what its table can hold ([`Format`]): the spacing of its points, how many, one table per
+//! direction or one per axis, modulo tables, the unit its values are rounded to, and what
+//! becomes of its backlash parameter ([`Backlash`]).
 
 pub mod csv;
 pub mod ecmc;
 pub mod fanuc;
 pub mod heidenhain;
 pub mod linuxcnc;
+mod reading;
 pub mod siemens_840d;
 pub mod twincat;
 
 use super::{Interpolation, Table};
 use crate::units::AxisKind;
+use std::fmt;
 
 /// Why a controller cannot hold a table.
 #[derive(Debug, thiserror::Error, PartialEq)]
@@ -23,6 +26,89 @@ pub enum Refused {
     /// A position or a value outside what the file can hold.
     #[error("{0}")]
     Range(String),
+    /// The active compensation as stated does not fit the controller.
+    #[error("{0}")]
+    Active(String),
+}
+
+/// A table file that the controller would not load as a table, or not as the one meant:
+/// where (line, field) and why.
+#[derive(Debug, Clone, thiserror::Error, PartialEq)]
+pub struct Unreadable {
+    /// 1-based line of the file, where one is to blame.
+    pub line: Option<usize>,
+    /// The field (column, key or parameter) as the file names it.
+    pub field: Option<String>,
+    pub message: String,
+}
+
+impl Unreadable {
+    /// An error of the whole file.
+    pub fn file(message: impl Into<String>) -> Unreadable {
+        Unreadable {
+            line: None,
+            field: None,
+            message: message.into(),
+        }
+    }
+
+    /// An error at `line` (1-based).
+    pub fn at(line: usize, message: impl Into<String>) -> Unreadable {
+        Unreadable {
+            line: Some(line),
+            ..Unreadable::file(message)
+        }
+    }
+
+    /// An error of `field` at `line`.
+    pub fn field(line: usize, field: impl Into<String>, message: impl Into<String>) -> Unreadable {
+        Unreadable {
+            line: Some(line),
+            field: Some(field.into()),
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for Unreadable {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.line, &self.field) {
+            (Some(line), Some(field)) => write!(f, "line {line}, field `{field}`: "),
+            (Some(line), None) => write!(f, "line {line}: "),
+            (None, Some(field)) => write!(f, "field `{field}`: "),
+            (None, None) => Ok(()),
+        }?;
+        f.write_str(&self.message)
+    }
+}
+
+/// What the axis knows when its table file is read: the file holds no axis kind (mm or
+/// degrees) and may hold several axes.
+#[derive(Debug, Clone, Copy)]
+pub struct Reading<'a> {
+    pub kind: AxisKind,
+    /// The axis's name on the controller, to pick its table from a file of several.
+    pub axis: Option<&'a str>,
+}
+
+/// What becomes of a controller's backlash (reversal) parameter with its table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Backlash {
+    /// One table per axis and a backlash parameter whose new value the file states
+    /// (Siemens MD32450): the active value plus the measured reversal.
+    Stated,
+    /// A table per direction corrects what remained, and the parameter stays as it was
+    /// during the measurement (FANUC 1851/1852).
+    Kept,
+    /// A table per direction holds the reversal, and the parameter is set to 0
+    /// (HEIDENHAIN MP_backLash, TwinCAT `lose`, any controller fed the generic CSV): an
+    /// active backlash moves into the tables.
+    Cleared,
+    /// As `Cleared`, but the parameter does nothing while a table is loaded (LinuxCNC
+    /// `BACKLASH`): it acted on the readings only when no table was active.
+    UnusedWithTable,
+    /// No backlash parameter beside the table (ecmc's encoder table): the reversal stays.
+    Absent,
 }
 
 /// How the points of a table are spaced.
@@ -87,8 +173,30 @@ pub trait Controller: Sync {
         let quantum = self.format().quantum(table.kind);
         Ok(table.quantised(quantum))
     }
-    /// The held table as the controller loads it.
-    fn write(&self, table: &Table) -> Result<String, Refused>;
+    /// What becomes of the backlash parameter: stated by the file (one table and a
+    /// parameter), absent (one table, none), or cleared into the tables (a table per
+    /// direction) unless the controller says otherwise.
+    fn backlash(&self) -> Backlash {
+        match self.format().directions {
+            Directions::Unidirectional { backlash: true } => Backlash::Stated,
+            Directions::Unidirectional { backlash: false } => Backlash::Absent,
+            Directions::Bidirectional => Backlash::Cleared,
+        }
+    }
+    /// The held table as the controller loads it; `notes` go where the format takes
+    /// comments (each a line of text without the comment mark), or nowhere where it takes
+    /// none.
+    fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused>;
+    /// The table a file holds, as the controller would load it: its points, the
+    /// correction added in each direction (the correction convention of [`Table`], the
+    /// format's sign undone), its place; what the controller would refuse, or read
+    /// otherwise than the file seems to say, is refused with its line and field.
+    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable>;
+}
+
+/// `notes` as comment lines starting with `mark`.
+pub fn commented(mark: &str, notes: &[String]) -> String {
+    notes.iter().map(|n| format!("{mark}{n}\n")).collect()
 }
 
 /// Every controller, by name.
@@ -99,7 +207,8 @@ pub const CONTROLLERS: &[&dyn Controller] = &[
     &fanuc::Fanuc,
     &heidenhain::Heidenhain,
     &twincat::TwinCat,
-    &ecmc::Ecmc,
+    &ecmc::Ecmc::CURRENT,
+    &ecmc::Ecmc::V9_6,
 ];
 
 /// The controller called `name`.

@@ -34,8 +34,8 @@
 //! Loading: the axis parameter list activates it (`lr_param.ssfk 1`, P-AXIS-00175), the
 //! start-up list [STUP] names it (`zahl_kw`, `achs_kw_log_ax_nr[i]`, `achs_kw[i]`; TwinCAT
 //! XAE writes these when the list is configured there). `kopf.achs_nr` must be the axis's
-//! logical number: the list says 1; another axis must change it (a mismatch aborts the
-//! list, error 110229). Comment lines start with `# `; `End` closes the list as in
+//! logical number: the list says the active list's number, else 1 for the user to change
+//! (a mismatch aborts the list, error 110229). Comment lines start with `# `; `End` closes the list as in
 //! Beckhoff's plane-compensation example (the SSFK example shows none).
 //!
 //! Sources (Beckhoff Infosys, TF5200 Axis compensation): "Leadscrew error compensation"
@@ -49,7 +49,9 @@
 //! Unconfirmed: the behaviour outside the table, whether `End` is required, whether 1500
 //! entries are allowed or 1499, whether the list loads without `kopf.log_achs_name`.
 
-use super::{Controller, Directions, Format, Refused, Spacing};
+mod read;
+
+use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use crate::compensate::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
@@ -124,7 +126,7 @@ impl List {
         })
     }
 
-    fn text(&self, kind: AxisKind) -> String {
+    fn text(&self, kind: AxisKind, axis_number: usize, notes: &[String]) -> String {
         let unit = match kind {
             AxisKind::Linear => "0.1 um",
             AxisKind::Rotary => "0.0001 deg",
@@ -138,8 +140,9 @@ impl List {
         out.push_str(
             "# kopf.achs_nr: the axis' logical number, as achs_kw_log_ax_nr[i] in [STUP]\n",
         );
+        out.push_str(&super::commented("# ", notes));
         let mut line = |key: &str, value: i64| out.push_str(&format!("{key:<28} {value}\n"));
-        line("kopf.achs_nr", 1);
+        line("kopf.achs_nr", axis_number as i64);
         line("kw.ssfk.unit", 1);
         line("kw.ssfk.interval", self.interval);
         line("kw.ssfk.kw_startpos", self.start);
@@ -227,8 +230,13 @@ impl Controller for TwinCat {
         Ok(table)
     }
 
-    fn write(&self, table: &Table) -> Result<String, Refused> {
-        Ok(List::of(table)?.text(table.kind))
+    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+        read::read(text, reading)
+    }
+
+    fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
+        let axis_number = table.place.number.unwrap_or(1);
+        Ok(List::of(table)?.text(table.kind, axis_number, notes))
     }
 }
 
@@ -258,8 +266,8 @@ mod tests {
         let table = held_table(&TwinCat, &data, &settings).unwrap();
         assert_eq!(table.positions, [-100.0, -75.0, -50.0, -25.0, 0.0]);
         assert_eq!(
-            TwinCat.write(&table).unwrap(),
-            include_str!("../../../tests/data/compensation/twincat-linear.lis")
+            TwinCat.write(&table, &[]).unwrap(),
+            include_str!("../../../../tests/data/compensation/twincat-linear.lis")
         );
     }
 
@@ -282,8 +290,8 @@ mod tests {
         let table = held_table(&TwinCat, &data, &settings).unwrap();
         assert_eq!(table.modulo_deg, Some(360.0));
         assert_eq!(
-            TwinCat.write(&table).unwrap(),
-            include_str!("../../../tests/data/compensation/twincat-rotary-modulo.lis")
+            TwinCat.write(&table, &[]).unwrap(),
+            include_str!("../../../../tests/data/compensation/twincat-rotary-modulo.lis")
         );
     }
 
@@ -312,10 +320,10 @@ mod tests {
             down: vec![0.0, 0.0],
             reference: 0.0,
             modulo_deg: None,
-            axis: None,
+            place: Default::default(),
             interpolation: Default::default(),
         };
-        assert!(matches!(TwinCat.write(&table), Err(Refused::Range(_))));
+        assert!(matches!(TwinCat.write(&table, &[]), Err(Refused::Range(_))));
         // Irregular points cannot be written as start and interval.
         let table = Table {
             positions: vec![0.0, 10.0, 25.0],
@@ -323,6 +331,6 @@ mod tests {
             down: vec![0.0; 3],
             ..table
         };
-        assert!(matches!(TwinCat.write(&table), Err(Refused::Grid(_))));
+        assert!(matches!(TwinCat.write(&table, &[]), Err(Refused::Grid(_))));
     }
 }

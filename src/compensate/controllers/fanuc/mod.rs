@@ -59,7 +59,9 @@
 //! backlash with bidirectional compensation, how the ↓ table's increments are counted (here
 //! like the ↑ one, from the − end towards +).
 
-use super::{Controller, Directions, Format, Refused, Spacing};
+mod read;
+
+use super::{Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use crate::compensate::table::wrap;
 use crate::compensate::{Interpolation, Table};
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
@@ -102,6 +104,12 @@ impl Controller for Fanuc {
         Interpolation::Steps
     }
 
+    /// Backlash 1851/1852 stays as it was during the measurement: the − direction table
+    /// corrects the reversal that remained.
+    fn backlash(&self) -> Backlash {
+        Backlash::Kept
+    }
+
     fn format(&self) -> Format {
         Format {
             spacing: Spacing::Equidistant,
@@ -119,9 +127,15 @@ impl Controller for Fanuc {
         Ok(stored.held(table))
     }
 
-    fn write(&self, table: &Table) -> Result<String, Refused> {
+    /// The set-up sheet axcheck writes (the control holds no positions, the sheet does).
+    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+        read::read(text, reading)
+    }
+
+    fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
         let stored = Stored::fit(table, Rounding::Exact)?;
         let mut out = stored.header(table);
+        out.push_str(&super::commented("Note: ", notes));
         stored.parameters(table, &mut out);
         stored.data_table(table, &mut out);
         stored.punch(&mut out);
@@ -146,6 +160,9 @@ struct Stored {
     reference: usize,
     /// Whether the table wraps over a turn (3625).
     modulo: bool,
+    /// Added to every pitch error number: the table's place (an active table's 3621, or
+    /// another axis's numbers before this one's).
+    offset: usize,
     /// Held corrections at the grid points in quanta, ↑ zero at the reference.
     up: Vec<i64>,
     down: Vec<i64>,
@@ -168,6 +185,7 @@ impl Stored {
             return Err(Refused::Grid("a pitch error table needs two points".into()));
         }
         let reference = reference_index(table)?;
+        let offset = number_offset(table)?;
         interval_in_input_units(table)?;
         let detection = detection_unit(table.kind);
         let shift = table.up[reference];
@@ -182,6 +200,7 @@ impl Stored {
                 quantum,
                 reference,
                 modulo: table.modulo_deg.is_some(),
+                offset,
                 up,
                 down,
             };
@@ -244,11 +263,12 @@ impl Stored {
     /// Parameter values: 3620, 3621, 3622, 3626.
     fn numbers(&self) -> [usize; 4] {
         let m = self.sections();
-        if self.modulo {
+        let numbers = if self.modulo {
             [0, 0, m, m + 1]
         } else {
             [self.reference, 1, m, m + 1]
-        }
+        };
+        numbers.map(|n| n + self.offset)
     }
 
     /// The first number of the ↓ table's offsets (offset 0 or 1 is 3626).
@@ -259,7 +279,7 @@ impl Stored {
 
     /// The last number of the ↓ table.
     fn last_number(&self) -> usize {
-        self.down_base() + self.sections()
+        self.offset + self.down_base() + self.sections()
     }
 
     fn numbers_fit(&self) -> Result<(), Refused> {
@@ -299,6 +319,24 @@ fn detection_unit(kind: AxisKind) -> f64 {
     match kind {
         AxisKind::Linear => DETECTION_UM,
         AxisKind::Rotary => DETECTION_ARCSEC,
+    }
+}
+
+/// The first number of the + direction table (3621) without an offset: 0 on a turn (its
+/// number 0 repeats the last section), else 1 (the − end has no number).
+fn first_number(table: &Table) -> usize {
+    usize::from(table.modulo_deg.is_none())
+}
+
+/// The offset of every number that puts 3621 where the table's place says.
+fn number_offset(table: &Table) -> Result<usize, Refused> {
+    let first = first_number(table);
+    match table.place.number {
+        None => Ok(0),
+        Some(n) if n >= first => Ok(n - first),
+        Some(n) => Err(Refused::Grid(format!(
+            "the first pitch error number (3621) {n} is below {first}, the first this table can take"
+        ))),
     }
 }
 
@@ -526,7 +564,7 @@ impl Stored {
                 let _ = writeln!(
                     out,
                     "  {:>7}  {:>5}  {:>10}  {:>10}  {:>10}",
-                    base + p.offset,
+                    self.offset + base + p.offset,
                     p.value,
                     fmt_fixed(table.positions[p.start], 3),
                     fmt_fixed(table.positions[end], 3),
@@ -544,7 +582,8 @@ impl Stored {
         );
         for (quanta, base) in [(&self.up, 0), (&self.down, self.down_base())] {
             for p in self.points(quanta) {
-                let _ = writeln!(out, "N{}P{}", PUNCH_BASE + base + p.offset, p.value);
+                let number = PUNCH_BASE + self.offset + base + p.offset;
+                let _ = writeln!(out, "N{number}P{}", p.value);
             }
         }
         out.push_str("%\n");
@@ -592,10 +631,10 @@ mod tests {
         assert_eq!(table.positions, [0.0, 50.0, 100.0, 150.0, 200.0]);
         assert_eq!(table.up, [17.0, 7.0, 0.0, 8.0, 19.0]);
         assert_eq!(table.down, [13.0, 3.0, -5.0, 3.0, 13.0]);
-        let file = Fanuc.write(&table).unwrap();
+        let file = Fanuc.write(&table, &[]).unwrap();
         assert_eq!(
             file,
-            include_str!("../../../tests/data/compensation/fanuc-linear.txt")
+            include_str!("../../../../tests/data/compensation/fanuc-linear.txt")
         );
     }
 
@@ -638,10 +677,10 @@ mod tests {
             |v: &[f64]| -> Vec<i64> { v.iter().map(|x| (x / 3.6).round() as i64).collect() };
         assert_eq!(steps(&table.up), [0, -3, -1, 3, 0]);
         assert_eq!(steps(&table.down), [-2, -4, -3, 1, -2]);
-        let file = Fanuc.write(&table).unwrap();
+        let file = Fanuc.write(&table, &[]).unwrap();
         assert_eq!(
             file,
-            include_str!("../../../tests/data/compensation/fanuc-rotary-modulo.txt")
+            include_str!("../../../../tests/data/compensation/fanuc-rotary-modulo.txt")
         );
     }
 
@@ -660,7 +699,7 @@ mod tests {
         };
         let table = held_table(&Fanuc, &data, &settings).unwrap();
         assert_eq!(table.up, [0.0, -300.0, 0.0]);
-        let file = Fanuc.write(&table).unwrap();
+        let file = Fanuc.write(&table, &[]).unwrap();
         assert!(file.contains("\n  3623   = 3 "), "{file}");
         assert!(file.contains("\nN10001P-100\nN10002P100\n"), "{file}");
     }

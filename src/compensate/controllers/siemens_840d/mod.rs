@@ -2,10 +2,12 @@
 //! compensation (LEC / MSEC) table, the INI part program `%_N_AX_EEC_INI`: one
 //! `$AA_ENC_COMP[0,N,AX1]=value` per point N, then `$AA_ENC_COMP_STEP`, `_MIN`, `_MAX`,
 //! `_IS_MODULO` and `M17`, in mm (degrees on a rotary axis; inches if MD10240
-//! SCALING_SYSTEM_IS_METRIC = 0, which axcheck does not write). Measuring system 0 (the
-//! first encoder). The machine axis is the table's `axis` (`--axis X1`, campaign
-//! `compensation: {axis: X1}`); without it the file says `AX1` and a comment asks the user
-//! to replace it by the machine axis (X1, Y1, …).
+//! SCALING_SYSTEM_IS_METRIC = 0, which axcheck does not write). The first index is the
+//! measuring system: 0 for the first encoder, 1 for an axis closed on a direct (second)
+//! measuring system (`--measuring-system 1`, campaign `compensation: {measuring_system: 1}`,
+//! or the active table's own). The machine axis is the table's `axis` (`--axis X1`,
+//! campaign `compensation: {axis: X1}`); without it the file says `AX1` and a comment asks
+//! the user to replace it by the machine axis (X1, Y1, …). Notes go in the `;` comments.
 //!
 //! Sign: the NC modifies the actual position value by the table value, and "a positive
 //! compensation value causes the corresponding machine axis to move in the negative
@@ -43,7 +45,9 @@
 //! resolution the NC keeps of a value (its internal resolution, MD10200 / MD10210, is not
 //! known to the file) and the exact way each HMI version loads the INI file.
 
-use super::{Controller, Directions, Format, Refused, Spacing};
+mod read;
+
+use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use crate::compensate::Table;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 
@@ -94,7 +98,13 @@ impl Controller for Siemens840d {
         })
     }
 
-    fn write(&self, table: &Table) -> Result<String, Refused> {
+    /// The table as the NC holds it: the mean correction in both directions (MD32450 is
+    /// machine data, not in the file: the active backlash is stated beside the file).
+    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+        read::read(text, reading)
+    }
+
+    fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
         let step = step(table)?;
         let n = table.positions.len();
         let (first, last) = (table.positions[0], table.positions[n - 1]);
@@ -102,23 +112,38 @@ impl Controller for Siemens840d {
         let unit = table.kind.position_unit();
         let value = |correction: f64| fmt_fixed(-correction / per_unit, DECIMALS);
         let mean = table.mean();
-        let axis = table.axis.as_deref().unwrap_or(AXIS);
+        let axis = table.place.axis.as_deref().unwrap_or(AXIS);
+        let e = measuring_system(table);
         let mut out = String::from("%_N_AX_EEC_INI\nCHANDATA(1)\n");
         out.push_str(&header(table, &mean, per_unit));
+        out.push_str(&super::commented("; ", notes));
         for (k, c) in mean.iter().enumerate() {
-            out.push_str(&format!("$AA_ENC_COMP[0,{k},{axis}]={}\n", value(*c)));
+            out.push_str(&format!("$AA_ENC_COMP[{e},{k},{axis}]={}\n", value(*c)));
         }
         let position = |p: f64| fmt_fixed(p, DECIMALS);
         out.push_str(&format!(
-            "$AA_ENC_COMP_STEP[0,{axis}]={} ; {unit}\n",
+            "$AA_ENC_COMP_STEP[{e},{axis}]={} ; {unit}\n",
             position(step)
         ));
-        out.push_str(&format!("$AA_ENC_COMP_MIN[0,{axis}]={}\n", position(first)));
-        out.push_str(&format!("$AA_ENC_COMP_MAX[0,{axis}]={}\n", position(last)));
+        out.push_str(&format!(
+            "$AA_ENC_COMP_MIN[{e},{axis}]={}\n",
+            position(first)
+        ));
+        out.push_str(&format!(
+            "$AA_ENC_COMP_MAX[{e},{axis}]={}\n",
+            position(last)
+        ));
         let modulo = u8::from(table.modulo_deg.is_some());
-        out.push_str(&format!("$AA_ENC_COMP_IS_MODULO[0,{axis}]={modulo}\nM17\n"));
+        out.push_str(&format!(
+            "$AA_ENC_COMP_IS_MODULO[{e},{axis}]={modulo}\nM17\n"
+        ));
         Ok(out)
     }
+}
+
+/// The measuring system's index: 0 (the first encoder) unless the table's place says.
+fn measuring_system(table: &Table) -> u8 {
+    table.place.measuring_system.unwrap_or(0)
 }
 
 /// The interval of an equidistant table of at least two points, printable exactly (the NC
@@ -163,15 +188,17 @@ fn header(table: &Table, mean: &[f64], per_unit: f64) -> String {
         AxisKind::Rotary => "rotary axis",
     };
     let backlash = -table.reversal_correction() / per_unit;
+    let e = measuring_system(table);
     format!(
-        "; LEC table written by axcheck, {axis}, measuring system 1 ([0,...])\n\
+        "; LEC table written by axcheck, {axis}, measuring system {} ([{e},...])\n\
          {}\
          ; Values in {unit}: the mean deviation x-bar (actual - target) of both directions;\n\
          ; the NC subtracts them (a positive value moves the axis negative).\n\
          {}\
-         ; Needs MD38000 $MA_MM_ENC_COMP_MAX_POINTS[0] >= {}; load with MD32700 $MA_ENC_COMP_ENABLE[0]=0, then set it to 1.\n\
-         ; MD32450 $MA_BACKLASH[0]={} ; mean reversal, {unit} (positive: the encoder leads the machine part)\n",
-        match table.axis {
+         ; Needs MD38000 $MA_MM_ENC_COMP_MAX_POINTS[{e}] >= {}; load with MD32700 $MA_ENC_COMP_ENABLE[{e}]=0, then set it to 1.\n\
+         ; MD32450 $MA_BACKLASH[{e}]={} ; mean reversal, {unit} (positive: the encoder leads the machine part)\n",
+        e + 1,
+        match table.place.axis {
             None =>
                 "; Replace AX1 by the machine axis name (X1, Y1, ...) in every line before loading.\n",
             Some(_) => "",
@@ -221,8 +248,8 @@ mod tests {
         let table = held_table(&Siemens840d, &irregular_linear(), &settings).unwrap();
         assert_eq!(table.positions, [0.0, 25.0, 50.0, 75.0, 100.0]);
         assert_eq!(
-            Siemens840d.write(&table).unwrap(),
-            include_str!("../../../tests/data/compensation/siemens-840d-linear.ini")
+            Siemens840d.write(&table, &[]).unwrap(),
+            include_str!("../../../../tests/data/compensation/siemens-840d-linear.ini")
         );
     }
 
@@ -237,8 +264,8 @@ mod tests {
         let table = held_table(&Siemens840d, &data, &Settings::default()).unwrap();
         assert_eq!(table.modulo_deg, Some(360.0));
         assert_eq!(
-            Siemens840d.write(&table).unwrap(),
-            include_str!("../../../tests/data/compensation/siemens-840d-rotary-modulo.ini")
+            Siemens840d.write(&table, &[]).unwrap(),
+            include_str!("../../../../tests/data/compensation/siemens-840d-rotary-modulo.ini")
         );
     }
 
@@ -262,9 +289,12 @@ mod tests {
             down: vec![0.0; 3],
             reference: 0.0,
             modulo_deg: None,
-            axis: None,
+            place: Default::default(),
             interpolation: Default::default(),
         };
-        assert!(matches!(Siemens840d.write(&uneven), Err(Refused::Grid(_))));
+        assert!(matches!(
+            Siemens840d.write(&uneven, &[]),
+            Err(Refused::Grid(_))
+        ));
     }
 }

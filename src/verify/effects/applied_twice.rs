@@ -1,0 +1,22 @@
+//! `applied_twice`: the correction acted twice: an absolute table loaded on top of the one
+//! it already contained, a table loaded in two places (a table and a backlash or a second
+//! measuring system), or an incremental table added to itself.
+
+use super::{Candidate, Context, Effect, Key};
+
+pub struct AppliedTwice;
+
+impl Effect for AppliedTwice {
+    fn key(&self) -> Key {
+        Key::AppliedTwice
+    }
+
+    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+        vec![Candidate {
+            key: Key::AppliedTwice,
+            change: ctx.applied().iter().map(|c| 2.0 * c).collect(),
+            params: vec![("factor", 2.0)],
+            what: "the correction acted twice: the error changed sign instead of vanishing".into(),
+        }]
+    }
+}

@@ -1,0 +1,157 @@
+//! What can go wrong when a table is loaded, one file each (as the diagnosis keeps one
+//! file per effect): each effect predicts the change the re-measurement would show if it
+//! had happened, as one or more candidates (a factor, a shift, another axis's table). The
+//! measured change is tested against the table as loaded and against every candidate by
+//! the χ² of their differences, each difference weighted by its uncertainty and a constant
+//! offset between the measurements left free (a different laser datum: no ISO 230-2
+//! parameter sees it). An effect is named when the table as loaded is rejected and the
+//! effect explains the change far better.
+//!
+//! Adding an effect is one file here and one line in [`EFFECTS`].
+
+pub mod applied_twice;
+pub mod not_active;
+pub mod position_shift;
+pub mod scale;
+pub mod sign_inverted;
+pub mod wrong_axis;
+
+use super::compare::{Row, weighted_mean};
+use crate::compensate::Table;
+use serde::Serialize;
+
+/// The stable keys of the effects.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Key {
+    NotActive,
+    SignInverted,
+    AppliedTwice,
+    PositionShift,
+    Scale,
+    WrongAxis,
+}
+
+impl Key {
+    pub fn name(self) -> &'static str {
+        match self {
+            Key::NotActive => "not_active",
+            Key::SignInverted => "sign_inverted",
+            Key::AppliedTwice => "applied_twice",
+            Key::PositionShift => "position_shift",
+            Key::Scale => "scale",
+            Key::WrongAxis => "wrong_axis",
+        }
+    }
+}
+
+/// Another axis of the machine whose table may have been loaded on this one.
+#[derive(Debug, Clone)]
+pub struct Other {
+    /// The axis's name (`Y`).
+    pub axis: String,
+    /// The table loaded for it, as its controller adds it.
+    pub new: Table,
+}
+
+/// What the effects see: the rows, the tables and the machine's other axes.
+pub struct Context<'a> {
+    pub rows: &'a [Row],
+    /// The correction active before (None: nothing).
+    pub old: Option<&'a Table>,
+    /// The correction loaded since.
+    pub new: &'a Table,
+    pub others: &'a [Other],
+}
+
+impl Context<'_> {
+    /// The change at each row if `new` acted at positions shifted by `shift` and `old`
+    /// were replaced: new(P − shift) − old(P).
+    pub fn change_with(&self, new: &Table, shift: f64) -> Vec<f64> {
+        self.rows
+            .iter()
+            .map(|r| {
+                let old = self
+                    .old
+                    .map_or(0.0, |t| t.correction(r.position, r.direction));
+                new.correction(r.position - shift, r.direction) - old
+            })
+            .collect()
+    }
+
+    /// The change the table as loaded predicts at each row.
+    pub fn applied(&self) -> Vec<f64> {
+        self.rows.iter().map(|r| r.applied).collect()
+    }
+
+    /// The widest interval between the new table's points (mm or deg), 0 for one point.
+    pub fn interval(&self) -> f64 {
+        let p = &self.new.positions;
+        let steps = p.windows(2).map(|w| w[1] - w[0]);
+        steps.fold(0.0, f64::max)
+    }
+}
+
+/// One explanation of the measured change: the change it predicts per row, its
+/// parameters, and the sentence that names it.
+#[derive(Debug, Clone)]
+pub struct Candidate {
+    pub key: Key,
+    pub change: Vec<f64>,
+    pub params: Vec<(&'static str, f64)>,
+    /// What happened, for the evidence ("the table was applied with the opposite sign").
+    pub what: String,
+}
+
+/// One effect of the vocabulary.
+pub trait Effect: Sync {
+    fn key(&self) -> Key;
+    /// Its candidates for this verification.
+    fn candidates(&self, ctx: &Context) -> Vec<Candidate>;
+}
+
+/// Every effect, in the order in which they are preferred when two explain the change
+/// alike (the simpler mistake first).
+pub const EFFECTS: &[&dyn Effect] = &[
+    &not_active::NotActive,
+    &sign_inverted::SignInverted,
+    &applied_twice::AppliedTwice,
+    &position_shift::PositionShift,
+    &scale::Scale,
+    &wrong_axis::WrongAxis,
+];
+
+/// The χ² of the measured change against `change`, a constant offset fitted: Σ ((Δx −
+/// change − offset)/u)².
+pub fn chi2(rows: &[Row], change: &[f64]) -> f64 {
+    let residual = |k: usize| rows[k].change() - change[k];
+    let offset = weighted_mean((0..rows.len()).map(|k| (residual(k), rows[k].u)));
+    (0..rows.len())
+        .map(|k| ((residual(k) - offset) / rows[k].u).powi(2))
+        .sum()
+}
+
+/// The factor f that best scales the predicted change to the measured one (least
+/// squares, offset free): 1 when the table acted as loaded.
+pub fn fitted_factor(rows: &[Row]) -> f64 {
+    let weights: Vec<f64> = rows.iter().map(|r| 1.0 / (r.u * r.u)).collect();
+    let total: f64 = weights.iter().sum();
+    let centred = |f: &dyn Fn(&Row) -> f64| {
+        let mean = rows
+            .iter()
+            .zip(&weights)
+            .map(|(r, w)| w * f(r))
+            .sum::<f64>()
+            / total;
+        rows.iter().map(|r| f(r) - mean).collect::<Vec<f64>>()
+    };
+    let (x, y) = (centred(&|r| r.applied), centred(&|r| r.change()));
+    let sxx: f64 = x.iter().zip(&weights).map(|(a, w)| w * a * a).sum();
+    let sxy: f64 = x
+        .iter()
+        .zip(&y)
+        .zip(&weights)
+        .map(|((a, b), w)| w * a * b)
+        .sum();
+    if sxx > 0.0 { sxy / sxx } else { f64::NAN }
+}

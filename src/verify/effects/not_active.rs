@@ -1,0 +1,22 @@
+//! `not_active`: the table was not loaded, not enabled, or the axis not referenced since
+//! (Siemens MD32700, ecmc's enable, FANUC's power cycle, LinuxCNC's `COMP_FILE` in the
+//! wrong joint section): the re-measurement shows no change at all.
+
+use super::{Candidate, Context, Effect, Key};
+
+pub struct NotActive;
+
+impl Effect for NotActive {
+    fn key(&self) -> Key {
+        Key::NotActive
+    }
+
+    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+        vec![Candidate {
+            key: Key::NotActive,
+            change: vec![0.0; ctx.rows.len()],
+            params: Vec::new(),
+            what: "the table did not act: the deviations are as before (not loaded, not enabled, or the axis not referenced since)".into(),
+        }]
+    }
+}
