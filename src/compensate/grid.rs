@@ -17,6 +17,7 @@ const EPS: f64 = 1e-9;
 /// The grid for `data` in `format`, or why the controller cannot hold it.
 pub fn grid(data: &AxisData, format: &Format, settings: &Settings) -> Result<Vec<f64>, Refused> {
     let positions = match (settings.interval, format.spacing) {
+        (None, Spacing::Free) if modulo(data, format) && one_turn(data) => data.targets.clone(),
         _ if modulo(data, format) => revolution(data, settings.interval)?,
         (None, Spacing::Free) => data.targets.clone(),
         (interval, _) => equidistant(data, interval, settings.reference)?,
@@ -65,7 +66,7 @@ fn mean_spacing(data: &AxisData) -> f64 {
 /// 0 to 360° every `interval` (default: the mean target spacing); the interval must
 /// divide the revolution.
 fn revolution(data: &AxisData, interval: Option<f64>) -> Result<Vec<f64>, Refused> {
-    let step = interval.unwrap_or_else(|| mean_spacing(data));
+    let step = interval.unwrap_or_else(|| dividing_step(mean_spacing(data)));
     let count = REVOLUTION_DEG / step;
     if step.is_nan() || step <= 0.0 || (count - count.round()).abs() > 1e-6 {
         return Err(Refused::Grid(format!(
@@ -75,6 +76,29 @@ fn revolution(data: &AxisData, interval: Option<f64>) -> Result<Vec<f64>, Refuse
     }
     let count = count.round() as usize;
     Ok((0..=count).map(|k| k as f64 * step).collect())
+}
+
+/// Whether the targets are one turn exactly, 0° to 360°: a controller that takes any
+/// points keeps them.
+fn one_turn(data: &AxisData) -> bool {
+    let (first, last) = data.measurement_travel();
+    first.abs() < EPS && (last - REVOLUTION_DEG).abs() < EPS
+}
+
+/// The interval nearest `spacing` that divides the revolution into a whole number of
+/// 0.001° steps (360°/k for k a divisor of 360 000: every controller's position unit
+/// divides it), the finer of two as near.
+fn dividing_step(spacing: f64) -> f64 {
+    let wanted = REVOLUTION_DEG / spacing;
+    // 360 000 = 2⁶·3²·5⁴: its divisors are 2^a·3^b·5^c.
+    let counts = (0..=6u32).flat_map(|a| {
+        (0..=2u32).flat_map(move |b| (0..=4u32).map(move |c| 2u32.pow(a) * 3u32.pow(b) * 5u32.pow(c)))
+    });
+    let best = counts.min_by(|a, b| {
+        let d = |k: &u32| (f64::from(*k) - wanted).abs();
+        d(a).total_cmp(&d(b)).then(b.cmp(a))
+    });
+    best.map_or(spacing, |k| REVOLUTION_DEG / f64::from(k))
 }
 
 fn too_many(data: &AxisData, points: usize, max: usize) -> Refused {

@@ -11,6 +11,7 @@ mod campaign;
 mod catalogue;
 mod cli;
 mod console;
+mod controllers;
 mod decision;
 mod diagnose;
 mod external;

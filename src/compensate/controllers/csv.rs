@@ -76,8 +76,9 @@ impl Controller for Csv {
                 return Err(Unreadable::at(
                     line,
                     format!(
-                        "{} fields, but the header names {}",
+                        "{} field{}, but the header names {}",
                         fields.len(),
+                        if fields.len() == 1 { "" } else { "s" },
                         columns.len()
                     ),
                 ));
