@@ -148,6 +148,11 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Compare the re-measurement after a table was loaded with the prediction from the
+    /// measurement before and the table: effective, partly effective, not effective or
+    /// made worse, and what went wrong (exit 0: effective, 1: not, 2: an input cannot be
+    /// read).
+    Verify(cli::verify::Args),
     /// Simulate a positioning test from an error model and a test plan (YAML), or with
     /// --fleet a whole synthetic campaign for benchmarks.
     Simulate {
@@ -163,10 +168,25 @@ enum Command {
         /// Seed overriding the file's.
         #[arg(long)]
         seed: Option<u64>,
+        /// The machine measured with this table active (in --controller's format): its
+        /// correction added to every reading, as the controller adds it.
+        #[arg(long, value_name = "TABLE", requires = "controller")]
+        active: Option<PathBuf>,
+        /// The backlash parameter active with it, µm or arcsec.
+        #[arg(
+            long,
+            value_name = "N",
+            requires = "controller",
+            allow_negative_numbers = true
+        )]
+        active_backlash: Option<f64>,
+        /// The controller whose format --active is in.
+        #[arg(long, short)]
+        controller: Option<String>,
     },
 }
 
-fn parse_standard(text: &str) -> Result<StandardId, String> {
+pub(crate) fn parse_standard(text: &str) -> Result<StandardId, String> {
     StandardId::parse(text).ok_or_else(|| {
         format!(
             "unknown standard `{text}`; expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba"
@@ -296,11 +316,19 @@ fn run(cli: Cli) -> Result<ExitCode> {
             };
             print(&cli::compensate::run(&data, &request)?)?;
         }
+        Command::Verify(args) => {
+            let (text, effective) = cli::verify::run(&args)?;
+            print(&text)?;
+            return Ok(ExitCode::from(if effective { 0 } else { 1 }));
+        }
         Command::Simulate {
             model,
             output,
             fleet,
             seed,
+            active,
+            active_backlash,
+            controller,
         } => {
             if let (Some(axes), Some(dir)) = (fleet, &output) {
                 cli::simulate::fleet(axes, seed.unwrap_or(1), dir)?;
@@ -309,7 +337,12 @@ fn run(cli: Cli) -> Result<ExitCode> {
             let Some(model) = model else {
                 bail!("give a simulation file, or --fleet N --out DIR");
             };
-            let csv = cli::simulate::run(&model, seed)?;
+            let active = cli::simulate::Active {
+                table: active.as_deref(),
+                backlash: active_backlash,
+                controller: controller.as_deref(),
+            };
+            let csv = cli::simulate::run(&model, seed, &active)?;
             match output {
                 Some(path) => {
                     axcheck::atomic::write(&path, csv.as_bytes())

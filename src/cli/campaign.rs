@@ -284,6 +284,9 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     for line in problems(&result, "all in summary.md") {
         println!("{line}");
     }
+    for line in super::tables::lines(&result) {
+        println!("{line}");
+    }
     let tables = result.tests.iter().any(|t| t.compensation.is_some());
     println!(
         "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.parquet, results.json, junit.xml{}{}",

@@ -7,7 +7,7 @@ use axcheck::compensate::controllers::{self, Controller};
 use axcheck::compensate::{self, Mode, Table, Warning};
 use axcheck::evaluate::Evaluation;
 use axcheck::evaluate::StandardId;
-use axcheck::evaluate::json::ParameterValues;
+use axcheck::evaluate::json::ParameterSet;
 use axcheck::measurement::AxisData;
 use axcheck::units::{AxisKind, fmt_fixed};
 use serde::Serialize;
@@ -23,7 +23,7 @@ pub struct TableArgs {
     interval: Option<f64>,
     /// Reference point (mm or deg): the grid passes through it and the correction is zero
     /// there; default: the first grid point, corrections as measured.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     reference: Option<f64>,
     /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
     #[arg(long)]
@@ -45,7 +45,7 @@ pub struct TableArgs {
     active: Option<String>,
     /// The backlash parameter active during the measurement, µm or arcsec (Siemens
     /// MD32450, LinuxCNC BACKLASH without a table, …).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
     active_backlash: Option<f64>,
 }
 
@@ -160,18 +160,13 @@ struct CompensationJson<'a> {
     /// Deviation unit of the corrections and parameters: `um` or `arcsec`.
     unit: &'static str,
     table: &'a Table,
-    measured: Parameters<'a>,
-    predicted: Parameters<'a>,
+    measured: ParameterSet<'a>,
+    predicted: ParameterSet<'a>,
     /// Why the table may not achieve the prediction on the machine.
     warnings: &'a [Warning],
     /// The table file written, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     file: Option<String>,
-}
-
-#[derive(Serialize)]
-struct Parameters<'a> {
-    parameters: ParameterValues<'a>,
 }
 
 /// Writes the table (to `out`, or standard output without it) and returns what to print;
@@ -209,12 +204,8 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
             active_file: c.active_file.as_deref(),
             unit: data.kind.deviation_unit(),
             table: &done.table,
-            measured: Parameters {
-                parameters: ParameterValues(&measured.parameters),
-            },
-            predicted: Parameters {
-                parameters: ParameterValues(&done.predicted.parameters),
-            },
+            measured: ParameterSet::of(&measured),
+            predicted: ParameterSet::of(&done.predicted),
             warnings: &c.warnings,
             file: request.out.map(|p| p.display().to_string()),
         };

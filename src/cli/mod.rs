@@ -5,9 +5,11 @@ pub mod compensate;
 pub mod diagnose;
 pub mod eval;
 pub mod simulate;
+pub mod tables;
 pub mod text;
 #[cfg(feature = "parquet")]
 pub mod trend;
+pub mod verify;
 
 /// `--json` output: `value`'s JSON with the input file's name added last, pretty-printed.
 pub fn json_with_file<T: serde::Serialize>(value: &T, file: &str) -> serde_json::Result<String> {

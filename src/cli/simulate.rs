@@ -5,13 +5,43 @@ use axcheck::measurement::csv;
 use axcheck::simulate::Simulation;
 use std::path::Path;
 
-/// Simulates `model` and returns the CSV text.
-pub fn run(model: &Path, seed: Option<u64>) -> Result<String> {
+/// The compensation active on the simulated machine (`--active`, `--active-backlash`,
+/// `--controller`).
+pub struct Active<'a> {
+    pub table: Option<&'a Path>,
+    pub backlash: Option<f64>,
+    pub controller: Option<&'a str>,
+}
+
+/// Simulates `model`, with `active`'s correction added to every reading as the controller
+/// adds it, and returns the CSV text.
+pub fn run(model: &Path, seed: Option<u64>, active: &Active) -> Result<String> {
     let text = axcheck::files::read_to_string(model)
         .with_context(|| format!("cannot read the model file {}", model.display()))?;
     let sim = Simulation::from_yaml(&text, &model.display().to_string())?;
     let seed = seed.unwrap_or(sim.seed);
-    let data = sim.run(seed);
+    let mut data = sim.run(seed);
+    let mut with = None;
+    if let Some(name) = active.controller {
+        let controller = super::compensate::controller(name)?;
+        let table = active.table.map(|p| p.to_string_lossy().into_owned());
+        let state = super::compensate::active_state(
+            table.as_deref(),
+            active.backlash,
+            controller,
+            data.kind,
+            None,
+        )?
+        .unwrap_or_default();
+        if let Some(total) = state.total(controller.backlash(), data.kind) {
+            data = axcheck::compensate::apply(&total, &data);
+            with = Some(format!(
+                "measured with {} active ({})",
+                table.as_deref().unwrap_or("a backlash"),
+                controller.name()
+            ));
+        }
+    }
     let name = model
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
@@ -24,6 +54,7 @@ pub fn run(model: &Path, seed: Option<u64>) -> Result<String> {
     if let Some(d) = &sim.description {
         comments.push(d.clone());
     }
+    comments.extend(with);
     Ok(csv::write(&data, &comments))
 }
 

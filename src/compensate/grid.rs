@@ -92,7 +92,8 @@ fn dividing_step(spacing: f64) -> f64 {
     let wanted = REVOLUTION_DEG / spacing;
     // 360 000 = 2⁶·3²·5⁴: its divisors are 2^a·3^b·5^c.
     let counts = (0..=6u32).flat_map(|a| {
-        (0..=2u32).flat_map(move |b| (0..=4u32).map(move |c| 2u32.pow(a) * 3u32.pow(b) * 5u32.pow(c)))
+        (0..=2u32)
+            .flat_map(move |b| (0..=4u32).map(move |c| 2u32.pow(a) * 3u32.pow(b) * 5u32.pow(c)))
     });
     let best = counts.min_by(|a, b| {
         let d = |k: &u32| (f64::from(*k) - wanted).abs();

@@ -52,6 +52,21 @@ impl Serialize for ParameterValues<'_> {
     }
 }
 
+/// An evaluation's parameters as `{"parameters": {KEY: value}}`: the measured, predicted
+/// and achieved sets of compensations and their verification.
+#[derive(Clone, Copy, Serialize)]
+pub struct ParameterSet<'a> {
+    pub parameters: ParameterValues<'a>,
+}
+
+impl<'a> ParameterSet<'a> {
+    pub fn of(e: &'a Evaluation) -> ParameterSet<'a> {
+        ParameterSet {
+            parameters: ParameterValues(&e.parameters),
+        }
+    }
+}
+
 /// For the maxima over targets: the 1-based index of the target where each occurs.
 #[derive(Clone, Copy)]
 pub struct TargetIndices<'a>(pub &'a [Parameter]);

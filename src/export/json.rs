@@ -14,7 +14,7 @@ use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
 use crate::compensate::Compensation;
 use crate::diagnose::Diagnosis;
 use crate::diagnose::cross::OutOfTest;
-use crate::evaluate::json::{ParameterValues, TargetIndices};
+use crate::evaluate::json::{ParameterSet, ParameterValues, TargetIndices};
 use crate::judge::{Check, Judgement, Verdict};
 use crate::nde::NdeCorrection;
 use crate::rules::Finding;
@@ -156,36 +156,60 @@ impl<'a> UncertaintyJson<'a> {
     }
 }
 
-/// A test's compensation: the controller, the table file written (relative to the output
-/// folder) or why the controller refused it, and the parameters predicted with it.
+/// A test's compensation: the controller, whether the table builds on the active one, the
+/// table file written (relative to the output folder) or why the controller refused it,
+/// the parameters predicted with it, and the verification of a re-measurement.
 #[derive(Serialize)]
 struct CompensationJson<'a> {
     controller: &'static str,
+    /// `absolute` or `incremental` (the active table plus this measurement's correction).
+    mode: crate::compensate::Mode,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    active_file: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     file: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     refused: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    predicted: Option<PredictedJson<'a>>,
-    /// Why the table may not achieve the prediction (drift, aliasing, n = 1, outliers).
+    predicted: Option<ParameterSet<'a>>,
+    /// What the active state leaves unsure (`active_compensation_unknown`, …) and why the
+    /// table may not achieve the prediction (drift, aliasing, n = 1, outliers).
     warnings: &'a [crate::compensate::Warning],
+    /// This test as the re-measurement of the table it verifies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    verification: Option<VerificationJson<'a>>,
 }
 
+/// A verification, or why it could not be made.
 #[derive(Serialize)]
-struct PredictedJson<'a> {
-    parameters: ParameterValues<'a>,
+#[serde(untagged)]
+enum VerificationJson<'a> {
+    Done(crate::verify::Json<'a>),
+    Failed { error: &'a str },
 }
 
 impl<'a> CompensationJson<'a> {
-    fn new(c: &'a Compensation, file: Option<&std::path::Path>) -> CompensationJson<'a> {
+    fn new(
+        t: &'a AxisTest,
+        c: &'a Compensation,
+        file: Option<&std::path::Path>,
+    ) -> CompensationJson<'a> {
         CompensationJson {
             controller: c.controller,
+            mode: c.mode,
+            active_file: c.active_file.as_deref(),
             file: file.map(|p| p.to_string_lossy().replace('\\', "/")),
             refused: c.outcome.as_ref().err().map(String::as_str),
-            predicted: c.outcome.as_ref().ok().map(|c| PredictedJson {
-                parameters: ParameterValues(&c.predicted.parameters),
-            }),
+            predicted: c
+                .outcome
+                .as_ref()
+                .ok()
+                .map(|c| ParameterSet::of(&c.predicted)),
             warnings: &c.warnings,
+            verification: t.verification.as_ref().map(|v| match v {
+                Ok(v) => VerificationJson::Done(v.json()),
+                Err(e) => VerificationJson::Failed { error: e },
+            }),
         }
     }
 }
@@ -286,7 +310,7 @@ pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Erro
             json.compensation = t
                 .compensation
                 .as_ref()
-                .map(|c| CompensationJson::new(c, table.as_deref()));
+                .map(|c| CompensationJson::new(t, c, table.as_deref()));
             serde_json::to_vec_pretty(&json)
         })
         .collect::<Result<_, _>>()?;

@@ -18,7 +18,7 @@ pub use effects::{Key, Other};
 
 use crate::compensate::{Table, apply_change};
 use crate::diagnose::stats::chi2_upper;
-use crate::evaluate::json::ParameterValues;
+use crate::evaluate::json::ParameterSet;
 use crate::evaluate::stats::normal_cdf;
 use crate::evaluate::{self, Evaluation, StandardId};
 use crate::measurement::AxisData;
@@ -287,9 +287,9 @@ fn notes(before: &AxisData, after: &AxisData) -> Vec<String> {
 pub struct Json<'a> {
     pub verdict: Verdict,
     pub e: &'a Systematic,
-    pub before: Parameters<'a>,
-    pub predicted: Parameters<'a>,
-    pub achieved: Parameters<'a>,
+    pub before: ParameterSet<'a>,
+    pub predicted: ParameterSet<'a>,
+    pub achieved: ParameterSet<'a>,
     pub findings: &'a [Finding],
     pub offset: f64,
     pub chi2: f64,
@@ -298,21 +298,9 @@ pub struct Json<'a> {
     pub notes: &'a [String],
 }
 
-fn parameters(e: &Evaluation) -> Parameters<'_> {
-    Parameters {
-        parameters: ParameterValues(&e.parameters),
-    }
-}
-
-/// A set of parameters by key.
-#[derive(Serialize)]
-pub struct Parameters<'a> {
-    pub parameters: ParameterValues<'a>,
-}
-
 impl Verification {
     pub fn json(&self) -> Json<'_> {
-        let params = parameters;
+        let params = ParameterSet::of;
         Json {
             verdict: self.verdict,
             e: &self.e,

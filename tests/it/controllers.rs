@@ -41,28 +41,30 @@ fn random_axis() -> impl Strategy<Value = RandomAxis> {
             0.5f64..2.0,
             proptest::option::of(0.0f64..1.0),
         )
-            .prop_map(move |((kind, shape), gaps, start, values, factor, reference)| {
-                let targets: Vec<f64> = match shape {
-                    0 => steps(start, &gaps),
-                    1 => {
-                        let total: f64 = gaps.iter().sum();
-                        let scaled: Vec<f64> = gaps.iter().map(|g| g * 300.0 / total).collect();
-                        steps(0.0, &scaled)
+            .prop_map(
+                move |((kind, shape), gaps, start, values, factor, reference)| {
+                    let targets: Vec<f64> = match shape {
+                        0 => steps(start, &gaps),
+                        1 => {
+                            let total: f64 = gaps.iter().sum();
+                            let scaled: Vec<f64> = gaps.iter().map(|g| g * 300.0 / total).collect();
+                            steps(0.0, &scaled)
+                        }
+                        _ => (0..gaps.len())
+                            .map(|k| k as f64 * 360.0 / (gaps.len() - 1) as f64)
+                            .collect(),
+                    };
+                    let factor = if shape == 2 { 1.0 } else { factor };
+                    RandomAxis {
+                        kind,
+                        up: values.iter().map(|(e, _)| *e).collect(),
+                        down: values.iter().map(|(e, b)| e + b).collect(),
+                        targets,
+                        interval_factor: factor,
+                        reference,
                     }
-                    _ => (0..gaps.len())
-                        .map(|k| k as f64 * 360.0 / (gaps.len() - 1) as f64)
-                        .collect(),
-                };
-                let factor = if shape == 2 { 1.0 } else { factor };
-                RandomAxis {
-                    kind,
-                    up: values.iter().map(|(e, _)| *e).collect(),
-                    down: values.iter().map(|(e, b)| e + b).collect(),
-                    targets,
-                    interval_factor: factor,
-                    reference,
-                }
-            })
+                },
+            )
     })
 }
 
@@ -124,7 +126,9 @@ fn steps(start: f64, gaps: &[f64]) -> Vec<f64> {
 /// What a one-table controller holds in both directions: the mean.
 fn as_loaded(controller: &dyn Controller, table: &Table) -> (Vec<f64>, Vec<f64>) {
     match controller.format().directions {
-        compensate::controllers::Directions::Bidirectional => (table.up.clone(), table.down.clone()),
+        compensate::controllers::Directions::Bidirectional => {
+            (table.up.clone(), table.down.clone())
+        }
         _ => (table.mean(), table.mean()),
     }
 }
@@ -142,7 +146,9 @@ fn round_trip(controller: &dyn Controller, a: &RandomAxis) -> Result<bool, TestC
     };
     let file = controller
         .write(&held, &["a note".to_string()])
-        .map_err(|e| TestCaseError::fail(format!("{}: a held table refused: {e}", controller.name())))?;
+        .map_err(|e| {
+            TestCaseError::fail(format!("{}: a held table refused: {e}", controller.name()))
+        })?;
     let reading = Reading {
         kind: a.kind,
         axis: None,
@@ -187,7 +193,12 @@ fn every_controller_reads_back_a_thousand_random_tables() {
         let (mut read, mut drawn) = (0, 0);
         while read < 1000 {
             drawn += 1;
-            assert!(drawn <= 2000, "{}: refused {} of {drawn}", controller.name(), drawn - read);
+            assert!(
+                drawn <= 2000,
+                "{}: refused {} of {drawn}",
+                controller.name(),
+                drawn - read
+            );
             let a = strategy.new_tree(&mut runner).unwrap().current();
             match round_trip(*controller, &a) {
                 Ok(true) => read += 1,
@@ -239,7 +250,10 @@ fn active_backlash(controller: &dyn Controller) -> Option<f64> {
 fn a_table_built_on_the_active_one_is_the_table_measured_without_it() {
     let plain = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(11);
     let other = Simulation::from_yaml(ACTIVE, "active.yaml").unwrap().run(5);
-    let e_plain = evaluate(&plain, StandardId::Iso230_2).parameter("E").unwrap().value;
+    let e_plain = evaluate(&plain, StandardId::Iso230_2)
+        .parameter("E")
+        .unwrap()
+        .value;
     assert!(e_plain > 30.0, "E = {e_plain}");
     for controller in CONTROLLERS {
         let settings = grid_settings(*controller);
@@ -254,7 +268,9 @@ fn a_table_built_on_the_active_one_is_the_table_measured_without_it() {
             file: Some("active".into()),
             backlash: active_backlash(*controller),
         };
-        let total = active.total(controller.backlash(), AxisKind::Linear).unwrap();
+        let total = active
+            .total(controller.backlash(), AxisKind::Linear)
+            .unwrap();
         let with_active = compensate::apply(&total, &plain);
         let from_plain = compensate::held_table(*controller, &plain, &settings).unwrap();
         let stated = Settings {
@@ -269,7 +285,10 @@ fn a_table_built_on_the_active_one_is_the_table_measured_without_it() {
             "{name}"
         );
         let after = compensate::apply_change(&built, Some(&total), &with_active);
-        let e_after = evaluate(&after, StandardId::Iso230_2).parameter("E").unwrap().value;
+        let e_after = evaluate(&after, StandardId::Iso230_2)
+            .parameter("E")
+            .unwrap()
+            .value;
         assert!(e_after < e_plain / 4.0, "{name}: E {e_plain} -> {e_after}");
     }
 }
@@ -316,7 +335,10 @@ fn linuxcnc_reads_type_0_and_1_as_its_loader_does() {
             "0 0 0\n100 0.001 0\n100 0.002 0\n",
             "line 3, field `nominal`: the positions must increase: 100 follows 100",
         ),
-        ("0 nan 0\n", "line 1: `0 nan 0` is not three numbers (nominal, forward, reverse): LinuxCNC stops reading here and would load no table"),
+        (
+            "0 nan 0\n",
+            "line 1: `0 nan 0` is not three numbers (nominal, forward, reverse): LinuxCNC stops reading here and would load no table",
+        ),
     ] {
         assert_eq!(read("linuxcnc", text, None).unwrap_err(), message);
     }
@@ -367,19 +389,45 @@ kw.ssfk.interval 500000\nkw.ssfk.kw_startpos 0\nkw.ssfk.kw_nr_max 3\nkw.ssfk.bil
 kw.ssfk.table[ 0].pos 10   ( 1 um )\nkw.ssfk.table[1].pos -5\nkw.ssfk.table[2].pos 0\n";
     let t = read("twincat", text, None).unwrap();
     assert!(close(&t.positions, &[0.0, 50.0, 100.0]));
-    assert!(close(&t.up, &[-1.0, 0.5, 0.0]) && t.up == t.down, "{:?}", t.up);
+    assert!(
+        close(&t.up, &[-1.0, 0.5, 0.0]) && t.up == t.down,
+        "{:?}",
+        t.up
+    );
     assert_eq!(t.place.number, Some(3));
     let setpoints = text
         .replace("kw.ssfk.interval 500000", "kw.ssfk.interval 0")
         .replace("kw.ssfk.table[2].pos 0", "kw.ssfk.table[2].pos 0\nkw.ssfk.table[0].setpoint 0\nkw.ssfk.table[1].setpoint 300000\nkw.ssfk.table[2].setpoint 1000000");
-    assert!(close(&read("twincat", &setpoints, None).unwrap().positions, &[0.0, 30.0, 100.0]));
+    assert!(close(
+        &read("twincat", &setpoints, None).unwrap().positions,
+        &[0.0, 30.0, 100.0]
+    ));
     for (from, to, message) in [
-        ("kw.ssfk.unit 1", "kw.ssfk.unit 0", "line 5, field `kw.ssfk.unit`: 0: axcheck reads metric lists (1: 0.1 um and 0.0001 deg) only; increments need the axis's resolution"),
-        ("kw.ssfk.table[2].pos 0", "kw.ssfk.table[3].pos 0", "line 13, field `kw.ssfk.table[3].pos`: entry 3 is beyond kw.ssfk.kw_nr_max = 3"),
-        ("kw.ssfk.table[1].pos -5", "kw.ssfk.table[1].pos -5\nkw.ssfk.table[1].neg 7", "line 13, field `kw.ssfk.table[1].neg`: differs from .pos in a unilateral list (kw.ssfk.bilateral 0): set bilateral 1 if the list holds both directions"),
-        ("kw.ssfk.table[1].pos -5", "kw.ssfk.table[1].pos -5.5", "line 12, field `kw.ssfk.table[1].pos`: expected an integer, got `-5.5`"),
+        (
+            "kw.ssfk.unit 1",
+            "kw.ssfk.unit 0",
+            "line 5, field `kw.ssfk.unit`: 0: axcheck reads metric lists (1: 0.1 um and 0.0001 deg) only; increments need the axis's resolution",
+        ),
+        (
+            "kw.ssfk.table[2].pos 0",
+            "kw.ssfk.table[3].pos 0",
+            "line 13, field `kw.ssfk.table[3].pos`: entry 3 is beyond kw.ssfk.kw_nr_max = 3",
+        ),
+        (
+            "kw.ssfk.table[1].pos -5",
+            "kw.ssfk.table[1].pos -5\nkw.ssfk.table[1].neg 7",
+            "line 13, field `kw.ssfk.table[1].neg`: differs from .pos in a unilateral list (kw.ssfk.bilateral 0): set bilateral 1 if the list holds both directions",
+        ),
+        (
+            "kw.ssfk.table[1].pos -5",
+            "kw.ssfk.table[1].pos -5.5",
+            "line 12, field `kw.ssfk.table[1].pos`: expected an integer, got `-5.5`",
+        ),
     ] {
-        assert_eq!(read("twincat", &text.replace(from, to), None).unwrap_err(), message);
+        assert_eq!(
+            read("twincat", &text.replace(from, to), None).unwrap_err(),
+            message
+        );
     }
 }
 
@@ -394,18 +442,57 @@ fn ecmc_reads_what_its_loader_reads() {
     assert!(close(&t.positions, &[0.0, 50.0, 100.0]));
     assert!(close(&t.up, &[1.0, -2.0, 0.0]) && t.up == t.down);
     let old = "# table\n0 0.001\n50 -0.002\n100 0.0\n";
-    assert!(close(&read("ecmc-9.6", old, None).unwrap().up, &[-1.0, 2.0, 0.0]));
+    assert!(close(
+        &read("ecmc-9.6", old, None).unwrap().up,
+        &[-1.0, 2.0, 0.0]
+    ));
     for (name, text, message) in [
-        ("ecmc", "  # note\n0 0\n1 0\n2 0\n", "line 1: a comment must start in the first column: ecmc refuses `#` after a blank"),
-        ("ecmc", "0 0\n  \n1 0\n2 0\n", "line 2: a line of blanks only (or a `\\r`): ecmc refuses it; leave it empty or remove it"),
-        ("ecmc", "0 0\n1,5 2,3\n2 0\n", "line 2: `1 5 2 3`: three numbers once commas are separators; decimal commas? ecmc would read the row 1, 5"),
-        ("ecmc", "0 0\nPREC 5\n1 0\n2 0\n", "line 2: `PREC 5` is not `PREC=n`: ecmc refuses it"),
-        ("ecmc", "0 0\n1 0\n", "2 rows: ecmc loads a lookup table of at least 3"),
-        ("ecmc", "0 0\n1 0\n1 0.1\n", "line 3, field `position`: the positions must increase: 1 follows 1"),
-        ("ecmc-9.6", "0 0\n\n1 0\n2 0\n", "line 2: an empty line: ECMC 9.6.x and earlier refuses it"),
-        ("ecmc-9.6", "0 0\n1,0\n2 0\n", "line 2: a comma: ECMC 9.6.x and earlier separates numbers by blanks only"),
+        (
+            "ecmc",
+            "  # note\n0 0\n1 0\n2 0\n",
+            "line 1: a comment must start in the first column: ecmc refuses `#` after a blank",
+        ),
+        (
+            "ecmc",
+            "0 0\n  \n1 0\n2 0\n",
+            "line 2: a line of blanks only (or a `\\r`): ecmc refuses it; leave it empty or remove it",
+        ),
+        (
+            "ecmc",
+            "0 0\n1,5 2,3\n2 0\n",
+            "line 2: `1 5 2 3`: three numbers once commas are separators; decimal commas? ecmc would read the row 1, 5",
+        ),
+        (
+            "ecmc",
+            "0 0\nPREC 5\n1 0\n2 0\n",
+            "line 2: `PREC 5` is not `PREC=n`: ecmc refuses it",
+        ),
+        (
+            "ecmc",
+            "0 0\n1 0\n",
+            "2 rows: ecmc loads a lookup table of at least 3",
+        ),
+        (
+            "ecmc",
+            "0 0\n1 0\n1 0.1\n",
+            "line 3, field `position`: the positions must increase: 1 follows 1",
+        ),
+        (
+            "ecmc-9.6",
+            "0 0\n\n1 0\n2 0\n",
+            "line 2: an empty line: ECMC 9.6.x and earlier refuses it",
+        ),
+        (
+            "ecmc-9.6",
+            "0 0\n1,0\n2 0\n",
+            "line 2: a comma: ECMC 9.6.x and earlier separates numbers by blanks only",
+        ),
     ] {
-        assert_eq!(read(name, text, None).unwrap_err(), message, "{name} {text:?}");
+        assert_eq!(
+            read(name, text, None).unwrap_err(),
+            message,
+            "{name} {text:?}"
+        );
     }
 }
 
@@ -418,15 +505,44 @@ fn heidenhain_reads_columns_at_their_positions() {
     let t = read("heidenhain", text, Some("X")).unwrap();
     assert!(close(&t.positions, &[0.0, 25.4]));
     // Error 0.0001 in = 2.54 µm; the correction is minus the error.
-    assert!(close(&t.up, &[-2.54, 2.54]) && close(&t.down, &[-5.08, 0.0]), "{:?} {:?}", t.up, t.down);
+    assert!(
+        close(&t.up, &[-2.54, 2.54]) && close(&t.down, &[-5.08, 0.0]),
+        "{:?} {:?}",
+        t.up,
+        t.down
+    );
     assert_eq!(t.place.axis.as_deref(), Some("X"));
     for (from, to, axis, message) in [
-        ("", "", None, "line 5: several axis columns (X, Z): name the axis (--axis, or compensation: {axis})"),
-        ("[END]\n", "", Some("X"), "no `[END]` line: the table may be cut short"),
-        ("-0.0001   +0.0000", "-0,0001   +0.0000", Some("X"), "line 7, field `X`: `-0,0001`: a decimal comma; write the number with a point"),
-        ("INCH", "FEET", Some("X"), "line 1: unknown unit `FEET` (MM or INCH)"),
+        (
+            "",
+            "",
+            None,
+            "line 5: several axis columns (X, Z): name the axis (--axis, or compensation: {axis})",
+        ),
+        (
+            "[END]\n",
+            "",
+            Some("X"),
+            "no `[END]` line: the table may be cut short",
+        ),
+        (
+            "-0.0001   +0.0000",
+            "-0,0001   +0.0000",
+            Some("X"),
+            "line 7, field `X`: `-0,0001`: a decimal comma; write the number with a point",
+        ),
+        (
+            "INCH",
+            "FEET",
+            Some("X"),
+            "line 1: unknown unit `FEET` (MM or INCH)",
+        ),
     ] {
-        let changed = if from.is_empty() { text.to_string() } else { text.replace(from, to) };
+        let changed = if from.is_empty() {
+            text.to_string()
+        } else {
+            text.replace(from, to)
+        };
         assert_eq!(read("heidenhain", &changed, axis).unwrap_err(), message);
     }
 }
@@ -435,10 +551,20 @@ fn heidenhain_reads_columns_at_their_positions() {
 /// kind of axis is refused by its header.
 #[test]
 fn csv_reads_one_or_two_correction_columns() {
-    let t = read("csv", "# note\nposition_mm,correction_um\n0,1.5\n10,-2\n", None).unwrap();
+    let t = read(
+        "csv",
+        "# note\nposition_mm,correction_um\n0,1.5\n10,-2\n",
+        None,
+    )
+    .unwrap();
     assert!(close(&t.up, &[1.5, -2.0]) && t.up == t.down);
     assert_eq!(
-        read("csv", "position_deg,correction_up_arcsec,correction_down_arcsec\n0,1,1\n", None).unwrap_err(),
+        read(
+            "csv",
+            "position_deg,correction_up_arcsec,correction_down_arcsec\n0,1,1\n",
+            None
+        )
+        .unwrap_err(),
         "line 1: `position_deg`: the table is for a rotary axis, but the axis is linear"
     );
     assert_eq!(

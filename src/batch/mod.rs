@@ -1,6 +1,9 @@
 //! Evaluating a whole campaign: every axis in parallel, each test of each axis read,
 //! corrected, rule-checked, evaluated and judged. A broken file or axis fails that axis
-//! with its message; the rest of the campaign completes.
+//! with its message; the rest of the campaign completes. Then each re-measurement that
+//! verifies a table is compared with its prediction ([`compensation`]).
+
+pub mod compensation;
 
 use crate::campaign::{AxisSpec, Campaign, CampaignInfo, MachineInfo, SensorKind};
 use crate::diagnose::cross::{OutOfTest, out_of_test};
@@ -43,6 +46,9 @@ pub struct AxisTest {
     pub nde: Option<NdeCorrection>,
     /// The compensation table of the machine's controller and the parameters predicted.
     pub compensation: Option<crate::compensate::Compensation>,
+    /// The re-measurement compared with the prediction of the table it verifies, or why
+    /// it cannot be.
+    pub verification: Option<Result<crate::verify::Verification, String>>,
     /// The measurement uncertainty of the parameters (GUM budget, U with k = 2).
     pub uncertainty: Option<Uncertainty>,
     /// Model check and diagnosis, when the run asked for it.
@@ -151,6 +157,17 @@ impl CampaignResult {
     }
 }
 
+/// Where a campaign's files are read: its folder, whether paths may leave it, and the real
+/// path every file must be opened in ([`crate::campaign::paths::root`]).
+pub struct Files<'a> {
+    pub dir: &'a Path,
+    pub allow_outside: bool,
+    pub root: Option<&'a Path>,
+}
+
+/// A test's result and, when it verifies a table, what it is compared with.
+type Tested = (AxisTest, Option<Result<compensation::VerifyCase, String>>);
+
 /// Options of a batch run.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Options {
@@ -184,12 +201,16 @@ pub fn run(
             m.axes.iter().map(move |a| (info.clone(), a))
         })
         .collect();
-    let evaluate_all = || -> Vec<AxisTest> {
+    let files = Files {
+        dir: &campaign.dir,
+        allow_outside: campaign.info.allow_outside_paths,
+        root: root.as_deref(),
+    };
+    let evaluate_all = || -> Vec<Tested> {
         work.par_iter()
             .flat_map_iter(|(machine, entry)| {
-                let mut tests =
-                    run_axis(campaign, machine, entry, &specs, root.as_deref(), options);
-                for t in &mut tests {
+                let mut tests = run_axis(campaign, machine, entry, &specs, &files, options);
+                for (t, _) in &mut tests {
                     progress(t);
                     if options.drop_data {
                         t.data = None;
@@ -204,13 +225,15 @@ pub fn run(
             })
             .collect()
     };
-    let tests = match rayon::ThreadPoolBuilder::new()
+    let mut tested = match rayon::ThreadPoolBuilder::new()
         .num_threads(options.jobs)
         .build()
     {
         Ok(pool) => pool.install(evaluate_all),
         Err(_) => evaluate_all(),
     };
+    compensation::verify_all(&mut tested);
+    let tests = tested.into_iter().map(|(t, _)| t).collect();
     CampaignResult {
         info: campaign.info.clone(),
         file_name: campaign
@@ -308,6 +331,7 @@ impl Slot {
             findings: Vec::new(),
             nde: None,
             compensation: None,
+            verification: None,
             uncertainty: None,
             diagnosis: None,
             out_of_test: Vec::new(),
@@ -324,9 +348,9 @@ fn run_axis(
     machine: &Arc<MachineInfo>,
     entry: &crate::campaign::AxisEntry,
     specs: &BTreeMap<String, Result<Arc<Spec>, String>>,
-    root: Option<&Path>,
+    files: &Files,
     options: Options,
-) -> Vec<AxisTest> {
+) -> Vec<Tested> {
     let slot = Slot {
         machine: machine.clone(),
         axis: entry.name.clone(),
@@ -337,20 +361,18 @@ fn run_axis(
     };
     let axis = match &entry.spec {
         Ok(axis) => Arc::new(axis.clone()),
-        Err(message) => return vec![slot.error(message.clone())],
+        Err(message) => return vec![(slot.error(message.clone()), None)],
     };
     let slot = Slot {
         spec: Some(axis.clone()),
         ..slot
     };
-    let files = match axis
-        .data
-        .resolve(&campaign.dir, campaign.info.allow_outside_paths)
-    {
-        Ok(files) => files,
+    let paths = match axis.data.resolve(files.dir, files.allow_outside) {
+        Ok(paths) => paths,
         Err(message) => {
             let at = format!("{}:{}", campaign.file.display(), axis.line);
-            return vec![slot.error(format!("{at}: {}: data: {message}", entry.name))];
+            let error = slot.error(format!("{at}: {}: data: {message}", entry.name));
+            return vec![(error, None)];
         }
     };
     let spec = match axis.spec.as_ref().map(|name| specs.get(name).cloned()) {
@@ -359,22 +381,22 @@ fn run_axis(
         Some(Some(Err(e))) => Err(e),
         Some(None) => Err("spec not loaded".to_string()),
     };
-    let tests = files.len();
-    let mut results: Vec<AxisTest> = files
+    let tests = paths.len();
+    let mut results: Vec<Tested> = paths
         .iter()
         .enumerate()
         .map(|(k, path)| {
             let slot = Slot {
-                file: Some(relative_name(&campaign.dir, path)),
+                file: Some(relative_name(files.dir, path)),
                 test: k + 1,
                 tests,
                 ..slot.clone()
             };
             match &spec {
-                Err(e) => slot.error(e.clone()),
+                Err(e) => (slot.error(e.clone()), None),
                 Ok(spec) => {
                     let rule = campaign.info.decision_rule;
-                    run_test(slot, &axis, spec.as_deref(), rule, path, root, options)
+                    run_test(slot, &axis, spec.as_deref(), rule, path, files, options)
                 }
             }
         })
@@ -385,7 +407,8 @@ fn run_axis(
 
 /// Each diagnosed test of an axis predicted by the models of every other one (fit on one
 /// test, predict the other): [`crate::diagnose::cross`].
-fn predict_across_tests(tests: &mut [AxisTest]) {
+fn predict_across_tests(tested: &mut [Tested]) {
+    let tests: Vec<&AxisTest> = tested.iter().map(|(t, _)| t).collect();
     let predictions: Vec<Vec<OutOfTest>> = tests
         .iter()
         .map(|target| {
@@ -402,7 +425,7 @@ fn predict_across_tests(tests: &mut [AxisTest]) {
                 .collect()
         })
         .collect();
-    for (test, p) in tests.iter_mut().zip(predictions) {
+    for ((test, _), p) in tested.iter_mut().zip(predictions) {
         test.out_of_test = p;
     }
 }
@@ -418,20 +441,21 @@ fn relative_name(base: &Path, path: &Path) -> String {
 }
 
 /// `campaign_rule`: the campaign's decision rule; the axis's own and then its spec's come
-/// first. `root`: the folder the data file must be opened in ([`crate::campaign::paths::root`]).
+/// first. `files`: where the data and table files are opened.
 fn run_test(
     slot: Slot,
     axis: &AxisSpec,
     spec: Option<&Spec>,
     campaign_rule: Option<DecisionRule>,
     path: &Path,
-    root: Option<&Path>,
+    files: &Files,
     options: Options,
-) -> AxisTest {
-    let (data, recognised) = match measurement::read_file_within(path, axis.data.sheet(), root) {
-        Ok(read) => (read.data, read.recognised),
-        Err(e) => return slot.error(e.to_string()),
-    };
+) -> Tested {
+    let (data, recognised) =
+        match measurement::read_file_within(path, axis.data.sheet(), files.root) {
+            Ok(read) => (read.data, read.recognised),
+            Err(e) => return (slot.error(e.to_string()), None),
+        };
     if data.kind != axis.raw.kind {
         let message = format!(
             "{}: the file holds a {} axis (target_{}) but the campaign declares axis `{}` {}",
@@ -441,10 +465,11 @@ fn run_test(
             slot.axis,
             axis.raw.kind
         );
-        return AxisTest {
+        let test = AxisTest {
             recognised: Some(recognised),
             ..slot.error(message)
         };
+        return (test, None);
     }
     // The file's own conditions (a Renishaw ENVIRONMENT) fill what the campaign leaves out.
     let completed = (recognised.info.as_ref())
@@ -503,23 +528,10 @@ fn run_test(
     };
     let diagnosis = options.diagnose.then(diagnosis_of);
     // The compensation's warnings come from the diagnosis, run for them when not asked for.
-    let compensation = (slot.machine.controller.as_deref())
+    let compensated = (slot.machine.controller.as_deref())
         .filter(|_| options.compensate)
         .and_then(crate::compensate::controllers::find)
         .map(|c| {
-            let table = axis.raw.compensation.clone().unwrap_or_default();
-            let settings = crate::compensate::Settings {
-                interval: table.interval,
-                reference: table.reference,
-                pitch: axis.raw.pitch,
-                place: crate::compensate::Place {
-                    axis: table.axis,
-                    measuring_system: table.measuring_system,
-                    number: None,
-                },
-                active: None,
-                conditions: axis.raw.conditions.compensation.clone(),
-            };
             let own;
             let diagnosis = match &diagnosis {
                 Some(d) => d,
@@ -528,13 +540,17 @@ fn run_test(
                     &own
                 }
             };
-            crate::compensate::compensation(c, &data, axis.standard, &settings, diagnosis)
+            compensation::of_test(c, axis, &data, files, diagnosis)
         });
+    let (compensation, verify_case) = match compensated {
+        Some((c, case)) => (Some(c), case),
+        None => (None, None),
+    };
     let mut slot = slot;
     if let Some(spec) = spec_arc {
         slot.spec = Some(spec);
     }
-    AxisTest {
+    let test = AxisTest {
         recognised: Some(recognised),
         conditions_from_file: from_file,
         diagnosis,
@@ -546,7 +562,8 @@ fn run_test(
         findings,
         nde,
         ..slot.outcome(verdict, error)
-    }
+    };
+    (test, verify_case)
 }
 
 /// What the uncertainty budget knows of a test from the campaign (clause 7.1 block): the

@@ -1,0 +1,271 @@
+//! A test's compensation as its campaign states it: the table active during the test and
+//! the one it verifies, read from the controller's files beside the data (the same path
+//! rules), and the verification of a re-measurement, each axis compared with the tables
+//! loaded on its machine's other axes.
+
+use super::{AxisTest, Files};
+use crate::campaign::AxisSpec;
+use crate::campaign::model::{ActiveRaw, ActiveStated, CompensationRaw};
+use crate::compensate::controllers::{Controller, Reading};
+use crate::compensate::{self, Active, Place, Settings, Table};
+use crate::measurement::AxisData;
+use crate::units::AxisKind;
+use crate::verify::{self, Other, Verification};
+use std::sync::Arc;
+
+/// What a re-measurement is compared with: the measurement before, and the corrections
+/// active then and loaded since, as the controller adds them.
+#[derive(Debug, Clone)]
+pub struct VerifyCase {
+    pub before: Arc<AxisData>,
+    pub old: Option<Table>,
+    pub new: Table,
+    /// Notes on what was assumed (an unstated backlash).
+    pub notes: Vec<String>,
+}
+
+/// The compensation settings of `axis` for `controller`, its active table read; or why
+/// they cannot be had (a table file that is missing or unreadable, naming file and line).
+pub fn settings(
+    axis: &AxisSpec,
+    controller: &dyn Controller,
+    files: &Files,
+) -> Result<Settings, String> {
+    let raw = axis.raw.compensation.clone().unwrap_or_default();
+    let place = Place {
+        axis: raw.axis.clone(),
+        measuring_system: raw.measuring_system,
+        number: None,
+    };
+    let kind = axis.raw.kind;
+    let active = match (&raw.active, &raw.verifies) {
+        (Some(a), _) => Some(active(a, kind, controller, files, &place, "active")?),
+        // A re-measurement: the table it verifies was active.
+        (None, Some(v)) => {
+            let stated = ActiveStated {
+                file: Some(v.table.clone()),
+                backlash_um: v.backlash_um,
+                backlash_arcsec: v.backlash_arcsec,
+            };
+            Some(active(
+                &ActiveRaw::Stated(stated),
+                kind,
+                controller,
+                files,
+                &place,
+                "verifies.table",
+            )?)
+        }
+        (None, None) => None,
+    };
+    Ok(Settings {
+        interval: raw.interval,
+        reference: raw.reference,
+        pitch: axis.raw.pitch,
+        place,
+        active,
+        conditions: axis.raw.conditions.compensation.clone(),
+    })
+}
+
+/// A stated active state, its table read as `controller` reads it.
+fn active(
+    raw: &ActiveRaw,
+    kind: AxisKind,
+    controller: &dyn Controller,
+    files: &Files,
+    place: &Place,
+    key: &str,
+) -> Result<Active, String> {
+    let ActiveRaw::Stated(s) = raw else {
+        return Ok(Active::default());
+    };
+    let table = match &s.file {
+        Some(file) => Some(read_table(file, kind, controller, files, place, key)?),
+        None => None,
+    };
+    Ok(Active {
+        table,
+        file: s.file.clone(),
+        backlash: s.backlash_um.or(s.backlash_arcsec),
+    })
+}
+
+/// The table file `file` (relative to the campaign) as `controller` reads it.
+fn read_table(
+    file: &str,
+    kind: AxisKind,
+    controller: &dyn Controller,
+    files: &Files,
+    place: &Place,
+    key: &str,
+) -> Result<Table, String> {
+    let path = crate::campaign::paths::contained(files.dir, file, files.allow_outside)
+        .map_err(|e| format!("compensation.{key}: {e}"))?;
+    let text = crate::files::read_to_string_within(&path, files.root)
+        .map_err(|e| format!("{}: cannot read the table: {e}", path.display()))?;
+    let reading = Reading {
+        kind,
+        axis: place.axis.as_deref(),
+    };
+    controller.read(&text, reading).map_err(|e| {
+        format!(
+            "{}: {e} (read as a {} table for compensation.{key})",
+            path.display(),
+            controller.name()
+        )
+    })
+}
+
+/// What the re-measurement of `axis` is compared with, when it `verifies` a table: the
+/// measurement before (corrected as this test is), the correction active then and the one
+/// loaded since.
+pub fn verify_case(
+    axis: &AxisSpec,
+    controller: &dyn Controller,
+    files: &Files,
+    settings: &Settings,
+) -> Option<Result<VerifyCase, String>> {
+    let raw: &CompensationRaw = axis.raw.compensation.as_ref()?;
+    let v = raw.verifies.as_ref()?;
+    Some(case(axis, v, controller, files, settings))
+}
+
+fn case(
+    axis: &AxisSpec,
+    v: &crate::campaign::model::VerifiesRaw,
+    controller: &dyn Controller,
+    files: &Files,
+    settings: &Settings,
+) -> Result<VerifyCase, String> {
+    let kind = axis.raw.kind;
+    let path = crate::campaign::paths::contained(files.dir, &v.before, files.allow_outside)
+        .map_err(|e| format!("compensation.verifies.before: {e}"))?;
+    let read =
+        crate::measurement::read_file_within(&path, None, files.root).map_err(|e| e.to_string())?;
+    let (before, _) = super::apply_nde(axis, read.data);
+    let before_active = match &v.active {
+        Some(a) => active(
+            a,
+            kind,
+            controller,
+            files,
+            &settings.place,
+            "verifies.active",
+        )?,
+        None => Active::default(),
+    };
+    let mut notes = Vec::new();
+    let mut loaded = Active {
+        table: Some(read_table(
+            &v.table,
+            kind,
+            controller,
+            files,
+            &settings.place,
+            "verifies.table",
+        )?),
+        file: Some(v.table.clone()),
+        backlash: v.backlash_um.or(v.backlash_arcsec),
+    };
+    if loaded.backlash.is_none() && before_active.backlash.is_some() {
+        loaded.backlash = before_active.backlash;
+        notes.push(
+            "the backlash loaded with the table was not stated: taken as the one active before"
+                .into(),
+        );
+    }
+    let rule = controller.backlash();
+    let new = loaded
+        .total(rule, kind)
+        .ok_or("the verified table is empty")?;
+    Ok(VerifyCase {
+        before: Arc::new(before),
+        old: before_active.total(rule, kind),
+        new,
+        notes,
+    })
+}
+
+/// Each test with a verification case compared, the tables loaded on the other axes of
+/// its machine tried as `wrong_axis`.
+pub fn verify_all(tests: &mut [(AxisTest, Option<Result<VerifyCase, String>>)]) {
+    let loaded: Vec<(String, String, Table)> = tests
+        .iter()
+        .filter_map(|(t, case)| {
+            let case = case.as_ref()?.as_ref().ok()?;
+            Some((t.machine.id.clone(), t.axis.clone(), case.new.clone()))
+        })
+        .collect();
+    for (t, case) in tests.iter_mut() {
+        let Some(case) = case.take() else {
+            continue;
+        };
+        let (Some(after), Some(spec)) = (t.data.as_ref(), t.spec.as_ref()) else {
+            continue;
+        };
+        let others: Vec<Other> = loaded
+            .iter()
+            .filter(|(m, a, _)| *m == t.machine.id && *a != t.axis)
+            .map(|(_, a, table)| Other {
+                axis: a.clone(),
+                new: table.clone(),
+            })
+            .collect();
+        t.verification = Some(case.and_then(|c| compare(&c, after, &others, spec.standard)));
+    }
+}
+
+/// The verification of one case.
+fn compare(
+    case: &VerifyCase,
+    after: &AxisData,
+    others: &[Other],
+    standard: crate::evaluate::StandardId,
+) -> Result<Verification, String> {
+    let input = verify::Input {
+        before: &case.before,
+        after,
+        old: case.old.as_ref(),
+        new: &case.new,
+        others,
+        standard,
+    };
+    let mut v = verify::verify(&input).map_err(|e| format!("verification: {e}"))?;
+    v.notes.extend(case.notes.iter().cloned());
+    Ok(v)
+}
+
+/// The compensation of a test by `controller` as its axis states it, and what its
+/// re-measurement is compared with when it verifies a table. A table file that cannot be
+/// read leaves the compensation refused with the reason (the test is still judged).
+pub fn of_test(
+    controller: &dyn Controller,
+    axis: &AxisSpec,
+    data: &AxisData,
+    files: &Files,
+    diagnosis: &crate::diagnose::Diagnosis,
+) -> (compensate::Compensation, Option<Result<VerifyCase, String>>) {
+    match settings(axis, controller, files) {
+        Ok(s) => (
+            compensate::compensation(controller, data, axis.standard, &s, diagnosis),
+            verify_case(axis, controller, files, &s),
+        ),
+        Err(e) => {
+            let verifies = axis
+                .raw
+                .compensation
+                .as_ref()
+                .is_some_and(|c| c.verifies.is_some());
+            let refused = compensate::Compensation {
+                controller: controller.name(),
+                extension: controller.extension(),
+                mode: compensate::Mode::Absolute,
+                active_file: None,
+                outcome: Err(format!("{}: {e}", controller.name())),
+                warnings: Vec::new(),
+            };
+            (refused, verifies.then(|| Err(e)))
+        }
+    }
+}

@@ -1,0 +1,122 @@
+//! What `run` prints of the compensation tables: how many were written and on what state,
+//! those refused, those written over a state that is unknown or contradicted, and each
+//! verification's verdict.
+
+use super::campaign::MAX_PROBLEM_LINES;
+use axcheck::batch::{AxisTest, CampaignResult};
+use axcheck::compensate::Mode;
+use axcheck::units::fmt_fixed;
+
+/// Warnings that concern the state a table builds on, shown on the console once for all
+/// the tests they concern (the others, from the diagnosis, are in the reports and
+/// `results.json`).
+const STATE_WARNINGS: &[(&str, &str)] = &[
+    (
+        "active_compensation_unknown",
+        "the compensation active during the test is not stated: each table is that measurement's correction alone, to be added to whatever the controller held (state compensation: {active: TABLE or none})",
+    ),
+    (
+        "active_compensation_contradiction",
+        "the test conditions and the stated active compensation disagree: check which was active before loading",
+    ),
+    (
+        "active_backlash_unknown",
+        "the backlash active during the test is not stated: the backlash written is the measured reversal alone",
+    ),
+];
+
+/// Tests named on one line at most.
+const MAX_NAMED: usize = 8;
+
+/// The lines, none when no machine names a controller.
+pub fn lines(result: &CampaignResult) -> Vec<String> {
+    let compensated: Vec<&AxisTest> = result
+        .tests
+        .iter()
+        .filter(|t| t.compensation.is_some())
+        .collect();
+    if compensated.is_empty() {
+        return Vec::new();
+    }
+    let written = compensated
+        .iter()
+        .filter(|t| t.compensation.as_ref().is_some_and(|c| c.outcome.is_ok()))
+        .count();
+    let incremental = compensated
+        .iter()
+        .filter(|t| {
+            t.compensation
+                .as_ref()
+                .is_some_and(|c| c.outcome.is_ok() && c.mode == Mode::Incremental)
+        })
+        .count();
+    let mut lines = vec![format!(
+        "Compensation tables: {written} written ({incremental} incremental on the active tables), {} not written",
+        compensated.len() - written
+    )];
+    let mut refused: Vec<String> = compensated.iter().filter_map(|t| refusal(t)).collect();
+    let more = refused.len().saturating_sub(MAX_PROBLEM_LINES);
+    refused.truncate(MAX_PROBLEM_LINES);
+    lines.extend(refused);
+    if more > 0 {
+        lines.push(format!(
+            "  … and {more} more not written (results.json, compensation)"
+        ));
+    }
+    for (key, words) in STATE_WARNINGS {
+        let named: Vec<String> = compensated
+            .iter()
+            .filter(|t| {
+                let c = t.compensation.as_ref();
+                c.is_some_and(|c| c.outcome.is_ok() && c.warnings.iter().any(|w| w.key == *key))
+            })
+            .map(|t| t.label())
+            .collect();
+        if !named.is_empty() {
+            lines.push(format!("  {} ({key}): {words}", listed(&named)));
+        }
+    }
+    lines.extend(result.tests.iter().filter_map(verification));
+    lines
+}
+
+/// `  VMC-07 Z  not written: …`.
+fn refusal(t: &AxisTest) -> Option<String> {
+    let e = t.compensation.as_ref()?.outcome.as_ref().err()?;
+    Some(format!("  {}  not written: {e}", t.label()))
+}
+
+/// `VMC-07 X, VMC-07 Y` or, beyond [`MAX_NAMED`], `… and 12 more`.
+fn listed(labels: &[String]) -> String {
+    let shown = labels[..labels.len().min(MAX_NAMED)].join(", ");
+    match labels.len().saturating_sub(MAX_NAMED) {
+        0 => shown,
+        more => format!("{shown} and {more} more"),
+    }
+}
+
+/// `Verification of MILL-3 X: effective: E 21.90 µm before, 1.20 predicted, 1.41 achieved`.
+fn verification(t: &AxisTest) -> Option<String> {
+    let v = t.verification.as_ref()?;
+    let unit = t.kind().map_or("", |k| k.deviation_symbol());
+    Some(match v {
+        Err(e) => format!("Verification of {}: not made: {e}", t.label()),
+        Ok(v) => {
+            let findings: Vec<&str> = v.findings.iter().map(|f| f.effect.name()).collect();
+            let found = if findings.is_empty() {
+                String::new()
+            } else {
+                format!("; found: {}", findings.join(", "))
+            };
+            format!(
+                "Verification of {}: {}: E {} {unit} before, {} predicted, {} achieved (U {}){found}",
+                t.label(),
+                v.verdict.name(),
+                fmt_fixed(v.e.before, 2),
+                fmt_fixed(v.e.predicted, 2),
+                fmt_fixed(v.e.achieved, 2),
+                fmt_fixed(v.e.uncertainty, 2)
+            )
+        }
+    })
+}

@@ -1,0 +1,182 @@
+//! `axcheck verify`: the re-measurement after a table was loaded, compared with the
+//! prediction from the measurement before and the table: the verdict, what went wrong and
+//! the comparison per target.
+
+use super::compensate::{active_state, controller, read_table};
+use super::text::{left, right};
+use anyhow::{Result, anyhow};
+use axcheck::compensate::Active;
+use axcheck::evaluate::StandardId;
+use axcheck::measurement;
+use axcheck::units::{AxisKind, fmt_fixed, fmt_position};
+use axcheck::verify::{self, Other, Verdict, Verification};
+use std::fmt::Write;
+use std::path::PathBuf;
+
+/// What `verify` compares.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The measurement before the table was loaded.
+    before: PathBuf,
+    /// The re-measurement with the table active.
+    after: PathBuf,
+    /// The controller whose format the tables are in.
+    #[arg(long, short)]
+    controller: String,
+    /// The table loaded since the measurement before, in the controller's format.
+    #[arg(long)]
+    table: PathBuf,
+    /// The backlash parameter loaded with the table, µm or arcsec (Siemens MD32450, …);
+    /// default: the one active before.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    backlash: Option<f64>,
+    /// The table active during the measurement before, or `none` (the default): the
+    /// prediction applies the difference between the two tables.
+    #[arg(long, value_name = "TABLE|none")]
+    active: Option<String>,
+    /// The backlash parameter active during the measurement before, µm or arcsec.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    active_backlash: Option<f64>,
+    /// The axis's name on the controller, to pick its table from a file of several.
+    #[arg(long)]
+    axis: Option<String>,
+    /// Another axis's table, `AXIS=FILE`, to tell a table loaded on the wrong axis
+    /// (repeatable).
+    #[arg(long, value_name = "AXIS=FILE")]
+    other: Vec<String>,
+    /// Standard for the parameters compared.
+    #[arg(long, short, default_value = "iso230-2", value_parser = crate::parse_standard)]
+    standard: StandardId,
+    /// Print JSON (a stable interface) instead of text.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Runs the verification; the text or JSON to print and whether the table was effective.
+pub fn run(args: &Args) -> Result<(String, bool)> {
+    let controller = controller(&args.controller)?;
+    let before = measurement::read_file(&args.before, None)?.data;
+    let after = measurement::read_file(&args.after, None)?.data;
+    let kind = after.kind;
+    let axis = args.axis.as_deref();
+    let old = active_state(
+        args.active.as_deref(),
+        args.active_backlash,
+        controller,
+        kind,
+        axis,
+    )?
+    .unwrap_or_default();
+    let loaded = Active {
+        table: Some(read_table(&args.table, controller, kind, axis)?),
+        file: Some(args.table.display().to_string()),
+        backlash: args.backlash.or(old.backlash),
+    };
+    let rule = controller.backlash();
+    let new = loaded
+        .total(rule, kind)
+        .ok_or_else(|| anyhow!("{}: an empty table", args.table.display()))?;
+    let others = others(&args.other, controller, kind)?;
+    let old = old.total(rule, kind);
+    let input = verify::Input {
+        before: &before,
+        after: &after,
+        old: old.as_ref(),
+        new: &new,
+        others: &others,
+        standard: args.standard,
+    };
+    let v = verify::verify(&input)?;
+    let effective = v.verdict == Verdict::Effective;
+    let text = if args.json {
+        let name = args.after.display().to_string();
+        super::json_with_file(&v.json(), &name)?
+    } else {
+        render(&v, kind, &args.after.display().to_string())
+    };
+    Ok((text, effective))
+}
+
+/// `--other AXIS=FILE`, each table read as the controller reads it.
+fn others(
+    given: &[String],
+    controller: &dyn axcheck::compensate::controllers::Controller,
+    kind: AxisKind,
+) -> Result<Vec<Other>> {
+    given
+        .iter()
+        .map(|g| {
+            let (axis, file) = g
+                .split_once('=')
+                .ok_or_else(|| anyhow!("--other: expected AXIS=FILE, got `{g}`"))?;
+            let table = read_table(std::path::Path::new(file), controller, kind, Some(axis))
+                .or_else(|_| read_table(std::path::Path::new(file), controller, kind, None))?;
+            Ok(Other {
+                axis: axis.to_string(),
+                new: table,
+            })
+        })
+        .collect()
+}
+
+/// The verdict, E, the findings and the comparison per target.
+fn render(v: &Verification, kind: AxisKind, name: &str) -> String {
+    let unit = kind.deviation_symbol();
+    let e = &v.e;
+    let mut out = format!("Verification of {name}: {}\n\n", verdict_words(v.verdict));
+    let _ = writeln!(
+        out,
+        "E (ISO 230-2 2.20)  before {}  predicted {}  achieved {} {unit}  (U = {} {unit}, 95 %)",
+        fmt_fixed(e.before, 2),
+        fmt_fixed(e.predicted, 2),
+        fmt_fixed(e.achieved, 2),
+        fmt_fixed(e.uncertainty, 2)
+    );
+    for f in &v.findings {
+        let _ = writeln!(out, "\n{}: {}", f.effect.name(), f.evidence);
+    }
+    for n in &v.notes {
+        let _ = writeln!(out, "\nNote: {n}");
+    }
+    let _ = writeln!(
+        out,
+        "\n{}  {}  {}  {}  {}  {}  {}",
+        right("target", 10),
+        left("", 1),
+        right("before", 9),
+        right("applied", 9),
+        right("predicted", 9),
+        right("achieved", 9),
+        right("diff", 8)
+    );
+    for r in &v.per_target {
+        let _ = writeln!(
+            out,
+            "{}  {}  {}  {}  {}  {}  {}",
+            right(&fmt_position(r.position), 10),
+            r.direction.arrow(),
+            right(&fmt_fixed(r.before, 2), 9),
+            right(&fmt_fixed(r.applied, 2), 9),
+            right(&fmt_fixed(r.predicted, 2), 9),
+            right(&fmt_fixed(r.achieved, 2), 9),
+            right(&fmt_fixed(r.difference, 2), 8)
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\n{unit}; diff: achieved − predicted less the constant offset {} {unit} between the two measurements (which no parameter sees); u of a diff {} {unit}.",
+        fmt_fixed(v.offset, 2),
+        fmt_fixed(v.per_target.first().map_or(0.0, |r| r.u), 2)
+    );
+    out
+}
+
+/// The verdict in words.
+pub fn verdict_words(v: Verdict) -> &'static str {
+    match v {
+        Verdict::Effective => "effective (E achieved within the prediction's uncertainty)",
+        Verdict::PartlyEffective => "partly effective (E reduced, but not to the prediction)",
+        Verdict::NotEffective => "not effective (E not changed beyond the uncertainty)",
+        Verdict::MadeWorse => "made worse (E grown beyond the uncertainty)",
+    }
+}
