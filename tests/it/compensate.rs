@@ -102,6 +102,30 @@ fn the_cli_writes_the_table_and_refuses_an_unknown_controller() {
     let table = std::fs::read_to_string(&out).unwrap();
     // ISO 230-2 Table 2, target 1: x̄↑ = −1.60 µm, x̄↓ = 2.26 µm: corrections 1.6, −2.26.
     assert!(table.contains("\n6.7110,1.6000,-2.2600\n"), "{table}");
+    // Nothing said of the compensation active during the test: the file, the console say so.
+    let unknown = "the compensation active during the test was not stated: these values are this measurement's correction alone";
+    assert!(table.starts_with(&format!("# Warning: {unknown}")), "{table}");
+    assert!(stdout.contains(&format!("\nWarning: {unknown}")), "{stdout}");
+    assert!(stdout.starts_with("csv table written to "), "{stdout}");
+    assert!(stdout.contains("(absolute: this measurement's correction alone)\n"), "{stdout}");
+    // Stated: measured with nothing active.
+    let (code, stdout, _) = axcheck(&[
+        "compensate",
+        "tests/data/iso230-2_table2.csv",
+        "--controller",
+        "csv",
+        "--active",
+        "none",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0);
+    assert!(!stdout.contains("Warning"), "{stdout}");
+    let table = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        table.starts_with("# Absolute: measured with no compensation active (as stated); load it as the whole table.\nposition_mm,"),
+        "{table}"
+    );
     let (code, _, stderr) = axcheck(&[
         "compensate",
         "tests/data/iso230-2_table2.csv",
@@ -110,7 +134,7 @@ fn the_cli_writes_the_table_and_refuses_an_unknown_controller() {
     ]);
     assert_eq!(code, 2);
     assert!(
-        stderr.contains("unknown controller `fanuc-0i`; known: csv, linuxcnc, siemens-840d, fanuc, heidenhain, twincat, ecmc\n"),
+        stderr.contains("unknown controller `fanuc-0i`; known: csv, linuxcnc, siemens-840d, fanuc, heidenhain, twincat, ecmc, ecmc-9.6\n"),
         "{stderr}"
     );
     std::fs::remove_dir_all(&dir).unwrap();
@@ -273,6 +297,10 @@ fn a_rotary_axis_over_a_turn_gets_a_modulo_table() {
         ("twincat", "kw.ssfk.modulo               1"),
         (
             "ecmc",
+            "Cfg.SetAxisEncLookupTableRange(${ECMC_AXIS_NO},360)",
+        ),
+        (
+            "ecmc-9.6",
             "Cfg.SetAxisEncLookupTableRange(${ECMC_AXIS_NO},360)",
         ),
     ];

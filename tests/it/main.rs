@@ -32,3 +32,4 @@ mod simulator;
 mod standards;
 mod trend;
 mod uncertainty;
+mod verify;

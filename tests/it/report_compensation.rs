@@ -37,7 +37,9 @@ fn campaign(dir: &Path) -> std::path::PathBuf {
     std::fs::write(dir.join("data/long.csv"), readings(300, 2)).unwrap();
     std::fs::write(dir.join("data/once.csv"), readings(11, 1)).unwrap();
     let axis = |name: &str, file: &str| {
-        format!("    axes:\n      - {{name: {name}, kind: linear, data: data/{file}}}\n")
+        format!(
+            "    axes:\n      - {{name: {name}, kind: linear, data: data/{file}, compensation: {{active: none}}}}\n"
+        )
     };
     let text = format!(
         "campaign: {{name: comp}}\nmachines:\n  - id: TABLE\n    controller: csv\n{}  - id: LONG\n    controller: linuxcnc\n{}  - id: ONCE\n    controller: csv\n{}  - id: PLAIN\n{}",
