@@ -10,7 +10,7 @@ use crate::compensate::controllers::{Controller, Reading};
 use crate::compensate::{self, Active, Place, Settings, Table};
 use crate::measurement::AxisData;
 use crate::units::AxisKind;
-use crate::verify::{self, Other, Verification};
+use crate::verify::{self, Other, Verdict, Verification};
 use std::sync::Arc;
 
 /// What a re-measurement is compared with: the measurement before, and the corrections
@@ -212,8 +212,31 @@ pub fn verify_all(tests: &mut [(AxisTest, Option<Result<VerifyCase, String>>)]) 
                 new: table.clone(),
             })
             .collect();
-        t.verification = Some(case.and_then(|c| compare(&c, after, &others, spec.standard)));
+        let verification = case.and_then(|c| compare(&c, after, &others, spec.standard));
+        if let (Ok(v), Some(c)) = (&verification, t.compensation.as_mut()) {
+            withhold(c, v);
+        }
+        t.verification = Some(verification);
     }
+}
+
+/// A table built on a stated active table that the verification shows did not act as
+/// stated is wrong too: it is not written, and the refusal says why.
+fn withhold(c: &mut compensate::Compensation, v: &Verification) {
+    let failed = matches!(v.verdict, Verdict::NotEffective | Verdict::MadeWorse);
+    if v.findings.is_empty() && !failed || c.outcome.is_err() {
+        return;
+    }
+    let found: Vec<&str> = v.findings.iter().map(|f| f.effect.name()).collect();
+    let what = if found.is_empty() {
+        v.verdict.name().to_string()
+    } else {
+        format!("{} ({})", v.verdict.name(), found.join(", "))
+    };
+    c.outcome = Err(format!(
+        "{}: the verification of the table active during this test found it {what}: it did not act as stated, so a table built on it would be wrong; correct how it was loaded and measure again",
+        c.controller
+    ));
 }
 
 /// The verification of one case.

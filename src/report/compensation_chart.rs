@@ -50,55 +50,82 @@ const MARK_READING: (Marker, RGBColor) = (Marker::Dot(2), RGBColor(0x8A, 0x8A, 0
 const MARK_TABLE_POINT: (Marker, RGBColor) = (Marker::Diamond(5), INK);
 
 /// A line through a direction's means with a marker at each.
-struct Means<'a> {
-    values: &'a [f64],
-    stroke: Stroke,
-    mark: (Marker, RGBColor),
-    text: &'static str,
+pub(super) struct Means<'a> {
+    pub values: &'a [f64],
+    pub stroke: Stroke,
+    pub mark: (Marker, RGBColor),
+    pub text: &'static str,
+}
+
+/// A chart of mean curves along the axis: what the compensation and the verification
+/// charts draw, each with its own curves.
+pub(super) struct MeansChart<'a> {
+    pub positions: &'a [f64],
+    pub position_label: &'a str,
+    pub deviation_label: &'a str,
+    /// Drawn in order (the first under the others).
+    pub means: Vec<Means<'a>>,
+    /// Readings per target, ↑ and ↓ (empty: none drawn), and their legend text.
+    pub readings: [&'a [Vec<f64>]; 2],
+    pub readings_text: &'static str,
+    pub table_points: &'a [f64],
 }
 
 impl CompensationChart {
-    /// The four mean curves, measured first (drawn under the compensated ones).
-    fn means(&self) -> [Means<'_>; 4] {
-        [
-            Means {
-                values: &self.measured_up,
-                stroke: MEASURED_UP,
-                mark: MARK_MEASURED_UP,
-                text: "x̄i↑ measured",
-            },
-            Means {
-                values: &self.measured_down,
-                stroke: MEASURED_DOWN,
-                mark: MARK_MEASURED_DOWN,
-                text: "x̄i↓ measured",
-            },
-            Means {
-                values: &self.compensated_up,
-                stroke: COMPENSATED_UP,
-                mark: MARK_COMPENSATED_UP,
-                text: "x̄i↑ with the table",
-            },
-            Means {
-                values: &self.compensated_down,
-                stroke: COMPENSATED_DOWN,
-                mark: MARK_COMPENSATED_DOWN,
-                text: "x̄i↓ with the table",
-            },
-        ]
+    /// The chart's curves: measured first (drawn under the compensated ones).
+    fn spec(&self) -> MeansChart<'_> {
+        let means = |values, stroke, mark, text| Means {
+            values,
+            stroke,
+            mark,
+            text,
+        };
+        MeansChart {
+            positions: &self.positions,
+            position_label: &self.position_label,
+            deviation_label: &self.deviation_label,
+            means: vec![
+                means(
+                    &self.measured_up,
+                    MEASURED_UP,
+                    MARK_MEASURED_UP,
+                    "x̄i↑ measured",
+                ),
+                means(
+                    &self.measured_down,
+                    MEASURED_DOWN,
+                    MARK_MEASURED_DOWN,
+                    "x̄i↓ measured",
+                ),
+                means(
+                    &self.compensated_up,
+                    COMPENSATED_UP,
+                    MARK_COMPENSATED_UP,
+                    "x̄i↑ with the table",
+                ),
+                means(
+                    &self.compensated_down,
+                    COMPENSATED_DOWN,
+                    MARK_COMPENSATED_DOWN,
+                    "x̄i↓ with the table",
+                ),
+            ],
+            readings: [&self.readings_up, &self.readings_down],
+            readings_text: "readings with the table",
+            table_points: &self.table_points,
+        }
     }
+}
 
+impl MeansChart<'_> {
     fn has_readings(&self) -> bool {
-        self.readings_up
-            .iter()
-            .chain(&self.readings_down)
-            .any(|r| r.len() > 1)
+        self.readings.iter().copied().flatten().any(|r| r.len() > 1)
     }
 
     fn legend(&self) -> Vec<LegendItem> {
         let mut items: Vec<LegendItem> = self
-            .means()
-            .into_iter()
+            .means
+            .iter()
             .filter(|m| !m.values.is_empty())
             .map(|m| LegendItem {
                 stroke: Some(m.stroke),
@@ -112,7 +139,7 @@ impl CompensationChart {
                 stroke: None,
                 marker: Some(MARK_READING),
                 swatch: None,
-                text: "readings with the table".to_string(),
+                text: self.readings_text.to_string(),
             });
         }
         if !self.table_points.is_empty() {
@@ -129,16 +156,24 @@ impl CompensationChart {
     /// Every deviation drawn.
     fn values(&self) -> impl Iterator<Item = f64> + '_ {
         let n = self.positions.len();
-        let means = self.means().map(|m| m.values.iter().take(n).copied());
-        let readings = self.readings_up.iter().chain(&self.readings_down).flatten();
-        means.into_iter().flatten().chain(readings.copied())
+        let means = self
+            .means
+            .iter()
+            .flat_map(move |m| m.values.iter().take(n).copied());
+        let readings = self.readings.iter().copied().flatten().flatten();
+        means.chain(readings.copied())
     }
 }
 
 /// The mean deviations before and after compensation, with the readings after it and
 /// the table's points marked along the bottom of the plot. Designed for 900 × 420 px.
 pub fn compensation(chart: &CompensationChart, style: &Style) -> Scene {
-    let xs = chart.positions.iter().chain(&chart.table_points).copied();
+    means_chart(&chart.spec(), style)
+}
+
+/// A chart of mean curves, readings and table points.
+pub(super) fn means_chart(chart: &MeansChart, style: &Style) -> Scene {
+    let xs = chart.positions.iter().chain(chart.table_points).copied();
     let Some(x) = padded_range(xs, 0.04) else {
         return message_chart(style, "No target positions to plot.");
     };
@@ -156,7 +191,7 @@ pub fn compensation(chart: &CompensationChart, style: &Style) -> Scene {
             y,
             top,
             right: 18,
-            x_desc: Some(chart.position_label.as_str()).filter(|d| !d.trim().is_empty()),
+            x_desc: Some(chart.position_label).filter(|d| !d.trim().is_empty()),
             own_x_ticks: false,
         };
         let cp = build_panel(root, &frame, KIT.y_tick_width(y, plot_h))?;
@@ -164,17 +199,18 @@ pub fn compensation(chart: &CompensationChart, style: &Style) -> Scene {
             KIT.draw_legend(root, &items, 10, w as i32 - 10, 0)?;
         }
         let (_, rows) = cp.plotting_area().get_pixel_range();
-        KIT.draw_y_desc(root, &chart.deviation_label, rows.start, rows.end)?;
-        draw_readings(root, &cp, &chart.positions, &chart.readings_up)?;
-        draw_readings(root, &cp, &chart.positions, &chart.readings_down)?;
-        for means in chart.means() {
-            let points = curve(&cp, &chart.positions, means.values);
+        KIT.draw_y_desc(root, chart.deviation_label, rows.start, rows.end)?;
+        for readings in chart.readings {
+            draw_readings(root, &cp, chart.positions, readings)?;
+        }
+        for means in &chart.means {
+            let points = curve(&cp, chart.positions, means.values);
             draw_line(root, &points, means.stroke)?;
             for p in &points {
                 draw_marker(root, round_px(*p), means.mark.0, means.mark.1)?;
             }
         }
-        draw_table_points(root, &cp, &chart.table_points, rows.end - 8)
+        draw_table_points(root, &cp, chart.table_points, rows.end - 8)
     })
 }
 

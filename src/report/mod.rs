@@ -23,6 +23,7 @@ mod shaping;
 mod svg_probe;
 mod text_lines;
 pub mod trend_chart;
+pub mod verification_chart;
 pub mod world;
 
 use crate::batch::{AxisTest, CampaignResult};
@@ -266,6 +267,11 @@ impl Reports {
                 let chart = data::compensation_chart(e, done);
                 let scene = compensation_chart::compensation(&chart, &style(CHART_HEIGHT_PX));
                 files.chart("compensation", scene);
+            }
+            if let Some(Ok(v)) = &test.verification {
+                let chart = data::verification_chart(v, e.kind);
+                let scene = verification_chart::verification(&chart, &style(CHART_HEIGHT_PX));
+                files.chart("verification", scene);
             }
         }
         let ident = format!(

@@ -104,10 +104,19 @@ fn the_cli_writes_the_table_and_refuses_an_unknown_controller() {
     assert!(table.contains("\n6.7110,1.6000,-2.2600\n"), "{table}");
     // Nothing said of the compensation active during the test: the file, the console say so.
     let unknown = "the compensation active during the test was not stated: these values are this measurement's correction alone";
-    assert!(table.starts_with(&format!("# Warning: {unknown}")), "{table}");
-    assert!(stdout.contains(&format!("\nWarning: {unknown}")), "{stdout}");
+    assert!(
+        table.starts_with(&format!("# Warning: {unknown}")),
+        "{table}"
+    );
+    assert!(
+        stdout.contains(&format!("\nWarning: {unknown}")),
+        "{stdout}"
+    );
     assert!(stdout.starts_with("csv table written to "), "{stdout}");
-    assert!(stdout.contains("(absolute: this measurement's correction alone)\n"), "{stdout}");
+    assert!(
+        stdout.contains("(absolute: this measurement's correction alone)\n"),
+        "{stdout}"
+    );
     // Stated: measured with nothing active.
     let (code, stdout, _) = axcheck(&[
         "compensate",

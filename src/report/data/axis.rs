@@ -87,7 +87,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .compensation
             .as_ref()
             .zip(e)
-            .map(|(c, e)| compensation_section(c, e)),
+            .map(|(c, e)| compensation_section(c, e, t.verification.as_ref())),
         history: None,
         generator: generator(),
     }

@@ -1,13 +1,17 @@
-//! The compensation part of an axis report: the table the machine's controller holds, the
-//! parameters measured beside those predicted with the table active, the data of the
-//! chart of the mean deviations before and after, and when not to compensate.
+//! The compensation part of an axis report: the table the machine's controller holds and
+//! what it builds on (the compensation active during the test), the parameters measured
+//! beside those predicted with the table active, the data of the chart of the mean
+//! deviations before and after, when not to compensate, and the verification of a
+//! re-measurement (before, predicted and achieved).
 
 use super::conditions::Row;
 use super::{num, pos};
-use crate::compensate::{Compensated, Compensation, Interpolation, Table};
+use crate::compensate::{Compensated, Compensation, Interpolation, Mode, Table};
 use crate::evaluate::Evaluation;
 use crate::report::compensation_chart::CompensationChart;
+use crate::report::verification_chart::VerificationChart;
 use crate::units::{AxisKind, Direction};
+use crate::verify::{Verdict, Verification};
 use serde::Serialize;
 
 /// The compensation section, as the template reads it.
@@ -24,7 +28,32 @@ pub struct CompensationSection<'a> {
     floor: String,
     /// How the controller applies the table between its points, for the prediction's note.
     applied: &'static str,
+    /// What the state the table builds on leaves unsure (not stated, contradicted).
+    state_warnings: Vec<&'a str>,
     warnings: Vec<&'a str>,
+    /// The verification, when this test re-measures a table it verifies.
+    verification: Option<VerificationSection<'a>>,
+}
+
+/// A verification as the template reads it.
+#[derive(Serialize)]
+struct VerificationSection<'a> {
+    /// Why it could not be made: shown instead of the rest.
+    error: Option<&'a str>,
+    /// `effective`, … and its words.
+    verdict: &'static str,
+    verdict_words: &'static str,
+    /// E before, predicted, achieved, the uncertainty, the offset.
+    facts: Vec<Row>,
+    findings: Vec<FindingRow<'a>>,
+    notes: &'a [String],
+}
+
+/// What went wrong, with its evidence.
+#[derive(Serialize)]
+struct FindingRow<'a> {
+    effect: &'static str,
+    evidence: &'a str,
 }
 
 /// A parameter as measured and as predicted with the table active.
@@ -38,13 +67,21 @@ struct PredictedRow {
     predicted: String,
 }
 
-/// The section of a test evaluated as `measured` and compensated by `c`.
+/// The section of a test evaluated as `measured` and compensated by `c`, with the
+/// verification of the table it re-measures.
 pub(super) fn compensation_section<'a>(
     c: &'a Compensation,
     measured: &Evaluation,
+    verification: Option<&'a Result<Verification, String>>,
 ) -> CompensationSection<'a> {
     let unit = measured.kind.deviation_symbol();
-    let warnings = c.warnings.iter().map(|w| w.message.as_str()).collect();
+    let (state, other): (Vec<_>, Vec<_>) = c
+        .warnings
+        .iter()
+        .partition(|w| w.key.starts_with("active_"));
+    let message = |w: &&'a crate::compensate::Warning| w.message.as_str();
+    let state_warnings = state.iter().map(message).collect();
+    let warnings = other.iter().map(message).collect();
     let (refusal, facts, parameters, floor) = match &c.outcome {
         Err(refusal) => {
             // The reason without the `controller: ` the outcome starts with.
@@ -77,7 +114,62 @@ pub(super) fn compensation_section<'a>(
         parameters,
         floor,
         applied,
+        state_warnings,
         warnings,
+        verification: verification.map(|v| verification_section(v, measured.kind)),
+    }
+}
+
+/// The verification's verdict, E at each stage and what went wrong.
+fn verification_section(
+    v: &Result<Verification, String>,
+    kind: AxisKind,
+) -> VerificationSection<'_> {
+    let v = match v {
+        Ok(v) => v,
+        Err(e) => {
+            return VerificationSection {
+                error: Some(e),
+                verdict: "",
+                verdict_words: "",
+                facts: Vec::new(),
+                findings: Vec::new(),
+                notes: &[],
+            };
+        }
+    };
+    let unit = kind.deviation_symbol();
+    let value = |x: f64| Some(format!("{} {unit}", num(x)));
+    VerificationSection {
+        error: None,
+        verdict: v.verdict.name(),
+        verdict_words: verdict_words(v.verdict),
+        facts: Row::present([
+            ("E before the table", value(v.e.before)),
+            ("E predicted", value(v.e.predicted)),
+            ("E achieved", value(v.e.achieved)),
+            ("Uncertainty of a difference (95 %)", value(v.e.uncertainty)),
+            ("Offset between the measurements", value(v.offset)),
+        ]),
+        findings: v
+            .findings
+            .iter()
+            .map(|f| FindingRow {
+                effect: f.effect.name(),
+                evidence: &f.evidence,
+            })
+            .collect(),
+        notes: &v.notes,
+    }
+}
+
+/// The verdict in words, for the report.
+fn verdict_words(v: Verdict) -> &'static str {
+    match v {
+        Verdict::Effective => "effective: E achieved within the prediction's uncertainty",
+        Verdict::PartlyEffective => "partly effective: E reduced, but not to the prediction",
+        Verdict::NotEffective => "not effective: E not changed beyond the uncertainty",
+        Verdict::MadeWorse => "made worse: E grown beyond the uncertainty",
     }
 }
 
@@ -103,6 +195,7 @@ fn table_facts(c: &Compensation, table: &Table, e: &Evaluation) -> Vec<Row> {
             "Controller",
             Some(format!("{} (file .{})", c.controller, c.extension)),
         ),
+        ("Built on", Some(built_on(c))),
         ("Table points", Some(points(table))),
         ("Interval", interval(table, e)),
         ("Reference point", Some(pos(kind, table.reference))),
@@ -114,6 +207,24 @@ fn table_facts(c: &Compensation, table: &Table, e: &Evaluation) -> Vec<Row> {
                 .map(|r| format!("one revolution, {}", pos(AxisKind::Rotary, r))),
         ),
     ])
+}
+
+/// What the table builds on: the active table, nothing, or an unknown state.
+fn built_on(c: &Compensation) -> String {
+    let unknown = c
+        .warnings
+        .iter()
+        .any(|w| w.key == "active_compensation_unknown");
+    match (c.mode, c.active_file.as_deref()) {
+        (Mode::Incremental, Some(file)) => {
+            format!("the active table {file} (incremental: it plus this test's correction)")
+        }
+        (Mode::Incremental, None) => "the active backlash (incremental)".into(),
+        (Mode::Absolute, _) if unknown => {
+            "not stated (absolute: this test's correction alone)".into()
+        }
+        (Mode::Absolute, _) => "nothing active, as stated (absolute)".into(),
+    }
 }
 
 /// The number of points, and whether the table holds one correction per direction.
@@ -223,5 +334,32 @@ pub fn compensation_chart(measured: &Evaluation, done: &Compensated) -> Compensa
         readings_up: readings(Direction::Up),
         readings_down: readings(Direction::Down),
         table_points: done.table.positions.clone(),
+    }
+}
+
+/// The verification chart: the means before, predicted and achieved at the
+/// re-measurement's targets.
+pub fn verification_chart(v: &Verification, kind: AxisKind) -> VerificationChart {
+    let (pos_unit, dev_unit) = match kind {
+        AxisKind::Linear => ("mm", "µm"),
+        AxisKind::Rotary => ("°", "arcsec"),
+    };
+    let of = |d: Direction, f: fn(&crate::verify::Row) -> f64| -> Vec<f64> {
+        v.per_target
+            .iter()
+            .filter(|r| r.direction == d)
+            .map(f)
+            .collect()
+    };
+    VerificationChart {
+        positions: of(Direction::Up, |r| r.position),
+        position_label: format!("Target position Pi / {pos_unit}"),
+        deviation_label: format!("Mean positional deviation / {dev_unit}"),
+        before_up: of(Direction::Up, |r| r.before),
+        before_down: of(Direction::Down, |r| r.before),
+        predicted_up: of(Direction::Up, |r| r.predicted),
+        predicted_down: of(Direction::Down, |r| r.predicted),
+        achieved_up: of(Direction::Up, |r| r.achieved),
+        achieved_down: of(Direction::Down, |r| r.achieved),
     }
 }

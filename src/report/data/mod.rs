@@ -15,7 +15,7 @@ pub mod trends;
 mod uncertainty;
 
 pub use axis::{AxisReport, axis_report};
-pub use compensation::compensation_chart;
+pub use compensation::{compensation_chart, verification_chart};
 pub use summary::{Summary, summary};
 pub use uncertainty::decision_bars;
 
