@@ -220,6 +220,55 @@ pub fn spec(data: &[u8]) {
     }
 }
 
+/// Every controller's table reader, for both kinds of axis. A table read is checked (points
+/// in order, finite values), held and written by its controller, and what is written must
+/// read again; then it is the active table of a compensation of a fixed test of its kind
+/// (the incremental table and its prediction).
+pub fn controllers(data: &[u8]) {
+    use axcheck::compensate::controllers::{CONTROLLERS, Reading};
+    use axcheck::compensate::{self, Active, Settings};
+    let Ok(text) = std::str::from_utf8(data) else {
+        return; // every table file is read as UTF-8 text
+    };
+    let (linear, rotary) = fixtures();
+    for controller in CONTROLLERS {
+        for (kind, axis) in [(AxisKind::Linear, linear), (AxisKind::Rotary, rotary)] {
+            let reading = Reading { kind, axis: None };
+            let Ok(table) = controller.read(text, reading) else {
+                continue;
+            };
+            let n = table.positions.len();
+            assert!(n >= 1 && table.up.len() == n && table.down.len() == n);
+            assert!(
+                table.positions.windows(2).all(|w| w[0] < w[1]),
+                "points ascend"
+            );
+            let values = table.up.iter().chain(&table.down).chain(&table.positions);
+            assert!(values.clone().all(|v| v.is_finite()), "finite values");
+            if let Ok(held) = controller.hold(table.clone())
+                && let Ok(file) = controller.write(&held, &["fuzz".to_string()])
+            {
+                let again = controller.read(&file, reading);
+                assert!(again.is_ok(), "{}: {again:?}\n{file}", controller.name());
+            }
+            let active = Active {
+                table: Some(table),
+                file: None,
+                backlash: None,
+            };
+            let settings = Settings {
+                active: Some(active.clone()),
+                ..Default::default()
+            };
+            if let Ok(built) = compensate::held_table(*controller, axis, &settings) {
+                let total = active.total(controller.backlash(), kind);
+                let after = compensate::apply_change(&built, total.as_ref(), axis);
+                check_data(&after);
+            }
+        }
+    }
+}
+
 /// A linear (ISO 230-2 Table 2) and a rotary test, read once.
 fn fixtures() -> &'static (AxisData, AxisData) {
     static DATA: OnceLock<(AxisData, AxisData)> = OnceLock::new();

@@ -56,6 +56,11 @@ fn spec_corpus() {
 }
 
 #[test]
+fn controllers_corpus() {
+    replay("controllers", targets::controllers);
+}
+
+#[test]
 fn model_corpus() {
     replay("model", targets::model);
 }

@@ -192,8 +192,11 @@ impl Sheet {
         let number = |w: &str| reading::number(w, line, "Axis");
         let count = reading::whole(count, line, "Axis")?;
         let (interval, first, last) = (number(interval)?, number(first)?, number(last)?);
-        if count < 2 || interval <= 0.0 {
-            return Err(bad("expected two points or more, an interval > 0"));
+        if !(2..=super::MAX_POINTS).contains(&count) || interval <= 0.0 {
+            return Err(bad(&format!(
+                "expected 2 to {} points and an interval > 0",
+                super::MAX_POINTS
+            )));
         }
         let positions: Vec<f64> = (0..count).map(|k| first + k as f64 * interval).collect();
         if (positions[count - 1] - last).abs() > 1e-3 {

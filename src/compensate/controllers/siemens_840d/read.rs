@@ -40,11 +40,12 @@ pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
     let (min, _) = line_of(vars.min, "MIN")?;
     let (max, max_line) = line_of(vars.max, "MAX")?;
     let last = point_count(step, step_line, min, max, max_line)?;
+    // Not reserved ahead: MAX may claim far more points than the file holds.
     let mut points = Points {
         kind: reading.kind,
-        positions: Vec::with_capacity(last + 1),
-        up: Vec::with_capacity(last + 1),
-        down: Vec::with_capacity(last + 1),
+        positions: Vec::new(),
+        up: Vec::new(),
+        down: Vec::new(),
     };
     let per_unit = reading.kind.deviation_units_per_position_unit();
     for n in 0..=last {

@@ -1,0 +1,8 @@
+BEGIN X.COM INCH
+#STRUCTBEGIN
+   NAME = X
+#STRUCTEND
+NR    AXISPOS   X         Z         BACKLASH
+0     +0.0000   +0.0001   +0.0009   +0.0002
+1     +1.0000   -0.0001   +0.0000   +0.0000
+[END]
