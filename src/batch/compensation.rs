@@ -288,7 +288,7 @@ pub fn of_test(
                 outcome: Err(format!("{}: {e}", controller.name())),
                 warnings: Vec::new(),
             };
-            (refused, verifies.then(|| Err(e)))
+            (refused, verifies.then_some(Err(e)))
         }
     }
 }

@@ -197,3 +197,61 @@ fn contradiction(text: &str, stated_on: bool) -> Warning {
         ),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The conditions' words: a named compensation is on; none, off, disabled … are off.
+    #[test]
+    fn what_the_conditions_say() {
+        for on in [
+            "reversal and lead-screw compensation active",
+            "reversal and lead screw",
+            "LEC on",
+            "joint compensation table X.txt (COMP_FILE_TYPE = 1)",
+        ] {
+            assert_eq!(says_active(on), Some(true), "{on}");
+        }
+        for off in [
+            "none",
+            "off",
+            "Compensation OFF",
+            "LEC disabled",
+            "not active",
+            "no compensation",
+            "pitch error data cleared",
+        ] {
+            assert_eq!(says_active(off), Some(false), "{off}");
+        }
+        assert_eq!(says_active("  "), None);
+    }
+
+    /// ± half the backlash where it acted: both directions of a table, or a table of one
+    /// point with none; nothing where the controller keeps it or has none.
+    #[test]
+    fn the_total_correction_active() {
+        let active = Active {
+            table: None,
+            file: None,
+            backlash: Some(4.0),
+        };
+        let total = active.total(Backlash::Stated, AxisKind::Linear).unwrap();
+        assert_eq!(
+            (total.up.clone(), total.down.clone()),
+            (vec![2.0], vec![-2.0])
+        );
+        assert_eq!(total.reversal_correction(), -4.0);
+        assert!(active.total(Backlash::Kept, AxisKind::Linear).is_none());
+        assert_eq!(active.mode(), Mode::Incremental);
+        assert_eq!(Active::default().mode(), Mode::Absolute);
+        let with_table = Active {
+            table: Some(total),
+            ..active
+        };
+        let unused = with_table
+            .total(Backlash::UnusedWithTable, AxisKind::Linear)
+            .unwrap();
+        assert_eq!((unused.up, unused.down), (vec![2.0], vec![-2.0]));
+    }
+}

@@ -572,3 +572,44 @@ fn csv_reads_one_or_two_correction_columns() {
         "line 3: 1 field, but the header names 2"
     );
 }
+
+/// A FANUC sheet whose numbers were moved by an offset of 100 (another axis uses 1…): read
+/// at its numbers, the table kept at them when written again; a parameter that disagrees
+/// with the axis line is refused with its line.
+#[test]
+fn fanuc_reads_its_sheet_at_its_numbers() {
+    let fanuc = compensate::controllers::find("fanuc").unwrap();
+    let data = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(11);
+    let settings = Settings {
+        interval: Some(100.0),
+        reference: Some(0.0),
+        place: compensate::Place {
+            number: Some(101),
+            ..Default::default()
+        },
+        active: Some(Active::default()),
+        ..Default::default()
+    };
+    let held = compensate::held_table(fanuc, &data, &settings).unwrap();
+    let sheet = fanuc.write(&held, &[]).unwrap();
+    assert!(sheet.contains("\n  3621   = 101 "), "{sheet}");
+    assert!(sheet.contains("\nN10101P"), "{sheet}");
+    let back = read("fanuc", &sheet, None).unwrap();
+    assert_eq!(back.place.number, Some(101));
+    assert!(close(&back.up, &held.up) && close(&back.down, &held.down));
+    assert_eq!(fanuc.write(&back, &[]).unwrap(), sheet);
+    let wrong = sheet.replace("\n  3620   = 100 ", "\n  3620   = 102 ");
+    let line = 1 + sheet[..sheet.find("\n  3620 ").unwrap() + 1]
+        .matches('\n')
+        .count();
+    assert_eq!(
+        read("fanuc", &wrong, None).unwrap_err(),
+        format!(
+            "line {line}, field `3620`: 102 is not the number of the reference position 0 given on the axis line"
+        )
+    );
+    assert_eq!(
+        read("fanuc", "%\nN10001P1\n%\n", None).unwrap_err(),
+        "no `Axis:` line: axcheck reads the set-up sheet it writes (the axis line gives the points' positions, which the control does not hold)"
+    );
+}

@@ -4,6 +4,7 @@
 mod common;
 mod compensate;
 
+mod active;
 mod architecture;
 mod bad_input;
 mod big_input;

@@ -218,3 +218,45 @@ fn the_cli_verifies_a_re_measurement() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A machine whose X and Y tables were swapped when loaded: each axis's change follows the
+/// other axis's table, and the verification names it.
+#[test]
+fn a_table_loaded_on_the_other_axis_is_named() {
+    let sim = Simulation::from_yaml(AXIS, "axis.yaml").unwrap();
+    let other_axis = AXIS
+        .replace("scale_um_per_m: 20", "scale_um_per_m: -25")
+        .replace("pitch_mm: 300", "pitch_mm: 450");
+    let sim_y = Simulation::from_yaml(&other_axis, "y.yaml").unwrap();
+    let controller = compensate::controllers::find("twincat").unwrap();
+    let settings = Settings {
+        interval: Some(INTERVAL),
+        active: Some(Active::default()),
+        ..Default::default()
+    };
+    let before = sim.run(3);
+    let x_table = compensate::held_table(controller, &before, &settings).unwrap();
+    let y_table = compensate::held_table(controller, &sim_y.run(3), &settings).unwrap();
+    let after = compensate::apply(&y_table, &sim.run(1003));
+    let others = [verify::Other {
+        axis: "Y".into(),
+        new: y_table,
+    }];
+    let input = verify::Input {
+        before: &before,
+        after: &after,
+        old: None,
+        new: &x_table,
+        others: &others,
+        standard: StandardId::Iso230_2,
+    };
+    let v = verify::verify(&input).unwrap();
+    assert_eq!(v.findings.len(), 1, "{:?}", v.findings);
+    assert_eq!(v.findings[0].effect, Key::WrongAxis);
+    assert!(
+        v.findings[0]
+            .evidence
+            .starts_with("the table that acted is axis Y's, not this axis's")
+    );
+    assert_ne!(v.verdict, Verdict::Effective);
+}

@@ -38,6 +38,7 @@ impl Controller for Csv {
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
         let (pos, dev) = (table.kind.position_unit(), table.kind.deviation_unit());
+        super::printed_increasing(&table.positions, 4)?;
         let mut out = super::commented("# ", notes);
         out.push_str(&format!(
             "position_{pos},correction_up_{dev},correction_down_{dev}\n"

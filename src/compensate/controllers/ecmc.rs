@@ -144,9 +144,7 @@ impl Controller for Ecmc {
         if p.len() < MIN_ROWS {
             return Err(too_few(table));
         }
-        if p.windows(2).any(|w| w[1] <= w[0]) {
-            return Err(Refused::Grid("the positions must increase strictly".into()));
-        }
+        super::printed_increasing(p, 6)?;
         let per_unit = table.kind.deviation_units_per_position_unit();
         let mut out = self.header(table);
         out.push_str(&super::commented("# ", notes));

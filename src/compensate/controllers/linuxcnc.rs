@@ -55,9 +55,7 @@ impl Controller for LinuxCnc {
     }
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
-        if table.positions.windows(2).any(|w| w[1] <= w[0]) {
-            return Err(Refused::Grid("the positions must increase strictly".into()));
-        }
+        super::printed_increasing(&table.positions, 6)?;
         // Corrections in µm or arcsec, the file in mm or degrees.
         let per_unit = match table.kind {
             AxisKind::Linear => 1000.0,

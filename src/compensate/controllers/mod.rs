@@ -194,6 +194,25 @@ pub trait Controller: Sync {
     fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable>;
 }
 
+/// Positions that stay strictly increasing when printed with `decimals` places (as the
+/// file gives them to the controller), else why the file cannot hold them.
+pub fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refused> {
+    let scale = 10f64.powi(decimals as i32);
+    let printed = |p: f64| (p * scale).round();
+    match positions
+        .windows(2)
+        .find(|w| printed(w[1]) <= printed(w[0]))
+    {
+        None => Ok(()),
+        Some(w) => Err(Refused::Grid(format!(
+            "the positions must increase by at least {} (the file's precision): {} and {} do not",
+            crate::units::fmt_fixed(1.0 / scale, decimals),
+            crate::units::fmt_fixed(w[0], decimals),
+            crate::units::fmt_fixed(w[1], decimals)
+        ))),
+    }
+}
+
 /// `notes` as comment lines starting with `mark`.
 pub fn commented(mark: &str, notes: &[String]) -> String {
     notes.iter().map(|n| format!("{mark}{n}\n")).collect()

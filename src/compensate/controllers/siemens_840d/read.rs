@@ -98,10 +98,9 @@ fn point_count(
 /// Whether the table wraps (`_IS_MODULO` = 1), over 0…360°.
 fn modulo(flag: Option<(f64, usize)>, min: f64, max: f64) -> Result<bool, Unreadable> {
     match flag {
-        None => Ok(false),
-        Some((v, _)) if v == 0.0 => Ok(false),
-        Some((v, _)) if v == 1.0 && min == 0.0 && (max - REVOLUTION_DEG).abs() < 1e-9 => Ok(true),
-        Some((v, line)) if v == 1.0 => Err(Unreadable::field(
+        None | Some((0.0, _)) => Ok(false),
+        Some((1.0, _)) if min == 0.0 && (max - REVOLUTION_DEG).abs() < 1e-9 => Ok(true),
+        Some((1.0, line)) => Err(Unreadable::field(
             line,
             "$AA_ENC_COMP_IS_MODULO",
             format!("a modulo table over {min}…{max}: axcheck reads modulo tables of 0…360° only"),
