@@ -155,35 +155,7 @@ enum Command {
     Verify(cli::verify::Args),
     /// Simulate a positioning test from an error model and a test plan (YAML), or with
     /// --fleet a whole synthetic campaign for benchmarks.
-    Simulate {
-        /// Simulation file: kind, seed, model terms and plan.
-        #[arg(required_unless_present = "fleet")]
-        model: Option<PathBuf>,
-        /// Output CSV (default: standard output); with --fleet the output folder.
-        #[arg(long, short, visible_alias = "out")]
-        output: Option<PathBuf>,
-        /// Write a campaign of this many axes with their data files into --out.
-        #[arg(long, conflicts_with = "model", requires = "output")]
-        fleet: Option<usize>,
-        /// Seed overriding the file's.
-        #[arg(long)]
-        seed: Option<u64>,
-        /// The machine measured with this table active (in --controller's format): its
-        /// correction added to every reading, as the controller adds it.
-        #[arg(long, value_name = "TABLE", requires = "controller")]
-        active: Option<PathBuf>,
-        /// The backlash parameter active with it, µm or arcsec.
-        #[arg(
-            long,
-            value_name = "N",
-            requires = "controller",
-            allow_negative_numbers = true
-        )]
-        active_backlash: Option<f64>,
-        /// The controller whose format --active is in.
-        #[arg(long, short)]
-        controller: Option<String>,
-    },
+    Simulate(cli::simulate::Args),
 }
 
 pub(crate) fn parse_standard(text: &str) -> Result<StandardId, String> {
@@ -321,35 +293,9 @@ fn run(cli: Cli) -> Result<ExitCode> {
             print(&text)?;
             return Ok(ExitCode::from(if effective { 0 } else { 1 }));
         }
-        Command::Simulate {
-            model,
-            output,
-            fleet,
-            seed,
-            active,
-            active_backlash,
-            controller,
-        } => {
-            if let (Some(axes), Some(dir)) = (fleet, &output) {
-                cli::simulate::fleet(axes, seed.unwrap_or(1), dir)?;
-                return Ok(ExitCode::SUCCESS);
-            }
-            let Some(model) = model else {
-                bail!("give a simulation file, or --fleet N --out DIR");
-            };
-            let active = cli::simulate::Active {
-                table: active.as_deref(),
-                backlash: active_backlash,
-                controller: controller.as_deref(),
-            };
-            let csv = cli::simulate::run(&model, seed, &active)?;
-            match output {
-                Some(path) => {
-                    axcheck::atomic::write(&path, csv.as_bytes())
-                        .with_context(|| format!("cannot write {}", path.display()))?;
-                    eprintln!("axcheck: wrote {}", path.display());
-                }
-                None => print(&csv)?,
+        Command::Simulate(args) => {
+            if let Some(csv) = cli::simulate::command(&args)? {
+                print(&csv)?;
             }
         }
     }

@@ -1,9 +1,65 @@
 //! `axcheck simulate`: an error model and a test plan produce a measurement file.
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use axcheck::measurement::csv;
 use axcheck::simulate::Simulation;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+/// What `simulate` is asked for.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Simulation file: kind, seed, model terms and plan.
+    #[arg(required_unless_present = "fleet")]
+    model: Option<PathBuf>,
+    /// Output CSV (default: standard output); with --fleet the output folder.
+    #[arg(long, short, visible_alias = "out")]
+    output: Option<PathBuf>,
+    /// Write a campaign of this many axes with their data files into --out.
+    #[arg(long, conflicts_with = "model", requires = "output")]
+    fleet: Option<usize>,
+    /// Seed overriding the file's.
+    #[arg(long)]
+    seed: Option<u64>,
+    /// The machine measured with this table active (in --controller's format): its
+    /// correction added to every reading, as the controller adds it.
+    #[arg(long, value_name = "TABLE", requires = "controller")]
+    active: Option<PathBuf>,
+    /// The backlash parameter active with it, µm or arcsec.
+    #[arg(
+        long,
+        value_name = "N",
+        requires = "controller",
+        allow_negative_numbers = true
+    )]
+    active_backlash: Option<f64>,
+    /// The controller whose format --active is in.
+    #[arg(long, short)]
+    controller: Option<String>,
+}
+
+/// Runs `simulate`: writes the fleet or the file, or returns the CSV to print.
+pub fn command(args: &Args) -> Result<Option<String>> {
+    if let (Some(axes), Some(dir)) = (args.fleet, &args.output) {
+        fleet(axes, args.seed.unwrap_or(1), dir)?;
+        return Ok(None);
+    }
+    let Some(model) = &args.model else {
+        bail!("give a simulation file, or --fleet N --out DIR");
+    };
+    let active = Active {
+        table: args.active.as_deref(),
+        backlash: args.active_backlash,
+        controller: args.controller.as_deref(),
+    };
+    let csv = run(model, args.seed, &active)?;
+    let Some(path) = &args.output else {
+        return Ok(Some(csv));
+    };
+    axcheck::atomic::write(path, csv.as_bytes())
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    eprintln!("axcheck: wrote {}", path.display());
+    Ok(None)
+}
 
 /// The compensation active on the simulated machine (`--active`, `--active-backlash`,
 /// `--controller`).

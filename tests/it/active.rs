@@ -2,8 +2,8 @@
 //! the unknown or contradicted state said, a table file that cannot be read refused with
 //! its line, and the example plant's tables and verifications.
 
-use crate::common::{axcheck, scratch};
-use axcheck::batch::{self, AxisTest, CampaignResult};
+use crate::common::{axcheck, run_campaign, scratch};
+use axcheck::batch::{AxisTest, CampaignResult};
 use axcheck::campaign::Campaign;
 use axcheck::compensate::{self, Mode, Settings};
 use axcheck::measurement::csv;
@@ -198,18 +198,6 @@ fn the_stated_state_is_checked_where_it_is_written() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// The example plant with its tables and verifications, as `run` computes them.
-fn example() -> CampaignResult {
-    let campaign = Campaign::load(Path::new("example-campaign/campaign.yaml")).unwrap();
-    let options = batch::Options {
-        jobs: 2,
-        diagnose: false,
-        drop_data: false,
-        compensate: true,
-    };
-    batch::run(&campaign, options, &|_| {})
-}
-
 fn test<'a>(result: &'a CampaignResult, machine: &str, axis: &str) -> &'a AxisTest {
     let found = result
         .tests
@@ -223,7 +211,7 @@ fn test<'a>(result: &'a CampaignResult, machine: &str, axis: &str) -> &'a AxisTe
 /// axis worse and is named, and no table is built on it.
 #[test]
 fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
-    let result = example();
+    let result = run_campaign(Path::new("example-campaign/campaign.yaml"), false);
     for axis in ["X", "Y", "Z"] {
         let c = test(&result, "VMC-07", axis).compensation.as_ref().unwrap();
         assert_eq!(c.mode, Mode::Incremental, "VMC-07 {axis}");

@@ -44,6 +44,19 @@ pub fn scratch(name: &str) -> PathBuf {
     dir
 }
 
+/// The campaign at `path` evaluated as `run` evaluates it (compensation tables and
+/// verifications, readings kept), with or without the diagnosis, on two workers.
+pub fn run_campaign(path: &std::path::Path, diagnose: bool) -> axcheck::batch::CampaignResult {
+    let campaign = axcheck::campaign::Campaign::load(path).unwrap();
+    let options = axcheck::batch::Options {
+        jobs: 2,
+        diagnose,
+        drop_data: false,
+        compensate: true,
+    };
+    axcheck::batch::run(&campaign, options, &|_| {})
+}
+
 /// Copies `tests/data/NAME` into `DIR/data/NAME`.
 pub fn copy_data(dir: &std::path::Path, name: &str) {
     std::fs::copy(data_path(name), dir.join("data").join(name)).unwrap();

@@ -3,8 +3,7 @@
 //! report's data (its Serialize view) rather than from the PDF.
 
 use crate::common::{axcheck, scratch};
-use axcheck::batch::{self, CampaignResult};
-use axcheck::campaign::Campaign;
+use axcheck::batch::CampaignResult;
 use axcheck::report::{Reports, compensation_chart, data};
 use serde_json::Value;
 use std::fmt::Write;
@@ -54,14 +53,7 @@ fn campaign(dir: &Path) -> std::path::PathBuf {
 }
 
 fn run(path: &Path) -> CampaignResult {
-    let campaign = Campaign::load(path).unwrap();
-    let options = batch::Options {
-        jobs: 1,
-        diagnose: true,
-        drop_data: false,
-        compensate: true,
-    };
-    batch::run(&campaign, options, &|_| {})
+    crate::common::run_campaign(path, true)
 }
 
 /// The compensation part of the report data of machine `id`.

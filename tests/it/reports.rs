@@ -1,8 +1,6 @@
 //! PDF reports: valid, readable, deterministic, injection-safe, warning-free.
 
 use crate::common::{axcheck, data_path, scratch};
-use axcheck::batch;
-use axcheck::campaign::Campaign;
 use axcheck::report::Reports;
 use std::path::{Path, PathBuf};
 
@@ -246,17 +244,7 @@ fn user_text_is_data_not_markup() {
 
 #[test]
 fn templates_compile_without_warnings_and_identically() {
-    let campaign = Campaign::load(Path::new("example-campaign/campaign.yaml")).unwrap();
-    let result = batch::run(
-        &campaign,
-        batch::Options {
-            jobs: 2,
-            diagnose: true,
-            drop_data: false,
-            compensate: true,
-        },
-        &|_| {},
-    );
+    let result = crate::common::run_campaign(Path::new("example-campaign/campaign.yaml"), true);
     let reports = Reports::new(None).unwrap();
     for t in &result.tests {
         let first = reports.axis(&result, t).unwrap();

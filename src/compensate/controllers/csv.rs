@@ -64,12 +64,7 @@ impl Controller for Csv {
             .next()
             .ok_or_else(|| Unreadable::file("no header line and no points"))?;
         let columns = header_columns(header, kind, at)?;
-        let mut points = Points {
-            kind,
-            positions: Vec::new(),
-            up: Vec::new(),
-            down: Vec::new(),
-        };
+        let mut points = Points::empty(kind);
         let mut lines = Vec::new();
         for (line, row) in rows {
             let fields: Vec<&str> = row.split(',').collect();

@@ -108,12 +108,7 @@ impl Controller for Ecmc {
     }
 
     fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
-        let mut points = Points {
-            kind: reading.kind,
-            positions: Vec::new(),
-            up: Vec::new(),
-            down: Vec::new(),
-        };
+        let mut points = Points::empty(reading.kind);
         let per_unit = reading.kind.deviation_units_per_position_unit();
         let mut lines = Vec::new();
         for (k, raw) in text.split('\n').enumerate() {

@@ -335,12 +335,7 @@ fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
     let axis = columns.axis(reading.axis, at)?;
     let backlash = columns.index("BACKLASH");
     let per_unit = reading.kind.deviation_units_per_position_unit() * mm;
-    let mut points = Points {
-        kind: reading.kind,
-        positions: Vec::new(),
-        up: Vec::new(),
-        down: Vec::new(),
-    };
+    let mut points = Points::empty(reading.kind);
     let mut rows = Vec::new();
     let mut ended = false;
     for (line, row) in lines {

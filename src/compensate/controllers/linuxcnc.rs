@@ -16,7 +16,8 @@
 //! line that is not three numbers; text after the third number is ignored): type 1
 //! (`nominal forward_trim reverse_trim`) and type 0 (`nominal forward_actual
 //! reverse_actual`, trims = nominal − actual), told apart by their size, as the file does
-//! not say which (a trim is near 0, an actual position near its nominal one). Refused, with
+//! not say which (a trim is near 0, an actual position near its nominal one; where the
+//! sizes do not tell, every nominal position near 0, type 1, which axcheck writes). Refused, with
 //! the line: a first line that is not three numbers (LinuxCNC would load no table), points
 //! after the line where the loader stops (it would not load them), positions that do not
 //! increase, more than 256 points.
@@ -93,7 +94,7 @@ impl Controller for LinuxCnc {
         }
         let nominal: Vec<f64> = rows.iter().map(|r| r[0]).collect();
         reading::increasing(&nominal, &lines, "nominal")?;
-        let trims = file_type(&rows)?;
+        let trims = file_type(&rows);
         let per_unit = reading.kind.deviation_units_per_position_unit();
         let trim = |r: &[f64; 3], k: usize| match trims {
             FileType::Trims => r[k] * per_unit,
@@ -176,21 +177,17 @@ enum FileType {
     Actual,
 }
 
-/// Type 1 when the second and third columns are nearer 0 than the nominal positions, type
-/// 0 when nearer the nominal positions; refused when the sizes do not tell (every nominal
-/// position near 0).
-fn file_type(rows: &[[f64; 3]]) -> Result<FileType, Unreadable> {
+/// Type 0 when the second and third columns are far nearer the nominal positions than 0
+/// (a tenth of the distance or less), else type 1 (which axcheck writes): the sizes tell
+/// unless every nominal position is near 0.
+fn file_type(rows: &[[f64; 3]]) -> FileType {
     let largest = |f: &dyn Fn(&[f64; 3]) -> f64| rows.iter().map(f).fold(0.0, f64::max);
     let as_trims = largest(&|r| r[1].abs().max(r[2].abs()));
     let as_actual = largest(&|r| (r[0] - r[1]).abs().max((r[0] - r[2]).abs()));
-    if as_trims * 10.0 < as_actual {
-        Ok(FileType::Trims)
-    } else if as_actual * 10.0 < as_trims {
-        Ok(FileType::Actual)
+    if as_actual * 10.0 < as_trims {
+        FileType::Actual
     } else {
-        Err(Unreadable::file(format!(
-            "cannot tell type 1 (trims up to {as_trims}) from type 0 (actual positions, trims up to {as_actual}): the nominal positions are too close to the trims"
-        )))
+        FileType::Trims
     }
 }
 

@@ -80,6 +80,16 @@ pub struct Points {
 }
 
 impl Points {
+    /// No points yet, of an axis of `kind`.
+    pub fn empty(kind: AxisKind) -> Points {
+        Points {
+            kind,
+            positions: Vec::new(),
+            up: Vec::new(),
+            down: Vec::new(),
+        }
+    }
+
     /// The table, with its reference at `reference` (else the first point), wrapping over
     /// a revolution when `modulo`.
     pub fn table(

@@ -41,12 +41,7 @@ pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
     let (max, max_line) = line_of(vars.max, "MAX")?;
     let last = point_count(step, step_line, min, max, max_line)?;
     // Not reserved ahead: MAX may claim far more points than the file holds.
-    let mut points = Points {
-        kind: reading.kind,
-        positions: Vec::new(),
-        up: Vec::new(),
-        down: Vec::new(),
-    };
+    let mut points = Points::empty(reading.kind);
     let per_unit = reading.kind.deviation_units_per_position_unit();
     for n in 0..=last {
         let Some((value, _)) = vars.values.get(&n) else {
