@@ -164,6 +164,16 @@ pub fn compensation(
         settings.conditions.as_deref(),
         data.kind,
     );
+    if let (Some(step), Some(_)) = (settings.interval, active.and_then(|a| a.table.as_ref())) {
+        warnings.push(Warning {
+            key: "active_grid_kept",
+            message: format!(
+                "the interval {} {} given is not used: a table built on the active one keeps the active table's points",
+                crate::units::fmt_position(step),
+                data.kind.position_unit()
+            ),
+        });
+    }
     let outcome = active_total(controller, data, settings)
         .and_then(|total| {
             let table = held_on(controller, data, settings, total.as_ref())?;

@@ -15,7 +15,8 @@ use std::path::Path;
 /// 600 mm every 50 mm, five runs: 18 ppm, a 3 µm bow, 4 µm of reversal.
 const AXIS: &str = "kind: linear\nseed: 4\nmodel:\n  scale_um_per_m: 18\n  shape: [[0, 0], [300, 3], [600, 0]]\n  reversal_um: 4\n  scatter_um: 0.3\nplan:\n  targets: {start_mm: 0, end_mm: 600, count: 13}\n  runs: 5\n";
 
-/// Machine M (Siemens) with axes X (an active table and MD32450), Y (`active: none` but
+/// Machine M (Siemens) with axes X (an active table every 50 mm and MD32450, an interval
+/// of 25 mm asked for), Y (`active: none` but
 /// conditions that say compensation was on), Z (nothing stated), W (an active table that
 /// is not there) and V (an active table broken on line 12).
 fn campaign(dir: &Path) -> std::path::PathBuf {
@@ -50,7 +51,7 @@ fn campaign(dir: &Path) -> std::path::PathBuf {
         "campaign: {{name: active}}\nmachines:\n  - id: M\n    controller: siemens-840d\n    axes:\n{}{}{}{}{}",
         axis(
             "X",
-            ", compensation: {active: {file: active/X.ini, backlash_um: 3}}",
+            ", compensation: {interval: 25, active: {file: active/X.ini, backlash_um: 3}}",
             ""
         ),
         axis(
@@ -108,7 +109,8 @@ fn a_campaign_states_what_was_active_and_is_told_what_it_did_not() {
     let x = block(&json, "X");
     assert_eq!(x["mode"], "incremental");
     assert_eq!(x["active_file"], "active/X.ini");
-    assert!(!keys(x).iter().any(|k| k.starts_with("active_")), "{x}");
+    // Its grid is the active table's: the interval given is not used, and it is said.
+    assert_eq!(keys(x), ["active_grid_kept"], "{x}");
     let written = std::fs::read_to_string(out.join("compensation/M/X.ini")).unwrap();
     assert!(
         written.contains("\n; Incremental: the table active during the measurement (active/X.ini) plus this measurement's correction; load it in place of that table.\n"),
