@@ -613,3 +613,20 @@ fn fanuc_reads_its_sheet_at_its_numbers() {
         "no `Axis:` line: axcheck reads the set-up sheet it writes (the axis line gives the points' positions, which the control does not hold)"
     );
 }
+
+/// An axis name that would break the file's syntax (a blank, a bracket) is refused by the
+/// formats that write it (found by fuzzing: a HEIDENHAIN column named with a blank).
+#[test]
+fn an_axis_name_the_file_cannot_hold_is_refused() {
+    let data = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(11);
+    for name in ["siemens-840d", "heidenhain"] {
+        let controller = compensate::controllers::find(name).unwrap();
+        let mut settings = grid_settings(controller);
+        settings.place.axis = Some("X 1]".into());
+        let held = compensate::held_table(controller, &data, &settings).unwrap();
+        assert_eq!(
+            controller.write(&held, &[]).unwrap_err().to_string(),
+            "the axis name `X 1]` is not a name the file can hold (letters, digits and _)"
+        );
+    }
+}

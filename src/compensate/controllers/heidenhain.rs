@@ -189,7 +189,7 @@ impl Controller for Heidenhain {
         // Corrections in µm or arcsec, the table in mm or degrees; it holds the error.
         let per_unit = table.kind.deviation_units_per_position_unit();
         // The axis key names the value column and the table (X.COM).
-        let key = table.place.axis.as_deref().unwrap_or(AXIS_KEY);
+        let key = super::axis_name(table, AXIS_KEY)?;
         let names = COLUMNS.map(|(name, _)| if name == AXIS_KEY { key } else { name });
         let mut out = format!("BEGIN {key}.COM MM\n");
         out.push_str(&row(names));

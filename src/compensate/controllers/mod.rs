@@ -213,6 +213,24 @@ pub fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refu
     }
 }
 
+/// The axis's name on the controller as the file can hold it (letters, digits and `_`: a
+/// blank, a bracket or a comma would break the file's syntax), or `placeholder` when none
+/// is given.
+pub fn axis_name<'t>(table: &'t Table, placeholder: &'t str) -> Result<&'t str, Refused> {
+    match table.place.axis.as_deref() {
+        None => Ok(placeholder),
+        Some(name)
+            if !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') =>
+        {
+            Ok(name)
+        }
+        Some(name) => Err(Refused::Grid(format!(
+            "the axis name `{}` is not a name the file can hold (letters, digits and _)",
+            name.escape_debug()
+        ))),
+    }
+}
+
 /// `notes` as comment lines starting with `mark`.
 pub fn commented(mark: &str, notes: &[String]) -> String {
     notes.iter().map(|n| format!("{mark}{n}\n")).collect()

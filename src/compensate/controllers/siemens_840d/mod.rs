@@ -112,7 +112,7 @@ impl Controller for Siemens840d {
         let unit = table.kind.position_unit();
         let value = |correction: f64| fmt_fixed(-correction / per_unit, DECIMALS);
         let mean = table.mean();
-        let axis = table.place.axis.as_deref().unwrap_or(AXIS);
+        let axis = super::axis_name(table, AXIS)?;
         let e = measuring_system(table);
         let mut out = String::from("%_N_AX_EEC_INI\nCHANDATA(1)\n");
         out.push_str(&header(table, &mean, per_unit));
