@@ -123,7 +123,7 @@ fn others(
 fn render(v: &Verification, kind: AxisKind, name: &str) -> String {
     let unit = kind.deviation_symbol();
     let e = &v.e;
-    let mut out = format!("Verification of {name}: {}\n\n", verdict_words(v.verdict));
+    let mut out = format!("Verification of {name}: {}\n\n", v.verdict.words());
     let _ = writeln!(
         out,
         "E (ISO 230-2 2.20)  before {}  predicted {}  achieved {} {unit}  (U = {} {unit}, 95 %)",
@@ -169,14 +169,4 @@ fn render(v: &Verification, kind: AxisKind, name: &str) -> String {
         fmt_fixed(v.per_target.first().map_or(0.0, |r| r.u), 2)
     );
     out
-}
-
-/// The verdict in words.
-pub fn verdict_words(v: Verdict) -> &'static str {
-    match v {
-        Verdict::Effective => "effective (E achieved within the prediction's uncertainty)",
-        Verdict::PartlyEffective => "partly effective (E reduced, but not to the prediction)",
-        Verdict::NotEffective => "not effective (E not changed beyond the uncertainty)",
-        Verdict::MadeWorse => "made worse (E grown beyond the uncertainty)",
-    }
 }

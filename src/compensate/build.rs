@@ -11,8 +11,8 @@ use super::table::{Table, linear};
 use crate::measurement::AxisData;
 use crate::units::Direction;
 
-/// Mean deviation x̄ at each target for one direction.
-fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
+/// Mean deviation x̄ at each target for one direction (ISO 230-2 2.10).
+pub fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
     (0..data.target_count())
         .map(|i| {
             let d = data.deviations(i, direction);

@@ -4,6 +4,7 @@
 //! difference of two means, from each measurement's pooled scatter (ISO 230-2 2.15,
 //! GUM 4.2: s/√n for a mean of n readings).
 
+use crate::compensate::build::means;
 use crate::compensate::{Table, linear};
 use crate::evaluate::stats::sample_sd;
 use crate::measurement::AxisData;
@@ -52,16 +53,6 @@ pub fn pooled_s(data: &AxisData) -> Option<f64> {
         }
     }
     (count > 0).then(|| (sum / count as f64).sqrt())
-}
-
-/// The mean deviation at each target in `direction`.
-pub fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
-    (0..data.target_count())
-        .map(|i| {
-            let d = data.deviations(i, direction);
-            d.iter().sum::<f64>() / d.len() as f64
-        })
-        .collect()
 }
 
 /// The rows of the re-measurement `after` against `before`, with `old` (the correction

@@ -78,6 +78,16 @@ pub enum Verdict {
 }
 
 impl Verdict {
+    /// The verdict and what it means, for the console and the report.
+    pub fn words(self) -> &'static str {
+        match self {
+            Verdict::Effective => "effective: E achieved within the prediction's uncertainty",
+            Verdict::PartlyEffective => "partly effective: E reduced, but not to the prediction",
+            Verdict::NotEffective => "not effective: E not changed beyond the uncertainty",
+            Verdict::MadeWorse => "made worse: E grown beyond the uncertainty",
+        }
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             Verdict::Effective => "effective",

@@ -11,7 +11,7 @@ use crate::evaluate::Evaluation;
 use crate::report::compensation_chart::CompensationChart;
 use crate::report::verification_chart::VerificationChart;
 use crate::units::{AxisKind, Direction};
-use crate::verify::{Verdict, Verification};
+use crate::verify::Verification;
 use serde::Serialize;
 
 /// The compensation section, as the template reads it.
@@ -143,7 +143,7 @@ fn verification_section(
     VerificationSection {
         error: None,
         verdict: v.verdict.name(),
-        verdict_words: verdict_words(v.verdict),
+        verdict_words: v.verdict.words(),
         facts: Row::present([
             ("E before the table", value(v.e.before)),
             ("E predicted", value(v.e.predicted)),
@@ -160,16 +160,6 @@ fn verification_section(
             })
             .collect(),
         notes: &v.notes,
-    }
-}
-
-/// The verdict in words, for the report.
-fn verdict_words(v: Verdict) -> &'static str {
-    match v {
-        Verdict::Effective => "effective: E achieved within the prediction's uncertainty",
-        Verdict::PartlyEffective => "partly effective: E reduced, but not to the prediction",
-        Verdict::NotEffective => "not effective: E not changed beyond the uncertainty",
-        Verdict::MadeWorse => "made worse: E grown beyond the uncertainty",
     }
 }
 
