@@ -11,13 +11,12 @@ use crate::compensate::{self, Active, Place, Settings, Table};
 use crate::measurement::AxisData;
 use crate::units::AxisKind;
 use crate::verify::{self, Other, Verdict, Verification};
-use std::sync::Arc;
 
 /// What a re-measurement is compared with: the measurement before, and the corrections
 /// active then and loaded since, as the controller adds them.
 #[derive(Debug, Clone)]
 pub struct VerifyCase {
-    pub before: Arc<AxisData>,
+    pub before: AxisData,
     pub old: Option<Table>,
     pub new: Table,
     /// Notes on what was assumed (an unstated backlash).
@@ -155,16 +154,29 @@ fn case(
         )?,
         None => Active::default(),
     };
-    let mut notes = Vec::new();
-    let mut loaded = Active {
-        table: Some(read_table(
+    // The verified table is the test's active one unless another is stated: read once.
+    let stated = axis
+        .raw
+        .compensation
+        .as_ref()
+        .and_then(|c| c.active.as_ref());
+    let table = match (
+        stated,
+        settings.active.as_ref().and_then(|a| a.table.clone()),
+    ) {
+        (None, Some(table)) => table,
+        _ => read_table(
             &v.table,
             kind,
             controller,
             files,
             &settings.place,
             "verifies.table",
-        )?),
+        )?,
+    };
+    let mut notes = Vec::new();
+    let mut loaded = Active {
+        table: Some(table),
         file: Some(v.table.clone()),
         backlash: v.backlash_um.or(v.backlash_arcsec),
     };
@@ -180,7 +192,7 @@ fn case(
         .total(rule, kind)
         .ok_or("the verified table is empty")?;
     Ok(VerifyCase {
-        before: Arc::new(before),
+        before,
         old: before_active.total(rule, kind),
         new,
         notes,
