@@ -292,14 +292,7 @@ pub fn of_test(
                 .compensation
                 .as_ref()
                 .is_some_and(|c| c.verifies.is_some());
-            let refused = compensate::Compensation {
-                controller: controller.name(),
-                extension: controller.extension(),
-                mode: compensate::Mode::Absolute,
-                active_file: None,
-                outcome: Err(format!("{}: {e}", controller.name())),
-                warnings: Vec::new(),
-            };
+            let refused = compensate::Compensation::refused(controller, &e);
             (refused, verifies.then_some(Err(e)))
         }
     }

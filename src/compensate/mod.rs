@@ -148,6 +148,20 @@ pub struct Compensation {
     pub warnings: Vec<Warning>,
 }
 
+impl Compensation {
+    /// No table from `controller`, for `reason` (an active table that cannot be read).
+    pub fn refused(controller: &dyn Controller, reason: &str) -> Compensation {
+        Compensation {
+            controller: controller.name(),
+            extension: controller.extension(),
+            mode: Mode::Absolute,
+            active_file: None,
+            outcome: Err(format!("{}: {reason}", controller.name())),
+            warnings: Vec::new(),
+        }
+    }
+}
+
 /// The compensation of `data` by `controller`, with the warnings of its `diagnosis`.
 pub fn compensation(
     controller: &dyn Controller,
