@@ -134,14 +134,20 @@ fn check(table: &Table) -> Result<(), Refused> {
 }
 
 /// `fields` padded to the columns' widths.
-fn row(fields: [&str; 4]) -> String {
-    let mut line: String = COLUMNS
-        .iter()
-        .zip(fields)
-        .map(|((_, width), field)| format!("{field:<width$}"))
-        .collect();
+/// `fields` padded to the columns' widths; refused when one does not fit with a blank
+/// after it (the control cuts the columns at their positions).
+fn row(fields: [&str; 4]) -> Result<String, Refused> {
+    let mut line = String::new();
+    for ((name, width), field) in COLUMNS.iter().zip(fields) {
+        if field.chars().count() >= *width {
+            return Err(Refused::Range(format!(
+                "`{field}` does not fit the table's {width}-character column {name}"
+            )));
+        }
+        line.push_str(&format!("{field:<width$}"));
+    }
     line.push('\n');
-    line
+    Ok(line)
 }
 
 impl Controller for Heidenhain {
@@ -192,7 +198,7 @@ impl Controller for Heidenhain {
         let key = super::axis_name(table, AXIS_KEY)?;
         let names = COLUMNS.map(|(name, _)| if name == AXIS_KEY { key } else { name });
         let mut out = format!("BEGIN {key}.COM MM\n");
-        out.push_str(&row(names));
+        out.push_str(&row(names)?);
         for (nr, ((p, u), d)) in table
             .positions
             .iter()
@@ -202,7 +208,7 @@ impl Controller for Heidenhain {
         {
             let nr = nr.to_string();
             let (p, u, d) = (signed(*p), signed(-u / per_unit), signed(-d / per_unit));
-            out.push_str(&row([&nr, &p, &u, &d]));
+            out.push_str(&row([&nr, &p, &u, &d])?);
         }
         out.push_str("[END]\n");
         Ok(out)
