@@ -111,10 +111,11 @@ impl Controller for Ecmc {
         let mut points = Points::empty(reading.kind);
         let per_unit = reading.kind.deviation_units_per_position_unit();
         let mut lines = Vec::new();
+        // The piece after the last line end is no line (an empty one there is the file's end).
+        let lines_in_file = text.split('\n').count();
         for (k, raw) in text.split('\n').enumerate() {
             let line = k + 1;
-            let Some([position, value]) = self.row(raw, line, k + 1 == text.split('\n').count())?
-            else {
+            let Some([position, value]) = self.row(raw, line, line == lines_in_file)? else {
                 continue;
             };
             points.positions.push(position);
