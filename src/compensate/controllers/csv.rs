@@ -37,6 +37,7 @@ impl Controller for Csv {
     }
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
+        super::finite(table)?;
         let (pos, dev) = (table.kind.position_unit(), table.kind.deviation_unit());
         super::printed_increasing(&table.positions, 4)?;
         let mut out = super::commented("# ", notes);

@@ -136,6 +136,7 @@ impl Controller for Ecmc {
     }
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
+        super::finite(table)?;
         let p = &table.positions;
         if p.len() < MIN_ROWS {
             return Err(too_few(table));

@@ -191,6 +191,7 @@ impl Controller for Heidenhain {
     /// `notes` are not written: the table format has no comments (they are in the console,
     /// the report and `results.json`).
     fn write(&self, table: &Table, _notes: &[String]) -> Result<String, Refused> {
+        super::finite(table)?;
         check(table)?;
         // Corrections in µm or arcsec, the table in mm or degrees; it holds the error.
         let per_unit = table.kind.deviation_units_per_position_unit();

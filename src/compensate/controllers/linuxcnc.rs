@@ -56,6 +56,7 @@ impl Controller for LinuxCnc {
     }
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
+        super::finite(table)?;
         super::printed_increasing(&table.positions, 6)?;
         // Corrections in µm or arcsec, the file in mm or degrees.
         let per_unit = match table.kind {

@@ -194,6 +194,16 @@ pub trait Controller: Sync {
     fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable>;
 }
 
+/// Every position and correction finite: a value rounded to the controller's unit can
+/// overflow to infinity (a read table's 1e308 µm), which no file holds.
+pub fn finite(table: &Table) -> Result<(), Refused> {
+    let values = table.positions.iter().chain(&table.up).chain(&table.down);
+    match values.copied().find(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(v) => Err(Refused::Range(format!("a value of {v} cannot be written"))),
+    }
+}
+
 /// Positions that stay strictly increasing when printed with `decimals` places (as the
 /// file gives them to the controller), else why the file cannot hold them.
 pub fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refused> {

@@ -133,6 +133,7 @@ impl Controller for Fanuc {
     }
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
+        super::finite(table)?;
         let stored = Stored::fit(table, Rounding::Exact)?;
         let mut out = stored.header(table);
         out.push_str(&super::commented("Note: ", notes));

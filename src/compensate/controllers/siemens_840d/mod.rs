@@ -105,6 +105,7 @@ impl Controller for Siemens840d {
     }
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
+        super::finite(table)?;
         let step = step(table)?;
         let n = table.positions.len();
         let (first, last) = (table.positions[0], table.positions[n - 1]);

@@ -235,6 +235,7 @@ impl Controller for TwinCat {
     }
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
+        super::finite(table)?;
         let axis_number = table.place.number.unwrap_or(1);
         Ok(List::of(table)?.text(table.kind, axis_number, notes))
     }
