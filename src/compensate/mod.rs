@@ -81,7 +81,9 @@ fn held_on(
     }
     table.place = place(&settings.place, base);
     table.interpolation = controller.interpolation();
-    controller.hold(table)
+    let held = controller.hold(table)?;
+    controllers::finite(&held)?;
+    Ok(held)
 }
 
 /// The place given, completed by the active table's.

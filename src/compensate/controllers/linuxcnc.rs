@@ -156,14 +156,17 @@ fn loaded_rows(text: &str) -> Result<(Vec<[f64; 3]>, Vec<usize>), Unreadable> {
 
 /// Three numbers at the start of `line`, as `sscanf("%lf %lf %lf")` reads them (each
 /// after optional white space; what follows the third is ignored); `None` when it would
-/// not read three, or one is not finite.
+/// not read three, or one is not a number of at most 1e12 (`nan`, `inf`).
 fn three_numbers(line: &str) -> Option<[f64; 3]> {
     let mut rest = line;
     let mut out = [0.0; 3];
     for v in out.iter_mut() {
         let t = rest.trim_start();
         let n = reading::float_prefix(t);
-        *v = t[..n].parse::<f64>().ok().filter(|x| x.is_finite())?;
+        *v = t[..n]
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.abs() <= reading::LARGEST)?;
         rest = &t[n..];
     }
     Some(out)

@@ -13,16 +13,21 @@ pub fn numbered(text: &str) -> impl Iterator<Item = (usize, &str)> {
         .map(|(k, line)| (k + 1, line.strip_suffix('\r').unwrap_or(line)))
 }
 
-/// A finite number as written in `field` at `line` (`1.5`, `-0.0020`, `+0.0025`, `1e-3`).
+/// Larger than any position or correction a table holds (mm, degrees or their 0.1 µm
+/// steps): a number beyond it is refused, so that converting units never overflows.
+pub const LARGEST: f64 = 1e12;
+
+/// A finite number as written in `field` at `line` (`1.5`, `-0.0020`, `+0.0025`, `1e-3`),
+/// at most [`LARGEST`] in size.
 pub fn number(text: &str, line: usize, field: &str) -> Result<f64, Unreadable> {
     let t = text.trim();
     let t = t.strip_prefix('+').unwrap_or(t);
     match t.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
+        Ok(v) if v.abs() <= LARGEST => Ok(v),
         Ok(_) => Err(Unreadable::field(
             line,
             field,
-            format!("expected a finite number, got `{}`", text.trim()),
+            format!("expected a number of at most 1e12, got `{}`", text.trim()),
         )),
         Err(_) => Err(Unreadable::field(
             line,
