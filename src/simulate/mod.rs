@@ -10,7 +10,7 @@ pub mod rng;
 mod yaml;
 
 pub use model::{ErrorModel, Outlier, PeriodicTerm};
-pub use plan::{Cycle, TargetSpacing, TestPlan, Visit};
+pub use plan::{Cycle, Step, TargetSpacing, TestPlan, Visit};
 
 use crate::measurement::{AxisData, RawReading};
 use crate::units::AxisKind;

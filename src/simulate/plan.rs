@@ -274,7 +274,37 @@ impl TestPlan {
 
     /// The approaches in the order of the cycle, with their times.
     pub fn schedule(&self, targets: &[f64]) -> Vec<Visit> {
-        let mut path = Path::new(targets[0] - self.overrun, self);
+        let seconds_per_unit = 60.0 / self.feed_per_min;
+        let mut position = targets[0] - self.overrun;
+        let mut time_s = 0.0;
+        let mut visits = Vec::new();
+        for step in self.steps(targets) {
+            time_s += (step.position() - position).abs() * seconds_per_unit;
+            position = step.position();
+            if let Step::Read {
+                target,
+                direction,
+                run,
+                ..
+            } = step
+            {
+                time_s += self.dwell_s;
+                visits.push(Visit {
+                    target,
+                    direction,
+                    run,
+                    time_s,
+                });
+            }
+        }
+        visits
+    }
+
+    /// The axis's path through the test in the order of the cycle, from the start below the
+    /// first target (its first step): moves beyond a target by the overrun before each
+    /// reversal, and the targets read, each approached from its direction.
+    pub fn steps(&self, targets: &[f64]) -> Vec<Step> {
+        let mut path = Path::default();
         let m = targets.len();
         let first = targets[0];
         let last = targets[m - 1];
@@ -313,43 +343,51 @@ impl TestPlan {
                 }
             }
         }
-        path.visits
+        path.steps
     }
 }
 
-/// Walks the axis, accumulating time.
+/// One step of the axis's path through a test.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Step {
+    /// Travel to a position: an overrun beyond a target before a reversal.
+    Move(f64),
+    /// Travel to target `target` (0-based) at `position`, approached in `direction`, and
+    /// read it after the dwell; run `run`, 0-based.
+    Read {
+        position: f64,
+        target: usize,
+        direction: Direction,
+        run: usize,
+    },
+}
+
+impl Step {
+    /// Where the step ends.
+    pub fn position(&self) -> f64 {
+        match *self {
+            Step::Move(p) | Step::Read { position: p, .. } => p,
+        }
+    }
+}
+
+/// The steps of a path, in order.
+#[derive(Default)]
 struct Path {
-    position: f64,
-    time_s: f64,
-    seconds_per_unit: f64,
-    dwell_s: f64,
-    visits: Vec<Visit>,
+    steps: Vec<Step>,
 }
 
 impl Path {
-    fn new(start: f64, plan: &TestPlan) -> Path {
-        Path {
-            position: start,
-            time_s: 0.0,
-            seconds_per_unit: 60.0 / plan.feed_per_min,
-            dwell_s: plan.dwell_s,
-            visits: Vec::new(),
-        }
-    }
-
     fn go(&mut self, to: f64) {
-        self.time_s += (to - self.position).abs() * self.seconds_per_unit;
-        self.position = to;
+        self.steps.push(Step::Move(to));
     }
 
     fn read(&mut self, position: f64, target: usize, direction: Direction, run: usize) {
-        self.go(position);
-        self.time_s += self.dwell_s;
-        self.visits.push(Visit {
+        self.steps.push(Step::Read {
+            position,
             target,
             direction,
             run,
-            time_s: self.time_s,
         });
     }
 }
