@@ -21,6 +21,7 @@ pub mod lock;
 pub mod measurement;
 pub mod nde;
 pub mod panics;
+pub mod plan;
 #[cfg(feature = "pdf")]
 pub mod report;
 pub mod rules;

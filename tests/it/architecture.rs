@@ -13,7 +13,7 @@ const LAYERS: &[&[&str]] = &[
     &["evaluate", "nde", "simulate"],
     &["uncertainty"],
     &["rules", "judge", "diagnose", "trend"],
-    &["compensate"],
+    &["compensate", "plan"],
     &["campaign", "verify"],
     &["batch"],
     &["history"],

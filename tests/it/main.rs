@@ -24,6 +24,7 @@ mod hostile_fs;
 mod iso230_2;
 mod layouts;
 mod outputs;
+mod plan;
 mod properties;
 mod renishaw;
 mod report_compensation;

@@ -1,0 +1,293 @@
+//! Test plans before the laser is set up: the targets a standard asks for on an axis,
+//! spaced as ISO 230-2 4.2 says with offsets that sample the declared periods ([`targets`]),
+//! checked by the same test-plan rules the measurement will be judged by ([`crate::rules`]);
+//! the plan as a file ([`file`]), the part programs that run it on a control
+//! ([`programs`]) and the target list for the laser software ([`laser`]). A campaign's
+//! `plan:` compares the measured targets with it (the rule `plan-targets`).
+
+pub mod file;
+pub mod laser;
+pub mod programs;
+pub mod targets;
+
+use crate::evaluate::StandardId;
+use crate::measurement::{AxisData, RawReading};
+use crate::rules::{self, Finding, PlanContext};
+use crate::simulate::{Cycle, TestPlan};
+use crate::units::{AxisKind, Direction, Travel, fmt_position};
+
+/// The axis a plan is for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    pub kind: AxisKind,
+    pub standard: StandardId,
+    /// The axis travel (ISO 230-2 2.1), mm or deg.
+    pub travel: Travel,
+    /// The measurement travel (2.2); `None`: the axis travel less the overrun at each end.
+    pub measurement_travel: Option<[f64; 2]>,
+    /// The lead-screw pitch and the scale's (encoder's) pitch, mm or deg: periods the
+    /// targets must not alias (4.2).
+    pub pitch: Option<f64>,
+    pub scale_pitch: Option<f64>,
+}
+
+/// How the axis is driven through the test.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Motion {
+    /// Approaches per direction n; `None`: the standard's (5, or 1 over the full travel
+    /// of a linear axis over 2000 mm or a rotary one over 360°).
+    pub runs: Option<usize>,
+    pub cycle: Cycle,
+    /// Travel beyond a target before each reversal, mm or deg (ISO 230-2 Fig. 1).
+    pub overrun: f64,
+    /// Dwell at each target, s: the laser's averaging time and the axis's settling.
+    pub dwell_s: f64,
+    /// Feed between targets, mm/min or deg/min.
+    pub feed: f64,
+}
+
+impl Default for Motion {
+    fn default() -> Motion {
+        Motion {
+            runs: None,
+            cycle: Cycle::Standard,
+            overrun: 5.0,
+            dwell_s: 4.0,
+            feed: 1000.0,
+        }
+    }
+}
+
+/// A plan: the targets, the measurement travel they span, the runs and the motion, and
+/// what the rules find in it (nothing, for a plan axcheck made).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan {
+    pub axis: Axis,
+    pub measurement_travel: [f64; 2],
+    pub targets: Vec<f64>,
+    pub runs: usize,
+    pub motion: Motion,
+    /// The seed the offsets were drawn from; `None` for targets given.
+    pub seed: Option<u64>,
+    pub findings: Vec<Finding>,
+}
+
+/// Why no plan can be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PlanError {
+    #[error("{0}")]
+    Travel(String),
+    #[error("{0}")]
+    Targets(String),
+    #[error("{0}")]
+    Motion(String),
+}
+
+/// Most targets a plan holds (a measurement file of 5 runs holds them all).
+const MAX_TARGETS: usize = 10_000;
+
+/// A plan for `axis` with the standard's targets, offsets drawn from `seed`.
+pub fn plan(axis: &Axis, motion: &Motion, seed: u64) -> Result<Plan, PlanError> {
+    check_motion(motion)?;
+    let [first, last] = measurement_travel(axis, motion.overrun)?;
+    let fixed = targets::fixed(axis.kind, axis.standard, first, last);
+    let (least, widest) = targets::least(axis.kind, axis.standard, last - first);
+    let periods: Vec<f64> = [axis.pitch, axis.scale_pitch]
+        .into_iter()
+        .flatten()
+        .collect();
+    // By construction the rules hold; should one not, one target more is tried.
+    let mut count = least.max(fixed.len());
+    loop {
+        let placed = targets::place(&fixed, count, widest, &periods, seed);
+        let plan = checked(axis, motion, [first, last], placed, Some(seed))?;
+        if plan.findings.is_empty() || count >= least + 8 {
+            return Ok(plan);
+        }
+        count += 1;
+    }
+}
+
+/// The plan of `targets` given for `axis`, as the rules find it.
+pub fn with_targets(axis: &Axis, motion: &Motion, targets: Vec<f64>) -> Result<Plan, PlanError> {
+    check_motion(motion)?;
+    if targets.is_empty() || targets.len() > MAX_TARGETS {
+        return Err(PlanError::Targets(format!(
+            "expected 1 to {MAX_TARGETS} targets, got {}",
+            targets.len()
+        )));
+    }
+    let mut targets: Vec<f64> = targets.into_iter().map(targets::recorded).collect();
+    if targets.iter().any(|t| !t.is_finite()) {
+        return Err(PlanError::Targets("the targets must be numbers".into()));
+    }
+    targets.sort_by(f64::total_cmp);
+    if let Some(w) = targets.windows(2).find(|w| w[1] <= w[0]) {
+        return Err(PlanError::Targets(format!(
+            "the target {} is given twice (to 0.001)",
+            fmt_position(w[0])
+        )));
+    }
+    let travel = axis
+        .measurement_travel
+        .unwrap_or([targets[0], targets[targets.len() - 1]]);
+    checked(axis, motion, travel, targets, None)
+}
+
+/// The plan with the rules' findings on its targets.
+fn checked(
+    axis: &Axis,
+    motion: &Motion,
+    travel: [f64; 2],
+    targets: Vec<f64>,
+    seed: Option<u64>,
+) -> Result<Plan, PlanError> {
+    let runs = motion
+        .runs
+        .unwrap_or_else(|| default_runs(axis, travel[1] - travel[0]));
+    let mut plan = Plan {
+        axis: axis.clone(),
+        measurement_travel: travel,
+        targets,
+        runs,
+        motion: motion.clone(),
+        seed,
+        findings: Vec::new(),
+    };
+    plan.findings = findings(&plan)?;
+    Ok(plan)
+}
+
+/// n the standard asks for: 5, or 1 over the full travel of a linear axis over 2000 mm
+/// (ISO 230-2 4.3.3) or a rotary one over 360° (4.3.5); GOST 27843 2.10: 5.
+fn default_runs(axis: &Axis, travel: f64) -> usize {
+    let long = match axis.kind {
+        AxisKind::Linear => travel > rules::LINEAR_SHORT_MM + 1e-9,
+        AxisKind::Rotary => travel > rules::ROTARY_SHORT_DEG + 1e-9,
+    };
+    if long && axis.standard != StandardId::Gost27843 {
+        1
+    } else {
+        5
+    }
+}
+
+/// The measurement travel: given, or the axis travel less the overrun at each end, room to
+/// approach the first and last targets from both sides (ISO 230-2 2.2); a rotary axis of a
+/// turn or more has no ends, and is measured over its whole travel.
+pub fn measurement_travel(axis: &Axis, overrun: f64) -> Result<[f64; 2], PlanError> {
+    let (start, end) = match axis.travel {
+        Travel::Length(l) => (0.0, l),
+        Travel::Range([a, b]) => (a, b),
+    };
+    if !(end > start && start.is_finite() && end.is_finite()) {
+        return Err(PlanError::Travel(format!(
+            "the axis travel must run from a start to a greater end, got {start} to {end}"
+        )));
+    }
+    if let Some([a, b]) = axis.measurement_travel {
+        if !(b > a && a >= start && b <= end) {
+            return Err(PlanError::Travel(format!(
+                "the measurement travel [{}, {}] must lie inside the axis travel [{}, {}]",
+                fmt_position(a),
+                fmt_position(b),
+                fmt_position(start),
+                fmt_position(end)
+            )));
+        }
+        return Ok([a, b]);
+    }
+    if axis.kind == AxisKind::Rotary && end - start >= rules::ROTARY_SHORT_DEG - 1e-9 {
+        return Ok([targets::recorded(start), targets::recorded(end)]);
+    }
+    let (a, b) = (
+        targets::recorded(start + overrun),
+        targets::recorded(end - overrun),
+    );
+    if b - a < 0.01 {
+        return Err(PlanError::Travel(format!(
+            "the axis travel {} to {} leaves no measurement travel once the overrun of {} is kept at each end",
+            fmt_position(start),
+            fmt_position(end),
+            fmt_position(overrun)
+        )));
+    }
+    Ok([a, b])
+}
+
+fn check_motion(m: &Motion) -> Result<(), PlanError> {
+    let bad = |what: &str| Err(PlanError::Motion(what.to_string()));
+    if m.runs.is_some_and(|n| n == 0 || n > 100) {
+        return bad("runs: expected 1 to 100");
+    }
+    if !(m.overrun >= 0.0 && m.overrun < 1e6) {
+        return bad("overrun: expected a length ≥ 0");
+    }
+    if !(m.dwell_s >= 0.0 && m.dwell_s < 3600.0) {
+        return bad("dwell: expected a time ≥ 0 s");
+    }
+    if !(m.feed > 0.0 && m.feed.is_finite()) {
+        return bad("feed: expected a feed > 0");
+    }
+    Ok(())
+}
+
+/// What the test-plan rules find in the plan, as they will in its measurement: its targets
+/// read `runs` times each way, the declared travels, each declared period in turn.
+fn findings(plan: &Plan) -> Result<Vec<Finding>, PlanError> {
+    let data = readings(plan)?;
+    let ctx = |pitch| PlanContext {
+        kind: plan.axis.kind,
+        standard: plan.axis.standard,
+        axis_travel: Some(plan.axis.travel),
+        measurement_travel: Some(plan.measurement_travel),
+        pitch,
+    };
+    let mut out = rules::check(&ctx(plan.axis.pitch), &data);
+    if let Some(scale) = plan.axis.scale_pitch {
+        let aliased = rules::check(&ctx(Some(scale)), &data);
+        out.extend(
+            aliased
+                .into_iter()
+                .filter(|f| f.id == "iso-4.2-pitch-alias"),
+        );
+    }
+    Ok(out)
+}
+
+/// The readings a measurement of the plan holds (every deviation 0): what the rules count.
+fn readings(plan: &Plan) -> Result<AxisData, PlanError> {
+    let mut raw = Vec::with_capacity(2 * plan.runs * plan.targets.len());
+    for run in 1..=plan.runs as u32 {
+        for direction in [Direction::Up, Direction::Down] {
+            for &target in &plan.targets {
+                raw.push(RawReading {
+                    target,
+                    direction,
+                    run,
+                    deviation: 0.0,
+                    time_s: None,
+                    temps_c: vec![],
+                    line: 0,
+                });
+            }
+        }
+    }
+    AxisData::from_raw(plan.axis.kind, raw, vec![], "plan")
+        .map_err(|e| PlanError::Targets(e.to_string()))
+}
+
+impl Plan {
+    /// The plan as the simulator runs it.
+    pub fn test_plan(&self) -> TestPlan {
+        TestPlan {
+            targets: None,
+            target_list: Some(self.targets.clone()),
+            runs: self.runs,
+            cycle: self.motion.cycle,
+            feed_per_min: self.motion.feed,
+            dwell_s: self.motion.dwell_s,
+            overrun: self.motion.overrun,
+        }
+    }
+}
