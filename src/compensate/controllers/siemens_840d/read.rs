@@ -51,7 +51,10 @@ pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
         };
         // The file holds the error (the NC subtracts it): the correction is minus it.
         let correction = -value * per_unit;
-        points.positions.push(min + n as f64 * step);
+        // MIN + N·STEP, with the STEP that MAX gives (the file's STEP rounds it).
+        points
+            .positions
+            .push(min + n as f64 * (max - min) / last.max(1) as f64);
         points.up.push(correction);
         points.down.push(correction);
     }
