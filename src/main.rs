@@ -148,6 +148,10 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The test plan of an axis before the laser is set up: the targets the standard asks
+    /// for, checked by the test-plan rules; with --program the part program that runs it,
+    /// and the target list for the laser software.
+    Plan(cli::plan::Args),
     /// Compare the re-measurement after a table was loaded with the prediction from the
     /// measurement before and the table: effective, partly effective, not effective or
     /// made worse, and what went wrong (exit 0: effective, 1: not, 2: an input cannot be
@@ -288,6 +292,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             };
             print(&cli::compensate::run(&data, &request)?)?;
         }
+        Command::Plan(args) => print(&cli::plan::run(&args)?)?,
         Command::Verify(args) => {
             let (text, effective) = cli::verify::run(&args)?;
             print(&text)?;

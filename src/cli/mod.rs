@@ -4,6 +4,7 @@ pub mod campaign;
 pub mod compensate;
 pub mod diagnose;
 pub mod eval;
+pub mod plan;
 pub mod simulate;
 pub mod tables;
 pub mod text;

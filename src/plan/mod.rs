@@ -23,7 +23,8 @@ pub struct Axis {
     pub standard: StandardId,
     /// The axis travel (ISO 230-2 2.1), mm or deg.
     pub travel: Travel,
-    /// The measurement travel (2.2); `None`: the axis travel less the overrun at each end.
+    /// The measurement travel (2.2); `None`: the axis travel less twice the overrun at each
+    /// end.
     pub measurement_travel: Option<[f64; 2]>,
     /// The lead-screw pitch and the scale's (encoder's) pitch, mm or deg: periods the
     /// targets must not alias (4.2).
@@ -96,17 +97,30 @@ pub fn plan(axis: &Axis, motion: &Motion, seed: u64) -> Result<Plan, PlanError> 
         .into_iter()
         .flatten()
         .collect();
-    // By construction the rules hold; should one not, one target more is tried.
+    // By construction the rules on targets hold; should one not, one target more is tried.
+    // (A rule on runs, say n = 1 asked for a short axis, is reported as it is.)
     let mut count = least.max(fixed.len());
     loop {
         let placed = targets::place(&fixed, count, widest, &periods, seed);
         let plan = checked(axis, motion, [first, last], placed, Some(seed))?;
-        if plan.findings.is_empty() || count >= least + 8 {
+        let more_helps = plan.findings.iter().any(|f| ON_TARGETS.contains(&f.id));
+        if !more_helps || count >= least + 8 {
             return Ok(plan);
         }
         count += 1;
     }
 }
+
+/// The rules on the targets' number and spacing, which more targets can satisfy.
+const ON_TARGETS: &[&str] = &[
+    "iso-4.3.2-targets",
+    "iso-4.3.3-spacing",
+    "iso-4.3.4-targets",
+    "iso-4.3.5-spacing",
+    "gost-2.7-targets",
+    "iso-4.2-uniform-spacing",
+    "iso-4.2-pitch-alias",
+];
 
 /// The plan of `targets` given for `axis`, as the rules find it.
 pub fn with_targets(axis: &Axis, motion: &Motion, targets: Vec<f64>) -> Result<Plan, PlanError> {
@@ -172,9 +186,10 @@ fn default_runs(axis: &Axis, travel: f64) -> usize {
     }
 }
 
-/// The measurement travel: given, or the axis travel less the overrun at each end, room to
-/// approach the first and last targets from both sides (ISO 230-2 2.2); a rotary axis of a
-/// turn or more has no ends, and is measured over its whole travel.
+/// The measurement travel: given, or the axis travel less twice the overrun at each end:
+/// room to approach the first and last targets from both sides (ISO 230-2 2.2), with the
+/// overrun moves kept an overrun clear of the travel's ends; a rotary axis of a turn or
+/// more has no ends, and is measured over its whole travel.
 pub fn measurement_travel(axis: &Axis, overrun: f64) -> Result<[f64; 2], PlanError> {
     let (start, end) = match axis.travel {
         Travel::Length(l) => (0.0, l),
@@ -200,13 +215,16 @@ pub fn measurement_travel(axis: &Axis, overrun: f64) -> Result<[f64; 2], PlanErr
     if axis.kind == AxisKind::Rotary && end - start >= rules::ROTARY_SHORT_DEG - 1e-9 {
         return Ok([targets::recorded(start), targets::recorded(end)]);
     }
+    // The overrun beyond the first and last targets, and as much again to the ends of the
+    // travel, which the program then never reaches.
+    let room = 2.0 * overrun;
     let (a, b) = (
-        targets::recorded(start + overrun),
-        targets::recorded(end - overrun),
+        targets::recorded(start + room),
+        targets::recorded(end - room),
     );
     if b - a < 0.01 {
         return Err(PlanError::Travel(format!(
-            "the axis travel {} to {} leaves no measurement travel once the overrun of {} is kept at each end",
+            "the axis travel {} to {} leaves no measurement travel once twice the overrun of {} is kept at each end",
             fmt_position(start),
             fmt_position(end),
             fmt_position(overrun)

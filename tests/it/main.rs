@@ -25,6 +25,7 @@ mod iso230_2;
 mod layouts;
 mod outputs;
 mod plan;
+mod programs;
 mod properties;
 mod renishaw;
 mod report_compensation;

@@ -100,7 +100,7 @@ fn a_plan_keeps_room_to_reverse_and_the_principal_positions() {
         scale_pitch: None,
     };
     let p = plan::plan(&linear, &Motion::default(), 1).unwrap();
-    assert_eq!(p.measurement_travel, [5.0, 995.0]);
+    assert_eq!(p.measurement_travel, [10.0, 990.0]);
     assert_eq!(p.targets.len(), 5);
     assert_eq!(p.runs, 5);
     let mut phases: Vec<f64> = p

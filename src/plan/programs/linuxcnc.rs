@@ -27,9 +27,10 @@ impl Dialect for LinuxCnc {
         one_letter(axis, "LinuxCNC")
     }
 
+    /// A parenthesised comment: parentheses inside would end it early, and none of the
+    /// program's comments starts with a word LinuxCNC acts on (MSG, DEBUG, PRINT, LOG).
     fn comment(&self, t: &str) -> String {
-        // Parentheses end a comment early; the words LinuxCNC acts on are avoided.
-        format!("(axcheck: {})", t.replace(['(', ')'], " "))
+        format!("({})", t.replace(['(', ')'], " "))
     }
 
     fn begin(&self, _job: &Job) -> (Vec<String>, Vec<String>) {
@@ -74,6 +75,6 @@ impl Dialect for LinuxCnc {
     }
 
     fn unconfirmed(&self) -> &'static str {
-        "none in the syntax (the program has not been run on a machine)"
+        "none in the syntax; the program has not been run on a machine"
     }
 }
