@@ -151,7 +151,7 @@ enum Command {
     /// The test plan of an axis before the laser is set up: the targets the standard asks
     /// for, checked by the test-plan rules; with --program the part program that runs it,
     /// and the target list for the laser software.
-    Plan(cli::plan::Args),
+    Plan(Box<cli::plan::Args>),
     /// Compare the re-measurement after a table was loaded with the prediction from the
     /// measurement before and the table: effective, partly effective, not effective or
     /// made worse, and what went wrong (exit 0: effective, 1: not, 2: an input cannot be

@@ -101,6 +101,7 @@ pub fn evaluate(data: &[u8]) {
             axis_travel: Some(Travel::Range([first - 1.0, last + 1.0])),
             measurement_travel: Some([first, last]),
             pitch: Some(5.0),
+            planned: None,
         };
         let _ = rules::check(&ctx, &axis);
     }

@@ -309,6 +309,8 @@ struct Slot {
     file: Option<String>,
     test: usize,
     tests: usize,
+    /// The axis's planned test, read once for its tests.
+    planned: Option<Arc<rules::Planned>>,
 }
 
 impl Slot {
@@ -358,6 +360,7 @@ fn run_axis(
         file: None,
         test: 1,
         tests: 1,
+        planned: None,
     };
     let axis = match &entry.spec {
         Ok(axis) => Arc::new(axis.clone()),
@@ -365,6 +368,11 @@ fn run_axis(
     };
     let slot = Slot {
         spec: Some(axis.clone()),
+        planned: axis
+            .raw
+            .plan
+            .as_ref()
+            .map(|p| Arc::new(planned(p, axis.raw.kind, files))),
         ..slot
     };
     let paths = match axis.data.resolve(files.dir, files.allow_outside) {
@@ -479,7 +487,9 @@ fn run_test(
     let spec_arc = completed.map(|(s, _)| s);
     let axis: &AxisSpec = spec_arc.as_deref().unwrap_or(axis);
     let (data, nde) = apply_nde(axis, data);
-    let findings = rules::check(&plan_context(axis), &data);
+    let mut context = plan_context(axis);
+    context.planned = slot.planned.clone();
+    let findings = rules::check(&context, &data);
     let evaluation = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
         Gost27843 {
             s_method: SMethod::Ranges,
@@ -645,6 +655,29 @@ pub fn plan_context(axis: &AxisSpec) -> PlanContext {
         axis_travel: axis.raw.travel,
         measurement_travel: axis.raw.measurement_travel,
         pitch: axis.raw.pitch,
+        planned: None,
+    }
+}
+
+/// The planned test `raw` names, read as the rules compare it (or why it cannot be read).
+fn planned(raw: &crate::campaign::model::PlanRaw, kind: AxisKind, files: &Files) -> rules::Planned {
+    let read = || -> Result<(Vec<f64>, usize), String> {
+        let path = crate::campaign::paths::contained(files.dir, &raw.file, files.allow_outside)?;
+        let text =
+            crate::files::read_to_string_within(&path, files.root).map_err(|e| e.to_string())?;
+        let plan = crate::plan::Plan::from_yaml(&text, &raw.file).map_err(|e| e.to_string())?;
+        if plan.axis.kind != kind {
+            return Err(format!(
+                "it plans a {} axis, this one is {kind}",
+                plan.axis.kind
+            ));
+        }
+        Ok((plan.targets, plan.runs))
+    };
+    rules::Planned {
+        file: raw.file.clone(),
+        read: read(),
+        tolerance: raw.tolerance.unwrap_or(0.01),
     }
 }
 

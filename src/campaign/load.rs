@@ -160,6 +160,7 @@ fn validated_axis(
     check_travels(&raw, base, index)?;
     check_pitch(&raw, base, index)?;
     check_compensation(&raw, base, index)?;
+    check_plan(&raw, base, index)?;
     check_tolerances(&raw, base, index)?;
     check_instrument(&raw, base, index)?;
     Ok((raw, standard, data))
@@ -228,6 +229,20 @@ fn check_pitch(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), L
             index.value(&format!("{base}.pitch")),
             format!("{base}.pitch: expected a pitch > 0"),
         )),
+        _ => Ok(()),
+    }
+}
+
+/// A plan's tolerance is a distance > 0.
+fn check_plan(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    match raw.plan.as_ref().and_then(|p| p.tolerance) {
+        Some(t) if !(t > 0.0 && t.is_finite()) => {
+            let path = format!("{base}.plan.tolerance");
+            Err(Located::new(
+                index.value(&path),
+                format!("{path}: expected a distance > 0"),
+            ))
+        }
         _ => Ok(()),
     }
 }

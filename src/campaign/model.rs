@@ -148,6 +148,14 @@ pub struct AxisRaw {
     /// The compensation table's grid, when the machine names a controller.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub compensation: Option<CompensationRaw>,
+    /// The test planned for the axis (`axcheck plan -o`): its measurement is compared with
+    /// it. `plan: FILE` or `plan: {file: FILE, tolerance: 0.01}`.
+    #[serde(
+        default,
+        deserialize_with = "plan_ref",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub plan: Option<PlanRaw>,
     #[serde(default)]
     pub conditions: Conditions,
 }
@@ -181,6 +189,34 @@ pub struct CompensationRaw {
     /// and the table, to compare the prediction with this test.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub verifies: Option<VerifiesRaw>,
+}
+
+/// A planned test: its file (relative to the campaign, like data files) and how far a
+/// measured target may lie from its planned position (mm or deg; default 0.01).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlanRaw {
+    pub file: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+}
+
+/// Reads `FILE` or `{file, tolerance}`.
+fn plan_ref<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<PlanRaw>, D::Error> {
+    let value = Value::deserialize(deserializer)?;
+    match &value {
+        Value::String(s) => Ok(Some(PlanRaw {
+            file: s.clone(),
+            tolerance: None,
+        })),
+        Value::Mapping(_) => PlanRaw::deserialize(value)
+            .map(Some)
+            .map_err(D::Error::custom),
+        other => Err(D::Error::custom(format!(
+            "expected a plan file or {{file: FILE, tolerance: N}}, got {}",
+            describe(other)
+        ))),
+    }
 }
 
 /// What was active during a test: `active: none`, or `active: {file: FILE, backlash_um: N}`

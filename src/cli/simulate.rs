@@ -35,6 +35,10 @@ pub struct Args {
     /// The controller whose format --active is in.
     #[arg(long, short)]
     controller: Option<String>,
+    /// A plan file (`axcheck plan -o`) in place of the model's plan: its targets, runs,
+    /// cycle, overrun, dwell and feed.
+    #[arg(long, value_name = "PLAN.yaml")]
+    plan: Option<PathBuf>,
 }
 
 /// Runs `simulate`: writes the fleet or the file, or returns the CSV to print.
@@ -51,7 +55,7 @@ pub fn command(args: &Args) -> Result<Option<String>> {
         backlash: args.active_backlash,
         controller: args.controller.as_deref(),
     };
-    let csv = run(model, args.seed, &active)?;
+    let csv = run(model, args.seed, &active, args.plan.as_deref())?;
     let Some(path) = &args.output else {
         return Ok(Some(csv));
     };
@@ -69,12 +73,34 @@ pub struct Active<'a> {
     pub controller: Option<&'a str>,
 }
 
-/// Simulates `model`, with `active`'s correction added to every reading as the controller
-/// adds it, and returns the CSV text.
-pub fn run(model: &Path, seed: Option<u64>, active: &Active) -> Result<String> {
+/// Simulates `model` (on `plan`'s targets and cycle when one is given), with `active`'s
+/// correction added to every reading as the controller adds it, and returns the CSV text.
+pub fn run(
+    model: &Path,
+    seed: Option<u64>,
+    active: &Active,
+    plan: Option<&Path>,
+) -> Result<String> {
     let text = axcheck::files::read_to_string(model)
         .with_context(|| format!("cannot read the model file {}", model.display()))?;
-    let sim = Simulation::from_yaml(&text, &model.display().to_string())?;
+    let mut sim = Simulation::from_yaml(&text, &model.display().to_string())?;
+    if let Some(path) = plan {
+        let text = axcheck::files::read_to_string(path)
+            .with_context(|| format!("cannot read the plan {}", path.display()))?;
+        let plan = axcheck::plan::Plan::from_yaml(&text, &path.display().to_string())?;
+        if plan.axis.kind != sim.kind {
+            bail!(
+                "{} is a plan for a {} axis, {} a model of a {} one",
+                path.display(),
+                plan.axis.kind,
+                model.display(),
+                sim.kind
+            );
+        }
+        sim.plan = plan.test_plan();
+        sim.validate()
+            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    }
     let seed = seed.unwrap_or(sim.seed);
     let mut data = sim.run(seed);
     let mut with = None;

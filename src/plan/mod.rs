@@ -260,6 +260,7 @@ fn findings(plan: &Plan) -> Result<Vec<Finding>, PlanError> {
         axis_travel: Some(plan.axis.travel),
         measurement_travel: Some(plan.measurement_travel),
         pitch,
+        planned: None,
     };
     let mut out = rules::check(&ctx(plan.axis.pitch), &data);
     if let Some(scale) = plan.axis.scale_pitch {

@@ -26,6 +26,7 @@ mod iso_4_3_4_targets;
 mod iso_4_3_5_range;
 mod iso_4_3_5_runs;
 mod iso_4_3_5_spacing;
+mod plan_targets;
 
 use crate::evaluate::StandardId;
 use crate::measurement::AxisData;
@@ -62,7 +63,7 @@ pub struct Finding {
 }
 
 /// What the campaign says about the axis, besides its data.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct PlanContext {
     pub kind: AxisKind,
     pub standard: StandardId,
@@ -70,6 +71,19 @@ pub struct PlanContext {
     pub measurement_travel: Option<[f64; 2]>,
     /// Lead-screw or encoder pitch, mm or deg.
     pub pitch: Option<f64>,
+    /// The test planned for the axis (`plan:`), to compare the measurement with.
+    pub planned: Option<std::sync::Arc<Planned>>,
+}
+
+/// A planned test as the rules compare it: its targets (mm or deg) and runs, or why its
+/// file could not be read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Planned {
+    /// The plan file as the campaign names it.
+    pub file: String,
+    pub read: Result<(Vec<f64>, usize), String>,
+    /// How far a measured target may lie from its planned position, mm or deg.
+    pub tolerance: f64,
 }
 
 /// A test-plan rule: what it is called and enforces, and its check.
@@ -117,6 +131,7 @@ pub const RULES: &[Rule] = &[
     iso_4_2_pitch_alias::RULE,
     iso_3_3_thermal::RULE,
     data_unit::RULE,
+    plan_targets::RULE,
 ];
 
 /// Checks the plan of one test.

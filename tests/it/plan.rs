@@ -134,3 +134,155 @@ fn a_plan_keeps_room_to_reverse_and_the_principal_positions() {
     let p = plan::plan(&long, &Motion::default(), 1).unwrap();
     assert_eq!((p.targets.len(), p.runs), (17, 1));
 }
+
+/// From plan to measurement to evaluation, on the command line: the plan written, an axis
+/// simulated on it, a campaign naming it. Measured as planned, no rule finds anything; with
+/// a target left out and another moved by 0.5 mm, `plan-targets` names both.
+#[test]
+fn a_campaign_names_what_its_measurement_changed_from_its_plan() {
+    use crate::common::{axcheck, scratch};
+    let dir = scratch("plan-campaign");
+    let path = |name: &str| dir.join(name).to_string_lossy().into_owned();
+    let (code, out, err) = axcheck(&[
+        "plan",
+        "--kind",
+        "linear",
+        "--travel",
+        "0,800",
+        "--pitch",
+        "10",
+        "--seed",
+        "3",
+        "-o",
+        &path("x-plan.yaml"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("Every test-plan rule holds"), "{out}");
+    let model = "kind: linear\nseed: 5\nmodel:\n  scale_um_per_m: 12\n  reversal_um: 3\n  scatter_um: 0.4\nplan:\n  targets: {start_mm: 0, end_mm: 100, count: 2}\n";
+    std::fs::write(dir.join("x.yaml"), model).unwrap();
+    let (code, _, err) = axcheck(&[
+        "simulate",
+        &path("x.yaml"),
+        "--plan",
+        &path("x-plan.yaml"),
+        "-o",
+        &path("data/x.csv"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    // The same test with target 3 left out and target 5 typed 0.5 mm further.
+    let plan = axcheck::plan::Plan::from_yaml(
+        &std::fs::read_to_string(dir.join("x-plan.yaml")).unwrap(),
+        "x-plan.yaml",
+    )
+    .unwrap();
+    let (t3, t5) = (plan.targets[2], plan.targets[4]);
+    let csv = std::fs::read_to_string(dir.join("data/x.csv")).unwrap();
+    let changed: String = csv
+        .lines()
+        .filter_map(|l| {
+            let target: Option<f64> = l.split(',').next().and_then(|t| t.parse().ok());
+            match target {
+                Some(t) if t == t3 => None,
+                Some(t) if t == t5 => {
+                    Some(l.replacen(&format!("{t5}"), &format!("{}", t5 + 0.5), 1))
+                }
+                _ => Some(l.to_string()),
+            }
+        })
+        .map(|l| l + "\n")
+        .collect();
+    std::fs::write(dir.join("data/y.csv"), changed).unwrap();
+    let axis = |name: &str| {
+        format!(
+            "      - {{name: {name}, kind: linear, travel: [0, 800], pitch: 10, data: data/{}.csv, plan: x-plan.yaml}}\n",
+            name.to_lowercase()
+        )
+    };
+    let campaign = format!(
+        "campaign: {{name: planned}}\nmachines:\n  - id: M\n    axes:\n{}{}",
+        axis("X"),
+        axis("Y")
+    );
+    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
+    let (_, _, err) = axcheck(&[
+        "run",
+        &path("campaign.yaml"),
+        "--out",
+        &path("out"),
+        "--no-pdf",
+    ]);
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("out/results.json")).unwrap())
+            .unwrap();
+    let rules = |axis: &str| {
+        let axes = json["axes"].as_array().unwrap();
+        axes.iter().find(|a| a["axis"] == axis).unwrap()["rules"].clone()
+    };
+    assert_eq!(rules("X"), serde_json::json!([]), "{err}");
+    let y = rules("Y");
+    let found: Vec<&str> = y
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["id"].as_str().unwrap())
+        .collect();
+    assert!(found.contains(&"plan-targets"), "{y}");
+    let message = y
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|f| f["id"] == "plan-targets")
+        .unwrap()["message"]
+        .as_str()
+        .unwrap()
+        .to_string();
+    let at = |x: f64| format!("{x:.3} mm");
+    assert_eq!(
+        message,
+        format!(
+            "against the plan x-plan.yaml: T3 at {} is missing; T5 planned at {} was measured at {} (0.500 mm off, over the tolerance of 0.010 mm)",
+            at(t3),
+            at(t5),
+            at(t5 + 0.5)
+        )
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The target block for the laser software reads back, with axcheck's Renishaw reader, as
+/// the plan's targets in their numbers; the reading order lists each reading once.
+#[test]
+fn the_laser_software_gets_the_plans_targets_and_order() {
+    let axis = Axis {
+        kind: AxisKind::Linear,
+        standard: StandardId::Iso230_2,
+        travel: Travel::Range([0.0, 1500.0]),
+        measurement_travel: None,
+        pitch: Some(20.0),
+        scale_pitch: None,
+    };
+    let p = plan::plan(&axis, &Motion::default(), 4).unwrap();
+    let m = p.targets.len();
+    let mut rtl =
+        String::from("HEADER::\nFile type  : rtl\nOwner      : Linear\nVersion no : V20.02.02\n\n");
+    rtl.push_str(&plan::laser::rtl_targets(&p));
+    rtl.push_str("\nRUNS::\nRun-count:2\n\nDEVIATIONS::\nRun Target Data:\n");
+    for i in 1..=m {
+        rtl.push_str(&format!("1 {i} 0.500\n"));
+    }
+    for i in (1..=m).rev() {
+        rtl.push_str(&format!("2 {i} -0.500\n"));
+    }
+    rtl.push_str("\nEOF::\n");
+    let read = axcheck::measurement::read(rtl.as_bytes(), "plan.rtl").unwrap();
+    assert_eq!(read.data.targets, p.targets);
+    let csv = plan::laser::readings_csv(&p);
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "reading,run,direction,target,position_mm");
+    assert_eq!(lines.len(), 1 + 2 * m * p.runs);
+    assert_eq!(lines[1], format!("1,1,up,1,{:.3}", p.targets[0]));
+    assert_eq!(
+        lines[m + 1],
+        format!("{},1,down,{m},{:.3}", m + 1, p.targets[m - 1])
+    );
+}

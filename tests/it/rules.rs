@@ -52,6 +52,7 @@ fn ctx(kind: AxisKind) -> PlanContext {
         axis_travel: None,
         measurement_travel: None,
         pitch: None,
+        planned: None,
     }
 }
 
