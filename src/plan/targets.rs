@@ -84,7 +84,7 @@ pub fn place(
     let mut best: Option<(f64, Vec<f64>)> = None;
     for draw in 0..CANDIDATES {
         let mut rng = Rng::new(seed, draw);
-        let targets = draw_targets(fixed, &segments, widest, &mut rng);
+        let targets = draw_targets(fixed, &segments, widest, periods, &mut rng);
         let score = spread(&targets, periods);
         if best.as_ref().is_none_or(|(b, _)| score < *b - 1e-12) {
             best = Some((score, targets));
@@ -126,14 +126,24 @@ fn segments(fixed: &[f64], count: usize, widest: Option<f64>) -> Vec<usize> {
     n
 }
 
-/// One draw: in each segment its free targets evenly spaced, each offset by up to a
-/// quarter of the spacing (less where `widest` leaves less room), to 0.001.
-fn draw_targets(fixed: &[f64], segments: &[usize], widest: Option<f64>, rng: &mut Rng) -> Vec<f64> {
+/// One draw: in each segment its free targets evenly spaced, each offset by up to the
+/// longest period (enough to reach every phase of it) or a tenth of the spacing, whichever
+/// is more (unequal spacing, 4.2); never more than a quarter of the spacing, nor than
+/// `widest` leaves room for; to 0.001.
+fn draw_targets(
+    fixed: &[f64],
+    segments: &[usize],
+    widest: Option<f64>,
+    periods: &[f64],
+    rng: &mut Rng,
+) -> Vec<f64> {
+    let longest = periods.iter().copied().fold(0.0, f64::max);
     let mut out = vec![recorded(fixed[0])];
     for (k, &n) in segments.iter().enumerate() {
         let (a, b) = (fixed[k], fixed[k + 1]);
         let gap = (b - a) / (n + 1) as f64;
-        let mut jitter = gap / 4.0;
+        let reach = longest.max(gap / 10.0);
+        let mut jitter = reach.min(gap / 4.0);
         if let Some(w) = widest {
             jitter = jitter.min(((w - gap) / 2.0).max(0.0));
         }
