@@ -286,3 +286,60 @@ fn the_laser_software_gets_the_plans_targets_and_order() {
         format!("{},1,down,{m},{:.3}", m + 1, p.targets[m - 1])
     );
 }
+
+/// An axis of a campaign is planned with its travels, pitch and conditions; its name is the
+/// program's axis address; a control that cannot take the name says so.
+#[test]
+fn a_campaign_axis_is_planned_with_its_conditions() {
+    use crate::common::axcheck;
+    let (code, out, err) = axcheck(&[
+        "plan",
+        "--campaign",
+        "example-campaign/campaign.yaml",
+        "--machine",
+        "VMC-07",
+        "--axis",
+        "X",
+        "--program",
+        "linuxcnc",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.starts_with("Test plan: 5 targets over 10.000 … 990.000 mm (ISO 230-2:1997), n = 5, standard cycle, overrun 5.000 mm, dwell 4.0 s, feed 2000 mm/min\n"),
+        "{out}"
+    );
+    assert!(
+        out.contains("\nG1 X5.000 F2000.000 (start at 5.000 mm)\n"),
+        "{out}"
+    );
+    assert!(out.contains("\nG4 P4.000\n"), "{out}");
+    let (code, _, err) = axcheck(&[
+        "plan",
+        "--campaign",
+        "example-campaign/campaign.yaml",
+        "--machine",
+        "ESS-BIFROST",
+        "--axis",
+        "slit 1",
+        "--program",
+        "fanuc",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("axis ESS-BIFROST slit 1 gives no travel: a plan needs it"),
+        "{err}"
+    );
+    let (code, _, err) = axcheck(&[
+        "plan",
+        "--kind",
+        "linear",
+        "--travel",
+        "600",
+        "--program",
+        "fanuc",
+        "--axis",
+        "X1",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("FANUC addresses an axis by one of the letters X, Y, Z, A, B, C, U, V, W; got `X1` (--axis)"), "{err}");
+}
