@@ -190,6 +190,7 @@ pub fn model(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
+    plan_file(text);
     let Ok(sim) = axcheck::simulate::Simulation::from_yaml(text, "fuzz-model.yaml") else {
         return;
     };
@@ -200,6 +201,35 @@ pub fn model(data: &[u8]) {
     if let Ok(read) = measurement::csv::parse(csv.as_bytes(), "simulated.csv") {
         check_data(&read);
     }
+}
+
+/// The plan file (`axcheck plan -o`): a plan that loads is written again and loads to the
+/// same plan, and every control's part program and the laser's lists are written for it.
+fn plan_file(text: &str) {
+    use axcheck::plan::{Plan, laser, programs};
+    let Ok(plan) = Plan::from_yaml(text, "fuzz-plan.yaml") else {
+        return;
+    };
+    let again = Plan::from_yaml(&plan.to_yaml(), "again.yaml");
+    assert_eq!(
+        again.as_ref().ok(),
+        Some(&plan),
+        "{again:?}\n{}",
+        plan.to_yaml()
+    );
+    let axis = match plan.axis.kind {
+        AxisKind::Linear => "X",
+        AxisKind::Rotary => "C",
+    };
+    for dialect in programs::DIALECTS {
+        let job = programs::Job {
+            plan: &plan,
+            axis,
+            name: "FUZZ",
+        };
+        let _ = dialect.write(&job);
+    }
+    let _ = (laser::readings_csv(&plan), laser::rtl_targets(&plan));
 }
 
 /// The acceptance-spec loader, then each band lookup and a judgement against it.
