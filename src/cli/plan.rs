@@ -75,7 +75,8 @@ pub struct Args {
     /// The program's name (default: the output file's name, else ISO230 and the axis).
     #[arg(long)]
     name: Option<String>,
-    /// Where to write: the part program with --program, else the plan (YAML).
+    /// Where to write: the part program with --program, else the plan (YAML; without -o it
+    /// follows the table on the console).
     #[arg(long, short)]
     out: Option<PathBuf>,
     /// Also write the plan (YAML) here, beside a program.
@@ -149,6 +150,9 @@ pub fn run(args: &Args) -> Result<String> {
         }
     } else if let Some(path) = &args.out {
         written(path, &plan.to_yaml(), &mut text, "plan")?;
+    } else {
+        text.push('\n');
+        text.push_str(&plan.to_yaml());
     }
     if let Some(path) = &args.readings_csv {
         written(
