@@ -11,7 +11,7 @@
 //! forced decimals). Unconfirmed: the parameter numbers 3401#0 and 3405#1, the program
 //! number's range on each machine.
 
-use super::{Block, Dialect, Job, ProgramError, Purpose, is_incremental, number, one_letter};
+use super::{Block, Dialect, Job, ProgramError, Purpose, g_move, number, one_letter, plain_word};
 
 pub struct Fanuc;
 
@@ -53,29 +53,18 @@ impl Dialect for Fanuc {
         (first, vec!["G17 G21 G40 G49 G80 G90 G94".to_string()])
     }
 
+    /// The start in `G90 G01` (set again, as the program may follow another); the others
+    /// modal.
     fn move_to(&self, job: &Job, block: &Block, feed: Option<f64>) -> Vec<String> {
-        let Block::Move { position, by, what } = block else {
-            return Vec::new();
-        };
-        let word = if is_incremental(job, block) {
-            *by
-        } else {
-            *position
-        };
-        let mut line = String::new();
-        if matches!(what, Purpose::Start) {
-            line.push_str("G90 G01 ");
-        }
-        line.push_str(&format!("{}{}", job.axis, number(word)));
-        if let Some(f) = feed {
-            line.push_str(&format!(" F{}", number(f)));
-        }
-        let unit = job.kind().position_unit();
-        line.push_str(&format!(
-            " {}",
-            self.comment(&format!("{} AT {} {unit}", what.text(), number(*position)))
-        ));
-        vec![line]
+        let start = matches!(
+            block,
+            Block::Move {
+                what: Purpose::Start,
+                ..
+            }
+        );
+        let prefix = if start { "G90 G01 " } else { "" };
+        g_move(self, job, block, feed, prefix, plain_word)
     }
 
     fn dwell(&self, seconds: f64) -> Vec<String> {

@@ -10,7 +10,7 @@
 //! `src/emc/rs274ngc/interp_find.cc` `unwrap_rotary` (G90 and G53 only). Unconfirmed:
 //! nothing in the syntax; the program has not been run on a machine.
 
-use super::{Block, Dialect, Job, ProgramError, is_incremental, number, one_letter};
+use super::{Block, Dialect, Job, ProgramError, g_move, number, one_letter, plain_word};
 
 pub struct LinuxCnc;
 
@@ -41,25 +41,7 @@ impl Dialect for LinuxCnc {
     }
 
     fn move_to(&self, job: &Job, block: &Block, feed: Option<f64>) -> Vec<String> {
-        let Block::Move { position, by, what } = block else {
-            return Vec::new();
-        };
-        let value = if is_incremental(job, block) {
-            *by
-        } else {
-            *position
-        };
-        let mut line = format!("G1 {}{}", job.axis, number(value));
-        if let Some(f) = feed {
-            line.push_str(&format!(" F{}", number(f)));
-        }
-        let unit = job.kind().position_unit();
-        line.push_str(&format!(
-            " ({} at {} {unit})",
-            what.text(),
-            number(*position)
-        ));
-        vec![line]
+        g_move(self, job, block, feed, "G1 ", plain_word)
     }
 
     fn dwell(&self, seconds: f64) -> Vec<String> {

@@ -225,6 +225,39 @@ pub fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, Program
     Ok(lines.join("\n") + "\n")
 }
 
+/// A G-code move block: `prefix` (`G1 `), the axis word `word(axis, value)` (the absolute
+/// position, or on a rotary axis after the start the signed move), ` F…` with the first
+/// move, and a comment with the target's number and absolute position.
+pub fn g_move<D: Dialect + ?Sized>(
+    d: &D,
+    job: &Job,
+    block: &Block,
+    feed: Option<f64>,
+    prefix: &str,
+    word: fn(&str, f64) -> String,
+) -> Vec<String> {
+    let Block::Move { position, by, what } = block else {
+        return Vec::new();
+    };
+    let value = if is_incremental(job, block) {
+        *by
+    } else {
+        *position
+    };
+    let mut line = format!("{prefix}{}", word(job.axis, value));
+    if let Some(f) = feed {
+        line.push_str(&format!(" F{}", number(f)));
+    }
+    let unit = job.kind().position_unit();
+    let note = d.comment(&format!("{} at {} {unit}", what.text(), number(*position)));
+    vec![format!("{line} {note}")]
+}
+
+/// `X10.000`: the axis letter and the number.
+pub fn plain_word(axis: &str, value: f64) -> String {
+    format!("{axis}{}", number(value))
+}
+
 /// Whether a move of a program for `job` is written incrementally: on a rotary axis, all
 /// but the start.
 pub fn is_incremental(job: &Job, block: &Block) -> bool {

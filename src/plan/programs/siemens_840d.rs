@@ -11,7 +11,7 @@
 //! R2 §7.2 (MD30455); the Autodesk 840D post (`G4 F` seconds, frame). Unconfirmed: `G4 F`
 //! is quoted from secondary sources; `G500` is a zero offset only if its frame is zero.
 
-use super::{Block, Dialect, Job, ProgramError, identifier, is_incremental, number};
+use super::{Block, Dialect, Job, ProgramError, g_move, identifier, number};
 
 pub struct Siemens840d;
 
@@ -47,25 +47,7 @@ impl Dialect for Siemens840d {
     }
 
     fn move_to(&self, job: &Job, block: &Block, feed: Option<f64>) -> Vec<String> {
-        let Block::Move { position, by, what } = block else {
-            return Vec::new();
-        };
-        let value = if is_incremental(job, block) {
-            *by
-        } else {
-            *position
-        };
-        let mut line = format!("G1 {}", word(job.axis, value));
-        if let Some(f) = feed {
-            line.push_str(&format!(" F{}", number(f)));
-        }
-        let unit = job.kind().position_unit();
-        line.push_str(&format!(
-            " ; {} at {} {unit}",
-            what.text(),
-            number(*position)
-        ));
-        vec![line]
+        g_move(self, job, block, feed, "G1 ", word)
     }
 
     fn dwell(&self, seconds: f64) -> Vec<String> {

@@ -11,7 +11,7 @@
 //! modulo axes", "Zero offsets" (G53 as deselection depends on P-ZERO-00001). Unconfirmed:
 //! the program has not been run on a control.
 
-use super::{Block, Dialect, Job, ProgramError, identifier, is_incremental, number};
+use super::{Block, Dialect, Job, ProgramError, g_move, identifier, number, plain_word};
 
 pub struct TwinCat;
 
@@ -40,25 +40,7 @@ impl Dialect for TwinCat {
     }
 
     fn move_to(&self, job: &Job, block: &Block, feed: Option<f64>) -> Vec<String> {
-        let Block::Move { position, by, what } = block else {
-            return Vec::new();
-        };
-        let value = if is_incremental(job, block) {
-            *by
-        } else {
-            *position
-        };
-        let mut line = format!("G01 {}{}", job.axis, number(value));
-        if let Some(f) = feed {
-            line.push_str(&format!(" F{}", number(f)));
-        }
-        let unit = job.kind().position_unit();
-        line.push_str(&format!(
-            " ; {} at {} {unit}",
-            what.text(),
-            number(*position)
-        ));
-        vec![line]
+        g_move(self, job, block, feed, "G01 ", plain_word)
     }
 
     fn dwell(&self, seconds: f64) -> Vec<String> {
