@@ -271,6 +271,35 @@ fn compare(
     Ok(v)
 }
 
+/// The compensation of a test by its machine's `controller` (none: no table), with the
+/// warnings of its diagnosis (`diagnose` runs it when the run did not), and what its
+/// re-measurement is compared with when it verifies a table.
+pub fn for_test(
+    controller: Option<&str>,
+    axis: &AxisSpec,
+    data: &AxisData,
+    files: &Files,
+    diagnosis: Option<&crate::diagnose::Diagnosis>,
+    diagnose: impl FnOnce() -> crate::diagnose::Diagnosis,
+) -> (
+    Option<compensate::Compensation>,
+    Option<Result<VerifyCase, String>>,
+) {
+    let Some(c) = controller.and_then(crate::compensate::controllers::find) else {
+        return (None, None);
+    };
+    let own;
+    let diagnosis = match diagnosis {
+        Some(d) => d,
+        None => {
+            own = diagnose();
+            &own
+        }
+    };
+    let (compensation, case) = of_test(c, axis, data, files, diagnosis);
+    (Some(compensation), case)
+}
+
 /// The compensation of a test by `controller` as its axis states it, and what its
 /// re-measurement is compared with when it verifies a table. A table file that cannot be
 /// read leaves the compensation refused with the reason (the test is still judged).

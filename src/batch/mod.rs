@@ -537,25 +537,15 @@ fn run_test(
         )
     };
     let diagnosis = options.diagnose.then(diagnosis_of);
-    // The compensation's warnings come from the diagnosis, run for them when not asked for.
-    let compensated = (slot.machine.controller.as_deref())
-        .filter(|_| options.compensate)
-        .and_then(crate::compensate::controllers::find)
-        .map(|c| {
-            let own;
-            let diagnosis = match &diagnosis {
-                Some(d) => d,
-                None => {
-                    own = diagnosis_of();
-                    &own
-                }
-            };
-            compensation::of_test(c, axis, &data, files, diagnosis)
-        });
-    let (compensation, verify_case) = match compensated {
-        Some((c, case)) => (Some(c), case),
-        None => (None, None),
-    };
+    let controller = (slot.machine.controller.as_deref()).filter(|_| options.compensate);
+    let (compensation, verify_case) = compensation::for_test(
+        controller,
+        axis,
+        &data,
+        files,
+        diagnosis.as_ref(),
+        diagnosis_of,
+    );
     let mut slot = slot;
     if let Some(spec) = spec_arc {
         slot.spec = Some(spec);
