@@ -158,6 +158,32 @@ pub fn problems(result: &CampaignResult, where_all: &str) -> Vec<String> {
     lines
 }
 
+/// One line naming the rule warnings of the campaign and on how many tests each was found
+/// (a warning does not change a verdict, so a passing test may carry one): `Warnings:
+/// plan-targets on 2 tests, iso-3.3-thermal on 1 (all in summary.md)`. None without any.
+pub fn warnings_line(result: &CampaignResult, where_all: &str) -> Option<String> {
+    let mut tests_per_rule: std::collections::BTreeMap<&str, usize> = Default::default();
+    for t in &result.tests {
+        let ids: std::collections::BTreeSet<&str> = (t.findings.iter())
+            .filter(|f| f.severity == axcheck::rules::Severity::Warning)
+            .map(|f| f.id)
+            .collect();
+        for id in ids {
+            *tests_per_rule.entry(id).or_default() += 1;
+        }
+    }
+    let mut counted: Vec<(&str, usize)> = tests_per_rule.into_iter().collect();
+    counted.sort_by_key(|(_, n)| std::cmp::Reverse(*n));
+    let parts: Vec<String> = (counted.iter().enumerate())
+        .map(|(i, (id, n))| match (i, n) {
+            (0, 1) => format!("{id} on 1 test"),
+            (0, _) => format!("{id} on {n} tests"),
+            _ => format!("{id} on {n}"),
+        })
+        .collect();
+    (!parts.is_empty()).then(|| format!("Warnings: {} ({where_all})", parts.join(", ")))
+}
+
 /// `  FAIL         VMC-07 Y  A = 10.96 µm > 8.00 µm, …`
 fn problem_line(t: &AxisTest, width: usize) -> String {
     let unit = t.kind().map_or("", |k| k.deviation_symbol());
@@ -282,6 +308,9 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         .with_context(|| format!("writing the outputs to {}", out.display()))?;
     println!("{}", counts_line(&result));
     for line in problems(&result, "all in summary.md") {
+        println!("{line}");
+    }
+    if let Some(line) = warnings_line(&result, "all in summary.md") {
         println!("{line}");
     }
     for line in super::tables::lines(&result) {
@@ -451,6 +480,9 @@ pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Re
     let result = evaluate_with(&Campaign::load(path)?, options, progress);
     println!("{}", counts_line(&result));
     for line in problems(&result, "`axcheck run` lists them all in summary.md") {
+        println!("{line}");
+    }
+    if let Some(line) = warnings_line(&result, "`axcheck run` lists them in summary.md") {
         println!("{line}");
     }
     Ok(exit_code(&result))

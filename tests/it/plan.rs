@@ -198,13 +198,19 @@ fn a_campaign_names_what_its_measurement_changed_from_its_plan() {
             name.to_lowercase()
         )
     };
+    // Z names a plan that is not there: its axis gets the finding, the others are judged.
+    std::fs::copy(dir.join("data/x.csv"), dir.join("data/z.csv")).unwrap();
+    let z = axis("Z").replace(
+        "plan: x-plan.yaml",
+        "plan: {file: none.yaml, tolerance: 0.1}",
+    );
     let campaign = format!(
-        "campaign: {{name: planned}}\nmachines:\n  - id: M\n    axes:\n{}{}",
+        "campaign: {{name: planned}}\nmachines:\n  - id: M\n    axes:\n{}{}{z}",
         axis("X"),
         axis("Y")
     );
     std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
-    let (_, _, err) = axcheck(&[
+    let (_, out, err) = axcheck(&[
         "run",
         &path("campaign.yaml"),
         "--out",
@@ -236,6 +242,18 @@ fn a_campaign_names_what_its_measurement_changed_from_its_plan() {
         .as_str()
         .unwrap()
         .to_string();
+    // The console names the warnings, which leave X and Z passing.
+    assert!(
+        out.contains("\nWarnings: plan-targets on 2 tests (all in summary.md)\n"),
+        "{out}"
+    );
+    let z = rules("Z");
+    let z_message = z[0]["message"].as_str().unwrap();
+    assert_eq!(z[0]["id"], "plan-targets", "{z}");
+    assert!(
+        z_message.starts_with("the plan none.yaml cannot be read: "),
+        "{z_message}"
+    );
     let at = |x: f64| format!("{x:.3} mm");
     assert_eq!(
         message,
