@@ -52,6 +52,9 @@ enum Command {
         /// Write no PDF reports.
         #[arg(long)]
         no_pdf: bool,
+        /// Write no summary.html.
+        #[arg(long)]
+        no_html: bool,
         /// Skip the model check and diagnosis of each axis.
         #[arg(long)]
         no_diagnose: bool,
@@ -206,6 +209,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             out,
             jobs,
             no_pdf,
+            no_html,
             no_diagnose,
             templates,
             progress,
@@ -217,6 +221,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 out: &out,
                 jobs,
                 no_pdf,
+                no_html,
                 no_diagnose,
                 templates: templates.as_deref(),
                 progress: progress_of(progress),

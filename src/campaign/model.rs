@@ -68,6 +68,8 @@ pub struct OutputOptions {
     pub pdf: bool,
     /// Model check and diagnosis of every axis.
     pub diagnose: bool,
+    /// Write `summary.html` in `run`.
+    pub html: bool,
 }
 
 impl Default for OutputOptions {
@@ -75,6 +77,7 @@ impl Default for OutputOptions {
         OutputOptions {
             pdf: true,
             diagnose: true,
+            html: true,
         }
     }
 }

@@ -243,6 +243,8 @@ pub struct RunOptions<'a> {
     pub jobs: usize,
     /// Write no PDFs (also `campaign.output.pdf: false`).
     pub no_pdf: bool,
+    /// Write no summary.html (also `campaign.output.html: false`).
+    pub no_html: bool,
     /// A customised copy of `templates/`.
     pub templates: Option<&'a Path>,
     /// Skip the model check and diagnosis (also `campaign.output.diagnose: false`).
@@ -298,6 +300,16 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         Some(Ok(appended)) => appended.trends.clone(),
         _ => None,
     };
+    exporters.push(Box::new(export::xlsx::Xlsx {
+        trends: trends.clone(),
+    }));
+    let html = !options.no_html && campaign.info.output.html;
+    if html {
+        exporters.push(Box::new(export::html::Html {
+            reports: reports.is_some(),
+            trends: trends.clone(),
+        }));
+    }
     if let Some(reports) = reports {
         exporters.push(Box::new(export::pdf::Pdf {
             reports,
@@ -318,10 +330,11 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     }
     let tables = result.tests.iter().any(|t| t.compensation.is_some());
     println!(
-        "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.parquet, results.json, junit.xml{}{}",
+        "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.xlsx, summary.parquet, results.json, junit.xml{}{}{}",
         out.display(),
         written.len(),
         start.elapsed().as_secs_f64(),
+        if html { ", summary.html" } else { "" },
         if pdf {
             ", summary.pdf, reports/MACHINE/AXIS.pdf"
         } else {

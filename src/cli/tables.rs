@@ -5,7 +5,6 @@
 use super::campaign::MAX_PROBLEM_LINES;
 use axcheck::batch::{AxisTest, CampaignResult};
 use axcheck::compensate::Mode;
-use axcheck::units::fmt_fixed;
 
 /// Warnings that concern the state a table builds on, shown on the console once for all
 /// the tests they concern (the others, from the diagnosis, are in the reports and
@@ -101,22 +100,6 @@ fn verification(t: &AxisTest) -> Option<String> {
     let unit = t.kind().map_or("", |k| k.deviation_symbol());
     Some(match v {
         Err(e) => format!("Verification of {}: not made: {e}", t.label()),
-        Ok(v) => {
-            let findings: Vec<&str> = v.findings.iter().map(|f| f.effect.name()).collect();
-            let found = if findings.is_empty() {
-                String::new()
-            } else {
-                format!("; found: {}", findings.join(", "))
-            };
-            format!(
-                "Verification of {}: {}: E {} {unit} before, {} predicted, {} achieved (U {}){found}",
-                t.label(),
-                v.verdict.name(),
-                fmt_fixed(v.e.before, 2),
-                fmt_fixed(v.e.predicted, 2),
-                fmt_fixed(v.e.achieved, 2),
-                fmt_fixed(v.e.uncertainty, 2)
-            )
-        }
+        Ok(v) => format!("Verification of {}: {}", t.label(), v.summary(unit)),
     })
 }

@@ -3,9 +3,12 @@
 
 pub mod compensation;
 pub mod csv;
+#[cfg(feature = "pdf")]
+pub mod html;
 pub mod json;
 pub mod junit;
 pub mod markdown;
+pub mod overview;
 #[cfg(feature = "parquet")]
 pub mod parquet;
 pub mod paths;
@@ -13,6 +16,7 @@ pub mod paths;
 pub mod pdf;
 pub mod table;
 mod workers;
+pub mod xlsx;
 
 use crate::batch::CampaignResult;
 use std::path::{Path, PathBuf};

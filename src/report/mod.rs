@@ -111,6 +111,51 @@ impl Files {
     }
 }
 
+/// The figures of ISO 230-2 Fig. 2a (bidirectional) and Fig. 2b (unidirectional) of an
+/// evaluation, as the axis report shows them (`summary.html` draws the same scenes).
+pub fn iso_charts(e: &crate::evaluate::Evaluation) -> [Scene; 2] {
+    let (chart, up, down) = data::axis_chart(e);
+    let style = |height_px| charts::Style {
+        width_px: CHART_WIDTH_PX,
+        height_px,
+    };
+    [
+        charts::bidirectional(&chart, &style(CHART_HEIGHT_PX)),
+        charts::unidirectional(&chart, &up, &down, &style(UNIDIRECTIONAL_HEIGHT_PX)),
+    ]
+}
+
+/// A test's history over the inspections: the report's section and its charts.
+pub struct History {
+    pub section: data::trends::HistorySection,
+    pub charts: Vec<HistoryChart>,
+}
+
+/// One parameter's history chart.
+pub struct HistoryChart {
+    /// The chart's file name in the report.
+    pub name: String,
+    /// The parameter charted, as the chart labels it.
+    pub label: String,
+    pub scene: Scene,
+}
+
+/// A test's history (when the run keeps one and the test has a series in it).
+pub fn history(test: &AxisTest, trends: Option<&AxisTrends>) -> Option<History> {
+    let trends = trends?;
+    let m = &test.machine;
+    let pairs = trends.axis(&m.id, m.serial.as_deref(), &test.axis);
+    let (section, charts) = data::trends::history_section(pairs, trends.options.horizon_years)?;
+    let charts = (charts.into_iter())
+        .map(|(name, chart)| HistoryChart {
+            label: chart.value_label.clone(),
+            scene: trend_chart::trend(&chart, &TREND_STYLE),
+            name,
+        })
+        .collect();
+    Some(History { section, charts })
+}
+
 /// `root`: the real path of `dir`, which the opened template must lie in
 /// ([`crate::files::open_within`]): a link swapped after the check is refused.
 fn read_template(dir: &Path, root: Option<&Path>, name: &str) -> Result<String, ReportError> {
@@ -227,30 +272,21 @@ impl Reports {
         let document = test.label();
         let mut report = data::axis_report(result, test);
         let mut history_charts = Vec::new();
-        if let Some(trends) = trends {
-            let m = &test.machine;
-            let pairs = trends.axis(&m.id, m.serial.as_deref(), &test.axis);
-            if let Some((section, charts)) =
-                data::trends::history_section(pairs, trends.options.horizon_years)
-            {
-                report = report.with_history(section);
-                history_charts = charts;
-            }
+        if let Some(history) = history(test, trends) {
+            report = report.with_history(history.section);
+            history_charts = history.charts;
         }
         let mut files = Files::data(&document, &report)?;
-        for (name, chart) in history_charts {
-            files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
+        for chart in history_charts {
+            files.chart(&chart.name, chart.scene);
         }
         if let Some(e) = &test.evaluation {
-            let (chart, up, down) = data::axis_chart(e);
             let style = |height_px| charts::Style {
                 width_px: CHART_WIDTH_PX,
                 height_px,
             };
-            let bidirectional = charts::bidirectional(&chart, &style(CHART_HEIGHT_PX));
+            let [bidirectional, unidirectional] = iso_charts(e);
             files.chart("bidirectional", bidirectional);
-            let tall = style(UNIDIRECTIONAL_HEIGHT_PX);
-            let unidirectional = charts::unidirectional(&chart, &up, &down, &tall);
             files.chart("unidirectional", unidirectional);
             if let Some(d) = &test.diagnosis {
                 diagnosis_files(&mut files, d);

@@ -412,14 +412,21 @@ fn push_shapes(out: &mut String, shapes: &[Shape]) {
         if shape.opacity != 1.0 {
             let _ = write!(out, " opacity=\"{}\"", shape.opacity);
         }
-        out.push_str(" d=\"");
-        for (i, outline) in shape.outlines.iter().enumerate() {
+        let _ = writeln!(out, " d=\"{}\"/>", shape.path_data());
+    }
+}
+
+impl Shape {
+    /// The outlines as one SVG path's `d`, as [`Scene::svg`] writes them.
+    pub fn path_data(&self) -> String {
+        let mut out = String::new();
+        for (i, outline) in self.outlines.iter().enumerate() {
             if i > 0 {
                 out.push(' ');
             }
-            push_path_data(out, outline);
+            push_path_data(&mut out, outline);
         }
-        out.push_str("\"/>\n");
+        out
     }
 }
 

@@ -138,6 +138,27 @@ pub struct Verification {
     pub notes: Vec<String>,
 }
 
+impl Verification {
+    /// `effective: E 21.90 µm before, 1.20 predicted, 1.41 achieved (U 1.84); found:
+    /// sign_inverted`: the verdict on E (ISO 230-2 2.20) in one line, `unit` its unit.
+    pub fn summary(&self, unit: &str) -> String {
+        let findings: Vec<&str> = self.findings.iter().map(|f| f.effect.name()).collect();
+        let found = match findings.is_empty() {
+            true => String::new(),
+            false => format!("; found: {}", findings.join(", ")),
+        };
+        let e = &self.e;
+        format!(
+            "{}: E {} {unit} before, {} predicted, {} achieved (U {}){found}",
+            self.verdict.name(),
+            fmt_fixed(e.before, 2),
+            fmt_fixed(e.predicted, 2),
+            fmt_fixed(e.achieved, 2),
+            fmt_fixed(e.uncertainty, 2)
+        )
+    }
+}
+
 /// Compares the re-measurement with the prediction.
 pub fn verify(input: &Input) -> Result<Verification, VerifyError> {
     let (before, after) = (input.before, input.after);

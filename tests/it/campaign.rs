@@ -138,7 +138,7 @@ fn files(dir: &Path) -> Vec<PathBuf> {
 }
 
 /// Minimal RFC 4180 reader for the test.
-fn read_csv(text: &str) -> Vec<Vec<String>> {
+pub(crate) fn read_csv(text: &str) -> Vec<Vec<String>> {
     let mut rows = Vec::new();
     let mut row = Vec::new();
     let mut field = String::new();

@@ -92,6 +92,16 @@ fn assert_complete(name: &str, bytes: &[u8], reference: &[u8]) {
             );
         }
         Some("md") => assert!(text().ends_with('\n') && bytes.len() > 100, "{name}"),
+        Some("html") => {
+            let t = text();
+            assert!(t.starts_with("<!DOCTYPE html>"), "{name}");
+            assert!(t.trim_end().ends_with("</html>"), "{name} is cut");
+        }
+        Some("xlsx") => {
+            let book = zip::ZipArchive::new(std::io::Cursor::new(bytes))
+                .unwrap_or_else(|e| panic!("{name} is not a whole archive: {e}"));
+            assert!(book.index_for_name("xl/workbook.xml").is_some(), "{name}");
+        }
         _ => {
             assert_eq!(name, MANIFEST, "unexpected output {name}");
             assert!(text().starts_with("# axcheck output manifest"), "{name}");
@@ -350,7 +360,7 @@ fn first_runs_and_reruns_work() {
     let first = snapshot(&fresh);
     assert_eq!(snapshot(&empty).files, first.files);
     let outputs: Vec<&String> = first.files.keys().filter(|k| *k != MANIFEST).collect();
-    assert_eq!(outputs.len(), 8, "{outputs:?}");
+    assert_eq!(outputs.len(), 10, "{outputs:?}");
     let mut expected: Vec<String> = outputs.iter().map(|s| s.to_string()).collect();
     expected.extend(["reports/", "reports/M1/", "reports/M2/"].map(String::from));
     expected.sort();
@@ -472,8 +482,10 @@ fn outputs_the_new_run_no_longer_produces_are_removed() {
             "junit.xml",
             "results.json",
             "summary.csv",
+            "summary.html",
             "summary.md",
-            "summary.parquet"
+            "summary.parquet",
+            "summary.xlsx"
         ]
     );
     std::fs::remove_dir_all(&dir).unwrap();

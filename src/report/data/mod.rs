@@ -63,7 +63,7 @@ fn symbol_of(t: &AxisTest, key: &str) -> String {
 
 /// The campaign header both templates show (absent items as empty strings).
 #[derive(Serialize)]
-struct CampaignHeader<'a> {
+pub struct CampaignHeader<'a> {
     name: &'a str,
     site: &'a str,
     purpose: &'a str,
@@ -74,7 +74,7 @@ struct CampaignHeader<'a> {
 }
 
 impl<'a> CampaignHeader<'a> {
-    fn new(result: &'a CampaignResult) -> CampaignHeader<'a> {
+    pub fn new(result: &'a CampaignResult) -> CampaignHeader<'a> {
         let info = &result.info;
         CampaignHeader {
             name: &info.name,

@@ -1,0 +1,170 @@
+//! What the page shows of one axis test when its row is opened: its parameters with U and
+//! limits (ISO 230-2 clause 2, judged as in the axis report), the plan rules' and the
+//! diagnosis's findings with their advice, the compensation and its verification, links to
+//! its report and table, and its charts (ISO 230-2 Fig. 2a and 2b, and its history).
+
+use super::scene::SceneData;
+use crate::batch::AxisTest;
+use crate::history::AxisTrends;
+use crate::judge::Outcome;
+use crate::units::fmt_fixed;
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+pub struct Detail<'a> {
+    pub id: String,
+    pub label: String,
+    pub file: Option<&'a str>,
+    pub standard: Option<&'static str>,
+    /// The spec and band the limits come from, or that no tolerance applied.
+    pub limits: Option<String>,
+    pub unit: Option<&'static str>,
+    pub parameters: Vec<ParameterRow>,
+    /// Parameters without a value here (those needing repeated runs, with n = 1).
+    pub not_applicable: Vec<&'static str>,
+    pub rules: &'a [crate::rules::Finding],
+    pub diagnosis: Vec<DiagnosisFinding>,
+    pub compensation: Option<CompensationDetail>,
+    /// The verification of the table this test re-measures, in one line.
+    pub verification: Option<String>,
+    /// Relative links: the axis report (when PDFs are written) and the table.
+    pub report: Option<String>,
+    pub table: Option<String>,
+    pub charts: Vec<Chart>,
+    pub error: Option<&'a str>,
+}
+
+/// One parameter: symbol, name and clause, value, U (k = 2), its limit and the outcome of
+/// its check (`pass`, `fail`, `inconclusive`) when it has one.
+#[derive(Debug, Serialize)]
+pub struct ParameterRow {
+    pub symbol: &'static str,
+    pub name: &'static str,
+    pub clause: &'static str,
+    pub value: String,
+    #[serde(rename = "U")]
+    pub u: Option<String>,
+    pub limit: Option<String>,
+    pub outcome: Option<Outcome>,
+}
+
+#[derive(Debug, Serialize)]
+pub struct DiagnosisFinding {
+    pub effect: &'static str,
+    pub message: String,
+    pub advice: String,
+}
+
+#[derive(Debug, Serialize)]
+pub struct CompensationDetail {
+    pub controller: &'static str,
+    /// `absolute` or `incremental`.
+    pub mode: crate::compensate::Mode,
+    pub active_file: Option<String>,
+    /// Why no table was written.
+    pub refused: Option<String>,
+    pub warnings: Vec<String>,
+}
+
+/// A titled chart.
+#[derive(Debug, Serialize)]
+pub struct Chart {
+    /// `iso` (ISO 230-2 Fig. 2a, 2b) or `history`.
+    pub group: &'static str,
+    pub title: String,
+    pub scene: SceneData,
+}
+
+/// Where the test's own files are, relative to the page.
+pub struct Links {
+    pub report: Option<String>,
+    pub table: Option<String>,
+}
+
+pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) -> Detail<'a> {
+    let unit = t.kind().map(|k| k.deviation_symbol());
+    Detail {
+        id: super::super::overview::test_id(t),
+        label: t.label(),
+        file: t.file.as_deref(),
+        standard: t.standard().map(|s| s.title()),
+        limits: t.judgement.as_ref().map(|j| j.limits.describe()),
+        unit,
+        parameters: parameters(t),
+        not_applicable: (t.evaluation.iter())
+            .flat_map(|e| e.not_applicable().map(|d| d.symbol))
+            .collect(),
+        rules: &t.findings,
+        diagnosis: (t.diagnosis.iter())
+            .flat_map(|d| &d.findings)
+            .map(|f| DiagnosisFinding {
+                effect: f.effect().name(),
+                message: f.message.clone(),
+                advice: f.advice(),
+            })
+            .collect(),
+        compensation: t.compensation.as_ref().map(|c| CompensationDetail {
+            controller: c.controller,
+            mode: c.mode,
+            active_file: c.active_file.clone(),
+            refused: c.outcome.as_ref().err().cloned(),
+            warnings: c.warnings.iter().map(|w| w.message.clone()).collect(),
+        }),
+        verification: t.verification.as_ref().map(|v| match v {
+            Ok(v) => v.summary(unit.unwrap_or("")),
+            Err(e) => format!("not made: {e}"),
+        }),
+        report: links.report,
+        table: links.table,
+        charts: charts(t, trends),
+        error: t.error.as_deref(),
+    }
+}
+
+fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
+    let Some(e) = &t.evaluation else {
+        return Vec::new();
+    };
+    let check =
+        |key: &str| (t.judgement.as_ref()).and_then(|j| j.checks.iter().find(|c| c.key == key));
+    let u_of = |key: &str| t.uncertainty.as_ref().and_then(|u| u.expanded_of(key));
+    (e.parameters.iter())
+        .map(|p| ParameterRow {
+            symbol: p.symbol(),
+            name: p.name(),
+            clause: p.clause(),
+            value: fmt_fixed(p.value, 2),
+            u: u_of(p.key()).map(|u| fmt_fixed(u, 2)),
+            limit: check(p.key()).map(|c| fmt_fixed(c.limit, 2)),
+            outcome: check(p.key()).map(|c| c.outcome),
+        })
+        .collect()
+}
+
+/// ISO 230-2 Fig. 2a and 2b, then the history of each charted parameter.
+fn charts(t: &AxisTest, trends: Option<&AxisTrends>) -> Vec<Chart> {
+    let mut charts = Vec::new();
+    if let Some(e) = &t.evaluation {
+        let [bidirectional, unidirectional] = crate::report::iso_charts(e);
+        charts.push(Chart {
+            group: "iso",
+            title: "Bidirectional positional deviations (ISO 230-2 Fig. 2a)".into(),
+            scene: SceneData::of(&bidirectional),
+        });
+        charts.push(Chart {
+            group: "iso",
+            title: "Unidirectional positional deviations (ISO 230-2 Fig. 2b)".into(),
+            scene: SceneData::of(&unidirectional),
+        });
+    }
+    if let Some(history) = crate::report::history(t, trends) {
+        for chart in history.charts {
+            charts.push(Chart {
+                group: "history",
+                title: format!("History: {}", chart.label),
+                scene: SceneData::of(&chart.scene),
+            });
+        }
+    }
+    charts
+}

@@ -1,0 +1,179 @@
+//! `summary.html`: the campaign as one self-contained web page (no network access of any
+//! kind), for a file share, a CI artifact or an e-mail.
+//!
+//! The page is a fixed template (`page.html`, `page.css`, `page.js`) and the campaign's
+//! data, embedded once as JSON in a `<script type="application/json">` whose `<`, `>` and
+//! `&` are written as `\u003c`, `\u003e` and `\u0026`: no text of a campaign, a file or a
+//! name can end the script or become markup. The script builds the page from the data
+//! with `textContent` and `createElement` only.
+//!
+//! The table's rows come first and are read at once. Each test's detail (parameters,
+//! findings, charts) is larger, about 20 kB with its charts, so the details are kept in
+//! blocks of [`BLOCK`] tests, each deflated (zlib) and in base64, after the script: the
+//! page inflates a block when one of its rows is opened. A 10 000-axis page so stays in
+//! the tens of megabytes instead of hundreds, and opens as fast as its table.
+
+mod detail;
+mod scene;
+
+use super::overview;
+use super::{ExportError, Exporter, OutputFile};
+use crate::batch::CampaignResult;
+use crate::history::AxisTrends;
+use crate::judge::Verdict;
+use base64::Engine;
+use serde::Serialize;
+use std::io::Write;
+use std::sync::Arc;
+
+/// Tests per block of details.
+pub const BLOCK: usize = 32;
+
+const PAGE: &str = include_str!("page.html");
+const STYLE: &str = include_str!("page.css");
+const SCRIPT: &str = include_str!("page.js");
+
+pub struct Html {
+    /// Whether the run writes the axis reports (`reports/…pdf`), which the page links to.
+    pub reports: bool,
+    /// The trends of the run's axes, when the run keeps a history.
+    pub trends: Option<Arc<AxisTrends>>,
+}
+
+/// What the script reads first: the header, the counts and the table.
+#[derive(Serialize)]
+struct Page<'a> {
+    generator: String,
+    campaign: crate::report::data::CampaignHeader<'a>,
+    /// Tests per verdict, in the order of attention (fail first); inconclusive only when
+    /// a test was judged by ISO 14253-1.
+    counts: Vec<(Verdict, usize)>,
+    /// Whether the run keeps a history (the table's trend column).
+    history: bool,
+    block: usize,
+    rows: Vec<overview::Row<'a>>,
+}
+
+impl Exporter for Html {
+    fn name(&self) -> &'static str {
+        "html"
+    }
+
+    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+        let trends = self.trends.as_deref();
+        let page = Page {
+            generator: format!("axcheck {}", env!("CARGO_PKG_VERSION")),
+            campaign: crate::report::data::CampaignHeader::new(result),
+            counts: counts(result),
+            history: trends.is_some(),
+            block: BLOCK,
+            rows: overview::rows(result, trends),
+        };
+        let details = details(result, trends, self.reports)?;
+        Ok(vec![OutputFile {
+            path: "summary.html".into(),
+            bytes: page_html(&script_json(&page)?, &script_json(&details)?).into_bytes(),
+        }])
+    }
+}
+
+fn counts(result: &CampaignResult) -> Vec<(Verdict, usize)> {
+    let counts = result.counts();
+    let mut verdicts: Vec<Verdict> = counts.keys().copied().collect();
+    verdicts.sort_by_key(|v| v.attention_rank());
+    (verdicts.into_iter())
+        .filter(|v| *v != Verdict::Inconclusive || result.uses_uncertainty_rule())
+        .map(|v| (v, counts[&v]))
+        .collect()
+}
+
+/// The details in blocks of [`BLOCK`] tests, each a JSON array deflated and in base64.
+fn details(
+    result: &CampaignResult,
+    trends: Option<&AxisTrends>,
+    reports: bool,
+) -> Result<Vec<String>, ExportError> {
+    let report_paths = super::paths::test_paths(result, "reports", "pdf");
+    let table_paths = super::compensation::table_paths(result);
+    let slash = |p: &std::path::Path| p.to_string_lossy().replace('\\', "/");
+    let tests: Vec<_> = (result.tests.iter().zip(report_paths).zip(table_paths))
+        .map(|((t, report), table)| (t, report, table))
+        .collect();
+    let encode = |block: &[(
+        &crate::batch::AxisTest,
+        std::path::PathBuf,
+        Option<std::path::PathBuf>,
+    )]| {
+        let details: Vec<detail::Detail> = (block.iter())
+            .map(|(t, report, table)| {
+                let links = detail::Links {
+                    report: (reports && t.evaluation.is_some()).then(|| slash(report)),
+                    table: table.as_deref().map(slash),
+                };
+                detail::detail(t, trends, links)
+            })
+            .collect();
+        let json = serde_json::to_vec(&details).map_err(json_error)?;
+        let mut deflate = flate2::write::ZlibEncoder::new(Vec::new(), flate2::Compression::best());
+        deflate.write_all(&json).map_err(io_error)?;
+        let bytes = deflate.finish().map_err(io_error)?;
+        Ok(base64::engine::general_purpose::STANDARD.encode(bytes))
+    };
+    use rayon::prelude::*;
+    tests.par_chunks(BLOCK).map(encode).collect()
+}
+
+fn json_error(e: serde_json::Error) -> ExportError {
+    ExportError::Format {
+        format: "html",
+        message: e.to_string(),
+    }
+}
+
+fn io_error(e: std::io::Error) -> ExportError {
+    ExportError::Format {
+        format: "html",
+        message: e.to_string(),
+    }
+}
+
+/// `data` as JSON that can stand inside a `<script>` element: `<`, `>`, `&` and the line
+/// separators U+2028/U+2029 as `\u` escapes (JSON has them only inside strings, where the
+/// escape means the same character).
+pub fn script_json(data: &impl Serialize) -> Result<String, ExportError> {
+    let json = serde_json::to_string(data).map_err(json_error)?;
+    let mut out = String::with_capacity(json.len() + json.len() / 64);
+    for c in json.chars() {
+        match c {
+            '<' => out.push_str("\\u003c"),
+            '>' => out.push_str("\\u003e"),
+            '&' => out.push_str("\\u0026"),
+            '\u{2028}' => out.push_str("\\u2028"),
+            '\u{2029}' => out.push_str("\\u2029"),
+            c => out.push(c),
+        }
+    }
+    Ok(out)
+}
+
+/// The template with its style, script and data in place (each marker once, in order).
+fn page_html(page: &str, details: &str) -> String {
+    let mut out =
+        String::with_capacity(PAGE.len() + STYLE.len() + SCRIPT.len() + page.len() + details.len());
+    let mut rest = PAGE;
+    for (marker, text) in [
+        ("/*STYLE*/", STYLE),
+        ("/*PAGE*/", page),
+        ("/*SCRIPT*/", SCRIPT),
+        ("/*DETAILS*/", details),
+    ] {
+        let (before, after) = rest
+            .split_once(marker)
+            .expect("each marker once in page.html");
+        out.push_str(before);
+        out.push_str(text);
+        rest = after;
+    }
+    out.push_str(rest);
+    out
+}

@@ -1,0 +1,428 @@
+// axcheck summary.html: builds the page from the data embedded in it. Text from the
+// campaign only ever goes into the page as text (textContent, attribute values): never
+// as markup. No request leaves the page (its Content-Security-Policy forbids them).
+"use strict";
+(function () {
+  const data = JSON.parse(document.getElementById("page-data").textContent);
+  const rows = data.rows;
+  const RANK = { fail: 0, noncompliant: 1, inconclusive: 2, error: 3, pass: 4 };
+  const ROW_PX = 28;
+  const OVERSCAN = 12;
+
+  function el(tag, attrs, ...children) {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (v !== null && v !== undefined && v !== false) e.setAttribute(k, v === true ? "" : v);
+    }
+    for (const c of children) {
+      if (c === null || c === undefined) continue;
+      e.append(c instanceof Node ? c : String(c));
+    }
+    return e;
+  }
+  const dash = "–";
+  const verdictBadge = (v) => el("span", { class: "badge v-" + v }, v.toUpperCase());
+  const axisLabel = (r) => (r.tests > 1 ? `${r.axis} (${r.test}/${r.tests})` : r.axis);
+  const value = (r, k) => r.values[k];
+
+  // The columns: what a cell shows, the value it sorts by (null last), whether a number.
+  const headline = (k) => ({
+    key: k, label: k, title: `${k} with its expanded uncertainty U (k = 2), in the row's unit`,
+    num: true,
+    sort: (r) => (value(r, k) ? value(r, k).value : null),
+    cell: (r) => {
+      const p = value(r, k);
+      if (!p) return dash;
+      const f = document.createDocumentFragment();
+      f.append(p.symbol === k ? p.text : `${p.symbol} ${p.text}`);
+      if (p.U_text) f.append(" ", el("span", { class: "u" }, "± " + p.U_text));
+      return f;
+    },
+  });
+  const columns = [
+    { key: "machine", label: "Machine", sort: (r) => r.machine, cell: (r) => r.machine },
+    { key: "axis", label: "Axis", sort: (r) => r.axis + "\u0000" + String(r.test).padStart(6, "0"), cell: axisLabel },
+    { key: "verdict", label: "Verdict", sort: (r) => RANK[r.verdict], cell: (r) => verdictBadge(r.verdict) },
+    {
+      key: "worst", label: "Worst / limit", num: true, title: "The parameter using the largest share of its tolerance: |value| / limit",
+      sort: (r) => (r.worst ? r.worst.ratio : null),
+      cell: (r) => (r.worst ? el("span", { class: r.worst.ratio > 1 ? "over" : null }, r.worst.text) : dash),
+    },
+    headline("A"), headline("E"), headline("M"), headline("R"), headline("B"),
+    { key: "unit", label: "Unit", sort: (r) => r.unit, cell: (r) => r.unit || dash },
+    { key: "n", label: "n", num: true, sort: (r) => r.n, cell: (r) => (r.n === null ? dash : r.n) },
+    { key: "travel", label: "Travel", num: true, sort: (r) => r.travel, cell: (r) => r.travel_text || dash },
+    { key: "kind", label: "Kind", sort: (r) => r.kind, cell: (r) => r.kind || dash },
+    { key: "standard", label: "Standard", sort: (r) => r.standard, cell: (r) => r.standard || dash },
+    { key: "decision_rule", label: "Decision rule", sort: (r) => r.decision_rule, cell: (r) => r.decision_rule || dash },
+    {
+      key: "rules", label: "Plan rules", title: "Test-plan rules broken (noncompliant); warnings in the detail",
+      sort: (r) => (r.rules.length ? r.rules.join(" ") : null), cell: (r) => r.rules.join(", ") || dash,
+    },
+    {
+      key: "diagnosis", label: "Diagnosis", sort: (r) => (r.diagnosis ? r.diagnosis.join(" ") || "none" : null),
+      cell: (r) => (r.diagnosis ? r.diagnosis.join(", ").replaceAll("_", " ") || "none" : dash),
+    },
+    {
+      key: "compensation", label: "Compensation E", num: true, title: "E as measured → as predicted with the new table",
+      sort: (r) => (r.compensation ? r.compensation.predicted : null),
+      cell: (r) => (r.compensation ? r.compensation.text : dash),
+    },
+  ];
+  if (data.history) {
+    columns.push({
+      key: "trend", label: "Trend", title: "Parameters whose trend over the inspection history is flagged",
+      sort: (r) => (r.trend && r.trend.length ? r.trend.join(" ") : null),
+      cell: (r) => (r.trend && r.trend.length ? "flagged: " + r.trend.join(", ") : dash),
+    });
+  }
+  if (rows.some((r) => r.error)) {
+    columns.push({ key: "error", label: "Error", sort: (r) => r.error, cell: (r) => r.error || "" });
+  }
+
+  // --- Header, counts, footer -------------------------------------------------------
+  const c = data.campaign;
+  document.title = `${c.name} — axcheck summary`;
+  document.getElementById("title").textContent = c.name;
+  const dl = document.getElementById("campaign");
+  for (const [label, text] of [["Site", c.site], ["Purpose", c.purpose], ["Date", c.date],
+    ["Inspector", c.inspector], ["Standard", c.standard], ["Campaign file", c.file]]) {
+    if (text) dl.append(el("div", {}, el("dt", {}, label), el("dd", {}, text)));
+  }
+  document.getElementById("footer").textContent =
+    `${data.generator}. Values in µm (linear axes) or arcsec (rotary axes), 2 decimals; U is the expanded uncertainty (k = 2).`;
+
+  const state = { text: "", verdict: null, sortKey: null, sortDesc: false, order: null, shown: [], active: -1, selected: null };
+  const countsBox = document.getElementById("counts");
+  const allButton = el("button", { type: "button", "aria-pressed": "true", "data-verdict": "" },
+    el("span", { class: "n" }, rows.length), " tests");
+  countsBox.append(allButton);
+  for (const [verdict, n] of data.counts) {
+    countsBox.append(el("button", { type: "button", "aria-pressed": "false", "data-verdict": verdict },
+      el("span", { class: "n" }, n), " ", verdictBadge(verdict)));
+  }
+  countsBox.addEventListener("click", (ev) => {
+    const b = ev.target.closest("button");
+    if (!b) return;
+    const v = b.getAttribute("data-verdict") || null;
+    state.verdict = state.verdict === v ? null : v;
+    for (const x of countsBox.querySelectorAll("button")) {
+      x.setAttribute("aria-pressed", String((x.getAttribute("data-verdict") || null) === state.verdict));
+    }
+    refilter();
+  });
+
+  // --- The table --------------------------------------------------------------------
+  const headerRow = document.getElementById("header-row");
+  columns.forEach((col, i) => {
+    const button = el("button", { type: "button", title: col.title || null, "data-column": col.key },
+      col.label, el("span", { class: "arrow", "aria-hidden": "true" }));
+    button.addEventListener("click", () => sortBy(i));
+    headerRow.append(el("th", { scope: "col", class: col.num ? "num" : null, "aria-sort": "none" }, button));
+  });
+  const table = document.getElementById("tests");
+  table.setAttribute("aria-rowcount", String(rows.length + 1));
+
+  // Lower-case text to search, made once.
+  const haystack = rows.map((r) =>
+    [r.machine, axisLabel(r), r.kind, r.standard, r.verdict, r.decision_rule, r.rules.join(" "),
+      r.warnings.join(" "), (r.diagnosis || []).join(" ").replaceAll("_", " "), (r.diagnosis || []).join(" "),
+      r.error, (r.trend || []).join(" ")].filter(Boolean).join("\u0001").toLowerCase());
+
+  function sortBy(i) {
+    const col = columns[i];
+    if (state.sortKey === i) state.sortDesc = !state.sortDesc;
+    else { state.sortKey = i; state.sortDesc = !!col.num; }
+    const keys = rows.map(col.sort);
+    const dir = state.sortDesc ? -1 : 1;
+    const order = rows.map((_, k) => k);
+    order.sort((a, b) => {
+      const x = keys[a], y = keys[b];
+      const xn = x === null || x === undefined, yn = y === null || y === undefined;
+      if (xn || yn) return xn === yn ? a - b : xn ? 1 : -1;
+      if (x < y) return -dir;
+      if (x > y) return dir;
+      return a - b;
+    });
+    state.order = order;
+    headerRow.querySelectorAll("th").forEach((th, k) => {
+      const sorted = k === i;
+      th.setAttribute("aria-sort", sorted ? (state.sortDesc ? "descending" : "ascending") : "none");
+      th.querySelector(".arrow").textContent = sorted ? (state.sortDesc ? "▼" : "▲") : "";
+    });
+    refilter();
+  }
+
+  function refilter() {
+    const terms = state.text.toLowerCase().split(/\s+/).filter(Boolean);
+    const order = state.order || rows.map((_, k) => k);
+    state.shown = order.filter((k) =>
+      (!state.verdict || rows[k].verdict === state.verdict) && terms.every((t) => haystack[k].includes(t)));
+    document.getElementById("shown-count").textContent = `${state.shown.length} of ${rows.length} tests`;
+    state.active = Math.min(Math.max(state.active, 0), state.shown.length - 1);
+    wrap.scrollTop = Math.min(wrap.scrollTop, Math.max(0, state.shown.length * ROW_PX - wrap.clientHeight));
+    render();
+  }
+
+  // Only the rows in view are in the document, between two spacers.
+  const wrap = document.getElementById("table-wrap");
+  const body = document.getElementById("rows");
+  let printing = false;
+  function render() {
+    const total = state.shown.length;
+    let first = 0, last = total;
+    if (!printing) {
+      const top = Math.max(0, wrap.scrollTop - ROW_PX);
+      first = Math.max(0, Math.floor(top / ROW_PX) - OVERSCAN);
+      // The wrapper is only as high as its rows until it reaches its maximum height:
+      // the window's height bounds what can be in view.
+      const view = Math.max(wrap.clientHeight, window.innerHeight);
+      last = Math.min(total, Math.ceil((top + view + ROW_PX) / ROW_PX) + OVERSCAN);
+    }
+    const spacer = (px) => el("tr", { class: "spacer", "aria-hidden": "true" },
+      el("td", { colspan: columns.length, style: `height:${px}px` }));
+    const frag = document.createDocumentFragment();
+    if (first > 0) frag.append(spacer(first * ROW_PX));
+    for (let i = first; i < last; i++) frag.append(rowElement(state.shown[i], i));
+    if (last < total) frag.append(spacer((total - last) * ROW_PX));
+    body.replaceChildren(frag);
+  }
+
+  function rowElement(k, position) {
+    const r = rows[k];
+    const tr = el("tr", {
+      "data-test-id": r.id, "data-verdict": r.verdict, "aria-rowindex": position + 2,
+      tabindex: position === state.active ? "0" : "-1",
+      class: state.selected === k ? "selected" : null, "aria-selected": state.selected === k ? "true" : null,
+    });
+    for (const col of columns) {
+      const content = col.cell(r);
+      const td = el("td", { class: col.num ? "num" : null }, content);
+      if (typeof content === "string" && content.length > 30) td.title = content;
+      tr.append(td);
+    }
+    return tr;
+  }
+
+  let pending = false;
+  wrap.addEventListener("scroll", () => {
+    if (pending) return;
+    pending = true;
+    requestAnimationFrame(() => { pending = false; render(); });
+  });
+  window.addEventListener("resize", () => render());
+
+  body.addEventListener("click", (ev) => {
+    const tr = ev.target.closest("tr[data-test-id]");
+    if (!tr) return;
+    state.active = Number(tr.getAttribute("aria-rowindex")) - 2;
+    open(state.shown[state.active], false);
+  });
+
+  // Keyboard: one row is in the tab order; arrows move it, Enter opens it.
+  function focusRow(position) {
+    if (!state.shown.length) return;
+    state.active = Math.min(Math.max(position, 0), state.shown.length - 1);
+    const top = state.active * ROW_PX, head = ROW_PX;
+    if (top < wrap.scrollTop) wrap.scrollTop = top;
+    else if (top + ROW_PX + head > wrap.scrollTop + wrap.clientHeight) wrap.scrollTop = top + ROW_PX + head - wrap.clientHeight;
+    render();
+    const tr = body.querySelector(`tr[aria-rowindex="${state.active + 2}"]`);
+    if (tr) tr.focus({ preventScroll: true });
+  }
+  body.addEventListener("keydown", (ev) => {
+    const page = Math.max(1, Math.floor(wrap.clientHeight / ROW_PX) - 1);
+    const moves = { ArrowDown: 1, ArrowUp: -1, PageDown: page, PageUp: -page };
+    if (ev.key in moves) focusRow(state.active + moves[ev.key]);
+    else if (ev.key === "Home") focusRow(0);
+    else if (ev.key === "End") focusRow(state.shown.length - 1);
+    else if (ev.key === "Enter" || ev.key === " ") open(state.shown[state.active], true);
+    else return;
+    ev.preventDefault();
+  });
+
+  const search = document.getElementById("search");
+  search.addEventListener("input", () => { state.text = search.value; refilter(); });
+  search.addEventListener("keydown", (ev) => {
+    if (ev.key === "ArrowDown" || ev.key === "Enter") { ev.preventDefault(); focusRow(0); }
+  });
+  document.addEventListener("keydown", (ev) => {
+    if (ev.key === "Escape" && !detail.hidden) { ev.preventDefault(); close(); }
+    else if (ev.key === "/" && document.activeElement !== search) { ev.preventDefault(); search.focus(); }
+  });
+
+  // Printing shows every row of the current filter and sort.
+  window.addEventListener("beforeprint", () => { printing = true; render(); });
+  window.addEventListener("afterprint", () => { printing = false; render(); });
+
+  // --- The detail of one test -------------------------------------------------------
+  const detail = document.getElementById("detail");
+  const blocks = new Map();
+  let encoded = null;
+
+  async function inflate(b64) {
+    const bin = atob(b64);
+    const bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+    const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
+    return JSON.parse(await new Response(stream).text());
+  }
+  // The details follow this script in the page: read once the page is parsed.
+  const parsed = new Promise((done) => {
+    if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", done);
+    else done();
+  });
+  async function detailOf(k) {
+    await parsed;
+    const b = Math.floor(k / data.block);
+    if (!blocks.has(b)) {
+      if (encoded === null) encoded = JSON.parse(document.getElementById("details-data").textContent);
+      blocks.set(b, inflate(encoded[b]));
+    }
+    return (await blocks.get(b))[k % data.block];
+  }
+
+  let opening = 0;
+  async function open(k, focus) {
+    if (k === undefined) return;
+    state.selected = k;
+    render();
+    const ticket = ++opening;
+    let d;
+    try {
+      d = await detailOf(k);
+    } catch (e) {
+      showDetail(rows[k], null, "The detail could not be read in this browser: " + e);
+      return;
+    }
+    if (ticket !== opening) return;
+    showDetail(rows[k], d, null);
+    history.replaceState(null, "", "#" + encodeURIComponent(rows[k].id));
+    if (focus) document.getElementById("detail-title").focus();
+    else detail.scrollIntoView({ block: "nearest" });
+  }
+
+  function close() {
+    detail.hidden = true;
+    state.selected = null;
+    history.replaceState(null, "", location.pathname + location.search);
+    render();
+    focusRow(state.active);
+  }
+
+  function showDetail(r, d, problem) {
+    const closeButton = el("button", { type: "button" }, "Close");
+    closeButton.addEventListener("click", close);
+    const parts = [el("div", { class: "top" },
+      el("h2", { id: "detail-title", tabindex: "-1" }, `${r.machine} ${axisLabel(r)}`), verdictBadge(r.verdict), closeButton)];
+    if (problem) parts.push(el("p", {}, problem));
+    if (d) parts.push(...detailParts(r, d));
+    detail.replaceChildren(...parts);
+    detail.hidden = false;
+  }
+
+  function facts(d) {
+    const list = el("dl", { id: "detail-facts" });
+    for (const [label, text] of [["File", d.file], ["Standard", d.standard], ["Limits", d.limits], ["Error", d.error]]) {
+      if (text) list.append(el("div", {}, el("dt", {}, label), el("dd", {}, text)));
+    }
+    list.style.display = "grid";
+    list.style.gridTemplateColumns = "max-content 1fr";
+    for (const div of list.children) div.style.display = "contents";
+    return list;
+  }
+
+  function detailParts(r, d) {
+    const out = [facts(d)];
+    const links = el("p", { class: "links" });
+    if (d.report) links.append(el("a", { href: d.report }, "Axis report (PDF)"));
+    if (d.table) links.append(el("a", { href: d.table }, "Compensation table"));
+    if (links.childNodes.length) out.push(links);
+    if (d.parameters.length) {
+      const unit = d.unit || "";
+      const t = el("table", { class: "parameters" },
+        el("thead", {}, el("tr", {}, ...["Parameter", "", "Clause", `Value / ${unit}`, `U (k = 2) / ${unit}`, `Limit / ${unit}`, "Check"]
+          .map((h) => el("th", { scope: "col" }, h)))));
+      const tb = el("tbody");
+      for (const p of d.parameters) {
+        tb.append(el("tr", {}, el("th", { scope: "row" }, p.symbol), el("td", {}, p.name), el("td", {}, p.clause),
+          el("td", { class: "num" }, p.value), el("td", { class: "num" }, p.U || dash),
+          el("td", { class: "num" }, p.limit || dash),
+          el("td", {}, p.outcome ? el("span", { class: "badge v-" + p.outcome }, p.outcome) : dash)));
+      }
+      t.append(tb);
+      out.push(el("h3", {}, "Parameters"), t);
+      if (d.not_applicable.length) out.push(el("p", { class: "muted" }, "Not applicable here: " + d.not_applicable.join(", ")));
+    }
+    if (d.rules.length) {
+      out.push(el("h3", {}, "Test-plan rules"), el("ul", {}, ...d.rules.map((f) =>
+        el("li", {}, el("strong", {}, `${f.id} (${f.clause}, ${f.severity})`), ": ", f.message))));
+    }
+    if (d.diagnosis.length) {
+      out.push(el("h3", {}, "Diagnosis"), el("ul", {}, ...d.diagnosis.map((f) =>
+        el("li", {}, el("strong", {}, f.effect.replaceAll("_", " ")), ": ", f.message,
+          el("div", { class: "advice" }, "Advice: " + f.advice)))));
+    } else if (r.diagnosis) {
+      out.push(el("h3", {}, "Diagnosis"), el("p", {}, "No effect found beyond the error model."));
+    }
+    if (d.compensation) {
+      const cp = d.compensation;
+      const items = [el("li", {}, `Controller ${cp.controller}, ${cp.mode} table` +
+        (cp.active_file ? `, built on ${cp.active_file}` : ""))];
+      if (r.compensation) items.push(el("li", {}, `E ${r.compensation.text} ${d.unit || ""} (measured → predicted)`));
+      if (cp.refused) items.push(el("li", {}, "Not written: " + cp.refused));
+      for (const w of cp.warnings) items.push(el("li", {}, "Warning: " + w));
+      out.push(el("h3", {}, "Compensation"), el("ul", {}, ...items));
+    }
+    if (d.verification) out.push(el("h3", {}, "Verification"), el("p", {}, d.verification));
+    const iso = d.charts.filter((ch) => ch.group === "iso");
+    const hist = d.charts.filter((ch) => ch.group === "history");
+    for (const ch of iso) out.push(figure(ch));
+    if (hist.length) out.push(el("h3", {}, "History"), el("div", { class: "charts-history" }, ...hist.map(figure)));
+    return out;
+  }
+
+  // A chart's scene (the PDF report's shapes and texts) drawn as inline SVG.
+  const SVG = "http://www.w3.org/2000/svg";
+  function svgEl(tag, attrs) {
+    const e = document.createElementNS(SVG, tag);
+    for (const [k, v] of Object.entries(attrs)) if (v !== undefined && v !== null) e.setAttribute(k, v);
+    return e;
+  }
+  function drawScene(s, title) {
+    const svg = svgEl("svg", { viewBox: `0 0 ${s.width} ${s.height}`, width: s.width, height: s.height, role: "img", "aria-label": title });
+    for (const sh of s.shapes) {
+      svg.append(svgEl("path", {
+        d: sh.d, fill: sh.fill || "none", stroke: sh.stroke || "none", "stroke-width": sh.width,
+        "stroke-dasharray": sh.dash ? sh.dash.join(" ") : null, opacity: sh.opacity,
+      }));
+    }
+    for (const t of s.texts) {
+      const text = svgEl("text", {
+        x: t.x, y: t.y, dy: t.dy, "text-anchor": t.anchor, "font-size": t.size, fill: t.colour,
+        "font-family": "DejaVu Sans, Arial, Helvetica, sans-serif", "font-weight": t.bold ? "bold" : null,
+        transform: t.rotate ? `rotate(${t.rotate}, ${t.x}, ${t.y})` : null,
+      });
+      text.textContent = t.text;
+      svg.append(text);
+    }
+    return svg;
+  }
+  function figure(ch) {
+    return el("figure", { class: "chart" }, el("figcaption", {}, ch.title), drawScene(ch.scene, ch.title));
+  }
+
+  // --- Start --------------------------------------------------------------------------
+  refilter();
+  // For the tests and the benchmark: the first rows are in the document, then drawn.
+  window.axcheckFirstRowsMs = performance.now();
+  requestAnimationFrame(() => { window.axcheckFirstFrameMs = performance.now(); });
+  const wanted = decodeURIComponent(location.hash.slice(1));
+  if (wanted) {
+    const k = rows.findIndex((r) => r.id === wanted);
+    if (k >= 0) {
+      focusRow(state.shown.indexOf(k));
+      open(k, false);
+    }
+  }
+})();

@@ -1,0 +1,329 @@
+//! summary.html in a real browser (headless Chromium through its DevTools protocol): the
+//! example campaign's page, and a campaign whose names are written to break out of the
+//! page's script and markup.
+
+use crate::browser::cdp::Browser;
+use crate::common::{axcheck, copy_data, scratch};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+use std::time::Duration;
+
+/// The example campaign run once for all tests of this file.
+fn example_page() -> &'static Path {
+    static OUT: OnceLock<PathBuf> = OnceLock::new();
+    OUT.get_or_init(|| {
+        let out = std::env::temp_dir().join(format!("axcheck-html-ex-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&out);
+        let out_s = out.to_str().unwrap();
+        let args = ["run", "example-campaign/campaign.yaml", "--out", out_s];
+        let (code, stdout, stderr) = axcheck(&args);
+        assert_eq!(code, 1, "the example has failing axes: {stdout}{stderr}");
+        assert!(stdout.contains("summary.html"), "{stdout}");
+        out.join("summary.html")
+    })
+}
+
+fn url(path: &Path) -> String {
+    format!("file://{}", path.display())
+}
+
+/// The page opened, its first rows drawn, with nothing on the console and no request but
+/// the page itself.
+fn open(page: &Path) -> Browser {
+    let mut b = Browser::launch().unwrap_or_else(|e| panic!("{e}"));
+    b.open(&url(page)).unwrap();
+    b.wait_for("window.axcheckFirstRowsMs", Duration::from_secs(10))
+        .unwrap();
+    b
+}
+
+fn shown(b: &mut Browser) -> String {
+    let v = b.eval("document.getElementById('shown-count').textContent");
+    v.unwrap().as_str().unwrap_or_default().to_string()
+}
+
+/// The test ids of the rows in the document, in order.
+fn row_ids(b: &mut Browser) -> Vec<String> {
+    let js =
+        "[...document.querySelectorAll('#rows tr[data-test-id]')].map(tr => tr.dataset.testId)";
+    let v = b.eval(js).unwrap();
+    let ids = v.as_array().unwrap().iter();
+    ids.map(|x| x.as_str().unwrap().to_string()).collect()
+}
+
+/// (test id, E) of every axis test in results.json.
+fn results_e(out: &Path) -> Vec<(String, Option<f64>)> {
+    let text = std::fs::read(out.join("results.json")).unwrap();
+    let results: Value = serde_json::from_slice(&text).unwrap();
+    let axes = results["axes"].as_array().unwrap();
+    axes.iter()
+        .map(|a| {
+            let id = format!("{}|{}|{}", str(&a["machine"]), str(&a["axis"]), a["test"]);
+            (id, a["parameters"]["E"].as_f64())
+        })
+        .collect()
+}
+
+fn str(v: &Value) -> &str {
+    v.as_str().unwrap()
+}
+
+#[test]
+fn the_example_page_renders_quietly_and_on_its_own() {
+    let page = example_page();
+    let mut b = open(page);
+    assert_eq!(b.console_errors(), Vec::<String>::new());
+    // No request but the page: no script, style, font or image from anywhere else.
+    assert_eq!(b.requests(), [url(page)]);
+    assert_eq!(shown(&mut b), "21 of 21 tests");
+    let title = b
+        .eval("document.getElementById('title').textContent")
+        .unwrap();
+    assert_eq!(title, "Plant 2 annual inspection");
+    // The verdict counts, each a button with its number and its verdict as text.
+    let counts = b
+        .eval("[...document.querySelectorAll('#counts button')].map(x => x.textContent)")
+        .unwrap();
+    let want = [
+        "21 tests",
+        "2 FAIL",
+        "1 NONCOMPLIANT",
+        "1 INCONCLUSIVE",
+        "0 ERROR",
+        "17 PASS",
+    ];
+    assert_eq!(counts, serde_json::json!(want));
+    // Verdicts are words in the rows, not colours only.
+    let verdict = "document.querySelector('tr[data-test-id=\"VMC-07|Y|1\"]').dataset.verdict + ' ' + \
+         document.querySelector('tr[data-test-id=\"VMC-07|Y|1\"] .badge').textContent";
+    assert_eq!(b.eval(verdict).unwrap(), "fail FAIL");
+}
+
+#[test]
+fn typing_a_machine_name_shows_its_tests() {
+    let page = example_page();
+    let mut b = open(page);
+    b.click("#search").unwrap();
+    b.type_text("LATHE").unwrap();
+    assert_eq!(shown(&mut b), "3 of 21 tests");
+    let ids = row_ids(&mut b);
+    assert_eq!(ids, ["LATHE-5|X|1", "LATHE-5|Z|1", "LATHE-5|C|1"]);
+    // Words narrow together (machine and verdict), and the verdict buttons filter too.
+    b.type_text(" noncompliant").unwrap();
+    assert_eq!(shown(&mut b), "1 of 21 tests");
+    assert_eq!(row_ids(&mut b), ["LATHE-5|X|1"]);
+    for _ in 0.."LATHE noncompliant".len() {
+        b.press_key("Backspace").unwrap();
+    }
+    assert_eq!(shown(&mut b), "21 of 21 tests");
+    b.click("#counts button[data-verdict=\"fail\"]").unwrap();
+    assert_eq!(shown(&mut b), "2 of 21 tests");
+    assert_eq!(row_ids(&mut b), ["VMC-07|Y|1", "MILL-3|Y|1"]);
+    let pressed = "document.querySelector('#counts button[data-verdict=\"fail\"]').ariaPressed";
+    assert_eq!(b.eval(pressed).unwrap(), "true");
+    assert_eq!(b.console_errors(), Vec::<String>::new());
+}
+
+#[test]
+fn sorting_by_e_puts_the_largest_first() {
+    let page = example_page();
+    let mut expected = results_e(page.parent().unwrap());
+    // Numbers as numbers, largest first; tests without E (GOST) last.
+    expected.sort_by(|a, b| match (a.1, b.1) {
+        (Some(x), Some(y)) => y.total_cmp(&x),
+        (x, y) => x.is_none().cmp(&y.is_none()),
+    });
+    let mut b = open(page);
+    b.click("button[data-column=\"E\"]").unwrap();
+    let ids = row_ids(&mut b);
+    assert!(ids.len() >= 10, "{ids:?}");
+    let want: Vec<&str> = expected.iter().map(|(id, _)| id.as_str()).collect();
+    assert_eq!(ids, want[..ids.len()]);
+    assert_eq!(ids[0], "GANTRY-1|X|1", "E = 25.11 µm is the largest");
+    let sort = "document.querySelector('button[data-column=\"E\"]').parentElement.ariaSort";
+    assert_eq!(b.eval(sort).unwrap(), "descending");
+    // A second click turns the order round (the test without E stays last).
+    b.click("button[data-column=\"E\"]").unwrap();
+    assert_eq!(
+        row_ids(&mut b)[0],
+        "MILL-3|X|1",
+        "E = 1.07 µm is the smallest"
+    );
+}
+
+#[test]
+fn clicking_a_row_shows_its_detail_with_its_charts() {
+    let page = example_page();
+    let mut b = open(page);
+    b.click("tr[data-test-id=\"MILL-3|Y|1\"]").unwrap();
+    let charts = "document.querySelectorAll('#detail svg[role=img]').length >= 2 && \
+                  document.getElementById('detail').innerText";
+    let text = b.wait_for(charts, Duration::from_secs(10)).unwrap();
+    let text = text.as_str().unwrap();
+    for want in [
+        "MILL-3 Y",
+        "FAIL",
+        "ISO 230-2 2.20",
+        "23.00",
+        "Bidirectional positional deviations (ISO 230-2 Fig. 2a)",
+        "Unidirectional positional deviations (ISO 230-2 Fig. 2b)",
+        "sign_inverted",
+    ] {
+        assert!(text.contains(want), "{want:?} not in the detail:\n{text}");
+    }
+    // The charts are the PDF's scenes: polylines and marks, with their axis labels.
+    let marks = b
+        .eval("document.querySelectorAll('#detail svg path, #detail svg polyline').length")
+        .unwrap();
+    assert!(marks.as_u64().unwrap() > 20, "{marks}");
+    let link = b
+        .eval("document.querySelector('#detail a[href$=\".pdf\"]').getAttribute('href')")
+        .unwrap();
+    assert_eq!(link, "reports/MILL-3/Y.pdf");
+    assert!(page.parent().unwrap().join(str(&link)).is_file());
+    // The address names the test, so the link can be sent; Escape closes the detail.
+    let hash = b.eval("decodeURIComponent(location.hash)").unwrap();
+    assert_eq!(hash, "#MILL-3|Y|1");
+    b.press_key("Escape").unwrap();
+    assert_eq!(
+        b.eval("document.getElementById('detail').hidden").unwrap(),
+        true
+    );
+    assert_eq!(b.console_errors(), Vec::<String>::new());
+}
+
+#[test]
+fn the_keyboard_reaches_every_row_and_opens_it() {
+    let page = example_page();
+    let mut b = open(page);
+    b.click("#search").unwrap();
+    b.type_text("lathe").unwrap();
+    // Down from the search box: the first row; then the next; Enter opens it.
+    b.press_key("ArrowDown").unwrap();
+    b.press_key("ArrowDown").unwrap();
+    let focused = b.eval("document.activeElement.dataset.testId").unwrap();
+    assert_eq!(focused, "LATHE-5|Z|1");
+    b.press_key("Enter").unwrap();
+    let title = "!document.getElementById('detail').hidden && document.activeElement.textContent";
+    let title = b.wait_for(title, Duration::from_secs(10)).unwrap();
+    assert!(title.as_str().unwrap().starts_with("LATHE-5 Z"), "{title}");
+}
+
+/// Names that would end the data's script element or become markup stay text.
+#[test]
+fn hostile_names_appear_as_text() {
+    let dir = scratch("html-hostile");
+    copy_data(&dir, "iso230-2_table2.csv");
+    let machine = "</script><img src=x onerror=alert(1)>";
+    let campaign = format!(
+        "campaign: {{name: '<!-- </SCRIPT> <b>bold</b>', date: 2026-11-20, spec: general}}\n\
+         machines:\n  - id: '{machine}'\n    axes:\n      - {{name: '\u{2028}<i>X</i>', kind: linear, data: data/iso230-2_table2.csv}}\n"
+    );
+    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
+    let out = dir.join("out");
+    let c = dir.join("campaign.yaml");
+    let args = [
+        "run",
+        c.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ];
+    let (code, stdout, stderr) = axcheck(&args);
+    assert!(code == 0 || code == 1, "{stdout}{stderr}");
+    let html = std::fs::read_to_string(out.join("summary.html")).unwrap();
+    assert!(
+        !html.contains(machine),
+        "the name is escaped in the page's source"
+    );
+
+    let mut b = open(&out.join("summary.html"));
+    let cell = b.eval("document.querySelector('#rows tr[data-test-id] td').textContent");
+    assert_eq!(cell.unwrap(), machine);
+    let title = b
+        .eval("document.getElementById('title').textContent")
+        .unwrap();
+    assert_eq!(title, "<!-- </SCRIPT> <b>bold</b>");
+    let markup = "document.querySelectorAll('img, b, i').length";
+    assert_eq!(b.eval(markup).unwrap(), 0);
+    b.click("#rows tr[data-test-id]").unwrap();
+    let detail = "!document.getElementById('detail').hidden && document.getElementById('detail-title').textContent";
+    let detail = b.wait_for(detail, Duration::from_secs(10)).unwrap();
+    assert!(detail.as_str().unwrap().starts_with(machine), "{detail}");
+    assert_eq!(b.eval(markup).unwrap(), 0);
+    assert_eq!(b.console_errors(), Vec::<String>::new());
+    assert_eq!(b.requests(), [url(&out.join("summary.html"))]);
+}
+
+#[test]
+fn no_html_skips_the_page() {
+    let dir = scratch("html-skip");
+    copy_data(&dir, "iso230-2_table2.csv");
+    let campaign = "campaign: {name: Skip, date: 2026-11-20, spec: general}\nmachines:\n  - id: M1\n    axes:\n      - {name: X, kind: linear, data: data/iso230-2_table2.csv}\n";
+    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
+    let c = dir.join("campaign.yaml");
+    let out = dir.join("out");
+    let args = [
+        "run",
+        c.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ];
+    let (code, stdout, _) = axcheck(&args);
+    assert_eq!(code, 0, "{stdout}");
+    assert!(out.join("summary.html").is_file());
+    let mut no_html = args.to_vec();
+    no_html.push("--no-html");
+    let (code, stdout, _) = axcheck(&no_html);
+    assert_eq!(code, 0, "{stdout}");
+    // The run's manifest removes the page the earlier run wrote.
+    assert!(!out.join("summary.html").exists(), "{stdout}");
+    assert!(!stdout.contains("summary.html"), "{stdout}");
+}
+
+/// With a history, the table has the trend flags and a test's detail its history charts.
+#[test]
+fn a_run_with_a_history_shows_trends_and_history_charts() {
+    let dir = scratch("html-history");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let history = dir.join("history");
+    copy_tree(&root.join("example-campaign/history"), &history);
+    let out = dir.join("out");
+    let args = [
+        "run",
+        "example-campaign/campaign.yaml",
+        "--out",
+        out.to_str().unwrap(),
+        "--history",
+        history.to_str().unwrap(),
+        "--no-pdf",
+    ];
+    let (code, stdout, stderr) = axcheck(&args);
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    let mut b = open(&out.join("summary.html"));
+    let trend =
+        "document.querySelector('tr[data-test-id=\"VMC-07|Y|1\"] td:last-child').textContent";
+    assert_eq!(b.eval(trend).unwrap(), "flagged: A, B, B_mean, E, R");
+    b.click("button[data-column=\"trend\"]").unwrap();
+    b.click("tr[data-test-id=\"VMC-07|Y|1\"]").unwrap();
+    let charts = "document.querySelectorAll('#detail .charts-history svg').length";
+    let n = b.wait_for(charts, Duration::from_secs(10)).unwrap();
+    // One chart per parameter with a limit or a trend: A, A↑, E, R, B, B̄ for this axis.
+    assert_eq!(n, 6);
+    assert_eq!(b.console_errors(), Vec::<String>::new());
+}
+
+fn copy_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_tree(&entry.path(), &target);
+        } else {
+            std::fs::copy(entry.path(), target).unwrap();
+        }
+    }
+}
