@@ -158,7 +158,7 @@ fn main() {
             m(|l| l.load_ms),
         ),
         (
-            "first rows seen by the driver (wall, CDP included)",
+            "page opened as the driver sees it (wall time to the load event, CDP included)",
             m(|l| l.wall_ms),
         ),
         (
