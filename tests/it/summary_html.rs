@@ -210,28 +210,43 @@ fn the_keyboard_reaches_every_row_and_opens_it() {
     assert!(title.as_str().unwrap().starts_with("LATHE-5 Z"), "{title}");
 }
 
-/// Names that would end the data's script element or become markup stay text.
-#[test]
-fn hostile_names_appear_as_text() {
-    let dir = scratch("html-hostile");
+/// A campaign (`campaign: {head}`) of one machine and axis, named as given (in YAML's
+/// single quotes), measured as ISO 230-2 Table 2, run with `--no-pdf` and `extra` in the
+/// scratch folder `name`. Returns the output folder, the exit status and the console.
+fn run_table2(
+    name: &str,
+    head: &str,
+    machine: &str,
+    axis: &str,
+    extra: &[&str],
+) -> (PathBuf, i32, String) {
+    let dir = scratch(name);
     copy_data(&dir, "iso230-2_table2.csv");
-    let machine = "</script><img src=x onerror=alert(1)>";
     let campaign = format!(
-        "campaign: {{name: '<!-- </SCRIPT> <b>bold</b>', date: 2026-11-20, spec: general}}\n\
-         machines:\n  - id: '{machine}'\n    axes:\n      - {{name: '\u{2028}<i>X</i>', kind: linear, data: data/iso230-2_table2.csv}}\n"
+        "campaign: {{{head}}}\nmachines:\n  - id: '{machine}'\n    axes:\n      - {{name: '{axis}', kind: linear, data: data/iso230-2_table2.csv}}\n"
     );
-    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
-    let out = dir.join("out");
     let c = dir.join("campaign.yaml");
-    let args = [
+    std::fs::write(&c, campaign).unwrap();
+    let out = dir.join("out");
+    let mut args = vec![
         "run",
         c.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
         "--no-pdf",
     ];
+    args.extend(extra);
     let (code, stdout, stderr) = axcheck(&args);
-    assert!(code == 0 || code == 1, "{stdout}{stderr}");
+    (out, code, stdout + &stderr)
+}
+
+/// Names that would end the data's script element or become markup stay text.
+#[test]
+fn hostile_names_appear_as_text() {
+    let machine = "</script><img src=x onerror=alert(1)>";
+    let head = "name: '<!-- </SCRIPT> <b>bold</b>', date: 2026-11-20, spec: general";
+    let (out, code, stdout) = run_table2("html-hostile", head, machine, "\u{2028}<i>X</i>", &[]);
+    assert!(code == 0 || code == 1, "{stdout}");
     let html = std::fs::read_to_string(out.join("summary.html")).unwrap();
     assert!(
         !html.contains(machine),
@@ -258,25 +273,14 @@ fn hostile_names_appear_as_text() {
 
 #[test]
 fn no_html_skips_the_page() {
-    let dir = scratch("html-skip");
-    copy_data(&dir, "iso230-2_table2.csv");
-    let campaign = "campaign: {name: Skip, date: 2026-11-20, spec: general}\nmachines:\n  - id: M1\n    axes:\n      - {name: X, kind: linear, data: data/iso230-2_table2.csv}\n";
-    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
-    let c = dir.join("campaign.yaml");
-    let out = dir.join("out");
-    let args = [
-        "run",
-        c.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--no-pdf",
-    ];
-    let (code, stdout, _) = axcheck(&args);
+    let head = "name: Skip, date: 2026-11-20, spec: general";
+    let (out, code, stdout) = run_table2("html-skip", head, "M1", "X", &[]);
     assert_eq!(code, 0, "{stdout}");
     assert!(out.join("summary.html").is_file());
-    let mut no_html = args.to_vec();
-    no_html.push("--no-html");
-    let (code, stdout, _) = axcheck(&no_html);
+    // Again into the same folder, without the page.
+    let c = out.parent().unwrap().join("campaign.yaml");
+    let (c, o) = (c.to_str().unwrap(), out.to_str().unwrap());
+    let (code, stdout, _) = axcheck(&["run", c, "--out", o, "--no-pdf", "--no-html"]);
     assert_eq!(code, 0, "{stdout}");
     // The run's manifest removes the page the earlier run wrote.
     assert!(!out.join("summary.html").exists(), "{stdout}");
