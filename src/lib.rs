@@ -11,6 +11,7 @@ pub mod atomic;
 pub mod batch;
 pub mod campaign;
 pub mod compensate;
+pub mod crosscheck;
 pub mod diagnose;
 pub mod evaluate;
 pub mod export;

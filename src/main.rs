@@ -254,7 +254,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             write_model,
             json,
         } => {
-            let data = measurement::read_file(&file, sheet.name())?.data;
+            let data = measurement::read_file_with(&file, &sheet.options())?.data;
             let options = axcheck::diagnose::Options {
                 pitch,
                 simulations,
@@ -287,7 +287,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             json,
         } => {
             let controller = cli::compensate::controller(&controller)?;
-            let data = measurement::read_file(&file, sheet.name())?.data;
+            let data = measurement::read_file_with(&file, &sheet.options())?.data;
             let request = cli::compensate::Request {
                 controller,
                 out: out.as_deref(),
@@ -323,7 +323,8 @@ fn eval(
     if s_from_ranges && standard != StandardId::Gost27843 {
         bail!("--s-from-ranges applies to --standard gost27843 only");
     }
-    let measurement::ReadTest { data, recognised } = measurement::read_file(file, sheet.name())?;
+    let measurement::ReadTest { data, recognised } =
+        measurement::read_file_with(file, &sheet.options())?;
     let evaluation = if s_from_ranges {
         gost27843::Gost27843 {
             s_method: gost27843::SMethod::Ranges,
@@ -333,10 +334,11 @@ fn eval(
         axcheck::evaluate::evaluate(&data, standard)
     };
     let name = file.display().to_string();
+    let other = (recognised.reported.as_ref()).map(|r| axcheck::crosscheck::compare(r, &data));
     let text = if json {
-        cli::json_with_read(&evaluation.json(), &name, &recognised)?
+        cli::json_with_read(&evaluation.json(), &name, &recognised, other.as_ref())?
     } else {
-        cli::eval::render(&name, &recognised, &evaluation)
+        cli::eval::render(&name, &recognised, &evaluation, other.as_ref())
     };
     print(&text)
 }

@@ -460,7 +460,7 @@ fn run_test(
     options: Options,
 ) -> Tested {
     let (data, recognised) =
-        match measurement::read_file_within(path, axis.data.sheet(), files.root) {
+        match measurement::read_file_within(path, &axis.data.read_options(), files.root) {
             Ok(read) => (read.data, read.recognised),
             Err(e) => return (slot.error(e.to_string()), None),
         };

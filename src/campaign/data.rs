@@ -14,8 +14,13 @@ pub enum DataSource {
     Files(Vec<String>),
     /// Every file under `dir` whose path relative to `dir` matches `glob`.
     Glob { dir: String, glob: String },
-    /// One workbook and the sheet to read (the first when `None`).
-    Book { file: String, sheet: Option<String> },
+    /// One file and what to read of it: the sheet of a workbook (the first when `None`),
+    /// the reference of an ecmc ISO 230 app file (the one it evaluated when `None`).
+    Book {
+        file: String,
+        sheet: Option<String>,
+        reference: Option<crate::measurement::Source>,
+    },
 }
 
 /// A `data:` that is none of its forms: where in it (`""`, `[1]`, `.dir`), whether the
@@ -40,8 +45,7 @@ impl BadData {
 }
 
 /// What `data:` may be, for messages.
-const FORMS: &str =
-    "a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME}";
+const FORMS: &str = "a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME} ({file: REPORT, reference: N} for an ecmc ISO 230 app file)";
 
 impl DataSource {
     pub fn from_value(value: &serde_norway::Value) -> Result<DataSource, BadData> {
@@ -73,6 +77,19 @@ impl DataSource {
         match self {
             DataSource::Book { sheet, .. } => sheet.as_deref(),
             _ => None,
+        }
+    }
+
+    /// What to read of every file: the sheet, the reference (`{file, sheet, reference}`).
+    pub fn read_options(&self) -> crate::measurement::ReadOptions<'_> {
+        match self {
+            DataSource::Book {
+                sheet, reference, ..
+            } => crate::measurement::ReadOptions {
+                sheet: sheet.as_deref(),
+                source: *reference,
+            },
+            _ => crate::measurement::ReadOptions::default(),
         }
     }
 
@@ -125,11 +142,12 @@ impl DataSource {
 }
 
 /// The keys of `data:` as a mapping.
-const MAP_KEYS: &[&str] = &["dir", "glob", "file", "sheet"];
+const MAP_KEYS: &[&str] = &["dir", "glob", "file", "sheet", "reference"];
 
-/// `{dir: FOLDER, glob: PATTERN}` or `{file: BOOK, sheet: NAME}` (sheet optional).
+/// `{dir: FOLDER, glob: PATTERN}` or `{file: BOOK, sheet: NAME, reference: N}` (sheet and
+/// reference optional).
 fn from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
-    let (mut dir, mut glob, mut file, mut sheet) = (None, None, None, None);
+    let (mut dir, mut glob, mut file, mut sheet, mut reference) = (None, None, None, None, None);
     for (k, v) in map {
         let Some(key) = k.as_str() else {
             return Err(BadData::value("", format!("expected {FORMS}")));
@@ -139,6 +157,7 @@ fn from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
             "glob" => (&mut glob, "a pattern such as \"*.csv\""),
             "file" => (&mut file, "a file path"),
             "sheet" => (&mut sheet, "a sheet's name"),
+            "reference" => (&mut reference, "a reference 1 to 5 or `rbv`"),
             other => {
                 return Err(BadData {
                     path: format!(".{other}"),
@@ -150,8 +169,12 @@ fn from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
                 });
             }
         };
-        // A sheet named `2024` is written unquoted: a whole number is its name.
-        let number_name = v.as_u64().map(|n| n.to_string()).filter(|_| key == "sheet");
+        // A sheet named `2024` is written unquoted: a whole number is its name (and a
+        // reference's number is a number).
+        let number_name = v
+            .as_u64()
+            .map(|n| n.to_string())
+            .filter(|_| key == "sheet" || key == "reference");
         match v.as_str().map(str::to_string).or(number_name) {
             Some(text) if !text.trim().is_empty() => *slot = Some(text),
             _ => {
@@ -160,14 +183,29 @@ fn from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
             }
         }
     }
-    match (dir, glob, file, sheet) {
-        (Some(dir), Some(glob), None, None) => Ok(DataSource::Glob { dir, glob }),
-        (None, None, Some(file), sheet) => Ok(DataSource::Book { file, sheet }),
-        (None, None, None, Some(_)) => Err(BadData::value(
+    let reference = match reference {
+        None => None,
+        Some(text) => Some(
+            crate::measurement::Source::parse(&text)
+                .map_err(|message| BadData::value(".reference", message))?,
+        ),
+    };
+    match (dir, glob, file, sheet, reference) {
+        (Some(dir), Some(glob), None, None, None) => Ok(DataSource::Glob { dir, glob }),
+        (None, None, Some(file), sheet, reference) => Ok(DataSource::Book {
+            file,
+            sheet,
+            reference,
+        }),
+        (None, None, None, Some(_), _) => Err(BadData::value(
             "",
             "`sheet` needs its `file`, e.g. {file: data/x.xlsx, sheet: X axis}".into(),
         )),
-        (_, _, None, None) => Err(BadData::value(
+        (None, None, None, None, Some(_)) => Err(BadData::value(
+            "",
+            "`reference` needs its `file`, e.g. {file: data/x-report.md, reference: 2}".into(),
+        )),
+        (_, _, None, None, None) => Err(BadData::value(
             "",
             "expected both `dir` and `glob`, e.g. {dir: data/vmc07, glob: \"x-*.csv\"}".into(),
         )),

@@ -11,9 +11,14 @@ const TARGETS_PER_BLOCK: usize = 5;
 const LABEL: usize = 14;
 const CELL: usize = 7;
 
-/// The report printed by `axcheck eval`: the file, what it was read as, the parameters
-/// and the per-target table.
-pub fn render(file: &str, recognised: &Recognised, e: &Evaluation) -> String {
+/// The report printed by `axcheck eval`: the file, what it was read as, the parameters,
+/// the results of the tool that wrote the file beside them, and the per-target table.
+pub fn render(
+    file: &str,
+    recognised: &Recognised,
+    e: &Evaluation,
+    other: Option<&axcheck::crosscheck::OtherTool>,
+) -> String {
     let mut out = String::new();
     let unit = e.kind.deviation_symbol();
     let pos = e.kind.position_symbol();
@@ -82,6 +87,9 @@ pub fn render(file: &str, recognised: &Recognised, e: &Evaluation) -> String {
     }
     for note in &e.notes {
         let _ = writeln!(out, "  note: {note}");
+    }
+    if let Some(tool) = other {
+        super::other_tool::render(&mut out, tool);
     }
     let _ = writeln!(
         out,

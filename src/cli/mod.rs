@@ -4,6 +4,7 @@ pub mod campaign;
 pub mod compensate;
 pub mod diagnose;
 pub mod eval;
+pub mod other_tool;
 pub mod plan;
 pub mod simulate;
 pub mod tables;
@@ -23,12 +24,14 @@ pub fn json_with_file<T: serde::Serialize>(value: &T, file: &str) -> serde_json:
     Ok(serde_json::to_string_pretty(&WithFile { value, file })? + "\n")
 }
 
-/// `--json` output of `eval`: `value`'s JSON, then the input file's name and what it was
-/// read as (`recognised`: layout, name, sheet, notes), pretty-printed.
+/// `--json` output of `eval`: `value`'s JSON, then the input file's name, what it was
+/// read as (`recognised`: layout, name, sheet, notes) and, when the file carries another
+/// tool's results, their comparison (`other_tool`), pretty-printed.
 pub fn json_with_read<T: serde::Serialize>(
     value: &T,
     file: &str,
     recognised: &axcheck::measurement::Recognised,
+    other_tool: Option<&axcheck::crosscheck::OtherTool>,
 ) -> serde_json::Result<String> {
     #[derive(serde::Serialize)]
     struct WithRead<'a, T> {
@@ -36,25 +39,36 @@ pub fn json_with_read<T: serde::Serialize>(
         value: &'a T,
         file: &'a str,
         recognised: &'a axcheck::measurement::Recognised,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        other_tool: Option<&'a axcheck::crosscheck::OtherTool>,
     }
     let with = WithRead {
         value,
         file,
         recognised,
+        other_tool,
     };
     Ok(serde_json::to_string_pretty(&with)? + "\n")
 }
 
-/// `--sheet NAME`: the sheet of a workbook to read.
+/// `--sheet NAME` and `--reference N`: what to read of a file.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct SheetArg {
     /// The sheet to read when the file is a workbook (XLSX); default: the first.
     #[arg(long, value_name = "NAME")]
     sheet: Option<String>,
+    /// The position source of an ecmc ISO 230 app file: reference 1 to 5, or `rbv` (the
+    /// motor's readback); default: the reference the app evaluated.
+    #[arg(long, value_name = "N|rbv", value_parser = axcheck::measurement::Source::parse)]
+    reference: Option<axcheck::measurement::Source>,
 }
 
 impl SheetArg {
-    pub fn name(&self) -> Option<&str> {
-        self.sheet.as_deref()
+    /// The sheet and the reference, as the readers take them.
+    pub fn options(&self) -> axcheck::measurement::ReadOptions<'_> {
+        axcheck::measurement::ReadOptions {
+            sheet: self.sheet.as_deref(),
+            source: self.reference,
+        }
     }
 }

@@ -204,6 +204,12 @@ pub enum ReadErrorKind {
     },
     #[error("{0}")]
     KeyValue(String),
+    #[error("{0}")]
+    EcmcApp(String),
+    #[error(
+        "{chosen} was asked for, but a {layout} file has one position source; a reference is chosen only in an ecmc ISO 230 app file"
+    )]
+    SourceOfOther { chosen: String, layout: String },
     // Renishaw .rtl/.rta
     #[error(
         "not a Renishaw .rtl/.rta file: {found}; such a file starts with `HEADER::`, then `TARGET DATA::`, `RUNS::`, `DEVIATIONS::` … `EOF::`"

@@ -34,6 +34,10 @@ pub enum Layout {
     RenishawRtl,
     /// A Renishaw laser test of a rotary axis.
     RenishawRta,
+    /// The ecmc ISO 230 app's Markdown report.
+    EcmcAppReport,
+    /// The ecmc ISO 230 app's raw-points CSV.
+    EcmcAppCsv,
 }
 
 impl Layout {
@@ -46,6 +50,8 @@ impl Layout {
             Layout::KeyValue => "key-value",
             Layout::RenishawRtl => "renishaw-rtl",
             Layout::RenishawRta => "renishaw-rta",
+            Layout::EcmcAppReport => "ecmc-iso230-report",
+            Layout::EcmcAppCsv => "ecmc-iso230-csv",
         }
     }
 
@@ -58,6 +64,8 @@ impl Layout {
             Layout::KeyValue => "ecmc key=value".into(),
             Layout::RenishawRtl => "Renishaw .rtl (linear)".into(),
             Layout::RenishawRta => "Renishaw .rta (rotary)".into(),
+            Layout::EcmcAppReport => "ecmc ISO 230 app report (Markdown)".into(),
+            Layout::EcmcAppCsv => "ecmc ISO 230 app raw points (CSV)".into(),
         }
     }
 }
@@ -71,6 +79,9 @@ pub struct Recognised {
     /// What the file says of its test beyond the readings (Renishaw USER-TEXT and
     /// ENVIRONMENT), when it says anything.
     pub info: Option<super::FileInfo>,
+    /// The results the tool that wrote the file printed in it (the ecmc ISO 230 app's
+    /// Status list), set beside axcheck's by [`crate::crosscheck`].
+    pub reported: Option<super::reported::ToolResults>,
 }
 
 impl Serialize for Recognised {
@@ -122,6 +133,10 @@ pub(crate) enum Reader {
     Table(TableKind),
     /// A Renishaw `.rtl`/`.rta` file, read whole.
     Renishaw,
+    /// The ecmc ISO 230 app's Markdown report.
+    EcmcAppReport,
+    /// The ecmc ISO 230 app's raw-points CSV.
+    EcmcAppCsv,
 }
 
 /// The first bytes of a ZIP archive (an XLSX or ODS workbook) and of an OLE2 compound
@@ -137,6 +152,9 @@ pub(crate) fn recognise(head: &[u8]) -> Result<Reader, ReadErrorKind> {
     if super::renishaw::looks_like(head) {
         return Ok(Reader::Renishaw);
     }
+    if super::ecmc_app::markdown::looks_like(head) {
+        return Ok(Reader::EcmcAppReport);
+    }
     let Some((number, line)) = first_content_line(head) else {
         // Blank or comments only: the long CSV reader says the file is empty.
         return Ok(Reader::Table(TableKind::Long));
@@ -145,7 +163,11 @@ pub(crate) fn recognise(head: &[u8]) -> Result<Reader, ReadErrorKind> {
         return Ok(Reader::KeyValue);
     }
     let text = std::str::from_utf8(line).ok();
-    if let Some(kind) = text.and_then(|t| table_kind(&header_names(t))) {
+    let names = text.map(header_names).unwrap_or_default();
+    if super::ecmc_app::raw_csv::looks_like(&names) {
+        return Ok(Reader::EcmcAppCsv);
+    }
+    if let Some(kind) = table_kind(&names) {
         return Ok(Reader::Table(kind));
     }
     Err(ReadErrorKind::Unrecognised {
@@ -169,10 +191,14 @@ fn tried(number: usize, text: Option<&str>) -> String {
     [
         "XLSX workbook: the file does not start as a ZIP archive (PK\\x03\\x04)".to_string(),
         "Renishaw .rtl/.rta: the first line is not `HEADER::`".to_string(),
+        "ecmc ISO 230 app report: the first line is not `# ecmc ISO 230 Bidirectional Positioning Report`".to_string(),
         format!("ecmc key=value: {line} is not KEY=VALUE"),
         format!("long CSV: {line} names none of target_mm|target_deg, direction, run, deviation_um …"),
         format!(
             "wide CSV: {line} has neither target_mm|target_deg first nor up_J_UNIT/down_J_UNIT columns"
+        ),
+        format!(
+            "ecmc ISO 230 app raw points: {line} has not the columns cycle, direction, target, selected_reference_slot"
         ),
     ]
     .join("; ")
@@ -244,6 +270,7 @@ mod tests {
             layout: sheet,
             notes: vec!["n".into()],
             info: None,
+            reported: None,
         };
         assert_eq!(
             serde_json::to_string(&r).unwrap(),

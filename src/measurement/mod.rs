@@ -6,15 +6,18 @@
 //! kept for the diagnosis.
 
 pub mod csv;
+pub mod ecmc_app;
 pub mod error;
 pub mod info;
 pub mod keyvalue;
 pub mod layout;
 pub mod renishaw;
+pub mod reported;
 pub(crate) mod table;
 pub mod wide;
 pub mod xlsx;
 
+pub use ecmc_app::Source;
 pub use error::{Location, ReadError, ReadErrorKind};
 pub use info::FileInfo;
 pub use layout::{Layout, ReadTest, Recognised};
@@ -355,26 +358,65 @@ pub fn fmt_target(kind: AxisKind, position: f64) -> String {
 /// Largest workbook read: a positioning test's book is a few hundred kB.
 pub const MAX_BOOK_BYTES: usize = 16 << 20;
 
+/// What to read of a file beyond its layout: the sheet of a workbook, the position source
+/// of an ecmc ISO 230 app file.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct ReadOptions<'a> {
+    /// The sheet of a workbook (the first when `None`; an error for another file).
+    pub sheet: Option<&'a str>,
+    /// The reference of an ecmc ISO 230 app file (the one it evaluated when `None`; an
+    /// error for another file).
+    pub source: Option<Source>,
+}
+
+impl<'a> ReadOptions<'a> {
+    pub fn sheet(sheet: Option<&'a str>) -> ReadOptions<'a> {
+        ReadOptions {
+            sheet,
+            source: None,
+        }
+    }
+}
+
 /// Reads a measurement in any layout from `reader`, choosing the layout by content; a
 /// workbook's first sheet.
 pub fn read<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadError> {
-    read_sheet(reader, file, None)
+    read_with(reader, file, &ReadOptions::default())
 }
 
 /// Reads a measurement in any layout from `reader`, choosing the layout by content;
 /// `sheet` names the sheet of a workbook (the first when `None`; an error for a file that
 /// is not a workbook).
 pub fn read_sheet<R: BufRead>(
-    mut reader: R,
+    reader: R,
     file: &str,
     sheet: Option<&str>,
 ) -> Result<ReadTest, ReadError> {
+    read_with(reader, file, &ReadOptions::sheet(sheet))
+}
+
+/// Reads a measurement in any layout from `reader`, choosing the layout by content, with
+/// `options`.
+pub fn read_with<R: BufRead>(
+    mut reader: R,
+    file: &str,
+    options: &ReadOptions,
+) -> Result<ReadTest, ReadError> {
+    let sheet = options.sheet;
     let head = reader
         .fill_buf()
         .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
     let how = layout::recognise(head).map_err(|kind| ReadError::new(Location::file(file), kind))?;
     let text_layout = match how {
         layout::Reader::Book => {
+            refuse_source(
+                options.source,
+                Layout::Xlsx {
+                    sheet: sheet.unwrap_or("").into(),
+                    table: TableKind::Long,
+                },
+                file,
+            )?;
             let limit = MAX_BOOK_BYTES;
             let bytes = read_all(
                 reader,
@@ -388,13 +430,18 @@ pub fn read_sheet<R: BufRead>(
         }
         layout::Reader::Renishaw => {
             refuse_sheet(sheet, Layout::RenishawRtl, file)?;
+            refuse_source(options.source, Layout::RenishawRtl, file)?;
             return read_renishaw(reader, file);
+        }
+        layout::Reader::EcmcAppReport | layout::Reader::EcmcAppCsv => {
+            return read_ecmc_app(reader, file, how, options);
         }
         layout::Reader::KeyValue => Layout::KeyValue,
         layout::Reader::Table(TableKind::Long) => Layout::LongCsv,
         layout::Reader::Table(TableKind::Wide) => Layout::WideCsv,
     };
     refuse_sheet(sheet, text_layout.clone(), file)?;
+    refuse_source(options.source, text_layout.clone(), file)?;
     let (data, notes) = match text_layout {
         Layout::KeyValue => keyvalue::read(reader, file)?,
         Layout::WideCsv => wide::read(reader, file)?,
@@ -406,8 +453,53 @@ pub fn read_sheet<R: BufRead>(
             layout: text_layout,
             notes,
             info: None,
+            reported: None,
         },
     })
+}
+
+/// An ecmc ISO 230 app report or raw-points CSV, with `options.source`'s deviations.
+fn read_ecmc_app<R: BufRead>(
+    reader: R,
+    file: &str,
+    how: layout::Reader,
+    options: &ReadOptions,
+) -> Result<ReadTest, ReadError> {
+    let source = options.source.unwrap_or_default();
+    let (layout, (data, notes, reported)) = match how {
+        layout::Reader::EcmcAppReport => (
+            Layout::EcmcAppReport,
+            ecmc_app::markdown::read(reader, file, source)?,
+        ),
+        _ => {
+            let (data, notes) = ecmc_app::raw_csv::read(reader, file, source)?;
+            (Layout::EcmcAppCsv, (data, notes, None))
+        }
+    };
+    refuse_sheet(options.sheet, layout.clone(), file)?;
+    Ok(ReadTest {
+        data,
+        recognised: Recognised {
+            layout,
+            notes,
+            info: None,
+            reported,
+        },
+    })
+}
+
+/// A reference chosen for a file that has no references to choose from is an error.
+fn refuse_source(source: Option<Source>, layout: Layout, file: &str) -> Result<(), ReadError> {
+    match source {
+        None => Ok(()),
+        Some(source) => {
+            let kind = ReadErrorKind::SourceOfOther {
+                chosen: source.describe(),
+                layout: layout.name(),
+            };
+            Err(ReadError::new(Location::file(file), kind))
+        }
+    }
 }
 
 /// A sheet named for a file that is not a workbook is an error, not ignored.
@@ -443,6 +535,7 @@ fn read_renishaw<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadErro
             layout,
             notes: test.notes,
             info,
+            reported: None,
         },
     })
 }
@@ -471,22 +564,27 @@ pub(crate) fn read_all<R: std::io::Read>(
 /// a regular file only, refused when it changes while it is read ([`crate::files`]);
 /// `sheet` as in [`read_sheet`].
 pub fn read_file(path: &Path, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
-    read_file_within(path, sheet, None)
+    read_file_within(path, &ReadOptions::sheet(sheet), None)
 }
 
-/// [`read_file`], refused unless the file opened lies inside the folder `root` (a real
-/// path; [`crate::files::open_within`]).
+/// [`read_file`] with `options` (the sheet, the reference of an ecmc ISO 230 app file).
+pub fn read_file_with(path: &Path, options: &ReadOptions) -> Result<ReadTest, ReadError> {
+    read_file_within(path, options, None)
+}
+
+/// [`read_file`] with `options`, refused unless the file opened lies inside the folder
+/// `root` (a real path; [`crate::files::open_within`]).
 pub fn read_file_within(
     path: &Path,
-    sheet: Option<&str>,
+    options: &ReadOptions,
     root: Option<&Path>,
 ) -> Result<ReadTest, ReadError> {
     let name = path.display().to_string();
     crate::files::read_with(path, root, |file| {
-        read_sheet(
+        read_with(
             std::io::BufReader::with_capacity(64 * 1024, file),
             &name,
-            sheet,
+            options,
         )
     })
     .map_err(|e| ReadError::new(Location::file(&name), ReadErrorKind::Io(e.to_string())))?

@@ -103,6 +103,7 @@ pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<Read
             layout: Layout::Xlsx { sheet: name, table },
             notes,
             info: None,
+            reported: None,
         },
     })
 }

@@ -11,7 +11,7 @@ const LAYERS: &[&[&str]] = &[
     &["units", "suggest", "files", "panics"],
     &["measurement", "yaml", "lock", "atomic"],
     &["evaluate", "nde", "simulate"],
-    &["uncertainty"],
+    &["uncertainty", "crosscheck"],
     &["rules", "judge", "diagnose", "trend"],
     &["compensate", "plan"],
     &["campaign", "verify"],
