@@ -29,6 +29,27 @@ pub fn csv(data: &[u8]) {
     }
 }
 
+/// The ecmc ISO 230 app's report and raw-points CSV, through the dispatch (recognised by
+/// content), with every source the files may name; the app's own results compared.
+pub fn ecmc_app(data: &[u8]) {
+    use measurement::{ReadOptions, Source};
+    let sources = [None, Some(Source::Reference(2)), Some(Source::Readback)];
+    for source in sources {
+        let options = ReadOptions {
+            sheet: None,
+            source,
+        };
+        let Ok(test) = measurement::read_with(data, "fuzz.md", &options) else {
+            continue;
+        };
+        check_data(&test.data);
+        if let Some(reported) = &test.recognised.reported {
+            let compared = axcheck::crosscheck::compare(reported, &test.data);
+            let _ = serde_json::to_vec(&compared);
+        }
+    }
+}
+
 /// The wide CSV reader.
 pub fn wide(data: &[u8]) {
     if let Ok(axis) = measurement::wide::parse(data, "fuzz.csv") {

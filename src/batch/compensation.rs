@@ -140,8 +140,8 @@ fn case(
     let kind = axis.raw.kind;
     let path = crate::campaign::paths::contained(files.dir, &v.before, files.allow_outside)
         .map_err(|e| format!("compensation.verifies.before: {e}"))?;
-    let read =
-        crate::measurement::read_file_within(&path, &Default::default(), files.root).map_err(|e| e.to_string())?;
+    let read = crate::measurement::read_file_within(&path, &Default::default(), files.root)
+        .map_err(|e| e.to_string())?;
     let (before, _) = super::apply_nde(axis, read.data);
     let before_active = match &v.active {
         Some(a) => active(

@@ -55,6 +55,8 @@ pub struct AxisTest {
     pub diagnosis: Option<crate::diagnose::Diagnosis>,
     /// This test predicted by the models of each other diagnosed test of the axis.
     pub out_of_test: Vec<OutOfTest>,
+    /// The results the tool that wrote the file printed in it, beside axcheck's.
+    pub other_tool: Option<crate::crosscheck::OtherTool>,
 }
 
 impl AxisTest {
@@ -337,6 +339,7 @@ impl Slot {
             uncertainty: None,
             diagnosis: None,
             out_of_test: Vec::new(),
+            other_tool: None,
         }
     }
 
@@ -479,6 +482,8 @@ fn run_test(
         };
         return (test, None);
     }
+    // The tool's own results are of the readings as the file holds them (before NDE).
+    let other_tool = (recognised.reported.as_ref()).map(|r| crate::crosscheck::compare(r, &data));
     // The file's own conditions (a Renishaw ENVIRONMENT) fill what the campaign leaves out.
     let completed = (recognised.info.as_ref())
         .and_then(|info| axis.completed_by(info))
@@ -552,6 +557,7 @@ fn run_test(
     }
     let test = AxisTest {
         recognised: Some(recognised),
+        other_tool,
         conditions_from_file: from_file,
         diagnosis,
         compensation,

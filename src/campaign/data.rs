@@ -303,7 +303,7 @@ mod tests {
         let v: serde_norway::Value = serde_norway::from_str("12").unwrap();
         assert_eq!(
             DataSource::from_value(&v).unwrap_err().message,
-            "expected a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME}, got the number 12"
+            "expected a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME} ({file: REPORT, reference: N} for an ecmc ISO 230 app file), got the number 12"
         );
         let v: serde_norway::Value = serde_norway::from_str("[a.csv, 2]").unwrap();
         let e = DataSource::from_value(&v).unwrap_err();

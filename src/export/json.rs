@@ -63,6 +63,9 @@ pub struct TestJson<'a> {
     /// This test predicted by the models of the axis's other tests (several data files).
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     out_of_test: &'a [OutOfTest],
+    /// The results the tool that wrote the file printed, beside axcheck's (as `eval --json`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    other_tool: Option<&'a crate::crosscheck::OtherTool>,
     #[serde(skip_serializing_if = "Option::is_none")]
     error: Option<&'a str>,
 }
@@ -255,6 +258,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         compensation: None,
         diagnosis: t.diagnosis.as_ref(),
         out_of_test: &t.out_of_test,
+        other_tool: t.other_tool.as_ref(),
         error: t.error.as_deref(),
     }
 }

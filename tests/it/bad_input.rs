@@ -427,7 +427,7 @@ fn campaign_axis_errors_in_the_users_words() {
         ),
         (
             "{name: X, kind: linear, data: []}".into(),
-            "c.yaml:5:39: machines[0].axes[0].data: expected a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME}, got an empty list",
+            "c.yaml:5:39: machines[0].axes[0].data: expected a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME} ({file: REPORT, reference: N} for an ecmc ISO 230 app file), got an empty list",
         ),
         (
             "{name: X, kind: linear, data: {dir: [d], glob: x}}".into(),

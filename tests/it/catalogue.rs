@@ -355,7 +355,7 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
         (
             "data-number",
             "{name: data-number, kind: linear, data: 12}",
-            "data: expected a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME}, got the number 12",
+            "data: expected a file path, a list of paths, {dir: FOLDER, glob: PATTERN} or {file: BOOK, sheet: NAME} ({file: REPORT, reference: N} for an ecmc ISO 230 app file), got the number 12",
         ),
         (
             "travel-four",

@@ -31,6 +31,11 @@ fn csv_corpus() {
 }
 
 #[test]
+fn ecmc_app_corpus() {
+    replay("ecmc_app", targets::ecmc_app);
+}
+
+#[test]
 fn keyvalue_corpus() {
     replay("keyvalue", targets::keyvalue);
 }

@@ -15,6 +15,7 @@ mod cli;
 mod console;
 mod controllers;
 mod decision;
+mod ecmc_app;
 mod diagnose;
 mod external;
 mod fuzz_corpus;

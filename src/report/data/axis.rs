@@ -39,6 +39,8 @@ pub struct AxisReport<'a> {
     compensation: Option<CompensationSection<'a>>,
     /// The axis over the inspection history (only when the run keeps one).
     history: Option<super::trends::HistorySection>,
+    /// The results the tool that wrote the file printed, beside axcheck's.
+    other_tool: Option<super::other_tool::OtherToolSection<'a>>,
     generator: String,
 }
 
@@ -89,6 +91,10 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .zip(e)
             .map(|(c, e)| compensation_section(c, e, t.verification.as_ref())),
         history: None,
+        other_tool: t
+            .other_tool
+            .as_ref()
+            .map(super::other_tool::other_tool_section),
         generator: generator(),
     }
 }
