@@ -1,16 +1,18 @@
 //! Formulas other tools are known to use in place of ISO 230-2's, each with the quantity
 //! it replaces: when a tool's printed value is what one of them gives from the same
-//! readings (within the tool's rounding), that formula is the cause of the difference.
+//! readings (within the roundings), that formula is the cause of the difference.
 //!
-//! Known from the ecmc ISO 230 app's published source and its reports' notes
-//! (anderssandstrom/ecmc_cfg_tool, `ecmc_iso230_qt.py`): from 2026-03-09 to 2026-03-27 it
-//! computed R_i = max(√(2s↑² + 2s↓² + B_i²), R↑_i, R↓_i); before 2026-03-09 it took the
-//! range of the readings for the repeatability, |B_i| for the reversal and E = M + B̄.
-//! A tool dividing by n instead of n − 1 for the standard deviation is the other common
-//! slip (ISO 230-2 2.16 divides by n − 1).
+//! Known from the tools' published source and their reports' own words:
+//! - the ecmc ISO 230 app (anderssandstrom/ecmc_cfg_tool, `ecmc_iso230_qt.py`): from
+//!   2026-03-09 to 2026-03-27 R_i = max(√(2s↑² + 2s↓² + B_i²), R↑_i, R↓_i); before
+//!   2026-03-09 ranges for the repeatability, |B_i| for the reversal and E = M + B̄;
+//! - the ecmc ISO 230-2 scripts of 2021 (anderssandstrom/ecmccomgui, `ecmcISO230_2.py`):
+//!   R = max(R↑, R↓) (their report says "max(R_fwd,R_bwd)"), and the two directions
+//!   swapped in the reports they wrote (the input's forward readings stored as backward);
+//! - a standard deviation divided by n instead of n − 1 (ISO 230-2 2.16 divides by n − 1).
 
 use crate::evaluate::Evaluation;
-use crate::measurement::reported::Quantity;
+use crate::measurement::reported::{Family, Quantity};
 
 /// One target's statistics, as the formulas use them (µm or arcsec).
 struct Target {
@@ -24,85 +26,128 @@ struct Target {
     reversal: f64,
 }
 
+/// What a formula is computed from: the targets' statistics, the factor √((n − 1)/n)
+/// that turns s into the standard deviation divided by n, and the standard's parameters.
+struct Context<'a> {
+    targets: &'a [Target],
+    population: f64,
+    e: &'a Evaluation,
+}
+
 /// A formula in place of the standard's.
 struct Alternative {
+    /// The tool known to use it (`None`: a slip any tool may make).
+    by: Option<Family>,
     /// The quantity it replaces: a parameter key, or `R_uni` for max(R↑, R↓).
     replaces: &'static str,
     cause: &'static str,
-    value: fn(&[Target], f64) -> f64,
+    value: fn(&Context) -> Option<f64>,
 }
+
+const SQRT_R: &str = "the tool computes R_i = max(√(2s↑² + 2s↓² + B_i²), R↑_i, R↓_i) (the ecmc ISO 230 app from 2026-03-09 to 2026-03-27, as its notes say); ISO 230-2 2.17 gives R_i = max(2s↑ + 2s↓ + |B_i|, R↑_i, R↓_i), which is never smaller";
+const BAND: &str = "the tool takes R_i as the width of the band of both directions' readings, x̄ ± range/2 (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.17 gives R_i = max(2s↑ + 2s↓ + |B_i|, R↑_i, R↓_i)";
+const LARGER_R: &str = "the tool takes R as the larger of R↑ and R↓ (the ecmc ISO 230-2 scripts of 2021: \"max(R_fwd,R_bwd)\"), leaving out the reversal; ISO 230-2 2.18 takes the largest R_i = max(2s↑ + 2s↓ + |B_i|, R↑_i, R↓_i)";
+const BY_N: &str =
+    "the tool's standard deviation divides by n instead of n − 1 (ISO 230-2 2.16 divides by n − 1)";
+const RANGE_R: &str = "the tool takes the unidirectional repeatability as the range of the readings, max − min (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.16 gives R↑_i = 4s↑_i";
+const ABS_B: &str = "the tool averages |B_i|, the reversal's size (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.14 averages B_i with its sign";
+const M_PLUS_B: &str = "the tool computes E = M + the mean of |B_i| (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.20 takes the range of all the unidirectional mean deviations";
+const BAND_A: &str = "the tool bounds each direction by x̄ ± range/2 of its readings (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.23 takes x̄ ± 2s";
+const SWAPPED: &str = "the report has the two directions the other way round (the ecmc ISO 230-2 scripts of 2021 store the input's forward readings as backward): its value is axcheck's for the other direction";
+const SWAPPED_B: &str = "the report has the two directions the other way round (the ecmc ISO 230-2 scripts of 2021 store the input's forward readings as backward), which turns the sign of the reversal";
 
 const ALTERNATIVES: &[Alternative] = &[
     Alternative {
+        by: Some(Family::EcmcApp),
         replaces: "R",
-        cause: "the tool computes R_i = max(√(2s↑² + 2s↓² + B_i²), R↑_i, R↓_i) (the ecmc ISO 230 app from 2026-03-09 to 2026-03-27, as its notes say); ISO 230-2 2.17 gives R_i = max(2s↑ + 2s↓ + |B_i|, R↑_i, R↓_i), which is never smaller",
-        value: |t, _| {
-            max_of(t, |t| {
-                (2.0 * t.up_s.powi(2) + 2.0 * t.down_s.powi(2) + t.reversal.powi(2))
-                    .sqrt()
-                    .max(4.0 * t.up_s)
-                    .max(4.0 * t.down_s)
-            })
-        },
+        cause: SQRT_R,
+        value: |c| max_of(c.targets, sqrt_r),
     },
     Alternative {
+        by: Some(Family::EcmcApp),
         replaces: "R",
-        cause: "the tool takes R_i as the width of the band of both directions' readings, x̄ ± range/2 (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.17 gives R_i = max(2s↑ + 2s↓ + |B_i|, R↑_i, R↓_i)",
-        value: |t, _| max_of(t, |t| band(t).0 - band(t).1),
+        cause: BAND,
+        value: |c| max_of(c.targets, |t| band(t).0 - band(t).1),
     },
     Alternative {
+        by: Some(Family::EcmcScripts),
         replaces: "R",
-        cause: "the tool's standard deviation divides by n instead of n − 1 (ISO 230-2 2.16 divides by n − 1)",
-        value: |t, n| {
-            max_of(t, |t| {
-                let (u, d) = (t.up_s * n, t.down_s * n);
-                (2.0 * u + 2.0 * d + t.reversal.abs())
-                    .max(4.0 * u)
-                    .max(4.0 * d)
-            })
-        },
+        cause: LARGER_R,
+        value: |c| Some(c.e.value("R_up")?.max(c.e.value("R_down")?)),
     },
     Alternative {
+        by: None,
+        replaces: "R",
+        cause: BY_N,
+        value: |c| max_of(c.targets, |t| iso_r(t, c.population)),
+    },
+    Alternative {
+        by: Some(Family::EcmcApp),
         replaces: "R_uni",
-        cause: "the tool takes the unidirectional repeatability as the range of the readings, max − min (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.16 gives R↑_i = 4s↑_i",
-        value: |t, _| max_of(t, |t| t.up_range.max(t.down_range)),
+        cause: RANGE_R,
+        value: |c| max_of(c.targets, |t| t.up_range.max(t.down_range)),
     },
     Alternative {
+        by: None,
         replaces: "R_uni",
-        cause: "the tool's standard deviation divides by n instead of n − 1 (ISO 230-2 2.16 divides by n − 1)",
-        value: |t, n| max_of(t, |t| 4.0 * n * t.up_s.max(t.down_s)),
+        cause: BY_N,
+        value: |c| max_of(c.targets, |t| 4.0 * c.population * t.up_s.max(t.down_s)),
     },
     Alternative {
+        by: Some(Family::EcmcApp),
         replaces: "B_mean",
-        cause: "the tool averages |B_i|, the reversal's size (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.14 averages B_i with its sign",
-        value: |t, _| t.iter().map(|t| t.reversal.abs()).sum::<f64>() / t.len() as f64,
+        cause: ABS_B,
+        value: |c| mean_of(c.targets, |t| t.reversal.abs()),
     },
     Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "B_mean",
+        cause: SWAPPED_B,
+        value: |c| Some(-c.e.value("B_mean")?),
+    },
+    Alternative {
+        by: Some(Family::EcmcApp),
         replaces: "E",
-        cause: "the tool computes E = M + the mean of |B_i| (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.20 takes the range of all the unidirectional mean deviations",
-        value: |t, _| {
-            let means: Vec<f64> = t.iter().map(|t| (t.up_mean + t.down_mean) / 2.0).collect();
-            let m = max_of(&means, |x| *x) - min_of(&means, |x| *x);
-            m + t.iter().map(|t| t.reversal.abs()).sum::<f64>() / t.len() as f64
-        },
+        cause: M_PLUS_B,
+        value: |c| Some(c.e.value("M")? + mean_of(c.targets, |t| t.reversal.abs())?),
     },
     Alternative {
+        by: Some(Family::EcmcApp),
         replaces: "A",
-        cause: "the tool bounds each direction by x̄ ± range/2 of its readings (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.23 takes x̄ ± 2s",
-        value: |t, _| max_of(t, |t| band(t).0) - min_of(t, |t| band(t).1),
+        cause: BAND_A,
+        value: |c| Some(max_of(c.targets, |t| band(t).0)? - min_of(c.targets, |t| band(t).1)?),
     },
     Alternative {
+        by: None,
         replaces: "A",
-        cause: "the tool's standard deviation divides by n instead of n − 1 (ISO 230-2 2.16 divides by n − 1)",
-        value: |t, n| {
-            let hi =
-                |t: &Target| (t.up_mean + 2.0 * n * t.up_s).max(t.down_mean + 2.0 * n * t.down_s);
-            let lo =
-                |t: &Target| (t.up_mean - 2.0 * n * t.up_s).min(t.down_mean - 2.0 * n * t.down_s);
-            max_of(t, hi) - min_of(t, lo)
-        },
+        cause: BY_N,
+        value: |c| by_n_a(c),
     },
 ];
+
+/// The keys whose value for the other direction explains a swapped report.
+const DIRECTED: &[(&str, &str)] = &[("R_up", "R_down"), ("E_up", "E_down"), ("A_up", "A_down")];
+
+/// R_i by ISO 230-2 2.17 with both s scaled by `k`.
+fn iso_r(t: &Target, k: f64) -> f64 {
+    let (u, d) = (t.up_s * k, t.down_s * k);
+    (2.0 * u + 2.0 * d + t.reversal.abs())
+        .max(4.0 * u)
+        .max(4.0 * d)
+}
+
+fn sqrt_r(t: &Target) -> f64 {
+    let root = (2.0 * t.up_s.powi(2) + 2.0 * t.down_s.powi(2) + t.reversal.powi(2)).sqrt();
+    root.max(4.0 * t.up_s).max(4.0 * t.down_s)
+}
+
+/// A with s divided by n: the ends x̄ ± 2s over both directions.
+fn by_n_a(c: &Context) -> Option<f64> {
+    let k = 2.0 * c.population;
+    let hi = |t: &Target| (t.up_mean + k * t.up_s).max(t.down_mean + k * t.down_s);
+    let lo = |t: &Target| (t.up_mean - k * t.up_s).min(t.down_mean - k * t.down_s);
+    Some(max_of(c.targets, hi)? - min_of(c.targets, lo)?)
+}
 
 /// The upper and lower ends of x̄ ± range/2 over both directions at a target.
 fn band(t: &Target) -> (f64, f64) {
@@ -113,37 +158,65 @@ fn band(t: &Target) -> (f64, f64) {
     )
 }
 
-fn max_of<T>(items: &[T], f: impl Fn(&T) -> f64) -> f64 {
-    items.iter().map(f).fold(f64::NEG_INFINITY, f64::max)
+fn max_of<T>(items: &[T], f: impl Fn(&T) -> f64) -> Option<f64> {
+    items.iter().map(f).reduce(f64::max)
 }
 
-fn min_of<T>(items: &[T], f: impl Fn(&T) -> f64) -> f64 {
-    items.iter().map(f).fold(f64::INFINITY, f64::min)
+fn min_of<T>(items: &[T], f: impl Fn(&T) -> f64) -> Option<f64> {
+    items.iter().map(f).reduce(f64::min)
 }
 
-/// The known cause of a tool's value `theirs` for `quantity`: the first alternative
-/// formula that gives it within `rounding`.
-pub fn explain(quantity: Quantity, theirs: f64, rounding: f64, e: &Evaluation) -> Option<String> {
+fn mean_of<T>(items: &[T], f: impl Fn(&T) -> f64) -> Option<f64> {
+    (!items.is_empty()).then(|| items.iter().map(f).sum::<f64>() / items.len() as f64)
+}
+
+/// What is compared: the tool, its value `theirs` for `quantity`, the roundings.
+pub struct Printed {
+    pub family: Family,
+    pub quantity: Quantity,
+    pub theirs: f64,
+    pub rounding: f64,
+}
+
+/// The known cause of a tool's printed value: the first formula known of the tool (or of
+/// any tool) that gives it within the roundings.
+pub fn explain(printed: &Printed, e: &Evaluation) -> Option<String> {
+    let Printed {
+        family,
+        quantity,
+        theirs,
+        rounding,
+    } = *printed;
     let key = match quantity {
         Quantity::Parameter(key) => key,
         Quantity::LargerOf(..) => "R_uni",
         Quantity::NotIso(_) => return None,
     };
+    let close = |x: f64| (x - theirs).abs() <= rounding * (1.0 + 1e-6);
+    let swapped =
+        (DIRECTED.iter()).find_map(|&(a, b)| (key == a).then_some(b).or((key == b).then_some(a)));
+    if let Some(other) = swapped
+        && family == Family::EcmcScripts
+        && e.value(other).is_some_and(close)
+    {
+        return Some(SWAPPED.to_string());
+    }
     let targets = targets(e)?;
-    // s with n in the denominator: s · √((n − 1)/n).
     let n = e.n as f64;
-    let population = ((n - 1.0) / n).sqrt();
-    ALTERNATIVES
-        .iter()
-        .filter(|a| a.replaces == key)
-        .find(|a| ((a.value)(&targets, population) - theirs).abs() <= rounding * (1.0 + 1e-6))
+    let context = Context {
+        targets: &targets,
+        population: ((n - 1.0) / n).sqrt(),
+        e,
+    };
+    (ALTERNATIVES.iter())
+        .filter(|a| a.replaces == key && a.by.is_none_or(|by| by == family))
+        .find(|a| (a.value)(&context).is_some_and(close))
         .map(|a| a.cause.to_string())
 }
 
 /// The targets' statistics; `None` without repeated runs (no s).
 fn targets(e: &Evaluation) -> Option<Vec<Target>> {
-    e.targets
-        .iter()
+    (e.targets.iter())
         .map(|t| {
             Some(Target {
                 up_mean: t.up.mean,

@@ -16,7 +16,7 @@ pub mod causes;
 
 use crate::evaluate::{Evaluation, StandardId, evaluate};
 use crate::measurement::AxisData;
-use crate::measurement::reported::{Quantity, Reported, ToolResults};
+use crate::measurement::reported::{Family, Quantity, Reported, ToolResults};
 use serde::Serialize;
 
 /// The comparison of one file's other-tool results with axcheck's.
@@ -107,7 +107,8 @@ pub fn compare(tool: &ToolResults, data: &AxisData) -> OtherTool {
                 let rounding = r.rounding_um() + propagated(quantity, tool.readings_rounding, e.n);
                 let compared = compared(r, parameter, ours, rounding);
                 if !compared.agree {
-                    out.differences.push(difference(r, &compared, &e));
+                    out.differences
+                        .push(difference(r, &compared, tool.family, &e));
                 }
                 out.parameters.push(compared);
             }
@@ -170,8 +171,14 @@ fn compared(r: &Reported, parameter: String, ours: f64, rounding: f64) -> Compar
     }
 }
 
-fn difference(r: &Reported, c: &Compared, e: &Evaluation) -> Difference {
-    let cause = causes::explain(r.quantity, c.theirs, c.rounding, e);
+fn difference(r: &Reported, c: &Compared, family: Family, e: &Evaluation) -> Difference {
+    let printed = causes::Printed {
+        family,
+        quantity: r.quantity,
+        theirs: c.theirs,
+        rounding: c.rounding,
+    };
+    let cause = causes::explain(&printed, e);
     let message = match &cause {
         Some(cause) => cause.clone(),
         None => format!(

@@ -38,6 +38,8 @@ pub enum Layout {
     EcmcAppReport,
     /// The ecmc ISO 230 app's raw-points CSV.
     EcmcAppCsv,
+    /// An ecmc motion system test report of 2021 (Markdown).
+    EcmcReport,
 }
 
 impl Layout {
@@ -52,6 +54,7 @@ impl Layout {
             Layout::RenishawRta => "renishaw-rta",
             Layout::EcmcAppReport => "ecmc-iso230-report",
             Layout::EcmcAppCsv => "ecmc-iso230-csv",
+            Layout::EcmcReport => "ecmc-report",
         }
     }
 
@@ -66,6 +69,7 @@ impl Layout {
             Layout::RenishawRta => "Renishaw .rta (rotary)".into(),
             Layout::EcmcAppReport => "ecmc ISO 230 app report (Markdown)".into(),
             Layout::EcmcAppCsv => "ecmc ISO 230 app raw points (CSV)".into(),
+            Layout::EcmcReport => "ecmc motion system test report (Markdown, 2021)".into(),
         }
     }
 }
@@ -137,6 +141,8 @@ pub(crate) enum Reader {
     EcmcAppReport,
     /// The ecmc ISO 230 app's raw-points CSV.
     EcmcAppCsv,
+    /// An ecmc motion system test report of 2021.
+    EcmcReport,
 }
 
 /// The first bytes of a ZIP archive (an XLSX or ODS workbook) and of an OLE2 compound
@@ -154,6 +160,9 @@ pub(crate) fn recognise(head: &[u8]) -> Result<Reader, ReadErrorKind> {
     }
     if super::ecmc_app::markdown::looks_like(head) {
         return Ok(Reader::EcmcAppReport);
+    }
+    if super::ecmc_md::looks_like(head) {
+        return Ok(Reader::EcmcReport);
     }
     let Some((number, line)) = first_content_line(head) else {
         // Blank or comments only: the long CSV reader says the file is empty.
@@ -192,6 +201,7 @@ fn tried(number: usize, text: Option<&str>) -> String {
         "XLSX workbook: the file does not start as a ZIP archive (PK\\x03\\x04)".to_string(),
         "Renishaw .rtl/.rta: the first line is not `HEADER::`".to_string(),
         "ecmc ISO 230 app report: the first line is not `# ecmc ISO 230 Bidirectional Positioning Report`".to_string(),
+        "ecmc test report: the first line is not `# ecmc motion system test report`".to_string(),
         format!("ecmc key=value: {line} is not KEY=VALUE"),
         format!("long CSV: {line} names none of target_mm|target_deg, direction, run, deviation_um …"),
         format!(

@@ -7,6 +7,7 @@
 
 pub mod csv;
 pub mod ecmc_app;
+pub mod ecmc_md;
 pub mod error;
 pub mod info;
 pub mod keyvalue;
@@ -435,6 +436,20 @@ pub fn read_with<R: BufRead>(
         }
         layout::Reader::EcmcAppReport | layout::Reader::EcmcAppCsv => {
             return read_ecmc_app(reader, file, how, options);
+        }
+        layout::Reader::EcmcReport => {
+            refuse_sheet(sheet, Layout::EcmcReport, file)?;
+            refuse_source(options.source, Layout::EcmcReport, file)?;
+            let (data, notes, reported) = ecmc_md::read(reader, file)?;
+            return Ok(ReadTest {
+                data,
+                recognised: Recognised {
+                    layout: Layout::EcmcReport,
+                    notes,
+                    info: None,
+                    reported,
+                },
+            });
         }
         layout::Reader::KeyValue => Layout::KeyValue,
         layout::Reader::Table(TableKind::Long) => Layout::LongCsv,

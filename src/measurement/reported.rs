@@ -3,11 +3,22 @@
 
 use serde::Serialize;
 
+/// The tools whose results axcheck reads, for the formulas each is known to use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Family {
+    /// The ecmc ISO 230 app (2026).
+    EcmcApp,
+    /// The ecmc ISO 230-2 scripts that wrote the motion system test reports (2021).
+    EcmcScripts,
+}
+
 /// Another tool's results in a measurement file.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ToolResults {
     /// The tool, as axcheck names it (`ecmc ISO 230 app`).
     pub tool: String,
+    pub family: Family,
     /// The state the tool gave its results (`Complete`, `Demo` …), when it gives one.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub state: Option<String>,

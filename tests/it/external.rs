@@ -65,3 +65,69 @@ fn each_original_file_gives_the_parameters_of_its_csv() {
         }
     }
 }
+
+/// The ecmc motion system test reports of 2021: each Markdown original gives the
+/// parameters of the long CSV made from it, and the results it prints are set beside
+/// axcheck's with their causes: the 2021-11 report's directions swapped, its R the larger
+/// of R↑ and R↓.
+#[test]
+fn the_2021_reports_are_read_and_their_results_explained() {
+    for name in [
+        "bifrost_11358_ax1",
+        "bifrost_11360_ax1_slow",
+        "bifrost_11360_ax1_scanfit",
+    ] {
+        let md = measurement::read_file(&data_path(&format!("ecmc/{name}.md")), None).unwrap();
+        assert_eq!(md.recognised.layout, Layout::EcmcReport, "{name}");
+        let csv = measurement::read_file(&data_path(&format!("ecmc/{name}.csv")), None).unwrap();
+        let (a, b) = (
+            evaluate(&md.data, StandardId::Iso230_2),
+            evaluate(&csv.data, StandardId::Iso230_2),
+        );
+        for (p, q) in a.parameters.iter().zip(&b.parameters) {
+            assert_eq!(p.key(), q.key());
+            assert!(
+                (p.value - q.value).abs() < 0.005,
+                "{name} {}: {} against {}",
+                p.key(),
+                p.value,
+                q.value
+            );
+        }
+    }
+    let md = measurement::read_file(&data_path("ecmc/bifrost_11358_ax1.md"), None).unwrap();
+    assert!(
+        md.recognised
+            .notes
+            .iter()
+            .any(|n| n.contains("swaps the input's directions"))
+    );
+    let tool = axcheck::crosscheck::compare(md.recognised.reported.as_ref().unwrap(), &md.data);
+    let agreeing: Vec<&str> = (tool.parameters.iter())
+        .filter(|c| c.agree)
+        .map(|c| c.parameter.as_str())
+        .collect();
+    assert_eq!(agreeing, ["B", "M", "A"]);
+    let cause = |key: &str| {
+        let d = tool
+            .differences
+            .iter()
+            .find(|d| d.parameter == key)
+            .unwrap();
+        d.cause.clone().unwrap_or_default()
+    };
+    for key in [
+        "B_mean", "R_up", "R_down", "E_up", "E_down", "A_up", "A_down",
+    ] {
+        assert!(
+            cause(key).contains("the two directions the other way round"),
+            "{key}: {}",
+            cause(key)
+        );
+    }
+    assert!(
+        cause("R").contains("the larger of R↑ and R↓"),
+        "{}",
+        cause("R")
+    );
+}

@@ -3,7 +3,7 @@
 //! "BiDir Accuracy = A", "Uni Repeat = max(R^+, R^-)", …). [`crate::crosscheck`] sets
 //! them beside axcheck's.
 
-use crate::measurement::reported::{Quantity, Reported, ToolResults};
+use crate::measurement::reported::{Family, Quantity, Reported, ToolResults};
 
 /// Status labels, the quantity each names, in the report's order.
 const LABELS: &[(&str, Quantity)] = &[
@@ -76,6 +76,7 @@ pub(crate) fn results(
     }
     Some(ToolResults {
         tool: super::APP.to_string(),
+        family: Family::EcmcApp,
         state,
         values,
         formulas,
