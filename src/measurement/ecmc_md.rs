@@ -94,10 +94,12 @@ pub(crate) fn read<R: BufRead>(
             read.header.clear();
         } else if text.contains('|') && part != Part::Other {
             table_line(&mut read, part, text, number, file)?;
-        } else if let Some(r) = result_line(text, number) {
-            if !read.results.iter().any(|x| x.label == r.label) {
-                read.results.push(r);
-            }
+        } else if let Some(r) = result_line(text, number)
+            && !read.results.iter().any(|x| x.label == r.label)
+        {
+            // The first of each: later sections (limit switches) reuse no names, but a
+            // result printed twice keeps its first value.
+            read.results.push(r);
         }
     }
     if read.raw.is_empty() {
@@ -181,21 +183,8 @@ fn table_line(
 }
 
 /// A number as the scripts write it (`.00742`, `-.01989`, `15.0`).
-fn number(text: &str, column: &str, number: usize, file: &str) -> Result<f64, ReadError> {
-    text.trim()
-        .parse::<f64>()
-        .ok()
-        .filter(|x| x.is_finite())
-        .ok_or_else(|| {
-            error(
-                file,
-                number,
-                format!(
-                    "column `{column}`: expected a number, found `{}`",
-                    text.trim()
-                ),
-            )
-        })
+fn number(text: &str, column: &str, line: usize, file: &str) -> Result<f64, ReadError> {
+    super::ecmc_app::number(text, column, file, line)
 }
 
 fn decimals(text: &str) -> u32 {
@@ -232,20 +221,7 @@ fn sequence_row(
         ));
     };
     let cell = |k: usize| cells.get(k).copied().unwrap_or("");
-    let run = cell(cycle)
-        .parse::<u32>()
-        .ok()
-        .filter(|&j| j > 0)
-        .ok_or_else(|| {
-            error(
-                file,
-                line,
-                format!(
-                    "column `j (cycle)`: expected a cycle number 1, 2, 3 …, found `{}`",
-                    cell(cycle)
-                ),
-            )
-        })?;
+    let run = super::ecmc_app::cycle(cell(cycle), "j (cycle)", file, line)?;
     let deviation_mm = number(cell(x), "x(i,j)", line, file)?;
     read.decimals = read.decimals.max(decimals(cell(x)));
     read.raw.push(RawReading {

@@ -10,7 +10,9 @@
 //! targets disagree is refused with the line.
 
 use super::reported::{results, status_item};
-use super::{Point, Source, Transform, direction, error, notes, readings, timestamp};
+use super::{
+    Point, Source, Transform, cycle, direction_at, error, notes, number, readings, timestamp,
+};
 use crate::measurement::reported::{Reported, ToolResults};
 use crate::measurement::{AxisData, Lines, ReadError};
 use crate::units::AxisKind;
@@ -257,24 +259,13 @@ fn available(report: &Report) -> String {
 
 /// `Reference gain` and `Reference offset` (absent before the app had them: none).
 fn transform(report: &Report, file: &str) -> Result<Transform, ReadError> {
-    let number = |label: &str, default: f64| match report.config(label) {
+    let value = |label: &str, default: f64| match report.config(label) {
         None => Ok(default),
-        Some((text, line)) => text
-            .trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| {
-                error(
-                    file,
-                    line,
-                    format!("`{label}`: expected a number, found `{text}`"),
-                )
-            }),
+        Some((text, line)) => number(text, label, file, line),
     };
     Ok(Transform {
-        gain: number("Reference gain", 1.0)?,
-        offset: number("Reference offset", 0.0)?,
+        gain: value("Reference gain", 1.0)?,
+        offset: value("Reference offset", 0.0)?,
     })
 }
 
@@ -295,7 +286,7 @@ fn points(
             )
         })
     };
-    let cycle = need(&["Cycle"], "Cycle")?;
+    let cycle_col = need(&["Cycle"], "Cycle")?;
     let dir = need(&["Direction"], "Direction")?;
     let target = need(&["Target"], "Target")?;
     let time = table.column(&["Timestamp"]);
@@ -325,41 +316,9 @@ fn points(
                 )
             })
         };
-        let number = |k: usize, what: &str| -> Result<f64, ReadError> {
-            let text = cell(k, what)?;
-            text.parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| {
-                    error(
-                        file,
-                        *line,
-                        format!("column `{what}`: expected a number, found `{text}`"),
-                    )
-                })
-        };
-        let cycle_text = cell(cycle, "Cycle")?;
-        let cycle_n = cycle_text
-            .parse::<u32>()
-            .ok()
-            .filter(|&c| c > 0)
-            .ok_or_else(|| {
-                error(
-                    file,
-                    *line,
-                    format!(
-                        "column `Cycle`: expected a cycle number 1, 2, 3 …, found `{cycle_text}`"
-                    ),
-                )
-            })?;
-        let dir_text = cell(dir, "Direction")?;
-        let direction = direction(dir_text).ok_or_else(|| {
-            error(
-                file,
-                *line,
-                format!("column `Direction`: expected `forward` or `reverse`, found `{dir_text}`"),
-            )
-        })?;
+        let number = |k: usize, what: &str| number(cell(k, what)?, what, file, *line);
+        let cycle_n = cycle(cell(cycle_col, "Cycle")?, "Cycle", file, *line)?;
+        let direction = direction_at(cell(dir, "Direction")?, "Direction", file, *line)?;
         let target_value = number(target, "Target")?;
         let error_value = match value {
             Value::Error(k) => number(k, &table.header[k])?,

@@ -198,6 +198,42 @@ pub(crate) fn notes(source_name: &str, transform: Transform, points: &[Point]) -
     notes
 }
 
+/// A finite number written in column `column` at `line`.
+pub(crate) fn number(text: &str, column: &str, file: &str, line: usize) -> Result<f64, ReadError> {
+    let text = text.trim();
+    let value = text.parse::<f64>().ok().filter(|x| x.is_finite());
+    value.ok_or_else(|| {
+        let message = format!("column `{column}`: expected a number, found `{text}`");
+        error(file, line, message)
+    })
+}
+
+/// A cycle (run) number 1, 2, 3 … written in column `column` at `line`.
+pub(crate) fn cycle(text: &str, column: &str, file: &str, line: usize) -> Result<u32, ReadError> {
+    let text = text.trim();
+    text.parse::<u32>().ok().filter(|&c| c > 0).ok_or_else(|| {
+        let message =
+            format!("column `{column}`: expected a cycle number 1, 2, 3 …, found `{text}`");
+        error(file, line, message)
+    })
+}
+
+/// A direction as written in column `column` at `line` (`forward` or `reverse`).
+pub(crate) fn direction_at(
+    text: &str,
+    column: &str,
+    file: &str,
+    line: usize,
+) -> Result<Direction, ReadError> {
+    direction(text).ok_or_else(|| {
+        let message = format!(
+            "column `{column}`: expected `forward` or `reverse`, found `{}`",
+            text.trim()
+        );
+        error(file, line, message)
+    })
+}
+
 /// An error of an app file at `line` (0: the whole file).
 pub(crate) fn error(file: &str, line: usize, message: String) -> ReadError {
     let location = match line {

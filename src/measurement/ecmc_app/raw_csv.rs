@@ -6,7 +6,9 @@
 //! precision, Python's shortest form (`-6.1e-05`); the selected reference counted from 0
 //! in `selected_reference_slot` and from 1 in the `refN_` columns; reference values raw.
 
-use super::{Point, Source, Transform, direction, error, notes, readings, timestamp};
+use super::{
+    Point, Source, Transform, cycle, direction_at, error, notes, number, readings, timestamp,
+};
 use crate::measurement::csv::split_fields;
 use crate::measurement::{AxisData, Lines, ReadError};
 use crate::units::AxisKind;
@@ -98,7 +100,7 @@ pub(crate) fn read<R: BufRead>(
     };
     let cols = columns(&header, source, file)?;
     let at = |name: &str| header.find(name);
-    let (cycle, dir, target) = (
+    let (cycle_col, dir, target) = (
         header.need("cycle", file)?,
         header.need("direction", file)?,
         header.need("target", file)?,
@@ -132,23 +134,7 @@ pub(crate) fn read<R: BufRead>(
             ));
         }
         let cell = |k: usize| cells[k].trim();
-        let number = |k: usize| -> Result<f64, ReadError> {
-            cell(k)
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| {
-                    error(
-                        file,
-                        line,
-                        format!(
-                            "column `{}`: expected a number, found `{}`",
-                            header.names[k],
-                            cell(k)
-                        ),
-                    )
-                })
-        };
+        let number = |k: usize| number(cell(k), &header.names[k], file, line);
         let optional = |k: Option<usize>| -> Result<Option<f64>, ReadError> {
             match k {
                 Some(k) if !cell(k).is_empty() => number(k).map(Some),
@@ -176,30 +162,8 @@ pub(crate) fn read<R: BufRead>(
             let named = cols.pv.or(pv);
             selected_pv = named.map(|k| cell(k).to_string()).unwrap_or_default();
         }
-        let cycle_n = cell(cycle)
-            .parse::<u32>()
-            .ok()
-            .filter(|&c| c > 0)
-            .ok_or_else(|| {
-                error(
-                    file,
-                    line,
-                    format!(
-                        "column `cycle`: expected a cycle number 1, 2, 3 …, found `{}`",
-                        cell(cycle)
-                    ),
-                )
-            })?;
-        let direction = direction(cell(dir)).ok_or_else(|| {
-            error(
-                file,
-                line,
-                format!(
-                    "column `direction`: expected `forward` or `reverse`, found `{}`",
-                    cell(dir)
-                ),
-            )
-        })?;
+        let cycle_n = cycle(cell(cycle_col), "cycle", file, line)?;
+        let direction = direction_at(cell(dir), "direction", file, line)?;
         let target_value = number(target)?;
         let error_value = match (transform.is_none(), cols.mean) {
             (false, Some(m)) => transform.error(number(m)?, target_value),
