@@ -237,6 +237,97 @@ pub fn counts_line(result: &CampaignResult) -> String {
     )
 }
 
+/// `axcheck run`'s arguments.
+#[derive(clap::Args)]
+pub struct RunArgs {
+    /// Campaign file (YAML).
+    campaign: PathBuf,
+    /// Output folder.
+    #[arg(long, short, default_value = "out")]
+    out: PathBuf,
+    /// Worker threads (default: all cores).
+    #[arg(long, short, default_value_t = 0)]
+    pub jobs: usize,
+    /// Write no PDF reports.
+    #[arg(long)]
+    no_pdf: bool,
+    /// Write no summary.html.
+    #[arg(long)]
+    no_html: bool,
+    /// Skip the model check and diagnosis of each axis.
+    #[arg(long)]
+    no_diagnose: bool,
+    /// Folder with a customised copy of the report templates (templates/).
+    #[arg(long)]
+    templates: Option<PathBuf>,
+    /// A progress line for every finished test on stderr (without a terminal the
+    /// default is a line at every tenth of the campaign).
+    #[arg(long)]
+    progress: bool,
+    /// Append the run's results to the inspection history in this folder (default:
+    /// `campaign.history`, relative to the campaign file).
+    #[arg(long)]
+    history: Option<PathBuf>,
+    /// Years after the latest inspection within which a forecast crossing of a limit
+    /// is flagged (default: `campaign.trend_horizon_years`, else 2).
+    #[arg(long = "horizon")]
+    horizon_years: Option<f64>,
+    /// When another run is writing to the output (or history) folder, wait for it to
+    /// finish instead of stopping at once.
+    #[arg(long)]
+    wait: bool,
+}
+
+/// `axcheck check`'s arguments.
+#[derive(clap::Args)]
+pub struct CheckArgs {
+    /// Campaign file (YAML).
+    campaign: PathBuf,
+    /// Worker threads (default: all cores).
+    #[arg(long, short, default_value_t = 0)]
+    pub jobs: usize,
+    /// Also run the model check and diagnosis (slower; `run` does it by default).
+    #[arg(long)]
+    diagnose: bool,
+    /// A progress line for every finished test on stderr (without a terminal the
+    /// default is a line at every tenth of the campaign).
+    #[arg(long)]
+    progress: bool,
+}
+
+impl Progress {
+    /// `--progress`: a line for every test; else the default.
+    fn of(every_test: bool) -> Progress {
+        match every_test {
+            true => Progress::EveryTest,
+            false => Progress::Auto,
+        }
+    }
+}
+
+/// `axcheck run`: the exit status.
+pub fn run_command(args: &RunArgs) -> Result<u8> {
+    let options = RunOptions {
+        out: &args.out,
+        jobs: args.jobs,
+        no_pdf: args.no_pdf,
+        no_html: args.no_html,
+        no_diagnose: args.no_diagnose,
+        templates: args.templates.as_deref(),
+        progress: Progress::of(args.progress),
+        history: args.history.as_deref(),
+        horizon_years: args.horizon_years,
+        wait: args.wait,
+    };
+    run(&args.campaign, &options)
+}
+
+/// `axcheck check`: the exit status.
+pub fn check_command(args: &CheckArgs) -> Result<u8> {
+    let progress = Progress::of(args.progress);
+    check(&args.campaign, args.jobs, args.diagnose, progress)
+}
+
 /// Options of `axcheck run`.
 pub struct RunOptions<'a> {
     pub out: &'a Path,

@@ -139,6 +139,45 @@ pub fn controller(name: &str) -> Result<&'static dyn Controller> {
     })
 }
 
+/// `axcheck compensate`'s arguments.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Measurement file (any layout `eval` reads).
+    file: std::path::PathBuf,
+    #[command(flatten)]
+    sheet: super::SheetArg,
+    /// Controller whose table format to write: csv, linuxcnc, siemens-840d, fanuc,
+    /// heidenhain, twincat, ecmc (10.0.0 and later), ecmc-9.6.
+    #[arg(long, short)]
+    controller: String,
+    /// Table file to write (then a summary of measured and predicted parameters is
+    /// printed).
+    #[arg(long, short)]
+    out: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    table: TableArgs,
+    /// Standard for the parameters measured and predicted.
+    #[arg(long, short, default_value = "iso230-2", value_parser = super::parse_standard)]
+    standard: StandardId,
+    /// Print JSON: the table and the parameters measured and predicted.
+    #[arg(long)]
+    json: bool,
+}
+
+/// `axcheck compensate`: reads the file, writes the table; the text to print.
+pub fn command(args: Args) -> Result<String> {
+    let controller = controller(&args.controller)?;
+    let data = axcheck::measurement::read_file_with(&args.file, &args.sheet.options())?.data;
+    let request = Request {
+        controller,
+        out: args.out.as_deref(),
+        settings: args.table.settings(controller, data.kind)?,
+        standard: args.standard,
+        json: args.json,
+    };
+    run(&data, &request)
+}
+
 /// What `compensate` was asked for.
 pub struct Request<'a> {
     pub controller: &'static dyn Controller,

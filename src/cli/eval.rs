@@ -1,10 +1,55 @@
 //! `axcheck eval`: the parameters of one measurement file and its per-target table.
 
 use super::text::{left, right};
-use axcheck::evaluate::{Evaluation, StandardId};
-use axcheck::measurement::Recognised;
+use anyhow::{Result, bail};
+use axcheck::evaluate::gost27843::{Gost27843, SMethod};
+use axcheck::evaluate::{Evaluation, Standard, StandardId};
+use axcheck::measurement::{self, Recognised};
 use axcheck::units::{Direction, fmt_fixed, fmt_position};
 use std::fmt::Write;
+
+/// `axcheck eval`'s arguments.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Measurement file (long or wide CSV, XLSX workbook, ecmc key=value or report, ecmc
+    /// ISO 230 app report or CSV, Renishaw .rtl/.rta; the layout is recognised from the
+    /// content).
+    file: std::path::PathBuf,
+    #[command(flatten)]
+    sheet: super::SheetArg,
+    /// Standard: iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba.
+    #[arg(long, short, default_value = "iso230-2", value_parser = super::parse_standard)]
+    standard: StandardId,
+    /// GOST 27843 only: estimate S from the ranges, formula (6), instead of formula (5).
+    #[arg(long)]
+    s_from_ranges: bool,
+    /// Print JSON (a stable interface) instead of text.
+    #[arg(long)]
+    json: bool,
+}
+
+/// `axcheck eval`: the parameters of one file, what it was read as, and the results of
+/// the tool that wrote it beside them; the text to print.
+pub fn run(args: &Args) -> Result<String> {
+    if args.s_from_ranges && args.standard != StandardId::Gost27843 {
+        bail!("--s-from-ranges applies to --standard gost27843 only");
+    }
+    let measurement::ReadTest { data, recognised } =
+        measurement::read_file_with(&args.file, &args.sheet.options())?;
+    let evaluation = match args.s_from_ranges {
+        true => Gost27843 {
+            s_method: SMethod::Ranges,
+        }
+        .evaluate(&data),
+        false => axcheck::evaluate::evaluate(&data, args.standard),
+    };
+    let name = args.file.display().to_string();
+    let other = (recognised.reported.as_ref()).map(|r| axcheck::crosscheck::compare(r, &data));
+    Ok(match args.json {
+        true => super::json_with_read(&evaluation.json(), &name, &recognised, other.as_ref())?,
+        false => render(&name, &recognised, &evaluation, other.as_ref()),
+    })
+}
 
 /// Targets per block of the per-target table (keeps lines under 90 columns).
 const TARGETS_PER_BLOCK: usize = 5;

@@ -72,3 +72,22 @@ impl SheetArg {
         }
     }
 }
+
+/// `--standard`: a standard's key.
+pub fn parse_standard(text: &str) -> Result<axcheck::evaluate::StandardId, String> {
+    axcheck::evaluate::StandardId::parse(text).ok_or_else(|| {
+        format!(
+            "unknown standard `{text}`; expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba"
+        )
+    })
+}
+
+/// Prints to stdout; a closed pipe (`| head`) is not an error.
+pub fn print(text: &str) -> anyhow::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => Ok(other?),
+    }
+}

@@ -25,7 +25,7 @@ pub struct Args {
     #[arg(long, allow_hyphen_values = true, value_name = "FIRST,LAST")]
     measurement_travel: Option<String>,
     /// Standard: iso230-2 (default), gbt17421.2, gost27843, vdi3441 or nmtba.
-    #[arg(long, short, value_parser = crate::parse_standard)]
+    #[arg(long, short, value_parser = super::parse_standard)]
     standard: Option<StandardId>,
     /// An axis of a campaign instead of --kind and --travel (with --machine and --axis).
     #[arg(long)]

@@ -45,7 +45,7 @@ pub struct Args {
     #[arg(long, value_name = "AXIS=FILE")]
     other: Vec<String>,
     /// Standard for the parameters compared.
-    #[arg(long, short, default_value = "iso230-2", value_parser = crate::parse_standard)]
+    #[arg(long, short, default_value = "iso230-2", value_parser = super::parse_standard)]
     standard: StandardId,
     /// Print JSON (a stable interface) instead of text.
     #[arg(long)]

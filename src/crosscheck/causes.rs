@@ -9,6 +9,10 @@
 //! - the ecmc ISO 230-2 scripts of 2021 (anderssandstrom/ecmccomgui, `ecmcISO230_2.py`):
 //!   R = max(R↑, R↓) (their report says "max(R_fwd,R_bwd)"), and the two directions
 //!   swapped in the reports they wrote (the input's forward readings stored as backward);
+//!   E taken as the larger maximum minus the larger minimum of the two directions' means
+//!   (a `>` for a `<` in `ecmcISO230_2.py`); the 2021-10 bash version (`mainISO230.bash`)
+//!   computing every s from the last target's readings (a variable-name slip) with its
+//!   variance cut to 0.00001 mm² before the root (`bc`'s `scale=5`);
 //! - a standard deviation divided by n instead of n − 1 (ISO 230-2 2.16 divides by n − 1).
 
 use crate::evaluate::Evaluation;
@@ -53,6 +57,8 @@ const RANGE_R: &str = "the tool takes the unidirectional repeatability as the ra
 const ABS_B: &str = "the tool averages |B_i|, the reversal's size (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.14 averages B_i with its sign";
 const M_PLUS_B: &str = "the tool computes E = M + the mean of |B_i| (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.20 takes the range of all the unidirectional mean deviations";
 const BAND_A: &str = "the tool bounds each direction by x̄ ± range/2 of its readings (the ecmc ISO 230 app before 2026-03-09); ISO 230-2 2.23 takes x̄ ± 2s";
+const LARGER_MIN_E: &str = "the tool takes E as the larger of the directions' highest mean deviations minus the larger of their lowest (the ecmc ISO 230-2 scripts of 2021, a `>` for a `<`); ISO 230-2 2.20 takes the highest minus the lowest of all of them";
+const LAST_TARGET_S: &str = "the tool computes every target's s from the last target's readings, its variance cut to 0.00001 mm² before the root (the ecmc ISO 230-2 bash script of 2021-10, a variable-name slip); ISO 230-2 2.15 takes each target's own readings, so every value made of s (R, A) is wrong there";
 const SWAPPED: &str = "the report has the two directions the other way round (the ecmc ISO 230-2 scripts of 2021 store the input's forward readings as backward): its value is axcheck's for the other direction";
 const SWAPPED_B: &str = "the report has the two directions the other way round (the ecmc ISO 230-2 scripts of 2021 store the input's forward readings as backward), which turns the sign of the reversal";
 
@@ -118,6 +124,57 @@ const ALTERNATIVES: &[Alternative] = &[
         value: |c| Some(max_of(c.targets, |t| band(t).0)? - min_of(c.targets, |t| band(t).1)?),
     },
     Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "E",
+        cause: LARGER_MIN_E,
+        value: |c| {
+            let (up, down) = (|t: &Target| t.up_mean, |t: &Target| t.down_mean);
+            let top = max_of(c.targets, up)?.max(max_of(c.targets, down)?);
+            Some(top - min_of(c.targets, up)?.max(min_of(c.targets, down)?))
+        },
+    },
+    Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "R",
+        cause: LAST_TARGET_S,
+        value: |c| {
+            Some(
+                max_of(c.targets, |t| 4.0 * last_s(c, t.up_mean, true))?
+                    .max(max_of(c.targets, |t| 4.0 * last_s(c, t.down_mean, false))?),
+            )
+        },
+    },
+    Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "R_up",
+        cause: LAST_TARGET_S,
+        value: |c| max_of(c.targets, |t| 4.0 * last_s(c, t.up_mean, true)),
+    },
+    Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "R_down",
+        cause: LAST_TARGET_S,
+        value: |c| max_of(c.targets, |t| 4.0 * last_s(c, t.down_mean, false)),
+    },
+    Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "A_up",
+        cause: LAST_TARGET_S,
+        value: |c| last_s_a(c, Some(true)),
+    },
+    Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "A_down",
+        cause: LAST_TARGET_S,
+        value: |c| last_s_a(c, Some(false)),
+    },
+    Alternative {
+        by: Some(Family::EcmcScripts),
+        replaces: "A",
+        cause: LAST_TARGET_S,
+        value: |c| last_s_a(c, None),
+    },
+    Alternative {
         by: None,
         replaces: "A",
         cause: BY_N,
@@ -146,6 +203,41 @@ fn by_n_a(c: &Context) -> Option<f64> {
     let k = 2.0 * c.population;
     let hi = |t: &Target| (t.up_mean + k * t.up_s).max(t.down_mean + k * t.down_s);
     let lo = |t: &Target| (t.up_mean - k * t.up_s).min(t.down_mean - k * t.down_s);
+    Some(max_of(c.targets, hi)? - min_of(c.targets, lo)?)
+}
+
+/// The 2021-10 script's s at a target whose mean is `mean`: from the last target's readings
+/// of the direction, the variance in mm² cut to five decimals, as `bc` with `scale=5` does.
+fn last_s(c: &Context, mean: f64, up: bool) -> f64 {
+    let Some(last) = c.e.targets.last() else {
+        return 0.0;
+    };
+    let x = if up {
+        &last.up.deviations
+    } else {
+        &last.down.deviations
+    };
+    let n = x.len() as f64;
+    let variance_mm2 = x.iter().map(|v| ((v - mean) / 1000.0).powi(2)).sum::<f64>() / (n - 1.0);
+    ((variance_mm2 * 1e5).floor() / 1e5).sqrt() * 1000.0
+}
+
+/// A by ISO 230-2 2.22/2.23 with the 2021-10 script's s: one direction (`Some(up)`) or both.
+fn last_s_a(c: &Context, up: Option<bool>) -> Option<f64> {
+    let ends = |t: &Target, dir: bool| {
+        let (mean, s) = match dir {
+            true => (t.up_mean, last_s(c, t.up_mean, true)),
+            false => (t.down_mean, last_s(c, t.down_mean, false)),
+        };
+        (mean + 2.0 * s, mean - 2.0 * s)
+    };
+    let dirs: &[bool] = match up {
+        Some(true) => &[true],
+        Some(false) => &[false],
+        None => &[true, false],
+    };
+    let hi = |t: &Target| dirs.iter().map(|&d| ends(t, d).0).fold(f64::MIN, f64::max);
+    let lo = |t: &Target| dirs.iter().map(|&d| ends(t, d).1).fold(f64::MAX, f64::min);
     Some(max_of(c.targets, hi)? - min_of(c.targets, lo)?)
 }
 
