@@ -130,4 +130,25 @@ fn the_2021_reports_are_read_and_their_results_explained() {
         "{}",
         cause("R")
     );
+    assert!(
+        cause("E").contains("larger of their lowest"),
+        "{}",
+        cause("E")
+    );
+    // The 2021-10 report: B, B̄, E, M agree; every value made of s is the last-target slip.
+    let md = measurement::read_file(&data_path("ecmc/bifrost_11360_ax1_slow.md"), None).unwrap();
+    let tool = axcheck::crosscheck::compare(md.recognised.reported.as_ref().unwrap(), &md.data);
+    let agreeing: Vec<&str> = (tool.parameters.iter())
+        .filter(|c| c.agree)
+        .map(|c| c.parameter.as_str())
+        .collect();
+    assert_eq!(agreeing, ["B", "B_mean", "E_up", "E_down", "E", "M"]);
+    for d in &tool.differences {
+        let cause = d.cause.as_deref().unwrap_or_default();
+        assert!(
+            cause.contains("from the last target's readings"),
+            "{}: {cause}",
+            d.parameter
+        );
+    }
 }
