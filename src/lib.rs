@@ -26,6 +26,8 @@ pub mod plan;
 #[cfg(feature = "pdf")]
 pub mod report;
 pub mod rules;
+#[cfg(all(feature = "pdf", feature = "parquet"))]
+pub mod session;
 pub mod simulate;
 pub mod suggest;
 pub mod trend;

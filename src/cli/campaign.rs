@@ -1,15 +1,14 @@
 //! `axcheck run` and `axcheck check`: a whole campaign.
 
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Result, anyhow};
 use axcheck::batch::{self, AxisTest, CampaignResult};
 use axcheck::campaign::Campaign;
-use axcheck::export;
 use axcheck::history::AxisTrends;
 use axcheck::judge::Verdict;
+use axcheck::session;
 use axcheck::units::fmt_fixed;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
@@ -28,42 +27,58 @@ pub enum Progress {
     EveryTest,
 }
 
-/// Evaluates a campaign, reporting progress on stderr.
-pub fn evaluate_with(
-    campaign: &Campaign,
-    options: batch::Options,
+/// The console of a run: progress on stderr (a bar on a terminal, else a line at every
+/// tenth or for every test) and the locks' messages.
+pub struct Console {
+    total: usize,
     progress: Progress,
-) -> CampaignResult {
-    // Progress counts axes, whose number is known before any data folder is read; an axis
-    // with several data files is several tests, reported one after the other.
-    let total: usize = campaign.axes().count();
-    let tests_done = AtomicUsize::new(0);
-    let axes_done = AtomicUsize::new(0);
-    let tenths = AtomicUsize::new(0);
-    let bar = (progress == Progress::Auto && std::io::stderr().is_terminal()).then(|| {
-        let bar = indicatif::ProgressBar::new(total as u64);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} {pos}/{len} axes {wide_bar} {msg}")
+    tests_done: AtomicUsize,
+    axes_done: AtomicUsize,
+    tenths: AtomicUsize,
+    bar: Option<indicatif::ProgressBar>,
+}
+
+impl Console {
+    /// Progress counts axes, whose number is known before any data folder is read; an axis
+    /// with several data files is several tests, reported one after the other.
+    pub fn new(campaign: &Campaign, progress: Progress) -> Console {
+        let total: usize = campaign.axes().count();
+        let bar = (progress == Progress::Auto && std::io::stderr().is_terminal()).then(|| {
+            let bar = indicatif::ProgressBar::new(total as u64);
+            bar.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "{spinner} {pos}/{len} axes {wide_bar} {msg}",
+                )
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        bar
-    });
-    let report = |t: &AxisTest| {
-        let k = tests_done.fetch_add(1, Ordering::Relaxed) + 1;
-        let axes = if t.test == t.tests {
-            axes_done.fetch_add(1, Ordering::Relaxed) + 1
-        } else {
-            axes_done.load(Ordering::Relaxed)
+            );
+            bar
+        });
+        Console {
+            total,
+            progress,
+            tests_done: AtomicUsize::new(0),
+            axes_done: AtomicUsize::new(0),
+            tenths: AtomicUsize::new(0),
+            bar,
+        }
+    }
+
+    fn report(&self, t: &AxisTest) {
+        let k = self.tests_done.fetch_add(1, Ordering::Relaxed) + 1;
+        let axes = match t.test == t.tests {
+            true => self.axes_done.fetch_add(1, Ordering::Relaxed) + 1,
+            false => self.axes_done.load(Ordering::Relaxed),
         };
-        match (&bar, progress) {
+        match (&self.bar, self.progress) {
             (Some(bar), _) => {
                 bar.set_position(axes as u64);
                 bar.set_message(format!("{} {}", t.label(), t.verdict));
             }
             (None, Progress::EveryTest) => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
             (None, Progress::Auto) => {
+                let total = self.total;
                 let tenth = (axes * 10 / total.max(1)).min(10);
-                if tenth > tenths.fetch_max(tenth, Ordering::Relaxed) {
+                if tenth > self.tenths.fetch_max(tenth, Ordering::Relaxed) {
                     eprintln!(
                         "axcheck: {} % ({axes} of {total} axes evaluated)",
                         tenth * 10
@@ -71,62 +86,36 @@ pub fn evaluate_with(
                 }
             }
         }
-    };
-    let result = batch::run(campaign, options, &report);
-    if let Some(bar) = bar {
-        bar.finish_and_clear();
     }
-    result
-}
 
-/// Refuses an output folder that is a file, or is (or lies inside) a folder holding the
-/// campaign's data, so outputs never mix with or overwrite measurements.
-pub fn check_output_dir(campaign: &Campaign, out: &Path) -> Result<()> {
-    if out.exists() && !out.is_dir() {
-        bail!(
-            "the output folder {} is a file; choose a folder with --out",
-            out.display()
-        );
-    }
-    let canonical = |p: &Path| std::fs::canonicalize(p).ok();
-    let Some(out_abs) = canonical(out).or_else(|| {
-        let parent = out
-            .parent()
-            .filter(|p| !p.as_os_str().is_empty())
-            .unwrap_or(Path::new("."));
-        canonical(parent).map(|p| p.join(out.file_name().unwrap_or_default()))
-    }) else {
-        return Ok(());
-    };
-    for (_, entry) in campaign.axes() {
-        let Ok(axis) = &entry.spec else { continue };
-        let folders: Vec<PathBuf> = match &axis.data {
-            axcheck::campaign::data::DataSource::Files(files) => files
-                .iter()
-                .filter_map(|f| campaign.dir.join(f).parent().map(Path::to_path_buf))
-                .collect(),
-            axcheck::campaign::data::DataSource::Glob { dir, .. } => vec![campaign.dir.join(dir)],
-            axcheck::campaign::data::DataSource::Book { file, .. } => (campaign.dir.join(file))
-                .parent()
-                .map(Path::to_path_buf)
-                .into_iter()
-                .collect(),
-        };
-        for folder in folders {
-            if let Some(data) = canonical(&folder)
-                && out_abs.starts_with(&data)
-            {
-                bail!(
-                    "the output folder {} is inside the data folder {} of {} {}; choose another --out",
-                    out.display(),
-                    folder.display(),
-                    entry.name,
-                    axis.raw.name
-                );
-            }
+    /// Clears the progress bar.
+    pub fn finish(&self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
         }
     }
-    Ok(())
+}
+
+impl session::Observer for Console {
+    fn lock(&self, message: &str) {
+        eprintln!("axcheck: {message}");
+    }
+
+    fn test_done(&self, test: &AxisTest) {
+        self.report(test);
+    }
+}
+
+/// Evaluates a campaign, reporting progress on stderr.
+pub fn evaluate_with(
+    campaign: &Campaign,
+    options: batch::Options,
+    progress: Progress,
+) -> CampaignResult {
+    let console = Console::new(campaign, progress);
+    let result = batch::run(campaign, options, &|t| console.report(t));
+    console.finish();
+    result
 }
 
 /// Lines of the tests that need attention printed at most; the rest are counted.
@@ -352,81 +341,67 @@ pub struct RunOptions<'a> {
 /// `axcheck run`.
 pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let start = Instant::now();
-    let out = options.out;
     let campaign = Campaign::load(path)?;
-    check_output_dir(&campaign, out)?;
     let history = (options.history.map(Path::to_path_buf)).or_else(|| campaign.history.clone());
-    let horizon = trend_options(options.horizon_years, &campaign)?;
-    if history.is_some() {
-        // Before the evaluation: a history needs the run's date.
-        axcheck::history::run_date(&campaign.info, &campaign.file.display().to_string())?;
-    }
-    // One writer per folder, from before the manifest is read until the history is
-    // appended: a second run on the folder stops here (or waits), not half-way.
-    let _locks = lock_folders(out, history.as_deref(), options.wait)?;
-    // A broken manifest is refused before the evaluation; the output paths themselves are
-    // checked by `write_all` before anything is written.
-    axcheck::atomic::OutputDir::open(out)?;
-    let mut exporters = export::table_exporters();
-    let pdf = !options.no_pdf && campaign.info.output.pdf;
-    // Built before the evaluation, so bad templates stop the run at once.
-    let reports = match pdf {
-        true => Some(axcheck::report::Reports::new(options.templates)?),
-        false => None,
+    let output = &campaign.info.output;
+    let plan = session::Plan {
+        out: options.out,
+        jobs: options.jobs,
+        pdf: !options.no_pdf && output.pdf,
+        html: !options.no_html && output.html,
+        diagnose: output.diagnose && !options.no_diagnose,
+        templates: options.templates,
+        history,
+        horizon: trend_options(options.horizon_years, &campaign)?,
+        wait: options.wait,
     };
-    let result = evaluate_with(
-        &campaign,
-        batch::Options {
-            jobs: options.jobs,
-            diagnose: campaign.info.output.diagnose && !options.no_diagnose,
-            drop_data: false,
-            compensate: true,
-        },
-        options.progress,
-    );
-    // The history first: the reports show each axis over it, this run included. A history
-    // that cannot be appended to or read costs the reports their history, not the outputs.
-    let appended = (history.as_deref()).map(|dir| append_history(&result, dir, horizon));
-    let trends = match &appended {
-        Some(Ok(appended)) => appended.trends.clone(),
-        _ => None,
-    };
-    exporters.push(Box::new(export::xlsx::Xlsx {
-        trends: trends.clone(),
-    }));
-    let html = !options.no_html && campaign.info.output.html;
-    if html {
-        exporters.push(Box::new(export::html::Html {
-            reports: reports.is_some(),
-            trends: trends.clone(),
-        }));
-    }
-    if let Some(reports) = reports {
-        exporters.push(Box::new(export::pdf::Pdf {
-            reports,
-            trends: trends.clone(),
-        }));
-    }
-    let written = export::write_all(&result, &exporters, out)
-        .with_context(|| format!("writing the outputs to {}", out.display()))?;
-    println!("{}", counts_line(&result));
-    for line in problems(&result, "all in summary.md") {
+    let console = Console::new(&campaign, options.progress);
+    let outcome = session::run(&campaign, &plan, &console);
+    console.finish();
+    let outcome = outcome?;
+    let result = &outcome.result;
+    println!("{}", counts_line(result));
+    for line in problems(result, "all in summary.md") {
         println!("{line}");
     }
-    if let Some(line) = warnings_line(&result, "all in summary.md") {
+    if let Some(line) = warnings_line(result, "all in summary.md") {
         println!("{line}");
     }
-    for line in super::tables::lines(&result) {
+    for line in super::tables::lines(result) {
         println!("{line}");
     }
-    let tables = result.tests.iter().any(|t| t.compensation.is_some());
-    println!(
+    println!("{}", outputs_line(&plan, &outcome, start));
+    match outcome.appended {
+        Some(Ok(appended)) => println!("{}", appended_line(&appended, plan.history.as_deref())),
+        Some(Err(e)) => {
+            let dir = plan.history.clone().unwrap_or_default();
+            return Err(anyhow::Error::new(e).context(format!(
+                "the outputs are written, but the run is not in the history {}",
+                dir.display()
+            )));
+        }
+        None => {}
+    }
+    if let Some(trends) = &outcome.trends {
+        print!("{}", flagged_lines(trends));
+    }
+    Ok(exit_code(result))
+}
+
+/// `Outputs in out (36 files) after 0.50 s: summary.md, …`.
+fn outputs_line(plan: &session::Plan, outcome: &session::Outcome, start: Instant) -> String {
+    let tables = outcome
+        .result
+        .tests
+        .iter()
+        .any(|t| t.compensation.is_some());
+    format!(
         "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.xlsx, summary.parquet, results.json, junit.xml{}{}{}",
-        out.display(),
-        written.len(),
+        plan.out.display(),
+        outcome.written.len(),
         start.elapsed().as_secs_f64(),
-        if html { ", summary.html" } else { "" },
-        if pdf {
+        if plan.html { ", summary.html" } else { "" },
+        if plan.pdf {
             ", summary.pdf, reports/MACHINE/AXIS.pdf"
         } else {
             ""
@@ -436,53 +411,21 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         } else {
             ""
         }
-    );
-    match appended {
-        Some(Ok(appended)) => println!("{}", appended.line),
-        Some(Err(e)) => {
-            return Err(e.context(format!(
-                "the outputs are written, but the run is not in the history {}",
-                history.unwrap_or_default().display()
-            )));
-        }
-        None => {}
-    }
-    if let Some(trends) = &trends {
-        print!("{}", flagged_lines(trends));
-    }
-    Ok(exit_code(&result))
+    )
 }
 
-/// Locks the output folder and the history folder (once when they are one), in the order
-/// of their real paths so that two waiting runs never hold one each. Also the one folder
-/// that `trend --out` and `simulate --fleet` write.
-pub(crate) fn lock_folders(
-    out: &Path,
-    history: Option<&Path>,
-    wait: bool,
-) -> Result<Vec<axcheck::lock::FolderLock>> {
-    let real = |p: &Path| axcheck::campaign::paths::real_path(p).unwrap_or_else(|_| p.into());
-    let mut folders: Vec<(PathBuf, &Path)> = std::iter::once(out)
-        .chain(history)
-        .map(|p| (real(p), p))
-        .collect();
-    folders.sort();
-    folders.dedup_by(|a, b| a.0 == b.0);
-    let mut locks = Vec::new();
-    for (_, dir) in folders {
-        let lock = axcheck::lock::FolderLock::acquire(dir, wait, |locked| {
-            eprintln!("axcheck: {locked}; waiting for it to finish (--wait)");
-        })?;
-        if let Some(ended) = &lock.taken_over {
-            eprintln!(
-                "axcheck: {} holds the lock file of a run that ended without removing it ({}); taken over",
-                dir.display(),
-                ended.describe()
-            );
-        }
-        locks.push(lock);
+/// `History: 21 rows appended to … after 0.12 s`, or why nothing was appended or read.
+fn appended_line(a: &session::Appended, dir: Option<&Path>) -> String {
+    let Some(path) = &a.path else {
+        let dir = dir.map(|d| d.display().to_string()).unwrap_or_default();
+        return format!("History: no test was evaluated; {dir} left as it was");
+    };
+    let rows = format!("History: {} rows appended to {}", a.rows, path.display());
+    let head = format!("{rows} after {:.2} s", a.seconds);
+    match &a.unread {
+        None => head,
+        Some(e) => format!("{head}; no trends, as the history cannot be read: {e}"),
     }
-    Ok(locks)
 }
 
 /// The trend horizon of a run: `--horizon`, else `campaign.trend_horizon_years`, else 2.
@@ -497,53 +440,6 @@ fn trend_options(
         (None, Some(years)) => Ok(Options::with_horizon(years).unwrap_or_default()),
         (None, None) => Ok(Options::default()),
     }
-}
-
-/// The run appended to its history: the line that says where, and the trends of the run's
-/// axes over the whole history (none when the history cannot be read back).
-struct Appended {
-    line: String,
-    trends: Option<Arc<AxisTrends>>,
-}
-
-/// Appends the run to the history in `dir` and fits the trends of the run's axes over it.
-/// A history file that cannot be read (another run's, damaged) leaves the reports without
-/// their history sections, said in the line; it does not undo the append.
-fn append_history(
-    result: &CampaignResult,
-    dir: &Path,
-    horizon: axcheck::trend::fit::Options,
-) -> Result<Appended> {
-    let start = Instant::now();
-    let records = axcheck::history::records(result)?;
-    let written = axcheck::history::append(dir, &records)
-        .with_context(|| format!("appending the run to the history {}", dir.display()))?;
-    let Some(path) = written else {
-        let line = format!(
-            "History: no test was evaluated; {} left as it was",
-            dir.display()
-        );
-        return Ok(Appended { line, trends: None });
-    };
-    let appended = format!(
-        "History: {} rows appended to {}",
-        records.len(),
-        path.display()
-    );
-    let elapsed = || start.elapsed().as_secs_f64();
-    Ok(match axcheck::history::read(dir) {
-        Ok(all) => Appended {
-            line: format!("{appended} after {:.2} s", elapsed()),
-            trends: Some(Arc::new(AxisTrends::of_run(&all, &records, horizon))),
-        },
-        Err(e) => Appended {
-            line: format!(
-                "{appended} after {:.2} s; no trends, as the history cannot be read: {e}",
-                elapsed()
-            ),
-            trends: None,
-        },
-    })
 }
 
 /// Flagged series printed by `run` before "… and N more".

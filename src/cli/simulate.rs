@@ -146,7 +146,7 @@ pub fn fleet(axes: usize, seed: u64, dir: &Path) -> Result<()> {
         anyhow::bail!("--fleet needs at least one axis");
     }
     let start = std::time::Instant::now();
-    let _lock = super::campaign::lock_folders(dir, None, false)?;
+    let _lock = axcheck::session::lock_folders(dir, None, false, &|m| eprintln!("axcheck: {m}"))?;
     let fleet = axcheck::simulate::fleet::generate(axes, seed);
     for f in &fleet.files {
         let path = dir.join(&f.path);

@@ -19,6 +19,7 @@ const LAYERS: &[&[&str]] = &[
     &["history"],
     &["report"],
     &["export"],
+    &["session"],
 ];
 
 const MAX_FUNCTION_LINES: usize = 150;

@@ -1,0 +1,156 @@
+//! One campaign run, in the pipeline's order: the output folder checked, the folders
+//! locked, the manifest and the templates read before anything is evaluated (so that a
+//! run that cannot write stops at once), every axis evaluated ([`crate::batch`]), the run
+//! appended to its inspection history and its trends fitted, then every output written
+//! ([`crate::export`]). The command line only prints what [`run`] returns.
+
+mod history;
+mod locks;
+mod output_dir;
+
+pub use history::{AppendError, Appended};
+pub use locks::lock_folders;
+pub use output_dir::{OutputDirError, check_output_dir};
+
+use crate::batch::{self, AxisTest, CampaignResult};
+use crate::campaign::Campaign;
+use crate::export;
+use crate::history::AxisTrends;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// What one run does.
+pub struct Plan<'a> {
+    pub out: &'a Path,
+    pub jobs: usize,
+    /// The axis reports and the summary PDF.
+    pub pdf: bool,
+    /// `summary.html`.
+    pub html: bool,
+    /// The model check and diagnosis of every axis.
+    pub diagnose: bool,
+    /// A customised copy of `templates/`.
+    pub templates: Option<&'a Path>,
+    /// The inspection history to append to.
+    pub history: Option<PathBuf>,
+    pub horizon: crate::trend::fit::Options,
+    /// Wait for another run that holds the output or history folder.
+    pub wait: bool,
+}
+
+/// What a run hears of while it runs: a lock it waits for or takes over, each test done.
+pub trait Observer: Sync {
+    /// A message for the user about the folders' locks.
+    fn lock(&self, message: &str);
+    fn test_done(&self, test: &AxisTest);
+}
+
+/// What a run did.
+pub struct Outcome {
+    pub result: CampaignResult,
+    /// Every output file written.
+    pub written: Vec<PathBuf>,
+    /// The history appended to (when the run keeps one), or why it could not be.
+    pub appended: Option<Result<Appended, AppendError>>,
+    /// The trends of the run's axes over the history, when it could be read.
+    pub trends: Option<Arc<AxisTrends>>,
+}
+
+/// Why a run stopped before its outputs were written.
+#[derive(Debug, thiserror::Error)]
+pub enum SessionError {
+    #[error(transparent)]
+    OutputDir(#[from] OutputDirError),
+    #[error(transparent)]
+    History(#[from] crate::history::HistoryError),
+    #[error(transparent)]
+    Lock(#[from] crate::lock::LockError),
+    #[error(transparent)]
+    Manifest(#[from] crate::atomic::OutputError),
+    #[error(transparent)]
+    Templates(#[from] crate::report::ReportError),
+    #[error("writing the outputs to {out}")]
+    Write {
+        out: PathBuf,
+        #[source]
+        source: export::ExportError,
+    },
+}
+
+/// Runs `campaign` by `plan`.
+pub fn run(
+    campaign: &Campaign,
+    plan: &Plan,
+    observer: &dyn Observer,
+) -> Result<Outcome, SessionError> {
+    let out = plan.out;
+    check_output_dir(campaign, out)?;
+    if plan.history.is_some() {
+        // Before the evaluation: a history needs the run's date.
+        crate::history::run_date(&campaign.info, &campaign.file.display().to_string())?;
+    }
+    // One writer per folder, from before the manifest is read until the history is
+    // appended: a second run on the folder stops here (or waits), not half-way.
+    let _locks = lock_folders(out, plan.history.as_deref(), plan.wait, &|m| {
+        observer.lock(m)
+    })?;
+    // A broken manifest is refused before the evaluation; the output paths themselves are
+    // checked by `write_all` before anything is written.
+    crate::atomic::OutputDir::open(out)?;
+    // Built before the evaluation, so bad templates stop the run at once.
+    let reports = match plan.pdf {
+        true => Some(crate::report::Reports::new(plan.templates)?),
+        false => None,
+    };
+    let options = batch::Options {
+        jobs: plan.jobs,
+        diagnose: plan.diagnose,
+        drop_data: false,
+        compensate: true,
+    };
+    let result = batch::run(campaign, options, &|t| observer.test_done(t));
+    // The history first: the reports show each axis over it, this run included. A history
+    // that cannot be appended to or read costs the reports their history, not the outputs.
+    let appended = (plan.history.as_deref()).map(|dir| history::append(&result, dir, plan.horizon));
+    let trends = match &appended {
+        Some(Ok(appended)) => appended.trends.clone(),
+        _ => None,
+    };
+    let exporters = exporters(plan, reports, trends.as_ref());
+    let written =
+        export::write_all(&result, &exporters, out).map_err(|source| SessionError::Write {
+            out: out.to_path_buf(),
+            source,
+        })?;
+    Ok(Outcome {
+        result,
+        written,
+        appended,
+        trends,
+    })
+}
+
+/// The run's exporters: the tables, the workbook, then the page and the PDFs when asked.
+fn exporters(
+    plan: &Plan,
+    reports: Option<crate::report::Reports>,
+    trends: Option<&Arc<AxisTrends>>,
+) -> Vec<Box<dyn export::Exporter>> {
+    let mut exporters = export::table_exporters();
+    exporters.push(Box::new(export::xlsx::Xlsx {
+        trends: trends.cloned(),
+    }));
+    if plan.html {
+        exporters.push(Box::new(export::html::Html {
+            reports: reports.is_some(),
+            trends: trends.cloned(),
+        }));
+    }
+    if let Some(reports) = reports {
+        exporters.push(Box::new(export::pdf::Pdf {
+            reports,
+            trends: trends.cloned(),
+        }));
+    }
+    exporters
+}
