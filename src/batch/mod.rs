@@ -519,16 +519,8 @@ fn run_test(
                     expanded: Some(&uncertainty.expanded),
                 };
                 let judgement = judge::judge(&evaluation, &limits, &decision);
-                let verdict = if findings.iter().any(|f| f.severity == Severity::Error) {
-                    Verdict::Noncompliant
-                } else if judgement.failed().next().is_some() {
-                    Verdict::Fail
-                } else if judgement.inconclusive().next().is_some() {
-                    Verdict::Inconclusive
-                } else {
-                    Verdict::Pass
-                };
-                (verdict, None, Some(judgement))
+                let plan_broken = findings.iter().any(|f| f.severity == Severity::Error);
+                (judgement.verdict(plan_broken), None, Some(judgement))
             }
         };
     let diagnosis_of = || {

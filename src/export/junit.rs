@@ -33,10 +33,12 @@ impl Exporter for Junit {
     }
 
     fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
-        let count = |v: Verdict| result.tests.iter().filter(|t| t.verdict == v).count();
-        let failures =
-            count(Verdict::Fail) + count(Verdict::Noncompliant) + count(Verdict::Inconclusive);
-        let errors = count(Verdict::Error);
+        let counts = result.counts();
+        let failures: usize = (counts.iter())
+            .filter(|(v, _)| v.is_failure())
+            .map(|(_, n)| n)
+            .sum();
+        let errors = counts[&Verdict::Error];
         let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
         let _ = writeln!(
             out,
@@ -57,15 +59,7 @@ impl Exporter for Junit {
                 .iter()
                 .filter(|t| t.machine.id == machine)
                 .collect();
-            let f = tests
-                .iter()
-                .filter(|t| {
-                    matches!(
-                        t.verdict,
-                        Verdict::Fail | Verdict::Noncompliant | Verdict::Inconclusive
-                    )
-                })
-                .count();
+            let f = tests.iter().filter(|t| t.verdict.is_failure()).count();
             let e = tests.iter().filter(|t| t.verdict == Verdict::Error).count();
             let _ = writeln!(
                 out,

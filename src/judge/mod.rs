@@ -214,6 +214,21 @@ pub struct Judgement {
 }
 
 impl Judgement {
+    /// The test's verdict: noncompliant when its plan breaks a rule of the standard (the
+    /// result does not follow it, whatever the values), else fail when a nonconformance is
+    /// proven, inconclusive when one lies within its uncertainty zone (ISO 14253-1), pass.
+    pub fn verdict(&self, plan_broken: bool) -> Verdict {
+        if plan_broken {
+            Verdict::Noncompliant
+        } else if self.failed().next().is_some() {
+            Verdict::Fail
+        } else if self.inconclusive().next().is_some() {
+            Verdict::Inconclusive
+        } else {
+            Verdict::Pass
+        }
+    }
+
     /// The checks whose nonconformance is proven.
     pub fn failed(&self) -> impl Iterator<Item = &Check> {
         self.checks.iter().filter(|c| c.outcome == Outcome::Fail)
@@ -303,6 +318,14 @@ impl Verdict {
             Verdict::Error => 3,
             Verdict::Pass => 4,
         }
+    }
+
+    /// Whether the verdict fails a CI gate as a failure (an error is counted apart).
+    pub fn is_failure(self) -> bool {
+        matches!(
+            self,
+            Verdict::Fail | Verdict::Noncompliant | Verdict::Inconclusive
+        )
     }
 
     pub fn name(self) -> &'static str {
