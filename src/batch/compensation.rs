@@ -99,9 +99,11 @@ fn read_table(
     place: &Place,
     key: &str,
 ) -> Result<Table, String> {
-    let path = crate::campaign::paths::contained(files.dir, file, files.allow_outside)
+    let path = files
+        .resolve(file)
         .map_err(|e| format!("compensation.{key}: {e}"))?;
-    let text = crate::files::read_to_string_within(&path, files.root)
+    let text = files
+        .read_to_string(&path)
         .map_err(|e| format!("{}: cannot read the table: {e}", path.display()))?;
     let reading = Reading {
         kind,
@@ -138,9 +140,10 @@ fn case(
     settings: &Settings,
 ) -> Result<VerifyCase, String> {
     let kind = axis.raw.kind;
-    let path = crate::campaign::paths::contained(files.dir, &v.before, files.allow_outside)
+    let path = files
+        .resolve(&v.before)
         .map_err(|e| format!("compensation.verifies.before: {e}"))?;
-    let read = crate::measurement::read_file_within(&path, &Default::default(), files.root)
+    let read = crate::measurement::read_file_within(&path, &Default::default(), files.real())
         .map_err(|e| e.to_string())?;
     let (before, _) = super::apply_nde(axis, read.data);
     let before_active = match &v.active {

@@ -159,13 +159,8 @@ impl CampaignResult {
     }
 }
 
-/// Where a campaign's files are read: its folder, whether paths may leave it, and the real
-/// path every file must be opened in ([`crate::campaign::paths::root`]).
-pub struct Files<'a> {
-    pub dir: &'a Path,
-    pub allow_outside: bool,
-    pub root: Option<&'a Path>,
-}
+/// Where a campaign's files are read: its folder and its rules.
+pub type Files = crate::files::Root;
 
 /// A test's result and, when it verifies a table, what it is compared with.
 type Tested = (AxisTest, Option<Result<compensation::VerifyCase, String>>);
@@ -192,9 +187,9 @@ pub fn run(
     options: Options,
     progress: &(dyn Fn(&AxisTest) + Sync),
 ) -> CampaignResult {
-    // The folder every file read for the campaign must be opened in.
-    let root = crate::campaign::paths::root(&campaign.dir, campaign.info.allow_outside_paths);
-    let specs = load_specs(campaign, root.as_deref());
+    // The folder every file read for the campaign must be opened in, resolved once.
+    let files = Files::campaign(&campaign.dir, campaign.info.allow_outside_paths);
+    let specs = load_specs(campaign, &files);
     let work: Vec<(Arc<MachineInfo>, &crate::campaign::AxisEntry)> = campaign
         .machines
         .iter()
@@ -203,11 +198,6 @@ pub fn run(
             m.axes.iter().map(move |a| (info.clone(), a))
         })
         .collect();
-    let files = Files {
-        dir: &campaign.dir,
-        allow_outside: campaign.info.allow_outside_paths,
-        root: root.as_deref(),
-    };
     let evaluate_all = || -> Vec<Tested> {
         work.par_iter()
             .flat_map_iter(|(machine, entry)| {
@@ -250,17 +240,14 @@ pub fn run(
 
 /// Every spec the campaign names, loaded once: `specs/NAME.yaml` beside the campaign, a
 /// path to a `.yaml` file, or a spec built into axcheck.
-fn load_specs(
-    campaign: &Campaign,
-    root: Option<&Path>,
-) -> BTreeMap<String, Result<Arc<Spec>, String>> {
+fn load_specs(campaign: &Campaign, files: &Files) -> BTreeMap<String, Result<Arc<Spec>, String>> {
     let mut specs = BTreeMap::new();
     for (_, entry) in campaign.axes() {
         if let Ok(axis) = &entry.spec
             && let Some(name) = &axis.spec
             && !specs.contains_key(name)
         {
-            let spec = load_spec(&campaign.dir, name, campaign.info.allow_outside_paths, root);
+            let spec = load_spec(files, name);
             specs.insert(name.clone(), spec.map(Arc::new));
         }
     }
@@ -268,26 +255,19 @@ fn load_specs(
 }
 
 /// A spec named by path, or `specs/NAME.yaml` beside the campaign, or a built-in one; the
-/// path follows the campaign's path rule (inside its folder unless `allow_outside_paths`),
-/// and the file opened must lie in `root` ([`crate::files::open_within`]).
-fn load_spec(
-    dir: &Path,
-    name: &str,
-    allow_outside: bool,
-    root: Option<&Path>,
-) -> Result<Spec, String> {
+/// path follows the campaign folder's rules ([`Files`]).
+fn load_spec(files: &Files, name: &str) -> Result<Spec, String> {
     let is_path = name.ends_with(".yaml") || name.ends_with(".yml");
     let relative = if is_path {
         name.to_string()
     } else {
         format!("specs/{name}.yaml")
     };
-    let candidate = crate::campaign::paths::contained(dir, &relative, allow_outside)
-        .map_err(|e| format!("spec `{name}`: {e}"))?;
+    let candidate = (files.resolve(&relative)).map_err(|e| format!("spec `{name}`: {e}"))?;
     // Anything at the path is the spec (a folder or a pipe there is an error, not a
     // reason to take the built-in spec of that name).
     if std::fs::symlink_metadata(&candidate).is_ok() {
-        let text = crate::files::read_to_string_within(&candidate, root)
+        let text = (files.read_to_string(&candidate))
             .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;
         return Spec::from_yaml(&text, &candidate.display().to_string()).map_err(|e| e.to_string());
     }
@@ -378,7 +358,7 @@ fn run_axis(
             .map(|p| Arc::new(planned(p, axis.raw.kind, files))),
         ..slot
     };
-    let paths = match axis.data.resolve(files.dir, files.allow_outside) {
+    let paths = match axis.data.resolve(files) {
         Ok(paths) => paths,
         Err(message) => {
             let at = format!("{}:{}", campaign.file.display(), axis.line);
@@ -398,7 +378,7 @@ fn run_axis(
         .enumerate()
         .map(|(k, path)| {
             let slot = Slot {
-                file: Some(relative_name(files.dir, path)),
+                file: Some(relative_name(files.dir(), path)),
                 test: k + 1,
                 tests,
                 ..slot.clone()
@@ -463,7 +443,7 @@ fn run_test(
     options: Options,
 ) -> Tested {
     let (data, recognised) =
-        match measurement::read_file_within(path, &axis.data.read_options(), files.root) {
+        match measurement::read_file_within(path, &axis.data.read_options(), files.real()) {
             Ok(read) => (read.data, read.recognised),
             Err(e) => return (slot.error(e.to_string()), None),
         };
@@ -650,9 +630,8 @@ pub fn plan_context(axis: &AxisSpec) -> PlanContext {
 /// The planned test `raw` names, read as the rules compare it (or why it cannot be read).
 fn planned(raw: &crate::campaign::model::PlanRaw, kind: AxisKind, files: &Files) -> rules::Planned {
     let read = || -> Result<(Vec<f64>, usize), String> {
-        let path = crate::campaign::paths::contained(files.dir, &raw.file, files.allow_outside)?;
-        let text =
-            crate::files::read_to_string_within(&path, files.root).map_err(|e| e.to_string())?;
+        let path = files.resolve(&raw.file)?;
+        let text = files.read_to_string(&path).map_err(|e| e.to_string())?;
         let plan = crate::plan::Plan::from_yaml(&text, &raw.file).map_err(|e| e.to_string())?;
         if plan.axis.kind != kind {
             return Err(format!(

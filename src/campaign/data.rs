@@ -4,8 +4,9 @@
 //! of that folder with `..` is refused unless the campaign sets `allow_outside_paths:
 //! true`: a campaign copied between machines should not silently read other files.
 
+use crate::files::Root;
 use crate::yaml::describe;
-use std::path::{Component, Path, PathBuf};
+use std::path::PathBuf;
 
 /// The `data:` of an axis.
 #[derive(Debug, Clone, PartialEq)]
@@ -93,52 +94,52 @@ impl DataSource {
         }
     }
 
-    /// The files, resolved against `base` and sorted (a glob's matches by path).
-    pub fn resolve(&self, base: &Path, allow_outside: bool) -> Result<Vec<PathBuf>, String> {
+    /// The files, resolved in the campaign's folder `root` and sorted (a glob's matches by
+    /// path).
+    pub fn resolve(&self, root: &Root) -> Result<Vec<PathBuf>, String> {
         match self {
-            DataSource::Book { file, .. } => inside(base, file, allow_outside).map(|p| vec![p]),
-            DataSource::Files(files) => files
-                .iter()
-                .map(|f| super::paths::contained(base, f, allow_outside))
-                .collect(),
-            DataSource::Glob { dir, glob } => {
-                let root = super::paths::contained(base, dir, allow_outside)?;
-                if !root.is_dir() {
-                    return Err(format!("data folder {} does not exist", root.display()));
-                }
-                let matcher = globset::Glob::new(glob)
-                    .map_err(|e| format!("bad glob `{glob}`: {e}"))?
-                    .compile_matcher();
-                let hidden_ok = glob.starts_with('.');
-                let mut found = Vec::new();
-                // Links to folders are not followed (a link loop cannot hang the walk); a
-                // link to a file, or a special file, is a match, checked like any other.
-                for entry in walkdir::WalkDir::new(&root)
-                    .follow_links(false)
-                    .sort_by_file_name()
-                {
-                    let entry =
-                        entry.map_err(|e| format!("cannot list {}: {e}", root.display()))?;
-                    if !super::paths::may_match(&entry) {
-                        continue;
-                    }
-                    let rel = entry.path().strip_prefix(&root).unwrap_or(entry.path());
-                    let hidden = rel
-                        .components()
-                        .any(|c| c.as_os_str().to_string_lossy().starts_with('.'));
-                    if (hidden_ok || !hidden) && matcher.is_match(rel) {
-                        found.push(entry.path().to_path_buf());
-                    }
-                }
-                if found.is_empty() {
-                    return Err(format!("no file in {} matches `{glob}`", root.display()));
-                }
-                found.sort();
-                super::paths::check_matches(base, &found, allow_outside)?;
-                Ok(found)
-            }
+            DataSource::Book { file, .. } => root.written(file).map(|p| vec![p]),
+            DataSource::Files(files) => files.iter().map(|f| root.resolve(f)).collect(),
+            DataSource::Glob { dir, glob } => glob_files(root, dir, glob),
         }
     }
+}
+
+/// Every file under `root/dir` whose path relative to it matches `glob`, sorted.
+fn glob_files(root: &Root, dir: &str, glob: &str) -> Result<Vec<PathBuf>, String> {
+    let folder = root.resolve(dir)?;
+    if !folder.is_dir() {
+        return Err(format!("data folder {} does not exist", folder.display()));
+    }
+    let matcher = globset::Glob::new(glob)
+        .map_err(|e| format!("bad glob `{glob}`: {e}"))?
+        .compile_matcher();
+    let hidden_ok = glob.starts_with('.');
+    let mut found = Vec::new();
+    // Links to folders are not followed (a link loop cannot hang the walk); a link to a
+    // file, or a special file, is a match, checked like any other.
+    for entry in walkdir::WalkDir::new(&folder)
+        .follow_links(false)
+        .sort_by_file_name()
+    {
+        let entry = entry.map_err(|e| format!("cannot list {}: {e}", folder.display()))?;
+        if !crate::files::may_match(&entry) {
+            continue;
+        }
+        let rel = entry.path().strip_prefix(&folder).unwrap_or(entry.path());
+        let hidden = rel
+            .components()
+            .any(|c| c.as_os_str().to_string_lossy().starts_with('.'));
+        if (hidden_ok || !hidden) && matcher.is_match(rel) {
+            found.push(entry.path().to_path_buf());
+        }
+    }
+    if found.is_empty() {
+        return Err(format!("no file in {} matches `{glob}`", folder.display()));
+    }
+    found.sort();
+    root.check_found(&found)?;
+    Ok(found)
 }
 
 /// The keys of `data:` as a mapping.
@@ -216,67 +217,9 @@ fn from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
     }
 }
 
-/// `base/relative`, refusing absolute paths and paths that leave `base` unless allowed
-/// (the rule for every path a campaign names: data files and spec files).
-pub fn inside(base: &Path, relative: &str, allow_outside: bool) -> Result<PathBuf, String> {
-    if relative.contains('\0') {
-        return Err(format!(
-            "path `{}` contains a NUL byte",
-            relative.escape_debug()
-        ));
-    }
-    let rel = Path::new(relative);
-    if !allow_outside {
-        if rel.is_absolute() || rel.has_root() {
-            return Err(format!(
-                "path `{relative}` is absolute; paths in a campaign are relative to its folder (set campaign.allow_outside_paths: true to allow it)"
-            ));
-        }
-        let mut depth: i64 = 0;
-        for c in rel.components() {
-            match c {
-                Component::ParentDir => depth -= 1,
-                Component::Normal(_) => depth += 1,
-                _ => {}
-            }
-            if depth < 0 {
-                return Err(format!(
-                    "path `{relative}` leaves the campaign's folder; set campaign.allow_outside_paths: true to allow it"
-                ));
-            }
-        }
-    }
-    Ok(base.join(rel))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn paths_stay_inside_unless_allowed() {
-        let base = Path::new("camp");
-        assert_eq!(
-            inside(base, "data/x.csv", false).unwrap(),
-            Path::new("camp/data/x.csv")
-        );
-        assert_eq!(
-            inside(base, "data/../x.csv", false).unwrap(),
-            Path::new("camp/data/../x.csv")
-        );
-        assert!(
-            inside(base, "../x.csv", false)
-                .unwrap_err()
-                .contains("leaves the campaign")
-        );
-        assert!(inside(base, "data/../../x.csv", false).is_err());
-        assert!(
-            inside(base, "/etc/passwd", false)
-                .unwrap_err()
-                .contains("absolute")
-        );
-        assert!(inside(base, "../x.csv", true).is_ok());
-    }
 
     #[test]
     fn data_forms() {
@@ -328,8 +271,9 @@ mod tests {
         let book = parse("{file: b.xlsx, sheet: X axis}").unwrap();
         assert_eq!(book.sheet(), Some("X axis"));
         assert_eq!(
-            book.resolve(Path::new("camp"), false).unwrap(),
-            vec![Path::new("camp/b.xlsx")]
+            book.resolve(&Root::campaign(std::path::Path::new("camp"), false))
+                .unwrap(),
+            vec![std::path::Path::new("camp/b.xlsx")]
         );
         assert_eq!(parse("{file: b.xlsx}").unwrap().sheet(), None);
         let e = parse("{file: b.xlsx, shet: X}").unwrap_err();
@@ -363,7 +307,7 @@ mod tests {
         assert!(
             parse("{file: ../b.xlsx}")
                 .unwrap()
-                .resolve(Path::new("c"), false)
+                .resolve(&Root::campaign(std::path::Path::new("c"), false))
                 .is_err()
         );
     }

@@ -8,7 +8,6 @@ pub mod data;
 mod file_info;
 mod load;
 pub mod model;
-pub mod paths;
 
 pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, Instrument, MachineInfo, Nde, OutputOptions,
@@ -244,7 +243,8 @@ fn history_dir(
             "expected a folder, e.g. `history: history`, got an empty text".into(),
         ));
     }
-    paths::contained(dir, history, info.allow_outside_paths)
+    crate::files::Root::campaign(dir, info.allow_outside_paths)
+        .resolve(history)
         .map(Some)
         .map_err(located)
 }

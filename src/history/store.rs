@@ -32,8 +32,8 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
         });
     }
     let path = file_path(dir, &first.campaign, first.date);
-    let root = crate::campaign::paths::root(dir, false);
-    check_same_campaign(&path, &first.campaign, root.as_deref())?;
+    let root = crate::files::Root::folder(dir, "history folder");
+    check_same_campaign(&path, &first.campaign, &root)?;
     let bytes = parquet_bytes(records).map_err(|e| HistoryError::Parquet {
         path: path.clone(),
         message: e.to_string(),
@@ -51,11 +51,11 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
 fn check_same_campaign(
     path: &Path,
     campaign: &str,
-    root: Option<&Path>,
+    root: &crate::files::Root,
 ) -> Result<(), HistoryError> {
     // A file that cannot be read (or is damaged: checked as `read_bytes` does) is replaced;
     // one opened outside the history folder is never read.
-    let Ok(bytes) = crate::files::read_within(path, root) else {
+    let Ok(bytes) = root.read(path) else {
         return Ok(());
     };
     if super::pages::check(&bytes).is_err() {
@@ -161,10 +161,10 @@ pub fn read(dir: &Path) -> Result<Vec<Record>, HistoryError> {
     let files = history_files(dir)?;
     // Each file is opened inside the folder's real path, resolved once: a folder on the
     // way swapped for a link after the walk is refused, not read.
-    let root = crate::campaign::paths::root(dir, false);
+    let root = crate::files::Root::folder(dir, "history folder");
     let per_file: Vec<Vec<Record>> = files
         .par_iter()
-        .map(|path| read_file(path, root.as_deref()))
+        .map(|path| read_file(path, root.real()))
         .collect::<Result<_, _>>()?;
     Ok(per_file.into_iter().flatten().collect())
 }

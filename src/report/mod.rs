@@ -156,18 +156,16 @@ pub fn history(test: &AxisTest, trends: Option<&AxisTrends>) -> Option<History> 
     Some(History { section, charts })
 }
 
-/// `root`: the real path of `dir`, which the opened template must lie in
-/// ([`crate::files::open_within`]): a link swapped after the check is refused.
-fn read_template(dir: &Path, root: Option<&Path>, name: &str) -> Result<String, ReportError> {
-    let path = dir.join(name);
-    crate::campaign::paths::check_real(dir, Path::new(name), "templates folder").map_err(
-        |outside| {
-            ReportError::Templates(format!(
-                "{outside}; copy the template into the folder instead of linking it"
-            ))
-        },
-    )?;
-    crate::files::read_to_string_within(&path, root)
+/// The template `name` of the folder `root`: its real path inside the folder, and the file
+/// opened inside it (a link swapped after the check is refused).
+fn read_template(root: &crate::files::Root, name: &str) -> Result<String, ReportError> {
+    let path = root.dir().join(name);
+    root.check(Path::new(name)).map_err(|outside| {
+        ReportError::Templates(format!(
+            "{outside}; copy the template into the folder instead of linking it"
+        ))
+    })?;
+    root.read_to_string(&path)
         .map_err(|e| ReportError::Templates(format!("{}: {e}", path.display())))
 }
 
@@ -198,18 +196,18 @@ impl Reports {
     /// does not put another file into the reports).
     pub fn new(dir: Option<&Path>) -> Result<Reports, ReportError> {
         let mut templates = HashMap::new();
-        let root = dir.and_then(|dir| crate::campaign::paths::root(dir, false));
+        let root = dir.map(|dir| crate::files::Root::folder(dir, "templates folder"));
         for (name, text) in TEMPLATES {
-            let text = match dir {
+            let text = match &root {
                 None => text.to_string(),
                 // A copy made before a template existed lacks it: the built-in one.
-                Some(dir)
+                Some(root)
                     if NEWER_TEMPLATES.contains(name)
-                        && std::fs::symlink_metadata(dir.join(name)).is_err() =>
+                        && std::fs::symlink_metadata(root.dir().join(name)).is_err() =>
                 {
                     text.to_string()
                 }
-                Some(dir) => read_template(dir, root.as_deref(), name)?,
+                Some(root) => read_template(root, name)?,
             };
             templates.insert(format!("/{name}"), text);
         }

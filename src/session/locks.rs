@@ -13,7 +13,7 @@ pub fn lock_folders(
     wait: bool,
     say: &dyn Fn(&str),
 ) -> Result<Vec<FolderLock>, LockError> {
-    let real = |p: &Path| crate::campaign::paths::real_path(p).unwrap_or_else(|_| p.into());
+    let real = |p: &Path| crate::files::real_path(p).unwrap_or_else(|_| p.into());
     let mut folders: Vec<(PathBuf, &Path)> = std::iter::once(out)
         .chain(history)
         .map(|p| (real(p), p))

@@ -1,43 +1,14 @@
-//! Containment by real path: a path a campaign names must stay in the campaign's folder
-//! after its symbolic links are followed, not only as written.
-//!
-//! The written rule ([`super::data::inside`]) refuses absolute paths and `..` that climbs
-//! out; but `data/x.csv` may be a link to `/etc/passwd`, or `data` a link to another
-//! folder. So each path is resolved to its real path (links followed, as the system will
-//! follow them when the file is opened) and compared with the real path of the folder.
-//! A path outside is refused before the file is opened, unless the campaign sets
-//! `allow_outside_paths: true`; links that stay inside keep working.
+//! Real paths: a path must stay in its folder after its symbolic links are followed, not
+//! only as written. `data/x.csv` may be a link to `/etc/passwd`, or `data` a link to
+//! another folder; so a path is resolved to its real path (links followed, as the system
+//! will follow them when the file is opened) and compared with the real path of the
+//! folder ([`super::Root`] applies the rule).
 
 use std::path::{Path, PathBuf};
 
-/// What to tell the user when a campaign path leads outside.
-const CAMPAIGN_HINT: &str = "set campaign.allow_outside_paths: true to allow it";
-
-/// `base/relative` under the written rule and, unless `allow_outside`, the real-path rule
-/// against the campaign folder `base` (the rule for data files, specs and the history).
-pub fn contained(base: &Path, relative: &str, allow_outside: bool) -> Result<PathBuf, String> {
-    let path = super::data::inside(base, relative, allow_outside)?;
-    if !allow_outside {
-        check_real(base, Path::new(relative), "campaign folder")
-            .map_err(|outside| format!("{outside}; {CAMPAIGN_HINT}"))?;
-    }
-    Ok(path)
-}
-
-/// The real path of the folder `base` (a campaign's, the templates' or a history's),
-/// inside which every file read from it must be opened ([`crate::files::open_within`]);
-/// `None` when the campaign allows outside paths, or when the folder cannot be resolved
-/// (nothing can be read from it then).
-pub fn root(base: &Path, allow_outside: bool) -> Option<PathBuf> {
-    if allow_outside {
-        return None;
-    }
-    real_path(folder(base)).ok()
-}
-
 /// The folder `base` as the system names it: `.` for the empty path of a campaign file
 /// named without a folder.
-fn folder(base: &Path) -> &Path {
+pub(super) fn folder(base: &Path) -> &Path {
     if base.as_os_str().is_empty() {
         Path::new(".")
     } else {
@@ -119,30 +90,6 @@ pub fn check_real(base: &Path, relative: &Path, folder_name: &'static str) -> Re
     })
 }
 
-/// A walked entry a glob may match: anything but a folder or a link to one. Links to
-/// files and special files are matches, so that they are checked and refused by name
-/// instead of silently left out.
-pub fn may_match(entry: &walkdir::DirEntry) -> bool {
-    let kind = entry.file_type();
-    if kind.is_symlink() {
-        return !std::fs::metadata(entry.path()).is_ok_and(|m| m.is_dir());
-    }
-    !kind.is_dir()
-}
-
-/// The real-path rule for each file a glob found under `base` (unless `allow_outside`).
-pub fn check_matches(base: &Path, found: &[PathBuf], allow_outside: bool) -> Result<(), String> {
-    if allow_outside {
-        return Ok(());
-    }
-    for path in found {
-        let relative = path.strip_prefix(base).unwrap_or(path);
-        check_real(base, relative, "campaign folder")
-            .map_err(|outside| format!("{outside}; {CAMPAIGN_HINT}"))?;
-    }
-    Ok(())
-}
-
 /// Links followed before a dangling chain is given up (the system's own limit is 40).
 const MAX_LINKS: usize = 40;
 
@@ -174,8 +121,17 @@ fn real_path_within(path: &Path, links: usize) -> std::io::Result<PathBuf> {
 
 #[cfg(all(test, unix))]
 mod tests {
-    use super::*;
+    use super::super::Root;
     use std::os::unix::fs::symlink;
+    use std::path::Path;
+
+    fn contained(
+        base: &Path,
+        relative: &str,
+        allow_outside: bool,
+    ) -> Result<std::path::PathBuf, String> {
+        Root::campaign(base, allow_outside).resolve(relative)
+    }
 
     #[test]
     fn links_out_are_named_and_links_in_pass() {

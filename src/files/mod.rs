@@ -10,6 +10,12 @@
 //! size and modification time are compared with those at opening, so a file that is
 //! written while axcheck reads it is noticed instead of giving half a measurement.
 
+mod real;
+mod root;
+
+pub use real::{Outside, real_path};
+pub use root::{Root, may_match};
+
 use std::fs::{File, Metadata};
 use std::io::Read;
 use std::path::{Path, PathBuf};

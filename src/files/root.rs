@@ -1,0 +1,197 @@
+//! A folder whose files axcheck reads, with its rules in one place: a campaign's folder
+//! (data files, specs, tables, the history's path), a templates folder, a history folder.
+//!
+//! - the written rule: a path a campaign names is relative to its folder; absolute paths
+//!   and `..` that climbs out are refused unless the campaign sets `allow_outside_paths`;
+//! - the real-path rule ([`super::real`]): followed through its links, the path stays in
+//!   the folder's real path, resolved once;
+//! - the file is opened only if it is a regular file, and what the system opened is
+//!   checked against the folder's real path again ([`super::open_within`]): a link
+//!   swapped after the check is refused before a byte is read.
+
+use super::real::{Outside, check_real, folder, real_path};
+use super::{FileError, Opened};
+use std::fs::File;
+use std::path::{Component, Path, PathBuf};
+
+/// What to tell the user when a campaign path leads outside.
+const CAMPAIGN_HINT: &str = "set campaign.allow_outside_paths: true to allow it";
+
+/// A folder and its rules.
+#[derive(Debug, Clone)]
+pub struct Root {
+    dir: PathBuf,
+    /// The folder's real path: every file opened must lie in it. `None` when paths
+    /// outside are allowed, or when the folder cannot be resolved (nothing can be read
+    /// from it then).
+    real: Option<PathBuf>,
+    allow_outside: bool,
+    /// For messages: `campaign folder`, `templates folder`, `history folder`.
+    name: &'static str,
+}
+
+impl Root {
+    /// A campaign's folder (`allow_outside`: its `allow_outside_paths`).
+    pub fn campaign(dir: &Path, allow_outside: bool) -> Root {
+        Root {
+            dir: dir.to_path_buf(),
+            real: (!allow_outside)
+                .then(|| real_path(folder(dir)).ok())
+                .flatten(),
+            allow_outside,
+            name: "campaign folder",
+        }
+    }
+
+    /// Another folder (`name` for messages): nothing outside it is ever read.
+    pub fn folder(dir: &Path, name: &'static str) -> Root {
+        Root {
+            name,
+            ..Root::campaign(dir, false)
+        }
+    }
+
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+
+    /// The folder's real path every file opened must lie in (`None`: no such check).
+    pub fn real(&self) -> Option<&Path> {
+        self.real.as_deref()
+    }
+
+    pub fn allows_outside(&self) -> bool {
+        self.allow_outside
+    }
+
+    /// `dir/relative` under the written rule and, unless outside paths are allowed, the
+    /// real-path rule (the rule for data files, specs, tables and the history).
+    pub fn resolve(&self, relative: &str) -> Result<PathBuf, String> {
+        let path = self.written(relative)?;
+        if !self.allow_outside {
+            self.check(Path::new(relative))
+                .map_err(|outside| format!("{outside}; {CAMPAIGN_HINT}"))?;
+        }
+        Ok(path)
+    }
+
+    /// `dir/relative` under the written rule only: absolute paths and paths that leave the
+    /// folder are refused unless outside paths are allowed.
+    pub fn written(&self, relative: &str) -> Result<PathBuf, String> {
+        if relative.contains('\0') {
+            return Err(format!(
+                "path `{}` contains a NUL byte",
+                relative.escape_debug()
+            ));
+        }
+        let rel = Path::new(relative);
+        if !self.allow_outside {
+            if rel.is_absolute() || rel.has_root() {
+                return Err(format!(
+                    "path `{relative}` is absolute; paths in a campaign are relative to its folder ({CAMPAIGN_HINT})"
+                ));
+            }
+            let mut depth: i64 = 0;
+            for c in rel.components() {
+                match c {
+                    Component::ParentDir => depth -= 1,
+                    Component::Normal(_) => depth += 1,
+                    _ => {}
+                }
+                if depth < 0 {
+                    return Err(format!(
+                        "path `{relative}` leaves the campaign's folder; {CAMPAIGN_HINT}"
+                    ));
+                }
+            }
+        }
+        Ok(self.dir.join(rel))
+    }
+
+    /// The real-path rule for `relative` (a path inside the folder as written).
+    pub fn check(&self, relative: &Path) -> Result<(), Outside> {
+        check_real(&self.dir, relative, self.name)
+    }
+
+    /// The real-path rule for each file a walk found under the folder (unless outside
+    /// paths are allowed).
+    pub fn check_found(&self, found: &[PathBuf]) -> Result<(), String> {
+        if self.allow_outside {
+            return Ok(());
+        }
+        for path in found {
+            let relative = path.strip_prefix(&self.dir).unwrap_or(path);
+            self.check(relative)
+                .map_err(|outside| format!("{outside}; {CAMPAIGN_HINT}"))?;
+        }
+        Ok(())
+    }
+
+    /// Opens `path` ([`super::open_within`] this folder's real path).
+    pub fn open(&self, path: &Path) -> Result<Opened, FileError> {
+        super::open_within(path, self.real())
+    }
+
+    /// Opens `path`, gives it to `read`, and refuses the result when the file changed.
+    pub fn read_with<T>(
+        &self,
+        path: &Path,
+        read: impl FnOnce(&mut File) -> T,
+    ) -> Result<T, FileError> {
+        super::read_with(path, self.real(), read)
+    }
+
+    /// The bytes of `path`.
+    pub fn read(&self, path: &Path) -> Result<Vec<u8>, FileError> {
+        super::read_within(path, self.real())
+    }
+
+    /// The text of `path` (UTF-8).
+    pub fn read_to_string(&self, path: &Path) -> Result<String, FileError> {
+        super::read_to_string_within(path, self.real())
+    }
+}
+
+/// A walked entry a glob may match: anything but a folder or a link to one. Links to
+/// files and special files are matches, so that they are checked and refused by name
+/// instead of silently left out.
+pub fn may_match(entry: &walkdir::DirEntry) -> bool {
+    let kind = entry.file_type();
+    if kind.is_symlink() {
+        return !std::fs::metadata(entry.path()).is_ok_and(|m| m.is_dir());
+    }
+    !kind.is_dir()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paths_stay_inside_unless_allowed() {
+        let root = Root::campaign(Path::new("camp"), false);
+        assert_eq!(
+            root.written("data/x.csv").unwrap(),
+            Path::new("camp/data/x.csv")
+        );
+        assert!(
+            root.written("/etc/passwd")
+                .unwrap_err()
+                .contains("absolute")
+        );
+        assert!(
+            root.written("../x.csv")
+                .unwrap_err()
+                .contains("leaves the campaign's folder")
+        );
+        assert!(root.written("a/../../x").is_err());
+        assert!(root.written("a/../b").is_ok());
+        assert!(root.written("x\0y").unwrap_err().contains("NUL"));
+        let open = Root::campaign(Path::new("camp"), true);
+        assert_eq!(
+            open.written("/data/x.csv").unwrap(),
+            Path::new("/data/x.csv")
+        );
+        assert!(open.real().is_none());
+    }
+}
