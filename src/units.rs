@@ -88,13 +88,19 @@ impl Direction {
     /// Parses the spellings found in measurement files: `up`/`down`, `+`/`-`, `↑`/`↓`,
     /// `fwd`/`bwd`, `forward`/`reverse`/`backward`, `pos`/`neg`, `positive`/`negative`.
     pub fn parse(text: &str) -> Option<Direction> {
+        const UP: [&str; 7] = ["up", "+", "↑", "fwd", "forward", "pos", "positive"];
+        const DOWN: [&str; 10] = [
+            "down", "-", "−", "↓", "bwd", "backward", "reverse", "rev", "neg", "negative",
+        ];
+        // Compared without a lower-case copy: a reader calls this for every reading.
         let t = text.trim();
-        let lower = t.to_ascii_lowercase();
-        match lower.as_str() {
-            "up" | "+" | "↑" | "fwd" | "forward" | "pos" | "positive" => Some(Direction::Up),
-            "down" | "-" | "−" | "↓" | "bwd" | "backward" | "reverse" | "rev" | "neg"
-            | "negative" => Some(Direction::Down),
-            _ => None,
+        let is = |names: &[&str]| names.iter().any(|n| n.eq_ignore_ascii_case(t));
+        if is(&UP) {
+            Some(Direction::Up)
+        } else if is(&DOWN) {
+            Some(Direction::Down)
+        } else {
+            None
         }
     }
 

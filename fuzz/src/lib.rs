@@ -175,7 +175,9 @@ pub fn campaign(data: &[u8]) {
     };
     for (_, entry) in campaign.axes() {
         let Ok(axis) = &entry.spec else { continue };
-        let _ = axis.data.resolve(&axcheck::files::Root::campaign(&campaign.dir, false));
+        let _ = axis
+            .data
+            .resolve(&axcheck::files::Root::campaign(&campaign.dir, false));
         let data = match axis.raw.kind {
             AxisKind::Linear => &fixtures().0,
             AxisKind::Rotary => &fixtures().1,

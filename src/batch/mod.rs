@@ -172,9 +172,10 @@ pub struct Options {
     pub jobs: usize,
     /// Run the model check and diagnosis of every axis test.
     pub diagnose: bool,
-    /// Drop each test's readings and per-parameter uncertainty budgets once it is
-    /// evaluated (the CI gate needs only the verdicts; reports need the readings). Keeps
-    /// memory flat on large fleets.
+    /// The CI gate: drop each test's readings and per-parameter uncertainty budgets once
+    /// it is evaluated, and compute U only for the tests judged by ISO 14253-1 (the gate
+    /// needs only the verdicts; reports need the readings and the budgets). Keeps memory
+    /// flat on large fleets.
     pub drop_data: bool,
     /// Compute each test's compensation table where its machine names a controller (with
     /// the diagnosis its warnings need); the CI gate writes no tables and skips them.
@@ -483,20 +484,23 @@ fn run_test(
     } else {
         crate::evaluate::evaluate(&data, axis.standard)
     };
-    let setup = uncertainty_setup(axis, &data, nde.as_ref());
-    let uncertainty = crate::uncertainty::evaluate(&setup, &evaluation);
+    let rule = (axis.raw.decision_rule)
+        .or(spec.and_then(|s| s.decision_rule))
+        .or(campaign_rule)
+        .unwrap_or_default();
+    // The gate computes what it prints: U only where the decision rule judges with it.
+    let uncertainty = (!options.drop_data || rule == DecisionRule::Iso14253_1).then(|| {
+        let setup = uncertainty_setup(axis, &data, nde.as_ref());
+        crate::uncertainty::evaluate(&setup, &evaluation)
+    });
     let (first, last) = data.measurement_travel();
     let (verdict, error, judgement) =
         match Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
             Err(e) => (Verdict::Error, Some(e), None),
             Ok(limits) => {
-                let rule = (axis.raw.decision_rule)
-                    .or(spec.and_then(|s| s.decision_rule))
-                    .or(campaign_rule)
-                    .unwrap_or_default();
                 let decision = Decision {
                     rule,
-                    expanded: Some(&uncertainty.expanded),
+                    expanded: uncertainty.as_ref().map(|u| &u.expanded),
                 };
                 let judgement = judge::judge(&evaluation, &limits, &decision);
                 let plan_broken = findings.iter().any(|f| f.severity == Severity::Error);
@@ -533,7 +537,7 @@ fn run_test(
         conditions_from_file: from_file,
         diagnosis,
         compensation,
-        uncertainty: Some(uncertainty),
+        uncertainty,
         data: Some(data),
         evaluation: Some(evaluation),
         judgement,

@@ -15,6 +15,7 @@ use super::table::{Place, Row, TableReader, Value, read_text};
 use super::{AxisData, MAX_READINGS, MAX_TEMPERATURES, RawReading};
 use crate::suggest::did_you_mean;
 use crate::units::{AxisKind, Direction, fmt_fixed};
+use std::borrow::Cow;
 use std::io::BufRead;
 
 /// What a column holds.
@@ -129,6 +130,38 @@ const UNITLESS: &[&str] = &[
 /// 1-based character column.
 pub(crate) fn split_fields(line: &str, sep: char) -> Vec<(usize, String)> {
     let mut fields = Vec::new();
+    fields_of(line, sep, |column, text| {
+        fields.push((column, text.into_owned()))
+    });
+    fields
+}
+
+/// Gives `field` each field of `line` split at `sep` with its 1-based character column:
+/// a slice of the line, copied only when it has double quotes to undo.
+pub(crate) fn fields_of<'a>(line: &'a str, sep: char, mut field: impl FnMut(usize, Cow<'a, str>)) {
+    let bytes = line.as_bytes();
+    // Quotes to undo, or a separator that is not one byte: the careful path.
+    if memchr::memchr(b'"', bytes).is_some() || !sep.is_ascii() {
+        return quoted_fields(line, sep, field);
+    }
+    let sep = sep as u8;
+    let ascii = line.is_ascii();
+    let column = |start: usize| match ascii {
+        true => start + 1,
+        false => line[..start].chars().count() + 1,
+    };
+    let mut start = 0;
+    // An ASCII separator never falls inside a multi-byte character: every cut is a
+    // character boundary.
+    for end in memchr::memchr_iter(sep, bytes) {
+        field(column(start), Cow::Borrowed(&line[start..end]));
+        start = end + 1;
+    }
+    field(column(start), Cow::Borrowed(&line[start..]));
+}
+
+/// [`fields_of`] for a line with double quotes: `"a,b"` is one field, `""` a quote.
+fn quoted_fields<'a>(line: &'a str, sep: char, mut out: impl FnMut(usize, Cow<'a, str>)) {
     let mut field = String::new();
     let mut start = 1;
     let mut in_quotes = false;
@@ -148,14 +181,13 @@ pub(crate) fn split_fields(line: &str, sep: char) -> Vec<(usize, String)> {
         } else if c == '"' {
             in_quotes = true;
         } else if c == sep {
-            fields.push((start, std::mem::take(&mut field)));
+            out(start, Cow::Owned(std::mem::take(&mut field)));
             start = k + 2;
         } else {
             field.push(c);
         }
     }
-    fields.push((start, field));
-    fields
+    out(start, Cow::Owned(field));
 }
 
 /// The separator of a header line: `;`, else tab, else `,`.

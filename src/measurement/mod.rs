@@ -26,7 +26,6 @@ use table::Place;
 pub use table::TableKind;
 
 use crate::units::{AxisKind, Direction, fmt_position};
-use std::collections::HashMap;
 use std::io::BufRead;
 use std::path::Path;
 
@@ -235,26 +234,38 @@ impl Cells {
                 .expect("target collected above")
         };
         let run_index = |r: u32| run_labels.binary_search(&r).expect("run collected above");
-        let mut seen: HashMap<(usize, usize, usize), usize> = HashMap::with_capacity(raw.len());
         let mut counts = vec![[0usize; 2]; targets.len()];
         let mut indices = Vec::with_capacity(raw.len());
-        for r in raw {
-            let i = target_index(r.target);
-            let j = run_index(r.run);
-            let d = r.direction.index();
-            if let Some(first_line) = seen.insert((i, d, j), r.line) {
-                return Err(ReadError::new(
-                    place.line(r.line),
-                    ReadErrorKind::DuplicateReading {
-                        target: fmt_target(kind, r.target),
-                        direction: r.direction.name().into(),
-                        run: r.run,
-                        first_line,
-                    },
-                ));
-            }
+        // Each reading's cell (target, direction, run) with its place in the file, sorted:
+        // a cell given twice shows as two neighbours (no hash map for a few hundred cells).
+        let mut cells: Vec<(u64, u32)> = Vec::with_capacity(raw.len());
+        for (k, r) in raw.iter().enumerate() {
+            let (i, j, d) = (
+                target_index(r.target),
+                run_index(r.run),
+                r.direction.index(),
+            );
             counts[i][d] += 1;
             indices.push((i, j));
+            cells.push((((i * 2 + d) as u64) << 32 | j as u64, k as u32));
+        }
+        cells.sort_unstable();
+        // The first reading, in file order, whose cell an earlier reading already filled.
+        let repeat = (cells.windows(2))
+            .filter(|w| w[0].0 == w[1].0)
+            .min_by_key(|w| w[1].1)
+            .map(|w| (w[0].1 as usize, w[1].1 as usize));
+        if let Some((first, again)) = repeat {
+            let r = &raw[again];
+            return Err(ReadError::new(
+                place.line(r.line),
+                ReadErrorKind::DuplicateReading {
+                    target: fmt_target(kind, r.target),
+                    direction: r.direction.name().into(),
+                    run: r.run,
+                    first_line: raw[first].line,
+                },
+            ));
         }
         Ok(Cells { indices, counts })
     }
@@ -668,27 +679,61 @@ impl<R: BufRead> Lines<R> {
 }
 
 /// Parses a number as written in measurement files: `.` or (with `decimal_comma`) `,`
-/// as decimal mark, a Unicode minus accepted; rejects NaN and infinities.
+/// as decimal mark, a Unicode minus accepted; rejects NaN and infinities. The text is
+/// parsed as it is first, and copied only when that fails (nearly every number is plain).
 pub(crate) fn parse_number(text: &str, decimal_comma: bool) -> Result<f64, NumberError> {
+    if let Some(x) = plain_decimal(text.trim_ascii()) {
+        return Ok(x);
+    }
     let t = text.trim();
-    let owned;
-    let t = if decimal_comma || t.contains('−') {
-        owned = t.replace('−', "-");
-        if decimal_comma {
-            owned.replace(',', ".")
-        } else {
-            owned
-        }
-    } else {
-        t.to_string()
-    };
     // Rust accepts `inf`, `nan` and `infinity`; a measurement never holds them.
-    let value: f64 = t.parse().map_err(|_| NumberError::NotANumber)?;
+    let value: f64 = match t.parse() {
+        Ok(x) => x,
+        Err(_) => {
+            let mut owned = t.replace('−', "-");
+            if decimal_comma {
+                owned = owned.replace(',', ".");
+            }
+            owned.parse().map_err(|_| NumberError::NotANumber)?
+        }
+    };
     if value.is_finite() {
         Ok(value)
     } else {
         Err(NumberError::NonFinite)
     }
+}
+
+/// A plain decimal (`-12.345`, `.5`, `7`) of at most 15 digits, read as the integer of
+/// its digits divided by a power of ten: both are exact doubles (below 2^53 and 10^22),
+/// and IEEE division rounds once, so the value is the correctly rounded one that
+/// `str::parse` gives (Clinger's fast path), without its general machinery.
+fn plain_decimal(t: &str) -> Option<f64> {
+    const POW10: [f64; 16] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+    ];
+    let (negative, digits) = match t.as_bytes() {
+        [b'-', rest @ ..] => (true, rest),
+        [b'+', rest @ ..] => (false, rest),
+        rest => (false, rest),
+    };
+    let (mut mantissa, mut count, mut decimals, mut point) = (0u64, 0usize, 0usize, false);
+    for &b in digits {
+        match b {
+            b'0'..=b'9' => {
+                mantissa = mantissa * 10 + u64::from(b - b'0');
+                count += 1;
+                decimals += usize::from(point);
+            }
+            b'.' if !point => point = true,
+            _ => return None,
+        }
+    }
+    if count == 0 || count > 15 {
+        return None;
+    }
+    let value = mantissa as f64 / POW10[decimals];
+    Some(if negative { -value } else { value })
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -711,6 +756,35 @@ mod tests {
         assert_eq!(parse_number("inf", false), Err(NumberError::NonFinite));
         assert_eq!(parse_number("1,5", false), Err(NumberError::NotANumber));
         assert_eq!(parse_number("", false), Err(NumberError::NotANumber));
+        assert_eq!(parse_number("-", false), Err(NumberError::NotANumber));
+        assert_eq!(parse_number(".", false), Err(NumberError::NotANumber));
+        assert_eq!(parse_number("1.2.3", false), Err(NumberError::NotANumber));
+        assert_eq!(parse_number("1e3", false), Ok(1000.0));
+    }
+
+    /// The fast path gives the value `str::parse` gives, bit for bit.
+    #[test]
+    fn plain_decimals_are_parsed_as_std_parses_them() {
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let digits = (x % 15 + 1) as usize;
+            let mantissa = x % 10u64.pow(digits as u32);
+            let text = format!("{mantissa:0digits$}");
+            let cut = (x >> 40) as usize % (digits + 1);
+            let sign = if x & 1 == 0 { "-" } else { "" };
+            let text = format!("{sign}{}.{}", &text[..cut], &text[cut..]);
+            let want: f64 = text.parse().unwrap();
+            assert_eq!(
+                plain_decimal(&text).map(f64::to_bits),
+                Some(want.to_bits()),
+                "{text}"
+            );
+        }
+        assert_eq!(plain_decimal("1234567890123456"), None);
+        assert_eq!(plain_decimal("-0"), Some(-0.0));
     }
 
     #[test]

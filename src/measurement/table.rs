@@ -6,13 +6,15 @@
 
 use super::error::{Location, ReadError, ReadErrorKind};
 use super::{AxisData, Lines, NumberError, parse_number};
+use std::borrow::Cow;
 use std::io::BufRead;
 
 /// What one field holds.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) enum Value {
-    /// Text as written (trimmed when read as a number or a name).
-    Text(String),
+pub(crate) enum Value<'a> {
+    /// Text as written (trimmed when read as a number or a name): a CSV field, borrowed
+    /// from its line unless it had quotes, or a sheet's text cell.
+    Text(Cow<'a, str>),
     /// A sheet's numeric cell.
     Number(f64),
     /// A sheet's cell that is neither text nor a number (a date, a truth value, an error
@@ -22,7 +24,7 @@ pub(crate) enum Value {
     Empty,
 }
 
-impl Value {
+impl Value<'_> {
     /// The field as a column name: trimmed, lower case.
     pub(crate) fn name(&self) -> String {
         match self {
@@ -54,16 +56,16 @@ impl Value {
 /// One field with its 1-based column: the character column of a CSV line, the column of
 /// a sheet (A = 1).
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Field {
+pub(crate) struct Field<'a> {
     pub column: usize,
-    pub value: Value,
+    pub value: Value<'a>,
 }
 
 /// One row: its 1-based line (CSV) or row (sheet) and its fields, one per header column.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Row {
+pub(crate) struct Row<'a> {
     pub number: usize,
-    pub fields: Vec<Field>,
+    pub fields: Vec<Field<'a>>,
 }
 
 /// Where a table comes from: the file (and sheet) errors name, and whether text numbers
@@ -132,36 +134,35 @@ impl Place {
         field: &Field,
         column: &str,
     ) -> Result<f64, ReadError> {
-        let column = column.to_string();
+        let column = || column.to_string();
         let kind = match &field.value {
             Value::Number(x) if x.is_finite() => return Ok(*x),
             Value::Number(x) => ReadErrorKind::NonFinite {
-                column,
+                column: column(),
                 found: x.to_string(),
             },
-            Value::Text(t) if t.trim().is_empty() => ReadErrorKind::EmptyCell { column },
             Value::Text(t) => match parse_number(t, self.decimal_comma) {
                 Ok(x) => return Ok(x),
+                Err(_) if t.trim().is_empty() => ReadErrorKind::EmptyCell { column: column() },
                 Err(NumberError::NotANumber) => ReadErrorKind::NotANumber {
-                    column,
+                    column: column(),
                     found: t.trim().to_string(),
                 },
                 Err(NumberError::NonFinite) => ReadErrorKind::NonFinite {
-                    column,
+                    column: column(),
                     found: t.trim().to_string(),
                 },
             },
             Value::Other(what) => ReadErrorKind::WrongCellType {
-                column,
+                column: column(),
                 found: what.clone(),
             },
-            Value::Empty => ReadErrorKind::EmptyCell { column },
+            Value::Empty => ReadErrorKind::EmptyCell { column: column() },
         };
         Err(self.error(number, field.column, kind))
     }
 }
 
-/// A reader of one table layout, fed its header and then its rows in order.
 pub(crate) trait TableReader: Sized {
     /// The layout's columns from the header row, or why the header is wrong.
     fn from_header(header: &Row, place: &Place) -> Result<Self, ReadError>;
@@ -229,10 +230,13 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
     };
     let sep = super::csv::detect_separator(&header);
     let place = Place::text(file, sep != ',');
-    let header_row = text_row(&header, sep, header_line);
+    let header_row = text_row(&header, sep, header_line, Vec::new());
     let mut table = T::from_header(&header_row, &place)?;
     let width = header_row.fields.len();
     let mut rows = 0usize;
+    // One buffer of fields for every line: a field borrows its line, so the buffer is
+    // emptied (keeping its room) before the next line is read.
+    let mut spare = recycle(header_row.fields);
     while let Some((number, text)) = lines.next_line()? {
         let trimmed = text.trim();
         if trimmed.is_empty() {
@@ -242,7 +246,7 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
             comments += 1;
             continue;
         }
-        let row = text_row(text, sep, number);
+        let row = text_row(text, sep, number, spare);
         if row.fields.len() != width {
             let found = row.fields.len();
             let kind = ReadErrorKind::FieldCount {
@@ -252,6 +256,7 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
             return Err(place.error(number, 1, kind));
         }
         table.add(&row, &place)?;
+        spare = recycle(row.fields);
         rows += 1;
     }
     if rows == 0 {
@@ -275,18 +280,25 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
     Ok((data, notes))
 }
 
-/// A CSV line as a row of text fields.
-fn text_row(text: &str, sep: char, number: usize) -> Row {
-    Row {
-        number,
-        fields: super::csv::split_fields(text, sep)
-            .into_iter()
-            .map(|(column, text)| Field {
-                column,
-                value: Value::Text(text),
-            })
-            .collect(),
-    }
+/// A CSV line as a row of text fields, in `fields` (empty, its room reused).
+fn text_row<'a>(text: &'a str, sep: char, number: usize, mut fields: Vec<Field<'a>>) -> Row<'a> {
+    super::csv::fields_of(text, sep, |column, value| {
+        fields.push(Field {
+            column,
+            value: Value::Text(value),
+        });
+    });
+    Row { number, fields }
+}
+
+/// An emptied buffer of fields, ready to borrow another line: the same allocation (the
+/// collect of an empty vector of a same-sized type reuses it in place).
+fn recycle<'b>(mut fields: Vec<Field<'_>>) -> Vec<Field<'b>> {
+    fields.clear();
+    fields
+        .into_iter()
+        .map(|_| unreachable!("emptied"))
+        .collect()
 }
 
 #[cfg(test)]

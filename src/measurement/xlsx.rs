@@ -209,12 +209,12 @@ fn choose_sheet(
 }
 
 /// A cell as the table readers see it.
-fn value_of(cell: &DataRef) -> Value {
+fn value_of(cell: &DataRef) -> Value<'static> {
     match cell {
         DataRef::Int(i) => Value::Number(*i as f64),
         DataRef::Float(x) => Value::Number(*x),
-        DataRef::String(s) => Value::Text(s.clone()),
-        DataRef::SharedString(s) => Value::Text((*s).to_string()),
+        DataRef::String(s) => Value::Text(s.clone().into()),
+        DataRef::SharedString(s) => Value::Text((*s).to_string().into()),
         DataRef::Bool(b) => Value::Other(format!(
             "the truth value {}",
             if *b { "TRUE" } else { "FALSE" }
