@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
 # Fleet benchmark: generates synthetic campaigns of 1 000 and 10 000 axes and measures the
 # median wall time and peak memory of `check` on both and of `run` (with every PDF) on
-# 1 000, with --jobs 1 and with all cores. Prints a table and writes bench/results.md.
+# 1 000, with --jobs 1 and with all cores; of `trend` on ten yearly inspections of the
+# 10 000 axes; and of a peer, the ISO 230-2 evaluation of the same files scripted with
+# pandas and numpy (bench/peer_iso230_2.py), run in turn with `check` so that their ratio
+# is taken pair by pair in one run. Prints a table and writes bench/results.md.
 #
-#   bash bench/fleet.sh            # default: 5 runs of check, 3 of run
-#   RUNS=3 PDF_RUNS=1 bash bench/fleet.sh
+#   bash bench/fleet.sh            # default: 5 runs of check, 3 of run and trend, 3 pairs
+#   RUNS=3 PDF_RUNS=1 PEER_RUNS=1 bash bench/fleet.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RUNS=${RUNS:-5}
 PDF_RUNS=${PDF_RUNS:-3}
+PEER_RUNS=${PEER_RUNS:-3}
 WORK=${BENCH_DIR:-${TMPDIR:-/tmp}/axcheck-fleet}
 
 if [ -z "${CARGO_TARGET_DIR:-}" ] && [ -d /work/cargo-target ]; then
@@ -60,6 +64,38 @@ done
 row "run (PDFs)" 1000 1 "$PDF_RUNS" "$BIN" run "$WORK/f1000/campaign.yaml" --out "$WORK/out" --jobs 1
 row "run (PDFs)" 1000 "$CORES" "$PDF_RUNS" "$BIN" run "$WORK/f1000/campaign.yaml" --out "$WORK/out" --jobs "$CORES"
 
+# Ten yearly inspections of the 10 000 axes (the campaign's date moved a year each time),
+# made once: the history `trend` reads.
+if [ ! -f "$WORK/history.done" ]; then
+  rm -rf "$WORK/history" "$WORK/hout"
+  for year in $(seq 2017 2026); do
+    sed "s/date: 2026-11-20/date: $year-11-20/" "$WORK/f10000/campaign.yaml" > "$WORK/f10000/campaign-$year.yaml"
+    "$BIN" run "$WORK/f10000/campaign-$year.yaml" --out "$WORK/hout" --no-pdf --no-html --no-diagnose \
+      --history "$WORK/history" >/dev/null 2>&1 || true
+  done
+  touch "$WORK/history.done"
+fi
+row "trend (10 inspections)" 10000 "$CORES" "$PDF_RUNS" "$BIN" trend "$WORK/history" --json
+
+# The peer and check in turn, on the same files: the ratio of each pair, then the median.
+python3 -c 'import pandas, numpy' 2>/dev/null || python3 -m pip install --quiet pandas numpy
+peer_rows=()
+peer_walls=()
+for n in 1000 10000; do
+  ratios=()
+  for _ in $(seq "$PEER_RUNS"); do
+    read -r ours _ < <(measure 1 "$BIN" check "$WORK/f$n/campaign.yaml" --jobs "$CORES")
+    read -r peer mb < <(measure 1 python3 bench/peer_iso230_2.py "$WORK/f$n/data" --jobs "$CORES")
+    ratios+=("$(awk -v a="$peer" -v b="$ours" 'BEGIN {printf "%.1f", a / b}')")
+    peer_walls+=("$peer")
+  done
+  ratio=$(printf '%s\n' "${ratios[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
+  wall=$(printf '%s\n' "${peer_walls[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
+  peer_walls=()
+  peer_rows+=("| pandas + numpy peer | $n | $CORES | $wall | $mb | $PEER_RUNS | $ratio× |")
+  echo "peer axes=$n: median ${wall} s; the peer's time / check's, pair by pair: median ${ratio}" >&2
+done
+
 readings_1k=$(grep -c . "$WORK"/f1000/data/*/*.csv | awk -F: '{s += $2 - 1} END {print s}')
 {
   echo "# Fleet benchmark"
@@ -71,5 +107,13 @@ readings_1k=$(grep -c . "$WORK"/f1000/data/*/*.csv | awk -F: '{s += $2 - 1} END 
   echo "| command | axes | --jobs | median wall (s) | peak memory (MB) | runs |"
   echo "|---|---:|---:|---:|---:|---:|"
   printf '%s\n' "${rows[@]}"
+  echo
+  echo "The peer (bench/peer_iso230_2.py: pandas reads each file, groups by target and direction,"
+  echo "and computes ISO 230-2's A, E, M, R and B), run in turn with \`axcheck check --jobs $CORES\` on"
+  echo "the same files; the last column is the peer's wall time over check's, the median of the pairs."
+  echo
+  echo "| command | axes | workers | median wall (s) | peak memory (MB) | pairs | peer / check |"
+  echo "|---|---:|---:|---:|---:|---:|---:|"
+  printf '%s\n' "${peer_rows[@]}"
 } > bench/results.md
 cat bench/results.md
