@@ -20,12 +20,30 @@ impl AxisTrends {
     /// The series in `history` of the axes that have rows in `run`, fitted with `options`.
     pub fn of_run(history: &[Record], run: &[Record], options: trend::Options) -> AxisTrends {
         let wanted: BTreeSet<AxisKey> = run.iter().map(key).collect();
-        let rows: Vec<Record> = history
-            .iter()
-            .filter(|r| wanted.contains(&key(r)))
-            .cloned()
-            .collect();
-        let fitted: Vec<(Series, Trend)> = super::series(&rows)
+        let mut builder = super::SeriesBuilder::default();
+        builder.add(history.iter().filter(|r| wanted.contains(&key(r))).cloned());
+        AxisTrends::fitted(builder.finish(), options)
+    }
+
+    /// [`AxisTrends::of_run`] over the history in `dir`, read file by file: only the run's
+    /// axes' series are kept, never the whole history.
+    #[cfg(feature = "parquet")]
+    pub fn of_history(
+        dir: &std::path::Path,
+        run: &[Record],
+        options: trend::Options,
+    ) -> Result<AxisTrends, super::HistoryError> {
+        let wanted: BTreeSet<AxisKey> = run.iter().map(key).collect();
+        let mut builder = super::SeriesBuilder::default();
+        super::visit(dir, |rows| {
+            builder.add(rows.into_iter().filter(|r| wanted.contains(&key(r))));
+        })?;
+        Ok(AxisTrends::fitted(builder.finish(), options))
+    }
+
+    /// The series fitted, by axis.
+    fn fitted(series: Vec<Series>, options: trend::Options) -> AxisTrends {
+        let fitted: Vec<(Series, Trend)> = series
             .into_par_iter()
             .map(|s| {
                 let t = trend::fit(&s, &options);

@@ -21,9 +21,9 @@ mod store;
 pub use axes::{AxisKey, AxisTrends};
 pub use record::{Record, SCHEMA_VERSION};
 pub use rows::{records, run_date};
-pub use series::series;
+pub use series::{SeriesBuilder, series};
 #[cfg(feature = "parquet")]
-pub use store::{append, file_path, read, read_bytes};
+pub use store::{append, file_path, read, read_bytes, visit};
 
 use std::path::PathBuf;
 

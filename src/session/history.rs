@@ -56,11 +56,8 @@ pub(super) fn append(
         trends: None,
     };
     if appended.path.is_some() {
-        match crate::history::read(dir) {
-            Ok(all) => {
-                let trends = AxisTrends::of_run(&all, &records, horizon);
-                appended.trends = Some(Arc::new(trends));
-            }
+        match AxisTrends::of_history(dir, &records, horizon) {
+            Ok(trends) => appended.trends = Some(Arc::new(trends)),
             Err(e) => appended.unread = Some(e),
         }
     }

@@ -5,12 +5,6 @@ use crate::evaluate::catalogue::CATALOGUE;
 use chrono::NaiveDate;
 use serde::Serialize;
 
-/// `trend --json`: `{"axes": [...]}`.
-#[derive(Debug, Serialize)]
-pub struct TrendsJson<'a> {
-    pub axes: Vec<AxisTrend<'a>>,
-}
-
 /// One series and its trend, with the keys of issue 16 (plus `serial` and `symbol`).
 #[derive(Debug, Serialize)]
 pub struct AxisTrend<'a> {
@@ -57,15 +51,33 @@ fn symbol(key: &str) -> Option<&'static str> {
     CATALOGUE.iter().find(|d| d.key == key).map(|d| d.symbol)
 }
 
-/// The JSON document of `trend --json`, pretty-printed.
+/// The JSON document of `trend --json`, pretty-printed: `{"axes": [...]}`.
 pub fn json<'a>(trends: impl IntoIterator<Item = (&'a Series, &'a Trend)>) -> String {
-    let doc = TrendsJson {
-        axes: trends
-            .into_iter()
-            .map(|(s, t)| AxisTrend::new(s, t))
-            .collect(),
-    };
-    serde_json::to_string_pretty(&doc).expect("a trend view serialises")
+    let mut out = Vec::new();
+    write_json(trends, &mut out).expect("a trend view serialises");
+    String::from_utf8(out).expect("serde_json writes UTF-8")
+}
+
+/// [`json`] written to `out` as it is made: a history of 10 000 axes gives 130 MB of JSON,
+/// which is never held whole.
+pub fn write_json<'a>(
+    trends: impl IntoIterator<Item = (&'a Series, &'a Trend)>,
+    out: impl std::io::Write,
+) -> serde_json::Result<()> {
+    /// The axes, each made when it is written.
+    struct Axes<I>(std::cell::RefCell<Option<I>>);
+    impl<'a, I: Iterator<Item = (&'a Series, &'a Trend)>> Serialize for Axes<I> {
+        fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            let items = self.0.borrow_mut().take().into_iter().flatten();
+            s.collect_seq(items.map(|(series, trend)| AxisTrend::new(series, trend)))
+        }
+    }
+    #[derive(Serialize)]
+    struct Document<I: Serialize> {
+        axes: I,
+    }
+    let axes = Axes(std::cell::RefCell::new(Some(trends.into_iter())));
+    serde_json::to_writer_pretty(out, &Document { axes })
 }
 
 /// The CSV columns, in order.
