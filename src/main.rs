@@ -4,7 +4,6 @@ mod cli;
 
 use anyhow::{Context, Result};
 use axcheck::evaluate::StandardId;
-use axcheck::measurement;
 use clap::{Parser, Subcommand};
 use cli::print;
 use std::path::PathBuf;
@@ -29,12 +28,16 @@ enum Command {
     /// The CI gate: evaluate a campaign and write nothing (exit 0: every axis passes,
     /// 1: any axis fails, is noncompliant or has an error, 2: the campaign cannot be read).
     Check(cli::campaign::CheckArgs),
-    /// Model check and diagnosis of one measurement file: what the standard's model of the
+    /// Model check and diagnosis of a measurement file: what the standard's model of the
     /// axis gets wrong (drift, warm-up, thermal growth, run offsets, periodic error, reversal or
-    /// scatter varying along the axis, outliers), with evidence and the held-out gain.
+    /// scatter varying along the axis, outliers), with evidence and the held-out gain; several
+    /// files of one axis are each also predicted from the others.
     Diagnose {
-        /// Measurement file (long or wide CSV, XLSX workbook, or ecmc key=value).
-        file: PathBuf,
+        /// Measurement files (long or wide CSV, XLSX workbook, or ecmc key=value): one
+        /// test, or several tests of one axis, each then also predicted by the models
+        /// fitted on each other test.
+        #[arg(required = true, value_name = "FILE")]
+        files: Vec<PathBuf>,
         #[command(flatten)]
         sheet: cli::SheetArg,
         /// Standard for the parameters shown as measured and with effects removed.
@@ -112,7 +115,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Run(args) => return Ok(ExitCode::from(cli::campaign::run_command(&args)?)),
         Command::Check(args) => return Ok(ExitCode::from(cli::campaign::check_command(&args)?)),
         Command::Diagnose {
-            file,
+            files,
             sheet,
             standard,
             pitch,
@@ -121,25 +124,19 @@ fn run(cli: Cli) -> Result<ExitCode> {
             write_model,
             json,
         } => {
-            let data = measurement::read_file_with(&file, &sheet.options())?.data;
             let options = axcheck::diagnose::Options {
                 pitch,
                 simulations,
                 seed,
                 standard,
             };
-            let diagnosis = axcheck::diagnose::diagnose(&data, &options);
-            let written = write_model
-                .as_deref()
-                .map(|path| write_extended_model(path, &diagnosis.extended_model));
-            let name = file.display().to_string();
-            let text = if json {
-                cli::json_with_file(&diagnosis, &name)?
-            } else {
-                cli::diagnose::render(&name, &diagnosis)
-            };
+            let read = sheet.options();
+            let outcome = cli::diagnose::run(&files, &read, &options, json, write_model.is_some())?;
+            let written = (write_model.as_deref())
+                .zip(outcome.extended_model.as_ref())
+                .map(|(path, model)| write_extended_model(path, model));
             // The diagnosis is printed even when its model could not be written.
-            print(&text)?;
+            print(&outcome.text)?;
             written.transpose()?;
         }
         #[cfg(feature = "parquet")]

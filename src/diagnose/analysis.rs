@@ -50,12 +50,19 @@ impl<'a> Analysis<'a> {
         let sigma = if known { tt.sigma2.sqrt() } else { f64::NAN };
         let m = prep.m;
         // Readings corrected for the time effects (the smooth model's drift, growth and
-        // warm-up).
-        let v: Vec<f64> = x
-            .iter()
-            .enumerate()
-            .map(|(k, x)| x - tt.trend.effect(&prep, k))
-            .collect();
+        // warm-up) when one is found. Not otherwise: under the standard cycle a target's ↑
+        // and ↓ readings of one run lie apart in time by an interval that changes linearly
+        // along the axis, so a drift subtracted that is not there (the straight line
+        // through run offsets, say) would tilt every Bi along the axis and pass for a
+        // reversal that varies (as a real drift does under that cycle, ISO 230-2 Annex A).
+        let v: Vec<f64> = if smooth_time_effect(&tt) {
+            x.iter()
+                .enumerate()
+                .map(|(k, x)| x - tt.trend.effect(&prep, k))
+                .collect()
+        } else {
+            x.clone()
+        };
         let (cm, cc) = prep.cell_means(&v, &active);
         let var_cell = |c: usize| tt.sigma2 * scale[c] * scale[c] / cc[c].max(1) as f64;
         let b: Vec<f64> = (0..m).map(|i| cm[2 * i] - cm[2 * i + 1]).collect();
@@ -97,6 +104,14 @@ impl<'a> Analysis<'a> {
     pub fn length(&self) -> f64 {
         self.prep.length()
     }
+}
+
+/// Whether the tests find a drift, a thermal growth or a warm-up.
+fn smooth_time_effect(tt: &TimeTests) -> bool {
+    let found = |p: Option<f64>| p.is_some_and(|p| p < ALPHA);
+    found(tt.drift.as_ref().map(|d| d.test.p))
+        || found(tt.thermal.as_ref().map(|t| t.p))
+        || tt.warm_tau(ALPHA).is_some()
 }
 
 /// What the number of runs and the time stamps leave out.

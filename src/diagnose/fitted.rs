@@ -71,7 +71,7 @@ impl Fitted {
         } else {
             Vec::new()
         };
-        let reversal = pred.reversal.clone();
+        let reversal = pred.lines.reversal.clone();
         let reversal_mean = reversal.iter().sum::<f64>() / p.m as f64;
         Fitted {
             pred,

@@ -4,17 +4,19 @@
 //! Top level: `unit` (deviations: `um` or `arcsec`), `position_unit`, `time_unit` (`h`,
 //! or `run` without time stamps), `standard`, `findings` (each `effect`, `params` keyed
 //! with units, `labels`, `evidence` {`statistic`, `value`, `p_value`, `effect_size`},
-//! `message`), `base` and `extended` (each `terms`, `heldout_rms`, `heldout_nlpd`,
+//! `message`), `unconfirmed` (the findings of the tests whose term the held-out prediction
+//! does not confirm: `effect`, `params`, `labels`, `evidence`, `message`, `scheme`,
+//! `gain_pct`, `threshold_pct`), `base` and `extended` (each `terms`, `heldout_rms`, `heldout_nlpd`,
 //! `between_targets_rms`), `gain_pct` (held-out RMS of the readings),
 //! `gain_between_targets_pct` (leave-targets-out, when a periodic term was judged),
 //! `term_gains` (each judged term: `effect`, `scheme`, `without`, `with`, `gain_pct`,
-//! `kept`), `validation`, `checks`, `corrected`, `residuals`,
+//! `threshold_pct`, `kept`), `validation`, `checks`, `corrected`, `residuals`,
 //! `base_model` and `extended_model` (simulation files as YAML text), `notes`.
 //! Numbers that do not apply are `null`.
 
 use super::checks::{ModelCheck, describe};
 use super::finding::keyed;
-use super::{Corrected, Diagnosis, Finding, ModelFit, Residuals, TermGain};
+use super::{Corrected, Diagnosis, Finding, ModelFit, Residuals, TermGain, Unconfirmed};
 use serde::{Serialize, Serializer};
 
 #[derive(Serialize)]
@@ -24,6 +26,7 @@ struct DiagnosisJson<'a> {
     time_unit: &'static str,
     standard: &'static str,
     findings: &'a [Finding],
+    unconfirmed: &'a [Unconfirmed],
     base: &'a ModelFit,
     extended: &'a ModelFit,
     gain_pct: f64,
@@ -103,6 +106,7 @@ impl Serialize for Diagnosis {
             time_unit: self.time_unit.key(),
             standard: self.standard.key(),
             findings: &self.findings,
+            unconfirmed: &self.unconfirmed,
             base: &self.base,
             extended: &self.extended,
             gain_pct: self.gain_pct,

@@ -10,6 +10,14 @@
 //! also costs about 17 s of clean build on two cores (nalgebra, simba, wide,
 //! matrixmultiply …), faer 0.24 about 3 minutes.
 
+/// A column is taken as collinear with the earlier ones when they leave less than this
+/// share of its norm. Times recorded to 1 ms make a drift that the run effects span
+/// (regular timing: each reading's time is its run's start plus its place in the cycle)
+/// differ from their span by about 1e-6 of its norm; kept, its coefficient would be that
+/// rounding amplified a million times, and its predictions noise (a held-out RMS of
+/// 1e4 µm was seen). Time stamps to the second leave about 1e-3: kept.
+const COLLINEAR: f64 = 1e-5;
+
 /// A least-squares fit y ≈ X b.
 #[derive(Debug, Clone)]
 pub struct LeastSquares {
@@ -60,7 +68,7 @@ pub fn least_squares(cols: &[Vec<f64>], y: &[f64]) -> LeastSquares {
             }
         }
         let nv = dot(&v, &v).sqrt();
-        if nv.is_nan() || nv <= 1e-9 * norm0 {
+        if nv.is_nan() || nv <= COLLINEAR * norm0 {
             continue;
         }
         for x in &mut v {

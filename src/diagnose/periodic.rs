@@ -263,10 +263,16 @@ impl Trend {
     /// The weighted [sine, cosine] of frequency `f` at the positions, with the trend
     /// projected out, into `v`.
     fn project(&self, f: f64, v: &mut Vec<[f64; 2]>) {
+        self.project_at(&self.positions, f, v);
+    }
+
+    /// [`Trend::project`] with the sinusoid at `at` (one per position) instead of the
+    /// positions.
+    fn project_at(&self, at: &[f64], f: f64, v: &mut Vec<[f64; 2]>) {
         v.clear();
         // sin_cos compiles to glibc's sincos, which shares sin's and cos's reduction
         // and kernels and so returns their bits (checked on 10⁸ arguments).
-        v.extend(self.positions.iter().zip(&self.sw).map(|(p, w)| {
+        v.extend(at.iter().zip(&self.sw).map(|(p, w)| {
             let (sin, cos) = (TAU * f * p).sin_cos();
             [w * sin, w * cos]
         }));
@@ -309,8 +315,13 @@ impl Scanner<'_> {
     /// The sinusoid of frequency `f` fitted jointly with the trend: (ΔRSS, a, b) with
     /// a·sin + b·cos.
     fn fit(&self, f: f64) -> (f64, f64, f64) {
+        self.fit_at(&self.trend.positions, f)
+    }
+
+    /// [`Scanner::fit`] with the sinusoid at `at` (one per position).
+    fn fit_at(&self, at: &[f64], f: f64) -> (f64, f64, f64) {
         let mut v = self.scratch.borrow_mut();
-        self.trend.project(f, &mut v);
+        self.trend.project_at(at, f, &mut v);
         // The sums of `Column::new` and `solve` in one pass.
         let (mut ss, mut sc, mut cc, mut sy, mut cy) = (-0.0, -0.0, -0.0, -0.0, -0.0);
         for ([si, ci], ri) in v.iter().zip(&self.resid) {
@@ -354,7 +365,14 @@ impl Scanner<'_> {
 
     /// The fitted sinusoid at frequency `f`.
     pub fn peak(&self, f: f64) -> Peak {
-        let (delta, a, b) = self.fit(f);
+        self.peak_at(&self.trend.positions, f)
+    }
+
+    /// The sinusoid of frequency `f` fitted at `at` (one per position: the positions, or
+    /// an unrelated order of them) jointly with the trend at the positions; its phase is
+    /// at `at` = 0.
+    pub fn peak_at(&self, at: &[f64], f: f64) -> Peak {
+        let (delta, a, b) = self.fit_at(at, f);
         let f_stat = self.f_of(delta);
         Peak {
             period: 1.0 / f,

@@ -70,6 +70,22 @@ pub(crate) struct Prep {
     pub t0: f64,
     /// Time from the first to the last reading.
     pub t_span: f64,
+    /// What each time term reads per row.
+    pub clocks: Clocks,
+}
+
+/// What each time term of the model reads per row: the readings' times and runs, or, for
+/// a term unrelated to the data ([`super::confirm`]), its own in a random order.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Clocks {
+    /// The drift column: time about the mean, t − t̄.
+    pub drift: Vec<f64>,
+    /// The time in the thermal column (P − P̄)·(t − t̄).
+    pub thermal: Vec<f64>,
+    /// The time since the start of the test that a warm-up curve reads, t − t0.
+    pub warm: Vec<f64>,
+    /// The run of each row, for the run effects.
+    pub run: Vec<usize>,
 }
 
 /// Index of reading (i, d, j) in the standard test cycle with m targets.
@@ -130,6 +146,14 @@ impl Prep {
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
                 (a.min(r.t), b.max(r.t))
             });
+        let t0 = if tmin.is_finite() { tmin } else { 0.0 };
+        let about_mean: Vec<f64> = rows.iter().map(|r| r.t - tbar).collect();
+        let clocks = Clocks {
+            drift: about_mean.clone(),
+            thermal: about_mean,
+            warm: rows.iter().map(|r| r.t - t0).collect(),
+            run: rows.iter().map(|r| r.run).collect(),
+        };
         Prep {
             kind: data.kind,
             m,
@@ -141,8 +165,17 @@ impl Prep {
             lo,
             hi,
             tbar,
-            t0: if tmin.is_finite() { tmin } else { 0.0 },
+            t0,
             t_span: (tmax - tmin).max(0.0),
+            clocks,
+        }
+    }
+
+    /// This test with its time terms reading `clocks`, everything else as it is.
+    pub fn with_clocks(&self, clocks: Clocks) -> Prep {
+        Prep {
+            clocks,
+            ..self.clone()
         }
     }
 

@@ -2,11 +2,13 @@
 //! extended model, the systematic deviation along the axis and the periodogram.
 
 use super::analysis::{Analysis, smooth_trend};
+use super::effects::Effect;
 use super::fitted::Fitted;
+use super::timeline;
 use super::{AxisPoint, PeriodogramPoint, ResidualPoint, Residuals};
 
-/// The residuals of `a` with the extended model `fit`.
-pub(crate) fn residuals(a: &Analysis, fit: &Fitted) -> Residuals {
+/// The residuals of `a` with the extended model `fit` of the `kept` effects.
+pub(crate) fn residuals(a: &Analysis, fit: &Fitted, kept: &[Effect]) -> Residuals {
     let (p, data) = (&a.prep, a.data);
     let all = vec![true; a.x.len()];
     let (raw_means, _) = p.cell_means(&a.x, &all);
@@ -45,5 +47,6 @@ pub(crate) fn residuals(a: &Analysis, fit: &Fitted) -> Residuals {
             .iter()
             .map(|&(period, power)| PeriodogramPoint { period, power })
             .collect(),
+        time_effect: timeline::time_effect(a, fit, kept),
     }
 }

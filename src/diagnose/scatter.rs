@@ -27,6 +27,17 @@ pub(crate) struct ScatterTest {
 /// Tests the residuals (one per row, NaN for inactive rows) of a fit with pooled variance
 /// `sigma2`.
 pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64) -> Option<ScatterTest> {
+    test_along(prep, &prep.positions, residuals, sigma2)
+}
+
+/// [`test`] with the scatter along the targets at `along` (one per target: their
+/// positions, or an unrelated order of them) instead of their positions.
+pub(crate) fn test_along(
+    prep: &Prep,
+    along: &[f64],
+    residuals: &[f64],
+    sigma2: f64,
+) -> Option<ScatterTest> {
     if prep.n < 3 || prep.m < 3 || sigma2.is_nan() || sigma2 <= 0.0 {
         return None;
     }
@@ -48,7 +59,7 @@ pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64) -> Option<Scatte
     for c in 0..cells {
         if count[c] >= 2 {
             let v = (ss[c] / (count[c] - 1) as f64).max(floor);
-            xs.push(prep.positions[c / 2] - prep.pbar);
+            xs.push(along[c / 2] - prep.pbar);
             ys.push(v.ln());
         }
     }
@@ -76,13 +87,10 @@ pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64) -> Option<Scatte
     let p = if se > 0.0 { t_two_sided(t, df) } else { 1.0 };
     // σ²(P) ∝ exp(a + b(P − P̄)), scaled so that its mean over the cells is the pooled σ².
     let shape = |p: f64| (a + b * (p - prep.pbar)).exp();
-    let mean_shape = (0..cells)
-        .map(|c| shape(prep.positions[c / 2]))
-        .sum::<f64>()
-        / cells as f64;
+    let mean_shape = (0..cells).map(|c| shape(along[c / 2])).sum::<f64>() / cells as f64;
     let kappa = sigma2 / mean_shape;
     let rel_scale = (0..cells)
-        .map(|c| (shape(prep.positions[c / 2]) / mean_shape).sqrt())
+        .map(|c| (shape(along[c / 2]) / mean_shape).sqrt())
         .collect();
     Some(ScatterTest {
         t,

@@ -1,13 +1,17 @@
 //! Which found effects the extended model keeps: each term in the order of the vocabulary
-//! is kept when it improves held-out prediction ([`super::validate`]); a periodic term
-//! when it improves the leave-targets-out RMS of the target means.
+//! is kept when its held-out gain over the terms kept before it ([`super::validate`]; a
+//! periodic term on the leave-targets-out RMS of the target means) is positive and larger
+//! than that of every one of 19 unrelated terms of the same size ([`super::confirm`]).
 
 use super::ModelFit;
 use super::analysis::Analysis;
+use super::confirm::{self, Unrelated};
 use super::effects::{Effect, Term};
 use super::finding::{Finding, fmt};
 use super::periodic::Peak;
+use super::prep::{Clocks, Prep};
 use super::validate::{self, ModelTerms, Score};
+use super::warm;
 use serde::Serialize;
 
 /// The held-out scheme that can show a term's gain.
@@ -48,12 +52,18 @@ pub struct TermGain {
     /// RMS: (without − with)/without × 100. Density: how much higher the geometric mean
     /// predictive density per reading is, (e^(without − with) − 1) × 100.
     pub gain_pct: f64,
-    /// Kept in the extended model: only with a positive gain.
+    /// The largest gain, in the same measure, of 19 unrelated terms of the same size on
+    /// the same data and folds ([`super::confirm`]: the same term read in a random order,
+    /// or as many ordinary readings left out), which a term unrelated to the data beats
+    /// in 5 % of data sets; null when none could be scored.
+    pub threshold_pct: f64,
+    /// Kept in the extended model: only with a gain above `threshold_pct`.
     pub kept: bool,
 }
 
 impl TermGain {
-    /// `drift: +12.3 % (k-fold over readings, RMS 0.812 → 0.712 µm), kept`.
+    /// `drift: +12.3 % (k-fold over readings, RMS 0.812 → 0.712 µm; unrelated terms at
+    /// most +1.2 %), kept`.
     pub fn describe(&self, unit: &str) -> String {
         let measure = match self.scheme {
             Scheme::KFoldDensity => format!(
@@ -63,8 +73,13 @@ impl TermGain {
             ),
             _ => format!("{} → {} {unit}", fmt(self.without), fmt(self.with)),
         };
+        let threshold = if self.threshold_pct.is_finite() {
+            format!("; unrelated terms at most {:+.1} %", self.threshold_pct)
+        } else {
+            String::new()
+        };
         format!(
-            "{}: {:+.1} % ({}: {measure}), {}",
+            "{}: {:+.1} % ({}: {measure}{threshold}), {}",
             self.effect.name(),
             self.gain_pct,
             self.scheme.describe(),
@@ -72,20 +87,35 @@ impl TermGain {
         )
     }
 
-    fn new(effect: Effect, scheme: Scheme, without: f64, with: f64) -> TermGain {
-        let gain_pct = match scheme {
-            Scheme::KFoldDensity => ((without - with).exp() - 1.0) * 100.0,
-            _ => (without - with) / without * 100.0,
-        };
+    /// A term judged: kept when its gain is positive and above `threshold_pct`.
+    fn new(effect: Effect, scheme: Scheme, without: f64, with: f64, threshold_pct: f64) -> Self {
+        let gain_pct = gain_pct(scheme, without, with);
         TermGain {
             effect,
             scheme,
             without,
             with,
             gain_pct,
-            kept: with < without,
+            threshold_pct,
+            kept: gain_pct > 0.0 && gain_pct > threshold_pct,
         }
     }
+}
+
+/// The gain of the scheme's measure from `without` to `with`, %.
+fn gain_pct(scheme: Scheme, without: f64, with: f64) -> f64 {
+    match scheme {
+        Scheme::KFoldDensity => ((without - with).exp() - 1.0) * 100.0,
+        _ => (without - with) / without * 100.0,
+    }
+}
+
+/// The largest gain of the unrelated terms (NaN for none).
+fn largest_gain(scheme: Scheme, without: f64, unrelated: &[f64]) -> f64 {
+    unrelated
+        .iter()
+        .map(|&u| gain_pct(scheme, without, u))
+        .fold(f64::NAN, f64::max)
 }
 
 /// The kept terms and the held-out errors of the base and the extended model.
@@ -103,18 +133,139 @@ pub(crate) struct Selection {
     pub term_gains: Vec<TermGain>,
 }
 
-/// Judges the terms of the `findings`; a term left out gets a note.
-pub(crate) fn select(
-    a: &Analysis,
-    findings: &[Finding],
+/// What the judging of the terms shares: the readings, folds and outliers.
+struct Judge<'a> {
+    a: &'a Analysis<'a>,
+    fold: Vec<usize>,
+    outlier: Vec<bool>,
+    /// Seed of the unrelated terms, from the plan.
     seed: u64,
-    notes: &mut Vec<String>,
-) -> Selection {
+}
+
+impl Judge<'_> {
+    fn score(&self, terms: ModelTerms) -> Score {
+        validate::score(&self.a.prep, &self.a.x, &self.fold, &self.outlier, terms)
+    }
+
+    /// The candidate `terms` (the `kept` ones and the effect's) cross-validated, and the
+    /// scores of the [`confirm::UNRELATED`] unrelated terms of the same size.
+    fn judge(
+        &self,
+        unrelated: Unrelated,
+        kept: ModelTerms,
+        terms: ModelTerms,
+    ) -> (Score, Vec<Score>) {
+        let (p, x) = (&self.a.prep, &self.a.x);
+        match unrelated {
+            Unrelated::TargetOrders => {
+                let orders = confirm::target_orders(&p.positions, self.seed);
+                let left_out: Vec<bool> = (self.outlier.iter())
+                    .map(|&o| o && terms.outliers)
+                    .collect();
+                let rows = validate::Rows {
+                    scored: &self.outlier,
+                    left_out: &left_out,
+                };
+                let mut all = validate::scores(p, x, &self.fold, rows, terms, &orders);
+                let s = all.remove(0);
+                (s, all)
+            }
+            Unrelated::TimeOrders => {
+                let others = confirm::row_orders(p.rows.len(), self.seed)
+                    .iter()
+                    .map(|order| {
+                        let q = p.with_clocks(shuffled_time(p, order, kept, terms));
+                        let terms = self.fixed_tau(&q, kept, terms);
+                        validate::score(&q, x, &self.fold, &self.outlier, terms)
+                    })
+                    .collect();
+                (self.score(terms), others)
+            }
+            Unrelated::RunOrders => {
+                let cells: Vec<usize> = p.rows.iter().map(|r| p.cell(r)).collect();
+                let others = confirm::run_orders(&cells, &p.clocks.run, self.seed)
+                    .into_iter()
+                    .map(|run| {
+                        let q = p.with_clocks(Clocks {
+                            run,
+                            ..p.clocks.clone()
+                        });
+                        validate::score(&q, x, &self.fold, &self.outlier, terms)
+                    })
+                    .collect();
+                (self.score(terms), others)
+            }
+            Unrelated::OrdinaryReadings => {
+                let others = confirm::ordinary_draws(&self.outlier, self.seed)
+                    .iter()
+                    .map(|draw| {
+                        let rows = validate::Rows {
+                            scored: &self.outlier,
+                            left_out: draw,
+                        };
+                        validate::scores(p, x, &self.fold, rows, kept, &[]).swap_remove(0)
+                    })
+                    .collect();
+                (self.score(terms), others)
+            }
+        }
+    }
+
+    /// An unrelated warm-up curve (the warm-up judged, not one kept before) takes the
+    /// time constant of the profile's grid that fits it best on all the readings
+    /// (profiling and refining it in every fold, as the term does, would cost 19 × 10
+    /// refined profiles); other terms as they are.
+    fn fixed_tau(&self, q: &Prep, kept: ModelTerms, terms: ModelTerms) -> ModelTerms {
+        if !terms.warm || kept.warm {
+            return terms;
+        }
+        let train: Vec<bool> = (self.outlier.iter())
+            .map(|&o| !(o && terms.outliers))
+            .collect();
+        let without = ModelTerms {
+            warm: false,
+            ..terms
+        };
+        let base = validate::fit_time(q, &self.a.x, &train, without);
+        let ones = vec![1.0; q.cells()];
+        ModelTerms {
+            warm_tau: warm::profile(q, &base, &ones, false).map(|w| w.tau),
+            ..terms
+        }
+    }
+}
+
+/// The clocks with the columns `terms` adds to `kept` read at the times of the rows in
+/// `order` (row k at row `order[k]`'s time): a drift (and the drift column a thermal
+/// growth brings when no drift is kept), a thermal growth, a warm-up.
+fn shuffled_time(p: &Prep, order: &[usize], kept: ModelTerms, terms: ModelTerms) -> Clocks {
+    let mut c = p.clocks.clone();
+    let shuffle = |v: &[f64]| -> Vec<f64> { order.iter().map(|&k| v[k]).collect() };
+    let drift_column = |t: ModelTerms| t.drift || t.thermal;
+    if drift_column(terms) && !drift_column(kept) {
+        c.drift = shuffle(&p.clocks.drift);
+    }
+    if terms.thermal && !kept.thermal {
+        c.thermal = shuffle(&p.clocks.thermal);
+    }
+    if terms.warm && !kept.warm {
+        c.warm = shuffle(&p.clocks.warm);
+    }
+    c
+}
+
+/// Judges the terms of the `findings` in the order of the vocabulary, each against the
+/// model of the terms kept before it (a finding whose term is left out is listed apart:
+/// [`super::Unconfirmed`]).
+pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection {
     let p = &a.prep;
-    let outlier_row: Vec<bool> = a.active.iter().map(|x| !x).collect();
-    let fold = validate::folds(p, seed);
-    let score = |terms| validate::score(p, &a.x, &fold, &outlier_row, terms);
-    let base_score = score(ModelTerms::default());
+    let judge = Judge {
+        a,
+        fold: validate::folds(p, seed),
+        outlier: a.active.iter().map(|x| !x).collect(),
+        seed: confirm::plan_seed(&p.positions, &p.clocks.run, seed),
+    };
+    let base_score = judge.score(ModelTerms::default());
     let (mut kept, mut current) = (ModelTerms::default(), base_score);
     let mut effects = Vec::new();
     let mut term_gains = Vec::new();
@@ -127,38 +278,24 @@ pub(crate) fn select(
         };
         let mut terms = kept;
         set(&mut terms);
-        let s = score(terms);
+        let (s, others) = judge.judge(effect.rule().unrelated(), kept, terms);
         let measure = |s: &Score| if by_density { s.nlpd } else { s.rms };
         let scheme = if by_density {
             Scheme::KFoldDensity
         } else {
             Scheme::KFoldRms
         };
-        term_gains.push(TermGain::new(
-            effect,
-            scheme,
-            measure(&current),
-            measure(&s),
-        ));
-        if measure(&s) < measure(&current) {
+        let others: Vec<f64> = others.iter().map(measure).collect();
+        let threshold = largest_gain(scheme, measure(&current), &others);
+        let gain = TermGain::new(effect, scheme, measure(&current), measure(&s), threshold);
+        if gain.kept {
             (kept, current) = (terms, s);
             effects.push(effect);
-        } else {
-            notes.push(format!(
-                "{}: found, but the term does not improve the held-out {} ({} vs {}), so the extended model leaves it out",
-                effect.name(),
-                if by_density { "log density" } else { "RMS" },
-                fmt(measure(&s)),
-                fmt(measure(&current)),
-            ));
         }
-    }
-    let (between, periodic) = judge_periodic(a, &mut effects, notes);
-    if let (Some(without), Some(with)) = between {
-        let gain = TermGain::new(Effect::Periodic, Scheme::LeaveTargetsOut, without, with);
         term_gains.push(gain);
-        term_gains.sort_by_key(|g| g.effect);
     }
+    let (between, periodic) = judge_periodic(a, judge.seed, &mut effects, &mut term_gains);
+    term_gains.sort_by_key(|g| g.effect);
     effects.sort();
     let base_terms: Vec<String> = ["systematic_per_target", "reversal", "scatter"]
         .map(String::from)
@@ -199,27 +336,35 @@ pub(crate) fn select(
     }
 }
 
-/// The periodic term: the leave-targets-out RMS of the target means without and with
-/// it, and the term when it lowers that RMS.
+/// The periodic term, judged on the leave-targets-out errors of the target means against
+/// the same sinusoid along the targets in random orders: the RMS without and with it, and
+/// the term when it earns its place.
 fn judge_periodic(
     a: &Analysis,
+    seed: u64,
     effects: &mut Vec<Effect>,
-    notes: &mut Vec<String>,
+    term_gains: &mut Vec<TermGain>,
 ) -> ((Option<f64>, Option<f64>), Option<Peak>) {
     let Some(peak) = a.periodic.peak.as_ref() else {
         return ((None, None), None);
     };
-    let (bb, be) = validate::between_targets(&a.prep.positions, &a.means, peak.period);
-    if be < bb {
+    let positions = &a.prep.positions;
+    let orders = confirm::target_orders(positions, seed);
+    let errors = validate::between_targets(positions, &a.means, peak.period, &orders);
+    let (bb, be) = errors.rms();
+    let others: Vec<f64> = errors
+        .unrelated
+        .iter()
+        .map(|u| validate::rms_of(u))
+        .collect();
+    let threshold = largest_gain(Scheme::LeaveTargetsOut, bb, &others);
+    let gain = TermGain::new(Effect::Periodic, Scheme::LeaveTargetsOut, bb, be, threshold);
+    let kept = gain.kept;
+    term_gains.push(gain);
+    if kept {
         effects.push(Effect::Periodic);
         ((Some(bb), Some(be)), Some(peak.clone()))
     } else {
-        notes.push(format!(
-            "periodic: found, but the term does not improve the leave-targets-out RMS ({} vs {} {}), so the extended model leaves it out",
-            fmt(be),
-            fmt(bb),
-            a.units.symbol()
-        ));
         ((Some(bb), Some(be)), None)
     }
 }

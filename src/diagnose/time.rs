@@ -79,15 +79,16 @@ pub(crate) struct TimeFit {
 impl TimeFit {
     /// The time effect (without the cell intercept) at a row.
     pub fn effect(&self, prep: &Prep, k: usize) -> f64 {
-        let r = &prep.rows[k];
-        let t = r.t - prep.tbar;
-        let mut e = self.beta * t + self.gamma * (prep.positions[r.i] - prep.pbar) * t;
-        if r.run > 0 && !self.alpha.is_empty() {
-            e += self.alpha[r.run];
+        let (r, c) = (&prep.rows[k], &prep.clocks);
+        let p = prep.positions[r.i] - prep.pbar;
+        let mut e = self.beta * c.drift[k] + self.gamma * p * c.thermal[k];
+        let run = c.run[k];
+        if run > 0 && !self.alpha.is_empty() {
+            e += self.alpha[run];
         }
         if let Some(tau) = self.tau {
-            let level = self.warm_a + self.warm_g * (prep.positions[r.i] - prep.pbar);
-            e += level * warm_shape(r.t - prep.t0, tau);
+            let level = self.warm_a + self.warm_g * p;
+            e += level * warm_shape(c.warm[k], tau);
         }
         e
     }
@@ -142,7 +143,7 @@ impl<'a> CellDemean<'a> {
 pub(crate) fn warm_columns(prep: &Prep, rows: &[usize], tau: f64) -> [Vec<f64>; 2] {
     let shape: Vec<f64> = rows
         .iter()
-        .map(|&k| warm_shape(prep.rows[k].t - prep.t0, tau))
+        .map(|&k| warm_shape(prep.clocks.warm[k], tau))
         .collect();
     let growth = rows
         .iter()
@@ -169,12 +170,12 @@ pub(crate) fn fit(
     let mut drift_col = None;
     let mut warm_col = None;
     let mut run_cols = Vec::new();
-    let t_of = |k: usize| prep.rows[k].t - prep.tbar;
+    let c = &prep.clocks;
     if terms.thermal {
         thermal_col = Some(raw.len());
         raw.push(
             rows.iter()
-                .map(|&k| (prep.positions[prep.rows[k].i] - prep.pbar) * t_of(k))
+                .map(|&k| (prep.positions[prep.rows[k].i] - prep.pbar) * c.thermal[k])
                 .collect(),
         );
     }
@@ -183,14 +184,14 @@ pub(crate) fn fit(
             run_cols.push(raw.len());
             raw.push(
                 rows.iter()
-                    .map(|&k| if prep.rows[k].run == j { 1.0 } else { 0.0 })
+                    .map(|&k| if c.run[k] == j { 1.0 } else { 0.0 })
                     .collect(),
             );
         }
     }
     if terms.drift {
         drift_col = Some(raw.len());
-        raw.push(rows.iter().map(|&k| t_of(k)).collect());
+        raw.push(rows.iter().map(|&k| c.drift[k]).collect());
     }
     if let Some(tau) = terms.warm {
         warm_col = Some(raw.len());
@@ -359,7 +360,8 @@ pub(crate) fn tests(
     let (sigma2, df) = (out.sigma2, out.df);
     // Run offsets are what no smooth curve in time explains: tested beyond the linear
     // trend with the best warm-up curve, found or not, so that a curvature of the run
-    // means is never taken for zero shifts; their sizes are what the smooth model leaves.
+    // means is never taken for zero shifts; their sizes are what the smooth terms found
+    // leave (below).
     out.runs = match out.warm.as_ref() {
         Some(w) => {
             run_test(prep, &w.full, &w.smooth, w.full.sigma2(), w.full.df).map(|r| RunTest {
@@ -384,7 +386,28 @@ pub(crate) fn tests(
         let thermal_found = out.thermal.as_ref().is_some_and(|t| t.p < alpha);
         out.drift = drift_test(prep, &out, runs_real, thermal_found);
     }
+    if runs_real {
+        let found = found_smooth(&out, alpha);
+        let smooth = fit(prep, values, active, scale, found);
+        if let Some(r) = out.runs.as_mut() {
+            r.offsets = run_offsets(prep, &smooth);
+        }
+    }
     out
+}
+
+/// The smooth terms the tests find: run offsets are sized by what these leave, not by
+/// what a drift fitted but not found would take (the straight line through the offsets,
+/// which made the offsets of random runs look smaller than they are).
+fn found_smooth(out: &TimeTests, alpha: f64) -> Terms {
+    let found = |p: Option<f64>| p.is_some_and(|p| p < alpha);
+    let thermal = found(out.thermal.as_ref().map(|t| t.p));
+    Terms {
+        thermal,
+        runs: false,
+        drift: thermal || found(out.drift.as_ref().map(|d| d.test.p)),
+        warm: out.warm_tau(alpha),
+    }
 }
 
 /// Thermal growth: γ in the full model, against the pure scatter.

@@ -6,8 +6,11 @@
 //! chart that cannot be drawn comes back as a small chart that says so).
 //!
 //! Sizes are in pixels and the text sizes are fixed, chosen for a chart about 900 px wide
-//! shown about 16 cm wide: 900 × 360 for [`residuals`], 900 × 320 for [`periodogram`] and
-//! 900 × [`model_checks_height`] for [`model_checks`].
+//! shown about 16 cm wide: 900 × 360 for [`residuals`] (600 high with [`TimePanels`]),
+//! 900 × 320 for [`periodogram`] and 900 × [`model_checks_height`] for [`model_checks`].
+
+mod frame;
+mod time;
 
 use super::chart_kit::{
     Area, AxesSpec, Chart, Conventions, DASHED, DOWN, FRAME, Failed, GRID, GUIDE, INK, LegendItem,
@@ -22,6 +25,8 @@ use std::collections::HashSet;
 
 pub use super::chart_kit::Style;
 pub use super::check_chart::{CheckBar, model_checks, model_checks_height};
+use frame::{Frame, draw_clipped};
+pub use time::TimePanels;
 
 /// Residuals of the fitted base model (reading minus model), in µm or arcsec.
 ///
@@ -44,6 +49,8 @@ pub struct Residuals {
     /// optional fitted curve of an identified effect (e.g. drift line), drawn over the points
     /// in the given order; a non-finite point breaks the line
     pub fit: Option<Vec<(f64, f64)>>,
+    /// When present, the chart is instead these panels of a kept effect in time ([`time`]).
+    pub time: Option<TimePanels>,
 }
 
 /// A Lomb–Scargle periodogram along the axis.
@@ -231,115 +238,6 @@ fn linear_log_ticks(lo: f64, hi: f64, max_n: usize) -> Vec<(f64, String)> {
 // ---------------------------------------------------------------------------------------------
 // Drawing primitives (in backend pixels, on the root area)
 
-/// The plot rectangle of a chart and the data ranges it shows; maps data to pixels in f64 so
-/// far-out values can be clipped before they are rounded.
-#[derive(Clone, Copy)]
-struct Frame {
-    x: (f64, f64),
-    y: (f64, f64),
-    l: f64,
-    r: f64,
-    t: f64,
-    b: f64,
-}
-
-impl Frame {
-    fn of(chart: &Chart, x: (f64, f64), y: (f64, f64)) -> Frame {
-        let (l, b) = chart.backend_coord(&(x.0, y.0));
-        let (r, t) = chart.backend_coord(&(x.1, y.1));
-        Frame {
-            x,
-            y,
-            l: l as f64,
-            r: r as f64,
-            t: t as f64,
-            b: b as f64,
-        }
-    }
-
-    fn px(&self, x: f64, y: f64) -> Px {
-        let fx = (x - self.x.0) / (self.x.1 - self.x.0);
-        let fy = (y - self.y.0) / (self.y.1 - self.y.0);
-        (
-            self.l + fx * (self.r - self.l),
-            self.b - fy * (self.b - self.t),
-        )
-    }
-}
-
-/// The part of segment a–b inside the frame's rectangle (Liang–Barsky), if any.
-fn clip_segment(a: Px, b: Px, f: &Frame) -> Option<(Px, Px)> {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let mut t0: f64 = 0.0;
-    let mut t1: f64 = 1.0;
-    for (p, q) in [
-        (-dx, a.0 - f.l),
-        (dx, f.r - a.0),
-        (-dy, a.1 - f.t),
-        (dy, f.b - a.1),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return None;
-            }
-        } else {
-            let t = q / p;
-            if p < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-        }
-    }
-    if t0 > t1 {
-        return None;
-    }
-    let at = |t: f64| (a.0 + dx * t, a.1 + dy * t);
-    Some((
-        if t0 > 0.0 { at(t0) } else { a },
-        if t1 < 1.0 { at(t1) } else { b },
-    ))
-}
-
-/// The pieces of a polyline inside the frame; non-finite points break the line.
-fn clip_polyline(points: &[Px], f: &Frame) -> Vec<Vec<Px>> {
-    let mut out: Vec<Vec<Px>> = Vec::new();
-    let mut current: Vec<Px> = Vec::new();
-    for w in points.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let finite = a.0.is_finite() && a.1.is_finite() && b.0.is_finite() && b.1.is_finite();
-        match clip_segment(a, b, f).filter(|_| finite) {
-            Some((p, q)) => {
-                if current.last() != Some(&p) {
-                    if current.len() >= 2 {
-                        out.push(std::mem::take(&mut current));
-                    }
-                    current = vec![p];
-                }
-                current.push(q);
-            }
-            None => {
-                if current.len() >= 2 {
-                    out.push(std::mem::take(&mut current));
-                }
-                current.clear();
-            }
-        }
-    }
-    if current.len() >= 2 {
-        out.push(current);
-    }
-    out
-}
-
-/// Draws a polyline clipped to the frame.
-fn draw_clipped(root: &Area, points: &[Px], frame: &Frame, stroke: Stroke) -> Result<(), Failed> {
-    for piece in clip_polyline(points, frame) {
-        draw_line(root, &piece, stroke)?;
-    }
-    Ok(())
-}
-
 /// A filled arrow head with its tip at `tip`, pointing left (`dir` < 0) or right.
 pub(crate) fn draw_arrow(
     root: &Area,
@@ -395,6 +293,9 @@ fn non_empty(text: &str) -> Option<&str> {
 /// effect as a solid black line over the points, and the zero line. The y axis is symmetric
 /// about zero. The legend sits in a band above the plot. Designed for 900 × 360 px.
 pub fn residuals(r: &Residuals, style: &Style) -> Scene {
+    if let Some(t) = r.time.as_ref() {
+        return time::time_chart(r, t, style);
+    }
     let n = r.x.len().min(r.y.len()).min(r.up.len());
     let points: Vec<(f64, f64, bool)> = (0..n)
         .map(|i| (r.x[i], r.y[i], r.up[i]))
@@ -793,6 +694,7 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> Scene {
 
 #[cfg(test)]
 mod tests {
+    use super::frame::clip_polyline;
     use super::*;
     use crate::report::check_chart::{check_position, row_decimals};
     use crate::report::svg_probe::{
@@ -860,6 +762,7 @@ mod tests {
             y_label: "Residual / µm".to_string(),
             band: Some(0.86),
             fit: Some(vec![(0.0, -1.0), (40.0, 1.0)]),
+            time: None,
         }
     }
 
@@ -1044,6 +947,7 @@ mod tests {
             y_label: "Residual / µm".to_string(),
             band: None,
             fit: None,
+            time: None,
         };
         let svg = residuals(&r, &style(360));
         assert_well_formed(&svg);
@@ -1490,6 +1394,20 @@ mod tests {
             },
             Residuals {
                 fit: Some(Vec::new()),
+                ..base.clone()
+            },
+            Residuals {
+                time: Some(TimePanels {
+                    means: vec![(f64::INFINITY, 1e300, true), (0.0, -1e300, false)],
+                    curve: vec![(f64::NAN, 0.0), (0.0, f64::MAX)],
+                    band: f64::NAN,
+                    after_band: Some(-1.0),
+                    ..TimePanels::default()
+                }),
+                ..base.clone()
+            },
+            Residuals {
+                time: Some(TimePanels::default()),
                 ..base.clone()
             },
         ];

@@ -5,8 +5,8 @@
 use super::data::num;
 use crate::diagnose::cross::OutOfTest;
 use crate::diagnose::effects::periodic::Periodic;
-use crate::diagnose::{Diagnosis, Finding};
-use crate::units::{AxisKind, fmt_fixed};
+use crate::diagnose::{Diagnosis, Effect, Finding, TimeEffect, Unconfirmed};
+use crate::units::{AxisKind, Direction, fmt_fixed};
 use serde::Serialize;
 
 /// The diagnosis section of an axis report, as the template reads it.
@@ -14,6 +14,10 @@ use serde::Serialize;
 pub(super) struct DiagnosisSection<'a> {
     unit: &'static str,
     findings: Vec<FindingLine<'a>>,
+    /// Findings of the tests whose term the held-out prediction does not confirm.
+    unconfirmed: Vec<UnconfirmedLine<'a>>,
+    /// The time chart shows a kept effect in time against the run means.
+    has_time_effect: bool,
     base_rms: String,
     extended_rms: String,
     base_terms: String,
@@ -87,6 +91,26 @@ struct FindingLine<'a> {
     advice: String,
 }
 
+/// A finding of a test that the held-out prediction does not confirm: its message, its
+/// evidence and its held-out gain beside the unrelated terms'.
+#[derive(Serialize)]
+struct UnconfirmedLine<'a> {
+    effect: &'static str,
+    message: &'a str,
+    /// The evidence and the held-out gain beside the unrelated terms', as one text.
+    detail: String,
+}
+
+impl<'a> From<&'a Unconfirmed> for UnconfirmedLine<'a> {
+    fn from(u: &'a Unconfirmed) -> UnconfirmedLine<'a> {
+        UnconfirmedLine {
+            effect: u.finding.effect().name(),
+            message: &u.finding.message,
+            detail: format!("{}; {}", u.finding.evidence.describe(fmt), u.describe()),
+        }
+    }
+}
+
 /// One parameter as measured and with the effects removed.
 #[derive(Serialize)]
 struct CorrectedLine<'a> {
@@ -142,6 +166,8 @@ pub(super) fn diagnosis_section<'a>(
     DiagnosisSection {
         unit: d.kind.deviation_symbol(),
         findings: d.findings.iter().map(FindingLine::from).collect(),
+        unconfirmed: d.unconfirmed.iter().map(UnconfirmedLine::from).collect(),
+        has_time_effect: d.residuals.time_effect.is_some(),
         base_rms: fmt_fixed(d.base.heldout_rms, 3),
         extended_rms: fmt_fixed(d.extended.heldout_rms, 3),
         base_terms: d.base.terms.join(", "),
@@ -229,6 +255,11 @@ pub fn diagnosis_charts(
         y_label: format!("Residual of the base model / {dev_unit}"),
         band: Some(2.0 * sigma),
         fit: None,
+        time: d
+            .residuals
+            .time_effect
+            .as_ref()
+            .map(|t| time_panels(d, t, timed)),
     };
     let along = Residuals {
         x: readings.iter().map(|r| r.position).collect(),
@@ -241,6 +272,7 @@ pub fn diagnosis_charts(
             y_label: in_time.y_label.clone(),
             band: in_time.band,
             fit: None,
+            time: None,
         }
     };
     let marked = d
@@ -256,4 +288,46 @@ pub fn diagnosis_charts(
         unresolved_below: None,
     };
     (checks, in_time, along, periodogram)
+}
+
+/// The two panels of the time chart: the run means with the kept effect in time and its
+/// band, and the residuals after the extended model; time in minutes with time stamps,
+/// else the reading's place in the test cycle (1-based), as the one-panel chart has it.
+fn time_panels(d: &Diagnosis, t: &TimeEffect, timed: bool) -> super::diagnosis_charts::TimePanels {
+    let x = |time_s: Option<f64>, order: f64| {
+        if timed {
+            time_s.map_or(f64::NAN, |s| s / 60.0)
+        } else {
+            order + 1.0
+        }
+    };
+    let up = |dir: Direction| dir == Direction::Up;
+    let names: Vec<&str> = t
+        .terms
+        .iter()
+        .map(|e| match e {
+            Effect::WarmUp => "warm-up",
+            Effect::ThermalGrowth => "thermal growth at the mean target",
+            _ => "drift",
+        })
+        .collect();
+    super::diagnosis_charts::TimePanels {
+        means: (t.run_means.iter())
+            .map(|m| (x(m.time_s, m.order), m.mean, up(m.direction)))
+            .collect(),
+        curve: t
+            .curve
+            .iter()
+            .map(|c| (x(c.time_s, c.order), c.value))
+            .collect(),
+        band: t.band,
+        curve_label: format!("fitted {}", names.join(" and ")),
+        after: (d.residuals.readings.iter())
+            .map(|r| {
+                let order = r.order as f64;
+                (x(r.time_s, order), r.extended_residual, up(r.direction))
+            })
+            .collect(),
+        after_band: Some(2.0 * t.sigma).filter(|b| b.is_finite()),
+    }
 }

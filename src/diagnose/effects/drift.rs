@@ -3,7 +3,7 @@
 //! rate of the trend model, against the scatter or, when the run offsets are real, against
 //! the run-to-run variation.
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -104,6 +104,12 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::Readings(|t| t.drift = true)
+    }
+
+    /// A column in time: compared with the same column at the readings' times in random
+    /// orders.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::TimeOrders
     }
 
     fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {

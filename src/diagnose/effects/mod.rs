@@ -1,6 +1,7 @@
 //! The vocabulary of effects, one file each (as a linter keeps one file per rule): its
 //! decision on the tests ([`Rule::find`]: the finding with its typed estimate), its term
-//! of the held-out model ([`Rule::term`]), what it adds to the extended simulation model
+//! of the held-out model ([`Rule::term`]) and the unrelated terms it is compared with
+//! ([`Rule::unrelated`]), what it adds to the extended simulation model
 //! ([`Rule::extend`]) and its "effect removed" correction ([`Rule::removed`]).
 //!
 //! Adding an effect is one file here and one line in the list at the end of this file
@@ -17,21 +18,23 @@ pub mod thermal_growth;
 pub mod warm_up;
 
 use super::analysis::Analysis;
+pub(crate) use super::confirm::Unrelated;
 use super::finding::{Fields, Finding};
 use super::fitted::Fitted;
 use super::validate::ModelTerms;
 use crate::simulate::ErrorModel;
 use serde::Serialize;
 
-/// How a kept term is judged before the extended model takes it.
+/// The measure a term is judged on before the extended model takes it (it must lower it
+/// by more than unrelated terms of the same size do: [`super::confirm`]).
 #[derive(Clone, Copy)]
 pub(crate) enum Term {
-    /// A term of the reading model, kept when it lowers the held-out RMS of the readings.
+    /// A term of the reading model: the held-out RMS of the readings.
     Readings(fn(&mut ModelTerms)),
-    /// A term of the reading model's scatter, kept when it lowers the held-out negative
-    /// log density (an RMS cannot see it).
+    /// A term of the reading model's scatter: the held-out negative log density (an RMS
+    /// cannot see it).
     Density(fn(&mut ModelTerms)),
-    /// A term of the target means, kept when it lowers their leave-targets-out RMS.
+    /// A term of the target means: their leave-targets-out RMS.
     TargetMeans,
 }
 
@@ -41,6 +44,8 @@ pub(crate) trait Rule: Sync {
     fn find(&self, a: &Analysis) -> Vec<Finding>;
     /// How its term is judged.
     fn term(&self) -> Term;
+    /// The unrelated terms of the same size its term's gain is compared with.
+    fn unrelated(&self) -> Unrelated;
     /// Adds the kept term to the extended model (whose plan is the file's plan).
     fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel);
     /// The effect per row of `a.prep` to subtract from the readings for the "effect

@@ -2,7 +2,7 @@
 //! estimate is only as good as its readings). Found in [`crate::diagnose::outliers`] by
 //! externally studentised residuals in the full time model, Bonferroni over all readings.
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -105,6 +105,11 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::Readings(|t| t.outliers = true)
+    }
+
+    /// Readings left out of the fit: compared with as many ordinary readings left out.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::OrdinaryReadings
     }
 
     fn extend(&self, a: &Analysis, _: &Fitted, model: &mut ErrorModel) {

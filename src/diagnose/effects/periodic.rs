@@ -4,7 +4,7 @@
 //! leave-targets-out RMS of the target means (a periodic error costs between the
 //! targets, not at them).
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -113,6 +113,12 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::TargetMeans
+    }
+
+    /// A line (or sinusoid) through the targets: compared with the same term along the
+    /// targets in random orders.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::TargetOrders
     }
 
     fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {

@@ -3,7 +3,7 @@
 //! corrected for the time effects: the slope of a straight line, and what the line leaves,
 //! each at half the level.
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -139,6 +139,12 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::Readings(|t| t.reversal = true)
+    }
+
+    /// A line (or sinusoid) through the targets: compared with the same term along the
+    /// targets in random orders.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::TargetOrders
     }
 
     fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel) {

@@ -3,7 +3,7 @@
 //! line and a warm-up curve in time leave of the between-run variation, against the pure
 //! scatter.
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -96,6 +96,11 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::Readings(|t| t.runs = true)
+    }
+
+    /// Run effects: compared with the readings of each cell dealt to the runs at random.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::RunOrders
     }
 
     fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {

@@ -2,7 +2,7 @@
 //! VDI 3441 takes one scatter for the axis, NMTBA one per target). Tested in
 //! [`crate::diagnose::scatter`]: the log cell variances regressed on position.
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
@@ -88,6 +88,12 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::Density(|t| t.scatter = true)
+    }
+
+    /// A line (or sinusoid) through the targets: compared with the same term along the
+    /// targets in random orders.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::TargetOrders
     }
 
     fn extend(&self, a: &Analysis, _: &Fitted, model: &mut ErrorModel) {

@@ -3,7 +3,7 @@
 //! [`crate::diagnose::time`] as the position × time coefficient of the full time model,
 //! against the pure scatter.
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -106,6 +106,12 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::Readings(|t| t.thermal = true)
+    }
+
+    /// A column in time: compared with the same column at the readings' times in random
+    /// orders.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::TimeOrders
     }
 
     fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel) {

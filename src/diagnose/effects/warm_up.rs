@@ -5,7 +5,7 @@
 //! as an exponential approach beyond a linear drift, against the scatter or, when free run
 //! offsets are real beyond it, against the run-to-run variation.
 
-use super::{Rule as EffectRule, Term};
+use super::{Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -248,6 +248,12 @@ impl EffectRule for Rule {
 
     fn term(&self) -> Term {
         Term::Readings(|t| t.warm = true)
+    }
+
+    /// A curve in time: compared with the same curve read at the readings' times in
+    /// random orders.
+    fn unrelated(&self) -> Unrelated {
+        Unrelated::TimeOrders
     }
 
     fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
