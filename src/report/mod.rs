@@ -7,36 +7,30 @@
 //! document uses the same virtual paths, so Typst's global file-id table does not grow
 //! with the number of reports.
 
-mod canvas;
-pub(crate) mod chart_kit;
+// The rooms: typesetting (Typst's world, text shaped directly, lines of text, drawings),
+// the chart kit (a canvas, scenes and their labels, shared plotting helpers), one file
+// per chart, and the data each document reads.
+pub mod chart_kit;
 pub mod charts;
-mod check_chart;
-pub mod compensation_chart;
 pub mod data;
-pub mod diagnosis_charts;
-pub mod diagnosis_data;
-mod drawing;
-pub mod labels;
-pub mod scene;
-mod shaping;
-#[cfg(test)]
-mod svg_probe;
-mod text_lines;
-pub mod trend_chart;
-pub mod verification_chart;
-pub mod world;
+pub mod typeset;
 
 use crate::batch::{AxisTest, CampaignResult};
 use crate::history::AxisTrends;
 use crate::trend::{Series, Trend};
-use scene::Scene;
+use chart_kit::{labels, scene::Scene};
+use charts::{
+    check as check_chart, compensation as compensation_chart, diagnosis as diagnosis_charts,
+    trend as trend_chart, verification as verification_chart,
+};
+use data::diagnosis as diagnosis_data;
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;
+use typeset::world::{DocumentWorld, Typesetter};
 use typst::diag::{Severity, SourceDiagnostic};
 use typst::foundations::Smart;
 use typst_layout::PagedDocument;
-use world::{DocumentWorld, Typesetter};
 
 /// Template files, embedded at build time (the source tree's `templates/`).
 pub const TEMPLATES: &[(&str, &str)] = &[

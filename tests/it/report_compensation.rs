@@ -4,7 +4,8 @@
 
 use crate::common::{axcheck, scratch};
 use axcheck::batch::CampaignResult;
-use axcheck::report::{Reports, compensation_chart, data};
+use axcheck::report::charts::compensation as compensation_chart;
+use axcheck::report::{Reports, data};
 use serde_json::Value;
 use std::fmt::Write;
 use std::path::Path;

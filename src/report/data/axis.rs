@@ -10,7 +10,7 @@ use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::{DirectionResult, Evaluation, StandardId};
 use crate::judge::{Outcome, Verdict};
 use crate::measurement::FileInfo;
-use crate::report::diagnosis_data::{DiagnosisSection, diagnosis_section};
+use crate::report::data::diagnosis::{DiagnosisSection, diagnosis_section};
 use crate::rules::Finding;
 use crate::units::{Travel, fmt_position};
 use serde::Serialize;

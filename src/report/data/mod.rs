@@ -10,6 +10,7 @@
 mod axis;
 mod compensation;
 mod conditions;
+pub mod diagnosis;
 mod other_tool;
 mod summary;
 pub mod trends;

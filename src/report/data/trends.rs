@@ -7,7 +7,7 @@
 
 use super::num;
 use crate::evaluate::catalogue::CATALOGUE;
-use crate::report::trend_chart::TrendChart;
+use crate::report::charts::trend::TrendChart;
 use crate::trend::fit::unit_for_people;
 use crate::trend::{Series, Trend};
 use chrono::{Datelike, Days, NaiveDate};

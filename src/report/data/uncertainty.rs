@@ -4,7 +4,7 @@
 
 use super::{num, symbol_of};
 use crate::batch::AxisTest;
-use crate::report::check_chart::CheckBar;
+use crate::report::charts::check::CheckBar;
 use crate::uncertainty::{BudgetLine, Uncertainty};
 use crate::units::fmt_fixed;
 use serde::Serialize;

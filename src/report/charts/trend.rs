@@ -4,22 +4,22 @@
 //! horizon), the band of Sen's 95 % slope interval, the limit and the forecast date at
 //! which the line reaches it.
 //!
-//! Same conventions as [`super::charts`]: pure, never panics (a chart that cannot be
+//! Same conventions as [`crate::report::charts`]: pure, never panics (a chart that cannot be
 //! drawn comes back as a small chart that says so). Time runs in decimal years
 //! (2024.5 is about 1 July 2024); the ticks are whole years.
 
-use super::chart_kit::{
+use crate::report::chart_kit::scene::Scene;
+use crate::report::chart_kit::{
     Area, AxesSpec, Chart, DASHED, FRAME, Failed, GRID, INK, Marker, SOLID, Stroke, TICK_PX, UP,
     X_TICK_H, draw_line, draw_marker, draw_text, message_chart, padded_range, render, round_px,
     text_style,
 };
-use super::charts::{KIT, build_panel, to_px, y_range};
-use super::scene::Scene;
+use crate::report::charts::{KIT, build_panel, to_px, y_range};
 use plotters::prelude::*;
 use plotters::style::RGBColor;
 use plotters::style::text_anchor::{HPos, VPos};
 
-pub use super::chart_kit::Style;
+pub use crate::report::chart_kit::Style;
 
 /// What a trend chart shows. Values in the parameter's unit (µm or arcsec).
 #[derive(Debug, Clone, PartialEq, Default)]

@@ -1,7 +1,7 @@
-//! A chart as data: the shapes and texts plotters drew, recorded by [`super::canvas`].
+//! A chart as data: the shapes and texts plotters drew, recorded by [`crate::report::chart_kit::canvas`].
 //!
 //! The drawing goes to Typst as frame items built from these shapes (see
-//! [`super::drawing`]), the texts as labels set by the template (see [`super::labels`]);
+//! [`crate::report::typeset::drawing`]), the texts as labels set by the template (see [`crate::report::chart_kit::labels`]);
 //! [`Scene::svg`] writes the whole chart as SVG for templates that show it as an image.
 //!
 //! Runs of like shapes are kept as one [`Shape`] with an outline per element: a chart of
@@ -193,11 +193,11 @@ impl Drawing {
 
 const MAGIC: &[u8] = b"AXD1";
 
-pub(super) fn put_u32(out: &mut Vec<u8>, v: u32) {
+pub(in crate::report) fn put_u32(out: &mut Vec<u8>, v: u32) {
     out.extend_from_slice(&v.to_le_bytes());
 }
 
-pub(super) fn put_len(out: &mut Vec<u8>, n: usize) {
+pub(in crate::report) fn put_len(out: &mut Vec<u8>, n: usize) {
     put_u32(out, u32::try_from(n).unwrap_or(u32::MAX));
 }
 
@@ -231,16 +231,16 @@ fn put_outline(out: &mut Vec<u8>, outline: &Outline) {
 }
 
 /// Reads [`Drawing::encode`]'s bytes from the front.
-pub(super) struct Reader<'a>(pub(super) &'a [u8]);
+pub(in crate::report) struct Reader<'a>(pub(in crate::report) &'a [u8]);
 
 impl<'a> Reader<'a> {
-    pub(super) fn take<const N: usize>(&mut self) -> Option<[u8; N]> {
+    pub(in crate::report) fn take<const N: usize>(&mut self) -> Option<[u8; N]> {
         let (head, rest) = self.0.split_first_chunk::<N>()?;
         self.0 = rest;
         Some(*head)
     }
 
-    pub(super) fn u32(&mut self) -> Option<u32> {
+    pub(in crate::report) fn u32(&mut self) -> Option<u32> {
         self.take().map(u32::from_le_bytes)
     }
 
@@ -248,18 +248,18 @@ impl<'a> Reader<'a> {
         self.take().map(i32::from_le_bytes)
     }
 
-    pub(super) fn f64(&mut self) -> Option<f64> {
+    pub(in crate::report) fn f64(&mut self) -> Option<f64> {
         self.take().map(f64::from_le_bytes)
     }
 
     /// A count, refused when the bytes left cannot hold that many items of a byte or more.
-    pub(super) fn len(&mut self) -> Option<usize> {
+    pub(in crate::report) fn len(&mut self) -> Option<usize> {
         let n = usize::try_from(self.u32()?).ok()?;
         (n <= self.0.len()).then_some(n)
     }
 
     /// A string: its length in bytes, then its UTF-8.
-    pub(super) fn str(&mut self) -> Option<&'a str> {
+    pub(in crate::report) fn str(&mut self) -> Option<&'a str> {
         let n = self.len()?;
         let (text, rest) = self.0.split_at(n);
         self.0 = rest;

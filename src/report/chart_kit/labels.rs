@@ -2,7 +2,7 @@
 //! the drawing as ordinary Typst text, which is shaped once per string, written as one text
 //! run and stays searchable in the PDF.
 
-use super::scene::{Align, Reader, Scene, Text, put_len};
+use crate::report::chart_kit::scene::{Align, Reader, Scene, Text, put_len};
 use serde::Serialize;
 
 /// One label in chart pixels: its anchor point, where its baseline and start lie relative to
@@ -243,7 +243,7 @@ fn merge(mut column: Vec<Label>) -> Option<Label> {
 mod tests {
     use super::*;
 
-    use crate::report::scene::{Baseline, Colour};
+    use crate::report::chart_kit::scene::{Baseline, Colour};
 
     #[test]
     fn every_text_becomes_a_label_with_its_placement() {

@@ -5,13 +5,13 @@
 //! Handing Typst the drawing as an SVG image cost a fifth of a report: the SVG decoder
 //! parsed the text into a tree, and the PDF writer turned the tree into an image object of
 //! its own. Here the shapes go straight into the page, and the labels are set as text in
-//! the current font (see [`super::text_lines`]), placed as the scene's texts were. The
-//! function is defined once in the shared library (see [`super::world`]) and reads the
+//! the current font (see [`crate::report::typeset::text_lines`]), placed as the scene's texts were. The
+//! function is defined once in the shared library (see [`crate::report::typeset::world`]) and reads the
 //! chart through the document's `World`, so Typst's caches see it as data like any file.
 
-use super::labels::{ChartLabels, Label};
-use super::scene::{Colour, Drawing, Outline, Paint};
-use super::text_lines::{self, Paragraph, Settings};
+use crate::report::chart_kit::labels::{ChartLabels, Label};
+use crate::report::chart_kit::scene::{Colour, Drawing, Outline, Paint};
+use crate::report::typeset::text_lines::{self, Paragraph, Settings};
 use typst::diag::{At, SourceResult};
 use typst::engine::Engine;
 use typst::foundations::{Bytes, Content, NativeElement, Packed, Resolve, StyleChain, Styles};
@@ -219,7 +219,7 @@ fn point((x, y): (i32, i32)) -> Point {
 /// Filled circles of one radius (a series' markers) as the dots of a line of no length with
 /// round caps as wide as the circles: a few bytes each in the page instead of four curves.
 /// `None` for other shapes and for one circle alone (PDF writers drop a path of no extent).
-fn dots(shape: &super::scene::Shape) -> Option<Shape> {
+fn dots(shape: &crate::report::chart_kit::scene::Shape) -> Option<Shape> {
     let Paint::Fill(colour) = shape.paint else {
         return None;
     };

@@ -2,7 +2,9 @@
 //! [`Scene`] (shapes and texts as data) instead of writing SVG text, so nothing has to be
 //! parsed back. Coordinates are plotters' backend pixels.
 
-use super::scene::{Align, Baseline, Colour, Outline, Paint, Point, Scene, Text};
+use crate::report::chart_kit::scene::{
+    Align, Baseline, Colour, Outline, Paint, Point, Scene, Text,
+};
 use plotters::element::{Drawable, PointCollection};
 use plotters::prelude::DrawingBackend;
 use plotters::style::text_anchor::{HPos, VPos};

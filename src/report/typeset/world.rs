@@ -3,13 +3,13 @@
 //! [`Typesetter`] holds what every document shares — the standard library, the font book
 //! and the fonts (typst-assets' faces plus the embedded Inter) and the templates — and is
 //! built once per process; its library has the `chart-drawing` function (see
-//! [`super::drawing`]). [`DocumentWorld`] adds one document's files (its main template,
+//! [`crate::report::typeset::drawing`]). [`DocumentWorld`] adds one document's files (its main template,
 //! `/data.json`, the charts' drawings and labels), all in memory: a template can read
 //! nothing from the disk, and report data reach it only as data.
 
-use super::drawing::chart_drawing;
-use super::scene::Scene;
-use super::text_lines::{text_columns, text_lines, text_widths};
+use crate::report::chart_kit::scene::Scene;
+use crate::report::typeset::drawing::chart_drawing;
+use crate::report::typeset::text_lines::{text_columns, text_lines, text_widths};
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 use typst::diag::{FileError, FileResult};
@@ -23,10 +23,10 @@ use typst::{Library, LibraryExt, World};
 pub const SANS_FAMILY: &str = "Inter";
 
 const INTER: [&[u8]; 4] = [
-    include_bytes!("../../templates/fonts/Inter-Regular.otf"),
-    include_bytes!("../../templates/fonts/Inter-Italic.otf"),
-    include_bytes!("../../templates/fonts/Inter-SemiBold.otf"),
-    include_bytes!("../../templates/fonts/Inter-Bold.otf"),
+    include_bytes!("../../../templates/fonts/Inter-Regular.otf"),
+    include_bytes!("../../../templates/fonts/Inter-Italic.otf"),
+    include_bytes!("../../../templates/fonts/Inter-SemiBold.otf"),
+    include_bytes!("../../../templates/fonts/Inter-Bold.otf"),
 ];
 
 /// Shared, read-only typesetting state.
@@ -116,9 +116,11 @@ impl Picture {
     fn bytes(&self) -> FileResult<Bytes> {
         let scene = &self.scene;
         let made = self.bytes.get_or_init(|| match self.form {
-            Form::Labels => serde_json::to_vec(&super::labels::ChartLabels::of(scene))
-                .map(Bytes::new)
-                .map_err(|e| FileError::Other(Some(e.to_string().into()))),
+            Form::Labels => {
+                serde_json::to_vec(&crate::report::chart_kit::labels::ChartLabels::of(scene))
+                    .map(Bytes::new)
+                    .map_err(|e| FileError::Other(Some(e.to_string().into())))
+            }
             Form::Svg => Ok(Bytes::from_string(scene.svg(SANS_FAMILY))),
             Form::SvgWithoutTexts => Ok(Bytes::from_string(scene.drawing.svg())),
         });

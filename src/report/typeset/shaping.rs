@@ -8,7 +8,7 @@
 //! line with rustybuzz, the plan, features and font Typst would use, split into runs by
 //! script as Typst splits them, and refuses lines with characters the first font lacks,
 //! right-to-left or control characters, or surrounding spaces. Whatever is refused is laid
-//! out by Typst itself (see [`super::text_lines`]), so the result is always Typst's.
+//! out by Typst itself (see [`crate::report::typeset::text_lines`]), so the result is always Typst's.
 
 use std::ops::Range;
 use std::sync::Arc;

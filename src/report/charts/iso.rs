@@ -8,18 +8,18 @@
 //! shown about 16 cm wide: 900 × 420 for [`bidirectional`], 900 × 600 for [`unidirectional`]
 //! (two panels stacked), and 900 × [`ratio_chart_height`] for [`tolerance_usage`].
 
-use super::chart_kit::{
+use crate::report::chart_kit::scene::Scene;
+use crate::report::chart_kit::{
     Area, AxesSpec, Chart, Conventions, DASHED, DESC_PX, DOWN, FRAME, Failed, GRID, GUIDE, INK,
     LegendItem, MUTED, Marker, Px, SOLID, STRIPE, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H,
     build_axes, draw_frame_edges, draw_line, draw_marker, draw_text, extent, fmt_fixed_for_print,
     font, message_chart, padded_range, render, round_px, row_height, sig_decimals, text_style,
     ticks, x_tick_count,
 };
-use super::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 
-pub use super::chart_kit::Style;
+pub use crate::report::chart_kit::Style;
 
 /// One approach direction's per-target statistics. All deviation values in the axis's
 /// deviation unit (µm or arcsec).
@@ -74,8 +74,8 @@ pub struct RatioBar {
 // ---------------------------------------------------------------------------------------------
 // Look
 
-pub(super) const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
-pub(super) const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
+pub(in crate::report) const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
+pub(in crate::report) const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
 const BAR_OK: RGBColor = RGBColor(0x9D, 0xAF, 0xC8);
 const BAR_OK_EDGE: RGBColor = RGBColor(0x5F, 0x73, 0x8F);
 const BAR_OVER: RGBColor = RGBColor(0x6E, 0x14, 0x14);
@@ -84,11 +84,11 @@ const BAR_OVER: RGBColor = RGBColor(0x6E, 0x14, 0x14);
 const SPAN_PX: f64 = 14.0;
 
 /// Dash patterns in pixels: on, off, on, off …
-pub(super) const DASHED_THIN: &[f64] = &[6.0, 4.0];
+pub(in crate::report) const DASHED_THIN: &[f64] = &[6.0, 4.0];
 const DASH_DOT: &[f64] = &[9.0, 3.5, 2.0, 3.5];
 
 /// How these charts measure text (see [`Conventions`]).
-pub(super) const KIT: Conventions = Conventions {
+pub(in crate::report) const KIT: Conventions = Conventions {
     narrow_superscripts: false,
 };
 
@@ -119,7 +119,7 @@ fn x_range(positions: &[f64]) -> Option<(f64, f64)> {
 }
 
 /// The y range: every value and zero, padded by 8 %.
-pub(super) fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+pub(in crate::report) fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
     let (lo, hi) = extent(values.into_iter().chain([0.0]))?;
     let span = hi - lo;
     // Zero is inside, so only data that is all (practically) zero has no extent.
@@ -134,7 +134,7 @@ pub(super) fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64
 // ---------------------------------------------------------------------------------------------
 // Drawing primitives (in backend pixels, on the root area)
 
-pub(super) fn to_px(c: (i32, i32)) -> Px {
+pub(in crate::report) fn to_px(c: (i32, i32)) -> Px {
     (c.0 as f64, c.1 as f64)
 }
 
@@ -142,7 +142,7 @@ pub(super) fn to_px(c: (i32, i32)) -> Px {
 // Axis charts
 
 /// Builds one panel's chart with grid, ticks, frame and zero line.
-pub(super) fn build_panel<'a>(
+pub(in crate::report) fn build_panel<'a>(
     area: &'a Area,
     frame: &AxesSpec,
     y_label_w: u32,
@@ -213,7 +213,7 @@ fn draw_direction(
 }
 
 /// Pixel points of a per-target curve (non-finite values are skipped).
-pub(super) fn curve(chart: &Chart, positions: &[f64], values: &[f64]) -> Vec<Px> {
+pub(in crate::report) fn curve(chart: &Chart, positions: &[f64], values: &[f64]) -> Vec<Px> {
     positions
         .iter()
         .zip(values)
@@ -828,7 +828,7 @@ fn draw_usage_key(root: &Area, clipped: bool) -> Result<(), Failed> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::svg_probe::{
+    use crate::report::chart_kit::svg_probe::{
         assert_well_formed, attr_values, degenerate_styles, text_tag, texts,
     };
 

@@ -1,7 +1,7 @@
 //! Test helpers that read a chart's SVG back: its texts, a text's tag, an attribute's values.
 //! Shared by the chart modules' unit tests.
 
-use super::chart_kit::Style;
+use crate::report::chart_kit::Style;
 
 /// The text content of every `<text>` element.
 pub(crate) fn texts(svg: &str) -> Vec<String> {

@@ -12,19 +12,19 @@
 mod frame;
 mod time;
 
-use super::chart_kit::{
+use crate::report::chart_kit::scene::Scene;
+use crate::report::chart_kit::{
     Area, AxesSpec, Chart, Conventions, DASHED, DOWN, FRAME, Failed, GRID, GUIDE, INK, LegendItem,
     MUTED, Marker, Px, SOLID, Stroke, TICK_PX, UP, X_DESC_H, X_TICK_H, Y_DESC_W, draw_line,
     draw_marker, draw_text, extent, fmt_fixed_for_print, message_chart, padded_range, render,
     round_px, sig_decimals, text_style, ticks, x_tick_count,
 };
-use super::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 use std::collections::HashSet;
 
-pub use super::chart_kit::Style;
-pub use super::check_chart::{CheckBar, model_checks, model_checks_height};
+pub use crate::report::chart_kit::Style;
+pub use crate::report::charts::check::{CheckBar, model_checks, model_checks_height};
 use frame::{Frame, draw_clipped};
 pub use time::TimePanels;
 
@@ -275,7 +275,7 @@ fn build_axes<'a>(
     spec: &AxesSpec,
     y_label_w: u32,
 ) -> Result<(Chart<'a>, Frame), Failed> {
-    let chart = super::chart_kit::build_axes(area, spec, y_label_w)?;
+    let chart = crate::report::chart_kit::build_axes(area, spec, y_label_w)?;
     let frame = Frame::of(&chart, spec.x, spec.y);
     Ok((chart, frame))
 }
@@ -696,10 +696,10 @@ pub fn periodogram(p: &Periodogram, style: &Style) -> Scene {
 mod tests {
     use super::frame::clip_polyline;
     use super::*;
-    use crate::report::check_chart::{check_position, row_decimals};
-    use crate::report::svg_probe::{
+    use crate::report::chart_kit::svg_probe::{
         assert_well_formed, attr_values, degenerate_styles, has_text, text_tag, texts,
     };
+    use crate::report::charts::check::{check_position, row_decimals};
 
     // The charts as SVG with an element per outline, as plotters wrote them.
     fn residuals(r: &Residuals, style: &Style) -> String {

@@ -1,15 +1,15 @@
 //! The model-check chart of an axis report's diagnosis section: each statistic measured
 //! against the band simulated from the base model, on a scale of its own per row.
 
-use super::chart_kit::{
+use crate::report::chart_kit::scene::Scene;
+use crate::report::chart_kit::{
     Area, Failed, GUIDE, INK, LEGEND_PX, MUTED, Marker, STRIPE, Style, TICK_PX, draw_marker,
     draw_text, fmt_fixed_for_print, message_chart, render, round_px, row_height, sig_decimals,
     text_style,
 };
-use super::diagnosis_charts::{
+use crate::report::charts::diagnosis::{
     CHECK_BAND, KIT, MARK_INSIDE, MARK_OUTSIDE, NOTE_PX, OUTSIDE, bold_width, draw_arrow, fill_rect,
 };
-use super::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 

@@ -2,16 +2,16 @@
 //! gain, the parameters with the identified effects removed, and the data of the
 //! diagnosis charts (model checks, residuals in time and along the axis, periodogram).
 
-use super::data::num;
 use crate::diagnose::cross::OutOfTest;
 use crate::diagnose::effects::periodic::Periodic;
 use crate::diagnose::{Diagnosis, Effect, Finding, TimeEffect, Unconfirmed};
+use crate::report::data::num;
 use crate::units::{AxisKind, Direction, fmt_fixed};
 use serde::Serialize;
 
 /// The diagnosis section of an axis report, as the template reads it.
 #[derive(Serialize)]
-pub(super) struct DiagnosisSection<'a> {
+pub(in crate::report) struct DiagnosisSection<'a> {
     unit: &'static str,
     findings: Vec<FindingLine<'a>>,
     /// Findings of the tests whose term the held-out prediction does not confirm.
@@ -144,7 +144,7 @@ impl<'a> From<&'a Finding> for FindingLine<'a> {
 
 /// The diagnosis section: findings with evidence, the held-out gain, parameters with the
 /// identified effects removed (beside the measured ones), notes.
-pub(super) fn diagnosis_section<'a>(
+pub(in crate::report) fn diagnosis_section<'a>(
     d: &'a Diagnosis,
     out_of_test: &[OutOfTest],
 ) -> DiagnosisSection<'a> {
@@ -199,12 +199,12 @@ pub(super) fn diagnosis_section<'a>(
 pub fn diagnosis_charts(
     d: &Diagnosis,
 ) -> (
-    Vec<super::diagnosis_charts::CheckBar>,
-    super::diagnosis_charts::Residuals,
-    super::diagnosis_charts::Residuals,
-    super::diagnosis_charts::Periodogram,
+    Vec<crate::report::charts::diagnosis::CheckBar>,
+    crate::report::charts::diagnosis::Residuals,
+    crate::report::charts::diagnosis::Residuals,
+    crate::report::charts::diagnosis::Periodogram,
 ) {
-    use super::diagnosis_charts::{CheckBar, Periodogram, Residuals};
+    use crate::report::charts::diagnosis::{CheckBar, Periodogram, Residuals};
     let (pos_unit, dev_unit) = match d.kind {
         AxisKind::Linear => ("mm", "µm"),
         AxisKind::Rotary => ("°", "arcsec"),
@@ -293,7 +293,11 @@ pub fn diagnosis_charts(
 /// The two panels of the time chart: the run means with the kept effect in time and its
 /// band, and the residuals after the extended model; time in minutes with time stamps,
 /// else the reading's place in the test cycle (1-based), as the one-panel chart has it.
-fn time_panels(d: &Diagnosis, t: &TimeEffect, timed: bool) -> super::diagnosis_charts::TimePanels {
+fn time_panels(
+    d: &Diagnosis,
+    t: &TimeEffect,
+    timed: bool,
+) -> crate::report::charts::diagnosis::TimePanels {
     let x = |time_s: Option<f64>, order: f64| {
         if timed {
             time_s.map_or(f64::NAN, |s| s / 60.0)
@@ -311,7 +315,7 @@ fn time_panels(d: &Diagnosis, t: &TimeEffect, timed: bool) -> super::diagnosis_c
             _ => "drift",
         })
         .collect();
-    super::diagnosis_charts::TimePanels {
+    crate::report::charts::diagnosis::TimePanels {
         means: (t.run_means.iter())
             .map(|m| (x(m.time_s, m.order), m.mean, up(m.direction)))
             .collect(),

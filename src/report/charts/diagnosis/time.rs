@@ -8,11 +8,11 @@ use super::{
     BAND, FIT, Frame, KIT, MARK_DOWN, MARK_UP, Residuals, Style, build_axes, draw_clipped,
     fill_rect, fmt_short, non_empty, symmetric_range, unit_of,
 };
+use crate::report::chart_kit::scene::Scene;
 use crate::report::chart_kit::{
     Area, AxesSpec, Failed, GUIDE, INK, LegendItem, MUTED, Marker, Px, TICK_PX, UP, draw_marker,
     draw_text, padded_range, render, round_px, text_style,
 };
-use crate::report::scene::Scene;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 
@@ -275,7 +275,7 @@ fn clamp(p: Px, f: &Frame) -> (i32, i32) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::svg_probe::{assert_well_formed, texts};
+    use crate::report::chart_kit::svg_probe::{assert_well_formed, texts};
 
     fn panels() -> (Residuals, TimePanels) {
         let r = Residuals {

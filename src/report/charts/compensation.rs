@@ -2,19 +2,19 @@
 //! x̄↑ and x̄↓ as measured (thin) and with the controller's table applied (bold), the
 //! readings with the table (the scatter no table removes) and the table's points.
 //!
-//! Same conventions as [`super::charts`]: pure, never panics (a chart that cannot be
+//! Same conventions as [`crate::report::charts`]: pure, never panics (a chart that cannot be
 //! drawn comes back as a small chart that says so), sizes in pixels for a chart about
 //! 900 px wide shown about 16 cm wide (900 × 420).
 
-use super::chart_kit::{
+use crate::report::chart_kit::scene::Scene;
+use crate::report::chart_kit::{
     Area, AxesSpec, Chart, DASHED, DOWN, Failed, INK, LegendItem, Marker, SOLID, Stroke, UP,
     X_DESC_H, X_TICK_H, draw_line, draw_marker, message_chart, padded_range, render, round_px,
 };
-use super::charts::{DASHED_THIN, DOWN_LIGHT, KIT, UP_LIGHT, build_panel, curve, y_range};
-use super::scene::Scene;
+use crate::report::charts::{DASHED_THIN, DOWN_LIGHT, KIT, UP_LIGHT, build_panel, curve, y_range};
 use plotters::style::RGBColor;
 
-pub use super::chart_kit::Style;
+pub use crate::report::chart_kit::Style;
 
 /// What the compensation chart shows. Deviations in µm or arcsec, positions in mm or deg.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -50,7 +50,7 @@ const MARK_READING: (Marker, RGBColor) = (Marker::Dot(2), RGBColor(0x8A, 0x8A, 0
 const MARK_TABLE_POINT: (Marker, RGBColor) = (Marker::Diamond(5), INK);
 
 /// A line through a direction's means with a marker at each.
-pub(super) struct Means<'a> {
+pub(in crate::report) struct Means<'a> {
     pub values: &'a [f64],
     pub stroke: Stroke,
     pub mark: (Marker, RGBColor),
@@ -59,7 +59,7 @@ pub(super) struct Means<'a> {
 
 /// A chart of mean curves along the axis: what the compensation and the verification
 /// charts draw, each with its own curves.
-pub(super) struct MeansChart<'a> {
+pub(in crate::report) struct MeansChart<'a> {
     pub positions: &'a [f64],
     pub position_label: &'a str,
     pub deviation_label: &'a str,
@@ -172,7 +172,7 @@ pub fn compensation(chart: &CompensationChart, style: &Style) -> Scene {
 }
 
 /// A chart of mean curves, readings and table points.
-pub(super) fn means_chart(chart: &MeansChart, style: &Style) -> Scene {
+pub(in crate::report) fn means_chart(chart: &MeansChart, style: &Style) -> Scene {
     let xs = chart.positions.iter().chain(chart.table_points).copied();
     let Some(x) = padded_range(xs, 0.04) else {
         return message_chart(style, "No target positions to plot.");

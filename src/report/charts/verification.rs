@@ -3,10 +3,10 @@
 //! re-measurement's targets. Where the bold curves leave the dashed ones, the table did not
 //! act as predicted. Same conventions as the compensation chart (900 × 420 px).
 
-use super::chart_kit::{DASHED, DOWN, Marker, SOLID, Stroke, UP};
-use super::charts::{DASHED_THIN, DOWN_LIGHT, UP_LIGHT};
-use super::compensation_chart::{Means, MeansChart, Style, means_chart};
-use super::scene::Scene;
+use crate::report::chart_kit::scene::Scene;
+use crate::report::chart_kit::{DASHED, DOWN, Marker, SOLID, Stroke, UP};
+use crate::report::charts::compensation::{Means, MeansChart, Style, means_chart};
+use crate::report::charts::{DASHED_THIN, DOWN_LIGHT, UP_LIGHT};
 use plotters::style::RGBColor;
 
 /// What the verification chart shows. Deviations in µm or arcsec, positions in mm or deg.

@@ -1,6 +1,6 @@
 //! The templates' `text-lines` and `text-columns` functions: strings set as the lines of a
 //! paragraph in the current text and paragraph style, as Typst sets `lines.join("\n")`,
-//! shaped and placed by axcheck when they are plain (see [`super::shaping`]), else laid
+//! shaped and placed by axcheck when they are plain (see [`crate::report::typeset::shaping`]), else laid
 //! out by Typst.
 //!
 //! The reports' tables are columns of values and the charts' labels short strings; set by
@@ -10,7 +10,7 @@
 //! paragraph's leading), each line aligned as the paragraph is, in a frame as wide as the
 //! widest line (or the region, when it expands).
 
-use super::shaping::{Line, Setting};
+use crate::report::typeset::shaping::{Line, Setting};
 use typst::comemo::Tracked;
 use typst::diag::{At, HintedStrResult, SourceResult};
 use typst::engine::Engine;
@@ -408,7 +408,7 @@ fn place(setting: &Setting, lines: Vec<Line>, region: Region) -> Option<Laid> {
 
 #[cfg(test)]
 mod tests {
-    use crate::report::world::{DocumentWorld, Typesetter};
+    use crate::report::typeset::world::{DocumentWorld, Typesetter};
     use std::collections::HashMap;
     use typst::layout::{Frame, FrameItem, Point};
     use typst_layout::PagedDocument;

@@ -1,13 +1,19 @@
-//! What the report's chart modules ([`super::charts`], [`super::diagnosis_charts`] and
-//! [`super::compensation_chart`]) share: the look (tones, text sizes, dash patterns), the
+//! What the report's chart modules ([`crate::report::charts`], [`crate::report::charts::diagnosis`] and
+//! [`crate::report::charts::compensation`]) share: the look (tones, text sizes, dash patterns), the
 //! canvas, text measuring and fitting, number formatting, line, marker and legend drawing,
 //! and the axes with grid and ticks.
 //!
 //! Where the two modules measure text differently, the difference is a field of
 //! [`Conventions`] and each module passes its own, so every chart keeps its layout.
 
-use super::canvas::{Canvas, DashedLine};
-use super::scene::{Colour, Scene};
+pub(crate) mod canvas;
+pub mod labels;
+pub mod scene;
+#[cfg(test)]
+pub(crate) mod svg_probe;
+
+use crate::report::chart_kit::canvas::{Canvas, DashedLine};
+use crate::report::chart_kit::scene::{Colour, Scene};
 use crate::units::fmt_fixed;
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
@@ -644,7 +650,7 @@ pub(crate) fn draw_frame_edges(area: &Area, chart: &Chart) -> Result<(), Failed>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::scene::{Outline, Paint};
+    use crate::report::chart_kit::scene::{Outline, Paint};
 
     fn style() -> Style {
         Style {

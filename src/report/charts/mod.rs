@@ -1,0 +1,13 @@
+//! The charts of the reports, one file each: ISO 230-2's figures and the tolerance usage
+//! ([`iso`]), the model checks and decision zones ([`check`]), the diagnosis's residuals
+//! and periodogram ([`diagnosis`]), a compensation and its verification, an axis's history
+//! ([`trend`]). Each draws a [`crate::report::chart_kit::scene::Scene`] with the chart kit.
+
+pub mod check;
+pub mod compensation;
+pub mod diagnosis;
+pub mod iso;
+pub mod trend;
+pub mod verification;
+
+pub use iso::*;
