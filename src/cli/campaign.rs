@@ -118,8 +118,7 @@ pub fn evaluate_with(
     result
 }
 
-/// Lines of the tests that need attention printed at most; the rest are counted.
-pub const MAX_PROBLEM_LINES: usize = 20;
+use super::text::MAX_PROBLEM_LINES;
 
 /// One line per test that did not pass, failures first, then noncompliant plans, then
 /// errors (each in campaign order), at most [`MAX_PROBLEM_LINES`]; then how many more

@@ -2,7 +2,7 @@
 //! those refused, those written over a state that is unknown or contradicted, and each
 //! verification's verdict.
 
-use super::campaign::MAX_PROBLEM_LINES;
+use super::text::MAX_PROBLEM_LINES;
 use axcheck::batch::{AxisTest, CampaignResult};
 use axcheck::compensate::Mode;
 

@@ -25,3 +25,6 @@ mod tests {
         assert_eq!(super::right("B̄", 3), "  B̄");
     }
 }
+
+/// Lines of the tests that need attention printed at most; the rest are counted.
+pub const MAX_PROBLEM_LINES: usize = 20;

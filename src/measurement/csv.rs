@@ -11,11 +11,10 @@
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
 
 use super::error::{ReadError, ReadErrorKind};
-use super::table::{Place, Row, TableReader, Value, read_text};
+use super::table::{Place, Row, TableReader, Value, mixed_units, read_text};
 use super::{AxisData, MAX_READINGS, MAX_TEMPERATURES, RawReading};
 use crate::suggest::did_you_mean;
 use crate::units::{AxisKind, Direction, fmt_fixed};
-use std::borrow::Cow;
 use std::io::BufRead;
 
 /// What a column holds.
@@ -125,84 +124,6 @@ const UNITLESS: &[&str] = &[
     "time",
     "t",
 ];
-
-/// Splits one line at `sep`, honouring double quotes; returns each field with its
-/// 1-based character column.
-pub(crate) fn split_fields(line: &str, sep: char) -> Vec<(usize, String)> {
-    let mut fields = Vec::new();
-    fields_of(line, sep, |column, text| {
-        fields.push((column, text.into_owned()))
-    });
-    fields
-}
-
-/// Gives `field` each field of `line` split at `sep` with its 1-based character column:
-/// a slice of the line, copied only when it has double quotes to undo.
-pub(crate) fn fields_of<'a>(line: &'a str, sep: char, mut field: impl FnMut(usize, Cow<'a, str>)) {
-    let bytes = line.as_bytes();
-    // Quotes to undo, or a separator that is not one byte: the careful path.
-    if bytes.contains(&b'"') || !sep.is_ascii() {
-        return quoted_fields(line, sep, field);
-    }
-    let sep = sep as u8;
-    let ascii = line.is_ascii();
-    let column = |start: usize| match ascii {
-        true => start + 1,
-        false => line[..start].chars().count() + 1,
-    };
-    let mut start = 0;
-    // An ASCII separator never falls inside a multi-byte character: every cut is a
-    // character boundary. (A byte loop: the fields are a few bytes long, too short for
-    // a vectorised search to pay for its set-up.)
-    for (end, &b) in bytes.iter().enumerate() {
-        if b == sep {
-            field(column(start), Cow::Borrowed(&line[start..end]));
-            start = end + 1;
-        }
-    }
-    field(column(start), Cow::Borrowed(&line[start..]));
-}
-
-/// [`fields_of`] for a line with double quotes: `"a,b"` is one field, `""` a quote.
-fn quoted_fields<'a>(line: &'a str, sep: char, mut out: impl FnMut(usize, Cow<'a, str>)) {
-    let mut field = String::new();
-    let mut start = 1;
-    let mut in_quotes = false;
-    let mut chars = line.chars().enumerate().peekable();
-    while let Some((k, c)) = chars.next() {
-        if in_quotes {
-            if c == '"' {
-                if chars.peek().map(|&(_, c)| c) == Some('"') {
-                    field.push('"');
-                    chars.next();
-                } else {
-                    in_quotes = false;
-                }
-            } else {
-                field.push(c);
-            }
-        } else if c == '"' {
-            in_quotes = true;
-        } else if c == sep {
-            out(start, Cow::Owned(std::mem::take(&mut field)));
-            start = k + 2;
-        } else {
-            field.push(c);
-        }
-    }
-    out(start, Cow::Owned(field));
-}
-
-/// The separator of a header line: `;`, else tab, else `,`.
-pub(crate) fn detect_separator(header: &str) -> char {
-    if header.contains(';') {
-        ';'
-    } else if header.contains('\t') {
-        '\t'
-    } else {
-        ','
-    }
-}
 
 /// Parses the long CSV layout.
 pub fn parse<R: BufRead>(reader: R, file: &str) -> Result<AxisData, ReadError> {
@@ -443,25 +364,6 @@ fn classify_header(header: &Row, place: &Place) -> Result<Header, ReadError> {
         names,
         temps,
     })
-}
-
-/// A target column of one kind with a value column of the other.
-pub(crate) fn mixed_units(
-    target: &str,
-    kind: AxisKind,
-    value: &str,
-    value_kind: AxisKind,
-) -> ReadErrorKind {
-    let describe = |k: AxisKind| match k {
-        AxisKind::Linear => "a length".to_string(),
-        AxisKind::Rotary => "an angle".to_string(),
-    };
-    ReadErrorKind::MixedUnits {
-        target: target.to_string(),
-        target_kind: describe(kind),
-        deviation: value.to_string(),
-        deviation_kind: describe(value_kind),
-    }
 }
 
 /// A direction that is none of the spellings [`Direction::parse`] knows.

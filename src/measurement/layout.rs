@@ -16,7 +16,7 @@
 
 use super::AxisData;
 use super::error::ReadErrorKind;
-use super::table::{TableKind, table_kind};
+use super::table::TableKind;
 use serde::Serialize;
 
 /// The layouts axcheck reads.
@@ -226,16 +226,57 @@ fn first_content_line(head: &[u8]) -> Option<(usize, &[u8])> {
 
 /// A CSV header's column names: split at its separator, trimmed, lower case.
 fn header_names(line: &str) -> Vec<String> {
-    let sep = super::csv::detect_separator(line);
-    super::csv::split_fields(line, sep)
+    let sep = super::fields::detect_separator(line);
+    super::fields::split_fields(line, sep)
         .into_iter()
         .map(|(_, name)| name.trim().to_ascii_lowercase())
         .collect()
 }
 
+/// The table a header announces: wide when a column is named `up_…`/`down_…`, or when it
+/// starts with the target and has no column of the long layout; long when a column is
+/// (or nearly is) one of the long layout's; else none.
+pub(crate) fn table_kind(names: &[String]) -> Option<TableKind> {
+    let first_is_target = names
+        .first()
+        .is_some_and(|n| n.starts_with("target_") || n == "target");
+    let has_long_column = names
+        .iter()
+        .any(|n| n != "target" && !n.starts_with("target_") && super::csv::is_long_column(n));
+    if names.iter().any(|n| super::wide::is_run_column(n)) || (first_is_target && !has_long_column)
+    {
+        Some(TableKind::Wide)
+    } else if names.iter().any(|n| super::csv::is_long_column(n)) {
+        Some(TableKind::Long)
+    } else {
+        None
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn names(list: &[&str]) -> Vec<String> {
+        list.iter().map(|s| s.to_string()).collect()
+    }
+
+    #[test]
+    fn header_kinds() {
+        let long = names(&["target_mm", "direction", "run", "deviation_um"]);
+        assert_eq!(table_kind(&long), Some(TableKind::Long));
+        let wide = names(&["target_mm", "up_1_um", "down_1_um"]);
+        assert_eq!(table_kind(&wide), Some(TableKind::Wide));
+        // A typo in a run column still reads as wide, so its reader can name the typo.
+        let typo = names(&["target_deg", "up1_arcsec", "down_1_arcsec"]);
+        assert_eq!(table_kind(&typo), Some(TableKind::Wide));
+        let only_target = names(&["target_mm", "up1"]);
+        assert_eq!(table_kind(&only_target), Some(TableKind::Wide));
+        let long_typo = names(&["target_mm", "direction", "run", "deviaton_um"]);
+        assert_eq!(table_kind(&long_typo), Some(TableKind::Long));
+        assert_eq!(table_kind(&names(&["name", "age"])), None);
+        assert_eq!(table_kind(&[]), None);
+    }
 
     #[test]
     fn recognises_by_content() {

@@ -9,6 +9,7 @@ pub mod csv;
 pub mod ecmc_app;
 pub mod ecmc_md;
 pub mod error;
+pub(crate) mod fields;
 pub mod info;
 pub mod keyvalue;
 pub mod layout;

@@ -6,6 +6,7 @@
 
 use super::error::{Location, ReadError, ReadErrorKind};
 use super::{AxisData, Lines, NumberError, parse_number};
+use crate::units::AxisKind;
 use std::borrow::Cow;
 use std::io::BufRead;
 
@@ -191,26 +192,6 @@ impl TableKind {
     }
 }
 
-/// The table a header announces: wide when a column is named `up_…`/`down_…`, or when it
-/// starts with the target and has no column of the long layout; long when a column is
-/// (or nearly is) one of the long layout's; else none.
-pub(crate) fn table_kind(names: &[String]) -> Option<TableKind> {
-    let first_is_target = names
-        .first()
-        .is_some_and(|n| n.starts_with("target_") || n == "target");
-    let has_long_column = names
-        .iter()
-        .any(|n| n != "target" && !n.starts_with("target_") && super::csv::is_long_column(n));
-    if names.iter().any(|n| super::wide::is_run_column(n)) || (first_is_target && !has_long_column)
-    {
-        Some(TableKind::Wide)
-    } else if names.iter().any(|n| super::csv::is_long_column(n)) {
-        Some(TableKind::Long)
-    } else {
-        None
-    }
-}
-
 /// Reads a CSV table of layout `T`: the header is the first line that is neither blank nor
 /// a `#` comment; its separator (`,`, `;` or tab) holds for every line, and with `;` or
 /// tab a decimal comma is read. Returns the test and what was assumed or skipped.
@@ -228,7 +209,7 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
             Some((number, text)) => break (number, text.to_string()),
         }
     };
-    let sep = super::csv::detect_separator(&header);
+    let sep = super::fields::detect_separator(&header);
     let place = Place::text(file, sep != ',');
     let header_row = text_row(&header, sep, header_line, Vec::new());
     let mut table = T::from_header(&header_row, &place)?;
@@ -282,7 +263,7 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
 
 /// A CSV line as a row of text fields, in `fields` (empty, its room reused).
 fn text_row<'a>(text: &'a str, sep: char, number: usize, mut fields: Vec<Field<'a>>) -> Row<'a> {
-    super::csv::fields_of(text, sep, |column, value| {
+    super::fields::fields_of(text, sep, |column, value| {
         fields.push(Field {
             column,
             value: Value::Text(value),
@@ -301,29 +282,31 @@ fn recycle<'b>(mut fields: Vec<Field<'_>>) -> Vec<Field<'b>> {
         .collect()
 }
 
+/// A target column of one kind with a value column of the other.
+pub(crate) fn mixed_units(
+    target: &str,
+    kind: AxisKind,
+    value: &str,
+    value_kind: AxisKind,
+) -> ReadErrorKind {
+    let describe = |k: AxisKind| match k {
+        AxisKind::Linear => "a length".to_string(),
+        AxisKind::Rotary => "an angle".to_string(),
+    };
+    ReadErrorKind::MixedUnits {
+        target: target.to_string(),
+        target_kind: describe(kind),
+        deviation: value.to_string(),
+        deviation_kind: describe(value_kind),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn names(list: &[&str]) -> Vec<String> {
         list.iter().map(|s| s.to_string()).collect()
-    }
-
-    #[test]
-    fn header_kinds() {
-        let long = names(&["target_mm", "direction", "run", "deviation_um"]);
-        assert_eq!(table_kind(&long), Some(TableKind::Long));
-        let wide = names(&["target_mm", "up_1_um", "down_1_um"]);
-        assert_eq!(table_kind(&wide), Some(TableKind::Wide));
-        // A typo in a run column still reads as wide, so its reader can name the typo.
-        let typo = names(&["target_deg", "up1_arcsec", "down_1_arcsec"]);
-        assert_eq!(table_kind(&typo), Some(TableKind::Wide));
-        let only_target = names(&["target_mm", "up1"]);
-        assert_eq!(table_kind(&only_target), Some(TableKind::Wide));
-        let long_typo = names(&["target_mm", "direction", "run", "deviaton_um"]);
-        assert_eq!(table_kind(&long_typo), Some(TableKind::Long));
-        assert_eq!(table_kind(&names(&["name", "age"])), None);
-        assert_eq!(table_kind(&[]), None);
     }
 
     #[test]

@@ -18,8 +18,9 @@
 
 use super::csv::LongTable;
 use super::error::{ReadError, ReadErrorKind};
+use super::layout::table_kind;
 use super::layout::{Layout, OLE_MAGIC, ReadTest, Recognised};
-use super::table::{Field, Place, Row, TableKind, TableReader, Value, table_kind};
+use super::table::{Field, Place, Row, TableKind, TableReader, Value};
 use super::wide::WideTable;
 use super::{AxisData, Location, MAX_READINGS};
 use calamine::{DataRef, Reader as _, Xlsx};

@@ -9,7 +9,7 @@
 use super::{
     Point, Source, Transform, cycle, direction_at, error, notes, number, readings, timestamp,
 };
-use crate::measurement::csv::split_fields;
+use crate::measurement::fields::split_fields;
 use crate::measurement::{AxisData, Lines, ReadError};
 use crate::units::AxisKind;
 use std::io::BufRead;
