@@ -721,6 +721,9 @@ fn plain_decimal(t: &str) -> Option<f64> {
     let (mut mantissa, mut count, mut decimals, mut point) = (0u64, 0usize, 0usize, false);
     for &b in digits {
         match b {
+            // Past 15 digits the fast path cannot be exact (and the mantissa would
+            // overflow at 20): `str::parse` reads it.
+            b'0'..=b'9' if count == 15 => return None,
             b'0'..=b'9' => {
                 mantissa = mantissa * 10 + u64::from(b - b'0');
                 count += 1;
@@ -730,7 +733,7 @@ fn plain_decimal(t: &str) -> Option<f64> {
             _ => return None,
         }
     }
-    if count == 0 || count > 15 {
+    if count == 0 {
         return None;
     }
     let value = mantissa as f64 / POW10[decimals];
@@ -785,6 +788,9 @@ mod tests {
             );
         }
         assert_eq!(plain_decimal("1234567890123456"), None);
+        // Found by fuzzing: 22 digits overflowed the mantissa before the count was checked.
+        assert_eq!(plain_decimal("8184467440737095516168"), None);
+        assert_eq!(parse_number("8184467440737095516168", false), Ok(8.184467440737095e21));
         assert_eq!(plain_decimal("-0"), Some(-0.0));
     }
 
