@@ -4,7 +4,7 @@
 //! corrections interpolated between the targets; a modulo table covers one revolution.
 
 use super::Settings;
-use super::controllers::{Format, Refused, Spacing};
+use super::controllers::controller::{Format, Refused, Spacing};
 use crate::measurement::AxisData;
 use crate::units::{AxisKind, fmt_fixed};
 

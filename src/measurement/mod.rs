@@ -790,7 +790,10 @@ mod tests {
         assert_eq!(plain_decimal("1234567890123456"), None);
         // Found by fuzzing: 22 digits overflowed the mantissa before the count was checked.
         assert_eq!(plain_decimal("8184467440737095516168"), None);
-        assert_eq!(parse_number("8184467440737095516168", false), Ok(8.184467440737095e21));
+        assert_eq!(
+            parse_number("8184467440737095516168", false),
+            Ok(8.184467440737095e21)
+        );
         assert_eq!(plain_decimal("-0"), Some(-0.0));
     }
 

@@ -8,9 +8,9 @@
 //! be the axis's; `position_mm,correction_um` (one column) is read as the same correction in
 //! both directions; the positions must increase.
 
+use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use super::reading::{self, Points, numbered};
-use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
-use crate::compensate::Table;
+use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
 pub struct Csv;

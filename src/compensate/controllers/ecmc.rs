@@ -52,9 +52,9 @@
 //! and commas are refused too, as that loader refuses them. A rotary table over exactly 0…360°
 //! is read as one revolution (the range is set by its own command).
 
+use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use super::reading::{self, Points};
-use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
-use crate::compensate::Table;
+use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
 /// An ecmc lookup table for one family of versions: the sign the encoder applies it with.

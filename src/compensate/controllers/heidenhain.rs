@@ -64,8 +64,8 @@
 //! (a decimal comma too: it is not known how the control reads it), positions that do not
 //! increase, more than 256 rows.
 
+use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use super::reading::{self, Points, numbered};
-use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
 use crate::compensate::grid::REVOLUTION_DEG;
 use crate::compensate::{Place, Table};
 use crate::units::{AxisKind, fmt_fixed};

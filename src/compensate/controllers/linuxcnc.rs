@@ -22,9 +22,11 @@
 //! after the line where the loader stops (it would not load them), positions that do not
 //! increase, more than 256 points.
 
+use super::controller::{
+    Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable,
+};
 use super::reading::{self, Points, numbered};
-use super::{Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
-use crate::compensate::Table;
+use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
 pub struct LinuxCnc;

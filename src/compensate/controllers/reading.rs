@@ -2,7 +2,7 @@
 //! line and field named when they are not numbers), the points in order, and the table
 //! put together in the correction convention of [`Table`].
 
-use super::Unreadable;
+use super::controller::Unreadable;
 use crate::compensate::{Interpolation, Place, Table};
 use crate::units::AxisKind;
 

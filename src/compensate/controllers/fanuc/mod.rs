@@ -59,34 +59,19 @@
 //! backlash with bidirectional compensation, how the ↓ table's increments are counted (here
 //! like the ↑ one, from the − end towards +).
 
+mod limits;
 mod read;
 
-use super::{Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use super::controller::{
+    Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable,
+};
 use crate::compensate::table::wrap;
-use crate::compensate::{Interpolation, Table};
+use crate::compensate::table::{Interpolation, Table};
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
+use limits::*;
 use std::fmt::Write;
 
 pub struct Fanuc;
-
-/// Pitch error point numbers 0…1023, shared by all axes of the control [recalled].
-const PITCH_NUMBERS: usize = 1024;
-/// Points per direction: two tables share the numbers.
-const MAX_POINTS: usize = PITCH_NUMBERS / 2;
-/// One value per point: FOCAS `IODBPI.data` is a signed byte.
-const MIN_VALUE: i64 = -128;
-const MAX_VALUE: i64 = 127;
-/// Magnification 3623: 1…100 (0 acts as 1) [recalled].
-const MAX_MAGNIFICATION: i64 = 100;
-/// 3627 is a word.
-const MAX_WORD: i64 = i16::MAX as i64;
-/// The detection unit assumed: 1 µm, 0.001° = 3.6″.
-const DETECTION_UM: f64 = 1.0;
-const DETECTION_ARCSEC: f64 = 3.6;
-/// Parameters 3624/3625 in 0.001 mm or 0.001°.
-const PER_POSITION_UNIT: f64 = 1000.0;
-/// Punch format: N = 10000 + point number [recalled].
-const PUNCH_BASE: usize = 10000;
 
 impl Controller for Fanuc {
     fn name(&self) -> &'static str {

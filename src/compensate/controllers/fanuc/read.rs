@@ -7,9 +7,11 @@
 //! to 0 and number 0 repeat the last one. A set-up sheet whose numbers were moved (an
 //! offset added to 3620, 3621, 3622, 3626 and every number) is read at its numbers.
 
+use super::super::controller::{Reading, Unreadable};
 use super::super::reading::{self, Points, numbered};
-use super::super::{Reading, Unreadable};
-use super::{DETECTION_ARCSEC, DETECTION_UM, MAX_VALUE, MIN_VALUE, PER_POSITION_UNIT, PUNCH_BASE};
+use super::limits::{
+    DETECTION_ARCSEC, DETECTION_UM, MAX_VALUE, MIN_VALUE, PER_POSITION_UNIT, PUNCH_BASE,
+};
 use crate::compensate::{Interpolation, Place, Table};
 use crate::units::AxisKind;
 use std::collections::BTreeMap;

@@ -47,8 +47,8 @@
 
 mod read;
 
-use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
-use crate::compensate::Table;
+use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 
 pub struct Siemens840d;

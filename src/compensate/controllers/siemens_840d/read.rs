@@ -6,8 +6,8 @@
 //! = 0 … (MAX − MIN)/STEP; values beyond MAX are not used by the NC (an archive holds all
 //! of MD38000's points) and are not read.
 
+use super::super::controller::{Reading, Unreadable};
 use super::super::reading::{self, Points, numbered};
-use super::super::{Reading, Unreadable};
 use crate::compensate::grid::REVOLUTION_DEG;
 use crate::compensate::{Interpolation, Place, Table};
 use std::collections::BTreeMap;

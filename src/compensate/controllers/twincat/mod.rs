@@ -49,30 +49,15 @@
 //! Unconfirmed: the behaviour outside the table, whether `End` is required, whether 1500
 //! entries are allowed or 1499, whether the list loads without `kopf.log_achs_name`.
 
+mod limits;
 mod read;
 
-use super::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
-use crate::compensate::Table;
+use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
+use limits::*;
 
 pub struct TwinCat;
-
-/// Entries per table before P-COMP-00059 (and its default since).
-const MAX_POINTS: usize = 1500;
-
-/// Position steps per mm or per degree: 0.1 µm and 0.0001°.
-const STEPS_PER_POSITION_UNIT: f64 = 1e4;
-
-/// Slack on a whole step (steps): float noise, far below the 0.1 µm step.
-const STEP_SLACK: f64 = 1e-3;
-
-/// One value step in the deviation unit: 0.1 µm, or 0.0001° = 0.36″.
-fn value_step(kind: AxisKind) -> f64 {
-    match kind {
-        AxisKind::Linear => 0.1,
-        AxisKind::Rotary => 0.36,
-    }
-}
 
 /// The list as the CNC reads it: integers in 0.1 µm or 0.0001°.
 #[derive(Debug, PartialEq)]

@@ -8,9 +8,9 @@
 //! both directions [unconfirmed: no Beckhoff page says which key it uses]; a `.neg` that
 //! differs is refused rather than guessed. Other `kopf.*` and `kw.ssfk.*` keys are not used.
 
+use super::super::controller::{Reading, Unreadable};
 use super::super::reading::{self, Points, numbered};
-use super::super::{Reading, Unreadable};
-use super::{MAX_POINTS, STEPS_PER_POSITION_UNIT, value_step};
+use super::limits::{MAX_POINTS, STEPS_PER_POSITION_UNIT, value_step};
 use crate::compensate::{Interpolation, Place, Table};
 use crate::units::AxisKind;
 use std::collections::BTreeMap;
