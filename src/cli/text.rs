@@ -17,6 +17,9 @@ pub fn left(s: &str, w: usize) -> String {
     format!("{s}{}", " ".repeat(w.saturating_sub(width(s))))
 }
 
+/// Lines of the tests that need attention printed at most; the rest are counted.
+pub const MAX_PROBLEM_LINES: usize = 20;
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -25,6 +28,3 @@ mod tests {
         assert_eq!(super::right("B̄", 3), "  B̄");
     }
 }
-
-/// Lines of the tests that need attention printed at most; the rest are counted.
-pub const MAX_PROBLEM_LINES: usize = 20;

@@ -305,10 +305,6 @@ pub(crate) fn mixed_units(
 mod tests {
     use super::*;
 
-    fn names(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
-
     #[test]
     fn numbers_from_text_and_cells() {
         let place = Place::sheet("b.xlsx", "S");
