@@ -432,6 +432,8 @@ fn relative_name(base: &Path, path: &Path) -> String {
         .join("/")
 }
 
+/// One test of an axis, stage by stage: read, the file's own conditions, NDE, the plan
+/// rules, the evaluation, U, the verdict, the diagnosis and the compensation.
 /// `campaign_rule`: the campaign's decision rule; the axis's own and then its spec's come
 /// first. `files`: where the data and table files are opened.
 fn run_test(
@@ -443,26 +445,10 @@ fn run_test(
     files: &Files,
     options: Options,
 ) -> Tested {
-    let (data, recognised) =
-        match measurement::read_file_within(path, &axis.data.read_options(), files.real()) {
-            Ok(read) => (read.data, read.recognised),
-            Err(e) => return (slot.error(e.to_string()), None),
-        };
-    if data.kind != axis.raw.kind {
-        let message = format!(
-            "{}: the file holds a {} axis (target_{}) but the campaign declares axis `{}` {}",
-            path.display(),
-            data.kind,
-            data.kind.position_unit(),
-            slot.axis,
-            axis.raw.kind
-        );
-        let test = AxisTest {
-            recognised: Some(recognised),
-            ..slot.error(message)
-        };
-        return (test, None);
-    }
+    let (data, recognised) = match read_stage(&slot, axis, path, files) {
+        Ok(read) => read,
+        Err(test) => return (*test, None),
+    };
     // The tool's own results are of the readings as the file holds them (before NDE).
     let other_tool = (recognised.reported.as_ref()).map(|r| crate::crosscheck::compare(r, &data));
     // The file's own conditions (a Renishaw ENVIRONMENT) fill what the campaign leaves out.
@@ -476,47 +462,21 @@ fn run_test(
     let mut context = plan_context(axis);
     context.planned = slot.planned.clone();
     let findings = rules::check(&context, &data);
-    let evaluation = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
-        Gost27843 {
-            s_method: SMethod::Ranges,
-        }
-        .evaluate(&data)
-    } else {
-        crate::evaluate::evaluate(&data, axis.standard)
-    };
-    let rule = (axis.raw.decision_rule)
-        .or(spec.and_then(|s| s.decision_rule))
-        .or(campaign_rule)
-        .unwrap_or_default();
+    let evaluation = evaluate_stage(axis, &data);
+    let rule = decision_rule(axis, spec, campaign_rule);
     // The gate computes what it prints: U only where the decision rule judges with it.
     let uncertainty = (!options.drop_data || rule == DecisionRule::Iso14253_1).then(|| {
         let setup = uncertainty_setup(axis, &data, nde.as_ref());
         crate::uncertainty::evaluate(&setup, &evaluation)
     });
-    let (first, last) = data.measurement_travel();
-    let (verdict, error, judgement) =
-        match Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
-            Err(e) => (Verdict::Error, Some(e), None),
-            Ok(limits) => {
-                let decision = Decision {
-                    rule,
-                    expanded: uncertainty.as_ref().map(|u| &u.expanded),
-                };
-                let judgement = judge::judge(&evaluation, &limits, &decision);
-                let plan_broken = findings.iter().any(|f| f.severity == Severity::Error);
-                (judgement.verdict(plan_broken), None, Some(judgement))
-            }
-        };
-    let diagnosis_of = || {
-        crate::diagnose::diagnose(
-            &data,
-            &crate::diagnose::Options {
-                pitch: axis.raw.pitch,
-                standard: axis.standard,
-                ..crate::diagnose::Options::default()
-            },
-        )
+    let judged = Judged {
+        evaluation: &evaluation,
+        findings: &findings,
+        uncertainty: uncertainty.as_ref(),
+        rule,
     };
+    let (verdict, error, judgement) = judge_stage(axis, spec, &data, &judged);
+    let diagnosis_of = || diagnose_stage(axis, &data);
     let diagnosis = options.diagnose.then(diagnosis_of);
     let controller = (slot.machine.controller.as_deref()).filter(|_| options.compensate);
     let (compensation, verify_case) = compensation::for_test(
@@ -546,6 +506,103 @@ fn run_test(
         ..slot.outcome(verdict, error)
     };
     (test, verify_case)
+}
+
+/// The file read, and of the axis kind the campaign declares; else the test's error.
+fn read_stage(
+    slot: &Slot,
+    axis: &AxisSpec,
+    path: &Path,
+    files: &Files,
+) -> Result<(AxisData, Recognised), Box<AxisTest>> {
+    let (data, recognised) =
+        match measurement::read_file_within(path, &axis.data.read_options(), files.real()) {
+            Ok(read) => (read.data, read.recognised),
+            Err(e) => return Err(Box::new(slot.clone().error(e.to_string()))),
+        };
+    if data.kind != axis.raw.kind {
+        let message = format!(
+            "{}: the file holds a {} axis (target_{}) but the campaign declares axis `{}` {}",
+            path.display(),
+            data.kind,
+            data.kind.position_unit(),
+            slot.axis,
+            axis.raw.kind
+        );
+        let test = AxisTest {
+            recognised: Some(recognised),
+            ..slot.clone().error(message)
+        };
+        return Err(Box::new(test));
+    }
+    Ok((data, recognised))
+}
+
+/// The parameters by the axis's standard (GOST 27843 with S from ranges when asked).
+fn evaluate_stage(axis: &AxisSpec, data: &AxisData) -> Evaluation {
+    if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
+        Gost27843 {
+            s_method: SMethod::Ranges,
+        }
+        .evaluate(data)
+    } else {
+        crate::evaluate::evaluate(data, axis.standard)
+    }
+}
+
+/// The decision rule: the axis's, else its spec's, else the campaign's, else simple.
+fn decision_rule(
+    axis: &AxisSpec,
+    spec: Option<&Spec>,
+    campaign_rule: Option<DecisionRule>,
+) -> DecisionRule {
+    (axis.raw.decision_rule)
+        .or(spec.and_then(|s| s.decision_rule))
+        .or(campaign_rule)
+        .unwrap_or_default()
+}
+
+/// What a test is judged on.
+struct Judged<'a> {
+    evaluation: &'a Evaluation,
+    findings: &'a [Finding],
+    uncertainty: Option<&'a Uncertainty>,
+    rule: DecisionRule,
+}
+
+/// The verdict, or the error of limits that cannot apply, and the judgement.
+fn judge_stage(
+    axis: &AxisSpec,
+    spec: Option<&Spec>,
+    data: &AxisData,
+    judged: &Judged,
+) -> (Verdict, Option<String>, Option<Judgement>) {
+    let (first, last) = data.measurement_travel();
+    match Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
+        Err(e) => (Verdict::Error, Some(e), None),
+        Ok(limits) => {
+            let decision = Decision {
+                rule: judged.rule,
+                expanded: judged.uncertainty.map(|u| &u.expanded),
+            };
+            let judgement = judge::judge(judged.evaluation, &limits, &decision);
+            let plan_broken = judged
+                .findings
+                .iter()
+                .any(|f| f.severity == Severity::Error);
+            (judgement.verdict(plan_broken), None, Some(judgement))
+        }
+    }
+}
+
+/// The model check and diagnosis of the test.
+fn diagnose_stage(axis: &AxisSpec, data: &AxisData) -> crate::diagnose::Diagnosis {
+    let options = crate::diagnose::Options {
+        pitch: axis.raw.pitch,
+        standard: axis.standard,
+        ..crate::diagnose::Options::default()
+    };
+    crate::diagnose::diagnose(data, &options)
 }
 
 /// What the uncertainty budget knows of a test from the campaign (clause 7.1 block): the

@@ -88,8 +88,7 @@ pub(crate) fn read<R: BufRead>(
     let header = loop {
         match lines.next_line()? {
             Some((n, l)) if !l.trim().is_empty() => {
-                let names = split_fields(l, ',')
-                    .into_iter()
+                let names = (split_fields(l, ',').into_iter())
                     .map(|(_, f)| f.trim().to_ascii_lowercase())
                     .collect();
                 break Header { names, line: n };
@@ -98,22 +97,9 @@ pub(crate) fn read<R: BufRead>(
             None => return Err(error(file, 0, "the file is empty".into())),
         }
     };
-    let cols = columns(&header, source, file)?;
-    let at = |name: &str| header.find(name);
-    let (cycle_col, dir, target) = (
-        header.need("cycle", file)?,
-        header.need("direction", file)?,
-        header.need("target", file)?,
-    );
-    let (gain, offset, pv, time) = (
-        at("reference_gain"),
-        at("reference_offset"),
-        at("selected_reference_pv"),
-        at("timestamp"),
-    );
+    let layout = RowLayout::of(&header, source, file)?;
     let mut points = Vec::new();
-    let mut transform = Transform::NONE;
-    let mut selected_pv = String::new();
+    let (mut transform, mut pv_name) = (Transform::NONE, String::new());
     while let Some((line, text)) = lines.next_line()? {
         if text.trim().is_empty() {
             continue;
@@ -122,64 +108,22 @@ pub(crate) fn read<R: BufRead>(
             .into_iter()
             .map(|(_, f)| f)
             .collect();
-        if cells.len() != header.names.len() {
-            return Err(error(
-                file,
-                line,
-                format!(
-                    "expected {} fields as in the header, found {}",
-                    header.names.len(),
-                    cells.len()
-                ),
-            ));
-        }
-        let cell = |k: usize| cells[k].trim();
-        let number = |k: usize| number(cell(k), &header.names[k], file, line);
-        let optional = |k: Option<usize>| -> Result<Option<f64>, ReadError> {
-            match k {
-                Some(k) if !cell(k).is_empty() => number(k).map(Some),
-                _ => Ok(None),
-            }
-        };
-        if let Some(k) = cols.pv.filter(|&k| cell(k).is_empty()) {
-            return Err(error(
-                file,
-                line,
-                format!(
-                    "`{}` is empty: {} was not recorded at this point",
-                    header.names[k],
-                    source.describe()
-                ),
-            ));
-        }
-        if cols.reference {
-            transform = Transform {
-                gain: optional(gain)?.unwrap_or(1.0),
-                offset: optional(offset)?.unwrap_or(0.0),
-            };
-        }
-        if selected_pv.is_empty() {
-            let named = cols.pv.or(pv);
-            selected_pv = named.map(|k| cell(k).to_string()).unwrap_or_default();
-        }
-        let cycle_n = cycle(cell(cycle_col), "cycle", file, line)?;
-        let direction = direction_at(cell(dir), "direction", file, line)?;
-        let target_value = number(target)?;
-        let error_value = match (transform.is_none(), cols.mean) {
-            (false, Some(m)) => transform.error(number(m)?, target_value),
-            _ => number(cols.error)?,
-        };
-        points.push(Point {
-            cycle: cycle_n,
-            direction,
-            target: target_value,
-            error: error_value,
-            std: optional(cols.std).ok().flatten(),
-            time: time.and_then(|k| timestamp(cell(k))),
+        let row = Row {
+            cells: &cells,
             line,
-        });
+            file,
+            header: &header,
+        };
+        row.check_width()?;
+        if let Some(t) = layout.transform(&row)? {
+            transform = t;
+        }
+        if pv_name.is_empty() {
+            pv_name = layout.pv_name(&row);
+        }
+        points.push(layout.point(&row, transform, source)?);
     }
-    let name = match (source, selected_pv.as_str()) {
+    let name = match (source, pv_name.as_str()) {
         (Source::Selected, "") => "the reference the app evaluated".to_string(),
         (Source::Selected, pv) => format!("reference `{pv}`, the one the app evaluated"),
         (Source::Reference(n), pv) if !pv.is_empty() => format!("reference {n} (`{pv}`)"),
@@ -187,8 +131,114 @@ pub(crate) fn read<R: BufRead>(
     };
     let notes = notes(&name, transform, &points);
     let raw = readings(&points, file)?;
-    Ok((
-        AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), file)?,
-        notes,
-    ))
+    let data = AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), file)?;
+    Ok((data, notes))
+}
+
+/// One row of the file, for its fields and errors.
+struct Row<'a> {
+    cells: &'a [String],
+    line: usize,
+    file: &'a str,
+    header: &'a Header,
+}
+
+impl Row<'_> {
+    fn check_width(&self) -> Result<(), ReadError> {
+        let (want, found) = (self.header.names.len(), self.cells.len());
+        match want == found {
+            true => Ok(()),
+            false => Err(error(
+                self.file,
+                self.line,
+                format!("expected {want} fields as in the header, found {found}"),
+            )),
+        }
+    }
+
+    fn cell(&self, k: usize) -> &str {
+        self.cells[k].trim()
+    }
+
+    fn number(&self, k: usize) -> Result<f64, ReadError> {
+        number(self.cell(k), &self.header.names[k], self.file, self.line)
+    }
+
+    /// The number in column `k`, when there is one.
+    fn optional(&self, k: Option<usize>) -> Result<Option<f64>, ReadError> {
+        match k {
+            Some(k) if !self.cell(k).is_empty() => self.number(k).map(Some),
+            _ => Ok(None),
+        }
+    }
+}
+
+/// Where a row's fields are.
+struct RowLayout {
+    columns: Columns,
+    cycle: usize,
+    direction: usize,
+    target: usize,
+    gain: Option<usize>,
+    offset: Option<usize>,
+    pv: Option<usize>,
+    time: Option<usize>,
+}
+
+impl RowLayout {
+    fn of(header: &Header, source: Source, file: &str) -> Result<RowLayout, ReadError> {
+        Ok(RowLayout {
+            columns: columns(header, source, file)?,
+            cycle: header.need("cycle", file)?,
+            direction: header.need("direction", file)?,
+            target: header.need("target", file)?,
+            gain: header.find("reference_gain"),
+            offset: header.find("reference_offset"),
+            pv: header.find("selected_reference_pv"),
+            time: header.find("timestamp"),
+        })
+    }
+
+    /// A reference's gain and offset on this row (`None` for the readback).
+    fn transform(&self, row: &Row) -> Result<Option<Transform>, ReadError> {
+        if !self.columns.reference {
+            return Ok(None);
+        }
+        Ok(Some(Transform {
+            gain: row.optional(self.gain)?.unwrap_or(1.0),
+            offset: row.optional(self.offset)?.unwrap_or(0.0),
+        }))
+    }
+
+    /// The PV of the source read (or of the reference the app evaluated).
+    fn pv_name(&self, row: &Row) -> String {
+        let named = self.columns.pv.or(self.pv);
+        named.map(|k| row.cell(k).to_string()).unwrap_or_default()
+    }
+
+    fn point(&self, row: &Row, transform: Transform, source: Source) -> Result<Point, ReadError> {
+        let (file, line) = (row.file, row.line);
+        if let Some(k) = self.columns.pv.filter(|&k| row.cell(k).is_empty()) {
+            let message = format!(
+                "`{}` is empty: {} was not recorded at this point",
+                row.header.names[k],
+                source.describe()
+            );
+            return Err(error(file, line, message));
+        }
+        let target = row.number(self.target)?;
+        let error_value = match (transform.is_none(), self.columns.mean) {
+            (false, Some(m)) => transform.error(row.number(m)?, target),
+            _ => row.number(self.columns.error)?,
+        };
+        Ok(Point {
+            cycle: cycle(row.cell(self.cycle), "cycle", file, line)?,
+            direction: direction_at(row.cell(self.direction), "direction", file, line)?,
+            target,
+            error: error_value,
+            std: row.optional(self.columns.std).ok().flatten(),
+            time: self.time.and_then(|k| timestamp(row.cell(k))),
+            line,
+        })
+    }
 }
