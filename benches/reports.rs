@@ -23,7 +23,7 @@ fn main() {
     let tests: Vec<_> = result
         .tests
         .iter()
-        .filter(|t| t.evaluation.is_some())
+        .filter(|t| t.evaluated().is_some())
         .collect();
     // Warm up: fonts, library, caches.
     for t in &tests {
@@ -35,7 +35,7 @@ fn main() {
     for _ in 0..rounds {
         for t in &tests {
             let c0 = Instant::now();
-            let (chart, up, down) = data::axis_chart(t.evaluation.as_ref().unwrap());
+            let (chart, up, down) = data::axis_chart(&t.evaluated().unwrap().evaluation);
             let style = charts::Style {
                 width_px: 900,
                 height_px: 420,

@@ -204,7 +204,7 @@ fn case(
 
 /// Each test with a verification case compared, the tables loaded on the other axes of
 /// its machine tried as `wrong_axis`.
-pub fn verify_all(tests: &mut [(AxisTest, Option<Result<VerifyCase, String>>)]) {
+pub fn verify_all(tests: &mut [(AxisTest, Option<Result<Box<VerifyCase>, String>>)]) {
     let loaded: Vec<(String, String, Table)> = tests
         .iter()
         .filter_map(|(t, case)| {
@@ -216,22 +216,29 @@ pub fn verify_all(tests: &mut [(AxisTest, Option<Result<VerifyCase, String>>)]) 
         let Some(case) = case.take() else {
             continue;
         };
-        let (Some(after), Some(spec)) = (t.data.as_ref(), t.spec.as_ref()) else {
+        let Some(spec) = t.spec.clone() else {
+            continue;
+        };
+        let (machine, axis) = (t.machine.id.clone(), t.axis.clone());
+        let Some(e) = t.evaluated_mut() else {
+            continue;
+        };
+        let Some(after) = e.data.as_ref() else {
             continue;
         };
         let others: Vec<Other> = loaded
             .iter()
-            .filter(|(m, a, _)| *m == t.machine.id && *a != t.axis)
+            .filter(|(m, a, _)| *m == machine && *a != axis)
             .map(|(_, a, table)| Other {
                 axis: a.clone(),
                 new: table.clone(),
             })
             .collect();
         let verification = case.and_then(|c| compare(&c, after, &others, spec.standard));
-        if let (Ok(v), Some(c)) = (&verification, t.compensation.as_mut()) {
+        if let (Ok(v), Some(c)) = (&verification, e.compensation.as_mut()) {
             withhold(c, v);
         }
-        t.verification = Some(verification);
+        e.verification = Some(verification);
     }
 }
 
@@ -286,7 +293,7 @@ pub fn for_test(
     diagnose: impl FnOnce() -> crate::diagnose::Diagnosis,
 ) -> (
     Option<compensate::Compensation>,
-    Option<Result<VerifyCase, String>>,
+    Option<Result<Box<VerifyCase>, String>>,
 ) {
     let Some(c) = controller.and_then(crate::compensate::controllers::find) else {
         return (None, None);
@@ -300,7 +307,7 @@ pub fn for_test(
         }
     };
     let (compensation, case) = of_test(c, axis, data, files, diagnosis);
-    (Some(compensation), case)
+    (Some(compensation), case.map(|r| r.map(Box::new)))
 }
 
 /// The compensation of a test by `controller` as its axis states it, and what its

@@ -4,8 +4,11 @@
 //! verifies a table is compared with its prediction ([`compensation`]).
 
 pub mod compensation;
+mod outcome;
 
-use crate::campaign::{AxisSpec, Campaign, CampaignInfo, MachineInfo, SensorKind};
+pub use outcome::{AxisTest, CampaignResult, Evaluated, Outcome};
+
+use crate::campaign::{AxisSpec, Campaign, MachineInfo, SensorKind};
 use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::gost27843::{Gost27843, SMethod};
 use crate::evaluate::{Evaluation, Standard, StandardId};
@@ -20,150 +23,11 @@ use std::collections::BTreeMap;
 use std::path::{Component, Path};
 use std::sync::Arc;
 
-/// The result of one test of one axis: one row of the summary.
-#[derive(Debug, Clone)]
-pub struct AxisTest {
-    pub machine: Arc<MachineInfo>,
-    pub axis: String,
-    /// The axis as the campaign gives it (absent when it could not be read).
-    pub spec: Option<Arc<AxisSpec>>,
-    /// Measurement file, relative to the campaign's folder, `/`-separated.
-    pub file: Option<String>,
-    /// Index of this test among the axis's tests (1-based) and their number.
-    pub test: usize,
-    pub tests: usize,
-    pub verdict: Verdict,
-    pub error: Option<String>,
-    /// The layout the measurement file was read as and what was assumed or skipped.
-    pub recognised: Option<Recognised>,
-    /// The test conditions taken from the measurement file where the campaign gives
-    /// none (e.g. "air temperature, pressure and humidity"; see `AxisSpec::completed_by`).
-    pub conditions_from_file: Vec<&'static str>,
-    pub data: Option<AxisData>,
-    pub evaluation: Option<Evaluation>,
-    pub judgement: Option<Judgement>,
-    pub findings: Vec<Finding>,
-    pub nde: Option<NdeCorrection>,
-    /// The compensation table of the machine's controller and the parameters predicted.
-    pub compensation: Option<crate::compensate::Compensation>,
-    /// The re-measurement compared with the prediction of the table it verifies, or why
-    /// it cannot be.
-    pub verification: Option<Result<crate::verify::Verification, String>>,
-    /// The measurement uncertainty of the parameters (GUM budget, U with k = 2).
-    pub uncertainty: Option<Uncertainty>,
-    /// Model check and diagnosis, when the run asked for it.
-    pub diagnosis: Option<crate::diagnose::Diagnosis>,
-    /// This test predicted by the models of each other diagnosed test of the axis.
-    pub out_of_test: Vec<OutOfTest>,
-    /// The results the tool that wrote the file printed in it, beside axcheck's.
-    pub other_tool: Option<crate::crosscheck::OtherTool>,
-}
-
-impl AxisTest {
-    pub fn kind(&self) -> Option<AxisKind> {
-        self.spec.as_ref().map(|s| s.raw.kind)
-    }
-
-    pub fn standard(&self) -> Option<StandardId> {
-        self.spec.as_ref().map(|s| s.standard)
-    }
-
-    /// `VMC-07 X` or `VMC-07 X (2/3)`.
-    pub fn label(&self) -> String {
-        if self.tests > 1 {
-            format!(
-                "{} {} ({}/{})",
-                self.machine.id, self.axis, self.test, self.tests
-            )
-        } else {
-            format!("{} {}", self.machine.id, self.axis)
-        }
-    }
-
-    /// The test-plan rules of severity error the test breaks (they make it noncompliant).
-    pub fn broken_rules(&self) -> impl Iterator<Item = &Finding> {
-        self.findings
-            .iter()
-            .filter(|f| f.severity == Severity::Error)
-    }
-
-    /// [`Self::broken_rules`] as `id (clause): message; …`.
-    pub fn broken_rules_text(&self) -> String {
-        self.broken_rules()
-            .map(|f| format!("{} ({}): {}", f.id, f.clause, f.message))
-            .collect::<Vec<_>>()
-            .join("; ")
-    }
-
-    /// True when no tolerance applied to this test.
-    pub fn no_tolerance(&self) -> bool {
-        self.judgement.as_ref().is_none_or(|j| j.limits.is_empty())
-    }
-}
-
-/// A whole campaign's results.
-#[derive(Debug, Clone)]
-pub struct CampaignResult {
-    pub info: CampaignInfo,
-    /// The campaign file's name (not its full path: outputs stay the same across checkouts).
-    pub file_name: String,
-    pub standard: StandardId,
-    pub tests: Vec<AxisTest>,
-}
-
-impl CampaignResult {
-    /// Number of tests per verdict.
-    pub fn counts(&self) -> BTreeMap<Verdict, usize> {
-        let mut counts = BTreeMap::from([
-            (Verdict::Pass, 0),
-            (Verdict::Fail, 0),
-            (Verdict::Noncompliant, 0),
-            (Verdict::Error, 0),
-            (Verdict::Inconclusive, 0),
-        ]);
-        for t in &self.tests {
-            *counts.entry(t.verdict).or_default() += 1;
-        }
-        counts
-    }
-
-    /// Whether a test was judged by ISO 14253-1 (then `inconclusive` is a possible verdict).
-    pub fn uses_uncertainty_rule(&self) -> bool {
-        self.tests.iter().any(|t| {
-            t.judgement
-                .as_ref()
-                .is_some_and(|j| j.rule == DecisionRule::Iso14253_1)
-        })
-    }
-
-    /// `16 pass, 2 fail, 1 noncompliant, 0 error` (and `, 1 inconclusive` when a test was
-    /// judged by ISO 14253-1).
-    pub fn counts_text(&self) -> String {
-        let c = self.counts();
-        let mut text = format!(
-            "{} pass, {} fail, {} noncompliant, {} error",
-            c[&Verdict::Pass],
-            c[&Verdict::Fail],
-            c[&Verdict::Noncompliant],
-            c[&Verdict::Error]
-        );
-        if self.uses_uncertainty_rule() {
-            text.push_str(&format!(", {} inconclusive", c[&Verdict::Inconclusive]));
-        }
-        text
-    }
-
-    /// True when every test passes.
-    pub fn all_pass(&self) -> bool {
-        self.tests.iter().all(|t| t.verdict == Verdict::Pass)
-    }
-}
-
 /// Where a campaign's files are read: its folder and its rules.
 pub type Files = crate::files::Root;
 
 /// A test's result and, when it verifies a table, what it is compared with.
-type Tested = (AxisTest, Option<Result<compensation::VerifyCase, String>>);
+type Tested = (AxisTest, Option<Result<Box<compensation::VerifyCase>, String>>);
 
 /// Options of a batch run.
 #[derive(Debug, Clone, Copy, Default)]
@@ -172,7 +36,7 @@ pub struct Options {
     pub jobs: usize,
     /// Run the model check and diagnosis of every axis test.
     pub diagnose: bool,
-    /// The CI gate: drop each test's readings and per-parameter uncertainty budgets once
+    /// The CI gate: drop each test's readings, per-target statistics and U budgets once
     /// it is evaluated, and compute U only for the tests judged by ISO 14253-1 (the gate
     /// needs only the verdicts; reports need the readings and the budgets). Keeps memory
     /// flat on large fleets.
@@ -205,11 +69,15 @@ pub fn run(
                 let mut tests = run_axis(campaign, machine, entry, &specs, &files, options);
                 for (t, _) in &mut tests {
                     progress(t);
-                    if options.drop_data {
-                        t.data = None;
+                    if options.drop_data
+                        && let Some(e) = t.evaluated_mut()
+                    {
+                        e.data = None;
+                        // Nor each target's statistics: the gate prints parameters.
+                        e.evaluation.targets = Vec::new();
                         // The gate needs U, not each parameter's budget (a third of the
                         // memory of a 10 000-axis check).
-                        if let Some(u) = &mut t.uncertainty {
+                        if let Some(u) = &mut e.uncertainty {
                             u.parameters = Vec::new();
                         }
                     }
@@ -297,8 +165,16 @@ struct Slot {
 }
 
 impl Slot {
-    /// A result with `verdict` and no evaluation yet.
-    fn outcome(self, verdict: Verdict, error: Option<String>) -> AxisTest {
+    /// The test as it stands when `message` stops it before its evaluation.
+    fn error(self, message: String) -> AxisTest {
+        self.unread(message, None)
+    }
+
+    fn unread(self, error: String, recognised: Option<Recognised>) -> AxisTest {
+        self.with(Outcome::Unread { error, recognised })
+    }
+
+    fn with(self, outcome: Outcome) -> AxisTest {
         AxisTest {
             machine: self.machine,
             axis: self.axis,
@@ -306,26 +182,8 @@ impl Slot {
             file: self.file,
             test: self.test,
             tests: self.tests,
-            verdict,
-            error,
-            recognised: None,
-            conditions_from_file: Vec::new(),
-            data: None,
-            evaluation: None,
-            judgement: None,
-            findings: Vec::new(),
-            nde: None,
-            compensation: None,
-            verification: None,
-            uncertainty: None,
-            diagnosis: None,
-            out_of_test: Vec::new(),
-            other_tool: None,
+            outcome,
         }
-    }
-
-    fn error(self, message: String) -> AxisTest {
-        self.outcome(Verdict::Error, Some(message))
     }
 }
 
@@ -404,21 +262,23 @@ fn predict_across_tests(tested: &mut [Tested]) {
     let predictions: Vec<Vec<OutOfTest>> = tests
         .iter()
         .map(|target| {
-            let Some(data) = target.data.as_ref() else {
+            let Some(data) = target.evaluated().and_then(|e| e.data.as_ref()) else {
                 return Vec::new();
             };
             tests
                 .iter()
                 .filter(|from| from.test != target.test)
                 .filter_map(|from| {
-                    let diagnosis = from.diagnosis.as_ref()?;
+                    let diagnosis = from.evaluated()?.diagnosis.as_ref()?;
                     out_of_test(diagnosis, from.test, from.file.clone(), data)
                 })
                 .collect()
         })
         .collect();
     for ((test, _), p) in tested.iter_mut().zip(predictions) {
-        test.out_of_test = p;
+        if let Some(e) = test.evaluated_mut() {
+            e.out_of_test = p;
+        }
     }
 }
 
@@ -491,20 +351,23 @@ fn run_test(
     if let Some(spec) = spec_arc {
         slot.spec = Some(spec);
     }
-    let test = AxisTest {
-        recognised: Some(recognised),
-        other_tool,
+    let test = slot.with(Outcome::Evaluated(Box::new(Evaluated {
+        verdict,
+        error,
+        recognised,
         conditions_from_file: from_file,
-        diagnosis,
-        compensation,
-        uncertainty,
         data: Some(data),
-        evaluation: Some(evaluation),
+        evaluation,
         judgement,
         findings,
         nde,
-        ..slot.outcome(verdict, error)
-    };
+        compensation,
+        verification: None,
+        uncertainty,
+        diagnosis,
+        out_of_test: Vec::new(),
+        other_tool,
+    })));
     (test, verify_case)
 }
 
@@ -529,11 +392,7 @@ fn read_stage(
             slot.axis,
             axis.raw.kind
         );
-        let test = AxisTest {
-            recognised: Some(recognised),
-            ..slot.clone().error(message)
-        };
-        return Err(Box::new(test));
+        return Err(Box::new(slot.clone().unread(message, Some(recognised))));
     }
     Ok((data, recognised))
 }

@@ -72,9 +72,11 @@ impl Console {
         match (&self.bar, self.progress) {
             (Some(bar), _) => {
                 bar.set_position(axes as u64);
-                bar.set_message(format!("{} {}", t.label(), t.verdict));
+                bar.set_message(format!("{} {}", t.label(), t.verdict()));
             }
-            (None, Progress::EveryTest) => eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict),
+            (None, Progress::EveryTest) => {
+                eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict())
+            }
             (None, Progress::Auto) => {
                 let total = self.total;
                 let tenth = (axes * 10 / total.max(1)).min(10);
@@ -127,9 +129,9 @@ pub fn problems(result: &CampaignResult, where_all: &str) -> Vec<String> {
     let mut attention: Vec<&AxisTest> = result
         .tests
         .iter()
-        .filter(|t| t.verdict != Verdict::Pass)
+        .filter(|t| t.verdict() != Verdict::Pass)
         .collect();
-    attention.sort_by_key(|t| t.verdict.attention_rank());
+    attention.sort_by_key(|t| t.verdict().attention_rank());
     let shown = &attention[..attention.len().min(MAX_PROBLEM_LINES)];
     let width = shown
         .iter()
@@ -152,7 +154,7 @@ pub fn problems(result: &CampaignResult, where_all: &str) -> Vec<String> {
 pub fn warnings_line(result: &CampaignResult, where_all: &str) -> Option<String> {
     let mut tests_per_rule: std::collections::BTreeMap<&str, usize> = Default::default();
     for t in &result.tests {
-        let ids: std::collections::BTreeSet<&str> = (t.findings.iter())
+        let ids: std::collections::BTreeSet<&str> = (t.findings().iter())
             .filter(|f| f.severity == axcheck::rules::Severity::Warning)
             .map(|f| f.id)
             .collect();
@@ -175,12 +177,13 @@ pub fn warnings_line(result: &CampaignResult, where_all: &str) -> Option<String>
 /// `  FAIL         VMC-07 Y  A = 10.96 µm > 8.00 µm, …`
 fn problem_line(t: &AxisTest, width: usize) -> String {
     let unit = t.kind().map_or("", |k| k.deviation_symbol());
-    let why = match t.verdict {
-        Verdict::Error => t.error.clone().unwrap_or_default(),
+    let why = match t.verdict() {
+        Verdict::Error => t.error().unwrap_or_default().to_string(),
         Verdict::Noncompliant => t.broken_rules_text(),
         Verdict::Inconclusive => t
-            .judgement
-            .iter()
+            .evaluated()
+            .and_then(|e| e.judgement.as_ref())
+            .into_iter()
             .flat_map(|j| j.inconclusive())
             .map(|c| {
                 format!(
@@ -194,8 +197,9 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
             .collect::<Vec<_>>()
             .join(", "),
         _ => t
-            .judgement
-            .iter()
+            .evaluated()
+            .and_then(|e| e.judgement.as_ref())
+            .into_iter()
             .flat_map(|j| j.failed())
             .map(|c| {
                 format!(
@@ -210,7 +214,7 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
     };
     format!(
         "  {:<12} {:<width$}  {why}",
-        t.verdict.name().to_uppercase(),
+        t.verdict().name().to_uppercase(),
         t.label()
     )
 }
@@ -393,7 +397,7 @@ fn outputs_line(plan: &session::Plan, outcome: &session::Outcome, start: Instant
         .result
         .tests
         .iter()
-        .any(|t| t.compensation.is_some());
+        .any(|t| t.evaluated().is_some_and(|e| e.compensation.is_some()));
     format!(
         "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.xlsx, summary.parquet, results.json, junit.xml{}{}{}",
         plan.out.display(),

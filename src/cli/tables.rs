@@ -32,20 +32,24 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
     let compensated: Vec<&AxisTest> = result
         .tests
         .iter()
-        .filter(|t| t.compensation.is_some())
+        .filter(|t| t.evaluated().is_some_and(|e| e.compensation.is_some()))
         .collect();
     if compensated.is_empty() {
         return Vec::new();
     }
     let written = compensated
         .iter()
-        .filter(|t| t.compensation.as_ref().is_some_and(|c| c.outcome.is_ok()))
+        .filter(|t| {
+            t.evaluated()
+                .and_then(|e| e.compensation.as_ref())
+                .is_some_and(|c| c.outcome.is_ok())
+        })
         .count();
     let incremental = compensated
         .iter()
         .filter(|t| {
-            t.compensation
-                .as_ref()
+            t.evaluated()
+                .and_then(|e| e.compensation.as_ref())
                 .is_some_and(|c| c.outcome.is_ok() && c.mode == Mode::Incremental)
         })
         .count();
@@ -66,7 +70,7 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
         let named: Vec<String> = compensated
             .iter()
             .filter(|t| {
-                let c = t.compensation.as_ref();
+                let c = t.evaluated().and_then(|e| e.compensation.as_ref());
                 c.is_some_and(|c| c.outcome.is_ok() && c.warnings.iter().any(|w| w.key == *key))
             })
             .map(|t| t.label())
@@ -81,7 +85,12 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
 
 /// `  VMC-07 Z  not written: …`.
 fn refusal(t: &AxisTest) -> Option<String> {
-    let e = t.compensation.as_ref()?.outcome.as_ref().err()?;
+    let e = t
+        .evaluated()
+        .and_then(|e| e.compensation.as_ref())?
+        .outcome
+        .as_ref()
+        .err()?;
     Some(format!("  {}  not written: {e}", t.label()))
 }
 
@@ -96,7 +105,7 @@ fn listed(labels: &[String]) -> String {
 
 /// `Verification of MILL-3 X: effective: E 21.90 µm before, 1.20 predicted, 1.41 achieved`.
 fn verification(t: &AxisTest) -> Option<String> {
-    let v = t.verification.as_ref()?;
+    let v = t.evaluated().and_then(|e| e.verification.as_ref())?;
     let unit = t.kind().map_or("", |k| k.deviation_symbol());
     Some(match v {
         Err(e) => format!("Verification of {}: not made: {e}", t.label()),

@@ -15,7 +15,10 @@ pub fn table_paths(result: &CampaignResult) -> Vec<Option<PathBuf>> {
         .iter()
         .zip(test_stems(result, "compensation"))
         .map(|(t, stem)| {
-            let c = t.compensation.as_ref().filter(|c| c.outcome.is_ok())?;
+            let c = t
+                .evaluated()
+                .and_then(|e| e.compensation.as_ref())
+                .filter(|c| c.outcome.is_ok())?;
             Some(PathBuf::from(format!("{}.{}", stem.display(), c.extension)))
         })
         .collect()
@@ -32,7 +35,13 @@ impl Exporter for Compensation {
             .iter()
             .zip(table_paths(result))
             .filter_map(|(t, path)| {
-                let file = &t.compensation.as_ref()?.outcome.as_ref().ok()?.file;
+                let file = &t
+                    .evaluated()
+                    .and_then(|e| e.compensation.as_ref())?
+                    .outcome
+                    .as_ref()
+                    .ok()?
+                    .file;
                 Some(OutputFile {
                     path: path?,
                     bytes: file.as_bytes().to_vec(),

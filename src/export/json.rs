@@ -209,10 +209,13 @@ impl<'a> CompensationJson<'a> {
                 .ok()
                 .map(|c| ParameterSet::of(&c.predicted)),
             warnings: &c.warnings,
-            verification: t.verification.as_ref().map(|v| match v {
-                Ok(v) => VerificationJson::Done(v.json()),
-                Err(e) => VerificationJson::Failed { error: e },
-            }),
+            verification: t
+                .evaluated()
+                .and_then(|e| e.verification.as_ref())
+                .map(|v| match v {
+                    Ok(v) => VerificationJson::Done(v.json()),
+                    Err(e) => VerificationJson::Failed { error: e },
+                }),
         }
     }
 }
@@ -226,7 +229,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         test: t.test,
         tests: t.tests,
         file: t.file.as_deref(),
-        recognised: t.recognised.as_ref(),
+        recognised: t.recognised(),
         kind: t.kind(),
         standard: t.standard().map(|s| s.key()),
         unit: t.kind().map(|k| k.deviation_unit()),
@@ -236,30 +239,36 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
             declared_measurement_travel: spec.raw.measurement_travel,
             conditions: &spec.raw.conditions,
         }),
-        measured: t.data.as_ref().map(|d| {
+        measured: t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
             let (a, b) = d.measurement_travel();
             Measured {
                 measurement_travel: [a, b],
                 readings: d.readings.len(),
             }
         }),
-        verdict: t.verdict,
-        evaluation: t.evaluation.as_ref().map(|e| Evaluated {
+        verdict: t.verdict(),
+        evaluation: t.evaluated().map(|e| &e.evaluation).map(|e| Evaluated {
             n: e.n,
             m: e.targets.len(),
             parameters: ParameterValues(&e.parameters),
             at_target: TargetIndices(&e.parameters),
             notes: &e.notes,
         }),
-        judgement: t.judgement.as_ref().map(Judged::new),
-        rules: &t.findings,
-        nde: t.nde.as_ref(),
-        uncertainty: t.uncertainty.as_ref().map(UncertaintyJson::new),
+        judgement: t
+            .evaluated()
+            .and_then(|e| e.judgement.as_ref())
+            .map(Judged::new),
+        rules: t.findings(),
+        nde: t.evaluated().and_then(|e| e.nde.as_ref()),
+        uncertainty: t
+            .evaluated()
+            .and_then(|e| e.uncertainty.as_ref())
+            .map(UncertaintyJson::new),
         compensation: None,
-        diagnosis: t.diagnosis.as_ref(),
-        out_of_test: &t.out_of_test,
-        other_tool: t.other_tool.as_ref(),
-        error: t.error.as_deref(),
+        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_ref()),
+        out_of_test: t.evaluated().map_or(&[][..], |e| &e.out_of_test),
+        other_tool: t.evaluated().and_then(|e| e.other_tool.as_ref()),
+        error: t.error(),
     }
 }
 
@@ -312,8 +321,8 @@ pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Erro
         .map(|(t, table)| {
             let mut json = test_json(t);
             json.compensation = t
-                .compensation
-                .as_ref()
+                .evaluated()
+                .and_then(|e| e.compensation.as_ref())
                 .map(|c| CompensationJson::new(t, c, table.as_deref()));
             serde_json::to_vec_pretty(&json)
         })

@@ -59,8 +59,11 @@ impl Exporter for Junit {
                 .iter()
                 .filter(|t| t.machine.id == machine)
                 .collect();
-            let f = tests.iter().filter(|t| t.verdict.is_failure()).count();
-            let e = tests.iter().filter(|t| t.verdict == Verdict::Error).count();
+            let f = tests.iter().filter(|t| t.verdict().is_failure()).count();
+            let e = tests
+                .iter()
+                .filter(|t| t.verdict() == Verdict::Error)
+                .count();
             let _ = writeln!(
                 out,
                 "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{f}\" errors=\"{e}\" skipped=\"0\">",
@@ -84,7 +87,7 @@ impl Exporter for Junit {
                 }
                 let unit = t.kind().map_or("", |k| k.deviation_symbol());
                 let mut body = Vec::new();
-                if let Some(j) = &t.judgement {
+                if let Some(j) = t.evaluated().and_then(|e| e.judgement.as_ref()) {
                     for c in j.failed() {
                         body.push(c.over_limit(3, unit));
                     }
@@ -98,20 +101,20 @@ impl Exporter for Junit {
                         finding.id, finding.clause, finding.message
                     ));
                 }
-                match t.verdict {
+                match t.verdict() {
                     Verdict::Pass => out.push_str("/>\n"),
                     Verdict::Fail | Verdict::Noncompliant | Verdict::Inconclusive => {
                         let message = body.first().cloned().unwrap_or_default();
                         let _ = write!(
                             out,
                             ">\n      <failure type=\"{}\" message=\"{}\">{}</failure>\n    </testcase>\n",
-                            t.verdict,
+                            t.verdict(),
                             escape(&message),
                             escape(&body.join("\n"))
                         );
                     }
                     Verdict::Error => {
-                        let message = t.error.clone().unwrap_or_default();
+                        let message = t.error().unwrap_or_default().to_string();
                         let _ = write!(
                             out,
                             ">\n      <error type=\"error\" message=\"{}\">{}</error>\n    </testcase>\n",

@@ -67,7 +67,7 @@ fn header(result: &CampaignResult) -> String {
 
 /// A test's line of the table: its headline parameters (A, E, M, R, B of its standard).
 fn row(t: &AxisTest) -> String {
-    let e = t.evaluation.as_ref();
+    let e = t.evaluated().map(|e| &e.evaluation);
     let v = |role: Role| {
         e.and_then(|e| e.headline(role))
             .map_or("–".to_string(), |p| fmt_fixed(p.value, 2))
@@ -78,8 +78,8 @@ fn row(t: &AxisTest) -> String {
         cell(&t.axis),
         cell(t.file.as_deref().unwrap_or("–")),
         t.standard().map_or("–", |s| s.key()),
-        t.judgement
-            .as_ref()
+        t.evaluated()
+            .and_then(|e| e.judgement.as_ref())
             .map_or("–".to_string(), |j| cell(&j.limits.describe())),
         e.map_or("–".to_string(), |e| e.n.to_string()),
         v(Role::Accuracy),
@@ -88,7 +88,7 @@ fn row(t: &AxisTest) -> String {
         v(Role::Repeatability),
         v(Role::Reversal),
         t.kind().map_or("–", |k| k.deviation_symbol()),
-        t.verdict
+        t.verdict()
     )
 }
 
@@ -97,13 +97,18 @@ fn row(t: &AxisTest) -> String {
 fn problems(t: &AxisTest) -> Vec<String> {
     let label = cell(&t.label());
     let mut lines = Vec::new();
-    if let Some(e) = &t.error {
+    if let Some(e) = t.error() {
         lines.push(format!("- **{label}**: error: {}", cell(e)));
     }
-    for c in t.judgement.iter().flat_map(|j| j.failed()) {
+    for c in t
+        .evaluated()
+        .and_then(|e| e.judgement.as_ref())
+        .into_iter()
+        .flat_map(|j| j.failed())
+    {
         lines.push(format!("- **{label}**: {}", c.over_limit(2, "")));
     }
-    for f in &t.findings {
+    for f in t.findings() {
         let kind = match f.severity {
             Severity::Error => "rule",
             Severity::Warning => "warning",

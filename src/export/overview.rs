@@ -105,8 +105,8 @@ pub fn test_id(t: &AxisTest) -> String {
 }
 
 fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
-    let e = t.evaluation.as_ref();
-    let travel = t.data.as_ref().map(|d| {
+    let e = t.evaluated().map(|e| &e.evaluation);
+    let travel = t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
         let (a, b) = d.measurement_travel();
         ((b - a) * 1e6).round() / 1e6
     });
@@ -124,16 +124,16 @@ fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
         unit: t.kind().map(|k| k.deviation_symbol()),
         values: headlines(t),
         worst: worst(t),
-        verdict: t.verdict,
-        decision_rule: (t.judgement.as_ref())
+        verdict: t.verdict(),
+        decision_rule: (t.evaluated().and_then(|e| e.judgement.as_ref()))
             .filter(|j| !j.limits.is_empty())
             .map(|j| j.rule.key()),
         rules: t.broken_rules().map(|f| f.id).collect(),
-        warnings: (t.findings.iter())
+        warnings: (t.findings().iter())
             .filter(|f| f.severity == crate::rules::Severity::Warning)
             .map(|f| f.id)
             .collect(),
-        diagnosis: t.diagnosis.as_ref().map(|d| {
+        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_ref()).map(|d| {
             let mut effects: Vec<&'static str> =
                 d.findings.iter().map(|f| f.effect().name()).collect();
             effects.dedup();
@@ -147,7 +147,7 @@ fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
                 .map(|(series, _)| series.parameter.clone())
                 .collect()
         }),
-        error: t.error.as_deref(),
+        error: t.error(),
     }
 }
 
@@ -161,10 +161,14 @@ pub fn travel_text(kind: AxisKind, x: f64) -> String {
 
 /// The headline parameters and their U.
 fn headlines(t: &AxisTest) -> BTreeMap<&'static str, Headline> {
-    let Some(e) = &t.evaluation else {
+    let Some(e) = t.evaluated().map(|e| &e.evaluation) else {
         return BTreeMap::new();
     };
-    let u_of = |key: &str| t.uncertainty.as_ref().and_then(|u| u.expanded_of(key));
+    let u_of = |key: &str| {
+        t.evaluated()
+            .and_then(|e| e.uncertainty.as_ref())
+            .and_then(|u| u.expanded_of(key))
+    };
     (HEADLINES.iter())
         .filter_map(|&(column, role)| {
             let p = e.headline(role)?;
@@ -185,8 +189,8 @@ fn headlines(t: &AxisTest) -> BTreeMap<&'static str, Headline> {
 }
 
 fn worst(t: &AxisTest) -> Option<Worst> {
-    let c = t.judgement.as_ref()?.worst()?;
-    let symbol = (t.evaluation.as_ref())
+    let c = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
+    let symbol = (t.evaluated().map(|e| &e.evaluation))
         .and_then(|e| e.parameter(&c.key))
         .map_or(c.key.clone(), |p| p.symbol().to_string());
     Some(Worst {
@@ -198,9 +202,13 @@ fn worst(t: &AxisTest) -> Option<Worst> {
 }
 
 fn compensation(t: &AxisTest) -> Option<CompensationE> {
-    let c = t.compensation.as_ref()?;
+    let c = t.evaluated().and_then(|e| e.compensation.as_ref())?;
     let done = c.outcome.as_ref().ok()?;
-    let measured = t.evaluation.as_ref()?.headline(Role::Systematic)?.value;
+    let measured = t
+        .evaluated()
+        .map(|e| &e.evaluation)?
+        .headline(Role::Systematic)?
+        .value;
     let predicted = done.predicted.headline(Role::Systematic)?.value;
     Some(CompensationE {
         controller: c.controller,

@@ -82,13 +82,16 @@ pub fn rows(result: &CampaignResult) -> Vec<Vec<Cell>> {
 }
 
 fn row(t: &AxisTest) -> Vec<Cell> {
-    let e = t.evaluation.as_ref();
+    let e = t.evaluated().map(|e| &e.evaluation);
     // Rounded to 1e-6: positions carry at most 6 decimals, their difference no more.
-    let travel = t.data.as_ref().map(|d| {
+    let travel = t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
         let (a, b) = d.measurement_travel();
         ((b - a) * 1e6).round() / 1e6
     });
-    let worst = t.judgement.as_ref().and_then(|j| j.worst());
+    let worst = t
+        .evaluated()
+        .and_then(|e| e.judgement.as_ref())
+        .and_then(|j| j.worst());
     let mut cells = vec![
         Cell::text(&t.machine.id),
         Cell::text(&t.axis),
@@ -96,12 +99,16 @@ fn row(t: &AxisTest) -> Vec<Cell> {
         Cell::opt_text(t.file.clone()),
         Cell::opt_text(t.kind().map(|k| k.to_string())),
         Cell::opt_text(t.standard().map(|s| s.key())),
-        Cell::opt_text(t.judgement.as_ref().map(|j| j.limits.describe())),
+        Cell::opt_text(
+            t.evaluated()
+                .and_then(|e| e.judgement.as_ref())
+                .map(|j| j.limits.describe()),
+        ),
         Cell::opt_text(t.kind().map(|k| k.deviation_unit())),
         e.map_or(Cell::Empty, |e| Cell::Int(e.n as i64)),
         e.map_or(Cell::Empty, |e| Cell::Int(e.targets.len() as i64)),
         Cell::opt_number(travel),
-        Cell::text(t.verdict.name()),
+        Cell::text(t.verdict().name()),
     ];
     for p in catalogue::summary_keys() {
         cells.push(Cell::opt_number(e.and_then(|e| e.value(p))));
@@ -109,17 +116,18 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     cells.push(Cell::opt_text(worst.map(|c| c.key.clone())));
     cells.push(Cell::opt_number(worst.map(|c| c.ratio())));
     let failed: Vec<String> = t
-        .judgement
-        .iter()
+        .evaluated()
+        .and_then(|e| e.judgement.as_ref())
+        .into_iter()
         .flat_map(|j| j.failed().map(|c| c.key.clone()))
         .collect();
     cells.push(Cell::text(failed.join(" ")));
-    let rules: Vec<&str> = t.findings.iter().map(|f| f.id).collect();
+    let rules: Vec<&str> = t.findings().iter().map(|f| f.id).collect();
     cells.push(Cell::text(rules.join(" ")));
-    cells.push(match &t.diagnosis {
+    cells.push(match t.evaluated().and_then(|e| e.diagnosis.as_ref()) {
         Some(d) => Cell::text(d.effects_label()),
         None => Cell::Empty,
     });
-    cells.push(Cell::opt_text(t.error.clone()));
+    cells.push(Cell::opt_text(t.error().clone()));
     cells
 }

@@ -189,7 +189,7 @@ fn rules_sheet(sheet: &mut Worksheet, result: &CampaignResult) -> Result<(), Xls
     write_headers(sheet, &headers)?;
     let mut r = 1;
     for t in &result.tests {
-        for f in &t.findings {
+        for f in t.findings() {
             write_test(sheet, r, t)?;
             write_text(sheet, r, 3, f.id)?;
             write_text(sheet, r, 4, f.clause)?;
@@ -209,7 +209,12 @@ fn diagnosis_sheet(sheet: &mut Worksheet, result: &CampaignResult) -> Result<(),
     write_headers(sheet, &headers)?;
     let mut r = 1;
     for t in &result.tests {
-        for f in t.diagnosis.iter().flat_map(|d| &d.findings) {
+        for f in t
+            .evaluated()
+            .and_then(|e| e.diagnosis.as_ref())
+            .into_iter()
+            .flat_map(|d| &d.findings)
+        {
             write_test(sheet, r, t)?;
             write_text(sheet, r, 3, f.effect().name())?;
             write_text(sheet, r, 4, &f.params_text(|x| x.to_string()))?;

@@ -35,14 +35,15 @@ pub fn records(result: &CampaignResult) -> Result<Vec<Record>, HistoryError> {
 }
 
 fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
-    let (Some(evaluation), Some(kind), Some(standard)) = (&t.evaluation, t.kind(), t.standard())
+    let (Some(evaluation), Some(kind), Some(standard)) =
+        (t.evaluated().map(|e| &e.evaluation), t.kind(), t.standard())
     else {
         return Vec::new();
     };
     // Not diagnosed: empty; diagnosed with nothing found: `none`.
     let effects = t
-        .diagnosis
-        .as_ref()
+        .evaluated()
+        .and_then(|e| e.diagnosis.as_ref())
         .map(|d| d.effects_label())
         .unwrap_or_default();
     // One copy of each text for the test's rows.
@@ -51,7 +52,7 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
     let serial = t.machine.serial.as_deref().map(text);
     let (kind_text, standard_key) = (text(&kind.to_string()), text(standard.key()));
     let (verdict, unit, effects) = (
-        text(t.verdict.name()),
+        text(t.verdict().name()),
         text(kind.deviation_unit()),
         text(&effects),
     );
@@ -76,11 +77,14 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
                 unit: unit.clone(),
                 value: p.value,
                 limit: t
-                    .judgement
-                    .as_ref()
+                    .evaluated()
+                    .and_then(|e| e.judgement.as_ref())
                     .and_then(|j| j.limits.values.get(key))
                     .map(|(limit, _)| *limit),
-                uncertainty: t.uncertainty.as_ref().and_then(|u| u.expanded_of(key)),
+                uncertainty: t
+                    .evaluated()
+                    .and_then(|e| e.uncertainty.as_ref())
+                    .and_then(|u| u.expanded_of(key)),
                 effects: effects.clone(),
             }
         })

@@ -272,7 +272,7 @@ impl Reports {
         for chart in history_charts {
             files.chart(&chart.name, chart.scene);
         }
-        if let Some(e) = &test.evaluation {
+        if let Some(e) = test.evaluated().map(|e| &e.evaluation) {
             let style = |height_px| charts::Style {
                 width_px: CHART_WIDTH_PX,
                 height_px,
@@ -280,7 +280,7 @@ impl Reports {
             let [bidirectional, unidirectional] = iso_charts(e);
             files.chart("bidirectional", bidirectional);
             files.chart("unidirectional", unidirectional);
-            if let Some(d) = &test.diagnosis {
+            if let Some(d) = test.evaluated().and_then(|e| e.diagnosis.as_ref()) {
                 diagnosis_files(&mut files, d);
             }
             let bars = data::decision_bars(test);
@@ -288,15 +288,15 @@ impl Reports {
             let zones = check_chart::decision_zones(&bars, &style(height));
             files.chart("decision", zones);
             let done = test
-                .compensation
-                .as_ref()
+                .evaluated()
+                .and_then(|e| e.compensation.as_ref())
                 .and_then(|c| c.outcome.as_ref().ok());
             if let Some(done) = done {
                 let chart = data::compensation_chart(e, done);
                 let scene = compensation_chart::compensation(&chart, &style(CHART_HEIGHT_PX));
                 files.chart("compensation", scene);
             }
-            if let Some(Ok(v)) = &test.verification {
+            if let Some(Ok(v)) = test.evaluated().and_then(|e| e.verification.as_ref()) {
                 let chart = data::verification_chart(v, e.kind);
                 let scene = verification_chart::verification(&chart, &style(CHART_HEIGHT_PX));
                 files.chart("verification", scene);
@@ -387,16 +387,16 @@ fn diagnosis_files(files: &mut Files, d: &crate::diagnose::Diagnosis) {
 /// The summary chart's bars: each test's worst parameter, needing attention first.
 fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
     let mut tests: Vec<&AxisTest> = result.tests.iter().collect();
-    tests.sort_by_key(|t| t.verdict.attention_rank());
+    tests.sort_by_key(|t| t.verdict().attention_rank());
     tests
         .iter()
         .filter_map(|t| {
-            let worst = t.judgement.as_ref()?.worst()?;
+            let worst = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
             Some(charts::RatioBar {
                 label: t.label(),
                 parameter: t
-                    .evaluation
-                    .as_ref()
+                    .evaluated()
+                    .map(|e| &e.evaluation)
                     .and_then(|e| e.parameter(&worst.key))
                     .map_or(worst.key.clone(), |p| p.symbol().to_string()),
                 ratio: worst.ratio(),

@@ -215,7 +215,12 @@ fn test<'a>(result: &'a CampaignResult, machine: &str, axis: &str) -> &'a AxisTe
 fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
     let result = run_campaign(Path::new("example-campaign/campaign.yaml"), false);
     for axis in ["X", "Y", "Z"] {
-        let c = test(&result, "VMC-07", axis).compensation.as_ref().unwrap();
+        let c = test(&result, "VMC-07", axis)
+            .evaluated()
+            .unwrap()
+            .compensation
+            .as_ref()
+            .unwrap();
         assert_eq!(c.mode, Mode::Incremental, "VMC-07 {axis}");
         assert_eq!(
             c.active_file.as_deref(),
@@ -228,7 +233,9 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         );
     }
     for t in &result.tests {
-        let Some(c) = &t.compensation else { continue };
+        let Some(c) = t.evaluated().and_then(|e| e.compensation.as_ref()) else {
+            continue;
+        };
         let unknown = c
             .warnings
             .iter()
@@ -240,6 +247,8 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         );
     }
     let x = test(&result, "MILL-3", "X")
+        .evaluated()
+        .unwrap()
         .verification
         .as_ref()
         .unwrap()
@@ -248,13 +257,22 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
     assert_eq!(x.verdict, Verdict::Effective);
     assert!(x.findings.is_empty());
     let y_test = test(&result, "MILL-3", "Y");
-    let y = y_test.verification.as_ref().unwrap().as_ref().unwrap();
+    let y = y_test
+        .evaluated()
+        .unwrap()
+        .verification
+        .as_ref()
+        .unwrap()
+        .as_ref()
+        .unwrap();
     assert_eq!(y.verdict, Verdict::MadeWorse);
     assert_eq!(
         y.findings.iter().map(|f| f.effect).collect::<Vec<_>>(),
         [Key::SignInverted]
     );
     let refused = y_test
+        .evaluated()
+        .unwrap()
         .compensation
         .as_ref()
         .unwrap()

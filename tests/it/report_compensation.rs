@@ -108,8 +108,11 @@ fn the_axis_report_shows_the_compensation_of_a_controller() {
 
     // The chart: measured means as evaluated, compensated ones cancelled on the targets.
     let test = &result.tests[0];
-    let measured = test.evaluation.as_ref().unwrap();
-    let compensation = test.compensation.as_ref().unwrap();
+    let measured = test.evaluated().map(|e| &e.evaluation).unwrap();
+    let compensation = test
+        .evaluated()
+        .and_then(|e| e.compensation.as_ref())
+        .unwrap();
     let chart = data::compensation_chart(measured, compensation.outcome.as_ref().unwrap());
     assert_eq!(chart.table_points.len(), 11);
     assert_eq!(chart.measured_up[0], measured.targets[0].up.mean);

@@ -88,14 +88,17 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
         label: t.label(),
         file: t.file.as_deref(),
         standard: t.standard().map(|s| s.title()),
-        limits: t.judgement.as_ref().map(|j| j.limits.describe()),
+        limits: t
+            .evaluated()
+            .and_then(|e| e.judgement.as_ref())
+            .map(|j| j.limits.describe()),
         unit,
         parameters: parameters(t),
-        not_applicable: (t.evaluation.iter())
+        not_applicable: (t.evaluated().map(|e| &e.evaluation).into_iter())
             .flat_map(|e| e.not_applicable().map(|d| d.symbol))
             .collect(),
-        rules: &t.findings,
-        diagnosis: (t.diagnosis.iter())
+        rules: t.findings(),
+        diagnosis: (t.evaluated().and_then(|e| e.diagnosis.as_ref()).into_iter())
             .flat_map(|d| &d.findings)
             .map(|f| DiagnosisFinding {
                 effect: f.effect().name(),
@@ -103,31 +106,43 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
                 advice: f.advice(),
             })
             .collect(),
-        compensation: t.compensation.as_ref().map(|c| CompensationDetail {
-            controller: c.controller,
-            mode: c.mode,
-            active_file: c.active_file.clone(),
-            refused: c.outcome.as_ref().err().cloned(),
-            warnings: c.warnings.iter().map(|w| w.message.clone()).collect(),
-        }),
-        verification: t.verification.as_ref().map(|v| match v {
-            Ok(v) => v.summary(unit.unwrap_or("")),
-            Err(e) => format!("not made: {e}"),
-        }),
+        compensation: t
+            .evaluated()
+            .and_then(|e| e.compensation.as_ref())
+            .map(|c| CompensationDetail {
+                controller: c.controller,
+                mode: c.mode,
+                active_file: c.active_file.clone(),
+                refused: c.outcome.as_ref().err().cloned(),
+                warnings: c.warnings.iter().map(|w| w.message.clone()).collect(),
+            }),
+        verification: t
+            .evaluated()
+            .and_then(|e| e.verification.as_ref())
+            .map(|v| match v {
+                Ok(v) => v.summary(unit.unwrap_or("")),
+                Err(e) => format!("not made: {e}"),
+            }),
         report: links.report,
         table: links.table,
         charts: charts(t, trends),
-        error: t.error.as_deref(),
+        error: t.error(),
     }
 }
 
 fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
-    let Some(e) = &t.evaluation else {
+    let Some(e) = t.evaluated().map(|e| &e.evaluation) else {
         return Vec::new();
     };
-    let check =
-        |key: &str| (t.judgement.as_ref()).and_then(|j| j.checks.iter().find(|c| c.key == key));
-    let u_of = |key: &str| t.uncertainty.as_ref().and_then(|u| u.expanded_of(key));
+    let check = |key: &str| {
+        (t.evaluated().and_then(|e| e.judgement.as_ref()))
+            .and_then(|j| j.checks.iter().find(|c| c.key == key))
+    };
+    let u_of = |key: &str| {
+        t.evaluated()
+            .and_then(|e| e.uncertainty.as_ref())
+            .and_then(|u| u.expanded_of(key))
+    };
     (e.parameters.iter())
         .map(|p| ParameterRow {
             symbol: p.symbol(),
@@ -144,7 +159,7 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
 /// ISO 230-2 Fig. 2a and 2b, then the history of each charted parameter.
 fn charts(t: &AxisTest, trends: Option<&AxisTrends>) -> Vec<Chart> {
     let mut charts = Vec::new();
-    if let Some(e) = &t.evaluation {
+    if let Some(e) = t.evaluated().map(|e| &e.evaluation) {
         let [bidirectional, unidirectional] = crate::report::iso_charts(e);
         charts.push(Chart {
             group: "iso",

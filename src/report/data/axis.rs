@@ -55,7 +55,7 @@ impl AxisReport<'_> {
 /// The data of one axis report.
 pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisReport<'a> {
     let kind = t.kind();
-    let e = t.evaluation.as_ref();
+    let e = t.evaluated().map(|e| &e.evaluation);
     let conditions = t.spec.as_ref().map(|s| &s.raw.conditions);
     AxisReport {
         campaign: CampaignHeader::new(result),
@@ -74,26 +74,28 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         n: e.map_or(0, |e| e.n),
         targets: e.map_or(Vec::new(), target_rows),
         notes: e.map_or(&[], |e| &e.notes),
-        findings: &t.findings,
+        findings: t.findings(),
         has_charts: e.is_some(),
         diagnosis: t
-            .diagnosis
-            .as_ref()
-            .map(|d| diagnosis_section(d, &t.out_of_test)),
+            .evaluated()
+            .and_then(|e| e.diagnosis.as_ref())
+            .map(|d| diagnosis_section(d, t.evaluated().map_or(&[][..], |e| &e.out_of_test))),
         uncertainty: t
-            .uncertainty
-            .as_ref()
+            .evaluated()
+            .and_then(|e| e.uncertainty.as_ref())
             .zip(kind)
             .map(|(u, k)| uncertainty_section(t, u, k.deviation_symbol(), k.position_unit())),
         compensation: t
-            .compensation
-            .as_ref()
+            .evaluated()
+            .and_then(|e| e.compensation.as_ref())
             .zip(e)
-            .map(|(c, e)| compensation_section(c, e, t.verification.as_ref())),
+            .map(|(c, e)| {
+                compensation_section(c, e, t.evaluated().and_then(|e| e.verification.as_ref()))
+            }),
         history: None,
         other_tool: t
-            .other_tool
-            .as_ref()
+            .evaluated()
+            .and_then(|e| e.other_tool.as_ref())
             .map(super::other_tool::other_tool_section),
         generator: generator(),
     }
@@ -112,7 +114,7 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
             Travel::Length(l) => pos(k, l),
             Travel::Range([a, b]) => format!("{} … {}", pos(k, a), pos(k, b)),
         });
-    let measured = t.data.as_ref().map(|d| {
+    let measured = t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
         let (a, b) = d.measurement_travel();
         format!("{} … {}", pos(d.kind, a), pos(d.kind, b))
     });
@@ -123,7 +125,7 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
     );
     let test = (t.tests > 1).then(|| format!("{} of {} tests of this axis", t.test, t.tests));
     // What the file says of itself fills what the campaign leaves out, marked as such.
-    let info = t.recognised.as_ref().and_then(|r| r.info.as_ref());
+    let info = t.recognised().and_then(|r| r.info.as_ref());
     let file = |f: fn(&FileInfo) -> &Option<String>| {
         info.and_then(|i| f(i).as_ref())
             .map(|v| format!("{v} (measurement file)"))
@@ -154,7 +156,9 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
         ("Standard", t.standard().map(|s| s.title().to_string())),
         (
             "Acceptance spec",
-            t.judgement.as_ref().map(|j| j.limits.describe()),
+            t.evaluated()
+                .and_then(|e| e.judgement.as_ref())
+                .map(|j| j.limits.describe()),
         ),
         (
             "Test date",
@@ -181,19 +185,23 @@ struct VerdictText {
 
 impl VerdictText {
     fn new(t: &AxisTest) -> VerdictText {
-        let detail = match t.verdict {
+        let detail = match t.verdict() {
             Verdict::Pass if t.no_tolerance() => {
                 "No tolerance applied: evaluated and checked against the test-plan rules only."
                     .to_string()
             }
             Verdict::Pass => {
-                let n = t.judgement.as_ref().map_or(0, |j| j.checks.len());
+                let n = t
+                    .evaluated()
+                    .and_then(|e| e.judgement.as_ref())
+                    .map_or(0, |j| j.checks.len());
                 format!("All {n} limited parameters are within tolerance.")
             }
             Verdict::Fail => {
                 let failed: Vec<String> = t
-                    .judgement
-                    .iter()
+                    .evaluated()
+                    .and_then(|e| e.judgement.as_ref())
+                    .into_iter()
                     .flat_map(|j| j.failed())
                     .map(|c| symbol_of(t, &c.key))
                     .collect();
@@ -206,12 +214,13 @@ impl VerdictText {
                     .collect::<Vec<_>>()
                     .join(", ")
             ),
-            Verdict::Error => t.error.clone().unwrap_or_default(),
+            Verdict::Error => t.error().unwrap_or_default().to_string(),
             Verdict::Inconclusive => {
                 let unit = t.kind().map_or("", |k| k.deviation_symbol());
                 let zone: Vec<String> = t
-                    .judgement
-                    .iter()
+                    .evaluated()
+                    .and_then(|e| e.judgement.as_ref())
+                    .into_iter()
                     .flat_map(|j| j.inconclusive())
                     .map(|c| {
                         format!(
@@ -230,8 +239,8 @@ impl VerdictText {
             }
         };
         VerdictText {
-            key: t.verdict,
-            word: t.verdict.name().to_uppercase(),
+            key: t.verdict(),
+            word: t.verdict().name().to_uppercase(),
             detail,
         }
     }
@@ -260,8 +269,8 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
         .iter()
         .map(|p| {
             let check = t
-                .judgement
-                .as_ref()
+                .evaluated()
+                .and_then(|e| e.judgement.as_ref())
                 .and_then(|j| j.checks.iter().find(|c| c.key == p.key()));
             let at = if let Some(i) = p.at_target {
                 format!("at i = {} ({})", i + 1, pos(e.kind, e.targets[i].position))
@@ -277,8 +286,8 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
                     .clause()
                     .replace(" (GB/T 17421.2 amendment No. 1)", ", amd. 1"),
                 value: num(p.value),
-                u: t.uncertainty
-                    .as_ref()
+                u: t.evaluated()
+                    .and_then(|e| e.uncertainty.as_ref())
                     .and_then(|u| u.expanded_of(p.key()))
                     .map_or("–".into(), |u| format!("±{}", num(u))),
                 limit: check.map_or("–".into(), |c| num(c.limit)),

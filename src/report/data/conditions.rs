@@ -35,8 +35,8 @@ pub(super) fn condition_rows(c: &Conditions, kind: AxisKind, t: &AxisTest) -> Ve
         AxisKind::Rotary => "°/min",
     };
     let approaches = t
-        .evaluation
-        .as_ref()
+        .evaluated()
+        .map(|e| &e.evaluation)
         .map(|e| format!("n = {} at each of {} targets", e.n, e.targets.len()));
     Row::present([
         ("Measuring instrument", instrument),
@@ -46,7 +46,10 @@ pub(super) fn condition_rows(c: &Conditions, kind: AxisKind, t: &AxisTest) -> Ve
             (!c.equipment.is_empty()).then(|| c.equipment.join("; ")),
         ),
         ("Positioning element", c.positioning_element.clone()),
-        ("NDE correction (3.1)", nde(t.nde.as_ref(), c.nde.as_ref())),
+        (
+            "NDE correction (3.1)",
+            nde(t.evaluated().and_then(|e| e.nde.as_ref()), c.nde.as_ref()),
+        ),
         (
             "Feed rate",
             c.feed_mm_per_min
@@ -65,13 +68,10 @@ pub(super) fn condition_rows(c: &Conditions, kind: AxisKind, t: &AxisTest) -> Ve
         ("Air (start → end)", c.air.as_ref().map(air)),
         ("Pressure of air or oil", c.fluid_pressure.clone()),
         ("Approaches per direction", approaches),
-        (
-            "Measurement file read as",
-            t.recognised.as_ref().map(read_as),
-        ),
+        ("Measurement file read as", t.recognised().map(read_as)),
         (
             "Taken from the measurement file",
-            (!t.conditions_from_file.is_empty()).then(|| t.conditions_from_file.join(", ")),
+            (t.evaluated().map(|e| e.conditions_from_file.join(", "))).filter(|s| !s.is_empty()),
         ),
         ("Notes", c.notes.clone()),
     ])

@@ -57,8 +57,8 @@ fn s_symbol(standard: Option<StandardId>) -> &'static str {
 /// The symbol of parameter `key` in the test's standard (the key itself when it does not
 /// apply).
 fn symbol_of(t: &AxisTest, key: &str) -> String {
-    t.evaluation
-        .as_ref()
+    t.evaluated()
+        .map(|e| &e.evaluation)
         .and_then(|e| e.parameter(key))
         .map_or(key.to_string(), |p| p.symbol().to_string())
 }

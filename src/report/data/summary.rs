@@ -69,13 +69,13 @@ struct Problem {
 /// The summary, rows sorted so that what needs attention comes first.
 pub fn summary(result: &CampaignResult) -> Summary<'_> {
     let mut tests: Vec<&AxisTest> = result.tests.iter().collect();
-    tests.sort_by_key(|t| t.verdict.attention_rank());
+    tests.sort_by_key(|t| t.verdict().attention_rank());
     let counts = result.counts();
     let with = |verdict: Verdict, message: fn(&AxisTest) -> String| -> Vec<Problem> {
         result
             .tests
             .iter()
-            .filter(|t| t.verdict == verdict)
+            .filter(|t| t.verdict() == verdict)
             .map(|t| Problem {
                 label: t.label(),
                 message: message(t),
@@ -95,28 +95,39 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
                 .then(|| counts[&Verdict::Inconclusive]),
         },
         rows: tests.into_iter().map(row).collect(),
-        errors: with(Verdict::Error, |t| t.error.clone().unwrap_or_default()),
+        errors: with(Verdict::Error, |t| {
+            t.error().unwrap_or_default().to_string()
+        }),
         noncompliant: with(Verdict::Noncompliant, AxisTest::broken_rules_text),
-        has_chart: result
-            .tests
-            .iter()
-            .any(|t| t.judgement.as_ref().and_then(|j| j.worst()).is_some()),
+        has_chart: result.tests.iter().any(|t| {
+            t.evaluated()
+                .and_then(|e| e.judgement.as_ref())
+                .and_then(|j| j.worst())
+                .is_some()
+        }),
         trends: None,
         generator: generator(),
     }
 }
 
 fn row(t: &AxisTest) -> SummaryRow<'_> {
-    let e = t.evaluation.as_ref();
+    let e = t.evaluated().map(|e| &e.evaluation);
     let headline = |role: Role| {
         e.and_then(|e| e.headline(role))
             .map_or("–".to_string(), |p| num(p.value))
     };
-    let travel = t.data.as_ref().map_or("–".into(), |d| {
-        let (a, b) = d.measurement_travel();
-        pos(d.kind, ((b - a) * 1e6).round() / 1e6)
-    });
-    let worst = match t.judgement.as_ref().and_then(|j| j.worst()) {
+    let travel = t
+        .evaluated()
+        .and_then(|e| e.data.as_ref())
+        .map_or("–".into(), |d| {
+            let (a, b) = d.measurement_travel();
+            pos(d.kind, ((b - a) * 1e6).round() / 1e6)
+        });
+    let worst = match t
+        .evaluated()
+        .and_then(|e| e.judgement.as_ref())
+        .and_then(|j| j.worst())
+    {
         Some(c) => format!("{} {}", symbol_of(t, &c.key), fmt_fixed(c.ratio(), 2)),
         None if t.no_tolerance() && e.is_some() => "no tolerance".to_string(),
         None => "–".to_string(),
@@ -137,9 +148,9 @@ fn row(t: &AxisTest) -> SummaryRow<'_> {
         unit: t.kind().map_or("", |k| k.deviation_symbol()),
         worst,
         diagnosis: t
-            .diagnosis
-            .as_ref()
+            .evaluated()
+            .and_then(|e| e.diagnosis.as_ref())
             .map_or("–".to_string(), |d| d.effects_label().replace('_', " ")),
-        verdict: t.verdict,
+        verdict: t.verdict(),
     }
 }

@@ -61,7 +61,10 @@ impl BudgetRow {
 /// Each limited parameter's |value| against its zone limit ± U (ISO 14253-1): left of the
 /// zone conformance is proven, right of it (marked) nonconformance, whatever rule decided.
 pub fn decision_bars(t: &AxisTest) -> Vec<CheckBar> {
-    let (Some(j), Some(u)) = (&t.judgement, &t.uncertainty) else {
+    let (Some(j), Some(u)) = (
+        t.evaluated().and_then(|e| e.judgement.as_ref()),
+        t.evaluated().and_then(|e| e.uncertainty.as_ref()),
+    ) else {
         return Vec::new();
     };
     j.checks
