@@ -238,7 +238,7 @@ pub fn verify_all(tests: &mut [(AxisTest, Option<Result<Box<VerifyCase>, String>
         if let (Ok(v), Some(c)) = (&verification, e.compensation.as_mut()) {
             withhold(c, v);
         }
-        e.verification = Some(verification);
+        e.verification = Some(Box::new(verification));
     }
 }
 

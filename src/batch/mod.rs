@@ -361,12 +361,12 @@ fn run_test(
         judgement,
         findings,
         nde,
-        compensation,
+        compensation: compensation.map(Box::new),
         verification: None,
         uncertainty,
-        diagnosis,
+        diagnosis: diagnosis.map(Box::new),
         out_of_test: Vec::new(),
-        other_tool,
+        other_tool: other_tool.map(Box::new),
     })));
     (test, verify_case)
 }

@@ -48,6 +48,7 @@ pub enum Outcome {
 /// Everything the stages found for a test whose file was read.
 #[derive(Debug, Clone)]
 pub struct Evaluated {
+    // What only some tests have is boxed: a 10 000-axis check holds 10 000 of these.
     pub verdict: Verdict,
     /// Why the parameters could not be judged (limits that cannot apply to the axis);
     /// the verdict is then `error`.
@@ -65,18 +66,18 @@ pub struct Evaluated {
     pub findings: Vec<Finding>,
     pub nde: Option<NdeCorrection>,
     /// The compensation table of the machine's controller and the parameters predicted.
-    pub compensation: Option<crate::compensate::Compensation>,
+    pub compensation: Option<Box<crate::compensate::Compensation>>,
     /// The re-measurement compared with the prediction of the table it verifies, or why
     /// it cannot be.
-    pub verification: Option<Result<crate::verify::Verification, String>>,
+    pub verification: Option<Box<Result<crate::verify::Verification, String>>>,
     /// The measurement uncertainty of the parameters (GUM budget, U with k = 2).
     pub uncertainty: Option<Uncertainty>,
     /// Model check and diagnosis, when the run asked for it.
-    pub diagnosis: Option<crate::diagnose::Diagnosis>,
+    pub diagnosis: Option<Box<crate::diagnose::Diagnosis>>,
     /// This test predicted by the models of each other diagnosed test of the axis.
     pub out_of_test: Vec<OutOfTest>,
     /// The results the tool that wrote the file printed in it, beside axcheck's.
-    pub other_tool: Option<crate::crosscheck::OtherTool>,
+    pub other_tool: Option<Box<crate::crosscheck::OtherTool>>,
 }
 
 impl AxisTest {

@@ -41,7 +41,7 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
         .iter()
         .filter(|t| {
             t.evaluated()
-                .and_then(|e| e.compensation.as_ref())
+                .and_then(|e| e.compensation.as_deref())
                 .is_some_and(|c| c.outcome.is_ok())
         })
         .count();
@@ -49,7 +49,7 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
         .iter()
         .filter(|t| {
             t.evaluated()
-                .and_then(|e| e.compensation.as_ref())
+                .and_then(|e| e.compensation.as_deref())
                 .is_some_and(|c| c.outcome.is_ok() && c.mode == Mode::Incremental)
         })
         .count();
@@ -70,7 +70,7 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
         let named: Vec<String> = compensated
             .iter()
             .filter(|t| {
-                let c = t.evaluated().and_then(|e| e.compensation.as_ref());
+                let c = t.evaluated().and_then(|e| e.compensation.as_deref());
                 c.is_some_and(|c| c.outcome.is_ok() && c.warnings.iter().any(|w| w.key == *key))
             })
             .map(|t| t.label())
@@ -87,7 +87,7 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
 fn refusal(t: &AxisTest) -> Option<String> {
     let e = t
         .evaluated()
-        .and_then(|e| e.compensation.as_ref())?
+        .and_then(|e| e.compensation.as_deref())?
         .outcome
         .as_ref()
         .err()?;
@@ -105,7 +105,7 @@ fn listed(labels: &[String]) -> String {
 
 /// `Verification of MILL-3 X: effective: E 21.90 µm before, 1.20 predicted, 1.41 achieved`.
 fn verification(t: &AxisTest) -> Option<String> {
-    let v = t.evaluated().and_then(|e| e.verification.as_ref())?;
+    let v = t.evaluated().and_then(|e| e.verification.as_deref())?;
     let unit = t.kind().map_or("", |k| k.deviation_symbol());
     Some(match v {
         Err(e) => format!("Verification of {}: not made: {e}", t.label()),

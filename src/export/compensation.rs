@@ -17,7 +17,7 @@ pub fn table_paths(result: &CampaignResult) -> Vec<Option<PathBuf>> {
         .map(|(t, stem)| {
             let c = t
                 .evaluated()
-                .and_then(|e| e.compensation.as_ref())
+                .and_then(|e| e.compensation.as_deref())
                 .filter(|c| c.outcome.is_ok())?;
             Some(PathBuf::from(format!("{}.{}", stem.display(), c.extension)))
         })
@@ -37,7 +37,7 @@ impl Exporter for Compensation {
             .filter_map(|(t, path)| {
                 let file = &t
                     .evaluated()
-                    .and_then(|e| e.compensation.as_ref())?
+                    .and_then(|e| e.compensation.as_deref())?
                     .outcome
                     .as_ref()
                     .ok()?

@@ -211,7 +211,7 @@ impl<'a> CompensationJson<'a> {
             warnings: &c.warnings,
             verification: t
                 .evaluated()
-                .and_then(|e| e.verification.as_ref())
+                .and_then(|e| e.verification.as_deref())
                 .map(|v| match v {
                     Ok(v) => VerificationJson::Done(v.json()),
                     Err(e) => VerificationJson::Failed { error: e },
@@ -265,9 +265,9 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
             .and_then(|e| e.uncertainty.as_ref())
             .map(UncertaintyJson::new),
         compensation: None,
-        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_ref()),
+        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_deref()),
         out_of_test: t.evaluated().map_or(&[][..], |e| &e.out_of_test),
-        other_tool: t.evaluated().and_then(|e| e.other_tool.as_ref()),
+        other_tool: t.evaluated().and_then(|e| e.other_tool.as_deref()),
         error: t.error(),
     }
 }
@@ -322,7 +322,7 @@ pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Erro
             let mut json = test_json(t);
             json.compensation = t
                 .evaluated()
-                .and_then(|e| e.compensation.as_ref())
+                .and_then(|e| e.compensation.as_deref())
                 .map(|c| CompensationJson::new(t, c, table.as_deref()));
             serde_json::to_vec_pretty(&json)
         })

@@ -133,7 +133,7 @@ fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
             .filter(|f| f.severity == crate::rules::Severity::Warning)
             .map(|f| f.id)
             .collect(),
-        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_ref()).map(|d| {
+        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_deref()).map(|d| {
             let mut effects: Vec<&'static str> =
                 d.findings.iter().map(|f| f.effect().name()).collect();
             effects.dedup();
@@ -202,7 +202,7 @@ fn worst(t: &AxisTest) -> Option<Worst> {
 }
 
 fn compensation(t: &AxisTest) -> Option<CompensationE> {
-    let c = t.evaluated().and_then(|e| e.compensation.as_ref())?;
+    let c = t.evaluated().and_then(|e| e.compensation.as_deref())?;
     let done = c.outcome.as_ref().ok()?;
     let measured = t
         .evaluated()

@@ -124,7 +124,7 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     cells.push(Cell::text(failed.join(" ")));
     let rules: Vec<&str> = t.findings().iter().map(|f| f.id).collect();
     cells.push(Cell::text(rules.join(" ")));
-    cells.push(match t.evaluated().and_then(|e| e.diagnosis.as_ref()) {
+    cells.push(match t.evaluated().and_then(|e| e.diagnosis.as_deref()) {
         Some(d) => Cell::text(d.effects_label()),
         None => Cell::Empty,
     });

@@ -211,7 +211,7 @@ fn diagnosis_sheet(sheet: &mut Worksheet, result: &CampaignResult) -> Result<(),
     for t in &result.tests {
         for f in t
             .evaluated()
-            .and_then(|e| e.diagnosis.as_ref())
+            .and_then(|e| e.diagnosis.as_deref())
             .into_iter()
             .flat_map(|d| &d.findings)
         {

@@ -43,7 +43,7 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
     // Not diagnosed: empty; diagnosed with nothing found: `none`.
     let effects = t
         .evaluated()
-        .and_then(|e| e.diagnosis.as_ref())
+        .and_then(|e| e.diagnosis.as_deref())
         .map(|d| d.effects_label())
         .unwrap_or_default();
     // One copy of each text for the test's rows.

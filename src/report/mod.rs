@@ -280,7 +280,7 @@ impl Reports {
             let [bidirectional, unidirectional] = iso_charts(e);
             files.chart("bidirectional", bidirectional);
             files.chart("unidirectional", unidirectional);
-            if let Some(d) = test.evaluated().and_then(|e| e.diagnosis.as_ref()) {
+            if let Some(d) = test.evaluated().and_then(|e| e.diagnosis.as_deref()) {
                 diagnosis_files(&mut files, d);
             }
             let bars = data::decision_bars(test);
@@ -289,14 +289,14 @@ impl Reports {
             files.chart("decision", zones);
             let done = test
                 .evaluated()
-                .and_then(|e| e.compensation.as_ref())
+                .and_then(|e| e.compensation.as_deref())
                 .and_then(|c| c.outcome.as_ref().ok());
             if let Some(done) = done {
                 let chart = data::compensation_chart(e, done);
                 let scene = compensation_chart::compensation(&chart, &style(CHART_HEIGHT_PX));
                 files.chart("compensation", scene);
             }
-            if let Some(Ok(v)) = test.evaluated().and_then(|e| e.verification.as_ref()) {
+            if let Some(Ok(v)) = test.evaluated().and_then(|e| e.verification.as_deref()) {
                 let chart = data::verification_chart(v, e.kind);
                 let scene = verification_chart::verification(&chart, &style(CHART_HEIGHT_PX));
                 files.chart("verification", scene);

@@ -233,7 +233,7 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         );
     }
     for t in &result.tests {
-        let Some(c) = t.evaluated().and_then(|e| e.compensation.as_ref()) else {
+        let Some(c) = t.evaluated().and_then(|e| e.compensation.as_deref()) else {
             continue;
         };
         let unknown = c
@@ -250,7 +250,7 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         .evaluated()
         .unwrap()
         .verification
-        .as_ref()
+        .as_deref()
         .unwrap()
         .as_ref()
         .unwrap();
@@ -261,7 +261,7 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         .evaluated()
         .unwrap()
         .verification
-        .as_ref()
+        .as_deref()
         .unwrap()
         .as_ref()
         .unwrap();
@@ -274,7 +274,7 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         .evaluated()
         .unwrap()
         .compensation
-        .as_ref()
+        .as_deref()
         .unwrap()
         .outcome
         .as_ref()

@@ -111,7 +111,7 @@ fn the_axis_report_shows_the_compensation_of_a_controller() {
     let measured = test.evaluated().map(|e| &e.evaluation).unwrap();
     let compensation = test
         .evaluated()
-        .and_then(|e| e.compensation.as_ref())
+        .and_then(|e| e.compensation.as_deref())
         .unwrap();
     let chart = data::compensation_chart(measured, compensation.outcome.as_ref().unwrap());
     assert_eq!(chart.table_points.len(), 11);

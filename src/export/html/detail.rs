@@ -98,7 +98,7 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
             .flat_map(|e| e.not_applicable().map(|d| d.symbol))
             .collect(),
         rules: t.findings(),
-        diagnosis: (t.evaluated().and_then(|e| e.diagnosis.as_ref()).into_iter())
+        diagnosis: (t.evaluated().and_then(|e| e.diagnosis.as_deref()).into_iter())
             .flat_map(|d| &d.findings)
             .map(|f| DiagnosisFinding {
                 effect: f.effect().name(),
@@ -108,7 +108,7 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
             .collect(),
         compensation: t
             .evaluated()
-            .and_then(|e| e.compensation.as_ref())
+            .and_then(|e| e.compensation.as_deref())
             .map(|c| CompensationDetail {
                 controller: c.controller,
                 mode: c.mode,
@@ -118,7 +118,7 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
             }),
         verification: t
             .evaluated()
-            .and_then(|e| e.verification.as_ref())
+            .and_then(|e| e.verification.as_deref())
             .map(|v| match v {
                 Ok(v) => v.summary(unit.unwrap_or("")),
                 Err(e) => format!("not made: {e}"),

@@ -78,7 +78,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         has_charts: e.is_some(),
         diagnosis: t
             .evaluated()
-            .and_then(|e| e.diagnosis.as_ref())
+            .and_then(|e| e.diagnosis.as_deref())
             .map(|d| diagnosis_section(d, t.evaluated().map_or(&[][..], |e| &e.out_of_test))),
         uncertainty: t
             .evaluated()
@@ -87,15 +87,15 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .map(|(u, k)| uncertainty_section(t, u, k.deviation_symbol(), k.position_unit())),
         compensation: t
             .evaluated()
-            .and_then(|e| e.compensation.as_ref())
+            .and_then(|e| e.compensation.as_deref())
             .zip(e)
             .map(|(c, e)| {
-                compensation_section(c, e, t.evaluated().and_then(|e| e.verification.as_ref()))
+                compensation_section(c, e, t.evaluated().and_then(|e| e.verification.as_deref()))
             }),
         history: None,
         other_tool: t
             .evaluated()
-            .and_then(|e| e.other_tool.as_ref())
+            .and_then(|e| e.other_tool.as_deref())
             .map(super::other_tool::other_tool_section),
         generator: generator(),
     }

@@ -149,7 +149,7 @@ fn row(t: &AxisTest) -> SummaryRow<'_> {
         worst,
         diagnosis: t
             .evaluated()
-            .and_then(|e| e.diagnosis.as_ref())
+            .and_then(|e| e.diagnosis.as_deref())
             .map_or("–".to_string(), |d| d.effects_label().replace('_', " ")),
         verdict: t.verdict(),
     }
