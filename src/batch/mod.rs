@@ -27,7 +27,10 @@ use std::sync::Arc;
 pub type Files = crate::files::Root;
 
 /// A test's result and, when it verifies a table, what it is compared with.
-type Tested = (AxisTest, Option<Result<Box<compensation::VerifyCase>, String>>);
+type Tested = (
+    AxisTest,
+    Option<Result<Box<compensation::VerifyCase>, String>>,
+);
 
 /// Options of a batch run.
 #[derive(Debug, Clone, Copy, Default)]

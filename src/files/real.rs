@@ -4,7 +4,7 @@
 //! will follow them when the file is opened) and compared with the real path of the
 //! folder ([`super::Root`] applies the rule).
 
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 /// The folder `base` as the system names it: `.` for the empty path of a campaign file
 /// named without a folder.
@@ -54,9 +54,26 @@ impl std::fmt::Display for Outside {
 /// A path that does not exist resolves as far as it does (a history folder a run will
 /// create); one that cannot be resolved at all (a link loop) is left to the read, which
 /// fails on it without reading anything.
-pub fn check_real(base: &Path, relative: &Path, folder_name: &'static str) -> Result<(), Outside> {
+/// `root`: the folder's real path when it is already known.
+pub fn check_real(
+    base: &Path,
+    root: Option<&Path>,
+    relative: &Path,
+    folder_name: &'static str,
+) -> Result<(), Outside> {
     let base = folder(base);
-    let (Ok(root), Ok(real)) = (real_path(base), real_path(&base.join(relative))) else {
+    let root = match root {
+        Some(root) => Ok(root.to_path_buf()),
+        None => real_path(base),
+    };
+    let Ok(root) = root else {
+        return Ok(());
+    };
+    // Most paths are plain: no link on the way, no `..`; then they stay inside.
+    if plain_below(base, relative) {
+        return Ok(());
+    }
+    let Ok(real) = real_path(&base.join(relative)) else {
         return Ok(());
     };
     if real.starts_with(&root) {
@@ -88,6 +105,25 @@ pub fn check_real(base: &Path, relative: &Path, folder_name: &'static str) -> Re
         root,
         folder: folder_name,
     })
+}
+
+/// Whether `base/relative` exists with no link among the components of `relative` and
+/// no `..`: then its real path is the folder's real path joined with `relative` (one
+/// `lstat` a component instead of resolving the folder's own path again for each file).
+fn plain_below(base: &Path, relative: &Path) -> bool {
+    let mut written = base.to_path_buf();
+    for part in relative.components() {
+        match part {
+            Component::Normal(name) => written.push(name),
+            Component::CurDir => continue,
+            _ => return false,
+        }
+        match std::fs::symlink_metadata(&written) {
+            Ok(m) if !m.file_type().is_symlink() => {}
+            _ => return false,
+        }
+    }
+    true
 }
 
 /// Links followed before a dangling chain is given up (the system's own limit is 40).

@@ -110,7 +110,7 @@ impl Root {
 
     /// The real-path rule for `relative` (a path inside the folder as written).
     pub fn check(&self, relative: &Path) -> Result<(), Outside> {
-        check_real(&self.dir, relative, self.name)
+        check_real(&self.dir, self.real(), relative, self.name)
     }
 
     /// The real-path rule for each file a walk found under the folder (unless outside

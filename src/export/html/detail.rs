@@ -98,14 +98,17 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
             .flat_map(|e| e.not_applicable().map(|d| d.symbol))
             .collect(),
         rules: t.findings(),
-        diagnosis: (t.evaluated().and_then(|e| e.diagnosis.as_deref()).into_iter())
-            .flat_map(|d| &d.findings)
-            .map(|f| DiagnosisFinding {
-                effect: f.effect().name(),
-                message: f.message.clone(),
-                advice: f.advice(),
-            })
-            .collect(),
+        diagnosis: (t
+            .evaluated()
+            .and_then(|e| e.diagnosis.as_deref())
+            .into_iter())
+        .flat_map(|d| &d.findings)
+        .map(|f| DiagnosisFinding {
+            effect: f.effect().name(),
+            message: f.message.clone(),
+            advice: f.advice(),
+        })
+        .collect(),
         compensation: t
             .evaluated()
             .and_then(|e| e.compensation.as_deref())
