@@ -202,9 +202,12 @@ fn case(
     })
 }
 
+/// What a re-measurement that verifies a table is compared with, or why it cannot be.
+pub type Case = Option<Result<Box<VerifyCase>, String>>;
+
 /// Each test with a verification case compared, the tables loaded on the other axes of
 /// its machine tried as `wrong_axis`.
-pub fn verify_all(tests: &mut [(AxisTest, Option<Result<Box<VerifyCase>, String>>)]) {
+pub fn verify_all(tests: &mut [(AxisTest, Case)]) {
     let loaded: Vec<(String, String, Table)> = tests
         .iter()
         .filter_map(|(t, case)| {
@@ -291,10 +294,7 @@ pub fn for_test(
     files: &Files,
     diagnosis: Option<&crate::diagnose::Diagnosis>,
     diagnose: impl FnOnce() -> crate::diagnose::Diagnosis,
-) -> (
-    Option<compensate::Compensation>,
-    Option<Result<Box<VerifyCase>, String>>,
-) {
+) -> (Option<compensate::Compensation>, Case) {
     let Some(c) = controller.and_then(crate::compensate::controllers::find) else {
         return (None, None);
     };

@@ -174,6 +174,7 @@ impl Slot {
     }
 
     fn unread(self, error: String, recognised: Option<Recognised>) -> AxisTest {
+        let recognised = recognised.map(Box::new);
         self.with(Outcome::Unread { error, recognised })
     }
 

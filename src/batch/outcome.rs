@@ -38,7 +38,7 @@ pub enum Outcome {
     Unread {
         error: String,
         /// The layout the file was read as, when it was read.
-        recognised: Option<Recognised>,
+        recognised: Option<Box<Recognised>>,
     },
     /// The file was read and evaluated (boxed: a fleet's results stay small and cheap to
     /// move, whatever a test holds).
@@ -123,7 +123,7 @@ impl AxisTest {
     /// The layout the file was read as, when it was read.
     pub fn recognised(&self) -> Option<&Recognised> {
         match &self.outcome {
-            Outcome::Unread { recognised, .. } => recognised.as_ref(),
+            Outcome::Unread { recognised, .. } => recognised.as_deref(),
             Outcome::Evaluated(e) => Some(&e.recognised),
         }
     }

@@ -128,6 +128,6 @@ fn row(t: &AxisTest) -> Vec<Cell> {
         Some(d) => Cell::text(d.effects_label()),
         None => Cell::Empty,
     });
-    cells.push(Cell::opt_text(t.error().clone()));
+    cells.push(Cell::opt_text(t.error()));
     cells
 }
