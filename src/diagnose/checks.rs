@@ -14,39 +14,98 @@ use crate::simulate::Simulation;
 use crate::simulate::rng::Rng;
 use rayon::prelude::*;
 
-/// Names of the statistics, in the order of [`statistics`].
-pub(crate) const NAMES: [&str; 8] = [
-    "R",
-    "run_mean_spread",
-    "lag1_autocorrelation",
-    "max_studentized_residual",
-    "reversal_range",
-    "scatter_ratio_end_to_start",
-    "periodogram_max_f",
-    "trend_lack_of_fit_rms",
-];
+/// The statistics the model check compares with their simulated distribution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Statistic {
+    R,
+    RunMeanSpread,
+    Lag1Autocorrelation,
+    MaxStudentizedResidual,
+    ReversalRange,
+    ScatterRatio,
+    PeriodogramMaxF,
+    TrendLackOfFit,
+}
 
-/// Human description of each statistic.
+impl Statistic {
+    /// Every statistic, in the order of the report's table.
+    pub(crate) const ALL: [Statistic; 8] = [
+        Statistic::R,
+        Statistic::RunMeanSpread,
+        Statistic::Lag1Autocorrelation,
+        Statistic::MaxStudentizedResidual,
+        Statistic::ReversalRange,
+        Statistic::ScatterRatio,
+        Statistic::PeriodogramMaxF,
+        Statistic::TrendLackOfFit,
+    ];
+
+    /// Its key in `diagnose --json` and the report.
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Statistic::R => "R",
+            Statistic::RunMeanSpread => "run_mean_spread",
+            Statistic::Lag1Autocorrelation => "lag1_autocorrelation",
+            Statistic::MaxStudentizedResidual => "max_studentized_residual",
+            Statistic::ReversalRange => "reversal_range",
+            Statistic::ScatterRatio => "scatter_ratio_end_to_start",
+            Statistic::PeriodogramMaxF => "periodogram_max_f",
+            Statistic::TrendLackOfFit => "trend_lack_of_fit_rms",
+        }
+    }
+
+    fn description(self) -> &'static str {
+        match self {
+            Statistic::R => {
+                "bidirectional repeatability of positioning R = max Ri (ISO 230-2 2.18)"
+            }
+            Statistic::RunMeanSpread => "range of the run means of the within-cell residuals",
+            Statistic::Lag1Autocorrelation => {
+                "lag-1 autocorrelation of the within-cell residuals in time order"
+            }
+            Statistic::MaxStudentizedResidual => {
+                "largest |residual| / (s·√((n−1)/n)) over all readings"
+            }
+            Statistic::ReversalRange => "max Bi − min Bi (reversal value along the axis)",
+            Statistic::ScatterRatio => {
+                "scatter of the upper half of the travel over that of the lower half"
+            }
+            Statistic::PeriodogramMaxF => {
+                "highest F of the Lomb–Scargle periodogram of the target means"
+            }
+            Statistic::TrendLackOfFit => {
+                "RMS of the bidirectional target means about a cubic trend"
+            }
+        }
+    }
+}
+
+/// Human description of the statistic named `name` (empty for another name).
 pub(crate) fn describe(name: &str) -> &'static str {
-    match name {
-        "R" => "bidirectional repeatability of positioning R = max Ri (ISO 230-2 2.18)",
-        "run_mean_spread" => "range of the run means of the within-cell residuals",
-        "lag1_autocorrelation" => {
-            "lag-1 autocorrelation of the within-cell residuals in time order"
-        }
-        "max_studentized_residual" => "largest |residual| / (s·√((n−1)/n)) over all readings",
-        "reversal_range" => "max Bi − min Bi (reversal value along the axis)",
-        "scatter_ratio_end_to_start" => {
-            "scatter of the upper half of the travel over that of the lower half"
-        }
-        "periodogram_max_f" => "highest F of the Lomb–Scargle periodogram of the target means",
-        "trend_lack_of_fit_rms" => "RMS of the bidirectional target means about a cubic trend",
-        _ => "",
+    (Statistic::ALL.iter())
+        .find(|s| s.name() == name)
+        .map_or("", |s| s.description())
+}
+
+/// The value of each [`Statistic`] for one test (NaN where one does not apply).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Statistics([f64; 8]);
+
+impl std::ops::Index<Statistic> for Statistics {
+    type Output = f64;
+    fn index(&self, s: Statistic) -> &f64 {
+        &self.0[s as usize]
+    }
+}
+
+impl std::ops::IndexMut<Statistic> for Statistics {
+    fn index_mut(&mut self, s: Statistic) -> &mut f64 {
+        &mut self.0[s as usize]
     }
 }
 
 /// The statistics of one test (NaN where one does not apply).
-pub(crate) fn statistics(data: &AxisData) -> [f64; 8] {
+pub(crate) fn statistics(data: &AxisData) -> Statistics {
     let layout = Layout::new(data);
     let x: Vec<f64> = layout.prep.rows.iter().map(|r| r.x).collect();
     layout.statistics(&x)
@@ -89,9 +148,115 @@ impl Layout {
     }
 
     /// The statistics of the deviations `x` (one per row).
-    fn statistics(&self, x: &[f64]) -> [f64; 8] {
+    fn statistics(&self, x: &[f64]) -> Statistics {
+        let cells = Cells::of(&self.prep, x);
+        let mut out = Statistics([f64::NAN; 8]);
+        if self.prep.n >= 2 {
+            self.within_cells(&cells, &mut out);
+        }
+        if self.prep.m >= 2 {
+            let (lo, hi) = (cells.b.iter())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
+                    (a.min(*v), c.max(*v))
+                });
+            out[Statistic::ReversalRange] = hi - lo;
+        }
+        if let Some(trend) = &self.trend {
+            let m = self.prep.m;
+            let bidir: Vec<f64> = (0..m)
+                .map(|i| (cells.means[2 * i] + cells.means[2 * i + 1]) / 2.0)
+                .collect();
+            let scanner = trend.scanner(&bidir);
+            let r = scanner.trend_residuals();
+            let dof = scanner.trend_dof();
+            if dof > 0.0 {
+                out[Statistic::TrendLackOfFit] =
+                    (r.iter().map(|v| v * v).sum::<f64>() / dof).sqrt();
+            }
+            if let Some(grid) = &self.grid {
+                let (f, _) = scanner.best(grid);
+                out[Statistic::PeriodogramMaxF] = scanner.f_stat(f);
+            }
+        }
+        out
+    }
+
+    /// The statistics of the scatter within cells (n ≥ 2): R, the run means' spread, the
+    /// lag-1 autocorrelation, the largest studentized residual and the scatter ratio.
+    fn within_cells(&self, cells: &Cells, out: &mut Statistics) {
         let prep = &self.prep;
         let (m, n) = (prep.m, prep.n);
+        let s: Vec<f64> = (cells.ss.iter())
+            .map(|v| (v / (n - 1) as f64).sqrt())
+            .collect();
+        out[Statistic::R] = (0..m)
+            .map(|i| {
+                let (su, sd) = (s[2 * i], s[2 * i + 1]);
+                (2.0 * su + 2.0 * sd + cells.b[i].abs())
+                    .max(4.0 * su)
+                    .max(4.0 * sd)
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mut run_sum = vec![0.0; n];
+        for (r, e) in prep.rows.iter().zip(&cells.resid) {
+            run_sum[r.run] += e;
+        }
+        let per = (2 * m) as f64;
+        let (lo, hi) = (run_sum.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
+            (a.min(v / per), c.max(v / per))
+        });
+        out[Statistic::RunMeanSpread] = hi - lo;
+        let resid = &cells.resid;
+        let den: f64 = self.by_order.iter().map(|&k| resid[k] * resid[k]).sum();
+        if den > 0.0 {
+            out[Statistic::Lag1Autocorrelation] = (self.by_order.windows(2))
+                .map(|w| resid[w[0]] * resid[w[1]])
+                .sum::<f64>()
+                / den;
+        }
+        let pooled = cells.ss.iter().sum::<f64>() / (prep.rows.len() - cells.ss.len()) as f64;
+        if n >= 3 && pooled > 0.0 {
+            let k = (pooled * (n - 1) as f64 / n as f64).sqrt();
+            out[Statistic::MaxStudentizedResidual] =
+                resid.iter().fold(0.0f64, |a, e| a.max(e.abs() / k));
+        }
+        if m >= 2 {
+            out[Statistic::ScatterRatio] = self.scatter_ratio(&cells.ss);
+        }
+    }
+
+    /// The scatter of the upper half of the travel over that of the lower half.
+    fn scatter_ratio(&self, ss: &[f64]) -> f64 {
+        let n = self.prep.n;
+        let (mut lo_ss, mut lo_c, mut hi_ss, mut hi_c) = (0.0, 0usize, 0.0, 0usize);
+        for (c, v) in ss.iter().enumerate() {
+            if self.lower_half[c / 2] {
+                lo_ss += v;
+                lo_c += n - 1;
+            } else {
+                hi_ss += v;
+                hi_c += n - 1;
+            }
+        }
+        if lo_c > 0 && hi_c > 0 && lo_ss > 0.0 {
+            ((hi_ss / hi_c as f64) / (lo_ss / lo_c as f64)).sqrt()
+        } else {
+            f64::NAN
+        }
+    }
+}
+
+/// The deviations by cell (target and direction): means, residuals about them, sums of
+/// squares, and the reversal value of each target.
+struct Cells {
+    means: Vec<f64>,
+    resid: Vec<f64>,
+    ss: Vec<f64>,
+    b: Vec<f64>,
+}
+
+impl Cells {
+    fn of(prep: &Prep, x: &[f64]) -> Cells {
         let cells = prep.cells();
         let mut sum = vec![0.0; cells];
         let mut count = vec![0usize; cells];
@@ -100,99 +265,25 @@ impl Layout {
             sum[c] += v;
             count[c] += 1;
         }
-        let means: Vec<f64> = sum
-            .iter()
-            .zip(&count)
+        let means: Vec<f64> = (sum.iter().zip(&count))
             .map(|(s, &c)| if c > 0 { s / c as f64 } else { f64::NAN })
             .collect();
-        let resid: Vec<f64> = prep
-            .rows
-            .iter()
-            .zip(x)
+        let resid: Vec<f64> = (prep.rows.iter().zip(x))
             .map(|(r, v)| v - means[prep.cell(r)])
             .collect();
         let mut ss = vec![0.0; cells];
         for (r, e) in prep.rows.iter().zip(&resid) {
             ss[prep.cell(r)] += e * e;
         }
-        let nan = f64::NAN;
-        let mut out = [nan; 8];
-        let b: Vec<f64> = (0..m).map(|i| means[2 * i] - means[2 * i + 1]).collect();
-        if n >= 2 {
-            let s: Vec<f64> = ss.iter().map(|v| (v / (n - 1) as f64).sqrt()).collect();
-            out[0] = (0..m)
-                .map(|i| {
-                    let (su, sd) = (s[2 * i], s[2 * i + 1]);
-                    (2.0 * su + 2.0 * sd + b[i].abs())
-                        .max(4.0 * su)
-                        .max(4.0 * sd)
-                })
-                .fold(f64::NEG_INFINITY, f64::max);
-            let mut run_sum = vec![0.0; n];
-            for (r, e) in prep.rows.iter().zip(&resid) {
-                run_sum[r.run] += e;
-            }
-            let per = (2 * m) as f64;
-            let (lo, hi) = run_sum
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
-                    (a.min(v / per), c.max(v / per))
-                });
-            out[1] = hi - lo;
-            let den: f64 = self.by_order.iter().map(|&k| resid[k] * resid[k]).sum();
-            if den > 0.0 {
-                out[2] = self
-                    .by_order
-                    .windows(2)
-                    .map(|w| resid[w[0]] * resid[w[1]])
-                    .sum::<f64>()
-                    / den;
-            }
-            let pooled = ss.iter().sum::<f64>() / (prep.rows.len() - cells) as f64;
-            if n >= 3 && pooled > 0.0 {
-                let k = (pooled * (n - 1) as f64 / n as f64).sqrt();
-                out[3] = resid.iter().fold(0.0f64, |a, e| a.max(e.abs() / k));
-            }
-            if m >= 2 {
-                let (mut lo_ss, mut lo_c, mut hi_ss, mut hi_c) = (0.0, 0usize, 0.0, 0usize);
-                for (c, v) in ss.iter().enumerate() {
-                    if self.lower_half[c / 2] {
-                        lo_ss += v;
-                        lo_c += n - 1;
-                    } else {
-                        hi_ss += v;
-                        hi_c += n - 1;
-                    }
-                }
-                if lo_c > 0 && hi_c > 0 && lo_ss > 0.0 {
-                    out[5] = ((hi_ss / hi_c as f64) / (lo_ss / lo_c as f64)).sqrt();
-                }
-            }
+        let b = (0..prep.m)
+            .map(|i| means[2 * i] - means[2 * i + 1])
+            .collect();
+        Cells {
+            means,
+            resid,
+            ss,
+            b,
         }
-        if m >= 2 {
-            let (lo, hi) = b
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), v| {
-                    (a.min(*v), c.max(*v))
-                });
-            out[4] = hi - lo;
-        }
-        if let Some(trend) = &self.trend {
-            let bidir: Vec<f64> = (0..m)
-                .map(|i| (means[2 * i] + means[2 * i + 1]) / 2.0)
-                .collect();
-            let scanner = trend.scanner(&bidir);
-            let r = scanner.trend_residuals();
-            let dof = scanner.trend_dof();
-            if dof > 0.0 {
-                out[7] = (r.iter().map(|v| v * v).sum::<f64>() / dof).sqrt();
-            }
-            if let Some(grid) = &self.grid {
-                let (f, _) = scanner.best(grid);
-                out[6] = scanner.f_stat(f);
-            }
-        }
-        out
     }
 }
 
@@ -338,7 +429,7 @@ pub(crate) fn check_base_model(
     let measured = statistics(a.data);
     let checks = run(&measured, base, count, options.seed, !a.data.has_times());
     if let Some(c) = checks.iter().find(|c| {
-        c.statistic == "trend_lack_of_fit_rms"
+        c.statistic == Statistic::TrendLackOfFit.name()
             && c.measured > c.simulated_high
             && a.periodic.peak.is_none()
     }) {
@@ -356,7 +447,7 @@ pub(crate) fn check_base_model(
 /// measured statistics; `strip_times` removes the simulated time stamps when the
 /// measurement had none, so both are analysed alike.
 pub(crate) fn run(
-    measured: &[f64; 8],
+    measured: &Statistics,
     sim: &Simulation,
     count: usize,
     seed: u64,
@@ -365,7 +456,7 @@ pub(crate) fn run(
     if count == 0 {
         return Vec::new();
     }
-    let sims: Vec<[f64; 8]> = match FastSim::new(sim, seed, strip_times) {
+    let sims: Vec<Statistics> = match FastSim::new(sim, seed, strip_times) {
         Some(fast) => (0..count)
             .into_par_iter()
             .map(|s| fast.layout.statistics(&fast.deviations(sim_seed(seed, s))))
@@ -376,7 +467,7 @@ pub(crate) fn run(
             .collect(),
     };
     let mut out = Vec::new();
-    for (k, name) in NAMES.iter().enumerate() {
+    for k in Statistic::ALL {
         if !measured[k].is_finite() {
             continue;
         }
@@ -389,7 +480,7 @@ pub(crate) fn run(
             continue;
         }
         out.push(ModelCheck {
-            statistic: (*name).to_string(),
+            statistic: k.name().to_string(),
             measured: measured[k],
             simulated_low: low,
             simulated_high: high,
@@ -469,7 +560,7 @@ mod tests {
                         let seed = sim_seed(7, s);
                         let a = fast.layout.statistics(&fast.deviations(seed));
                         let b = statistics(&sim_test(&sim, seed, strip));
-                        let bits = |v: [f64; 8]| v.map(f64::to_bits);
+                        let bits = |v: Statistics| v.0.map(f64::to_bits);
                         assert_eq!(bits(a), bits(b), "{cycle:?} strip {strip} test {s}");
                     }
                 }

@@ -164,39 +164,13 @@ pub(crate) fn fit(
 ) -> TimeFit {
     let cells = prep.cells();
     let rows: Vec<usize> = (0..prep.rows.len()).filter(|&k| active[k]).collect();
-    // Raw regressors per row.
-    let mut raw: Vec<Vec<f64>> = Vec::new();
-    let mut thermal_col = None;
-    let mut drift_col = None;
-    let mut warm_col = None;
-    let mut run_cols = Vec::new();
-    let c = &prep.clocks;
-    if terms.thermal {
-        thermal_col = Some(raw.len());
-        raw.push(
-            rows.iter()
-                .map(|&k| (prep.positions[prep.rows[k].i] - prep.pbar) * c.thermal[k])
-                .collect(),
-        );
-    }
-    if terms.runs {
-        for j in 1..prep.n {
-            run_cols.push(raw.len());
-            raw.push(
-                rows.iter()
-                    .map(|&k| if c.run[k] == j { 1.0 } else { 0.0 })
-                    .collect(),
-            );
-        }
-    }
-    if terms.drift {
-        drift_col = Some(raw.len());
-        raw.push(rows.iter().map(|&k| c.drift[k]).collect());
-    }
-    if let Some(tau) = terms.warm {
-        warm_col = Some(raw.len());
-        raw.extend(warm_columns(prep, &rows, tau));
-    }
+    let Regressors {
+        raw,
+        thermal_col,
+        drift_col,
+        warm_col,
+        run_cols,
+    } = Regressors::of(prep, &rows, terms);
     // Demean within cells, then weight.
     let dm = CellDemean::new(prep, &rows, scale);
     let (cell_of, count) = (&dm.cell_of, &dm.count);
@@ -222,19 +196,7 @@ pub(crate) fn fit(
             *f += b * x;
         }
     }
-    let mut sum = vec![0.0; cells];
-    for ((yv, f), &c) in y.iter().zip(&fitted_raw).zip(cell_of) {
-        sum[c] += yv - f;
-    }
-    let intercepts: Vec<f64> = (0..cells)
-        .map(|c| {
-            if count[c] > 0 {
-                sum[c] / count[c] as f64
-            } else {
-                f64::NAN
-            }
-        })
-        .collect();
+    let intercepts = intercepts(&y, &fitted_raw, cell_of, count, cells);
     let mut residuals = vec![f64::NAN; prep.rows.len()];
     for (idx, &k) in rows.iter().enumerate() {
         residuals[k] = ls.residuals[idx] * scale[cell_of[idx]];
@@ -257,6 +219,80 @@ pub(crate) fn fit(
         intercepts,
         residuals,
     }
+}
+
+/// The raw regressors of a fit, one column a term, and where each term's columns are.
+struct Regressors {
+    raw: Vec<Vec<f64>>,
+    thermal_col: Option<usize>,
+    drift_col: Option<usize>,
+    warm_col: Option<usize>,
+    run_cols: Vec<usize>,
+}
+
+impl Regressors {
+    /// The columns of `terms` over `rows`: thermal growth, the run offsets (run 0 the
+    /// reference), the drift, the warm-up.
+    fn of(prep: &Prep, rows: &[usize], terms: Terms) -> Regressors {
+        let mut r = Regressors {
+            raw: Vec::new(),
+            thermal_col: None,
+            drift_col: None,
+            warm_col: None,
+            run_cols: Vec::new(),
+        };
+        let c = &prep.clocks;
+        if terms.thermal {
+            r.thermal_col = Some(r.raw.len());
+            r.raw.push(
+                rows.iter()
+                    .map(|&k| (prep.positions[prep.rows[k].i] - prep.pbar) * c.thermal[k])
+                    .collect(),
+            );
+        }
+        if terms.runs {
+            for j in 1..prep.n {
+                r.run_cols.push(r.raw.len());
+                r.raw.push(
+                    rows.iter()
+                        .map(|&k| if c.run[k] == j { 1.0 } else { 0.0 })
+                        .collect(),
+                );
+            }
+        }
+        if terms.drift {
+            r.drift_col = Some(r.raw.len());
+            r.raw.push(rows.iter().map(|&k| c.drift[k]).collect());
+        }
+        if let Some(tau) = terms.warm {
+            r.warm_col = Some(r.raw.len());
+            r.raw.extend(warm_columns(prep, rows, tau));
+        }
+        r
+    }
+}
+
+/// Each cell's intercept: the mean of its values less the fitted terms.
+fn intercepts(
+    y: &[f64],
+    fitted_raw: &[f64],
+    cell_of: &[usize],
+    count: &[usize],
+    cells: usize,
+) -> Vec<f64> {
+    let mut sum = vec![0.0; cells];
+    for ((yv, f), &c) in y.iter().zip(fitted_raw).zip(cell_of) {
+        sum[c] += yv - f;
+    }
+    (0..cells)
+        .map(|c| {
+            if count[c] > 0 {
+                sum[c] / count[c] as f64
+            } else {
+                f64::NAN
+            }
+        })
+        .collect()
 }
 
 /// A coefficient's test.

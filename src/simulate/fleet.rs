@@ -32,16 +32,9 @@ struct AxisPlan {
     travel: f64,
 }
 
-fn axis_plan(k: usize, seed: u64) -> (AxisKind, Simulation, f64) {
-    let mut r = Rng::new(seed, 1000 + k as u64);
-    let pick = r.uniform();
-    let mut model = ErrorModel {
-        scale_ppm: r.range(-12.0, 12.0),
-        reversal: r.range(0.5, 5.0),
-        scatter: r.range(0.2, 1.0),
-        ..ErrorModel::default()
-    };
-    let plan_with = |targets: Vec<f64>, runs: usize| TestPlan {
+/// Test plan with `targets`, `runs` runs of the standard cycle.
+fn plan_with(targets: Vec<f64>, runs: usize) -> TestPlan {
+    TestPlan {
         targets: None,
         target_list: Some(targets),
         runs,
@@ -49,108 +42,122 @@ fn axis_plan(k: usize, seed: u64) -> (AxisKind, Simulation, f64) {
         feed_per_min: 2000.0,
         dwell_s: 3.0,
         overrun: 5.0,
-    };
-    let spread = |r: &mut Rng, start: f64, end: f64, count: usize| -> Vec<f64> {
-        let step = (end - start) / (count - 1) as f64;
-        (0..count)
-            .map(|i| {
-                let j = if i == 0 || i + 1 == count {
-                    0.0
-                } else {
-                    r.range(-0.2, 0.2) * step
-                };
-                ((start + i as f64 * step + j) * 1000.0).round() / 1000.0
-            })
-            .collect()
-    };
-    if pick < 0.70 {
-        let travel = (r.range(300.0, 2000.0) / 10.0).round() * 10.0;
-        let need = ((5.0 * (travel - 10.0) / 1000.0).ceil() as usize).max(5);
-        let count = need + (r.uniform() * (21 - need.min(20)) as f64) as usize;
-        let count = count.clamp(need, 20.max(need));
-        model.shape = vec![
-            [0.0, 0.0],
-            [travel / 2.0, r.range(-3.0, 3.0)],
-            [travel, r.range(-3.0, 3.0)],
-        ];
-        model.periodic = vec![PeriodicTerm {
-            pitch: [5.0, 10.0, 16.0, 20.0][(r.uniform() * 4.0) as usize % 4],
-            amplitude: r.range(0.0, 0.8),
-            phase_deg: r.range(0.0, 360.0),
-        }];
-        let targets = spread(&mut r, 5.0, travel - 5.0, count);
-        let sim = Simulation {
-            kind: AxisKind::Linear,
-            seed,
-            description: None,
-            model,
-            plan: plan_with(targets, 5),
-        };
-        (AxisKind::Linear, sim, travel)
-    } else if pick < 0.80 {
-        let travel = (r.range(2500.0, 9500.0) / 10.0).round() * 10.0;
-        let count = (((travel - 20.0) / 250.0).ceil() as usize + 1).min(40);
-        model.shape = vec![
-            [0.0, 0.0],
-            [travel / 3.0, r.range(-6.0, 6.0)],
-            [travel, r.range(-6.0, 6.0)],
-        ];
-        let targets = spread(&mut r, 10.0, travel - 10.0, count);
-        let sim = Simulation {
-            kind: AxisKind::Linear,
-            seed,
-            description: None,
-            model,
-            plan: plan_with(targets, 1),
-        };
-        (AxisKind::Linear, sim, travel)
-    } else if pick < 0.92 {
-        let mut targets: Vec<f64> = vec![0.0, 90.0, 180.0, 270.0];
-        let extra = 4 + (r.uniform() * 5.0) as usize;
-        for e in 0..extra {
-            let base = 360.0 * (e as f64 + 0.5) / extra as f64;
-            let t = ((base + r.range(-10.0, 10.0)) * 1000.0).round() / 1000.0;
-            if targets.iter().all(|x| (x - t).abs() > 8.0) && t > 0.0 && t < 355.0 {
-                targets.push(t);
-            }
-        }
-        targets.sort_by(f64::total_cmp);
-        model.periodic = vec![PeriodicTerm {
-            pitch: 360.0,
-            amplitude: r.range(0.5, 3.0),
-            phase_deg: r.range(0.0, 360.0),
-        }];
-        let mut plan = plan_with(targets, 5);
-        plan.feed_per_min = 3600.0;
-        let sim = Simulation {
-            kind: AxisKind::Rotary,
-            seed,
-            description: None,
-            model,
-            plan,
-        };
-        (AxisKind::Rotary, sim, 360.0)
-    } else {
-        let turns = if r.uniform() < 0.5 { 2.0 } else { 3.0 };
-        let targets: Vec<f64> = (0..=(8 * turns as usize))
-            .map(|k| 45.0 * k as f64)
-            .collect();
-        model.periodic = vec![PeriodicTerm {
-            pitch: 360.0,
-            amplitude: r.range(0.5, 3.0),
-            phase_deg: 0.0,
-        }];
-        let mut plan = plan_with(targets, 1);
-        plan.feed_per_min = 7200.0;
-        let sim = Simulation {
-            kind: AxisKind::Rotary,
-            seed,
-            description: None,
-            model,
-            plan,
-        };
-        (AxisKind::Rotary, sim, 360.0 * turns)
     }
+}
+
+/// `count` targets from `start` to `end`, the inner ones moved by up to a fifth of the
+/// spacing (ISO 230-2 4.2), rounded to 1 µm.
+fn spread(r: &mut Rng, start: f64, end: f64, count: usize) -> Vec<f64> {
+    let step = (end - start) / (count - 1) as f64;
+    (0..count)
+        .map(|i| {
+            let j = if i == 0 || i + 1 == count {
+                0.0
+            } else {
+                r.range(-0.2, 0.2) * step
+            };
+            ((start + i as f64 * step + j) * 1000.0).round() / 1000.0
+        })
+        .collect()
+}
+
+/// The `k`th axis of the fleet: 70 % linear axes up to 2 m (5 runs), 10 % long linear
+/// axes (1 run), 12 % rotary tables (5 runs), 8 % multi-turn rotary axes (1 run).
+fn axis_plan(k: usize, seed: u64) -> (AxisKind, Simulation, f64) {
+    let mut r = Rng::new(seed, 1000 + k as u64);
+    let pick = r.uniform();
+    let model = ErrorModel {
+        scale_ppm: r.range(-12.0, 12.0),
+        reversal: r.range(0.5, 5.0),
+        scatter: r.range(0.2, 1.0),
+        ..ErrorModel::default()
+    };
+    let (kind, model, plan, travel) = if pick < 0.70 {
+        linear(&mut r, model)
+    } else if pick < 0.80 {
+        long_linear(&mut r, model)
+    } else if pick < 0.92 {
+        rotary_table(&mut r, model)
+    } else {
+        multi_turn(&mut r, model)
+    };
+    let sim = Simulation {
+        kind,
+        seed,
+        description: None,
+        model,
+        plan,
+    };
+    (kind, sim, travel)
+}
+
+type AxisDraw = (AxisKind, ErrorModel, TestPlan, f64);
+
+fn linear(r: &mut Rng, mut model: ErrorModel) -> AxisDraw {
+    let travel = (r.range(300.0, 2000.0) / 10.0).round() * 10.0;
+    let need = ((5.0 * (travel - 10.0) / 1000.0).ceil() as usize).max(5);
+    let count = need + (r.uniform() * (21 - need.min(20)) as f64) as usize;
+    let count = count.clamp(need, 20.max(need));
+    model.shape = vec![
+        [0.0, 0.0],
+        [travel / 2.0, r.range(-3.0, 3.0)],
+        [travel, r.range(-3.0, 3.0)],
+    ];
+    model.periodic = vec![PeriodicTerm {
+        pitch: [5.0, 10.0, 16.0, 20.0][(r.uniform() * 4.0) as usize % 4],
+        amplitude: r.range(0.0, 0.8),
+        phase_deg: r.range(0.0, 360.0),
+    }];
+    let targets = spread(r, 5.0, travel - 5.0, count);
+    (AxisKind::Linear, model, plan_with(targets, 5), travel)
+}
+
+fn long_linear(r: &mut Rng, mut model: ErrorModel) -> AxisDraw {
+    let travel = (r.range(2500.0, 9500.0) / 10.0).round() * 10.0;
+    let count = (((travel - 20.0) / 250.0).ceil() as usize + 1).min(40);
+    model.shape = vec![
+        [0.0, 0.0],
+        [travel / 3.0, r.range(-6.0, 6.0)],
+        [travel, r.range(-6.0, 6.0)],
+    ];
+    let targets = spread(r, 10.0, travel - 10.0, count);
+    (AxisKind::Linear, model, plan_with(targets, 1), travel)
+}
+
+fn rotary_table(r: &mut Rng, mut model: ErrorModel) -> AxisDraw {
+    let mut targets: Vec<f64> = vec![0.0, 90.0, 180.0, 270.0];
+    let extra = 4 + (r.uniform() * 5.0) as usize;
+    for e in 0..extra {
+        let base = 360.0 * (e as f64 + 0.5) / extra as f64;
+        let t = ((base + r.range(-10.0, 10.0)) * 1000.0).round() / 1000.0;
+        if targets.iter().all(|x| (x - t).abs() > 8.0) && t > 0.0 && t < 355.0 {
+            targets.push(t);
+        }
+    }
+    targets.sort_by(f64::total_cmp);
+    model.periodic = vec![PeriodicTerm {
+        pitch: 360.0,
+        amplitude: r.range(0.5, 3.0),
+        phase_deg: r.range(0.0, 360.0),
+    }];
+    let mut plan = plan_with(targets, 5);
+    plan.feed_per_min = 3600.0;
+    (AxisKind::Rotary, model, plan, 360.0)
+}
+
+fn multi_turn(r: &mut Rng, mut model: ErrorModel) -> AxisDraw {
+    let turns = if r.uniform() < 0.5 { 2.0 } else { 3.0 };
+    let targets: Vec<f64> = (0..=(8 * turns as usize))
+        .map(|k| 45.0 * k as f64)
+        .collect();
+    model.periodic = vec![PeriodicTerm {
+        pitch: 360.0,
+        amplitude: r.range(0.5, 3.0),
+        phase_deg: 0.0,
+    }];
+    let mut plan = plan_with(targets, 1);
+    plan.feed_per_min = 7200.0;
+    (AxisKind::Rotary, model, plan, 360.0 * turns)
 }
 
 /// Generates a fleet of `axes` axes from `seed`.

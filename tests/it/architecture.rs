@@ -22,8 +22,8 @@ const LAYERS: &[&[&str]] = &[
     &["session"],
 ];
 
-const MAX_FUNCTION_LINES: usize = 150;
-const MAX_FILE_LINES: usize = 1000;
+const MAX_FUNCTION_LINES: usize = 100;
+const MAX_FILE_LINES: usize = 800;
 
 fn sources() -> Vec<(PathBuf, String)> {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");

@@ -323,43 +323,7 @@ pub fn residuals(r: &Residuals, style: &Style) -> Scene {
 
     render(style, |root| {
         let (w, h) = root.dim_in_pixel();
-        let mut items = Vec::new();
-        for (up, mark, text) in [
-            (true, MARK_UP, "residual ↑"),
-            (false, MARK_DOWN, "residual ↓"),
-        ] {
-            if points.iter().any(|p| p.2 == up) {
-                items.push(LegendItem {
-                    stroke: None,
-                    marker: Some(mark),
-                    swatch: None,
-                    text: text.to_string(),
-                });
-            }
-        }
-        if let Some(b) = band {
-            let unit = unit_of(&r.y_label);
-            let value = fmt_short(b);
-            let text = if unit.is_empty() {
-                format!("base model ±2σ (±{value})")
-            } else {
-                format!("base model ±2σ (±{value} {unit})")
-            };
-            items.push(LegendItem {
-                stroke: None,
-                marker: None,
-                swatch: Some(BAND),
-                text,
-            });
-        }
-        if has_fit {
-            items.push(LegendItem {
-                stroke: Some(FIT),
-                marker: None,
-                swatch: None,
-                text: "fitted effect".to_string(),
-            });
-        }
+        let items = residual_legend(&points, band, has_fit, &r.y_label);
         let legend_h = KIT.legend_height(&items, w as i32 - 20, h as i32) as u32;
         let top = legend_h + 8;
         let spec = AxesSpec {
@@ -410,6 +374,53 @@ pub fn residuals(r: &Residuals, style: &Style) -> Scene {
         draw_clipped(root, &fit_px, &frame, FIT)?;
         Ok(())
     })
+}
+
+/// The residual chart's legend: the directions present, the base model's band, the fit.
+fn residual_legend(
+    points: &[(f64, f64, bool)],
+    band: Option<f64>,
+    has_fit: bool,
+    y_label: &str,
+) -> Vec<LegendItem> {
+    let mut items = Vec::new();
+    for (up, mark, text) in [
+        (true, MARK_UP, "residual ↑"),
+        (false, MARK_DOWN, "residual ↓"),
+    ] {
+        if points.iter().any(|p| p.2 == up) {
+            items.push(LegendItem {
+                stroke: None,
+                marker: Some(mark),
+                swatch: None,
+                text: text.to_string(),
+            });
+        }
+    }
+    if let Some(b) = band {
+        let unit = unit_of(y_label);
+        let value = fmt_short(b);
+        let text = if unit.is_empty() {
+            format!("base model ±2σ (±{value})")
+        } else {
+            format!("base model ±2σ (±{value} {unit})")
+        };
+        items.push(LegendItem {
+            stroke: None,
+            marker: None,
+            swatch: Some(BAND),
+            text,
+        });
+    }
+    if has_fit {
+        items.push(LegendItem {
+            stroke: Some(FIT),
+            marker: None,
+            swatch: None,
+            text: "fitted effect".to_string(),
+        });
+    }
+    items
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -553,6 +564,75 @@ fn draw_marked(root: &Area, frame: &Frame, m: f64, label: &str) -> Result<(), Fa
     draw_text(root, label, (lx, t - 10), style)
 }
 
+/// What the periodogram draws, in chart units (log10 of the period on x).
+struct PeriodogramView {
+    points: Vec<(f64, f64)>,
+    marked: Option<(f64, String)>,
+    x: (f64, f64),
+    y: (f64, f64),
+    threshold: Option<f64>,
+    unresolved: Option<f64>,
+}
+
+impl PeriodogramView {
+    /// The view of `p`, or what to say instead of a chart.
+    fn of(p: &Periodogram) -> Result<PeriodogramView, &'static str> {
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        let mut points: Vec<(f64, f64)> = p
+            .period
+            .iter()
+            .zip(&p.power)
+            .filter(|(t, w)| positive(**t) && w.is_finite())
+            .map(|(t, w)| (t.log10(), *w))
+            .collect();
+        if points.is_empty() {
+            return Err("No periodogram to plot.");
+        }
+        // By period, then power: the same pairs in any order draw the same chart.
+        points.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+        let marked = p
+            .marked
+            .as_ref()
+            .filter(|(t, _)| positive(*t))
+            .map(|(t, label)| {
+                let label = non_empty(label).map_or_else(|| fmt_short(*t), str::to_string);
+                (t.log10(), label)
+            });
+        let Some((lo, hi)) = extent(points.iter().map(|q| q.0).chain(marked.iter().map(|m| m.0)))
+        else {
+            return Err("No periodogram to plot.");
+        };
+        let x = if hi - lo < 1e-9 {
+            (lo - 0.3, hi + 0.3)
+        } else {
+            (lo, hi)
+        };
+        let threshold = p.threshold.filter(|t| t.is_finite() && *t >= 0.0);
+        let y_top = points
+            .iter()
+            .map(|q| q.1)
+            .chain(threshold)
+            .fold(1.0, f64::max);
+        let y = (0.0, y_top);
+        if !y_top.is_finite() {
+            return Err("The powers are out of range.");
+        }
+        let unresolved = p
+            .unresolved_below
+            .filter(|u| positive(*u))
+            .map(f64::log10)
+            .filter(|u| *u > x.0);
+        Ok(PeriodogramView {
+            points,
+            marked,
+            x,
+            y,
+            threshold,
+            unresolved,
+        })
+    }
+}
+
 /// A Lomb–Scargle periodogram: normalised power against period on a logarithmic period axis
 /// (1-2-5 ticks), the false-alarm level as a dashed dark red line, the detected period as a
 /// thin vertical line with its label above the plot, and the periods the plan cannot resolve
@@ -562,51 +642,18 @@ fn draw_marked(root: &Area, frame: &Frame, m: f64, label: &str) -> Result<(), Fa
 /// drawn as a dot. The legend sits in a band above the plot.
 /// Designed for 900 × 320 px.
 pub fn periodogram(p: &Periodogram, style: &Style) -> Scene {
-    let positive = |v: f64| v.is_finite() && v > 0.0;
-    let mut points: Vec<(f64, f64)> = p
-        .period
-        .iter()
-        .zip(&p.power)
-        .filter(|(t, w)| positive(**t) && w.is_finite())
-        .map(|(t, w)| (t.log10(), *w))
-        .collect();
-    if points.is_empty() {
-        return message_chart(style, "No periodogram to plot.");
-    }
-    // By period, then power: the same pairs in any order draw the same chart.
-    points.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-    let marked = p
-        .marked
-        .as_ref()
-        .filter(|(t, _)| positive(*t))
-        .map(|(t, label)| {
-            let label = non_empty(label).map_or_else(|| fmt_short(*t), str::to_string);
-            (t.log10(), label)
-        });
-    let Some((lo, hi)) = extent(points.iter().map(|q| q.0).chain(marked.iter().map(|m| m.0)))
-    else {
-        return message_chart(style, "No periodogram to plot.");
+    let view = match PeriodogramView::of(p) {
+        Ok(view) => view,
+        Err(message) => return message_chart(style, message),
     };
-    let x = if hi - lo < 1e-9 {
-        (lo - 0.3, hi + 0.3)
-    } else {
-        (lo, hi)
-    };
-    let threshold = p.threshold.filter(|t| t.is_finite() && *t >= 0.0);
-    let y_top = points
-        .iter()
-        .map(|q| q.1)
-        .chain(threshold)
-        .fold(1.0, f64::max);
-    let y = (0.0, y_top);
-    if !y_top.is_finite() {
-        return message_chart(style, "The powers are out of range.");
-    }
-    let unresolved = p
-        .unresolved_below
-        .filter(|u| positive(*u))
-        .map(f64::log10)
-        .filter(|u| *u > x.0);
+    let PeriodogramView {
+        points,
+        marked,
+        x,
+        y,
+        threshold,
+        unresolved,
+    } = view;
 
     render(style, |root| {
         let (w, h) = root.dim_in_pixel();

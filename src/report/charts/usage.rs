@@ -1,0 +1,322 @@
+//! The campaign summary's tolerance usage: each axis's worst parameter as a fraction of
+//! its limit, one horizontal bar each (900 × [`ratio_chart_height`] pixels).
+
+use super::iso::KIT;
+use crate::report::chart_kit::scene::Scene;
+use crate::report::chart_kit::*;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, VPos};
+
+pub use crate::report::chart_kit::Style;
+
+/// One bar of the campaign summary chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RatioBar {
+    pub label: String,
+    pub parameter: String,
+    pub ratio: f64,
+    pub pass: bool,
+}
+
+const BAR_OK: RGBColor = RGBColor(0x9D, 0xAF, 0xC8);
+const BAR_OK_EDGE: RGBColor = RGBColor(0x5F, 0x73, 0x8F);
+const BAR_OVER: RGBColor = RGBColor(0x6E, 0x14, 0x14);
+
+/// Ratios above this are drawn clipped at it, with an arrow marker.
+const RATIO_CLIP: f64 = 3.0;
+
+const RATIO_TOP: u32 = 44;
+const RATIO_BOTTOM: u32 = 56;
+
+fn ratio_row_height(bars: usize) -> u32 {
+    row_height(bars, &[(20, 24), (40, 20)], 18)
+}
+
+/// Height in pixels that fits `bars` rows of [`tolerance_usage`] at 900 px wide.
+pub fn ratio_chart_height(bars: usize) -> u32 {
+    let bars = bars.clamp(1, 500) as u32;
+    (RATIO_TOP + RATIO_BOTTOM + bars * ratio_row_height(bars as usize) + 10).max(170)
+}
+
+/// Horizontal bars: each axis's worst parameter as a fraction of its tolerance
+/// (ratio = |value| / limit), a vertical reference line at 1.0 labelled "limit", bars over
+/// 1.0 (or not passing) in a dark tone with a bold label, so they read in grey print, the
+/// parameter name and ratio printed at the bar's end (e.g. "B 2.60"). Ratios above 3 are
+/// clipped at the axis end with an arrow marker and keep their true value in the label.
+/// Size the height with [`ratio_chart_height`].
+pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> Scene {
+    if bars.is_empty() {
+        return message_chart(style, "No axes to summarise.");
+    }
+    let max_ratio = bars
+        .iter()
+        .map(|b| shown_ratio(b.ratio).min(RATIO_CLIP))
+        .fold(0.0, f64::max);
+    let x_max = (max_ratio * 1.04).max(1.2);
+    let clipped = bars.iter().any(|b| shown_ratio(b.ratio) > RATIO_CLIP);
+    render(style, |root| {
+        let columns = UsageColumns::of(bars, root.dim_in_pixel().0, clipped);
+        let chart = usage_axes(root, bars.len(), x_max, &columns)?;
+        let rows = usage_rows(&chart, bars.len());
+        // Bars first, then the limit line over them, then the texts on small backgrounds.
+        let ends = draw_usage_bars(root, &chart, bars, &rows, x_max)?;
+        draw_limit(root, &chart)?;
+        draw_usage_texts(root, &chart, bars, &columns, &rows, &ends)?;
+        draw_usage_key(root, clipped)
+    })
+}
+
+/// A ratio as drawn: not below 0, 0 when unknown.
+fn shown_ratio(r: f64) -> f64 {
+    if r.is_nan() { 0.0 } else { r.max(0.0) }
+}
+
+/// The label column's width, the value texts and the right margin that holds them.
+struct UsageColumns {
+    label_w: u32,
+    values: Vec<String>,
+    right: u32,
+}
+
+impl UsageColumns {
+    fn of(bars: &[RatioBar], w: u32, clipped: bool) -> UsageColumns {
+        let label_w = bars
+            .iter()
+            .map(|b| KIT.text_width(&b.label, TICK_PX))
+            .fold(0.0, f64::max)
+            .ceil()
+            .clamp(20.0, w as f64 * 0.3) as u32
+            + 14;
+        let values: Vec<String> = bars
+            .iter()
+            .map(|b| {
+                let value = fmt_fixed_for_print(b.ratio, 2);
+                if b.parameter.trim().is_empty() {
+                    value
+                } else {
+                    format!("{} {}", b.parameter.trim(), value)
+                }
+            })
+            .collect();
+        let value_w = values
+            .iter()
+            .map(|t| KIT.text_width(t, TICK_PX))
+            .fold(0.0, f64::max)
+            .ceil() as u32;
+        let right = (value_w + if clipped { 30 } else { 16 }).min(w / 3);
+        UsageColumns {
+            label_w,
+            values,
+            right,
+        }
+    }
+}
+
+/// The plot with stripes behind every other row (when there are many), the x axis with
+/// its grid, and the frame.
+fn usage_axes<'a>(
+    root: &'a Area,
+    n: usize,
+    x_max: f64,
+    columns: &UsageColumns,
+) -> Result<Chart<'a>, Failed> {
+    let mut chart = ChartBuilder::on(root)
+        .margin_top(RATIO_TOP)
+        .margin_right(columns.right)
+        .margin_left(8)
+        .margin_bottom(6)
+        .x_label_area_size(RATIO_BOTTOM - 6)
+        .y_label_area_size(columns.label_w)
+        .build_cartesian_2d(0.0..x_max, 0.0..n as f64)?;
+    let plot_w = root
+        .dim_in_pixel()
+        .0
+        .saturating_sub(columns.label_w + columns.right + 8);
+    let nx = x_tick_count(plot_w);
+    let (_, x_dec) = ticks((0.0, x_max), nx);
+    let x_fmt = move |v: &f64| fmt_fixed_for_print(*v, x_dec);
+    let (l, r, _, _) = plot_edges(&chart);
+    if n > 6 {
+        for &(rt, rb) in usage_rows(&chart, n).iter().skip(1).step_by(2) {
+            root.draw(&Rectangle::new([(l, rt), (r, rb)], STRIPE.filled()))?;
+        }
+    }
+    chart
+        .configure_mesh()
+        .x_labels(nx)
+        .y_labels(0)
+        .disable_y_mesh()
+        .x_label_formatter(&x_fmt)
+        .x_label_style(font(TICK_PX, false).color(&INK))
+        .y_label_style(font(TICK_PX, false).color(&INK))
+        .axis_desc_style(font(DESC_PX, false).color(&INK))
+        .x_desc("Worst parameter / tolerance")
+        .bold_line_style(GRID.stroke_width(1))
+        .light_line_style(TRANSPARENT)
+        .axis_style(FRAME.stroke_width(1))
+        .set_all_tick_mark_size(4)
+        .draw()?;
+    draw_frame_edges(root, &chart)?;
+    Ok(chart)
+}
+
+/// The plot's left, right, top and bottom pixel.
+fn plot_edges(chart: &Chart) -> (i32, i32, i32, i32) {
+    let (xr, yr) = chart.plotting_area().get_pixel_range();
+    (xr.start, xr.end - 1, yr.start, yr.end - 1)
+}
+
+/// Each row's top and bottom pixel, first bar at the top.
+fn usage_rows(chart: &Chart, n: usize) -> Vec<(i32, i32)> {
+    (0..n)
+        .map(|i| {
+            let top = chart.backend_coord(&(0.0, (n - i) as f64)).1;
+            let bottom = chart.backend_coord(&(0.0, (n - i - 1) as f64)).1;
+            (top, bottom)
+        })
+        .collect()
+}
+
+/// A row's bar height.
+fn usage_row_height(chart: &Chart, n: usize) -> f64 {
+    let (_, _, t, b) = plot_edges(chart);
+    ((b - t) as f64 / n as f64).max(1.0)
+}
+
+/// Draws the bars (and arrows where clipped); where each bar's text starts.
+fn draw_usage_bars(
+    root: &Area,
+    chart: &Chart,
+    bars: &[RatioBar],
+    rows: &[(i32, i32)],
+    x_max: f64,
+) -> Result<Vec<i32>, Failed> {
+    let (l, ..) = plot_edges(chart);
+    let row_h = usage_row_height(chart, bars.len());
+    let thickness = ((row_h * 0.62).round() as i32).clamp(2, 28);
+    let mut ends = Vec::with_capacity(bars.len());
+    for (bar, &(rt, rb)) in bars.iter().zip(rows) {
+        let mid = (rt + rb) / 2;
+        let ratio = shown_ratio(bar.ratio);
+        let end_x = chart
+            .backend_coord(&(ratio.min(RATIO_CLIP).min(x_max), 0.0))
+            .0;
+        let bar_box = [
+            (l, mid - thickness / 2),
+            (end_x, mid - thickness / 2 + thickness),
+        ];
+        if end_x > l && is_over(bar) {
+            root.draw(&Rectangle::new(bar_box, BAR_OVER.filled()))?;
+        } else if end_x > l {
+            root.draw(&Rectangle::new(bar_box, BAR_OK.filled()))?;
+            root.draw(&Rectangle::new(bar_box, BAR_OK_EDGE.stroke_width(1)))?;
+        }
+        if ratio > RATIO_CLIP {
+            // Clipped: an arrow head past the bar's end points on.
+            let half = (thickness / 2 + 2).max(4);
+            let head = vec![
+                (end_x + 1, mid - half),
+                (end_x + 1 + half + 2, mid),
+                (end_x + 1, mid + half),
+            ];
+            root.draw(&Polygon::new(head, INK.filled()))?;
+            ends.push(end_x + half + 8);
+        } else {
+            ends.push(end_x + 6);
+        }
+    }
+    Ok(ends)
+}
+
+/// Over its tolerance (or not passing): drawn dark.
+fn is_over(bar: &RatioBar) -> bool {
+    !bar.pass || bar.ratio > 1.0
+}
+
+/// The limit line at 1.0, labelled above the plot.
+fn draw_limit(root: &Area, chart: &Chart) -> Result<(), Failed> {
+    let (_, _, t, b) = plot_edges(chart);
+    let limit_x = chart.backend_coord(&(1.0, 0.0)).0;
+    root.draw(&PathElement::new(
+        vec![(limit_x, t - 4), (limit_x, b)],
+        INK.stroke_width(2),
+    ))?;
+    let style = text_style(TICK_PX, true, INK, HPos::Center, VPos::Bottom);
+    draw_text(root, "limit", (limit_x, t - 6), style)
+}
+
+fn row_text_style(bold: bool, color: RGBColor, h: HPos) -> TextStyle<'static> {
+    text_style(TICK_PX, bold, color, h, VPos::Center)
+}
+
+/// Each row's label left of the plot and its value at the bar's end, on a small
+/// background of the row's tone.
+fn draw_usage_texts(
+    root: &Area,
+    chart: &Chart,
+    bars: &[RatioBar],
+    columns: &UsageColumns,
+    rows: &[(i32, i32)],
+    ends: &[i32],
+) -> Result<(), Failed> {
+    let (l, r, ..) = plot_edges(chart);
+    let n = bars.len();
+    let row_h = usage_row_height(chart, n);
+    let text_h = (TICK_PX as i32 + 2).min(row_h as i32).max(4);
+    let rows = bars.iter().zip(&columns.values).zip(rows.iter().zip(ends));
+    for (i, ((bar, value), (&(rt, rb), &text_x))) in rows.enumerate() {
+        let mid = (rt + rb) / 2;
+        let label = KIT.fit_text(&bar.label, TICK_PX, columns.label_w as f64 - 12.0);
+        let plain = row_text_style(false, INK, HPos::Right);
+        draw_text(root, &label, (l - 8, mid), plain)?;
+        let tw = KIT.text_width(value, TICK_PX).ceil() as i32;
+        // The background stops at the plot's frame; past it the margin is white anyway.
+        let bg_right = (text_x + tw + 2).min(r - 1);
+        if bg_right > text_x {
+            let background = if n > 6 && i % 2 == 1 { STRIPE } else { WHITE };
+            let top = mid - text_h / 2;
+            let corners = [(text_x - 2, top), (bg_right, top + text_h)];
+            root.draw(&Rectangle::new(corners, background.filled()))?;
+        }
+        let (bold, color) = if is_over(bar) {
+            (true, BAR_OVER)
+        } else {
+            (false, INK)
+        };
+        draw_text(
+            root,
+            value,
+            (text_x, mid),
+            row_text_style(bold, color, HPos::Left),
+        )?;
+    }
+    Ok(())
+}
+
+/// Key on its own row above the "limit" label: what the two tones mean.
+fn draw_usage_key(root: &Area, clipped: bool) -> Result<(), Failed> {
+    let key_y = 14;
+    let mut kx = 10;
+    for (fill, edge, text) in [
+        (BAR_OK, Some(BAR_OK_EDGE), "within tolerance"),
+        (BAR_OVER, None, "over tolerance"),
+    ] {
+        let swatch = [(kx, key_y - 6), (kx + 22, key_y + 6)];
+        root.draw(&Rectangle::new(swatch, fill.filled()))?;
+        if let Some(edge) = edge {
+            root.draw(&Rectangle::new(swatch, edge.stroke_width(1)))?;
+        }
+        let style = row_text_style(false, INK, HPos::Left);
+        draw_text(root, text, (kx + 28, key_y), style)?;
+        kx += 28 + KIT.text_width(text, TICK_PX).ceil() as i32 + 22;
+    }
+    if clipped {
+        let note = format!(
+            "▶ ratio above {}, bar clipped",
+            fmt_fixed_for_print(RATIO_CLIP, 0)
+        );
+        let style = row_text_style(false, MUTED, HPos::Left);
+        draw_text(root, &note, (kx, key_y), style)?;
+    }
+    Ok(())
+}
