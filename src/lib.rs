@@ -8,6 +8,7 @@
 //! axis across them. [`simulate`] is the axis error model that produces test data.
 
 pub mod atomic;
+pub mod axis_model;
 pub mod batch;
 pub mod campaign;
 pub mod compensate;

@@ -6,7 +6,6 @@ use super::{
     AxisEntry, AxisRaw, AxisSpec, CampaignInfo, Machine, MachineInfo, model, parse_standard,
 };
 use crate::evaluate::StandardId;
-use crate::evaluate::catalogue;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::{self, Located, LocationIndex, deserialize_at};
 use serde_norway::Value;
@@ -335,23 +334,8 @@ fn check_backlash(
     }
 }
 
-/// Every limit names a parameter that can be limited, and is a number ≥ 0.
+/// Every limit names a parameter that can be limited, and is a number ≥ 0 (the check
+/// specs share: [`crate::judge::check_tolerances`]).
 fn check_tolerances(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
-    for (key, limit) in &raw.tolerances {
-        let path = format!("{base}.tolerances.{key}");
-        if !catalogue::is_limitable_key(key) {
-            let hint = crate::suggest::hint(key, catalogue::limitable_keys());
-            return Err(Located::new(
-                index.key(&path),
-                format!("{base}.tolerances: unknown parameter `{key}`{hint}"),
-            ));
-        }
-        if !(*limit >= 0.0 && limit.is_finite()) {
-            return Err(Located::new(
-                index.value(&path),
-                format!("{path}: expected a limit ≥ 0"),
-            ));
-        }
-    }
-    Ok(())
+    crate::judge::check_tolerances(base, &raw.tolerances, index)
 }

@@ -1,8 +1,8 @@
 //! The campaign file's types. Core keys are fixed (scripts write them); everything a
 //! test report needs by ISO 230-2 clause 7.1 has a key of its own.
 
+use crate::axis_model::Cycle;
 use crate::judge::DecisionRule;
-use crate::simulate::Cycle;
 use crate::uncertainty::InstrumentKind;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::describe;

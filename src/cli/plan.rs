@@ -3,10 +3,10 @@
 
 use super::text::right;
 use anyhow::{Context, Result, anyhow, bail};
+use axcheck::axis_model::Cycle;
 use axcheck::campaign::Campaign;
 use axcheck::evaluate::StandardId;
 use axcheck::plan::{self, Axis, Motion, Plan, laser, programs};
-use axcheck::simulate::Cycle;
 use axcheck::units::{AxisKind, Travel, fmt_fixed};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};

@@ -6,7 +6,7 @@ use crate::units::{AxisKind, fmt_fixed};
 use serde::{Deserialize, Serialize};
 
 mod spec;
-pub use spec::{BUILTIN_SPECS, Band, Spec};
+pub use spec::{BUILTIN_SPECS, Band, Spec, check_tolerances};
 use std::collections::BTreeMap;
 
 /// What the summary says of a test judged against no limit.

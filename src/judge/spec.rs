@@ -97,7 +97,18 @@ fn check_bands(group: &str, bands: &[Band], index: &LocationIndex) -> Result<(),
 
 /// Every limit of a band names a parameter that can be limited, and is a number ≥ 0.
 fn check_limits(here: &str, band: &Band, index: &LocationIndex) -> Result<(), Located> {
-    for (key, limit) in &band.tolerances {
+    check_tolerances(here, &band.tolerances, index)
+}
+
+/// Every limit of `tolerances` (at `here` in the file: a spec's band or a campaign's axis)
+/// names a parameter that can be limited, and is a number ≥ 0. The one check of limits,
+/// for specs and campaigns alike.
+pub fn check_tolerances<'a>(
+    here: &str,
+    tolerances: impl IntoIterator<Item = (&'a String, &'a f64)>,
+    index: &LocationIndex,
+) -> Result<(), Located> {
+    for (key, limit) in tolerances {
         let path = format!("{here}.tolerances.{key}");
         if !catalogue::is_limitable_key(key) {
             let hint = crate::suggest::hint(key, catalogue::limitable_keys());

@@ -3,8 +3,8 @@
 //! `axcheck simulate --plan`, `plan --from` and a campaign's `plan:` read it.
 
 use super::{Axis, Motion, Plan, PlanError};
+use crate::axis_model::Cycle;
 use crate::evaluate::StandardId;
-use crate::simulate::Cycle;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::{Located, YamlError};
 use serde::{Deserialize, Serialize};

@@ -5,7 +5,7 @@
 //! line, `Flags:`; the list rising, so odd runs are the ↑ ones).
 
 use super::Plan;
-use crate::simulate::Step;
+use crate::axis_model::Step;
 use crate::units::fmt_fixed;
 use std::fmt::Write;
 

@@ -10,10 +10,10 @@ pub mod laser;
 pub mod programs;
 pub mod targets;
 
+use crate::axis_model::{Cycle, TestPlan};
 use crate::evaluate::StandardId;
 use crate::measurement::{AxisData, RawReading};
 use crate::rules::{self, Finding, PlanContext};
-use crate::simulate::{Cycle, TestPlan};
 use crate::units::{AxisKind, Direction, Travel, fmt_position};
 
 /// The axis a plan is for.

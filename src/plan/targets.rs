@@ -5,9 +5,9 @@
 //! sampled at varying phases). Of many offset sets drawn from the seed, the one that
 //! spreads the targets' phases best over every declared period is kept.
 
+use crate::axis_model::rng::Rng;
 use crate::evaluate::StandardId;
 use crate::rules::{LINEAR_SHORT_MM, ROTARY_SHORT_DEG};
-use crate::simulate::rng::Rng;
 use crate::units::AxisKind;
 
 /// Offset sets drawn to find the best spread of phases.

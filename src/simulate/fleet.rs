@@ -5,8 +5,8 @@
 //! (n = 1, up to 40 targets at ≤ 250 mm), 12 % rotary axes up to 360° (n = 5) and 8 %
 //! rotary axes over 360° (n = 1, 45° steps). Three to five axes per machine.
 
-use super::rng::Rng;
-use super::{Cycle, ErrorModel, PeriodicTerm, Simulation, TestPlan};
+use crate::axis_model::rng::Rng;
+use crate::axis_model::{Cycle, ErrorModel, PeriodicTerm, Simulation, TestPlan};
 use crate::measurement::csv;
 use crate::units::AxisKind;
 use rayon::prelude::*;

@@ -5,7 +5,7 @@
 //! error, as is a key without its unit) before the typed parse, which reports line and
 //! column of bad values.
 
-use super::Cycle;
+use crate::axis_model::Cycle;
 use crate::units::{AxisKind, Direction};
 use crate::yaml::{Located, LocationIndex, describe, join, names_of, or_list};
 use serde_norway::{Mapping, Value};

@@ -10,8 +10,8 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[&[&str]] = &[
     &["units", "suggest", "files", "panics"],
     &["measurement", "yaml", "lock", "atomic"],
-    &["evaluate", "nde", "simulate"],
-    &["uncertainty", "crosscheck"],
+    &["evaluate", "nde", "axis_model"],
+    &["uncertainty", "crosscheck", "simulate"],
     &["rules", "judge", "diagnose", "trend"],
     &["compensate", "plan"],
     &["campaign", "verify"],

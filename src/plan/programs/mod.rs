@@ -17,7 +17,7 @@ pub mod siemens_840d;
 pub mod twincat;
 
 use super::Plan;
-use crate::simulate::Step;
+use crate::axis_model::Step;
 use crate::units::{AxisKind, Direction, fmt_fixed};
 
 /// Why a program cannot be written.

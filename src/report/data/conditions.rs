@@ -1,10 +1,10 @@
 //! The test conditions of ISO 230-2 clause 7.1 that the campaign gives, in the standard's
 //! order, and the temperature sensors.
 
+use crate::axis_model::Cycle;
 use crate::batch::AxisTest;
 use crate::campaign::{Air, Conditions, Instrument, Nde, SensorKind, TemperatureSensor};
 use crate::nde::NdeCorrection;
-use crate::simulate::Cycle;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 use serde::Serialize;
 

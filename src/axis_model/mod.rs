@@ -1,0 +1,116 @@
+//! The project's model of an axis: its error model ([`ErrorModel`]: progressive, periodic
+//! and reversal errors, scatter, drift, warm-up and thermal growth as Hemingray et al.
+//! 1971 describe them), the test plan that measures it ([`TestPlan`], ISO 230-2 4.2–4.3),
+//! and a test simulated from both ([`Simulation::run`]). `axcheck simulate` writes it to a
+//! file (`crate::simulate`); `axcheck diagnose` fits it to measured data.
+//!
+//! Output is deterministic for a seed: each random term draws from its own stream
+//! ([`rng`]).
+
+pub mod model;
+pub mod plan;
+pub mod rng;
+
+pub use model::{ErrorModel, Outlier, PeriodicTerm};
+pub use plan::{Cycle, Step, TargetSpacing, TestPlan, Visit};
+
+use crate::measurement::{AxisData, RawReading};
+use crate::units::AxisKind;
+use rng::Rng;
+use serde::{Deserialize, Serialize};
+
+/// A simulation file: axis kind, seed, error model and test plan.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Simulation {
+    #[serde(deserialize_with = "crate::yaml::keyword")]
+    pub kind: AxisKind,
+    #[serde(default)]
+    pub seed: u64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+    #[serde(default)]
+    pub model: ErrorModel,
+    pub plan: TestPlan,
+}
+
+/// Decimals kept in simulated deviations (as the CSV writer writes them).
+const DECIMALS: i32 = 4;
+
+impl Simulation {
+    pub fn validate(&self) -> Result<(), String> {
+        self.plan.validate()?;
+        let m = match (&self.plan.target_list, &self.plan.targets) {
+            (Some(l), _) => l.len(),
+            (None, Some(t)) => t.count,
+            _ => 0,
+        };
+        self.model.validate(self.plan.runs, m)
+    }
+
+    /// Runs the simulation with `seed` (the file's seed unless overridden).
+    pub fn run(&self, seed: u64) -> AxisData {
+        let kind = self.kind;
+        let plan = &self.plan;
+        let model = &self.model;
+        let targets = plan.target_positions(seed);
+        let travel = (targets[0], targets[targets.len() - 1]);
+        let visits = plan.schedule(&targets);
+
+        let mut offsets_rng = Rng::new(seed, 2);
+        let run_offsets: Vec<f64> = (0..plan.runs)
+            .map(|j| {
+                let fixed = model.run_offsets.get(j).copied().unwrap_or(0.0);
+                let random = if model.run_offset_sd > 0.0 {
+                    model.run_offset_sd * offsets_rng.normal()
+                } else {
+                    0.0
+                };
+                fixed + random
+            })
+            .collect();
+        let mut scatter_rng = Rng::new(seed, 3);
+        let mut outlier_rng = Rng::new(seed, 4);
+        let scale = 10f64.powi(DECIMALS);
+        let raw = visits
+            .iter()
+            .map(|v| {
+                let position = targets[v.target];
+                let mut x = model.expected(kind, position, v.direction, v.time_s, travel)
+                    + run_offsets[v.run];
+                // Draw for every reading, whatever σ, so streams stay aligned across models.
+                x += model.scatter_at(position, travel) * scatter_rng.normal();
+                let (hit, sign) = (outlier_rng.uniform(), outlier_rng.uniform());
+                if hit < model.outlier_rate {
+                    x += if sign < 0.5 {
+                        -model.outlier_size
+                    } else {
+                        model.outlier_size
+                    };
+                }
+                for o in &model.outliers {
+                    if o.run as usize == v.run + 1
+                        && o.target == v.target + 1
+                        && o.direction == v.direction
+                    {
+                        x += o.size;
+                    }
+                }
+                if model.resolution > 0.0 {
+                    x = (x / model.resolution).round() * model.resolution;
+                }
+                RawReading {
+                    target: position,
+                    direction: v.direction,
+                    run: v.run as u32 + 1,
+                    deviation: (x * scale).round() / scale + 0.0,
+                    time_s: Some((v.time_s * 1000.0).round() / 1000.0),
+                    temps_c: Vec::new(),
+                    line: 0,
+                }
+            })
+            .collect();
+        AxisData::from_raw(kind, raw, Vec::new(), "simulation")
+            .expect("a simulated plan visits every target in both directions in every run")
+    }
+}
