@@ -92,6 +92,36 @@ pub struct ParameterDef {
     pub approach: Approach,
     /// Needs repeated approaches: not applicable with n = 1 (ISO 230-2 clause 5.2).
     pub needs_repeats: bool,
+    /// What its value is made of, for the extent of its uncertainty
+    /// (`crate::uncertainty::extent`).
+    pub spread: Spread,
+}
+
+/// What a parameter's value is made of, which decides how far an error of the laser's
+/// reading moves it (the extent of its uncertainty budget, `crate::uncertainty::extent`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Spread {
+    /// The range of X̄ ± kS over the targets (A, A↑, A↓).
+    Band,
+    /// The range of the mean deviations X̄ of a direction (E, E↑, E↓).
+    Mean,
+    /// The range of the bidirectional mean deviations (M).
+    Bidirectional,
+    /// A repeatability at its target (R, R↑, R↓, R_max).
+    Repeatability,
+    /// The mean repeatability over the targets (GOST R̄).
+    MeanRepeatability,
+    /// The reversal value at its target (B, B_max).
+    ReversalAtTarget,
+    /// The mean reversal value over the targets (B̄).
+    ReversalMean,
+    /// Lost motion, a reversal value without statistics (NMTBA L, L̄).
+    LostMotion,
+    /// The scatter alone: `factor` σ, times the standard's coverage factor k when `of_k`
+    /// (VDI 3441 R_p = 2k σ, NMTBA spreads = k σ, VDI σ̄).
+    Scatter { factor: f64, of_k: bool },
+    /// Anything else: bounded by the measurement travel.
+    Travel,
 }
 
 impl ParameterDef {
@@ -130,7 +160,13 @@ const fn def(
         role: None,
         approach: Approach::Both,
         needs_repeats: false,
+        spread: Spread::Travel,
     }
+}
+
+/// `d`, whose value is made of `spread`.
+const fn made_of(spread: Spread, d: ParameterDef) -> ParameterDef {
+    ParameterDef { spread, ..d }
 }
 
 /// A unidirectional parameter: `d` in `approach` only.
@@ -169,212 +205,275 @@ const fn level(d: ParameterDef) -> ParameterDef {
 /// ISO 230-2:1997 clause 2 (= GB/T 17421.2-2000, A↓ as corrected by its amendment No. 1).
 pub mod iso230_2 {
     use super::*;
-    pub static A: ParameterDef = with_role(
-        repeated(def(
-            "A",
-            "A",
-            "bidirectional accuracy of positioning",
-            "ISO 230-2 2.23",
-            ISO,
-        )),
-        Role::Accuracy,
-    );
-    pub static A_UP: ParameterDef = only(
-        Approach::Up,
-        repeated(def(
-            "A_up",
-            "A↑",
-            "unidirectional accuracy of positioning ↑",
-            "ISO 230-2 2.22",
-            ISO,
-        )),
-    );
-    pub static A_DOWN: ParameterDef = only(
-        Approach::Down,
-        repeated(def(
-            "A_down",
-            "A↓",
-            "unidirectional accuracy of positioning ↓",
-            "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
-            ISO,
-        )),
-    );
-    pub static E: ParameterDef = with_role(
-        def(
-            "E",
-            "E",
-            "bidirectional systematic positional deviation",
-            "ISO 230-2 2.20",
-            ISO,
-        ),
-        Role::Systematic,
-    );
-    pub static E_UP: ParameterDef = only(
-        Approach::Up,
-        def(
-            "E_up",
-            "E↑",
-            "unidirectional systematic positional deviation ↑",
-            "ISO 230-2 2.19",
-            ISO,
+    pub static A: ParameterDef = made_of(
+        Spread::Band,
+        with_role(
+            repeated(def(
+                "A",
+                "A",
+                "bidirectional accuracy of positioning",
+                "ISO 230-2 2.23",
+                ISO,
+            )),
+            Role::Accuracy,
         ),
     );
-    pub static E_DOWN: ParameterDef = only(
-        Approach::Down,
-        def(
-            "E_down",
-            "E↓",
-            "unidirectional systematic positional deviation ↓",
-            "ISO 230-2 2.19",
-            ISO,
+    pub static A_UP: ParameterDef = made_of(
+        Spread::Band,
+        only(
+            Approach::Up,
+            repeated(def(
+                "A_up",
+                "A↑",
+                "unidirectional accuracy of positioning ↑",
+                "ISO 230-2 2.22",
+                ISO,
+            )),
         ),
     );
-    pub static M: ParameterDef = with_role(
-        def(
-            "M",
-            "M",
-            "range of the mean bidirectional positional deviation",
-            "ISO 230-2 2.21",
-            ISO,
+    pub static A_DOWN: ParameterDef = made_of(
+        Spread::Band,
+        only(
+            Approach::Down,
+            repeated(def(
+                "A_down",
+                "A↓",
+                "unidirectional accuracy of positioning ↓",
+                "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
+                ISO,
+            )),
         ),
-        Role::MeanRange,
     );
-    pub static R: ParameterDef = with_role(
-        repeated(def(
-            "R",
-            "R",
-            "bidirectional repeatability of positioning",
-            "ISO 230-2 2.18 (2.17)",
-            ISO,
-        )),
-        Role::Repeatability,
-    );
-    pub static R_UP: ParameterDef = only(
-        Approach::Up,
-        repeated(def(
-            "R_up",
-            "R↑",
-            "unidirectional repeatability of positioning ↑",
-            "ISO 230-2 2.18 (2.16)",
-            ISO,
-        )),
-    );
-    pub static R_DOWN: ParameterDef = only(
-        Approach::Down,
-        repeated(def(
-            "R_down",
-            "R↓",
-            "unidirectional repeatability of positioning ↓",
-            "ISO 230-2 2.18 (2.16)",
-            ISO,
-        )),
-    );
-    pub static B: ParameterDef = with_role(
-        def(
-            "B",
-            "B",
-            "reversal value of the axis",
-            "ISO 230-2 2.13",
-            ISO,
+    pub static E: ParameterDef = made_of(
+        Spread::Mean,
+        with_role(
+            def(
+                "E",
+                "E",
+                "bidirectional systematic positional deviation",
+                "ISO 230-2 2.20",
+                ISO,
+            ),
+            Role::Systematic,
         ),
-        Role::Reversal,
     );
-    pub static B_MEAN: ParameterDef = signed(def(
-        "B_mean",
-        "B̄",
-        "mean reversal value of the axis",
-        "ISO 230-2 2.14",
-        ISO,
-    ));
+    pub static E_UP: ParameterDef = made_of(
+        Spread::Mean,
+        only(
+            Approach::Up,
+            def(
+                "E_up",
+                "E↑",
+                "unidirectional systematic positional deviation ↑",
+                "ISO 230-2 2.19",
+                ISO,
+            ),
+        ),
+    );
+    pub static E_DOWN: ParameterDef = made_of(
+        Spread::Mean,
+        only(
+            Approach::Down,
+            def(
+                "E_down",
+                "E↓",
+                "unidirectional systematic positional deviation ↓",
+                "ISO 230-2 2.19",
+                ISO,
+            ),
+        ),
+    );
+    pub static M: ParameterDef = made_of(
+        Spread::Bidirectional,
+        with_role(
+            def(
+                "M",
+                "M",
+                "range of the mean bidirectional positional deviation",
+                "ISO 230-2 2.21",
+                ISO,
+            ),
+            Role::MeanRange,
+        ),
+    );
+    pub static R: ParameterDef = made_of(
+        Spread::Repeatability,
+        with_role(
+            repeated(def(
+                "R",
+                "R",
+                "bidirectional repeatability of positioning",
+                "ISO 230-2 2.18 (2.17)",
+                ISO,
+            )),
+            Role::Repeatability,
+        ),
+    );
+    pub static R_UP: ParameterDef = made_of(
+        Spread::Repeatability,
+        only(
+            Approach::Up,
+            repeated(def(
+                "R_up",
+                "R↑",
+                "unidirectional repeatability of positioning ↑",
+                "ISO 230-2 2.18 (2.16)",
+                ISO,
+            )),
+        ),
+    );
+    pub static R_DOWN: ParameterDef = made_of(
+        Spread::Repeatability,
+        only(
+            Approach::Down,
+            repeated(def(
+                "R_down",
+                "R↓",
+                "unidirectional repeatability of positioning ↓",
+                "ISO 230-2 2.18 (2.16)",
+                ISO,
+            )),
+        ),
+    );
+    pub static B: ParameterDef = made_of(
+        Spread::ReversalAtTarget,
+        with_role(
+            def(
+                "B",
+                "B",
+                "reversal value of the axis",
+                "ISO 230-2 2.13",
+                ISO,
+            ),
+            Role::Reversal,
+        ),
+    );
+    pub static B_MEAN: ParameterDef = made_of(
+        Spread::ReversalMean,
+        signed(def(
+            "B_mean",
+            "B̄",
+            "mean reversal value of the axis",
+            "ISO 230-2 2.14",
+            ISO,
+        )),
+    );
 }
 
 /// GOST 27843-88 clause 1 (coverage 3S).
 pub mod gost27843 {
     use super::*;
-    pub static A: ParameterDef = with_role(
-        repeated(def(
-            "A",
-            "A",
-            "bidirectional positioning accuracy",
-            "GOST 27843 1.14 (10)",
-            GOST,
-        )),
-        Role::Accuracy,
-    );
-    pub static A_UP: ParameterDef = only(
-        Approach::Up,
-        repeated(def(
-            "A_up",
-            "A↑",
-            "unidirectional positioning accuracy ↑",
-            "GOST 27843 1.14 (10)",
-            GOST,
-        )),
-    );
-    pub static A_DOWN: ParameterDef = only(
-        Approach::Down,
-        repeated(def(
-            "A_down",
-            "A↓",
-            "unidirectional positioning accuracy ↓",
-            "GOST 27843 1.14 (10)",
-            GOST,
-        )),
-    );
-    pub static R_MAX: ParameterDef = with_role(
-        repeated(def(
-            "R_max",
-            "R_max",
-            "bidirectional positioning repeatability",
-            "GOST 27843 1.11, 1.13 (8)",
-            GOST,
-        )),
-        Role::Repeatability,
-    );
-    pub static R_UP: ParameterDef = only(
-        Approach::Up,
-        repeated(def(
-            "R_up",
-            "R↑",
-            "unidirectional positioning repeatability ↑",
-            "GOST 27843 1.10, 1.13 (7)",
-            GOST,
-        )),
-    );
-    pub static R_DOWN: ParameterDef = only(
-        Approach::Down,
-        repeated(def(
-            "R_down",
-            "R↓",
-            "unidirectional positioning repeatability ↓",
-            "GOST 27843 1.10, 1.13 (7)",
-            GOST,
-        )),
-    );
-    pub static R_MEAN: ParameterDef = repeated(def(
-        "R_mean",
-        "R̄",
-        "mean bidirectional positioning repeatability",
-        "GOST 27843 1.12 (9)",
-        GOST,
-    ));
-    pub static B_MAX: ParameterDef = with_role(
-        def(
-            "B_max",
-            "B_max",
-            "maximum dead band (reversal)",
-            "GOST 27843 1.16",
-            GOST,
+    pub static A: ParameterDef = made_of(
+        Spread::Band,
+        with_role(
+            repeated(def(
+                "A",
+                "A",
+                "bidirectional positioning accuracy",
+                "GOST 27843 1.14 (10)",
+                GOST,
+            )),
+            Role::Accuracy,
         ),
-        Role::Reversal,
     );
-    pub static B_MEAN: ParameterDef = signed(def(
-        "B_mean",
-        "B̄",
-        "mean dead band (reversal)",
-        "GOST 27843 1.15",
-        GOST,
-    ));
+    pub static A_UP: ParameterDef = made_of(
+        Spread::Band,
+        only(
+            Approach::Up,
+            repeated(def(
+                "A_up",
+                "A↑",
+                "unidirectional positioning accuracy ↑",
+                "GOST 27843 1.14 (10)",
+                GOST,
+            )),
+        ),
+    );
+    pub static A_DOWN: ParameterDef = made_of(
+        Spread::Band,
+        only(
+            Approach::Down,
+            repeated(def(
+                "A_down",
+                "A↓",
+                "unidirectional positioning accuracy ↓",
+                "GOST 27843 1.14 (10)",
+                GOST,
+            )),
+        ),
+    );
+    pub static R_MAX: ParameterDef = made_of(
+        Spread::Repeatability,
+        with_role(
+            repeated(def(
+                "R_max",
+                "R_max",
+                "bidirectional positioning repeatability",
+                "GOST 27843 1.11, 1.13 (8)",
+                GOST,
+            )),
+            Role::Repeatability,
+        ),
+    );
+    pub static R_UP: ParameterDef = made_of(
+        Spread::Repeatability,
+        only(
+            Approach::Up,
+            repeated(def(
+                "R_up",
+                "R↑",
+                "unidirectional positioning repeatability ↑",
+                "GOST 27843 1.10, 1.13 (7)",
+                GOST,
+            )),
+        ),
+    );
+    pub static R_DOWN: ParameterDef = made_of(
+        Spread::Repeatability,
+        only(
+            Approach::Down,
+            repeated(def(
+                "R_down",
+                "R↓",
+                "unidirectional positioning repeatability ↓",
+                "GOST 27843 1.10, 1.13 (7)",
+                GOST,
+            )),
+        ),
+    );
+    pub static R_MEAN: ParameterDef = made_of(
+        Spread::MeanRepeatability,
+        repeated(def(
+            "R_mean",
+            "R̄",
+            "mean bidirectional positioning repeatability",
+            "GOST 27843 1.12 (9)",
+            GOST,
+        )),
+    );
+    pub static B_MAX: ParameterDef = made_of(
+        Spread::ReversalAtTarget,
+        with_role(
+            def(
+                "B_max",
+                "B_max",
+                "maximum dead band (reversal)",
+                "GOST 27843 1.16",
+                GOST,
+            ),
+            Role::Reversal,
+        ),
+    );
+    pub static B_MEAN: ParameterDef = made_of(
+        Spread::ReversalMean,
+        signed(def(
+            "B_mean",
+            "B̄",
+            "mean dead band (reversal)",
+            "GOST 27843 1.15",
+            GOST,
+        )),
+    );
 }
 
 /// VDI 3441 as Hemingray, Cowley and Burdekin (1971) describe it, §3.2.
@@ -392,13 +491,19 @@ pub mod vdi3441 {
         CLAUSE,
         VDI,
     ));
-    pub static SIGMA_MEAN: ParameterDef = repeated(def(
-        "sigma_mean",
-        "σ̄",
-        "mean standard deviation from ranges, σi = Ri/d",
-        CLAUSE,
-        VDI,
-    ));
+    pub static SIGMA_MEAN: ParameterDef = made_of(
+        Spread::Scatter {
+            factor: 1.0,
+            of_k: false,
+        },
+        repeated(def(
+            "sigma_mean",
+            "σ̄",
+            "mean standard deviation from ranges, σi = Ri/d",
+            CLAUSE,
+            VDI,
+        )),
+    );
     pub static G_UPPER: ParameterDef = level(repeated(def(
         "G_upper",
         "G_o",
@@ -420,8 +525,13 @@ pub mod vdi3441 {
         CLAUSE,
         VDI,
     ));
-    pub static R_P: ParameterDef =
-        repeated(def("R_p", "R_p", "position scatter width 6σ", CLAUSE, VDI));
+    pub static R_P: ParameterDef = made_of(
+        Spread::Scatter {
+            factor: 2.0,
+            of_k: true,
+        },
+        repeated(def("R_p", "R_p", "position scatter width 6σ", CLAUSE, VDI)),
+    );
 }
 
 /// The NMTBA accuracy definition as Hemingray, Cowley and Burdekin (1971) describe it, §3.1.
@@ -465,41 +575,65 @@ pub mod nmtba {
         CLAUSE,
         NMTBA,
     )));
-    pub static SPREAD: ParameterDef = repeated(def(
-        "spread",
-        "3σ_b",
-        "largest bidirectional scatter 3σ",
-        CLAUSE,
-        NMTBA,
-    ));
-    pub static SPREAD_UP: ParameterDef = only(
-        Approach::Up,
+    pub static SPREAD: ParameterDef = made_of(
+        Spread::Scatter {
+            factor: 1.0,
+            of_k: true,
+        },
         repeated(def(
-            "spread_up",
-            "3σ_u↑",
-            "largest unidirectional scatter 3σ",
+            "spread",
+            "3σ_b",
+            "largest bidirectional scatter 3σ",
             CLAUSE,
             NMTBA,
         )),
     );
-    pub static SPREAD_DOWN: ParameterDef = only(
-        Approach::Down,
-        repeated(def(
-            "spread_down",
-            "3σ_u↓",
-            "largest unidirectional scatter 3σ",
+    pub static SPREAD_UP: ParameterDef = made_of(
+        Spread::Scatter {
+            factor: 1.0,
+            of_k: true,
+        },
+        only(
+            Approach::Up,
+            repeated(def(
+                "spread_up",
+                "3σ_u↑",
+                "largest unidirectional scatter 3σ",
+                CLAUSE,
+                NMTBA,
+            )),
+        ),
+    );
+    pub static SPREAD_DOWN: ParameterDef = made_of(
+        Spread::Scatter {
+            factor: 1.0,
+            of_k: true,
+        },
+        only(
+            Approach::Down,
+            repeated(def(
+                "spread_down",
+                "3σ_u↓",
+                "largest unidirectional scatter 3σ",
+                CLAUSE,
+                NMTBA,
+            )),
+        ),
+    );
+    pub static L_MAX: ParameterDef = made_of(
+        Spread::LostMotion,
+        def(
+            "L_max",
+            "L_max",
+            "largest lost motion |X̄i↑ − X̄i↓|",
             CLAUSE,
             NMTBA,
-        )),
+        ),
     );
-    pub static L_MAX: ParameterDef = def(
-        "L_max",
-        "L_max",
-        "largest lost motion |X̄i↑ − X̄i↓|",
-        CLAUSE,
-        NMTBA,
+    pub static L_MEAN: ParameterDef = made_of(
+        Spread::LostMotion,
+        signed(def("L_mean", "L̄", "mean lost motion", CLAUSE, NMTBA)),
     );
-    pub static L_MEAN: ParameterDef = signed(def("L_mean", "L̄", "mean lost motion", CLAUSE, NMTBA));
 }
 
 /// Every definition, each standard's in the order the standard lists them.

@@ -14,7 +14,7 @@
 //! deviation σ·√(1 − c4²) with E[s] = c4·σ, so u(s) = s·√(1 − c4²)/c4 (GUM E.4.3 gives
 //! the first-order form 1/√(2(n−1))).
 
-use crate::evaluate::catalogue::{Approach, Quantity};
+use crate::evaluate::catalogue::{Approach, Quantity, Spread};
 use crate::evaluate::{Evaluation, Parameter, StandardId, TargetResult};
 use crate::units::Direction;
 
@@ -88,19 +88,21 @@ pub fn of(e: &Evaluation, p: &Parameter) -> Option<Extent> {
         StandardId::Iso230_2 | StandardId::Gbt17421_2 | StandardId::Gost27843
     );
     let k = e.coverage_factor;
-    Some(match (band, p.key()) {
-        (true, "A" | "A_up" | "A_down") => range(e, p, Term::Band),
-        (true, "E" | "E_up" | "E_down") => range(e, p, Term::Mean),
-        (true, "M") => range(e, p, Term::Bidirectional),
-        (true, "R" | "R_max" | "R_up" | "R_down") => repeatability(e, p),
-        (true, "R_mean") => mean_repeatability(e),
-        (true, "B" | "B_max") => reversal(e, p.at_target.and_then(|i| e.targets.get(i..=i))),
-        (true, "B_mean") => reversal(e, Some(&e.targets)),
+    Some(match (band, p.def.spread) {
+        (true, Spread::Band) => range(e, p, Term::Band),
+        (true, Spread::Mean) => range(e, p, Term::Mean),
+        (true, Spread::Bidirectional) => range(e, p, Term::Bidirectional),
+        (true, Spread::Repeatability) => repeatability(e, p),
+        (true, Spread::MeanRepeatability) => mean_repeatability(e),
+        (true, Spread::ReversalAtTarget) => {
+            reversal(e, p.at_target.and_then(|i| e.targets.get(i..=i)))
+        }
+        (true, Spread::ReversalMean) => reversal(e, Some(&e.targets)),
         // VDI 3441 and NMTBA: no statistical part (see the README).
-        (false, "R_p") => scatter_only(2.0 * k),
-        (false, "spread" | "spread_up" | "spread_down") => scatter_only(k),
-        (false, "sigma_mean") => scatter_only(1.0),
-        (false, "L_max" | "L_mean") => reversal(e, None),
+        (false, Spread::Scatter { factor, of_k }) => {
+            scatter_only(if of_k { factor * k } else { factor })
+        }
+        (false, Spread::LostMotion) => reversal(e, None),
         _ => Extent::range(travel(e)),
     })
 }
