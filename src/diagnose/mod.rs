@@ -32,6 +32,7 @@ mod confirm;
 mod corrected;
 pub mod cross;
 pub mod effects;
+mod extended;
 mod finding;
 mod fitted;
 mod json;
@@ -44,16 +45,17 @@ mod residuals;
 mod reversal;
 mod scatter;
 mod select;
-pub use select::{Scheme, TermGain};
+pub use select::{Scheme, TermGain, Unconfirmed};
 pub mod stats;
 mod time;
+mod time_fit;
 mod timeline;
 mod validate;
 mod warm;
 
 pub use checks::ModelCheck;
-pub use effects::{Effect, Estimate, Typed};
-pub use finding::{Evidence, Finding, Unconfirmed, Units};
+pub use effects::{Effect, Estimate, Finding, Typed};
+pub use finding::{Evidence, Units};
 pub use prep::TimeUnit;
 
 use crate::evaluate::StandardId;

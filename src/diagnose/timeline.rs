@@ -25,7 +25,7 @@ use super::analysis::Analysis;
 use super::effects::Effect;
 use super::fitted::Fitted;
 use super::prep::TimeUnit;
-use super::time::warm_shape;
+use super::time_fit::warm_shape;
 use super::{CurvePoint, RunMean, TimeEffect};
 use crate::units::Direction;
 
