@@ -8,13 +8,14 @@
 //! ([`super::periodic`]).
 
 use super::finding::Units;
+use super::options::ALPHA;
 use super::outliers::{self, Hit};
 use super::periodic::{self, Search};
 use super::prep::{Prep, TimeUnit};
 use super::reversal::{self, ReversalTest};
 use super::scatter::{self, ScatterTest};
 use super::time::{self, TimeTests};
-use super::{ALPHA, linalg, stats};
+use super::{linalg, stats};
 use crate::measurement::AxisData;
 
 /// What the tests found out about one measurement.

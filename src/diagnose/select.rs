@@ -2,9 +2,9 @@
 //! is kept when its held-out gain over the terms kept before it ([`super::validate`]; a
 //! periodic term on the leave-targets-out RMS of the target means) is positive and larger
 //! than that of every one of 19 unrelated terms of the same size ([`super::confirm`]).
-//! A finding whose term is left out is reported as [`Unconfirmed`], with its gain.
+//! A finding whose term is left out is reported as [`Unconfirmed`], with its gain; the
+//! held-out errors of the base and the extended model as [`ModelFit`].
 
-use super::ModelFit;
 use super::analysis::Analysis;
 use super::confirm::{self, Unrelated};
 use super::effects::Finding;
@@ -201,6 +201,18 @@ impl Serialize for Unconfirmed {
         }
         .serialize(s)
     }
+}
+
+/// A model and its held-out error.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ModelFit {
+    pub terms: Vec<String>,
+    /// Held-out RMS prediction error of the readings, µm or arcsec (NaN for n = 1).
+    pub heldout_rms: f64,
+    /// Held-out mean negative log predictive density per reading (judges the scatter term).
+    pub heldout_nlpd: f64,
+    /// Leave-one-target-out RMS of the target means (when a periodic term was judged).
+    pub between_targets_rms: Option<f64>,
 }
 
 /// The kept terms and the held-out errors of the base and the extended model.

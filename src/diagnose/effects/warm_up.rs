@@ -9,10 +9,11 @@ use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
+use crate::diagnose::model::r4;
+use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::TimeUnit;
 use crate::diagnose::time_fit::warm_shape;
 use crate::diagnose::warm::{WarmEstimate, WarmTest, tau_range};
-use crate::diagnose::{ALPHA, model::r4};
 use crate::simulate::ErrorModel;
 use crate::units::AxisKind;
 
