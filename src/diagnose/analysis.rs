@@ -8,13 +8,14 @@
 //! ([`super::periodic`]).
 
 use super::finding::Units;
+use super::options::ALPHA;
 use super::outliers::{self, Hit};
 use super::periodic::{self, Search};
 use super::prep::{Prep, TimeUnit};
 use super::reversal::{self, ReversalTest};
 use super::scatter::{self, ScatterTest};
 use super::time::{self, TimeTests};
-use super::{ALPHA, effects, linalg, stats};
+use super::{linalg, stats};
 use crate::measurement::AxisData;
 
 /// What the tests found out about one measurement.
@@ -79,7 +80,7 @@ impl<'a> Analysis<'a> {
                 .collect()
         });
         let ps = periodic::search(&prep.positions, &means, mvar.as_deref(), pitch, ALPHA);
-        effects::periodic::plan_notes(&ps.resolution, pitch, data.kind, notes);
+        periodic::plan_notes(&ps.resolution, pitch, data.kind, notes);
         Analysis {
             data,
             units: Units {

@@ -3,9 +3,9 @@
 //! bootstrap). A measured value outside the simulated 2.5–97.5 % band is something the
 //! standard's model does not explain.
 
-use super::Options;
 use super::analysis::Analysis;
 use super::finding::fmt;
+use super::options::Options;
 use super::periodic::{self, Grid, Trend};
 use super::prep::Prep;
 use super::stats::quantile_sorted;

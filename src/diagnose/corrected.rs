@@ -1,11 +1,26 @@
 //! The standard's parameters as measured and, beside them, with each kept effect removed
-//! from the readings (and with all of them removed when there are several).
+//! from the readings (and with all of them removed when there are several): the types
+//! ([`Corrected`]) and how they are computed.
 
 use super::analysis::Analysis;
 use super::effects::Effect;
 use super::fitted::Fitted;
-use super::{Corrected, CorrectedParameter};
 use crate::evaluate::{StandardId, evaluate};
+
+/// One parameter as measured and with an effect removed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CorrectedParameter {
+    pub key: String,
+    pub measured: f64,
+    pub corrected: f64,
+}
+
+/// The standard's parameters with one kept effect (or `all`) removed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Corrected {
+    pub effect: String,
+    pub parameters: Vec<CorrectedParameter>,
+}
 
 /// The parameters of `standard` without each of the `kept` effects; an effect that cannot
 /// be subtracted gets a note instead.

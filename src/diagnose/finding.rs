@@ -1,14 +1,16 @@
-//! A finding: one named cause with its typed estimate, the evidence and a message.
+//! What a finding is made of, below the effects that write one: the units of its
+//! parameters ([`Units`]), its evidence ([`Evidence`]), what each effect's estimate gives
+//! the stable interface ([`Fields`]) and the number formats of the messages. The finding
+//! itself ([`super::Finding`]: one named cause with its typed estimate, the evidence and a
+//! message) stands with the vocabulary of effects, since its estimate is one of theirs.
 //!
-//! The estimate is one type per effect ([`super::effects`]); its parameters reach the JSON
+//! The estimate is one type per effect (`effects/`); its parameters reach the JSON
 //! under keys that carry the units (`rate_um_per_h`, `period_mm` …). Those keys are a
 //! stable interface (`diagnose --json`, `results.json`), so each effect builds them in one
 //! place, its `params`, which the JSON, the text and the report all read; beside them its
 //! `advice`, what a user can do about the cause.
 
-use super::effects::{Effect, Estimate};
 use super::prep::TimeUnit;
-use super::select::{Scheme, TermGain};
 use crate::units::{AxisKind, fmt_fixed};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
@@ -79,136 +81,6 @@ impl Evidence {
     }
 }
 
-/// One named cause.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Finding {
-    pub estimate: Estimate,
-    pub units: Units,
-    pub evidence: Evidence,
-    pub message: String,
-}
-
-impl Finding {
-    pub fn effect(&self) -> Effect {
-        self.estimate.effect()
-    }
-
-    /// The estimate as the parameters of the stable interface: keys with units, in order.
-    pub fn params(&self) -> Vec<(String, f64)> {
-        self.estimate.fields().params(self.units)
-    }
-
-    /// Non-numeric facts (an outlier's direction …), in order.
-    pub fn labels(&self) -> Vec<(&'static str, &'static str)> {
-        self.estimate.fields().labels()
-    }
-
-    /// `key = value, …, label = text`: the parameters and labels, numbers written by `num`.
-    pub fn params_text(&self, num: impl Fn(f64) -> String) -> String {
-        self.params()
-            .iter()
-            .map(|(k, v)| format!("{k} = {}", num(*v)))
-            .chain(self.labels().iter().map(|(k, v)| format!("{k} = {v}")))
-            .collect::<Vec<_>>()
-            .join(", ")
-    }
-
-    /// What to do next about this cause (`advice` in the JSON).
-    pub fn advice(&self) -> String {
-        self.estimate.fields().advice(self.units)
-    }
-
-    /// The parameter with `key` (a key of [`Finding::params`]).
-    pub fn param(&self, key: &str) -> Option<f64> {
-        self.params()
-            .into_iter()
-            .find(|(k, _)| k == key)
-            .map(|(_, v)| v)
-    }
-}
-
-/// A finding of an effect's test whose term the held-out prediction does not confirm: its
-/// gain is no larger than what a term unrelated to the data gains
-/// ([`super::confirm`]). Reported beside the findings, not as one.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Unconfirmed {
-    pub finding: Finding,
-    /// How the term was judged, its gain and the largest gain of the unrelated terms
-    /// (see [`TermGain`]).
-    pub scheme: Scheme,
-    pub gain_pct: f64,
-    pub threshold_pct: f64,
-}
-
-impl Unconfirmed {
-    /// Splits the findings of the tests into those whose term is kept (or was not
-    /// judged: no held-out validation) and those whose term is left out.
-    pub(crate) fn split(
-        seen: Vec<Finding>,
-        gains: &[TermGain],
-    ) -> (Vec<Finding>, Vec<Unconfirmed>) {
-        let mut findings = Vec::new();
-        let mut unconfirmed = Vec::new();
-        for f in seen {
-            match gains.iter().find(|g| g.effect == f.effect() && !g.kept) {
-                Some(g) => unconfirmed.push(Unconfirmed {
-                    finding: f,
-                    scheme: g.scheme,
-                    gain_pct: g.gain_pct,
-                    threshold_pct: g.threshold_pct,
-                }),
-                None => findings.push(f),
-            }
-        }
-        (findings, unconfirmed)
-    }
-
-    /// `+0.8 % held out (k-fold over readings, RMS); 19 unrelated terms of the same size
-    /// up to +1.9 %`.
-    pub fn describe(&self) -> String {
-        let threshold = if self.threshold_pct.is_finite() {
-            format!("up to {:+.1} %", self.threshold_pct)
-        } else {
-            "not scored".to_string()
-        };
-        format!(
-            "{:+.1} % held out ({}); 19 unrelated terms of the same size {threshold}",
-            self.gain_pct,
-            self.scheme.describe()
-        )
-    }
-}
-
-/// An unconfirmed finding as the stable JSON has it.
-#[derive(serde::Serialize)]
-struct UnconfirmedJson<'a> {
-    effect: Effect,
-    params: Keyed<String, f64>,
-    labels: Keyed<&'static str, &'static str>,
-    evidence: &'a Evidence,
-    message: &'a str,
-    scheme: Scheme,
-    gain_pct: f64,
-    threshold_pct: f64,
-}
-
-impl Serialize for Unconfirmed {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let f = &self.finding;
-        UnconfirmedJson {
-            effect: f.effect(),
-            params: Keyed(f.params()),
-            labels: Keyed(f.labels()),
-            evidence: &f.evidence,
-            message: &f.message,
-            scheme: self.scheme,
-            gain_pct: self.gain_pct,
-            threshold_pct: self.threshold_pct,
-        }
-        .serialize(s)
-    }
-}
-
 /// What each effect's estimate gives the stable interface.
 pub(crate) trait Fields {
     /// Numeric parameters, keys with units, in output order.
@@ -222,7 +94,7 @@ pub(crate) trait Fields {
 }
 
 /// Pairs serialised as a map, in order.
-struct Keyed<K, V>(Vec<(K, V)>);
+pub(crate) struct Keyed<K, V>(pub(crate) Vec<(K, V)>);
 
 impl<K: Serialize, V: Serialize> Serialize for Keyed<K, V> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -231,31 +103,6 @@ impl<K: Serialize, V: Serialize> Serialize for Keyed<K, V> {
             map.serialize_entry(k, v)?;
         }
         map.end()
-    }
-}
-
-/// A finding as the stable JSON has it.
-#[derive(serde::Serialize)]
-struct FindingJson<'a> {
-    effect: Effect,
-    params: Keyed<String, f64>,
-    labels: Keyed<&'static str, &'static str>,
-    evidence: &'a Evidence,
-    message: &'a str,
-    advice: String,
-}
-
-impl Serialize for Finding {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        FindingJson {
-            effect: self.effect(),
-            params: Keyed(self.params()),
-            labels: Keyed(self.labels()),
-            evidence: &self.evidence,
-            message: &self.message,
-            advice: self.advice(),
-        }
-        .serialize(s)
     }
 }
 

@@ -32,11 +32,13 @@ mod confirm;
 mod corrected;
 pub mod cross;
 pub mod effects;
+mod extended;
 mod finding;
 mod fitted;
 mod json;
 mod linalg;
 mod model;
+mod options;
 mod outliers;
 mod periodic;
 mod prep;
@@ -44,176 +46,30 @@ mod residuals;
 mod reversal;
 mod scatter;
 mod select;
-pub use select::{Scheme, TermGain};
+pub use select::{Scheme, TermGain, Unconfirmed};
 pub mod stats;
 mod time;
+mod time_fit;
 mod timeline;
 mod validate;
 mod warm;
 
 pub use checks::ModelCheck;
-pub use effects::{Effect, Estimate, Typed};
-pub use finding::{Evidence, Finding, Unconfirmed, Units};
+pub use corrected::{Corrected, CorrectedParameter};
+pub use effects::{Effect, Estimate, Finding, Typed};
+pub use finding::{Evidence, Units};
+pub use options::{ALPHA, Options};
 pub use prep::TimeUnit;
+pub use residuals::{AxisPoint, PeriodogramPoint, ResidualPoint, Residuals};
+pub use select::ModelFit;
+pub use timeline::{CurvePoint, RunMean, TimeEffect};
 
 use crate::evaluate::StandardId;
 use crate::measurement::AxisData;
 use crate::simulate::Simulation;
-use crate::units::{AxisKind, Direction};
+use crate::units::AxisKind;
 use analysis::Analysis;
 use fitted::Fitted;
-use serde::Serialize;
-
-/// Level of each effect's test: eight tests at 0.1 % leave data the base model explains
-/// without a finding in at least 99.2 % of tests.
-pub const ALPHA: f64 = 0.001;
-
-/// Options of a diagnosis.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Options {
-    /// Declared lead-screw or encoder pitch (mm or deg): tested as a prior candidate
-    /// period, and named in the advice when the plan cannot resolve it.
-    pub pitch: Option<f64>,
-    /// Monte-Carlo tests simulated from the fitted base model for the model checks.
-    pub simulations: usize,
-    /// Seed of the simulations and the cross-validation folds.
-    pub seed: u64,
-    /// Standard of the "as measured / effect removed" parameters.
-    pub standard: StandardId,
-}
-
-impl Default for Options {
-    fn default() -> Options {
-        Options {
-            pitch: None,
-            simulations: 200,
-            seed: 0,
-            standard: StandardId::Iso230_2,
-        }
-    }
-}
-
-/// A model and its held-out error.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ModelFit {
-    pub terms: Vec<String>,
-    /// Held-out RMS prediction error of the readings, µm or arcsec (NaN for n = 1).
-    pub heldout_rms: f64,
-    /// Held-out mean negative log predictive density per reading (judges the scatter term).
-    pub heldout_nlpd: f64,
-    /// Leave-one-target-out RMS of the target means (when a periodic term was judged).
-    pub between_targets_rms: Option<f64>,
-}
-
-/// A reading's residuals, for charts.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ResidualPoint {
-    /// Rank in time (time stamps, or the standard test cycle's order without them).
-    pub order: usize,
-    pub time_s: Option<f64>,
-    pub position: f64,
-    pub direction: Direction,
-    /// Run label as in the file.
-    pub run: u32,
-    /// Reading minus its cell mean (target and direction).
-    pub residual: f64,
-    /// Reading minus the extended model's prediction.
-    pub extended_residual: f64,
-}
-
-/// The systematic deviation along the axis, for charts.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct AxisPoint {
-    pub position: f64,
-    /// Bidirectional mean X̄i of the readings corrected for time effects.
-    pub mean: f64,
-    /// Its smooth (cubic) trend.
-    pub trend: f64,
-    /// mean − trend: what the periodic search looks at.
-    pub residual: f64,
-    /// Reversal value Bi of the corrected readings.
-    pub reversal: f64,
-}
-
-/// One point of the periodogram.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct PeriodogramPoint {
-    pub period: f64,
-    /// Normalised power: the share of the trend residuals' sum of squares a sinusoid of
-    /// this period explains.
-    pub power: f64,
-}
-
-/// Residual data for charts.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Residuals {
-    pub readings: Vec<ResidualPoint>,
-    pub along_axis: Vec<AxisPoint>,
-    /// Lomb–Scargle periodogram of `along_axis` residuals.
-    pub periodogram: Vec<PeriodogramPoint>,
-    /// The kept drift, warm-up or thermal growth against the run means (None when the
-    /// extended model keeps none of them).
-    pub time_effect: Option<TimeEffect>,
-}
-
-/// A kept effect in time drawn against the run means ([`timeline`]).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct TimeEffect {
-    /// The kept terms the curve holds: `drift`, `warm_up`, `thermal_growth`.
-    pub terms: Vec<Effect>,
-    /// Each run's mean partial residual for the effect (a reading less its target and
-    /// direction's systematic deviation as the extended model has it, less the effect's
-    /// mean over the readings), per direction.
-    pub run_means: Vec<RunMean>,
-    /// The fitted effect at the mean target position, less its mean over the readings
-    /// (as the residuals are less their cell's mean), at times across the test.
-    pub curve: Vec<CurvePoint>,
-    /// Half-width of the band about the curve, 2σ/√k: σ the extended model's scatter, k
-    /// the readings of a run in one direction; a run mean lies inside in 95 % of tests
-    /// when the curve is all the time effect there is.
-    pub band: f64,
-    /// The extended model's scatter σ (the residuals after it lie within ±2σ).
-    pub sigma: f64,
-}
-
-/// One run's mean partial residual in one direction.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct RunMean {
-    /// Run label as in the file.
-    pub run: u32,
-    pub direction: Direction,
-    /// Mean time of its readings, s (None without time stamps).
-    pub time_s: Option<f64>,
-    /// Mean rank of its readings in time (0-based).
-    pub order: f64,
-    pub mean: f64,
-    pub readings: usize,
-}
-
-/// One point of a fitted curve in time.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct CurvePoint {
-    /// Time, s (None without time stamps).
-    pub time_s: Option<f64>,
-    /// Rank in time it falls at (the standard test cycle's order without time stamps).
-    pub order: f64,
-    pub value: f64,
-}
-
-/// One parameter as measured and with an effect removed.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CorrectedParameter {
-    pub key: String,
-    pub measured: f64,
-    pub corrected: f64,
-}
-
-/// The standard's parameters with one kept effect (or `all`) removed.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Corrected {
-    pub effect: String,
-    pub parameters: Vec<CorrectedParameter>,
-}
 
 /// The result of a diagnosis.
 #[derive(Debug, Clone, PartialEq)]

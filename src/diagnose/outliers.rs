@@ -11,7 +11,7 @@
 
 use super::prep::Prep;
 use super::stats::t_two_sided;
-use super::time::{Terms, fit};
+use super::time_fit::{Terms, fit};
 
 /// One outlier.
 #[derive(Debug, Clone)]

@@ -19,6 +19,7 @@
 //! 1971, §4: a short travel of about 25 mm with about 0.5 mm steps).
 
 use super::stats::{chi2_upper, f_upper, max_of, to_unit_interval};
+use crate::units::AxisKind;
 use std::cell::RefCell;
 use std::f64::consts::TAU;
 
@@ -561,6 +562,67 @@ pub(crate) fn search(
         out.peak = Some(scan_peak);
     }
     out
+}
+
+/// The short fine-step test that measures a periodic error of pitch `pitch` (or looks for
+/// one): Hemingray et al. 1971, §4.
+pub(crate) fn short_test(kind: AxisKind, pitch: Option<f64>) -> String {
+    match (kind, pitch) {
+        (AxisKind::Linear, Some(p)) => format!(
+            "to measure it, add a short test over about {} mm (at least three pitches) with steps of about {} mm (a tenth of the pitch or finer), as Hemingray et al. 1971, §4 recommend (25 mm with 0.5 mm steps)",
+            fmt_position_round((3.0 * p).max(25.0)),
+            fmt_position_round((p / 10.0).min(0.5))
+        ),
+        (AxisKind::Linear, None) => "to look for a lead-screw or scale periodic error, add a short test of about 25 mm with about 0.5 mm steps (Hemingray et al. 1971, §4)".to_string(),
+        (AxisKind::Rotary, Some(p)) => format!(
+            "to measure it, add a short test over at least three pitches ({} deg) with steps of about {} deg (a tenth of the pitch), after Hemingray et al. 1971, §4",
+            fmt_position_round(3.0 * p),
+            fmt_position_round(p / 10.0)
+        ),
+        (AxisKind::Rotary, None) => "to look for a periodic error (worm, encoder), add a short test over a few periods with steps of a tenth of the period (Hemingray et al. 1971, §4)".to_string(),
+    }
+}
+
+/// Notes on what the plan can resolve of a periodic error (Hemingray et al. 1971, §4).
+pub(crate) fn plan_notes(
+    res: &Resolution,
+    pitch: Option<f64>,
+    kind: AxisKind,
+    notes: &mut Vec<String>,
+) {
+    let pu = kind.position_unit();
+    let advice = short_test(kind, pitch);
+    if !res.applicable {
+        let spacing = if res.spacing.is_finite() {
+            format!(
+                "targets about {} {pu} apart over {} {pu}",
+                fmt_position_round(res.spacing),
+                fmt_position_round(res.length)
+            )
+        } else {
+            "a single target".to_string()
+        };
+        notes.push(format!(
+            "periodic error not assessed: with {spacing} the plan resolves no period (it would need periods between twice the spacing and a third of the travel, at least a factor of two apart, and at least 10 targets); {advice}"
+        ));
+    } else if let Some(p) = pitch {
+        if p < res.p_min {
+            notes.push(format!(
+                "the declared pitch {} {pu} is shorter than twice the target spacing ({} {pu}): the plan cannot resolve it; {advice}",
+                fmt_position_round(p),
+                fmt_position_round(res.spacing)
+            ));
+        } else if p > res.length / 2.0 {
+            notes.push(format!(
+                "the declared pitch {} {pu} repeats fewer than twice over the measured travel: it cannot be told from the progressive error",
+                fmt_position_round(p)
+            ));
+        }
+    }
+}
+
+fn fmt_position_round(v: f64) -> String {
+    crate::units::fmt_position((v * 1000.0).round() / 1000.0)
 }
 
 #[cfg(test)]

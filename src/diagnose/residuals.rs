@@ -1,11 +1,64 @@
 //! Residual data for the diagnosis charts: each reading against the base and the
-//! extended model, the systematic deviation along the axis and the periodogram.
+//! extended model, the systematic deviation along the axis and the periodogram: their
+//! types and how they are computed.
 
 use super::analysis::{Analysis, smooth_trend};
 use super::effects::Effect;
 use super::fitted::Fitted;
-use super::timeline;
-use super::{AxisPoint, PeriodogramPoint, ResidualPoint, Residuals};
+use super::timeline::{self, TimeEffect};
+use crate::units::Direction;
+use serde::Serialize;
+
+/// A reading's residuals, for charts.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ResidualPoint {
+    /// Rank in time (time stamps, or the standard test cycle's order without them).
+    pub order: usize,
+    pub time_s: Option<f64>,
+    pub position: f64,
+    pub direction: Direction,
+    /// Run label as in the file.
+    pub run: u32,
+    /// Reading minus its cell mean (target and direction).
+    pub residual: f64,
+    /// Reading minus the extended model's prediction.
+    pub extended_residual: f64,
+}
+
+/// The systematic deviation along the axis, for charts.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AxisPoint {
+    pub position: f64,
+    /// Bidirectional mean X̄i of the readings corrected for time effects.
+    pub mean: f64,
+    /// Its smooth (cubic) trend.
+    pub trend: f64,
+    /// mean − trend: what the periodic search looks at.
+    pub residual: f64,
+    /// Reversal value Bi of the corrected readings.
+    pub reversal: f64,
+}
+
+/// One point of the periodogram.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PeriodogramPoint {
+    pub period: f64,
+    /// Normalised power: the share of the trend residuals' sum of squares a sinusoid of
+    /// this period explains.
+    pub power: f64,
+}
+
+/// Residual data for charts.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Residuals {
+    pub readings: Vec<ResidualPoint>,
+    pub along_axis: Vec<AxisPoint>,
+    /// Lomb–Scargle periodogram of `along_axis` residuals.
+    pub periodogram: Vec<PeriodogramPoint>,
+    /// The kept drift, warm-up or thermal growth against the run means (None when the
+    /// extended model keeps none of them).
+    pub time_effect: Option<TimeEffect>,
+}
 
 /// The residuals of `a` with the extended model `fit` of the `kept` effects.
 pub(crate) fn residuals(a: &Analysis, fit: &Fitted, kept: &[Effect]) -> Residuals {

@@ -2,17 +2,20 @@
 //! is kept when its held-out gain over the terms kept before it ([`super::validate`]; a
 //! periodic term on the leave-targets-out RMS of the target means) is positive and larger
 //! than that of every one of 19 unrelated terms of the same size ([`super::confirm`]).
+//! A finding whose term is left out is reported as [`Unconfirmed`], with its gain; the
+//! held-out errors of the base and the extended model as [`ModelFit`].
 
-use super::ModelFit;
 use super::analysis::Analysis;
 use super::confirm::{self, Unrelated};
+use super::effects::Finding;
 use super::effects::{Effect, Term};
-use super::finding::{Finding, fmt};
+use super::finding::{Evidence, Keyed, fmt};
 use super::periodic::Peak;
 use super::prep::{Clocks, Prep};
 use super::validate::{self, ModelTerms, Score};
 use super::warm;
 use serde::Serialize;
+use serde::ser::Serializer;
 
 /// The held-out scheme that can show a term's gain.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -116,6 +119,100 @@ fn largest_gain(scheme: Scheme, without: f64, unrelated: &[f64]) -> f64 {
         .iter()
         .map(|&u| gain_pct(scheme, without, u))
         .fold(f64::NAN, f64::max)
+}
+
+/// A finding of an effect's test whose term the held-out prediction does not confirm: its
+/// gain is no larger than what a term unrelated to the data gains
+/// ([`super::confirm`]). Reported beside the findings, not as one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unconfirmed {
+    pub finding: Finding,
+    /// How the term was judged, its gain and the largest gain of the unrelated terms
+    /// (see [`TermGain`]).
+    pub scheme: Scheme,
+    pub gain_pct: f64,
+    pub threshold_pct: f64,
+}
+
+impl Unconfirmed {
+    /// Splits the findings of the tests into those whose term is kept (or was not
+    /// judged: no held-out validation) and those whose term is left out.
+    pub(crate) fn split(
+        seen: Vec<Finding>,
+        gains: &[TermGain],
+    ) -> (Vec<Finding>, Vec<Unconfirmed>) {
+        let mut findings = Vec::new();
+        let mut unconfirmed = Vec::new();
+        for f in seen {
+            match gains.iter().find(|g| g.effect == f.effect() && !g.kept) {
+                Some(g) => unconfirmed.push(Unconfirmed {
+                    finding: f,
+                    scheme: g.scheme,
+                    gain_pct: g.gain_pct,
+                    threshold_pct: g.threshold_pct,
+                }),
+                None => findings.push(f),
+            }
+        }
+        (findings, unconfirmed)
+    }
+
+    /// `+0.8 % held out (k-fold over readings, RMS); 19 unrelated terms of the same size
+    /// up to +1.9 %`.
+    pub fn describe(&self) -> String {
+        let threshold = if self.threshold_pct.is_finite() {
+            format!("up to {:+.1} %", self.threshold_pct)
+        } else {
+            "not scored".to_string()
+        };
+        format!(
+            "{:+.1} % held out ({}); 19 unrelated terms of the same size {threshold}",
+            self.gain_pct,
+            self.scheme.describe()
+        )
+    }
+}
+
+/// An unconfirmed finding as the stable JSON has it.
+#[derive(serde::Serialize)]
+struct UnconfirmedJson<'a> {
+    effect: Effect,
+    params: Keyed<String, f64>,
+    labels: Keyed<&'static str, &'static str>,
+    evidence: &'a Evidence,
+    message: &'a str,
+    scheme: Scheme,
+    gain_pct: f64,
+    threshold_pct: f64,
+}
+
+impl Serialize for Unconfirmed {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let f = &self.finding;
+        UnconfirmedJson {
+            effect: f.effect(),
+            params: Keyed(f.params()),
+            labels: Keyed(f.labels()),
+            evidence: &f.evidence,
+            message: &f.message,
+            scheme: self.scheme,
+            gain_pct: self.gain_pct,
+            threshold_pct: self.threshold_pct,
+        }
+        .serialize(s)
+    }
+}
+
+/// A model and its held-out error.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ModelFit {
+    pub terms: Vec<String>,
+    /// Held-out RMS prediction error of the readings, µm or arcsec (NaN for n = 1).
+    pub heldout_rms: f64,
+    /// Held-out mean negative log predictive density per reading (judges the scatter term).
+    pub heldout_nlpd: f64,
+    /// Leave-one-target-out RMS of the target means (when a periodic term was judged).
+    pub between_targets_rms: Option<f64>,
 }
 
 /// The kept terms and the held-out errors of the base and the extended model.

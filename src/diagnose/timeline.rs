@@ -1,4 +1,5 @@
-//! A kept effect in time drawn against the run means: what the report's time chart shows,
+//! A kept effect in time drawn against the run means ([`TimeEffect`], its run means and
+//! curve points, and how they are computed): what the report's time chart shows,
 //! so that a reader sees the found drift line or warm-up curve against the data instead
 //! of trusting its numbers.
 //!
@@ -25,9 +26,53 @@ use super::analysis::Analysis;
 use super::effects::Effect;
 use super::fitted::Fitted;
 use super::prep::TimeUnit;
-use super::time::warm_shape;
-use super::{CurvePoint, RunMean, TimeEffect};
+use super::time_fit::warm_shape;
 use crate::units::Direction;
+use serde::Serialize;
+
+/// A kept effect in time drawn against the run means (this module).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TimeEffect {
+    /// The kept terms the curve holds: `drift`, `warm_up`, `thermal_growth`.
+    pub terms: Vec<Effect>,
+    /// Each run's mean partial residual for the effect (a reading less its target and
+    /// direction's systematic deviation as the extended model has it, less the effect's
+    /// mean over the readings), per direction.
+    pub run_means: Vec<RunMean>,
+    /// The fitted effect at the mean target position, less its mean over the readings
+    /// (as the residuals are less their cell's mean), at times across the test.
+    pub curve: Vec<CurvePoint>,
+    /// Half-width of the band about the curve, 2σ/√k: σ the extended model's scatter, k
+    /// the readings of a run in one direction; a run mean lies inside in 95 % of tests
+    /// when the curve is all the time effect there is.
+    pub band: f64,
+    /// The extended model's scatter σ (the residuals after it lie within ±2σ).
+    pub sigma: f64,
+}
+
+/// One run's mean partial residual in one direction.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunMean {
+    /// Run label as in the file.
+    pub run: u32,
+    pub direction: Direction,
+    /// Mean time of its readings, s (None without time stamps).
+    pub time_s: Option<f64>,
+    /// Mean rank of its readings in time (0-based).
+    pub order: f64,
+    pub mean: f64,
+    pub readings: usize,
+}
+
+/// One point of a fitted curve in time.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CurvePoint {
+    /// Time, s (None without time stamps).
+    pub time_s: Option<f64>,
+    /// Rank in time it falls at (the standard test cycle's order without time stamps).
+    pub order: f64,
+    pub value: f64,
+}
 
 /// Points of the drawn curve across the test.
 const POINTS: usize = 121;

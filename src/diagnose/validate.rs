@@ -24,7 +24,7 @@
 use super::periodic::Trend;
 use super::prep::Prep;
 use super::scatter;
-use super::time::{Terms, TimeFit, fit};
+use super::time_fit::{Terms, TimeFit, fit};
 use super::warm;
 use crate::simulate::model::interpolate;
 use crate::simulate::rng::Rng;

@@ -33,7 +33,7 @@
 use super::linalg::dot;
 use super::prep::Prep;
 use super::stats::{f_upper, t_two_sided};
-use super::time::{CellDemean, CoefTest, DriftTest, Terms, TimeFit, fit, warm_columns};
+use super::time_fit::{CellDemean, CoefTest, DriftTest, Terms, TimeFit, fit, warm_columns};
 use std::f64::consts::PI;
 
 /// Points of the τ grid.

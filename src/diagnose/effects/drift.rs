@@ -3,11 +3,12 @@
 //! rate of the trend model, against the scatter or, when the run offsets are real, against
 //! the run-to-run variation.
 
-use super::{Rule as EffectRule, Term, Unrelated};
+use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
-use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::{ALPHA, model::r4};
+use crate::diagnose::model::r4;
+use crate::diagnose::options::ALPHA;
 use crate::simulate::ErrorModel;
 
 /// A drift: its rate per time unit (hour, or run without time stamps).

@@ -2,7 +2,9 @@
 //! decision on the tests ([`Rule::find`]: the finding with its typed estimate), its term
 //! of the held-out model ([`Rule::term`]) and the unrelated terms it is compared with
 //! ([`Rule::unrelated`]), what it adds to the extended simulation model
-//! ([`Rule::extend`]) and its "effect removed" correction ([`Rule::removed`]).
+//! ([`Rule::extend`]) and its "effect removed" correction ([`Rule::removed`]). Here too
+//! the [`Finding`] the rules write, whose estimate is one of theirs ([`Estimate`]); its
+//! parts that need no effect ([`Units`], [`Evidence`], [`Fields`]) are in `finding.rs`.
 //!
 //! Adding an effect is one file here and one line in the list at the end of this file
 //! (and, when its term is one of the held-out reading model, its switch in
@@ -19,11 +21,12 @@ pub mod warm_up;
 
 use super::analysis::Analysis;
 pub(crate) use super::confirm::Unrelated;
-use super::finding::{Fields, Finding};
+use super::finding::{Evidence, Fields, Keyed, Units};
 use super::fitted::Fitted;
 use super::validate::ModelTerms;
 use crate::simulate::ErrorModel;
 use serde::Serialize;
+use serde::ser::Serializer;
 
 /// The measure a term is judged on before the extended model takes it (it must lower it
 /// by more than unrelated terms of the same size do: [`super::confirm`]).
@@ -56,6 +59,79 @@ pub(crate) trait Rule: Sync {
 /// Access to one effect's estimate in a finding.
 pub trait Typed: Sized {
     fn of(estimate: &Estimate) -> Option<&Self>;
+}
+
+/// One named cause.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finding {
+    pub estimate: Estimate,
+    pub units: Units,
+    pub evidence: Evidence,
+    pub message: String,
+}
+
+impl Finding {
+    pub fn effect(&self) -> Effect {
+        self.estimate.effect()
+    }
+
+    /// The estimate as the parameters of the stable interface: keys with units, in order.
+    pub fn params(&self) -> Vec<(String, f64)> {
+        self.estimate.fields().params(self.units)
+    }
+
+    /// Non-numeric facts (an outlier's direction …), in order.
+    pub fn labels(&self) -> Vec<(&'static str, &'static str)> {
+        self.estimate.fields().labels()
+    }
+
+    /// `key = value, …, label = text`: the parameters and labels, numbers written by `num`.
+    pub fn params_text(&self, num: impl Fn(f64) -> String) -> String {
+        self.params()
+            .iter()
+            .map(|(k, v)| format!("{k} = {}", num(*v)))
+            .chain(self.labels().iter().map(|(k, v)| format!("{k} = {v}")))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// What to do next about this cause (`advice` in the JSON).
+    pub fn advice(&self) -> String {
+        self.estimate.fields().advice(self.units)
+    }
+
+    /// The parameter with `key` (a key of [`Finding::params`]).
+    pub fn param(&self, key: &str) -> Option<f64> {
+        self.params()
+            .into_iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, v)| v)
+    }
+}
+
+/// A finding as the stable JSON has it.
+#[derive(serde::Serialize)]
+struct FindingJson<'a> {
+    effect: Effect,
+    params: Keyed<String, f64>,
+    labels: Keyed<&'static str, &'static str>,
+    evidence: &'a Evidence,
+    message: &'a str,
+    advice: String,
+}
+
+impl Serialize for Finding {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        FindingJson {
+            effect: self.effect(),
+            params: Keyed(self.params()),
+            labels: Keyed(self.labels()),
+            evidence: &self.evidence,
+            message: &self.message,
+            advice: self.advice(),
+        }
+        .serialize(s)
+    }
 }
 
 /// Declares the vocabulary from one list: the [`Effect`] enum (in the order of the

@@ -2,9 +2,9 @@
 //! estimate is only as good as its readings). Found in [`crate::diagnose::outliers`] by
 //! externally studentised residuals in the full time model, Bonferroni over all readings.
 
-use super::{Rule as EffectRule, Term, Unrelated};
+use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
-use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::measurement::fmt_target;

@@ -3,11 +3,12 @@
 //! corrected for the time effects: the slope of a straight line, and what the line leaves,
 //! each at half the level.
 
-use super::{Rule as EffectRule, Term, Unrelated};
+use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
-use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::{ALPHA, model::r4};
+use crate::diagnose::model::r4;
+use crate::diagnose::options::ALPHA;
 use crate::measurement::fmt_target;
 use crate::simulate::ErrorModel;
 use crate::units::AxisKind;

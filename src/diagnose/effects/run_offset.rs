@@ -3,11 +3,12 @@
 //! line and a warm-up curve in time leave of the between-run variation, against the pure
 //! scatter.
 
-use super::{Rule as EffectRule, Term, Unrelated};
+use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
-use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::{ALPHA, model::r4};
+use crate::diagnose::model::r4;
+use crate::diagnose::options::ALPHA;
 use crate::simulate::ErrorModel;
 
 /// One run's offset.

@@ -2,11 +2,12 @@
 //! VDI 3441 takes one scatter for the axis, NMTBA one per target). Tested in
 //! [`crate::diagnose::scatter`]: the log cell variances regressed on position.
 
-use super::{Rule as EffectRule, Term, Unrelated};
+use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
-use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::{ALPHA, model::r4};
+use crate::diagnose::model::r4;
+use crate::diagnose::options::ALPHA;
 use crate::measurement::fmt_target;
 use crate::simulate::ErrorModel;
 

@@ -5,14 +5,15 @@
 //! as an exponential approach beyond a linear drift, against the scatter or, when free run
 //! offsets are real beyond it, against the run-to-run variation.
 
-use super::{Rule as EffectRule, Term, Unrelated};
+use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::diagnose::analysis::Analysis;
-use crate::diagnose::finding::{Evidence, Fields, Finding, Units, fmt, fmt_p, relative};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
+use crate::diagnose::model::r4;
+use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::TimeUnit;
-use crate::diagnose::time::warm_shape;
+use crate::diagnose::time_fit::warm_shape;
 use crate::diagnose::warm::{WarmEstimate, WarmTest, tau_range};
-use crate::diagnose::{ALPHA, model::r4};
 use crate::simulate::ErrorModel;
 use crate::units::AxisKind;
 
