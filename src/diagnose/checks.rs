@@ -9,9 +9,9 @@ use super::options::Options;
 use super::periodic::{self, Grid, Trend};
 use super::prep::Prep;
 use super::stats::quantile_sorted;
+use crate::axis_model::Simulation;
+use crate::axis_model::rng::Rng;
 use crate::measurement::AxisData;
-use crate::simulate::Simulation;
-use crate::simulate::rng::Rng;
 use rayon::prelude::*;
 
 /// The statistics the model check compares with their simulated distribution.
@@ -500,7 +500,7 @@ pub(crate) fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::simulate::{Cycle, ErrorModel, PeriodicTerm, TestPlan};
+    use crate::axis_model::{Cycle, ErrorModel, PeriodicTerm, TestPlan};
     use crate::units::AxisKind;
 
     fn simulation(cycle: Cycle, model: ErrorModel) -> Simulation {

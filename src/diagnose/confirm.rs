@@ -34,7 +34,7 @@
 //! take the time constant that fits each best on all the readings instead of profiling
 //! it in every fold (which favours them: a conservative threshold).
 
-use crate::simulate::rng::Rng;
+use crate::axis_model::rng::Rng;
 
 /// Unrelated terms per judged term: with the term's own, 20 exchangeable gains, so that
 /// beating all of them has probability 1/20 for a term that is itself unrelated.

@@ -9,8 +9,8 @@
 //! fitted; the RMS divides by the readings less that one constant.
 
 use super::Diagnosis;
+use crate::axis_model::ErrorModel;
 use crate::measurement::AxisData;
-use crate::simulate::ErrorModel;
 use serde::Serialize;
 
 /// How well the models of one test predict another test of the same axis.

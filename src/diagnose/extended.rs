@@ -10,7 +10,7 @@ use super::model::{self, r4};
 use super::prep::TimeUnit;
 use super::select::Selection;
 use super::validate::Predictor;
-use crate::simulate::{ErrorModel, Simulation};
+use crate::axis_model::{ErrorModel, Simulation};
 use crate::units::Direction;
 
 impl Fitted {

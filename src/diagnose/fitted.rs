@@ -7,7 +7,7 @@ use super::analysis::{Analysis, smooth_trend};
 use super::model::{PlanGuess, r4};
 use super::periodic::Peak;
 use super::validate::Predictor;
-use crate::simulate::{ErrorModel, Simulation, TestPlan};
+use crate::axis_model::{ErrorModel, Simulation, TestPlan};
 
 /// The extended model's terms as the simulator has them.
 pub(crate) struct Fitted {

@@ -18,7 +18,7 @@
 //!    [`validate`], [`confirm`]; a finding whose term is not kept is reported apart, as
 //!    seen by its test but not confirmed by prediction), and gives the extended model as a
 //!    simulation file, so the loop closes ([`fitted`]);
-//! 4. fits the base model — the simulator ([`crate::simulate`]) with only the standard's
+//! 4. fits the base model — the axis model ([`crate::axis_model`]) with only the standard's
 //!    assumptions — and compares measured statistics with tests simulated from it
 //!    ([`Diagnosis::checks`]);
 //! 5. shows the standard's parameters as measured and, beside them, with each kept effect
@@ -64,9 +64,9 @@ pub use residuals::{AxisPoint, PeriodogramPoint, ResidualPoint, Residuals};
 pub use select::ModelFit;
 pub use timeline::{CurvePoint, RunMean, TimeEffect};
 
+use crate::axis_model::Simulation;
 use crate::evaluate::StandardId;
 use crate::measurement::AxisData;
-use crate::simulate::Simulation;
 use crate::units::AxisKind;
 use analysis::Analysis;
 use fitted::Fitted;

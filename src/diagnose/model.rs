@@ -6,8 +6,8 @@
 //! readings·dwell + t₀, least squares), or the simulator's defaults without them.
 
 use super::linalg::least_squares;
+use crate::axis_model::{Cycle, TestPlan};
 use crate::measurement::AxisData;
-use crate::simulate::{Cycle, TestPlan};
 
 /// A guessed plan with what was guessed.
 pub(crate) struct PlanGuess {

@@ -652,7 +652,7 @@ mod tests {
     /// is calibrated: about 5 % of searches have FAP < 0.05 (and fewer below 0.01).
     #[test]
     fn false_alarm_probability_is_calibrated() {
-        use crate::simulate::rng::Rng;
+        use crate::axis_model::rng::Rng;
         let mut rng = Rng::new(3, 9);
         let (mut below5, mut below1, mut known5) = (0, 0, 0);
         let trials = 1000;
@@ -693,7 +693,7 @@ mod tests {
     #[test]
     fn sin_cos_is_sin_and_cos() {
         use std::hint::black_box;
-        let mut rng = crate::simulate::rng::Rng::new(5, 5);
+        let mut rng = crate::axis_model::rng::Rng::new(5, 5);
         for k in 0..200_000 {
             let x = match k % 3 {
                 0 => rng.range(0.0, 10.0),

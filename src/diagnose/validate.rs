@@ -26,8 +26,8 @@ use super::prep::Prep;
 use super::scatter;
 use super::time_fit::{Terms, TimeFit, fit};
 use super::warm;
-use crate::simulate::model::interpolate;
-use crate::simulate::rng::Rng;
+use crate::axis_model::model::interpolate;
+use crate::axis_model::rng::Rng;
 use std::f64::consts::TAU;
 
 /// Number of folds.

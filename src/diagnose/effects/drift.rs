@@ -4,12 +4,12 @@
 //! the run-to-run variation.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use crate::axis_model::ErrorModel;
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
-use crate::simulate::ErrorModel;
 
 /// A drift: its rate per time unit (hour, or run without time stamps).
 #[derive(Debug, Clone, PartialEq)]

@@ -24,7 +24,7 @@ pub(crate) use super::confirm::Unrelated;
 use super::finding::{Evidence, Fields, Keyed, Units};
 use super::fitted::Fitted;
 use super::validate::ModelTerms;
-use crate::simulate::ErrorModel;
+use crate::axis_model::ErrorModel;
 use serde::Serialize;
 use serde::ser::Serializer;
 

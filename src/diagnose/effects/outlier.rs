@@ -3,12 +3,12 @@
 //! externally studentised residuals in the full time model, Bonferroni over all readings.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use crate::axis_model::{ErrorModel, Outlier as SimulatedOutlier};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::measurement::fmt_target;
-use crate::simulate::{ErrorModel, Outlier as SimulatedOutlier};
 use crate::units::Direction;
 
 /// One reading off by more than the rest explain.

@@ -5,12 +5,12 @@
 //! targets, not at them).
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use crate::axis_model::{ErrorModel, PeriodicTerm};
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::periodic::short_test;
-use crate::simulate::{ErrorModel, PeriodicTerm};
 use std::f64::consts::TAU;
 
 /// A periodic error A·sin(2π·P/period + phase).

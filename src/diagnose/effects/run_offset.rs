@@ -4,12 +4,12 @@
 //! scatter.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use crate::axis_model::ErrorModel;
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
-use crate::simulate::ErrorModel;
 
 /// One run's offset.
 #[derive(Debug, Clone, PartialEq)]

@@ -3,13 +3,13 @@
 //! [`crate::diagnose::scatter`]: the log cell variances regressed on position.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use crate::axis_model::ErrorModel;
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::measurement::fmt_target;
-use crate::simulate::ErrorModel;
 
 /// A scatter σ that changes along the axis (log-linearly in position).
 #[derive(Debug, Clone, PartialEq)]

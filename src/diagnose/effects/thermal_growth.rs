@@ -4,13 +4,13 @@
 //! against the pure scatter.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use crate::axis_model::ErrorModel;
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::measurement::fmt_target;
-use crate::simulate::ErrorModel;
 use crate::units::AxisKind;
 
 /// A thermal growth: ppm of the position per time unit (hour, or run), about an origin.

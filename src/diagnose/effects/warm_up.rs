@@ -6,6 +6,7 @@
 //! offsets are real beyond it, against the run-to-run variation.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use crate::axis_model::ErrorModel;
 use crate::diagnose::analysis::Analysis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
@@ -14,7 +15,6 @@ use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::TimeUnit;
 use crate::diagnose::time_fit::warm_shape;
 use crate::diagnose::warm::{WarmEstimate, WarmTest, tau_range};
-use crate::simulate::ErrorModel;
 use crate::units::AxisKind;
 
 /// A warm-up: the level the deviations approach, its time constant and how long it takes.
