@@ -222,6 +222,7 @@ impl<'a> CompensationJson<'a> {
 
 /// The JSON view of one test.
 pub fn test_json(t: &AxisTest) -> TestJson<'_> {
+    let ev = t.evaluated();
     TestJson {
         machine: &t.machine.id,
         machine_info: &t.machine,
@@ -239,7 +240,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
             declared_measurement_travel: spec.raw.measurement_travel,
             conditions: &spec.raw.conditions,
         }),
-        measured: t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
+        measured: ev.and_then(|e| e.data.as_ref()).map(|d| {
             let (a, b) = d.measurement_travel();
             Measured {
                 measurement_travel: [a, b],
@@ -247,27 +248,23 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
             }
         }),
         verdict: t.verdict(),
-        evaluation: t.evaluated().map(|e| &e.evaluation).map(|e| Evaluated {
+        evaluation: ev.map(|e| &e.evaluation).map(|e| Evaluated {
             n: e.n,
             m: e.targets.len(),
             parameters: ParameterValues(&e.parameters),
             at_target: TargetIndices(&e.parameters),
             notes: &e.notes,
         }),
-        judgement: t
-            .evaluated()
-            .and_then(|e| e.judgement.as_ref())
-            .map(Judged::new),
+        judgement: ev.and_then(|e| e.judgement.as_ref()).map(Judged::new),
         rules: t.findings(),
-        nde: t.evaluated().and_then(|e| e.nde.as_ref()),
-        uncertainty: t
-            .evaluated()
+        nde: ev.and_then(|e| e.nde.as_ref()),
+        uncertainty: ev
             .and_then(|e| e.uncertainty.as_ref())
             .map(UncertaintyJson::new),
         compensation: None,
-        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_deref()),
-        out_of_test: t.evaluated().map_or(&[][..], |e| &e.out_of_test),
-        other_tool: t.evaluated().and_then(|e| e.other_tool.as_deref()),
+        diagnosis: ev.and_then(|e| e.diagnosis.as_deref()),
+        out_of_test: ev.map_or(&[][..], |e| &e.out_of_test),
+        other_tool: ev.and_then(|e| e.other_tool.as_deref()),
         error: t.error(),
     }
 }

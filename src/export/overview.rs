@@ -105,8 +105,9 @@ pub fn test_id(t: &AxisTest) -> String {
 }
 
 fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
-    let e = t.evaluated().map(|e| &e.evaluation);
-    let travel = t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
+    let ev = t.evaluated();
+    let e = ev.map(|e| &e.evaluation);
+    let travel = ev.and_then(|e| e.data.as_ref()).map(|d| {
         let (a, b) = d.measurement_travel();
         ((b - a) * 1e6).round() / 1e6
     });
@@ -125,7 +126,7 @@ fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
         values: headlines(t),
         worst: worst(t),
         verdict: t.verdict(),
-        decision_rule: (t.evaluated().and_then(|e| e.judgement.as_ref()))
+        decision_rule: (ev.and_then(|e| e.judgement.as_ref()))
             .filter(|j| !j.limits.is_empty())
             .map(|j| j.rule.key()),
         rules: t.broken_rules().map(|f| f.id).collect(),
@@ -133,7 +134,7 @@ fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
             .filter(|f| f.severity == crate::rules::Severity::Warning)
             .map(|f| f.id)
             .collect(),
-        diagnosis: t.evaluated().and_then(|e| e.diagnosis.as_deref()).map(|d| {
+        diagnosis: ev.and_then(|e| e.diagnosis.as_deref()).map(|d| {
             let mut effects: Vec<&'static str> =
                 d.findings.iter().map(|f| f.effect().name()).collect();
             effects.dedup();

@@ -82,14 +82,14 @@ pub fn rows(result: &CampaignResult) -> Vec<Vec<Cell>> {
 }
 
 fn row(t: &AxisTest) -> Vec<Cell> {
-    let e = t.evaluated().map(|e| &e.evaluation);
+    let ev = t.evaluated();
+    let e = ev.map(|e| &e.evaluation);
     // Rounded to 1e-6: positions carry at most 6 decimals, their difference no more.
-    let travel = t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
+    let travel = ev.and_then(|e| e.data.as_ref()).map(|d| {
         let (a, b) = d.measurement_travel();
         ((b - a) * 1e6).round() / 1e6
     });
-    let worst = t
-        .evaluated()
+    let worst = ev
         .and_then(|e| e.judgement.as_ref())
         .and_then(|j| j.worst());
     let mut cells = vec![
@@ -100,8 +100,7 @@ fn row(t: &AxisTest) -> Vec<Cell> {
         Cell::opt_text(t.kind().map(|k| k.to_string())),
         Cell::opt_text(t.standard().map(|s| s.key())),
         Cell::opt_text(
-            t.evaluated()
-                .and_then(|e| e.judgement.as_ref())
+            ev.and_then(|e| e.judgement.as_ref())
                 .map(|j| j.limits.describe()),
         ),
         Cell::opt_text(t.kind().map(|k| k.deviation_unit())),
@@ -115,8 +114,7 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     }
     cells.push(Cell::opt_text(worst.map(|c| c.key.clone())));
     cells.push(Cell::opt_number(worst.map(|c| c.ratio())));
-    let failed: Vec<String> = t
-        .evaluated()
+    let failed: Vec<String> = ev
         .and_then(|e| e.judgement.as_ref())
         .into_iter()
         .flat_map(|j| j.failed().map(|c| c.key.clone()))
@@ -124,7 +122,7 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     cells.push(Cell::text(failed.join(" ")));
     let rules: Vec<&str> = t.findings().iter().map(|f| f.id).collect();
     cells.push(Cell::text(rules.join(" ")));
-    cells.push(match t.evaluated().and_then(|e| e.diagnosis.as_deref()) {
+    cells.push(match ev.and_then(|e| e.diagnosis.as_deref()) {
         Some(d) => Cell::text(d.effects_label()),
         None => Cell::Empty,
     });

@@ -82,35 +82,31 @@ pub struct Links {
 }
 
 pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) -> Detail<'a> {
+    let ev = t.evaluated();
     let unit = t.kind().map(|k| k.deviation_symbol());
     Detail {
         id: super::super::overview::test_id(t),
         label: t.label(),
         file: t.file.as_deref(),
         standard: t.standard().map(|s| s.title()),
-        limits: t
-            .evaluated()
+        limits: ev
             .and_then(|e| e.judgement.as_ref())
             .map(|j| j.limits.describe()),
         unit,
         parameters: parameters(t),
-        not_applicable: (t.evaluated().map(|e| &e.evaluation).into_iter())
+        not_applicable: (ev.map(|e| &e.evaluation).into_iter())
             .flat_map(|e| e.not_applicable().map(|d| d.symbol))
             .collect(),
         rules: t.findings(),
-        diagnosis: (t
-            .evaluated()
-            .and_then(|e| e.diagnosis.as_deref())
-            .into_iter())
-        .flat_map(|d| &d.findings)
-        .map(|f| DiagnosisFinding {
-            effect: f.effect().name(),
-            message: f.message.clone(),
-            advice: f.advice(),
-        })
-        .collect(),
-        compensation: t
-            .evaluated()
+        diagnosis: (ev.and_then(|e| e.diagnosis.as_deref()).into_iter())
+            .flat_map(|d| &d.findings)
+            .map(|f| DiagnosisFinding {
+                effect: f.effect().name(),
+                message: f.message.clone(),
+                advice: f.advice(),
+            })
+            .collect(),
+        compensation: ev
             .and_then(|e| e.compensation.as_deref())
             .map(|c| CompensationDetail {
                 controller: c.controller,
@@ -119,13 +115,10 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
                 refused: c.outcome.as_ref().err().cloned(),
                 warnings: c.warnings.iter().map(|w| w.message.clone()).collect(),
             }),
-        verification: t
-            .evaluated()
-            .and_then(|e| e.verification.as_deref())
-            .map(|v| match v {
-                Ok(v) => v.summary(unit.unwrap_or("")),
-                Err(e) => format!("not made: {e}"),
-            }),
+        verification: ev.and_then(|e| e.verification.as_deref()).map(|v| match v {
+            Ok(v) => v.summary(unit.unwrap_or("")),
+            Err(e) => format!("not made: {e}"),
+        }),
         report: links.report,
         table: links.table,
         charts: charts(t, trends),

@@ -55,7 +55,8 @@ impl AxisReport<'_> {
 /// The data of one axis report.
 pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisReport<'a> {
     let kind = t.kind();
-    let e = t.evaluated().map(|e| &e.evaluation);
+    let ev = t.evaluated();
+    let e = ev.map(|e| &e.evaluation);
     let conditions = t.spec.as_ref().map(|s| &s.raw.conditions);
     AxisReport {
         campaign: CampaignHeader::new(result),
@@ -76,25 +77,19 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         notes: e.map_or(&[], |e| &e.notes),
         findings: t.findings(),
         has_charts: e.is_some(),
-        diagnosis: t
-            .evaluated()
+        diagnosis: ev
             .and_then(|e| e.diagnosis.as_deref())
-            .map(|d| diagnosis_section(d, t.evaluated().map_or(&[][..], |e| &e.out_of_test))),
-        uncertainty: t
-            .evaluated()
+            .map(|d| diagnosis_section(d, ev.map_or(&[][..], |e| &e.out_of_test))),
+        uncertainty: ev
             .and_then(|e| e.uncertainty.as_ref())
             .zip(kind)
             .map(|(u, k)| uncertainty_section(t, u, k.deviation_symbol(), k.position_unit())),
-        compensation: t
-            .evaluated()
+        compensation: ev
             .and_then(|e| e.compensation.as_deref())
             .zip(e)
-            .map(|(c, e)| {
-                compensation_section(c, e, t.evaluated().and_then(|e| e.verification.as_deref()))
-            }),
+            .map(|(c, e)| compensation_section(c, e, ev.and_then(|e| e.verification.as_deref()))),
         history: None,
-        other_tool: t
-            .evaluated()
+        other_tool: ev
             .and_then(|e| e.other_tool.as_deref())
             .map(super::other_tool::other_tool_section),
         generator: generator(),
