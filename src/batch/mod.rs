@@ -224,7 +224,7 @@ fn run_axis(
     let paths = match axis.data.resolve(files) {
         Ok(paths) => paths,
         Err(message) => {
-            let at = format!("{}:{}", campaign.file.display(), axis.line);
+            let at = format!("{}:{}", campaign.file.display(), axis.at.line());
             let error = slot.error(format!("{at}: {}: data: {message}", entry.name));
             return vec![(error, None)];
         }

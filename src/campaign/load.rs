@@ -3,19 +3,20 @@
 
 use super::data::DataSource;
 use super::{
-    AxisEntry, AxisRaw, AxisSpec, CampaignInfo, Machine, MachineInfo, model, parse_standard,
+    AxisEntry, AxisRaw, AxisSpec, CampaignInfo, Machine, MachineInfo, Place, model, parse_standard,
 };
 use crate::evaluate::StandardId;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::{self, Located, LocationIndex, deserialize_at};
 use serde_norway::Value;
+use std::sync::Arc;
 
 /// The machine at `base` with its axes; a machine that cannot be read fails each of its
 /// axes with its error.
 pub(super) fn machine(
     value: &Value,
     base: &str,
-    index: &LocationIndex,
+    index: &Arc<LocationIndex>,
     file: &str,
     campaign: &CampaignInfo,
     standard: StandardId,
@@ -109,12 +110,11 @@ fn axis(
     value: &Value,
     a: usize,
     base: &str,
-    index: &LocationIndex,
+    index: &Arc<LocationIndex>,
     file: &str,
     campaign: &CampaignInfo,
     default_standard: StandardId,
 ) -> AxisEntry {
-    let line = index.value(base).map_or(0, |(l, _)| l);
     let spec = validated_axis(value, base, index, default_standard).map(|(raw, standard, data)| {
         AxisSpec {
             standard,
@@ -125,7 +125,7 @@ fn axis(
                 None => campaign.spec.clone().filter(|s| s != "none"),
             },
             data,
-            line,
+            at: Place::new(index, base),
             raw,
         }
     });

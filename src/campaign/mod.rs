@@ -20,6 +20,7 @@ use data::DataSource;
 use serde_norway::Value;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// A campaign that could not be read at all.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -70,8 +71,38 @@ pub struct AxisSpec {
     /// Spec name or path (the axis's or the campaign's).
     pub spec: Option<String>,
     pub data: DataSource,
-    /// Line of the axis in the campaign file.
-    pub line: usize,
+    /// Where the axis is written in the campaign file.
+    pub at: Place,
+}
+
+/// Where an entry is written in a file: its path in the document, its line found in the
+/// file's location index only when asked (an error message), so that a campaign loaded
+/// without an error is parsed once.
+#[derive(Debug, Clone)]
+pub struct Place {
+    index: Arc<LocationIndex>,
+    path: String,
+}
+
+impl Place {
+    pub fn new(index: &Arc<LocationIndex>, path: &str) -> Place {
+        Place {
+            index: index.clone(),
+            path: path.to_string(),
+        }
+    }
+
+    /// The entry's line (1-based; 0 when it cannot be found).
+    pub fn line(&self) -> usize {
+        self.index.value(&self.path).map_or(0, |(l, _)| l)
+    }
+}
+
+/// Two places are the same path in the document.
+impl PartialEq for Place {
+    fn eq(&self, other: &Place) -> bool {
+        self.path == other.path
+    }
 }
 
 /// The two keys of a campaign file.
@@ -91,12 +122,14 @@ impl Campaign {
     pub fn parse(text: &str, path: &Path) -> Result<Campaign, CampaignError> {
         let file = path.display().to_string();
         let (value, index) = yaml::parse(text, &file)?;
+        let index = Arc::new(index);
         let fail = |located: Located| CampaignError::Invalid(located.in_file(&file));
         let top = top_level(&value, &index).map_err(fail)?;
-        let root = index.value("");
+        // Where the document starts, for what it lacks (looked up only then).
+        let root = || index.value("");
         let info_value = top.get("campaign").ok_or_else(|| {
             fail(Located::new(
-                root,
+                root(),
                 "missing the `campaign:` block (name, date, standard …)",
             ))
         })?;
@@ -109,7 +142,7 @@ impl Campaign {
         let history = history_dir(&info, &dir, &index).map_err(fail)?;
         check_horizon(&info, &index).map_err(fail)?;
         let machine_values = match top.get("machines") {
-            None => return Err(fail(Located::new(root, "missing the `machines:` list"))),
+            None => return Err(fail(Located::new(root(), "missing the `machines:` list"))),
             Some(Value::Sequence(items)) => items,
             Some(other) => {
                 let message = format!(
@@ -308,7 +341,7 @@ machines:
         assert_eq!(x.raw.travel, Some(Travel::Length(1200.0)));
         assert_eq!(x.raw.tolerances["A"], 12.0);
         assert_eq!(x.spec.as_deref(), Some("general"));
-        assert_eq!(x.line, 7);
+        assert_eq!(x.at.line(), 7);
         let y = axes[1].spec.as_ref().unwrap();
         assert_eq!(y.spec.as_deref(), Some("precision"));
         assert!(matches!(y.data, DataSource::Files(ref f) if f.len() == 2));

@@ -1,12 +1,23 @@
 //! Where every key and value of a YAML document is written, by path, so that errors
-//! found after parsing still name line and column.
+//! found after parsing still name line and column. Built when first asked: a file read
+//! without an error (a 10 000-axis campaign in the CI gate) never needs it, and building it
+//! is a second parse of the text.
 
 use rustc_hash::FxHashMap;
 use saphyr_parser::{Event, Parser};
+use std::sync::{Arc, OnceLock};
 
-/// Line and column (both 1-based) of every key and value, by path (`machines[0].axes[1].kind`).
+/// Line and column (both 1-based) of every key and value of a text, by path
+/// (`machines[0].axes[1].kind`), indexed at the first question.
 #[derive(Debug, Default, Clone)]
 pub struct LocationIndex {
+    text: Arc<str>,
+    built: OnceLock<Built>,
+}
+
+/// The index itself.
+#[derive(Debug, Default, Clone)]
+struct Built {
     // FxHash: the paths are the program's own, not an attacker's choice of collisions
     // worth defending against, and a 10 000-axis campaign has 100 000 of them.
     keys: FxHashMap<String, (usize, usize)>,
@@ -41,10 +52,52 @@ pub fn join(path: &str, key: &str) -> String {
 }
 
 impl LocationIndex {
+    /// The index of `text`, built when first asked.
+    pub fn new(text: &str) -> LocationIndex {
+        LocationIndex {
+            text: Arc::from(text),
+            built: OnceLock::new(),
+        }
+    }
+
+    fn built(&self) -> &Built {
+        self.built.get_or_init(|| Built::new(&self.text))
+    }
+
+    /// Where the key at `path` is written.
+    pub fn key(&self, path: &str) -> Option<(usize, usize)> {
+        self.built().keys.get(path).copied()
+    }
+
+    /// Where the value at `path` is written, or failing that its key, or the nearest parent.
+    pub fn value(&self, path: &str) -> Option<(usize, usize)> {
+        let built = self.built();
+        let mut p = path.to_string();
+        loop {
+            if let Some(at) = built.values.get(&p).or_else(|| built.keys.get(&p)) {
+                return Some(*at);
+            }
+            let cut = p.rfind(['.', '['])?;
+            p.truncate(cut);
+        }
+    }
+
+    /// Where the second YAML document of the stream starts, if there is one.
+    pub fn second_document(&self) -> Option<(usize, usize)> {
+        self.built().documents.get(1).copied()
+    }
+
+    /// Where the key at `path` is written, or failing that its value or nearest parent.
+    pub fn key_or_value(&self, path: &str) -> Option<(usize, usize)> {
+        self.key(path).or_else(|| self.value(path))
+    }
+}
+
+impl Built {
     /// Indexes `text`; a syntax error leaves the index partial (the YAML parser that reads
     /// the values reports it).
-    pub fn new(text: &str) -> LocationIndex {
-        let mut index = LocationIndex::default();
+    fn new(text: &str) -> Built {
+        let mut index = Built::default();
         // About one key a colon and one value a key or list item: sized once, not doubled.
         let colons = text.bytes().filter(|&b| b == b':').count();
         index.keys.reserve(colons);
@@ -89,33 +142,6 @@ impl LocationIndex {
             }
         }
         index
-    }
-
-    /// Where the key at `path` is written.
-    pub fn key(&self, path: &str) -> Option<(usize, usize)> {
-        self.keys.get(path).copied()
-    }
-
-    /// Where the value at `path` is written, or failing that its key, or the nearest parent.
-    pub fn value(&self, path: &str) -> Option<(usize, usize)> {
-        let mut p = path.to_string();
-        loop {
-            if let Some(at) = self.values.get(&p).or_else(|| self.keys.get(&p)) {
-                return Some(*at);
-            }
-            let cut = p.rfind(['.', '['])?;
-            p.truncate(cut);
-        }
-    }
-
-    /// Where the second YAML document of the stream starts, if there is one.
-    pub fn second_document(&self) -> Option<(usize, usize)> {
-        self.documents.get(1).copied()
-    }
-
-    /// Where the key at `path` is written, or failing that its value or nearest parent.
-    pub fn key_or_value(&self, path: &str) -> Option<(usize, usize)> {
-        self.key(path).or_else(|| self.value(path))
     }
 }
 

@@ -198,10 +198,10 @@ pub fn deserialize_spelled<T: serde::de::DeserializeOwned>(
 /// error names its line and column, with a hint when a line is indented with a tab (YAML
 /// allows only spaces).
 pub fn parse(text: &str, file: &str) -> Result<(Value, LocationIndex), YamlError> {
-    // Two independent passes over the text: the values and their locations.
-    let (value, index) = rayon::join(
-        || serde_norway::from_str::<Value>(text),
-        || LocationIndex::new(text),
+    // The locations are indexed only when an error needs them.
+    let (value, index) = (
+        serde_norway::from_str::<Value>(text),
+        LocationIndex::new(text),
     );
     let value = value.map_err(|e| syntax_error(&e, file, text, &index))?;
     Ok((value, index))
