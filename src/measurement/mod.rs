@@ -111,12 +111,17 @@ impl AxisData {
     /// [`AxisData::from_raw`] with errors located in `place` (a text file or a sheet).
     pub(crate) fn from_raw_in(
         kind: AxisKind,
-        raw: Vec<RawReading>,
+        mut raw: Vec<RawReading>,
         temperature_names: Vec<String>,
         place: &Place,
     ) -> Result<AxisData, ReadError> {
         if raw.is_empty() {
             return Err(ReadError::new(place.whole(), ReadErrorKind::NoReadings));
+        }
+        // −0 and 0 are one target (a file may write the zero target as `-0.000` in one
+        // direction): the targets are ordered and found by their bits.
+        for r in &mut raw {
+            r.target += 0.0;
         }
         let targets = distinct_sorted(raw.iter().map(|r| r.target), f64::total_cmp);
         let run_labels = distinct_sorted(raw.iter().map(|r| r.run), u32::cmp);
@@ -795,6 +800,29 @@ mod tests {
             Ok(8.184467440737095e21)
         );
         assert_eq!(plain_decimal("-0"), Some(-0.0));
+    }
+
+    /// Found by CI's fuzzing (the ecmc app's report): a target written `-00.00000` in one
+    /// reading and `0.00000` in another is one target, not a panic.
+    #[test]
+    fn minus_zero_is_the_zero_target() {
+        let raw: Vec<RawReading> = [(-0.0, Direction::Up), (0.0, Direction::Down)]
+            .iter()
+            .flat_map(|&(zero, direction)| {
+                [zero, 100.0].map(|target| RawReading {
+                    target,
+                    direction,
+                    run: 1,
+                    deviation: 0.001,
+                    time_s: None,
+                    temps_c: Vec::new(),
+                    line: 0,
+                })
+            })
+            .collect();
+        let data = AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "t.csv").unwrap();
+        assert_eq!(data.targets.len(), 2);
+        assert_eq!(data.targets[0].to_bits(), 0.0f64.to_bits());
     }
 
     #[test]
