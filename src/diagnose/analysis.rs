@@ -15,7 +15,6 @@ use super::prep::{Prep, TimeUnit};
 use super::reversal::{self, ReversalTest};
 use super::scatter::{self, ScatterTest};
 use super::time::{self, TimeTests};
-use super::{linalg, stats};
 use crate::measurement::AxisData;
 
 /// What the tests found out about one measurement.
@@ -179,30 +178,4 @@ fn time_and_scatter(
         }
     }
     (hits, active, tt, sc, scale)
-}
-
-/// The smooth (cubic, or lower with few targets) least-squares trend of `y`.
-pub(crate) fn smooth_trend(positions: &[f64], y: &[f64]) -> Vec<f64> {
-    let m = positions.len();
-    if m == 0 {
-        return Vec::new();
-    }
-    let z = stats::to_unit_interval(positions);
-    let degree = 3.min(m.saturating_sub(2));
-    let cols: Vec<Vec<f64>> = (0..=degree)
-        .map(|k| z.iter().map(|zi| zi.powi(k as i32)).collect())
-        .collect();
-    let idx: Vec<usize> = (0..m).filter(|&i| y[i].is_finite()).collect();
-    if idx.is_empty() {
-        return vec![f64::NAN; m];
-    }
-    let sub: Vec<Vec<f64>> = cols
-        .iter()
-        .map(|c| idx.iter().map(|&i| c[i]).collect())
-        .collect();
-    let ys: Vec<f64> = idx.iter().map(|&i| y[i]).collect();
-    let fit = linalg::least_squares(&sub, &ys);
-    (0..m)
-        .map(|i| cols.iter().zip(&fit.coef).map(|(c, b)| c[i] * b).sum())
-        .collect()
 }

@@ -5,10 +5,10 @@
 
 use super::analysis::Analysis;
 use super::finding::fmt;
+use super::maths::periodogram::{self, Grid, Trend};
+use super::maths::stats::quantile_sorted;
 use super::options::Options;
-use super::periodic::{self, Grid, Trend};
 use super::prep::Prep;
-use super::stats::quantile_sorted;
 use crate::axis_model::Simulation;
 use crate::axis_model::rng::Rng;
 use crate::measurement::AxisData;
@@ -132,7 +132,7 @@ impl Layout {
         by_order.sort_by_key(|&k| prep.rows[k].order);
         let mid = (prep.lo + prep.hi) / 2.0;
         let lower_half = prep.positions.iter().map(|p| *p < mid).collect();
-        let res = periodic::resolution(&prep.positions);
+        let res = periodogram::resolution(&prep.positions);
         let trend = (prep.m >= 5).then(|| Trend::new(&prep.positions, None));
         let grid = trend
             .as_ref()

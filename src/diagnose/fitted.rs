@@ -3,9 +3,10 @@
 //! `extended.rs`, above the effects), and the base model (the standard's assumptions,
 //! simulated for the model checks) as a simulation file.
 
-use super::analysis::{Analysis, smooth_trend};
+use super::analysis::Analysis;
+use super::maths::linalg::smooth_trend;
+use super::maths::periodogram::Peak;
 use super::model::{PlanGuess, r4};
-use super::periodic::Peak;
 use super::validate::Predictor;
 use crate::axis_model::{ErrorModel, Simulation, TestPlan};
 

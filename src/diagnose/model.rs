@@ -5,7 +5,7 @@
 //! fitted to the time stamps (time of each reading = distance·s + overrun moves·s·o +
 //! readings·dwell + t₀, least squares), or the simulator's defaults without them.
 
-use super::linalg::least_squares;
+use super::maths::linalg::least_squares;
 use crate::axis_model::{Cycle, TestPlan};
 use crate::measurement::AxisData;
 

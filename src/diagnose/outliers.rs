@@ -9,8 +9,8 @@
 //! found is set aside and the search repeats. A cell needs n ≥ 3 readings: with two, either
 //! could be the odd one.
 
+use super::maths::stats::t_two_sided;
 use super::prep::Prep;
-use super::stats::t_two_sided;
 use super::time_fit::{Terms, fit};
 
 /// One outlier.

@@ -2,9 +2,10 @@
 //! extended model, the systematic deviation along the axis and the periodogram: their
 //! types and how they are computed.
 
-use super::analysis::{Analysis, smooth_trend};
+use super::analysis::Analysis;
 use super::effects::Effect;
 use super::fitted::Fitted;
+use super::maths::linalg::smooth_trend;
 use super::timeline::{self, TimeEffect};
 use crate::units::Direction;
 use serde::Serialize;

@@ -8,8 +8,8 @@
 //! line leaves (χ²/(m − 2) against σ², an F-test) for a reversal whose shape is not a
 //! line. With n = 1 the slope is tested against the line's own residuals (df = m − 2).
 
-use super::linalg::least_squares;
-use super::stats::{f_upper, t_two_sided};
+use super::maths::linalg::least_squares;
+use super::maths::stats::{f_upper, t_two_sided};
 
 /// The result of the reversal tests.
 #[derive(Debug, Clone)]

@@ -8,8 +8,8 @@
 //! of the slope with the regression's own residual variance (df = cells − 2), which needs
 //! no normality of the log variances. Needs n ≥ 3 and m ≥ 3.
 
+use super::maths::stats::t_two_sided;
 use super::prep::Prep;
-use super::stats::t_two_sided;
 
 /// The result of the scatter test.
 #[derive(Debug, Clone)]

@@ -10,7 +10,7 @@ use super::confirm::{self, Unrelated};
 use super::effects::Finding;
 use super::effects::{Effect, Term};
 use super::finding::{Evidence, Keyed, fmt};
-use super::periodic::Peak;
+use super::maths::periodogram::Peak;
 use super::prep::{Clocks, Prep};
 use super::validate::{self, ModelTerms, Score};
 use super::warm;

@@ -26,8 +26,8 @@
 //! The fit of the time model that these tests and the warm-up search share is in
 //! `time_fit.rs`.
 
+use super::maths::stats::{f_upper, t_two_sided};
 use super::prep::Prep;
-use super::stats::{f_upper, t_two_sided};
 use super::time_fit::{CoefTest, DriftTest, Terms, TimeFit, fit};
 use super::warm::{self, WarmEstimate, WarmTest};
 

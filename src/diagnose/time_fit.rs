@@ -2,7 +2,7 @@
 //! fit has ([`Terms`]), the fit itself ([`fit`], [`TimeFit`]) and a coefficient's test; the
 //! tests in time (`time.rs`) and the warm-up search (`warm.rs`) both read it.
 
-use super::linalg::{LeastSquares, least_squares};
+use super::maths::linalg::{LeastSquares, least_squares};
 use super::prep::Prep;
 
 /// Which time terms a fit has.

@@ -21,7 +21,7 @@
 //! others by the simulator's C¹ cubic through them (base) or by that interpolation of
 //! what the periodic term leaves plus the term (extended).
 
-use super::periodic::Trend;
+use super::maths::periodogram::Trend;
 use super::prep::Prep;
 use super::scatter;
 use super::time_fit::{Terms, TimeFit, fit};

@@ -30,9 +30,9 @@
 //! zero shift cannot reach) — and the change of the Bayesian information criterion
 //! against a linear drift and against free run offsets.
 
-use super::linalg::dot;
+use super::maths::linalg::dot;
+use super::maths::stats::{f_upper, t_two_sided};
 use super::prep::Prep;
-use super::stats::{f_upper, t_two_sided};
 use super::time_fit::{CellDemean, CoefTest, DriftTest, Terms, TimeFit, fit, warm_columns};
 use std::f64::consts::PI;
 

@@ -151,6 +151,32 @@ impl LeastSquares {
     }
 }
 
+/// The smooth (cubic, or lower with few targets) least-squares trend of `y`.
+pub(crate) fn smooth_trend(positions: &[f64], y: &[f64]) -> Vec<f64> {
+    let m = positions.len();
+    if m == 0 {
+        return Vec::new();
+    }
+    let z = super::stats::to_unit_interval(positions);
+    let degree = 3.min(m.saturating_sub(2));
+    let cols: Vec<Vec<f64>> = (0..=degree)
+        .map(|k| z.iter().map(|zi| zi.powi(k as i32)).collect())
+        .collect();
+    let idx: Vec<usize> = (0..m).filter(|&i| y[i].is_finite()).collect();
+    if idx.is_empty() {
+        return vec![f64::NAN; m];
+    }
+    let sub: Vec<Vec<f64>> = cols
+        .iter()
+        .map(|c| idx.iter().map(|&i| c[i]).collect())
+        .collect();
+    let ys: Vec<f64> = idx.iter().map(|&i| y[i]).collect();
+    let fit = least_squares(&sub, &ys);
+    (0..m)
+        .map(|i| cols.iter().zip(&fit.coef).map(|(c, b)| c[i] * b).sum())
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
