@@ -373,8 +373,8 @@ fn diagnosis_files(files: &mut Files, d: &crate::diagnose::Diagnosis) {
         width_px: CHART_WIDTH_PX,
         height_px,
     };
-    let height = diagnosis_charts::model_checks_height(checks.len());
-    let model_checks = diagnosis_charts::model_checks(&checks, &style(height));
+    let height = check_chart::model_checks_height(checks.len());
+    let model_checks = check_chart::model_checks(&checks, &style(height));
     files.chart("checks", model_checks);
     let in_time = diagnosis_charts::residuals(&in_time, &style(340));
     files.chart("residuals-time", in_time);

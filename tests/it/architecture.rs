@@ -228,3 +228,222 @@ fn the_length_check_sees_functions() {
         ["units", "evaluate", "judge"]
     );
 }
+
+/// The module path of a source file (`diagnose/effects/drift.rs` → diagnose, effects,
+/// drift; a `mod.rs` is its folder; `lib.rs` and `main.rs` the crate).
+fn module_of(path: &Path) -> Vec<String> {
+    let mut parts: Vec<String> = path
+        .components()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect();
+    let last = parts.pop().unwrap_or_default();
+    match last.as_str() {
+        "mod.rs" | "lib.rs" | "main.rs" => {}
+        file => parts.push(file.trim_end_matches(".rs").to_string()),
+    }
+    parts
+}
+
+/// Every path a use tree names: `a::{b, c::{d, e}}` → a::b, a::c::d, a::c::e.
+fn expand_tree(tree: &str) -> Vec<String> {
+    let tree = tree.trim();
+    let Some(open) = tree.find('{') else {
+        return vec![tree.split(" as ").next().unwrap_or("").trim().to_string()];
+    };
+    let prefix = &tree[..open];
+    let close = tree.rfind('}').filter(|&c| c > open).unwrap_or(tree.len());
+    let inner = &tree[open + 1..close];
+    let (mut parts, mut depth, mut start) = (Vec::new(), 0, 0);
+    for (i, c) in inner.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                parts.push(&inner[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&inner[start..]);
+    parts
+        .into_iter()
+        .filter(|p| !p.trim().is_empty())
+        .flat_map(|p| expand_tree(p))
+        .map(|p| format!("{prefix}{p}"))
+        .collect()
+}
+
+/// The module paths `code` names: its `use` trees and its inline `crate::…` and
+/// `super::…` paths (outside comments).
+fn named_paths(code: &str) -> Vec<String> {
+    let code: String = code
+        .lines()
+        .filter(|line| !line.trim_start().starts_with("//"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let mut out = Vec::new();
+    let mut lines = code.lines();
+    while let Some(line) = lines.next() {
+        let line = line.trim_start();
+        let Some(tree) = ["use ", "pub use ", "pub(crate) use ", "pub(super) use "]
+            .iter()
+            .find_map(|start| line.strip_prefix(start))
+        else {
+            continue;
+        };
+        let mut tree = tree.to_string();
+        while !tree.contains(';') {
+            let Some(more) = lines.next() else { break };
+            tree.push_str(more);
+        }
+        out.extend(expand_tree(tree.trim_end().trim_end_matches(';')));
+    }
+    for start in ["crate::", "super::"] {
+        for (i, _) in code.match_indices(start) {
+            let path: String = code[i..]
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+                .collect();
+            out.push(path);
+        }
+    }
+    out
+}
+
+/// The source file a path named in the file of module `here` leads to: the deepest
+/// module along it that is a file.
+fn file_of(here: &[String], path: &str, files: &BTreeMap<Vec<String>, PathBuf>) -> Option<PathBuf> {
+    let mut segments = path.split("::").filter(|s| !s.is_empty());
+    let mut module: Vec<String> = match segments.next()? {
+        "crate" => Vec::new(),
+        "self" => here.to_vec(),
+        "super" => here[..here.len().saturating_sub(1)].to_vec(),
+        _ => return None,
+    };
+    for s in segments {
+        if s == "super" {
+            module.pop();
+        } else {
+            module.push(s.to_string());
+        }
+    }
+    (0..=module.len())
+        .rev()
+        .find_map(|k| files.get(&module[..k]).cloned())
+}
+
+/// The circles of the graph of `src/` with files as nodes (each as its files in order).
+fn circles(edges: &BTreeMap<PathBuf, Vec<PathBuf>>) -> Vec<Vec<PathBuf>> {
+    // Tarjan's strongly connected components; a component of two or more is a circle.
+    struct State<'a> {
+        edges: &'a BTreeMap<PathBuf, Vec<PathBuf>>,
+        index: BTreeMap<&'a Path, (usize, usize)>,
+        stack: Vec<&'a Path>,
+        found: Vec<Vec<PathBuf>>,
+    }
+    fn visit<'a>(s: &mut State<'a>, v: &'a Path) {
+        let n = s.index.len();
+        s.index.insert(v, (n, n));
+        s.stack.push(v);
+        for w in s.edges.get(v).into_iter().flatten() {
+            match s.index.get(w.as_path()).copied() {
+                None => {
+                    visit(s, w);
+                    let low = s.index[w.as_path()].1.min(s.index[v].1);
+                    s.index.get_mut(v).unwrap().1 = low;
+                }
+                Some((wi, _)) if s.stack.contains(&w.as_path()) => {
+                    let low = wi.min(s.index[v].1);
+                    s.index.get_mut(v).unwrap().1 = low;
+                }
+                Some(_) => {}
+            }
+        }
+        if s.index[v].0 == s.index[v].1 {
+            let at = s.stack.iter().position(|x| *x == v).unwrap();
+            let component: Vec<PathBuf> = s.stack.drain(at..).map(Path::to_path_buf).collect();
+            if component.len() > 1 {
+                s.found.push(component);
+            }
+        }
+    }
+    let mut s = State {
+        edges,
+        index: BTreeMap::new(),
+        stack: Vec::new(),
+        found: Vec::new(),
+    };
+    for v in edges.keys() {
+        if !s.index.contains_key(v.as_path()) {
+            visit(&mut s, v);
+        }
+    }
+    s.found
+}
+
+/// No circle anywhere in the graph of files: a file that uses another is never used back,
+/// directly or around, also inside a folder.
+#[test]
+fn no_circle_of_files() {
+    let sources = sources();
+    let files: BTreeMap<Vec<String>, PathBuf> = sources
+        .iter()
+        .filter(|(path, _)| path != Path::new("main.rs"))
+        .map(|(path, _)| (module_of(path), path.clone()))
+        .collect();
+    let mut edges: BTreeMap<PathBuf, Vec<PathBuf>> = BTreeMap::new();
+    for (path, text) in &sources {
+        let here = module_of(path);
+        let mut to: Vec<PathBuf> = named_paths(code(text))
+            .iter()
+            .filter_map(|p| file_of(&here, p, &files))
+            .filter(|target| target != path)
+            .collect();
+        to.sort();
+        to.dedup();
+        edges.insert(path.clone(), to);
+    }
+    let found: Vec<String> = circles(&edges)
+        .iter()
+        .map(|c| {
+            let names: Vec<String> = c.iter().map(|p| format!("src/{}", p.display())).collect();
+            names.join(" ↔ ")
+        })
+        .collect();
+    assert!(found.is_empty(), "circles of files:\n{}", found.join("\n"));
+}
+
+#[test]
+fn use_trees_are_expanded() {
+    assert_eq!(
+        expand_tree("super::{a, b::{c, d as e}}"),
+        ["super::a", "super::b::c", "super::b::d"]
+    );
+    let files: BTreeMap<Vec<String>, PathBuf> = [
+        (vec!["x".to_string()], PathBuf::from("x/mod.rs")),
+        (
+            vec!["x".to_string(), "y".to_string()],
+            PathBuf::from("x/y.rs"),
+        ),
+    ]
+    .into_iter()
+    .collect();
+    let here = vec!["x".to_string(), "z".to_string()];
+    assert_eq!(
+        file_of(&here, "super::y::Thing", &files),
+        Some(PathBuf::from("x/y.rs"))
+    );
+    assert_eq!(
+        file_of(&here, "crate::x::Other", &files),
+        Some(PathBuf::from("x/mod.rs"))
+    );
+    let edges: BTreeMap<PathBuf, Vec<PathBuf>> = [
+        (PathBuf::from("a"), vec![PathBuf::from("b")]),
+        (PathBuf::from("b"), vec![PathBuf::from("a")]),
+        (PathBuf::from("c"), vec![PathBuf::from("a")]),
+    ]
+    .into_iter()
+    .collect();
+    assert_eq!(circles(&edges).len(), 1);
+}

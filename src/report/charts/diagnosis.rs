@@ -24,7 +24,6 @@ use plotters::style::text_anchor::{HPos, VPos};
 use std::collections::HashSet;
 
 pub use crate::report::chart_kit::Style;
-pub use crate::report::charts::check::{CheckBar, model_checks, model_checks_height};
 use frame::{Frame, draw_clipped};
 pub use time::TimePanels;
 

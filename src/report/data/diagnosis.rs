@@ -199,12 +199,13 @@ pub(in crate::report) fn diagnosis_section<'a>(
 pub fn diagnosis_charts(
     d: &Diagnosis,
 ) -> (
-    Vec<crate::report::charts::diagnosis::CheckBar>,
+    Vec<crate::report::charts::check::CheckBar>,
     crate::report::charts::diagnosis::Residuals,
     crate::report::charts::diagnosis::Residuals,
     crate::report::charts::diagnosis::Periodogram,
 ) {
-    use crate::report::charts::diagnosis::{CheckBar, Periodogram, Residuals};
+    use crate::report::charts::check::CheckBar;
+    use crate::report::charts::diagnosis::{Periodogram, Residuals};
     let (pos_unit, dev_unit) = match d.kind {
         AxisKind::Linear => ("mm", "µm"),
         AxisKind::Rotary => ("°", "arcsec"),
