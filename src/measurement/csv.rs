@@ -10,8 +10,9 @@
 //! `run` (approach index j, 1-based); optional `time_s` and `temp_<name>_c`. Separators
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
 
+use super::cell::{Place, Value};
 use super::error::{ReadError, ReadErrorKind};
-use super::table::{Place, Row, TableReader, Value, mixed_units, read_text};
+use super::table::{Row, TableReader, mixed_units, read_text};
 use super::{AxisData, MAX_READINGS, MAX_TEMPERATURES, RawReading};
 use crate::suggest::did_you_mean;
 use crate::units::{AxisKind, Direction, fmt_fixed};

@@ -16,8 +16,9 @@
 //! simulator and the key=value layout list their readings. The diagnosis's drift and
 //! warm-up checks rely on it; the notes say so.
 
+use super::cell::Place;
 use super::error::{ReadError, ReadErrorKind};
-use super::table::{Place, Row, TableReader, mixed_units, read_text};
+use super::table::{Row, TableReader, mixed_units, read_text};
 use super::{AxisData, MAX_READINGS, RawReading, fmt_target};
 use crate::units::{AxisKind, Direction};
 use std::io::BufRead;

@@ -16,11 +16,12 @@
 //! For the same reason `.xls` (Excel 97–2003) and `.ods` books are refused with a clear
 //! message: calamine reads those only whole, into dense ranges.
 
+use super::cell::{Field, Place, Value};
 use super::csv::LongTable;
 use super::error::{ReadError, ReadErrorKind};
 use super::layout::table_kind;
 use super::layout::{Layout, OLE_MAGIC, ReadTest, Recognised};
-use super::table::{Field, Place, Row, TableKind, TableReader, Value};
+use super::table::{Row, TableKind, TableReader};
 use super::wide::WideTable;
 use super::{AxisData, Location, MAX_READINGS};
 use calamine::{DataRef, Reader as _, Xlsx};

@@ -274,8 +274,8 @@ fn expand_tree(tree: &str) -> Vec<String> {
         .collect()
 }
 
-/// The module paths `code` names: its `use` trees and its inline `crate::…` and
-/// `super::…` paths (outside comments).
+/// The module paths `code` names: its `use` trees (not its re-exports) and its inline
+/// `crate::…` and `super::…` paths (outside comments).
 fn named_paths(code: &str) -> Vec<String> {
     let code: String = code
         .lines()
@@ -286,10 +286,8 @@ fn named_paths(code: &str) -> Vec<String> {
     let mut lines = code.lines();
     while let Some(line) = lines.next() {
         let line = line.trim_start();
-        let Some(tree) = ["use ", "pub use ", "pub(crate) use ", "pub(super) use "]
-            .iter()
-            .find_map(|start| line.strip_prefix(start))
-        else {
+        // A re-export (`pub use child::Thing;`) is the folder's front, not a use of it.
+        let Some(tree) = line.strip_prefix("use ") else {
             continue;
         };
         let mut tree = tree.to_string();
@@ -299,6 +297,9 @@ fn named_paths(code: &str) -> Vec<String> {
         }
         out.extend(expand_tree(tree.trim_end().trim_end_matches(';')));
     }
+    // Inline paths, outside the use statements just read and the visibilities
+    // (`pub(in crate::report)` names where an item is seen, not what it uses).
+    let code: String = without_uses(&code).replace("pub(in crate::", "pub(in ");
     for start in ["crate::", "super::"] {
         for (i, _) in code.match_indices(start) {
             let path: String = code[i..]
@@ -306,6 +307,26 @@ fn named_paths(code: &str) -> Vec<String> {
                 .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
                 .collect();
             out.push(path);
+        }
+    }
+    out
+}
+
+/// `code` without its `use` statements (which may span lines).
+fn without_uses(code: &str) -> String {
+    let mut out = String::new();
+    let mut in_use = false;
+    for line in code.lines() {
+        let trimmed = line.trim_start();
+        if trimmed.starts_with("use ") || trimmed.starts_with("pub use ") {
+            in_use = true;
+        }
+        if !in_use {
+            out.push_str(line);
+            out.push('\n');
+        }
+        if in_use && line.contains(';') {
+            in_use = false;
         }
     }
     out
@@ -319,7 +340,15 @@ fn file_of(here: &[String], path: &str, files: &BTreeMap<Vec<String>, PathBuf>) 
         "crate" => Vec::new(),
         "self" => here.to_vec(),
         "super" => here[..here.len().saturating_sub(1)].to_vec(),
-        _ => return None,
+        // A path from a child module (`use frame::Frame;`); else another crate's.
+        child => {
+            let mut module = here.to_vec();
+            module.push(child.to_string());
+            if !files.contains_key(&module) {
+                return None;
+            }
+            module
+        }
     };
     for s in segments {
         if s == "super" {
@@ -438,6 +467,11 @@ fn use_trees_are_expanded() {
         file_of(&here, "crate::x::Other", &files),
         Some(PathBuf::from("x/mod.rs"))
     );
+    assert_eq!(
+        file_of(&["x".to_string()], "y::Thing", &files),
+        Some(PathBuf::from("x/y.rs"))
+    );
+    assert_eq!(file_of(&here, "serde::Serialize", &files), None);
     let edges: BTreeMap<PathBuf, Vec<PathBuf>> = [
         (PathBuf::from("a"), vec![PathBuf::from("b")]),
         (PathBuf::from("b"), vec![PathBuf::from("a")]),

@@ -745,7 +745,9 @@ mod tests {
     use crate::report::chart_kit::svg_probe::{
         assert_well_formed, attr_values, degenerate_styles, has_text, text_tag, texts,
     };
-    use crate::report::charts::check::{check_position, row_decimals};
+    use crate::report::charts::check::{
+        CheckBar, check_position, model_checks_height, row_decimals,
+    };
 
     // The charts as SVG with an element per outline, as plotters wrote them.
     fn residuals(r: &Residuals, style: &Style) -> String {
@@ -757,7 +759,7 @@ mod tests {
     }
 
     fn model_checks(bars: &[CheckBar], style: &Style) -> String {
-        super::model_checks(bars, style).element_svg()
+        crate::report::charts::check::model_checks(bars, style).element_svg()
     }
 
     fn style(height_px: u32) -> Style {
