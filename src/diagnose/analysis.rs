@@ -7,6 +7,11 @@
 //! reversal along the axis ([`super::reversal`]) and the periodic error
 //! ([`super::periodic`]).
 
+use super::basis::Basis;
+use super::effects::{
+    Finding, drift, outlier, periodic as periodic_effect, reversal_variation, run_offset,
+    scatter_variation, thermal_growth, warm_up,
+};
 use super::finding::Units;
 use super::options::ALPHA;
 use super::outliers::{self, Hit};
@@ -17,24 +22,13 @@ use super::scatter::{self, ScatterTest};
 use super::time::{self, TimeTests};
 use crate::measurement::AxisData;
 
-/// What the tests found out about one measurement.
+/// What the tests found out about one measurement: the shared part every effect reads
+/// and each effect's own test.
 pub(crate) struct Analysis<'a> {
-    pub data: &'a AxisData,
-    pub prep: Prep,
-    pub units: Units,
-    /// The readings, one per row of `prep`.
-    pub x: Vec<f64>,
+    pub basis: Basis<'a>,
     pub hits: Vec<Hit>,
-    /// Rows that are not outliers.
-    pub active: Vec<bool>,
     pub time: TimeTests,
     pub scatter: Option<ScatterTest>,
-    /// Scatter σ of the full time model (NaN when unknown: n = 1).
-    pub sigma: f64,
-    /// Reversal value Bi per target of the readings corrected for the time effects.
-    pub b: Vec<f64>,
-    /// Bidirectional mean X̄i per target of the same readings.
-    pub means: Vec<f64>,
     pub reversal: Option<ReversalTest>,
     pub periodic: Search,
 }
@@ -81,28 +75,47 @@ impl<'a> Analysis<'a> {
         let ps = periodic::search(&prep.positions, &means, mvar.as_deref(), pitch, ALPHA);
         periodic::plan_notes(&ps.resolution, pitch, data.kind, notes);
         Analysis {
-            data,
-            units: Units {
-                kind: data.kind,
-                time: prep.time_unit,
+            basis: Basis {
+                data,
+                units: Units {
+                    kind: data.kind,
+                    time: prep.time_unit,
+                },
+                prep,
+                x,
+                active,
+                sigma,
+                b,
+                means,
             },
-            prep,
-            x,
             hits,
-            active,
             time: tt,
             scatter: sc,
-            sigma,
-            b,
-            means,
             reversal: rev,
             periodic: ps,
         }
     }
+}
 
-    /// Length of the measured travel (first to last target).
-    pub fn length(&self) -> f64 {
-        self.prep.length()
+impl Analysis<'_> {
+    /// Each effect's findings from its own test, in the order of the vocabulary.
+    pub fn findings(&self) -> Vec<Finding> {
+        let (b, t) = (&self.basis, &self.time);
+        [
+            drift::Rule.find(b, t.drift.as_ref()),
+            warm_up::Rule.find(b, t.warm.as_ref()),
+            thermal_growth::Rule.find(
+                b,
+                t.thermal.as_ref(),
+                t.drift.as_ref().and_then(|d| d.origin),
+            ),
+            run_offset::Rule.find(b, t.runs.as_ref()),
+            periodic_effect::Rule.find(b, &self.periodic),
+            reversal_variation::Rule.find(b, self.reversal.as_ref()),
+            outlier::Rule.find(b, &self.hits),
+            scatter_variation::Rule.find(b, self.scatter.as_ref()),
+        ]
+        .concat()
     }
 }
 

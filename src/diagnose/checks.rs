@@ -5,12 +5,14 @@
 
 use super::analysis::Analysis;
 use super::finding::fmt;
+use super::maths::linalg::smooth_trend;
 use super::maths::periodogram::{self, Grid, Trend};
 use super::maths::stats::quantile_sorted;
+use super::model::r4;
 use super::options::Options;
 use super::prep::Prep;
-use crate::axis_model::Simulation;
 use crate::axis_model::rng::Rng;
+use crate::axis_model::{ErrorModel, Simulation, TestPlan};
 use crate::measurement::AxisData;
 use rayon::prelude::*;
 
@@ -414,11 +416,11 @@ pub(crate) fn check_base_model(
     options: &Options,
     notes: &mut Vec<String>,
 ) -> Vec<ModelCheck> {
-    if !(a.prep.n >= 2 && simulable && options.simulations > 0) {
+    if !(a.basis.prep.n >= 2 && simulable && options.simulations > 0) {
         return Vec::new();
     }
     let mut count = options.simulations;
-    let budget = 4_000_000 / a.x.len().max(1);
+    let budget = 4_000_000 / a.basis.x.len().max(1);
     if count > budget {
         count = budget.max(20);
         notes.push(format!(
@@ -426,14 +428,20 @@ pub(crate) fn check_base_model(
             options.simulations
         ));
     }
-    let measured = statistics(a.data);
-    let checks = run(&measured, base, count, options.seed, !a.data.has_times());
+    let measured = statistics(a.basis.data);
+    let checks = run(
+        &measured,
+        base,
+        count,
+        options.seed,
+        !a.basis.data.has_times(),
+    );
     if let Some(c) = checks.iter().find(|c| {
         c.statistic == Statistic::TrendLackOfFit.name()
             && c.measured > c.simulated_high
             && a.periodic.peak.is_none()
     }) {
-        let ds = a.units.symbol();
+        let ds = a.basis.units.symbol();
         notes.push(format!(
             "the target means depart from a smooth (cubic) trend more than the scatter explains (RMS {} {ds}, simulated at most {} {ds}): the systematic deviation has structure at the scale of the target spacing — a progressive error of complex shape, or a periodic error the plan cannot resolve or aliases (ISO 230-2 4.2; Hemingray et al. 1971, §4); not one of the named effects",
             fmt(c.measured),
@@ -495,6 +503,52 @@ pub(crate) fn run(
         });
     }
     out
+}
+
+/// The base model (the standard's assumptions) fitted to the raw readings: smooth
+/// systematic deviation, one reversal value, white scatter, nothing in time.
+pub(crate) fn base_model(a: &Analysis, plan: &TestPlan, seed: u64) -> Simulation {
+    let (p, m) = (&a.basis.prep, a.basis.prep.m);
+    let all = vec![true; a.basis.x.len()];
+    let (raw_means, _) = p.cell_means(&a.basis.x, &all);
+    let raw_bidir: Vec<f64> = (0..m)
+        .map(|i| (raw_means[2 * i] + raw_means[2 * i + 1]) / 2.0)
+        .collect();
+    let raw_b: Vec<f64> = (0..m)
+        .map(|i| raw_means[2 * i] - raw_means[2 * i + 1])
+        .collect();
+    let trend = smooth_trend(&p.positions, &raw_bidir);
+    let raw_sigma = if p.n >= 2 {
+        let ss: f64 = p
+            .rows
+            .iter()
+            .zip(&a.basis.x)
+            .map(|(r, v)| (v - raw_means[p.cell(r)]).powi(2))
+            .sum();
+        (ss / (a.basis.x.len() - p.cells()) as f64).sqrt()
+    } else {
+        0.0
+    };
+    Simulation {
+        kind: a.basis.data.kind,
+        seed,
+        description: Some(
+            "base model fitted by axcheck diagnose: smooth systematic deviation, one reversal value, white scatter, nothing in time"
+                .to_string(),
+        ),
+        model: ErrorModel {
+            shape: p
+                .positions
+                .iter()
+                .zip(&trend)
+                .map(|(p, t)| [*p, r4(*t)])
+                .collect(),
+            reversal: r4(raw_b.iter().sum::<f64>() / m as f64),
+            scatter: r4(raw_sigma),
+            ..ErrorModel::default()
+        },
+        plan: plan.clone(),
+    }
 }
 
 #[cfg(test)]

@@ -34,7 +34,7 @@ pub(crate) fn corrected(
     let mut effects: Vec<(String, Vec<f64>)> = Vec::new();
     let mut not_subtracted = Vec::new();
     for e in kept {
-        match e.rule().removed(a, fit) {
+        match e.rule().removed(&a.basis, fit) {
             Some(v) => effects.push((e.name().to_string(), v)),
             None => not_subtracted.push(*e),
         }
@@ -46,7 +46,7 @@ pub(crate) fn corrected(
         ));
     }
     if effects.len() > 1 {
-        let mut sum = vec![0.0; a.x.len()];
+        let mut sum = vec![0.0; a.basis.x.len()];
         for (_, v) in &effects {
             for (s, e) in sum.iter_mut().zip(v) {
                 *s += e;
@@ -54,7 +54,7 @@ pub(crate) fn corrected(
         }
         effects.push(("all".to_string(), sum));
     }
-    let (data, p) = (a.data, &a.prep);
+    let (data, p) = (a.basis.data, &a.basis.prep);
     let measured = evaluate(data, standard);
     let key = |i: usize, d: usize, j: usize| (i * 2 + d) * p.n + j;
     effects

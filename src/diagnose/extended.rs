@@ -7,22 +7,28 @@ use super::analysis::Analysis;
 use super::effects::Effect;
 use super::fitted::Fitted;
 use super::model::{self, r4};
+use super::model_terms::Predictor;
+use super::options::ALPHA;
 use super::prep::TimeUnit;
 use super::select::Selection;
-use super::validate::Predictor;
 use crate::axis_model::{ErrorModel, Simulation};
 use crate::units::Direction;
 
 impl Fitted {
     pub fn new(a: &Analysis, sel: &Selection) -> Fitted {
-        let (p, kept) = (&a.prep, sel.terms);
-        let train: Vec<bool> = a.active.iter().map(|&act| act || !kept.outliers).collect();
-        let pred = Predictor::fit(p, &a.x, &train, kept);
-        let guess = model::guess_plan(a.data);
+        let (p, kept) = (&a.basis.prep, sel.terms);
+        let train: Vec<bool> = a
+            .basis
+            .active
+            .iter()
+            .map(|&act| act || !kept.outliers)
+            .collect();
+        let pred = Predictor::fit(p, &a.basis.x, &train, kept);
+        let guess = model::guess_plan(a.basis.data);
         let hours_per_unit = match p.time_unit {
             TimeUnit::Hours => 1.0,
             TimeUnit::Runs => {
-                let visits = guess.plan.schedule(&a.data.targets);
+                let visits = guess.plan.schedule(&a.basis.data.targets);
                 let total = visits.last().map_or(0.0, |v| v.time_s);
                 total / p.n as f64 / 3600.0
             }
@@ -63,6 +69,11 @@ impl Fitted {
             reversal_mean,
             periodic: sel.periodic.clone(),
             train,
+            outliers: a.hits.iter().map(|h| (h.row, h.size)).collect(),
+            scatter_ends: a.scatter.as_ref().map(|s| (s.sigma_lo, s.sigma_hi)),
+            warm_growth: (a.time.warm.as_ref())
+                .and_then(|w| w.estimate.as_ref())
+                .is_some_and(|e| e.g_p < ALPHA),
         }
     }
 
@@ -75,7 +86,7 @@ impl Fitted {
             ..ErrorModel::default()
         };
         for e in kept {
-            e.rule().extend(a, self, &mut model);
+            e.rule().extend(&a.basis, self, &mut model);
         }
         model.shape = self.shape_knots(a, &model);
         let describe = if kept.is_empty() {
@@ -84,7 +95,7 @@ impl Fitted {
             kept.iter().map(|e| e.name()).collect::<Vec<_>>().join(", ")
         };
         Simulation {
-            kind: a.data.kind,
+            kind: a.basis.data.kind,
             seed,
             description: Some(format!(
                 "extended model fitted by axcheck diagnose ({describe}); plan: the measured targets, runs and cycle"
@@ -97,17 +108,17 @@ impl Fitted {
     /// Shape knots: what the other terms of `model` leave at each target, with the
     /// simulator's times.
     fn shape_knots(&self, a: &Analysis, model: &ErrorModel) -> Vec<[f64; 2]> {
-        let (p, m, n) = (&a.prep, a.prep.m, a.prep.n);
+        let (p, m, n) = (&a.basis.prep, a.basis.prep.m, a.basis.prep.n);
         let key = |i: usize, d: usize, j: usize| (i * 2 + d) * n + j;
         let mut time_of = vec![0.0; 2 * m * n];
-        for v in &self.guess.plan.schedule(&a.data.targets) {
+        for v in &self.guess.plan.schedule(&a.basis.data.targets) {
             time_of[key(v.target, v.direction.index(), v.run)] = v.time_s;
         }
         let travel = (p.lo, p.hi);
         let rest: Vec<f64> = p
             .rows
             .iter()
-            .zip(&a.x)
+            .zip(&a.basis.x)
             .map(|(r, x)| {
                 let dir = if r.d == 0 {
                     Direction::Up
@@ -115,7 +126,7 @@ impl Fitted {
                     Direction::Down
                 };
                 let t = time_of[key(r.i, r.d, r.run)];
-                let mut e = model.expected(a.data.kind, p.positions[r.i], dir, t, travel);
+                let mut e = model.expected(a.basis.data.kind, p.positions[r.i], dir, t, travel);
                 if let Some(o) = model.run_offsets.get(r.run) {
                     e += o;
                 }

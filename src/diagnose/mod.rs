@@ -27,6 +27,7 @@
 //! Pure: no file I/O; deterministic for [`Options::seed`].
 
 mod analysis;
+mod basis;
 mod checks;
 mod confirm;
 mod corrected;
@@ -37,6 +38,7 @@ mod finding;
 mod fitted;
 mod json;
 mod model;
+mod model_terms;
 mod options;
 mod outliers;
 mod periodic;
@@ -139,14 +141,14 @@ pub const VALIDATION: &str = "k-fold cross-validation over readings (10 folds, s
 pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let mut notes = Vec::new();
     let a = Analysis::run(data, options.pitch, &mut notes);
-    let mut seen: Vec<Finding> = Effect::ALL.iter().flat_map(|e| e.rule().find(&a)).collect();
+    let mut seen = a.findings();
     seen.sort_by_key(Finding::effect);
     let selection = select::select(&a, &seen, options.seed);
     let (findings, unconfirmed) = Unconfirmed::split(seen, &selection.term_gains);
     let fit = Fitted::new(&a, &selection);
     notes.extend(fit.guess.notes.iter().cloned());
     let extended_model = fit.extended_model(&a, &selection.effects, options.seed);
-    let base_model = fitted::base_model(&a, &fit.guess.plan, options.seed);
+    let base_model = checks::base_model(&a, &fit.guess.plan, options.seed);
     let simulable = fit.guess.simulable;
     let checks = checks::check_base_model(&a, &base_model, simulable, options, &mut notes);
     let residuals = residuals::residuals(&a, &fit, &selection.effects);
@@ -155,7 +157,7 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     Diagnosis {
         kind: data.kind,
         standard: options.standard,
-        time_unit: a.prep.time_unit,
+        time_unit: a.basis.prep.time_unit,
         findings,
         unconfirmed,
         base: selection.base,

@@ -63,13 +63,13 @@ pub struct Residuals {
 
 /// The residuals of `a` with the extended model `fit` of the `kept` effects.
 pub(crate) fn residuals(a: &Analysis, fit: &Fitted, kept: &[Effect]) -> Residuals {
-    let (p, data) = (&a.prep, a.data);
-    let all = vec![true; a.x.len()];
-    let (raw_means, _) = p.cell_means(&a.x, &all);
+    let (p, data) = (&a.basis.prep, a.basis.data);
+    let all = vec![true; a.basis.x.len()];
+    let (raw_means, _) = p.cell_means(&a.basis.x, &all);
     let mut readings: Vec<ResidualPoint> = p
         .rows
         .iter()
-        .zip(&a.x)
+        .zip(&a.basis.x)
         .enumerate()
         .map(|(k, (r, x))| ResidualPoint {
             order: r.order,
@@ -82,14 +82,14 @@ pub(crate) fn residuals(a: &Analysis, fit: &Fitted, kept: &[Effect]) -> Residual
         })
         .collect();
     readings.sort_by_key(|r| r.order);
-    let trend = smooth_trend(&p.positions, &a.means);
+    let trend = smooth_trend(&p.positions, &a.basis.means);
     let along_axis = (0..p.m)
         .map(|i| AxisPoint {
             position: p.positions[i],
-            mean: a.means[i],
+            mean: a.basis.means[i],
             trend: trend[i],
-            residual: a.means[i] - trend[i],
-            reversal: a.b[i],
+            residual: a.basis.means[i] - trend[i],
+            reversal: a.basis.b[i],
         })
         .collect();
     Residuals {

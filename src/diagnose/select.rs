@@ -11,8 +11,9 @@ use super::effects::Finding;
 use super::effects::{Effect, Term};
 use super::finding::{Evidence, Keyed, fmt};
 use super::maths::periodogram::Peak;
+use super::model_terms::ModelTerms;
 use super::prep::{Clocks, Prep};
-use super::validate::{self, ModelTerms, Score};
+use super::validate::{self, Score};
 use super::warm;
 use serde::Serialize;
 use serde::ser::Serializer;
@@ -241,7 +242,13 @@ struct Judge<'a> {
 
 impl Judge<'_> {
     fn score(&self, terms: ModelTerms) -> Score {
-        validate::score(&self.a.prep, &self.a.x, &self.fold, &self.outlier, terms)
+        validate::score(
+            &self.a.basis.prep,
+            &self.a.basis.x,
+            &self.fold,
+            &self.outlier,
+            terms,
+        )
     }
 
     /// The candidate `terms` (the `kept` ones and the effect's) cross-validated, and the
@@ -252,7 +259,7 @@ impl Judge<'_> {
         kept: ModelTerms,
         terms: ModelTerms,
     ) -> (Score, Vec<Score>) {
-        let (p, x) = (&self.a.prep, &self.a.x);
+        let (p, x) = (&self.a.basis.prep, &self.a.basis.x);
         match unrelated {
             Unrelated::TargetOrders => {
                 let orders = confirm::target_orders(&p.positions, self.seed);
@@ -323,7 +330,7 @@ impl Judge<'_> {
             warm: false,
             ..terms
         };
-        let base = validate::fit_time(q, &self.a.x, &train, without);
+        let base = validate::fit_time(q, &self.a.basis.x, &train, without);
         let ones = vec![1.0; q.cells()];
         ModelTerms {
             warm_tau: warm::profile(q, &base, &ones, false).map(|w| w.tau),
@@ -355,11 +362,11 @@ fn shuffled_time(p: &Prep, order: &[usize], kept: ModelTerms, terms: ModelTerms)
 /// model of the terms kept before it (a finding whose term is left out is listed apart:
 /// [`super::Unconfirmed`]).
 pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection {
-    let p = &a.prep;
+    let p = &a.basis.prep;
     let judge = Judge {
         a,
         fold: validate::folds(p, seed),
-        outlier: a.active.iter().map(|x| !x).collect(),
+        outlier: a.basis.active.iter().map(|x| !x).collect(),
         seed: confirm::plan_seed(&p.positions, &p.clocks.run, seed),
     };
     let base_score = judge.score(ModelTerms::default());
@@ -445,9 +452,9 @@ fn judge_periodic(
     let Some(peak) = a.periodic.peak.as_ref() else {
         return ((None, None), None);
     };
-    let positions = &a.prep.positions;
+    let positions = &a.basis.prep.positions;
     let orders = confirm::target_orders(positions, seed);
-    let errors = validate::between_targets(positions, &a.means, peak.period, &orders);
+    let errors = validate::between_targets(positions, &a.basis.means, peak.period, &orders);
     let (bb, be) = errors.rms();
     let others: Vec<f64> = errors
         .unrelated

@@ -86,7 +86,7 @@ pub(crate) fn time_effect(a: &Analysis, fit: &Fitted, kept: &[Effect]) -> Option
         .copied()
         .filter(|e| in_time.contains(e))
         .collect();
-    let p = &a.prep;
+    let p = &a.basis.prep;
     if terms.is_empty() || p.rows.is_empty() {
         return None;
     }
@@ -138,12 +138,12 @@ pub(crate) fn time_effect(a: &Analysis, fit: &Fitted, kept: &[Effect]) -> Option
 /// with the fitted effect `at_rows` taken out, less the effect's `mean`), at its
 /// readings' mean time and rank; in the order of the runs, ↑ before ↓.
 fn run_means(a: &Analysis, at_rows: &[f64], mean: f64) -> Vec<RunMean> {
-    let (p, data) = (&a.prep, a.data);
-    let all = vec![true; a.x.len()];
-    let without: Vec<f64> = a.x.iter().zip(at_rows).map(|(x, e)| x - e).collect();
+    let (p, data) = (&a.basis.prep, a.basis.data);
+    let all = vec![true; a.basis.x.len()];
+    let without: Vec<f64> = a.basis.x.iter().zip(at_rows).map(|(x, e)| x - e).collect();
     let (systematic, _) = p.cell_means(&without, &all);
     let mut sums = vec![(0.0, 0.0, 0.0, 0usize); 2 * p.n];
-    for (r, x) in p.rows.iter().zip(&a.x) {
+    for (r, x) in p.rows.iter().zip(&a.basis.x) {
         let s = &mut sums[2 * r.run + r.d];
         s.0 += x - systematic[p.cell(r)] - mean;
         s.1 += data.readings[r.reading].time_s.unwrap_or(f64::NAN);
@@ -173,7 +173,7 @@ fn run_means(a: &Analysis, at_rows: &[f64], mean: f64) -> Vec<RunMean> {
 
 /// The readings' (time, rank) sorted by time.
 fn ranks_in_time(a: &Analysis) -> Vec<(f64, f64)> {
-    let mut v: Vec<(f64, f64)> = (a.prep.rows.iter())
+    let mut v: Vec<(f64, f64)> = (a.basis.prep.rows.iter())
         .map(|r| (r.t, r.order as f64))
         .collect();
     v.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.total_cmp(&y.1)));

@@ -22,6 +22,7 @@
 //! what the periodic term leaves plus the term (extended).
 
 use super::maths::periodogram::Trend;
+use super::model_terms::{Lines, ModelTerms, Predictor};
 use super::prep::Prep;
 use super::scatter;
 use super::time_fit::{Terms, TimeFit, fit};
@@ -33,50 +34,12 @@ use std::f64::consts::TAU;
 /// Number of folds.
 pub(crate) const K: usize = 10;
 
-/// The terms of a model.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub(crate) struct ModelTerms {
-    pub drift: bool,
-    pub warm: bool,
-    /// The warm-up's time constant when it is given (an unrelated curve's, fitted on all
-    /// the readings); None: profiled on each fold's training readings.
-    pub warm_tau: Option<f64>,
-    pub thermal: bool,
-    pub runs: bool,
-    pub reversal: bool,
-    pub outliers: bool,
-    pub scatter: bool,
-}
-
-/// A model fitted to training rows: its time model and what it has at the targets.
-pub(crate) struct Predictor {
-    pub time: TimeFit,
-    pub lines: Lines,
-}
-
-/// What a model has at each target and cell beside its time model.
-pub(crate) struct Lines {
-    /// Bidirectional mean per target.
-    pub mean: Vec<f64>,
-    /// Reversal value per target as the model has it.
-    pub reversal: Vec<f64>,
-    /// Scatter σ per cell.
-    pub sigma: Vec<f64>,
-    /// Training readings per cell.
-    pub count: Vec<usize>,
-}
-
 impl Predictor {
     /// Fits `terms` on the `train` rows of `x`.
     pub fn fit(prep: &Prep, x: &[f64], train: &[bool], terms: ModelTerms) -> Predictor {
         let time = fit_time(prep, x, train, terms);
         let lines = Lines::along(prep, &time, terms, &prep.positions);
         Predictor { time, lines }
-    }
-
-    /// The predicted reading of row `k`.
-    pub fn predict(&self, prep: &Prep, k: usize) -> f64 {
-        self.lines.predict(prep, &self.time, k)
     }
 }
 
@@ -128,19 +91,6 @@ impl Lines {
             sigma,
             count,
         }
-    }
-
-    /// The predicted reading of row `k` with the time model `time`.
-    fn predict(&self, prep: &Prep, time: &TimeFit, k: usize) -> f64 {
-        let r = &prep.rows[k];
-        self.mean[r.i] + r.sign * self.reversal[r.i] / 2.0 + time.effect(prep, k)
-    }
-
-    /// Predictive variance of a new reading in the cell of row `k`.
-    fn variance(&self, prep: &Prep, k: usize) -> f64 {
-        let c = prep.cell(&prep.rows[k]);
-        let s = self.sigma[c];
-        s * s * (1.0 + 1.0 / self.count[c].max(1) as f64)
     }
 }
 

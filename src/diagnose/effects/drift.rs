@@ -5,11 +5,12 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::time_fit::DriftTest;
 
 /// A drift: its rate per time unit (hour, or run without time stamps).
 #[derive(Debug, Clone, PartialEq)]
@@ -57,9 +58,10 @@ impl Fields for Drift {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
-        let Some(d) = a.time.drift.as_ref().filter(|d| d.test.p < ALPHA) else {
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    pub(crate) fn find(&self, a: &Basis, drift: Option<&DriftTest>) -> Vec<Finding> {
+        let Some(d) = drift.filter(|d| d.test.p < ALPHA) else {
             return Vec::new();
         };
         let u = a.units;
@@ -102,7 +104,9 @@ impl EffectRule for Rule {
             message,
         }]
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::Readings(|t| t.drift = true)
     }
@@ -113,11 +117,11 @@ impl EffectRule for Rule {
         Unrelated::TimeOrders
     }
 
-    fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+    fn extend(&self, _: &Basis, fit: &Fitted, model: &mut ErrorModel) {
         model.drift_per_h = r4(fit.drift_rate / fit.hours_per_unit);
     }
 
-    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
         Some(
             a.prep
                 .rows

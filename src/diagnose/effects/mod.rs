@@ -19,11 +19,11 @@ pub mod scatter_variation;
 pub mod thermal_growth;
 pub mod warm_up;
 
-use super::analysis::Analysis;
+use super::basis::Basis;
 pub(crate) use super::confirm::Unrelated;
 use super::finding::{Evidence, Fields, Keyed, Units};
 use super::fitted::Fitted;
-use super::validate::ModelTerms;
+use super::model_terms::ModelTerms;
 use crate::axis_model::ErrorModel;
 use serde::Serialize;
 use serde::ser::Serializer;
@@ -41,19 +41,18 @@ pub(crate) enum Term {
     TargetMeans,
 }
 
-/// One effect of the vocabulary.
+/// One effect of the vocabulary. Its findings come from its own test (each effect's
+/// `Rule::find`, given its test by the analysis that runs them in order).
 pub(crate) trait Rule: Sync {
-    /// The findings of this effect from the tests (each at level [`super::ALPHA`]).
-    fn find(&self, a: &Analysis) -> Vec<Finding>;
     /// How its term is judged.
     fn term(&self) -> Term;
     /// The unrelated terms of the same size its term's gain is compared with.
     fn unrelated(&self) -> Unrelated;
     /// Adds the kept term to the extended model (whose plan is the file's plan).
-    fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel);
+    fn extend(&self, a: &Basis, fit: &Fitted, model: &mut ErrorModel);
     /// The effect per row of `a.prep` to subtract from the readings for the "effect
     /// removed" parameters; None when it cannot be subtracted.
-    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>>;
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>>;
 }
 
 /// Access to one effect's estimate in a finding.

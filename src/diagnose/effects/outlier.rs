@@ -4,10 +4,11 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::{ErrorModel, Outlier as SimulatedOutlier};
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
+use crate::diagnose::outliers::Hit;
 use crate::measurement::fmt_target;
 use crate::units::Direction;
 
@@ -60,10 +61,11 @@ fn direction(d: usize) -> Direction {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    pub(crate) fn find(&self, a: &Basis, hits: &[Hit]) -> Vec<Finding> {
         let u = a.units;
-        a.hits
+        hits
             .iter()
             .map(|h| {
                 let r = &a.prep.rows[h.row];
@@ -102,7 +104,9 @@ impl EffectRule for Rule {
             })
             .collect()
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::Readings(|t| t.outliers = true)
     }
@@ -112,26 +116,26 @@ impl EffectRule for Rule {
         Unrelated::OrdinaryReadings
     }
 
-    fn extend(&self, a: &Analysis, _: &Fitted, model: &mut ErrorModel) {
-        model.outliers = a
-            .hits
+    fn extend(&self, a: &Basis, fit: &Fitted, model: &mut ErrorModel) {
+        model.outliers = fit
+            .outliers
             .iter()
-            .map(|h| {
-                let r = &a.prep.rows[h.row];
+            .map(|&(row, size)| {
+                let r = &a.prep.rows[row];
                 SimulatedOutlier {
                     run: r.run as u32 + 1,
                     direction: direction(r.d),
                     target: r.i + 1,
-                    size: r4(h.size),
+                    size: r4(size),
                 }
             })
             .collect();
     }
 
-    fn removed(&self, a: &Analysis, _: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
         let mut v = vec![0.0; a.x.len()];
-        for h in &a.hits {
-            v[h.row] = h.size;
+        for &(row, size) in &fit.outliers {
+            v[row] = size;
         }
         Some(v)
     }

@@ -6,10 +6,11 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::{ErrorModel, PeriodicTerm};
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
+use crate::diagnose::periodic::Search;
 use crate::diagnose::periodic::short_test;
 use std::f64::consts::TAU;
 
@@ -62,9 +63,9 @@ impl Fields for Periodic {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
-        let ps = &a.periodic;
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    pub(crate) fn find(&self, a: &Basis, ps: &Search) -> Vec<Finding> {
         let Some(peak) = ps.peak.as_ref() else {
             return Vec::new();
         };
@@ -109,7 +110,9 @@ impl EffectRule for Rule {
             message,
         }]
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::TargetMeans
     }
@@ -120,7 +123,7 @@ impl EffectRule for Rule {
         Unrelated::TargetOrders
     }
 
-    fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+    fn extend(&self, _: &Basis, fit: &Fitted, model: &mut ErrorModel) {
         model.periodic = fit
             .periodic
             .iter()
@@ -132,7 +135,7 @@ impl EffectRule for Rule {
             .collect();
     }
 
-    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
         fit.periodic.as_ref().map(|p| {
             let phase = p.phase_deg.to_radians();
             a.prep

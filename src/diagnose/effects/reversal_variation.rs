@@ -5,11 +5,12 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::reversal::ReversalTest;
 use crate::measurement::fmt_target;
 use crate::units::AxisKind;
 
@@ -66,9 +67,10 @@ impl Fields for ReversalVariation {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
-        let Some(r) = a.reversal.as_ref() else {
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    pub(crate) fn find(&self, a: &Basis, reversal: Option<&ReversalTest>) -> Vec<Finding> {
+        let Some(r) = reversal else {
             return Vec::new();
         };
         let half = ALPHA / 2.0;
@@ -137,7 +139,9 @@ impl EffectRule for Rule {
             message,
         }]
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::Readings(|t| t.reversal = true)
     }
@@ -148,12 +152,12 @@ impl EffectRule for Rule {
         Unrelated::TargetOrders
     }
 
-    fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+    fn extend(&self, a: &Basis, fit: &Fitted, model: &mut ErrorModel) {
         model.reversal = r4(fit.reversal[0]);
         model.reversal_end = Some(r4(fit.reversal[a.prep.m - 1]));
     }
 
-    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
         Some(
             a.prep
                 .rows

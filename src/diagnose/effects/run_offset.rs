@@ -5,11 +5,12 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::time::RunTest;
 
 /// One run's offset.
 #[derive(Debug, Clone, PartialEq)]
@@ -52,9 +53,10 @@ impl Fields for RunOffset {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
-        let Some(r) = a.time.runs.as_ref().filter(|r| r.p < ALPHA) else {
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    pub(crate) fn find(&self, a: &Basis, runs: Option<&RunTest>) -> Vec<Finding> {
+        let Some(r) = runs.filter(|r| r.p < ALPHA) else {
             return Vec::new();
         };
         let rms = (r.offsets.iter().map(|o| o * o).sum::<f64>() / r.offsets.len() as f64).sqrt();
@@ -94,7 +96,9 @@ impl EffectRule for Rule {
             message,
         }]
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::Readings(|t| t.runs = true)
     }
@@ -104,11 +108,11 @@ impl EffectRule for Rule {
         Unrelated::RunOrders
     }
 
-    fn extend(&self, _: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+    fn extend(&self, _: &Basis, fit: &Fitted, model: &mut ErrorModel) {
         model.run_offsets = fit.run_offsets.iter().map(|o| r4(*o)).collect();
     }
 
-    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
         Some(
             a.prep
                 .rows

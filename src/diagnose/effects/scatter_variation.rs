@@ -4,11 +4,12 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::scatter::ScatterTest;
 use crate::measurement::fmt_target;
 
 /// A scatter σ that changes along the axis (log-linearly in position).
@@ -49,9 +50,10 @@ impl Fields for ScatterVariation {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
-        let Some(s) = a.scatter.as_ref().filter(|s| s.p < ALPHA) else {
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    pub(crate) fn find(&self, a: &Basis, scatter: Option<&ScatterTest>) -> Vec<Finding> {
+        let Some(s) = scatter.filter(|s| s.p < ALPHA) else {
             return Vec::new();
         };
         let (u, p) = (a.units, &a.prep);
@@ -86,7 +88,9 @@ impl EffectRule for Rule {
             message,
         }]
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::Density(|t| t.scatter = true)
     }
@@ -97,15 +101,15 @@ impl EffectRule for Rule {
         Unrelated::TargetOrders
     }
 
-    fn extend(&self, a: &Analysis, _: &Fitted, model: &mut ErrorModel) {
-        if let Some(s) = a.scatter.as_ref() {
-            model.scatter = r4(s.sigma_lo);
-            model.scatter_end = Some(r4(s.sigma_hi));
+    fn extend(&self, _: &Basis, fit: &Fitted, model: &mut ErrorModel) {
+        if let Some((lo, hi)) = fit.scatter_ends {
+            model.scatter = r4(lo);
+            model.scatter_end = Some(r4(hi));
         }
     }
 
     /// A scatter cannot be subtracted from the readings.
-    fn removed(&self, _: &Analysis, _: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, _: &Basis, _: &Fitted) -> Option<Vec<f64>> {
         None
     }
 }

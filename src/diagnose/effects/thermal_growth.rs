@@ -5,11 +5,12 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::time_fit::CoefTest;
 use crate::measurement::fmt_target;
 use crate::units::AxisKind;
 
@@ -62,19 +63,21 @@ impl Fields for ThermalGrowth {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
-        let Some(t) = a.time.thermal.as_ref().filter(|t| t.p < ALPHA) else {
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    /// `drift_origin`: where the drift test put the origin of the time effect, if it did.
+    pub(crate) fn find(
+        &self,
+        a: &Basis,
+        thermal: Option<&CoefTest>,
+        drift_origin: Option<f64>,
+    ) -> Vec<Finding> {
+        let Some(t) = thermal.filter(|t| t.p < ALPHA) else {
             return Vec::new();
         };
         let u = a.units;
         let ppm = t.estimate / a.prep.ppm_factor();
-        let origin = a
-            .time
-            .drift
-            .as_ref()
-            .and_then(|d| d.origin)
-            .unwrap_or(a.prep.pbar);
+        let origin = drift_origin.unwrap_or(a.prep.pbar);
         let over = t.estimate * a.length() * a.prep.t_span;
         let message = format!(
             "an error proportional to position grows with time: {} ppm per {} ({} {} over the measured travel and the test), zero at {} (t = {}, p = {})",
@@ -104,7 +107,9 @@ impl EffectRule for Rule {
             message,
         }]
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::Readings(|t| t.thermal = true)
     }
@@ -115,12 +120,12 @@ impl EffectRule for Rule {
         Unrelated::TimeOrders
     }
 
-    fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+    fn extend(&self, a: &Basis, fit: &Fitted, model: &mut ErrorModel) {
         model.thermal_growth_ppm_per_h = r4(fit.growth / a.prep.ppm_factor() / fit.hours_per_unit);
         model.thermal_origin = r4(fit.origin);
     }
 
-    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
         let p = &a.prep;
         Some(
             p.rows

@@ -7,7 +7,7 @@
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
-use crate::diagnose::analysis::Analysis;
+use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::model::r4;
@@ -136,13 +136,13 @@ impl Fields for WarmUp {
 }
 
 /// The level approached at the first and the last target (the growth only when found).
-fn end_levels(a: &Analysis, e: &WarmEstimate, growth: bool) -> [f64; 2] {
+fn end_levels(a: &Basis, e: &WarmEstimate, growth: bool) -> [f64; 2] {
     let g = if growth { e.g } else { 0.0 };
     [a.prep.lo, a.prep.hi].map(|p| e.a + g * (p - a.prep.pbar))
 }
 
 impl WarmUp {
-    fn new(a: &Analysis, w: &WarmTest, e: &WarmEstimate) -> WarmUp {
+    fn new(a: &Basis, w: &WarmTest, e: &WarmEstimate) -> WarmUp {
         let u = a.units;
         let growth = e.g_p < ALPHA;
         let levels = end_levels(a, e, growth);
@@ -215,9 +215,10 @@ impl WarmUp {
 
 pub(crate) struct Rule;
 
-impl EffectRule for Rule {
-    fn find(&self, a: &Analysis) -> Vec<Finding> {
-        let Some(w) = a.time.warm.as_ref().filter(|w| w.p < ALPHA) else {
+impl Rule {
+    /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
+    pub(crate) fn find(&self, a: &Basis, warm: Option<&WarmTest>) -> Vec<Finding> {
+        let Some(w) = warm.filter(|w| w.p < ALPHA) else {
             return Vec::new();
         };
         let Some(e) = w.estimate.as_ref() else {
@@ -246,7 +247,9 @@ impl EffectRule for Rule {
             message,
         }]
     }
+}
 
+impl EffectRule for Rule {
     fn term(&self) -> Term {
         Term::Readings(|t| t.warm = true)
     }
@@ -257,16 +260,10 @@ impl EffectRule for Rule {
         Unrelated::TimeOrders
     }
 
-    fn extend(&self, a: &Analysis, fit: &Fitted, model: &mut ErrorModel) {
+    fn extend(&self, a: &Basis, fit: &Fitted, model: &mut ErrorModel) {
         let time = &fit.pred.time;
         let Some(tau) = time.tau else { return };
-        let growth = a
-            .time
-            .warm
-            .as_ref()
-            .and_then(|w| w.estimate.as_ref())
-            .is_some_and(|e| e.g_p < ALPHA);
-        let g = if growth { time.warm_g } else { 0.0 };
+        let g = if fit.warm_growth { time.warm_g } else { 0.0 };
         // The simulator's warm-up starts at its time 0, the diagnosis's at the first
         // reading: the level at that reading is what is left of the simulator's.
         let tau_h = tau * fit.hours_per_unit;
@@ -279,13 +276,13 @@ impl EffectRule for Rule {
         let scale = (first_h / tau_h).exp();
         model.warm_up_tau_min = r4(tau_h * 60.0);
         model.warm_up = r4(scale * (time.warm_a + g * (fit.origin - a.prep.pbar)));
-        if growth {
+        if fit.warm_growth {
             model.warm_up_ppm = r4(scale * g / a.prep.ppm_factor());
             model.thermal_origin = r4(fit.origin);
         }
     }
 
-    fn removed(&self, a: &Analysis, fit: &Fitted) -> Option<Vec<f64>> {
+    fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
         // To the final level: as the readings of the warm machine.
         let time = &fit.pred.time;
         let tau = time.tau?;
