@@ -2,23 +2,20 @@
 //!
 //! Order, chosen so that one effect does not pass for another: outliers (in the full time
 //! model), time effects (drift, warm-up, thermal growth, run offsets; [`super::time`]), scatter
-//! along the axis ([`super::scatter`]; when found, outliers and time effects are redone
+//! along the axis ([`super::effects::scatter_variation`]; when found, outliers and time effects are redone
 //! with the scatter model as weights), then on readings corrected for the time effects the
-//! reversal along the axis ([`super::reversal`]) and the periodic error
-//! ([`super::periodic`]).
+//! reversal along the axis ([`super::effects::reversal_variation`]) and the periodic error
+//! ([`super::effects::periodic`]).
 
 use super::basis::Basis;
-use super::effects::{
-    Finding, drift, outlier, periodic as periodic_effect, reversal_variation, run_offset,
-    scatter_variation, thermal_growth, warm_up,
-};
+use super::effects::outlier::{self, Hit};
+use super::effects::periodic::{self, Search};
+use super::effects::reversal_variation::{self, ReversalTest};
+use super::effects::scatter_variation::{self, ScatterTest};
+use super::effects::{Finding, drift, run_offset, thermal_growth, warm_up};
 use super::finding::Units;
 use super::options::ALPHA;
-use super::outliers::{self, Hit};
-use super::periodic::{self, Search};
 use super::prep::{Prep, TimeUnit};
-use super::reversal::{self, ReversalTest};
-use super::scatter::{self, ScatterTest};
 use super::time::{self, TimeTests};
 use crate::measurement::AxisData;
 
@@ -65,7 +62,7 @@ impl<'a> Analysis<'a> {
                 .map(|i| var_cell(2 * i) + var_cell(2 * i + 1))
                 .collect()
         });
-        let rev = reversal::test(&prep.positions, &b, bvar.as_deref(), tt.df);
+        let rev = reversal_variation::test(&prep.positions, &b, bvar.as_deref(), tt.df);
         let means: Vec<f64> = (0..m).map(|i| (cm[2 * i] + cm[2 * i + 1]) / 2.0).collect();
         let mvar: Option<Vec<f64>> = known.then(|| {
             (0..m)
@@ -110,7 +107,7 @@ impl Analysis<'_> {
                 t.drift.as_ref().and_then(|d| d.origin),
             ),
             run_offset::Rule.find(b, t.runs.as_ref()),
-            periodic_effect::Rule.find(b, &self.periodic),
+            periodic::Rule.find(b, &self.periodic),
             reversal_variation::Rule.find(b, self.reversal.as_ref()),
             outlier::Rule.find(b, &self.hits),
             scatter_variation::Rule.find(b, self.scatter.as_ref()),
@@ -171,22 +168,22 @@ fn time_and_scatter(
         a
     };
     let mut scale = vec![1.0; prep.cells()];
-    let mut hits = outliers::detect(prep, x, &scale, None, ALPHA);
+    let mut hits = outlier::detect(prep, x, &scale, None, ALPHA);
     let mut active = mask(&hits);
     let mut tt = time::tests(prep, x, &active, &scale, ALPHA);
     if let Some(tau) = tt.warm_tau(ALPHA).filter(|_| !hits.is_empty()) {
         // Readings early in a warm-up are no outliers of a model that has it.
-        hits = outliers::detect(prep, x, &scale, Some(tau), ALPHA);
+        hits = outlier::detect(prep, x, &scale, Some(tau), ALPHA);
         active = mask(&hits);
         tt = time::tests(prep, x, &active, &scale, ALPHA);
     }
-    let mut sc = scatter::test(prep, &tt.full.residuals, tt.sigma2);
+    let mut sc = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2);
     if let Some(s) = sc.as_ref().filter(|s| s.p < ALPHA) {
         scale = s.rel_scale.clone();
-        hits = outliers::detect(prep, x, &scale, tt.warm_tau(ALPHA), ALPHA);
+        hits = outlier::detect(prep, x, &scale, tt.warm_tau(ALPHA), ALPHA);
         active = mask(&hits);
         tt = time::tests(prep, x, &active, &scale, ALPHA);
-        if let Some(s2) = scatter::test(prep, &tt.full.residuals, tt.sigma2) {
+        if let Some(s2) = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2) {
             sc = Some(s2);
         }
     }

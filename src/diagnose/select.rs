@@ -8,13 +8,13 @@
 use super::analysis::Analysis;
 use super::confirm::{self, Unrelated};
 use super::effects::Finding;
+use super::effects::warm_up as warm;
 use super::effects::{Effect, Term};
 use super::finding::{Evidence, Keyed, fmt};
 use super::maths::periodogram::Peak;
 use super::model_terms::ModelTerms;
 use super::prep::{Clocks, Prep};
 use super::validate::{self, Score};
-use super::warm;
 use serde::Serialize;
 use serde::ser::Serializer;
 

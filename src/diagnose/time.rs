@@ -7,7 +7,7 @@
 //!
 //! * drift: `β·t`, uniform along the axis;
 //! * warm-up: `(a + g·(P − P̄))·(1 − exp(−(t − t₀)/τ))`, an exponential approach to a new
-//!   level from the start of the test ([`super::warm`]);
+//!   level from the start of the test ([`super::effects::warm_up`]);
 //! * thermal growth: `γ·(P − P̄)·t`, proportional to position;
 //! * run offsets: one constant per run (zero-point instability).
 //!
@@ -19,28 +19,18 @@
 //! no zero shift.
 //! When the run offsets are real, a drift is judged against the run-to-run variation
 //! instead (random run effects: only a trend larger than the zero shifts is a drift).
-//! A warm-up, found by [`super::warm::search`], joins the smooth part: the run offsets are
+//! A warm-up, found by [`super::effects::warm_up::search`], joins the smooth part: the run offsets are
 //! then what the drift *and* the warm-up leave, so that a smooth approach in time is never
 //! taken for zero shifts.
 //!
 //! The fit of the time model that these tests and the warm-up search share is in
 //! `time_fit.rs`.
 
-use super::maths::stats::{f_upper, t_two_sided};
+use super::effects::run_offset::{self, RunTest};
+use super::effects::warm_up::{self as warm, WarmEstimate, WarmTest};
+use super::effects::{drift, thermal_growth};
 use super::prep::Prep;
 use super::time_fit::{CoefTest, DriftTest, Terms, TimeFit, fit};
-use super::warm::{self, WarmEstimate, WarmTest};
-
-/// Run offsets beyond the smooth model (a linear drift and a warm-up curve).
-#[derive(Debug, Clone)]
-pub(crate) struct RunTest {
-    pub f: f64,
-    pub df1: f64,
-    pub df2: f64,
-    pub p: f64,
-    /// Run effects after the drift fit, centred (mean 0), per run.
-    pub offsets: Vec<f64>,
-}
 
 /// The time tests on the active rows.
 #[derive(Debug, Clone)]
@@ -115,12 +105,14 @@ pub(crate) fn tests(
     // leave (below).
     out.runs = match out.warm.as_ref() {
         Some(w) => {
-            run_test(prep, &w.full, &w.smooth, w.full.sigma2(), w.full.df).map(|r| RunTest {
-                offsets: run_offsets(prep, &out.trend),
-                ..r
+            run_offset::test(prep, &w.full, &w.smooth, w.full.sigma2(), w.full.df).map(|r| {
+                RunTest {
+                    offsets: run_offset::offsets(prep, &out.trend),
+                    ..r
+                }
             })
         }
-        None => run_test(prep, &out.full, &out.trend, sigma2, df),
+        None => run_offset::test(prep, &out.full, &out.trend, sigma2, df),
     };
     let runs_real = out.runs.as_ref().is_some_and(|r| r.p < alpha);
     if warm_found {
@@ -133,15 +125,20 @@ pub(crate) fn tests(
             w.estimate = beside.kept.and_then(|f| WarmEstimate::of(&f, (w.ms, w.df)));
         }
     } else {
-        out.thermal = thermal_test(&out.full, sigma2, df);
+        out.thermal = thermal_growth::test(&out.full, sigma2, df);
         let thermal_found = out.thermal.as_ref().is_some_and(|t| t.p < alpha);
-        out.drift = drift_test(prep, &out, runs_real, thermal_found);
+        out.drift = drift::test(
+            prep,
+            &out.trend,
+            drift_reference(&out, runs_real),
+            thermal_found,
+        );
     }
     if runs_real {
         let found = found_smooth(&out, alpha);
         let smooth = fit(prep, values, active, scale, found);
         if let Some(r) = out.runs.as_mut() {
-            r.offsets = run_offsets(prep, &smooth);
+            r.offsets = run_offset::offsets(prep, &smooth);
         }
     }
     out
@@ -161,57 +158,6 @@ fn found_smooth(out: &TimeTests, alpha: f64) -> Terms {
     }
 }
 
-/// Thermal growth: γ in the full model, against the pure scatter.
-fn thermal_test(full: &TimeFit, sigma2: f64, df: f64) -> Option<CoefTest> {
-    let c = full.thermal_col.filter(|&c| full.ls.kept[c])?;
-    let se = (sigma2 * full.ls.cov[c][c]).sqrt();
-    let t = full.gamma / se;
-    Some(CoefTest {
-        estimate: full.gamma,
-        se,
-        t,
-        p: t_two_sided(t, df),
-        df,
-    })
-}
-
-/// Run offsets: what the trend model leaves to the run effects of the full model.
-fn run_test(prep: &Prep, full: &TimeFit, trend: &TimeFit, sigma2: f64, df: f64) -> Option<RunTest> {
-    let df_lof = full.ls.rank as f64 - trend.ls.rank as f64;
-    if df_lof < 1.0 {
-        return None;
-    }
-    let ms = (trend.rss - full.rss).max(0.0) / df_lof;
-    let f = ms / sigma2;
-    Some(RunTest {
-        f,
-        df1: df_lof,
-        df2: df,
-        p: f_upper(f, df_lof, df),
-        offsets: run_offsets(prep, trend),
-    })
-}
-
-/// Run effects after the smooth model: its mean residual per run, centred.
-fn run_offsets(prep: &Prep, trend: &TimeFit) -> Vec<f64> {
-    let mut sum = vec![0.0; prep.n];
-    let mut count = vec![0usize; prep.n];
-    for &k in &trend.rows {
-        sum[prep.rows[k].run] += trend.residuals[k];
-        count[prep.rows[k].run] += 1;
-    }
-    let mut offsets: Vec<f64> = sum
-        .iter()
-        .zip(&count)
-        .map(|(s, &c)| if c > 0 { s / c as f64 } else { 0.0 })
-        .collect();
-    let mean = offsets.iter().sum::<f64>() / offsets.len() as f64;
-    for o in &mut offsets {
-        *o -= mean;
-    }
-    offsets
-}
-
 /// What a drift is judged against: the scatter (mean square, degrees of freedom) or, when
 /// the run offsets are real, the run-to-run variation the smooth model leaves.
 pub(crate) fn drift_reference(tests: &TimeTests, runs_real: bool) -> (f64, f64, &'static str) {
@@ -225,52 +171,4 @@ pub(crate) fn drift_reference(tests: &TimeTests, runs_real: bool) -> (f64, f64, 
     } else {
         (tests.sigma2, tests.df, "scatter")
     }
-}
-
-/// Drift: the trend model's β (with γ), against the scatter or, when the run offsets are
-/// real, against the run-to-run variation; with a thermal growth found, at its origin.
-fn drift_test(
-    prep: &Prep,
-    tests: &TimeTests,
-    runs_real: bool,
-    thermal_found: bool,
-) -> Option<DriftTest> {
-    let trend = &tests.trend;
-    let bc = trend.drift_col.filter(|&c| trend.ls.kept[c])?;
-    let (err_ms, err_df, against) = drift_reference(tests, runs_real);
-    let tc = trend.thermal_col.filter(|&c| trend.ls.kept[c]);
-    let (estimate, var, origin) = match (thermal_found, tc) {
-        (true, Some(gc)) if trend.gamma != 0.0 => {
-            // The position where the time effect vanishes; a screw's fixed end lies at
-            // (or near) the measured travel, so within a quarter of the travel beyond its
-            // ends the effect is all thermal growth.
-            let p0 = prep.pbar - trend.beta / trend.gamma;
-            let margin = 0.25 * prep.length();
-            let o = p0.clamp(prep.lo - margin, prep.hi + margin);
-            let a = o - prep.pbar;
-            let est = trend.beta + trend.gamma * a;
-            let cov = &trend.ls.cov;
-            let v = cov[bc][bc] + a * a * cov[gc][gc] + 2.0 * a * cov[bc][gc];
-            (est, v, Some(o))
-        }
-        _ => (trend.beta, trend.ls.cov[bc][bc], None),
-    };
-    let se = (err_ms * var).sqrt();
-    let (t, p) = if estimate == 0.0 {
-        (0.0, 1.0)
-    } else {
-        let t = estimate / se;
-        (t, t_two_sided(t, err_df))
-    };
-    Some(DriftTest {
-        test: CoefTest {
-            estimate,
-            se,
-            t,
-            p,
-            df: err_df,
-        },
-        origin,
-        against,
-    })
 }

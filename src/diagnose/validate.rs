@@ -21,12 +21,12 @@
 //! others by the simulator's C¹ cubic through them (base) or by that interpolation of
 //! what the periodic term leaves plus the term (extended).
 
+use super::effects::scatter_variation as scatter;
+use super::effects::warm_up as warm;
 use super::maths::periodogram::Trend;
 use super::model_terms::{Lines, ModelTerms, Predictor};
 use super::prep::Prep;
-use super::scatter;
 use super::time_fit::{Terms, TimeFit, fit};
-use super::warm;
 use crate::axis_model::model::interpolate;
 use crate::axis_model::rng::Rng;
 use std::f64::consts::TAU;

@@ -1,5 +1,6 @@
 //! Drift: the deviations move with time, uniformly along the axis (warm-up; ISO 230-2
-//! 3.3; Hemingray et al. 1971, §5.4). Tested in [`crate::diagnose::time`] as the drift
+//! 3.3; Hemingray et al. 1971, §5.4). Its test (below; run in order
+//! by the joint time tests of `time.rs`) takes the drift
 //! rate of the trend model, against the scatter or, when the run offsets are real, against
 //! the run-to-run variation.
 
@@ -8,9 +9,12 @@ use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
+use crate::diagnose::maths::stats::t_two_sided;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::prep::Prep;
 use crate::diagnose::time_fit::DriftTest;
+use crate::diagnose::time_fit::{CoefTest, TimeFit};
 
 /// A drift: its rate per time unit (hour, or run without time stamps).
 #[derive(Debug, Clone, PartialEq)]
@@ -130,4 +134,52 @@ impl EffectRule for Rule {
                 .collect(),
         )
     }
+}
+
+/// The test: the trend model's β (with γ), against `reference` (the scatter or, when the
+/// run offsets are real, the run-to-run variation: mean square, degrees of freedom,
+/// name); with a thermal growth found, at its origin.
+pub(crate) fn test(
+    prep: &Prep,
+    trend: &TimeFit,
+    reference: (f64, f64, &'static str),
+    thermal_found: bool,
+) -> Option<DriftTest> {
+    let bc = trend.drift_col.filter(|&c| trend.ls.kept[c])?;
+    let (err_ms, err_df, against) = reference;
+    let tc = trend.thermal_col.filter(|&c| trend.ls.kept[c]);
+    let (estimate, var, origin) = match (thermal_found, tc) {
+        (true, Some(gc)) if trend.gamma != 0.0 => {
+            // The position where the time effect vanishes; a screw's fixed end lies at
+            // (or near) the measured travel, so within a quarter of the travel beyond its
+            // ends the effect is all thermal growth.
+            let p0 = prep.pbar - trend.beta / trend.gamma;
+            let margin = 0.25 * prep.length();
+            let o = p0.clamp(prep.lo - margin, prep.hi + margin);
+            let a = o - prep.pbar;
+            let est = trend.beta + trend.gamma * a;
+            let cov = &trend.ls.cov;
+            let v = cov[bc][bc] + a * a * cov[gc][gc] + 2.0 * a * cov[bc][gc];
+            (est, v, Some(o))
+        }
+        _ => (trend.beta, trend.ls.cov[bc][bc], None),
+    };
+    let se = (err_ms * var).sqrt();
+    let (t, p) = if estimate == 0.0 {
+        (0.0, 1.0)
+    } else {
+        let t = estimate / se;
+        (t, t_two_sided(t, err_df))
+    };
+    Some(DriftTest {
+        test: CoefTest {
+            estimate,
+            se,
+            t,
+            p,
+            df: err_df,
+        },
+        origin,
+        against,
+    })
 }

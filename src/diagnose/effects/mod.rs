@@ -1,14 +1,21 @@
 //! The vocabulary of effects, one file each (as a linter keeps one file per rule): its
-//! decision on the tests ([`Rule::find`]: the finding with its typed estimate), its term
+//! decision on its test (each effect's `Rule::find`: the finding with its typed estimate), its term
 //! of the held-out model ([`Rule::term`]) and the unrelated terms it is compared with
 //! ([`Rule::unrelated`]), what it adds to the extended simulation model
 //! ([`Rule::extend`]) and its "effect removed" correction ([`Rule::removed`]). Here too
 //! the [`Finding`] the rules write, whose estimate is one of theirs ([`Estimate`]); its
 //! parts that need no effect ([`Units`], [`Evidence`], [`Fields`]) are in `finding.rs`.
 //!
-//! Adding an effect is one file here and one line in the list at the end of this file
-//! (and, when its term is one of the held-out reading model, its switch in
-//! `validate::ModelTerms` and its part of the fit that the switch turns on).
+//! Each effect's file is whole: its test (the statistics and what they are read
+//! against), its estimate and advice, its finding, its model term and validation switch.
+//! The analysis above (`analysis.rs`, and `time.rs` for the four effects in time, which
+//! share one time model) runs the tests in order and hands each effect its own; the
+//! effects see only what they share ([`Basis`], and [`Fitted`] for the extended model).
+//!
+//! Adding an effect is one file here, one line in the list at the end of this file and
+//! one in `Analysis::findings` (and, when its term is one of the held-out reading model,
+//! its switch in `model_terms::ModelTerms` and its part of the fit that the switch turns
+//! on).
 
 pub mod drift;
 pub mod outlier;

@@ -1,6 +1,6 @@
 //! Run offsets: each run shifted as a whole, not in time order (zero-point instability;
-//! Hemingray et al. 1971, §5.4). Tested in [`crate::diagnose::time`] as what a straight
-//! line and a warm-up curve in time leave of the between-run variation, against the pure
+//! Hemingray et al. 1971, §5.4). Its test (below; run in order by the joint time tests of
+//! `time.rs`) takes what a straight line and a warm-up curve in time leave of the between-run variation, against the pure
 //! scatter.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
@@ -8,9 +8,11 @@ use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
+use crate::diagnose::maths::stats::f_upper;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
-use crate::diagnose::time::RunTest;
+use crate::diagnose::prep::Prep;
+use crate::diagnose::time_fit::TimeFit;
 
 /// One run's offset.
 #[derive(Debug, Clone, PartialEq)]
@@ -121,4 +123,58 @@ impl EffectRule for Rule {
                 .collect(),
         )
     }
+}
+
+/// Run offsets beyond the smooth model (a linear drift and a warm-up curve).
+#[derive(Debug, Clone)]
+pub(crate) struct RunTest {
+    pub f: f64,
+    pub df1: f64,
+    pub df2: f64,
+    pub p: f64,
+    /// Run effects after the drift fit, centred (mean 0), per run.
+    pub offsets: Vec<f64>,
+}
+
+/// The test: what the trend model leaves to the run effects of the full model.
+pub(crate) fn test(
+    prep: &Prep,
+    full: &TimeFit,
+    trend: &TimeFit,
+    sigma2: f64,
+    df: f64,
+) -> Option<RunTest> {
+    let df_lof = full.ls.rank as f64 - trend.ls.rank as f64;
+    if df_lof < 1.0 {
+        return None;
+    }
+    let ms = (trend.rss - full.rss).max(0.0) / df_lof;
+    let f = ms / sigma2;
+    Some(RunTest {
+        f,
+        df1: df_lof,
+        df2: df,
+        p: f_upper(f, df_lof, df),
+        offsets: offsets(prep, trend),
+    })
+}
+
+/// Run effects after the smooth model: its mean residual per run, centred.
+pub(crate) fn offsets(prep: &Prep, trend: &TimeFit) -> Vec<f64> {
+    let mut sum = vec![0.0; prep.n];
+    let mut count = vec![0usize; prep.n];
+    for &k in &trend.rows {
+        sum[prep.rows[k].run] += trend.residuals[k];
+        count[prep.rows[k].run] += 1;
+    }
+    let mut offsets: Vec<f64> = sum
+        .iter()
+        .zip(&count)
+        .map(|(s, &c)| if c > 0 { s / c as f64 } else { 0.0 })
+        .collect();
+    let mean = offsets.iter().sum::<f64>() / offsets.len() as f64;
+    for o in &mut offsets {
+        *o -= mean;
+    }
+    offsets
 }

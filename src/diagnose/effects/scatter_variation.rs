@@ -1,15 +1,24 @@
 //! Scatter variation: the scatter changes along the axis (Hemingray et al. 1971, §5.1:
-//! VDI 3441 takes one scatter for the axis, NMTBA one per target). Tested in
-//! [`crate::diagnose::scatter`]: the log cell variances regressed on position.
+//! VDI 3441 takes one scatter for the axis, NMTBA one per target). Tested
+//! (below): the log cell variances regressed on position.
+//!
+//! The test. VDI 3441 takes one scatter for the whole axis, NMTBA one per target; Hemingray et al.
+//! 1971, §5.1 ask whether the variation of the scatter along the axis is more than
+//! sampling explains.
+//! Test: the log of each cell's residual variance (residuals of the full time model, so
+//! that drift or thermal growth do not pass for scatter) regressed on position; a t-test
+//! of the slope with the regression's own residual variance (df = cells − 2), which needs
+//! no normality of the log variances. Needs n ≥ 3 and m ≥ 3.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
+use crate::diagnose::maths::stats::t_two_sided;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
-use crate::diagnose::scatter::ScatterTest;
+use crate::diagnose::prep::Prep;
 use crate::measurement::fmt_target;
 
 /// A scatter σ that changes along the axis (log-linearly in position).
@@ -112,4 +121,95 @@ impl EffectRule for Rule {
     fn removed(&self, _: &Basis, _: &Fitted) -> Option<Vec<f64>> {
         None
     }
+}
+
+/// The result of the scatter test.
+#[derive(Debug, Clone)]
+pub(crate) struct ScatterTest {
+    pub t: f64,
+    pub p: f64,
+    pub df: f64,
+    /// Fitted scatter σ at the first and last target, µm or arcsec.
+    pub sigma_lo: f64,
+    pub sigma_hi: f64,
+    /// Relative scatter per cell (σ(P)/σ̄; mean square 1).
+    pub rel_scale: Vec<f64>,
+}
+
+/// Tests the residuals (one per row, NaN for inactive rows) of a fit with pooled variance
+/// `sigma2`.
+pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64) -> Option<ScatterTest> {
+    test_along(prep, &prep.positions, residuals, sigma2)
+}
+
+/// [`test`] with the scatter along the targets at `along` (one per target: their
+/// positions, or an unrelated order of them) instead of their positions.
+pub(crate) fn test_along(
+    prep: &Prep,
+    along: &[f64],
+    residuals: &[f64],
+    sigma2: f64,
+) -> Option<ScatterTest> {
+    if prep.n < 3 || prep.m < 3 || sigma2.is_nan() || sigma2 <= 0.0 {
+        return None;
+    }
+    let cells = prep.cells();
+    let mut ss = vec![0.0; cells];
+    let mut count = vec![0usize; cells];
+    for (k, r) in prep.rows.iter().enumerate() {
+        let e = residuals[k];
+        if e.is_finite() {
+            let c = prep.cell(r);
+            ss[c] += e * e;
+            count[c] += 1;
+        }
+    }
+    // A cell of identical readings (a quantised instrument) has no log variance: floor it.
+    let floor = 0.05 * sigma2;
+    let mut xs = Vec::new();
+    let mut ys = Vec::new();
+    for c in 0..cells {
+        if count[c] >= 2 {
+            let v = (ss[c] / (count[c] - 1) as f64).max(floor);
+            xs.push(along[c / 2] - prep.pbar);
+            ys.push(v.ln());
+        }
+    }
+    let k = xs.len();
+    if k < 4 {
+        return None;
+    }
+    let mx = xs.iter().sum::<f64>() / k as f64;
+    let my = ys.iter().sum::<f64>() / k as f64;
+    let sxx: f64 = xs.iter().map(|x| (x - mx) * (x - mx)).sum();
+    if sxx.is_nan() || sxx <= 0.0 {
+        return None;
+    }
+    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let b = sxy / sxx;
+    let a = my - b * mx;
+    let rss: f64 = xs
+        .iter()
+        .zip(&ys)
+        .map(|(x, y)| (y - a - b * x).powi(2))
+        .sum();
+    let df = (k - 2) as f64;
+    let se = (rss / df / sxx).sqrt();
+    let t = if se > 0.0 { b / se } else { 0.0 };
+    let p = if se > 0.0 { t_two_sided(t, df) } else { 1.0 };
+    // σ²(P) ∝ exp(a + b(P − P̄)), scaled so that its mean over the cells is the pooled σ².
+    let shape = |p: f64| (a + b * (p - prep.pbar)).exp();
+    let mean_shape = (0..cells).map(|c| shape(along[c / 2])).sum::<f64>() / cells as f64;
+    let kappa = sigma2 / mean_shape;
+    let rel_scale = (0..cells)
+        .map(|c| (shape(along[c / 2]) / mean_shape).sqrt())
+        .collect();
+    Some(ScatterTest {
+        t,
+        p,
+        df,
+        sigma_lo: (kappa * shape(prep.lo)).sqrt(),
+        sigma_hi: (kappa * shape(prep.hi)).sqrt(),
+        rel_scale,
+    })
 }

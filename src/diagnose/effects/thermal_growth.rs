@@ -1,6 +1,6 @@
 //! Thermal growth: an error proportional to position that grows with time (screw or scale
-//! expansion; Hemingray et al. 1971, §5.4 and conclusion 1). Tested in
-//! [`crate::diagnose::time`] as the position × time coefficient of the full time model,
+//! expansion; Hemingray et al. 1971, §5.4 and conclusion 1). Its test (below; run in
+//! order by the joint time tests of `time.rs`) takes the position × time coefficient of the full time model,
 //! against the pure scatter.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
@@ -8,9 +8,11 @@ use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
+use crate::diagnose::maths::stats::t_two_sided;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::diagnose::time_fit::CoefTest;
+use crate::diagnose::time_fit::TimeFit;
 use crate::measurement::fmt_target;
 use crate::units::AxisKind;
 
@@ -134,4 +136,18 @@ impl EffectRule for Rule {
                 .collect(),
         )
     }
+}
+
+/// The test: γ in the full model, against the pure scatter.
+pub(crate) fn test(full: &TimeFit, sigma2: f64, df: f64) -> Option<CoefTest> {
+    let c = full.thermal_col.filter(|&c| full.ls.kept[c])?;
+    let se = (sigma2 * full.ls.cov[c][c]).sqrt();
+    let t = full.gamma / se;
+    Some(CoefTest {
+        estimate: full.gamma,
+        se,
+        t,
+        p: t_two_sided(t, df),
+        df,
+    })
 }

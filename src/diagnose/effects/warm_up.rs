@@ -1,21 +1,58 @@
 //! Warm-up: the deviations approach a new level exponentially, as a machine tested before
 //! it is warm (ISO 230-2 clause 3.3: a warm-up before the test, and an ordered sequence
 //! of deviations at a target as the sign that the thermal state is not stable; Hemingray
-//! et al. 1971, §5.4: drift over the first half hour). Tested in [`crate::diagnose::warm`]
+//! et al. 1971, §5.4: drift over the first half hour). Tested (below)
 //! as an exponential approach beyond a linear drift, against the scatter or, when free run
 //! offsets are real beyond it, against the run-to-run variation.
+//!
+//! The test. The approach is fast at first and slower later — the first-order thermal
+//! response of a machine tested before it is warm. ISO 230-2 clause 3.3 asks for a warm-up before the test and names the symptom: when
+//! successive approaches to a target give deviations in an ordered sequence, the thermal
+//! state is not yet stable. Hemingray et al. 1971, §5.4 saw whole sets of readings drift
+//! within about half an hour, usually only for a short time, and ask that a test last at
+//! least half an hour to show it.
+//!
+//! Model: `(a + g·(P − P̄))·(1 − exp(−(t − t₀)/τ))` beside the cell effects and the linear
+//! trend (drift and thermal growth), t₀ the first reading. For a given τ the model is
+//! linear, so τ is profiled: the test takes the best of a log-spaced grid from a quarter
+//! of a run to three times the test; the estimate refines it by golden-section search on
+//! the gain of both columns. A shorter warm-up is over within the first run and cannot be
+//! told from a shift of its first readings; a longer one is a straight line over the test:
+//! a drift.
+//!
+//! The test: each column's gain beyond the linear trend, largest over τ, as a squared t
+//! statistic. That maximum is not F-distributed (τ exists only under the alternative);
+//! Davies (1987, "Hypothesis testing when a nuisance parameter is present only under the
+//! alternative") bounds its tail by the F tail plus the expected number of up-crossings,
+//! which grows with the length L of the path the standardised column traces as τ moves:
+//! P(sup T² ≥ u) ≤ P(F(1, ν) ≥ u) + L/π·(1 + u/ν)^(−(ν−1)/2). The uniform and the
+//! position-proportional column are tested at α/2 each.
+//!
+//! Against what: the pure scatter or, when free run offsets are real beyond the smooth
+//! model (linear trend and warm-up), the run-to-run variation — as for the drift, only a
+//! curve larger than the zero shifts is a warm-up. Beside the decision the finding gives
+//! the comparison with free run offsets both ways — the run offsets beyond the warm-up
+//! (between the runs) and the warm-up beyond free run offsets (within the runs, where a
+//! zero shift cannot reach) — and the change of the Bayesian information criterion
+//! against a linear drift and against free run offsets.
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
+use crate::diagnose::maths::linalg::dot;
+use crate::diagnose::maths::stats::{f_upper, t_two_sided};
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::prep::Prep;
 use crate::diagnose::prep::TimeUnit;
 use crate::diagnose::time_fit::warm_shape;
-use crate::diagnose::warm::{WarmEstimate, WarmTest, tau_range};
+use crate::diagnose::time_fit::{
+    CellDemean, CoefTest, DriftTest, Terms, TimeFit, fit, warm_columns,
+};
 use crate::units::AxisKind;
+use std::f64::consts::PI;
 
 /// A warm-up: the level the deviations approach, its time constant and how long it takes.
 /// Times are minutes with time stamps, runs of the standard test cycle without them.
@@ -296,5 +333,520 @@ impl EffectRule for Rule {
                 })
                 .collect(),
         )
+    }
+}
+
+/// Points of the τ grid.
+const GRID: usize = 32;
+/// Golden-section steps of the refinement.
+const REFINE: usize = 36;
+
+/// The τ searched, in time units: a quarter of a run to three times the test.
+pub(crate) fn tau_range(prep: &Prep) -> Option<(f64, f64)> {
+    let span = prep.t_span;
+    (prep.n >= 2 && span > 0.0 && span.is_finite())
+        .then(|| (span / (4.0 * prep.n as f64), 3.0 * span))
+}
+
+/// The warm-up columns at one τ beyond a base fit.
+struct AtTau {
+    /// Gain (fall of the residual sum of squares, scaled units) of the uniform and the
+    /// position-proportional column alone, and of both.
+    single: [f64; 2],
+    joint: f64,
+    /// Each column beyond the base fit, of unit length (empty when nothing is left).
+    directions: [Vec<f64>; 2],
+}
+
+fn at_tau(prep: &Prep, base: &TimeFit, dm: &CellDemean, tau: f64) -> AtTau {
+    let r = &base.ls.residuals;
+    let cols = warm_columns(prep, &base.rows, tau).map(|c| {
+        let demeaned = dm.apply(&c);
+        let before = dot(&demeaned, &demeaned);
+        let left = base.ls.residualize(&demeaned);
+        let norm2 = dot(&left, &left);
+        // A column the base fit spans adds nothing.
+        if norm2 > 1e-18 * before && norm2 > 0.0 {
+            left
+        } else {
+            Vec::new()
+        }
+    });
+    let norm2 = |c: &[f64]| dot(c, c);
+    let (n0, n1) = (norm2(&cols[0]), norm2(&cols[1]));
+    let b = [dot(&cols[0], r), dot(&cols[1], r)];
+    let single = [
+        if n0 > 0.0 { b[0] * b[0] / n0 } else { 0.0 },
+        if n1 > 0.0 { b[1] * b[1] / n1 } else { 0.0 },
+    ];
+    let joint = if n0 > 0.0 && n1 > 0.0 {
+        let n01 = dot(&cols[0], &cols[1]);
+        let det = n0 * n1 - n01 * n01;
+        if det > 1e-12 * n0 * n1 {
+            (b[0] * b[0] * n1 - 2.0 * b[0] * b[1] * n01 + b[1] * b[1] * n0) / det
+        } else {
+            single[0].max(single[1])
+        }
+    } else {
+        single[0].max(single[1])
+    };
+    let directions = [n0, n1].map(|n| n.sqrt());
+    let mut unit = cols;
+    for (c, n) in unit.iter_mut().zip(directions) {
+        for v in c.iter_mut() {
+            *v /= n;
+        }
+    }
+    AtTau {
+        single,
+        joint,
+        directions: unit,
+    }
+}
+
+/// The warm-up profiled over τ beyond a base fit.
+#[derive(Debug, Clone)]
+pub(crate) struct Profile {
+    /// The τ of the largest joint gain.
+    pub tau: f64,
+    /// Largest gain over τ of each column alone (uniform, position-proportional).
+    pub sup: [f64; 2],
+    /// Length of the path each standardised column traces over the τ range (radians).
+    pub path: [f64; 2],
+}
+
+/// Profiles the warm-up over τ beyond `base` (its rows and weights `scale`); `refine`
+/// refines the best τ of the grid (the tests need only the grid: the gain is flat about
+/// its maximum; the estimates need τ itself).
+pub(crate) fn profile(prep: &Prep, base: &TimeFit, scale: &[f64], refine: bool) -> Option<Profile> {
+    let (lo, hi) = tau_range(prep)?;
+    if base.rows.len() < 3 {
+        return None;
+    }
+    let dm = CellDemean::new(prep, &base.rows, scale);
+    let step = (hi / lo).ln() / (GRID - 1) as f64;
+    let grid: Vec<f64> = (0..GRID).map(|k| lo * (step * k as f64).exp()).collect();
+    let (mut sup, mut path) = ([0.0f64; 2], [0.0f64; 2]);
+    let mut previous: Option<[Vec<f64>; 2]> = None;
+    let mut best = (0usize, f64::NEG_INFINITY);
+    for (k, &tau) in grid.iter().enumerate() {
+        let g = at_tau(prep, base, &dm, tau);
+        for c in 0..2 {
+            sup[c] = sup[c].max(g.single[c]);
+            if let Some(p) = previous.as_ref().filter(|p| !p[c].is_empty())
+                && !g.directions[c].is_empty()
+            {
+                path[c] += dot(&p[c], &g.directions[c]).abs().min(1.0).acos();
+            }
+        }
+        if g.joint > best.1 {
+            best = (k, g.joint);
+        }
+        previous = Some(g.directions);
+    }
+    if !refine {
+        return Some(Profile {
+            tau: grid[best.0],
+            sup,
+            path,
+        });
+    }
+    let (a, b) = (
+        grid[best.0.saturating_sub(1)].ln(),
+        grid[(best.0 + 1).min(GRID - 1)].ln(),
+    );
+    let joint = |ln_tau: f64| at_tau(prep, base, &dm, ln_tau.exp());
+    let ln_tau = golden_max(a, b, |x| joint(x).joint);
+    let refined = joint(ln_tau);
+    for (s, r) in sup.iter_mut().zip(refined.single) {
+        *s = s.max(r);
+    }
+    let tau = if refined.joint >= best.1 {
+        ln_tau.exp()
+    } else {
+        grid[best.0]
+    };
+    Some(Profile { tau, sup, path })
+}
+
+/// The maximiser of `f` on [a, b] by golden-section search.
+fn golden_max(mut a: f64, mut b: f64, f: impl Fn(f64) -> f64) -> f64 {
+    let r = (5f64.sqrt() - 1.0) / 2.0;
+    let mut c = b - r * (b - a);
+    let mut d = a + r * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..REFINE {
+        if fc >= fd {
+            b = d;
+            (d, fd) = (c, fc);
+            c = b - r * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            (c, fc) = (d, fd);
+            d = a + r * (b - a);
+            fd = f(d);
+        }
+    }
+    (a + b) / 2.0
+}
+
+/// Davies' bound on P(sup over τ of T² ≥ u) for a t-process with ν degrees of freedom
+/// whose standardised regressor traces a path of length `path` (see the module doc).
+pub(crate) fn davies(u: f64, nu: f64, path: f64) -> f64 {
+    if !(u.is_finite() && nu > 0.0) {
+        return if u.is_infinite() { 0.0 } else { f64::NAN };
+    }
+    let crossings = path / PI * (1.0 + u / nu).powf(-(nu - 1.0) / 2.0);
+    (f_upper(u, 1.0, nu) + crossings).min(1.0)
+}
+
+/// An F test of a larger model against a smaller one nested in it.
+#[derive(Debug, Clone)]
+pub(crate) struct FTest {
+    pub f: f64,
+    pub df1: f64,
+    pub p: f64,
+}
+
+fn f_test(small: &TimeFit, big: &TimeFit) -> Option<FTest> {
+    let df1 = big.ls.rank as f64 - small.ls.rank as f64;
+    let s2 = big.sigma2();
+    if df1 < 1.0 || s2.is_nan() || s2 <= 0.0 {
+        return None;
+    }
+    let f = (small.rss - big.rss).max(0.0) / df1 / s2;
+    Some(FTest {
+        f,
+        df1,
+        p: f_upper(f, df1, big.df),
+    })
+}
+
+/// Bayesian information criterion of a fit (up to a constant shared by the fits of one
+/// test); `extra` counts parameters outside the least squares (τ).
+fn bic(fit: &TimeFit, extra: usize) -> f64 {
+    let n = fit.rows.len() as f64;
+    n * (fit.rss / n).ln() + (fit.ls.rank + extra) as f64 * n.ln()
+}
+
+/// The warm-up search on the linear-trend fits of [`crate::diagnose::time::tests`].
+#[derive(Debug, Clone)]
+pub(crate) struct WarmTest {
+    pub tau: f64,
+    /// Largest F over τ of the uniform and of the position-proportional column beyond
+    /// the linear trend, and Davies' p of each.
+    pub f: [f64; 2],
+    pub p_column: [f64; 2],
+    /// The decision's p-value: twice the smaller (each column at α/2).
+    pub p: f64,
+    /// The reference mean square (scaled units) and its degrees of freedom.
+    pub ms: f64,
+    pub df: f64,
+    /// `scatter` or `run-to-run variation`.
+    pub against: &'static str,
+    /// Free run offsets beyond the smooth model with the warm-up.
+    pub runs_beyond: Option<FTest>,
+    /// The warm-up beyond free run offsets and the linear trend: within the runs.
+    pub within_runs: Option<FTest>,
+    /// BIC of the smooth model with the warm-up minus that of a linear drift, and minus
+    /// that of free run offsets (negative: the warm-up is preferred).
+    pub delta_bic_drift: f64,
+    pub delta_bic_runs: f64,
+    /// Linear trend with the warm-up, without and with run effects.
+    pub smooth: TimeFit,
+    pub full: TimeFit,
+    /// The estimate, with only the linear terms found beside it (when found).
+    pub estimate: Option<WarmEstimate>,
+}
+
+/// Searches for a warm-up beyond the linear trend; `fits` are the full model (thermal,
+/// runs, drift) and the trend (thermal, drift) on the active rows.
+pub(crate) fn search(
+    prep: &Prep,
+    values: &[f64],
+    active: &[bool],
+    scale: &[f64],
+    fits: (&TimeFit, &TimeFit),
+    alpha: f64,
+) -> Option<WarmTest> {
+    let (full0, trend0) = fits;
+    let prof = profile(prep, trend0, scale, false)?;
+    let terms = |runs| Terms {
+        thermal: true,
+        runs,
+        drift: true,
+        warm: Some(prof.tau),
+    };
+    let smooth = fit(prep, values, active, scale, terms(false));
+    let full = fit(prep, values, active, scale, terms(true));
+    if !(full.df >= 1.0 && full.sigma2() > 0.0) {
+        return None;
+    }
+    let runs_beyond = f_test(&smooth, &full);
+    let (ms, df, against) = match runs_beyond.as_ref().filter(|t| t.p < alpha) {
+        Some(t) => (t.f * full.sigma2(), t.df1, "run-to-run variation"),
+        None => (full0.sigma2(), full0.df, "scatter"),
+    };
+    let f = prof.sup.map(|g| g / ms);
+    let p_column = [0, 1].map(|c| davies(f[c], df, prof.path[c]));
+    Some(WarmTest {
+        tau: prof.tau,
+        f,
+        p_column,
+        p: (2.0 * p_column[0].min(p_column[1])).min(1.0),
+        ms,
+        df,
+        against,
+        runs_beyond,
+        within_runs: f_test(full0, &full),
+        delta_bic_drift: bic(&smooth, 1) - bic(trend0, 0),
+        delta_bic_runs: bic(&smooth, 1) - bic(full0, 0),
+        smooth,
+        full,
+        estimate: None,
+    })
+}
+
+/// The warm-up's estimate.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct WarmEstimate {
+    /// Time constant, time units.
+    pub tau: f64,
+    /// Level approached from the first reading at P̄, and its standard error.
+    pub a: f64,
+    pub a_se: f64,
+    /// Level per position unit, its standard error and the p of its t test.
+    pub g: f64,
+    pub g_se: f64,
+    pub g_p: f64,
+}
+
+impl WarmEstimate {
+    /// The estimate of a fit with the warm-up; `reference` is the mean square (scaled
+    /// units) and degrees of freedom the warm-up was tested against.
+    pub fn of(f: &TimeFit, reference: (f64, f64)) -> Option<WarmEstimate> {
+        let (ms, df) = reference;
+        let tau = f.tau?;
+        let c = f.warm_col.filter(|&c| f.ls.kept[c])?;
+        let se = |j: usize| (ms * f.ls.cov[j][j]).sqrt();
+        let (g_se, g_p) = if f.ls.kept[c + 1] {
+            let s = se(c + 1);
+            (s, t_two_sided(f.warm_g / s, df))
+        } else {
+            (f64::NAN, 1.0)
+        };
+        Some(WarmEstimate {
+            tau,
+            a: f.warm_a,
+            a_se: se(c),
+            g: f.warm_g,
+            g_se,
+            g_p,
+        })
+    }
+}
+
+/// The fit of `terms` with a warm-up whose τ is profiled beyond them.
+fn profiled(
+    prep: &Prep,
+    values: &[f64],
+    active: &[bool],
+    scale: &[f64],
+    terms: Terms,
+) -> Option<TimeFit> {
+    let base = fit(prep, values, active, scale, terms);
+    let tau = profile(prep, &base, scale, true)?.tau;
+    let warm = Some(tau);
+    Some(fit(prep, values, active, scale, Terms { warm, ..terms }))
+}
+
+/// Drift and thermal growth beside a warm-up, and the fit of the warm-up with the linear
+/// terms found.
+pub(crate) struct Beside {
+    pub thermal: Option<CoefTest>,
+    pub drift: Option<DriftTest>,
+    pub kept: Option<TimeFit>,
+}
+
+/// A linear term beside a warm-up: the fall of the residual sum of squares when it joins,
+/// τ profiled again with and without it (a τ chosen with the term's help would flatter
+/// it), as a t test of the term's coefficient `estimate`.
+fn beside_test(
+    without: &TimeFit,
+    with: &TimeFit,
+    estimate: f64,
+    reference: (f64, f64),
+) -> CoefTest {
+    let (ms, df) = reference;
+    let f = (without.rss - with.rss).max(0.0) / ms;
+    let t = f.sqrt() * estimate.signum();
+    CoefTest {
+        estimate,
+        se: if f > 0.0 {
+            estimate.abs() / f.sqrt()
+        } else {
+            f64::INFINITY
+        },
+        t,
+        p: f_upper(f, 1.0, df),
+        df,
+    }
+}
+
+/// Thermal growth (against the pure scatter `pure`) and drift (against `drift_ref`, as
+/// [`crate::diagnose::time::drift_reference`] gives it) beside a warm-up found, and the warm-up's
+/// fit with the linear terms found: thermal growth with a drift beside it, the drift with
+/// the thermal growth when found.
+pub(crate) fn linear_tests(
+    prep: &Prep,
+    values: &[f64],
+    active: &[bool],
+    scale: &[f64],
+    pure: (f64, f64),
+    drift_ref: (f64, f64, &'static str),
+    alpha: f64,
+) -> Beside {
+    let prof = |thermal: bool, drift: bool| {
+        let terms = Terms {
+            thermal,
+            drift,
+            ..Terms::default()
+        };
+        profiled(prep, values, active, scale, terms)
+    };
+    let (Some(drift_only), Some(both)) = (prof(false, true), prof(true, true)) else {
+        return Beside {
+            thermal: None,
+            drift: None,
+            kept: None,
+        };
+    };
+    let thermal = both
+        .thermal_col
+        .filter(|&c| both.ls.kept[c])
+        .map(|_| beside_test(&drift_only, &both, both.gamma, pure));
+    let thermal_found = thermal.as_ref().is_some_and(|t| t.p < alpha);
+    let with_drift = if thermal_found { both } else { drift_only };
+    let without = prof(thermal_found, false);
+    let (ms, df, against) = drift_ref;
+    let drift = without.as_ref().and_then(|w| {
+        let c = with_drift.drift_col.filter(|&c| with_drift.ls.kept[c])?;
+        Some(DriftTest {
+            test: beside_test(w, &with_drift, with_drift.ls.coef[c], (ms, df)),
+            origin: None,
+            against,
+        })
+    });
+    let drift_found = drift.as_ref().is_some_and(|d| d.test.p < alpha);
+    Beside {
+        thermal,
+        drift,
+        kept: if drift_found {
+            Some(with_drift)
+        } else {
+            without
+        },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::measurement::{AxisData, RawReading};
+    use crate::units::{AxisKind, Direction};
+
+    /// A noiseless test in the standard cycle, one reading every 40 s: cell effects (a
+    /// shape and a reversal) plus `warm(position, time_s)`.
+    fn noiseless(targets: &[f64], runs: u32, warm: impl Fn(f64, f64) -> f64) -> AxisData {
+        let mut raw = Vec::new();
+        let mut k = 0.0;
+        for run in 1..=runs {
+            let up = targets.iter().map(|&p| (p, Direction::Up));
+            let down = targets.iter().rev().map(|&p| (p, Direction::Down));
+            for (p, direction) in up.chain(down) {
+                let time_s = 12.0 + 40.0 * k;
+                k += 1.0;
+                let cell = 0.003 * p * p - 0.5 * p + direction.sign() * 1.5;
+                raw.push(RawReading {
+                    target: p,
+                    direction,
+                    run,
+                    deviation: cell + warm(p, time_s),
+                    time_s: Some(time_s),
+                    temps_c: Vec::new(),
+                    line: 0,
+                });
+            }
+        }
+        AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "noiseless").unwrap()
+    }
+
+    /// By hand: A(1 − e^(−t/τ)) with τ = 9 min from t = 0, the first reading at 12 s,
+    /// so the level still to come at the first reading is A·e^(−12/540); and with
+    /// 20 µm/m about P = 0, at the mean target P̄ = 250 mm another 5 µm·e^(−12/540).
+    #[test]
+    fn recovers_amplitude_time_constant_and_growth_from_noiseless_data() {
+        let targets: Vec<f64> = (0..11).map(|i| 50.0 * i as f64).collect();
+        let (a, ppm, tau_s) = (-6.0, 20.0, 540.0);
+        let data = noiseless(&targets, 5, |p, t| {
+            (a + ppm * 1e-3 * p) * (1.0 - (-t / tau_s).exp())
+        });
+        let prep = Prep::new(&data);
+        let x: Vec<f64> = prep.rows.iter().map(|r| r.x).collect();
+        let all = vec![true; x.len()];
+        let ones = vec![1.0; prep.cells()];
+        let f = profiled(&prep, &x, &all, &ones, Terms::default()).unwrap();
+        let tau_h = tau_s / 3600.0;
+        let tau = f.tau.unwrap();
+        assert!((tau - tau_h).abs() < 1e-6 * tau_h, "τ {tau} h vs {tau_h} h");
+        let left = (-12.0 / tau_s).exp();
+        let want_a = (a + ppm * 1e-3 * 250.0) * left;
+        assert!((f.warm_a - want_a).abs() < 1e-6, "{} vs {want_a}", f.warm_a);
+        let want_g = ppm * 1e-3 * left;
+        assert!((f.warm_g - want_g).abs() < 1e-9, "{} vs {want_g}", f.warm_g);
+        assert!(f.rss < 1e-12, "{}", f.rss);
+    }
+
+    /// A linear drift beside the warm-up does not disturb it, and is told apart from it:
+    /// the profile with a drift column finds both exactly.
+    #[test]
+    fn separates_a_warm_up_from_a_linear_drift_in_noiseless_data() {
+        let targets: Vec<f64> = (0..8).map(|i| 100.0 * i as f64).collect();
+        let (a, tau_s, rate_per_s) = (4.0, 900.0, -2.0 / 3600.0);
+        let data = noiseless(&targets, 6, |_, t| {
+            a * (1.0 - (-t / tau_s).exp()) + rate_per_s * t
+        });
+        let prep = Prep::new(&data);
+        let x: Vec<f64> = prep.rows.iter().map(|r| r.x).collect();
+        let all = vec![true; x.len()];
+        let ones = vec![1.0; prep.cells()];
+        let drift = Terms {
+            drift: true,
+            ..Terms::default()
+        };
+        let f = profiled(&prep, &x, &all, &ones, drift).unwrap();
+        let tau = f.tau.unwrap() * 3600.0;
+        assert!((tau - tau_s).abs() < 1e-6 * tau_s, "τ {tau} s");
+        assert!((f.beta - (-2.0)).abs() < 1e-6, "drift {} µm/h", f.beta);
+        let want_a = a * (-12.0 / tau_s).exp();
+        assert!((f.warm_a - want_a).abs() < 1e-6, "{} vs {want_a}", f.warm_a);
+    }
+
+    /// Davies' bound is the F tail with no path, and grows with the path.
+    #[test]
+    fn davies_bound() {
+        assert!((davies(9.0, 50.0, 0.0) - f_upper(9.0, 1.0, 50.0)).abs() < 1e-15);
+        let (a, b) = (davies(9.0, 50.0, 1.0), davies(9.0, 50.0, 3.0));
+        assert!(a > f_upper(9.0, 1.0, 50.0) && b > a);
+        // ν → ∞: P(χ²₁ ≥ u) + L/π·e^(−u/2).
+        let want = super::super::stats::chi2_upper(16.0, 1.0) + 2.0 / PI * (-8.0f64).exp();
+        assert!((davies(16.0, 1e7, 2.0) - want).abs() < 1e-8);
+    }
+
+    #[test]
+    fn golden_section_finds_a_maximum() {
+        let x = golden_max(0.0, 3.0, |x| -(x - 1.234_567).powi(2));
+        assert!((x - 1.234_567).abs() < 1e-4, "{x}");
     }
 }
