@@ -133,6 +133,21 @@ impl ParameterDef {
     pub fn defined_by(&self, standard: StandardId) -> bool {
         self.standards.contains(&standard)
     }
+
+    /// Whether it measures the scatter of the readings about their directional means,
+    /// which a compensation table cannot correct (it moves the means only): a
+    /// unidirectional repeatability or spread (R↑, R↓, 3σ↑, 3σ↓), or σ itself (VDI σ̄,
+    /// the mean of each direction's σi). Not a bidirectional repeatability or spread,
+    /// which holds the reversal a table moves, nor VDI's R_p = 6σ̄, which σ̄ already says.
+    pub fn is_scatter(&self) -> bool {
+        match self.spread {
+            Spread::Repeatability | Spread::Scatter { .. } if self.approach != Approach::Both => {
+                true
+            }
+            Spread::Scatter { factor, of_k } => factor == 1.0 && !of_k,
+            _ => false,
+        }
+    }
 }
 
 const ISO: &[StandardId] = &[StandardId::Iso230_2, StandardId::Gbt17421_2];
@@ -827,6 +842,33 @@ mod tests {
                 "{}",
                 d.key
             );
+        }
+    }
+
+    /// The scatter parameters of each standard are those the compensation report named
+    /// by key (`R_up`, `R_down`, `sigma_mean`, `spread_up`, `spread_down`) before the
+    /// catalogue said it.
+    #[test]
+    fn scatter_parameters_are_the_listed_ones() {
+        let listed = ["R_up", "R_down", "sigma_mean", "spread_up", "spread_down"];
+        for standard in StandardId::ALL {
+            let scatter: Vec<&str> = of(standard)
+                .filter(|d| d.is_scatter())
+                .map(|d| d.key.as_str())
+                .collect();
+            let by_key: Vec<&str> = of(standard)
+                .map(|d| d.key.as_str())
+                .filter(|k| listed.contains(k))
+                .collect();
+            assert_eq!(scatter, by_key, "{standard}");
+            let want: &[&str] = match standard {
+                StandardId::Iso230_2 | StandardId::Gbt17421_2 | StandardId::Gost27843 => {
+                    &["R_up", "R_down"]
+                }
+                StandardId::Vdi3441 => &["sigma_mean"],
+                StandardId::Nmtba => &["spread_up", "spread_down"],
+            };
+            assert_eq!(scatter, want, "{standard}");
         }
     }
 
