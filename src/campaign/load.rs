@@ -142,7 +142,7 @@ fn validated_axis(
     index: &LocationIndex,
     default_standard: StandardId,
 ) -> Result<(AxisRaw, StandardId, DataSource), Located> {
-    let raw: AxisRaw = deserialize_at(value, base, index)?;
+    let mut raw: AxisRaw = deserialize_at(value, base, index)?;
     let standard = match &raw.standard {
         None => default_standard,
         Some(s) => parse_standard(s, &format!("{base}.standard"), index)?,
@@ -160,7 +160,7 @@ fn validated_axis(
     check_pitch(&raw, base, index)?;
     check_compensation(&raw, base, index)?;
     check_plan(&raw, base, index)?;
-    check_tolerances(&raw, base, index)?;
+    check_tolerances(&mut raw, base, index)?;
     check_instrument(&raw, base, index)?;
     Ok((raw, standard, data))
 }
@@ -335,7 +335,10 @@ fn check_backlash(
 }
 
 /// Every limit names a parameter that can be limited, and is a number ≥ 0 (the check
-/// specs share: [`crate::judge::check_tolerances`]).
-fn check_tolerances(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
-    crate::judge::check_tolerances(base, &raw.tolerances, index)
+/// specs share: [`crate::judge::check_tolerances`]): the written limits become the axis's
+/// typed `tolerances`.
+fn check_tolerances(raw: &mut AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    let written = std::mem::take(&mut raw.written_tolerances);
+    raw.tolerances = crate::judge::check_tolerances(base, &written, index)?;
+    Ok(())
 }

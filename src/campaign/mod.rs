@@ -301,6 +301,7 @@ fn parse_standard(name: &str, path: &str, index: &LocationIndex) -> Result<Stand
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::evaluate::ParamKey;
     use crate::units::Travel;
 
     fn parse(text: &str) -> Result<Campaign, CampaignError> {
@@ -339,7 +340,7 @@ machines:
         assert_eq!(axes.len(), 3);
         let x = axes[0].spec.as_ref().unwrap();
         assert_eq!(x.raw.travel, Some(Travel::Length(1200.0)));
-        assert_eq!(x.raw.tolerances["A"], 12.0);
+        assert_eq!(x.raw.tolerances[&ParamKey::A], 12.0);
         assert_eq!(x.spec.as_deref(), Some("general"));
         assert_eq!(x.at.line(), 7);
         let y = axes[1].spec.as_ref().unwrap();

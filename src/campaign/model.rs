@@ -2,7 +2,7 @@
 //! test report needs by ISO 230-2 clause 7.1 has a key of its own.
 
 use crate::axis_model::Cycle;
-use crate::judge::DecisionRule;
+use crate::judge::{DecisionRule, Tolerances};
 use crate::uncertainty::InstrumentKind;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::describe;
@@ -132,9 +132,13 @@ pub struct AxisRaw {
     /// Acceptance spec (overrides the campaign's); `none` for no spec.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spec: Option<String>,
+    /// The limits as the file writes them: read by serde, then checked and moved into
+    /// `tolerances` by the loader (empty after it).
+    #[serde(rename = "tolerances", default, skip_serializing)]
+    pub(super) written_tolerances: BTreeMap<String, f64>,
     /// Per-parameter limits, µm (linear) or arcsec (rotary), overriding the spec.
-    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
-    pub tolerances: BTreeMap<String, f64>,
+    #[serde(skip_deserializing, skip_serializing_if = "BTreeMap::is_empty")]
+    pub tolerances: Tolerances,
     /// Decision rule of this axis: overrides its spec's and the campaign's.
     #[serde(
         default,

@@ -12,7 +12,7 @@
 //! accuracy. Within one standard a key is unique. The order of [`CATALOGUE`] is the order
 //! in which each standard lists its parameters.
 
-use super::StandardId;
+use super::{ParamKey, StandardId};
 use crate::units::AxisKind;
 use std::sync::LazyLock;
 
@@ -77,7 +77,7 @@ pub enum Approach {
 #[derive(Debug, PartialEq)]
 pub struct ParameterDef {
     /// Stable key in JSON, specs and table columns: `A`, `A_up`, `R_max`, `B_mean` …
-    pub key: &'static str,
+    pub key: ParamKey,
     /// Symbol for people: `A↑`, `B̄` …
     pub symbol: &'static str,
     /// Name in words.
@@ -133,6 +133,21 @@ impl ParameterDef {
     pub fn defined_by(&self, standard: StandardId) -> bool {
         self.standards.contains(&standard)
     }
+
+    /// Whether it measures the scatter of the readings about their directional means,
+    /// which a compensation table cannot correct (it moves the means only): a
+    /// unidirectional repeatability or spread (R↑, R↓, 3σ↑, 3σ↓), or σ itself (VDI σ̄,
+    /// the mean of each direction's σi). Not a bidirectional repeatability or spread,
+    /// which holds the reversal a table moves, nor VDI's R_p = 6σ̄, which σ̄ already says.
+    pub fn is_scatter(&self) -> bool {
+        match self.spread {
+            Spread::Repeatability | Spread::Scatter { .. } if self.approach != Approach::Both => {
+                true
+            }
+            Spread::Scatter { factor, of_k } => factor == 1.0 && !of_k,
+            _ => false,
+        }
+    }
 }
 
 const ISO: &[StandardId] = &[StandardId::Iso230_2, StandardId::Gbt17421_2];
@@ -143,7 +158,7 @@ const NMTBA: &[StandardId] = &[StandardId::Nmtba];
 /// A definition with the fields most entries share (deviation unit, a width, no role,
 /// computable with n = 1).
 const fn def(
-    key: &'static str,
+    key: ParamKey,
     symbol: &'static str,
     name: &'static str,
     clause: &'static str,
@@ -209,7 +224,7 @@ pub mod iso230_2 {
         Spread::Band,
         with_role(
             repeated(def(
-                "A",
+                ParamKey::A,
                 "A",
                 "bidirectional accuracy of positioning",
                 "ISO 230-2 2.23",
@@ -223,7 +238,7 @@ pub mod iso230_2 {
         only(
             Approach::Up,
             repeated(def(
-                "A_up",
+                ParamKey::AUp,
                 "A↑",
                 "unidirectional accuracy of positioning ↑",
                 "ISO 230-2 2.22",
@@ -236,7 +251,7 @@ pub mod iso230_2 {
         only(
             Approach::Down,
             repeated(def(
-                "A_down",
+                ParamKey::ADown,
                 "A↓",
                 "unidirectional accuracy of positioning ↓",
                 "ISO 230-2 2.22 (GB/T 17421.2 amendment No. 1)",
@@ -248,7 +263,7 @@ pub mod iso230_2 {
         Spread::Mean,
         with_role(
             def(
-                "E",
+                ParamKey::E,
                 "E",
                 "bidirectional systematic positional deviation",
                 "ISO 230-2 2.20",
@@ -262,7 +277,7 @@ pub mod iso230_2 {
         only(
             Approach::Up,
             def(
-                "E_up",
+                ParamKey::EUp,
                 "E↑",
                 "unidirectional systematic positional deviation ↑",
                 "ISO 230-2 2.19",
@@ -275,7 +290,7 @@ pub mod iso230_2 {
         only(
             Approach::Down,
             def(
-                "E_down",
+                ParamKey::EDown,
                 "E↓",
                 "unidirectional systematic positional deviation ↓",
                 "ISO 230-2 2.19",
@@ -287,7 +302,7 @@ pub mod iso230_2 {
         Spread::Bidirectional,
         with_role(
             def(
-                "M",
+                ParamKey::M,
                 "M",
                 "range of the mean bidirectional positional deviation",
                 "ISO 230-2 2.21",
@@ -300,7 +315,7 @@ pub mod iso230_2 {
         Spread::Repeatability,
         with_role(
             repeated(def(
-                "R",
+                ParamKey::R,
                 "R",
                 "bidirectional repeatability of positioning",
                 "ISO 230-2 2.18 (2.17)",
@@ -314,7 +329,7 @@ pub mod iso230_2 {
         only(
             Approach::Up,
             repeated(def(
-                "R_up",
+                ParamKey::RUp,
                 "R↑",
                 "unidirectional repeatability of positioning ↑",
                 "ISO 230-2 2.18 (2.16)",
@@ -327,7 +342,7 @@ pub mod iso230_2 {
         only(
             Approach::Down,
             repeated(def(
-                "R_down",
+                ParamKey::RDown,
                 "R↓",
                 "unidirectional repeatability of positioning ↓",
                 "ISO 230-2 2.18 (2.16)",
@@ -339,7 +354,7 @@ pub mod iso230_2 {
         Spread::ReversalAtTarget,
         with_role(
             def(
-                "B",
+                ParamKey::B,
                 "B",
                 "reversal value of the axis",
                 "ISO 230-2 2.13",
@@ -351,7 +366,7 @@ pub mod iso230_2 {
     pub static B_MEAN: ParameterDef = made_of(
         Spread::ReversalMean,
         signed(def(
-            "B_mean",
+            ParamKey::BMean,
             "B̄",
             "mean reversal value of the axis",
             "ISO 230-2 2.14",
@@ -367,7 +382,7 @@ pub mod gost27843 {
         Spread::Band,
         with_role(
             repeated(def(
-                "A",
+                ParamKey::A,
                 "A",
                 "bidirectional positioning accuracy",
                 "GOST 27843 1.14 (10)",
@@ -381,7 +396,7 @@ pub mod gost27843 {
         only(
             Approach::Up,
             repeated(def(
-                "A_up",
+                ParamKey::AUp,
                 "A↑",
                 "unidirectional positioning accuracy ↑",
                 "GOST 27843 1.14 (10)",
@@ -394,7 +409,7 @@ pub mod gost27843 {
         only(
             Approach::Down,
             repeated(def(
-                "A_down",
+                ParamKey::ADown,
                 "A↓",
                 "unidirectional positioning accuracy ↓",
                 "GOST 27843 1.14 (10)",
@@ -406,7 +421,7 @@ pub mod gost27843 {
         Spread::Repeatability,
         with_role(
             repeated(def(
-                "R_max",
+                ParamKey::RMax,
                 "R_max",
                 "bidirectional positioning repeatability",
                 "GOST 27843 1.11, 1.13 (8)",
@@ -420,7 +435,7 @@ pub mod gost27843 {
         only(
             Approach::Up,
             repeated(def(
-                "R_up",
+                ParamKey::RUp,
                 "R↑",
                 "unidirectional positioning repeatability ↑",
                 "GOST 27843 1.10, 1.13 (7)",
@@ -433,7 +448,7 @@ pub mod gost27843 {
         only(
             Approach::Down,
             repeated(def(
-                "R_down",
+                ParamKey::RDown,
                 "R↓",
                 "unidirectional positioning repeatability ↓",
                 "GOST 27843 1.10, 1.13 (7)",
@@ -444,7 +459,7 @@ pub mod gost27843 {
     pub static R_MEAN: ParameterDef = made_of(
         Spread::MeanRepeatability,
         repeated(def(
-            "R_mean",
+            ParamKey::RMean,
             "R̄",
             "mean bidirectional positioning repeatability",
             "GOST 27843 1.12 (9)",
@@ -455,7 +470,7 @@ pub mod gost27843 {
         Spread::ReversalAtTarget,
         with_role(
             def(
-                "B_max",
+                ParamKey::BMax,
                 "B_max",
                 "maximum dead band (reversal)",
                 "GOST 27843 1.16",
@@ -467,7 +482,7 @@ pub mod gost27843 {
     pub static B_MEAN: ParameterDef = made_of(
         Spread::ReversalMean,
         signed(def(
-            "B_mean",
+            ParamKey::BMean,
             "B̄",
             "mean dead band (reversal)",
             "GOST 27843 1.15",
@@ -480,12 +495,22 @@ pub mod gost27843 {
 pub mod vdi3441 {
     use super::*;
     const CLAUSE: &str = "VDI 3441 (Hemingray et al. 1971, 3.2)";
-    pub static X_MAX: ParameterDef =
-        level(def("X_max", "X̄max", "largest mean deviation", CLAUSE, VDI));
-    pub static X_MIN: ParameterDef =
-        level(def("X_min", "X̄min", "smallest mean deviation", CLAUSE, VDI));
+    pub static X_MAX: ParameterDef = level(def(
+        ParamKey::XMax,
+        "X̄max",
+        "largest mean deviation",
+        CLAUSE,
+        VDI,
+    ));
+    pub static X_MIN: ParameterDef = level(def(
+        ParamKey::XMin,
+        "X̄min",
+        "smallest mean deviation",
+        CLAUSE,
+        VDI,
+    ));
     pub static A_MEAN: ParameterDef = level(def(
-        "A_mean",
+        ParamKey::AMean,
         "Ā",
         "mean position deviation (X̄max + X̄min)/2",
         CLAUSE,
@@ -497,7 +522,7 @@ pub mod vdi3441 {
             of_k: false,
         },
         repeated(def(
-            "sigma_mean",
+            ParamKey::SigmaMean,
             "σ̄",
             "mean standard deviation from ranges, σi = Ri/d",
             CLAUSE,
@@ -505,21 +530,21 @@ pub mod vdi3441 {
         )),
     );
     pub static G_UPPER: ParameterDef = level(repeated(def(
-        "G_upper",
+        ParamKey::GUpper,
         "G_o",
         "upper limit Ā + ((X̄max − X̄min)/2 + 3σ)",
         CLAUSE,
         VDI,
     )));
     pub static G_LOWER: ParameterDef = level(repeated(def(
-        "G_lower",
+        ParamKey::GLower,
         "G_u",
         "lower limit Ā − ((X̄max − X̄min)/2 + 3σ)",
         CLAUSE,
         VDI,
     )));
     pub static T: ParameterDef = repeated(def(
-        "T",
+        ParamKey::T,
         "T_E",
         "position error X̄max − X̄min + 6σ",
         CLAUSE,
@@ -530,7 +555,13 @@ pub mod vdi3441 {
             factor: 2.0,
             of_k: true,
         },
-        repeated(def("R_p", "R_p", "position scatter width 6σ", CLAUSE, VDI)),
+        repeated(def(
+            ParamKey::Rp,
+            "R_p",
+            "position scatter width 6σ",
+            CLAUSE,
+            VDI,
+        )),
     );
 }
 
@@ -540,7 +571,7 @@ pub mod nmtba {
     const CLAUSE: &str = "NMTBA (Hemingray et al. 1971, 3.1)";
     pub static A: ParameterDef = with_role(
         repeated(def(
-            "A",
+            ParamKey::A,
             "A_b",
             "bidirectional accuracy max(|X̄i − zero| + 3σi)",
             CLAUSE,
@@ -551,7 +582,7 @@ pub mod nmtba {
     pub static A_UP: ParameterDef = only(
         Approach::Up,
         repeated(def(
-            "A_up",
+            ParamKey::AUp,
             "A_u↑",
             "unidirectional accuracy ↑",
             CLAUSE,
@@ -561,7 +592,7 @@ pub mod nmtba {
     pub static A_DOWN: ParameterDef = only(
         Approach::Down,
         repeated(def(
-            "A_down",
+            ParamKey::ADown,
             "A_u↓",
             "unidirectional accuracy ↓",
             CLAUSE,
@@ -569,7 +600,7 @@ pub mod nmtba {
         )),
     );
     pub static ZERO: ParameterDef = level(repeated(def(
-        "zero",
+        ParamKey::Zero,
         "zero",
         "zero line, midway between the extreme means",
         CLAUSE,
@@ -581,7 +612,7 @@ pub mod nmtba {
             of_k: true,
         },
         repeated(def(
-            "spread",
+            ParamKey::Spread,
             "3σ_b",
             "largest bidirectional scatter 3σ",
             CLAUSE,
@@ -596,7 +627,7 @@ pub mod nmtba {
         only(
             Approach::Up,
             repeated(def(
-                "spread_up",
+                ParamKey::SpreadUp,
                 "3σ_u↑",
                 "largest unidirectional scatter 3σ",
                 CLAUSE,
@@ -612,7 +643,7 @@ pub mod nmtba {
         only(
             Approach::Down,
             repeated(def(
-                "spread_down",
+                ParamKey::SpreadDown,
                 "3σ_u↓",
                 "largest unidirectional scatter 3σ",
                 CLAUSE,
@@ -623,7 +654,7 @@ pub mod nmtba {
     pub static L_MAX: ParameterDef = made_of(
         Spread::LostMotion,
         def(
-            "L_max",
+            ParamKey::LMax,
             "L_max",
             "largest lost motion |X̄i↑ − X̄i↓|",
             CLAUSE,
@@ -632,7 +663,7 @@ pub mod nmtba {
     );
     pub static L_MEAN: ParameterDef = made_of(
         Spread::LostMotion,
-        signed(def("L_mean", "L̄", "mean lost motion", CLAUSE, NMTBA)),
+        signed(def(ParamKey::LMean, "L̄", "mean lost motion", CLAUSE, NMTBA)),
     );
 }
 
@@ -688,15 +719,15 @@ pub fn of(standard: StandardId) -> impl Iterator<Item = &'static ParameterDef> {
 
 /// `standard`'s definition of `key`.
 pub fn find(standard: StandardId, key: &str) -> Option<&'static ParameterDef> {
-    of(standard).find(|d| d.key == key)
+    of(standard).find(|d| d.key.as_str() == key)
 }
 
 /// The distinct keys of the definitions `keep` selects, in catalogue order.
 fn keys_where(keep: impl Fn(&ParameterDef) -> bool) -> Vec<&'static str> {
     let mut keys: Vec<&'static str> = Vec::new();
     for d in CATALOGUE.iter().filter(|d| keep(d)) {
-        if !keys.contains(&d.key) {
-            keys.push(d.key);
+        if !keys.contains(&d.key.as_str()) {
+            keys.push(d.key.as_str());
         }
     }
     keys
@@ -709,9 +740,9 @@ pub fn limitable_keys() -> &'static [&'static str] {
     &KEYS
 }
 
-/// Whether a tolerance limit may name `key`.
-pub fn is_limitable_key(key: &str) -> bool {
-    limitable_keys().contains(&key)
+/// The key `text` writes, if a tolerance limit may name it.
+pub fn limitable(text: &str) -> Option<ParamKey> {
+    ParamKey::parse(text).filter(|&k| CATALOGUE.iter().any(|d| d.key == k && d.limitable()))
 }
 
 /// The keys of ISO 230-2's and GOST 27843's parameters: the parameter columns of the
@@ -730,7 +761,7 @@ mod tests {
     #[test]
     fn keys_are_unique_within_each_standard() {
         for standard in StandardId::ALL {
-            let keys: Vec<&str> = of(standard).map(|d| d.key).collect();
+            let keys: Vec<&str> = of(standard).map(|d| d.key.as_str()).collect();
             let mut unique = keys.clone();
             unique.sort_unstable();
             unique.dedup();
@@ -771,10 +802,35 @@ mod tests {
         assert_eq!(keys.len(), 23);
     }
 
+    /// Every key names an entry, in the order the catalogue first lists it.
+    #[test]
+    fn the_keys_are_the_catalogues() {
+        let all: Vec<&str> = ParamKey::ALL.iter().map(|k| k.as_str()).collect();
+        assert_eq!(all, keys_where(|_| true));
+    }
+
+    #[test]
+    fn a_limit_may_name_the_limitable_keys_only() {
+        for text in ParamKey::ALL
+            .map(ParamKey::as_str)
+            .into_iter()
+            .chain(["AA", "a", ""])
+        {
+            let limitable = limitable(text);
+            assert_eq!(
+                limitable.is_some(),
+                limitable_keys().contains(&text),
+                "{text}"
+            );
+            assert!(limitable.is_none_or(|k| k.as_str() == text));
+        }
+    }
+
     #[test]
     fn approach_matches_the_arrow() {
         for d in CATALOGUE {
-            let want = match (d.key.ends_with("_up"), d.key.ends_with("_down")) {
+            let key = d.key.as_str();
+            let want = match (key.ends_with("_up"), key.ends_with("_down")) {
                 (true, _) => Approach::Up,
                 (_, true) => Approach::Down,
                 _ => Approach::Both,
@@ -786,6 +842,33 @@ mod tests {
                 "{}",
                 d.key
             );
+        }
+    }
+
+    /// The scatter parameters of each standard are those the compensation report named
+    /// by key (`R_up`, `R_down`, `sigma_mean`, `spread_up`, `spread_down`) before the
+    /// catalogue said it.
+    #[test]
+    fn scatter_parameters_are_the_listed_ones() {
+        let listed = ["R_up", "R_down", "sigma_mean", "spread_up", "spread_down"];
+        for standard in StandardId::ALL {
+            let scatter: Vec<&str> = of(standard)
+                .filter(|d| d.is_scatter())
+                .map(|d| d.key.as_str())
+                .collect();
+            let by_key: Vec<&str> = of(standard)
+                .map(|d| d.key.as_str())
+                .filter(|k| listed.contains(k))
+                .collect();
+            assert_eq!(scatter, by_key, "{standard}");
+            let want: &[&str] = match standard {
+                StandardId::Iso230_2 | StandardId::Gbt17421_2 | StandardId::Gost27843 => {
+                    &["R_up", "R_down"]
+                }
+                StandardId::Vdi3441 => &["sigma_mean"],
+                StandardId::Nmtba => &["spread_up", "spread_down"],
+            };
+            assert_eq!(scatter, want, "{standard}");
         }
     }
 

@@ -9,11 +9,13 @@ pub mod catalogue;
 pub mod gost27843;
 pub mod iso230_2;
 pub mod json;
+pub mod key;
 pub mod nmtba;
 pub mod stats;
 pub mod vdi3441;
 
 pub use catalogue::{Approach, ParameterDef, Role};
+pub use key::ParamKey;
 
 use crate::measurement::AxisData;
 use crate::units::{AxisKind, Direction};
@@ -174,7 +176,7 @@ impl Parameter {
 
     /// Stable key: `A`, `A_up`, `R_max` …
     pub fn key(&self) -> &'static str {
-        self.def.key
+        self.def.key.as_str()
     }
 
     /// Symbol for people: `A↑`, `B̄` …

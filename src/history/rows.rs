@@ -79,7 +79,7 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
                 limit: t
                     .evaluated()
                     .and_then(|e| e.judgement.as_ref())
-                    .and_then(|j| j.limits.values.get(key))
+                    .and_then(|j| j.limits.values.get(&p.def.key))
                     .map(|(limit, _)| *limit),
                 uncertainty: t
                     .evaluated()

@@ -1,12 +1,12 @@
 //! Judging an axis against tolerance limits: acceptance specs (`specs/*.yaml`), per-axis
 //! overrides, the check of each parameter, and the axis verdict.
 
-use crate::evaluate::Evaluation;
+use crate::evaluate::{Evaluation, ParamKey};
 use crate::units::{AxisKind, fmt_fixed};
 use serde::{Deserialize, Serialize};
 
 mod spec;
-pub use spec::{BUILTIN_SPECS, Band, Spec, check_tolerances};
+pub use spec::{BUILTIN_SPECS, Band, Spec, Tolerances, check_tolerances};
 use std::collections::BTreeMap;
 
 /// What the summary says of a test judged against no limit.
@@ -82,14 +82,14 @@ pub enum LimitSource {
 pub struct Limits {
     /// Spec name and band, e.g. `general (linear ≤ 1000 mm)`.
     pub spec: Option<String>,
-    pub values: BTreeMap<String, (f64, LimitSource)>,
+    pub values: BTreeMap<ParamKey, (f64, LimitSource)>,
 }
 
 impl Limits {
     /// Limits from a spec band (if any) overridden by the axis's own tolerances.
     pub fn new(
         spec: Option<&Spec>,
-        overrides: &BTreeMap<String, f64>,
+        overrides: &Tolerances,
         kind: AxisKind,
         travel: f64,
     ) -> Result<Limits, String> {
@@ -108,11 +108,11 @@ impl Limits {
             };
             limits.spec = Some(format!("{} ({kind} {range})", spec.name));
             for (k, v) in &band.tolerances {
-                limits.values.insert(k.clone(), (*v, LimitSource::Spec));
+                limits.values.insert(*k, (*v, LimitSource::Spec));
             }
         }
         for (k, v) in overrides {
-            limits.values.insert(k.clone(), (*v, LimitSource::Axis));
+            limits.values.insert(*k, (*v, LimitSource::Axis));
         }
         Ok(limits)
     }
@@ -257,7 +257,7 @@ pub fn judge(evaluation: &Evaluation, limits: &Limits, decision: &Decision) -> J
     let mut not_applicable = Vec::new();
     // In the standard's order of parameters, then any others.
     for p in &evaluation.parameters {
-        if let Some(&(limit, source)) = limits.values.get(p.key()) {
+        if let Some(&(limit, source)) = limits.values.get(&p.def.key) {
             let expanded = match decision.rule {
                 DecisionRule::Simple => None,
                 DecisionRule::Iso14253_1 => {
@@ -278,9 +278,10 @@ pub fn judge(evaluation: &Evaluation, limits: &Limits, decision: &Decision) -> J
             });
         }
     }
+    // Alphabetically by key, as `ParamKey` orders.
     for key in limits.values.keys() {
-        if evaluation.parameter(key).is_none() {
-            not_applicable.push(key.clone());
+        if evaluation.parameter(key.as_str()).is_none() {
+            not_applicable.push(key.to_string());
         }
     }
     Judgement {

@@ -1,6 +1,6 @@
 //! Acceptance specs (`specs/*.yaml`): limits per parameter in bands of measurement travel.
 
-use crate::evaluate::catalogue;
+use crate::evaluate::{ParamKey, catalogue};
 use crate::units::AxisKind;
 use crate::yaml::{self, Located, LocationIndex, YamlError, deserialize_at};
 use serde::{Deserialize, Serialize};
@@ -11,6 +11,10 @@ pub const BUILTIN_SPECS: &[(&str, &str)] = &[
     ("general", include_str!("../../specs/general.yaml")),
     ("precision", include_str!("../../specs/precision.yaml")),
 ];
+
+/// Limits per parameter, µm (linear) or arcsec (rotary), as checked: keyed by the
+/// parameter, walked in the order of the written keys ([`ParamKey`]'s order).
+pub type Tolerances = BTreeMap<ParamKey, f64>;
 
 /// One band of a spec: limits for axes whose measurement travel is up to `up_to`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -24,8 +28,13 @@ pub struct Band {
         skip_serializing_if = "Option::is_none"
     )]
     pub up_to: Option<f64>,
+    /// The limits as the file writes them: read by serde, then checked and moved into
+    /// `tolerances` by [`Spec::from_yaml`] (empty after it).
+    #[serde(rename = "tolerances", skip_serializing)]
+    written: BTreeMap<String, f64>,
     /// Limits per parameter, µm (linear) or arcsec (rotary).
-    pub tolerances: BTreeMap<String, f64>,
+    #[serde(skip_deserializing)]
+    pub tolerances: Tolerances,
 }
 
 /// An acceptance spec.
@@ -54,8 +63,8 @@ impl Spec {
     /// Parses a spec; `file` names it in errors.
     pub fn from_yaml(text: &str, file: &str) -> Result<Spec, YamlError> {
         let (value, index) = yaml::parse(text, file)?;
-        let spec: Spec = deserialize_at(&value, "", &index).map_err(|e| e.in_file(file))?;
-        for (group, bands) in [("linear", &spec.linear), ("rotary", &spec.rotary)] {
+        let mut spec: Spec = deserialize_at(&value, "", &index).map_err(|e| e.in_file(file))?;
+        for (group, bands) in [("linear", &mut spec.linear), ("rotary", &mut spec.rotary)] {
             check_bands(group, bands, &index).map_err(|e| e.in_file(file))?;
         }
         Ok(spec)
@@ -73,10 +82,12 @@ impl Spec {
     }
 }
 
-/// Bands in order of `up_to` (only the last open-ended), each limit known and ≥ 0.
-fn check_bands(group: &str, bands: &[Band], index: &LocationIndex) -> Result<(), Located> {
+/// Bands in order of `up_to` (only the last open-ended), each limit known and ≥ 0; the
+/// limits of each band typed by [`check_limits`].
+fn check_bands(group: &str, bands: &mut [Band], index: &LocationIndex) -> Result<(), Located> {
     let mut last = f64::NEG_INFINITY;
-    for (k, band) in bands.iter().enumerate() {
+    let count = bands.len();
+    for (k, band) in bands.iter_mut().enumerate() {
         let here = format!("{group}[{k}]");
         match band.up_to {
             Some(u) if u > last => last = u,
@@ -84,7 +95,7 @@ fn check_bands(group: &str, bands: &[Band], index: &LocationIndex) -> Result<(),
                 let message = format!("{here}: bands must have increasing up_to");
                 return Err(Located::new(index.value(&here), message));
             }
-            None if k + 1 == bands.len() => last = f64::INFINITY,
+            None if k + 1 == count => last = f64::INFINITY,
             None => {
                 let message = format!("{here}: only the last band may omit up_to");
                 return Err(Located::new(index.value(&here), message));
@@ -95,32 +106,37 @@ fn check_bands(group: &str, bands: &[Band], index: &LocationIndex) -> Result<(),
     Ok(())
 }
 
-/// Every limit of a band names a parameter that can be limited, and is a number ≥ 0.
-fn check_limits(here: &str, band: &Band, index: &LocationIndex) -> Result<(), Located> {
-    check_tolerances(here, &band.tolerances, index)
+/// Every limit of a band names a parameter that can be limited, and is a number ≥ 0: the
+/// written limits become the band's typed `tolerances`.
+fn check_limits(here: &str, band: &mut Band, index: &LocationIndex) -> Result<(), Located> {
+    band.tolerances = check_tolerances(here, &std::mem::take(&mut band.written), index)?;
+    Ok(())
 }
 
-/// Every limit of `tolerances` (at `here` in the file: a spec's band or a campaign's axis)
-/// names a parameter that can be limited, and is a number ≥ 0. The one check of limits,
-/// for specs and campaigns alike.
+/// Every limit of `written` (at `here` in the file: a spec's band or a campaign's axis)
+/// names a parameter that can be limited, and is a number ≥ 0: the limits keyed by their
+/// parameters. The one check of limits, for specs and campaigns alike; the first bad
+/// limit in the order of the written keys is the one reported.
 pub fn check_tolerances<'a>(
     here: &str,
-    tolerances: impl IntoIterator<Item = (&'a String, &'a f64)>,
+    written: impl IntoIterator<Item = (&'a String, &'a f64)>,
     index: &LocationIndex,
-) -> Result<(), Located> {
-    for (key, limit) in tolerances {
+) -> Result<Tolerances, Located> {
+    let mut tolerances = Tolerances::new();
+    for (key, &limit) in written {
         let path = format!("{here}.tolerances.{key}");
-        if !catalogue::is_limitable_key(key) {
+        let Some(parameter) = catalogue::limitable(key) else {
             let hint = crate::suggest::hint(key, catalogue::limitable_keys());
             let message = format!("{here}.tolerances: unknown parameter `{key}`{hint}");
             return Err(Located::new(index.key_or_value(&path), message));
-        }
-        if !(*limit >= 0.0 && limit.is_finite()) {
+        };
+        if !(limit >= 0.0 && limit.is_finite()) {
             let message = format!("{path}: expected a limit ≥ 0");
             return Err(Located::new(index.value(&path), message));
         }
+        tolerances.insert(parameter, limit);
     }
-    Ok(())
+    Ok(tolerances)
 }
 
 #[cfg(test)]
@@ -147,12 +163,12 @@ mod tests {
             "t.yaml",
         )
         .unwrap();
-        let over = BTreeMap::from([("R".to_string(), 4.0)]);
+        let over = Tolerances::from([(ParamKey::R, 4.0)]);
         let l = Limits::new(Some(&spec), &over, AxisKind::Linear, 1000.0).unwrap();
-        assert_eq!(l.values["A"], (10.0, LimitSource::Spec));
-        assert_eq!(l.values["R"], (4.0, LimitSource::Axis));
+        assert_eq!(l.values[&ParamKey::A], (10.0, LimitSource::Spec));
+        assert_eq!(l.values[&ParamKey::R], (4.0, LimitSource::Axis));
         let l = Limits::new(Some(&spec), &BTreeMap::new(), AxisKind::Linear, 1000.5).unwrap();
-        assert_eq!(l.values["A"].0, 20.0);
+        assert_eq!(l.values[&ParamKey::A].0, 20.0);
         assert!(Limits::new(Some(&spec), &BTreeMap::new(), AxisKind::Rotary, 90.0).is_err());
         let e = Spec::from_yaml(
             "name: t\nlinear:\n  - {up_to_mm: 1000, tolerances: {AA: 1}}\n",

@@ -21,103 +21,111 @@ enum Ctx {
     Spacing,
 }
 
-/// (internal name, linear spelling, rotary spelling, child context).
-type Key = (&'static str, &'static str, &'static str, Option<Ctx>);
+/// How the file spells a field: (serde's name of the field, linear spelling, rotary
+/// spelling).
+type Key = (&'static str, &'static str, &'static str);
 
+/// A field without a unit, spelled as its name.
+const fn plain(field: &'static str) -> Key {
+    (field, field, field)
+}
+
+/// The fields of `ctx`'s struct in its order, by serde's names, each in each of its
+/// spellings (the first is the one written; a unit test checks the table against the
+/// names serde reads, so that a field added to a struct cannot miss it).
 fn keys(ctx: Ctx) -> &'static [Key] {
     match ctx {
-        Ctx::Top => &[
-            ("kind", "kind", "kind", None),
-            ("seed", "seed", "seed", None),
-            ("description", "description", "description", None),
-            ("model", "model", "model", Some(Ctx::Model)),
-            ("plan", "plan", "plan", Some(Ctx::Plan)),
-        ],
-        Ctx::Model => &[
-            ("scale_ppm", "scale_ppm", "scale_ppm", None),
-            ("scale_ppm", "scale_um_per_m", "scale_ppm", None),
-            ("shape", "shape", "shape", None),
-            ("periodic", "periodic", "periodic", Some(Ctx::Periodic)),
-            ("reversal", "reversal_um", "reversal_arcsec", None),
-            (
-                "reversal_end",
-                "reversal_end_um",
-                "reversal_end_arcsec",
-                None,
-            ),
-            ("drift_per_h", "drift_um_per_h", "drift_arcsec_per_h", None),
-            (
-                "thermal_growth_ppm_per_h",
-                "thermal_growth_ppm_per_h",
-                "thermal_growth_ppm_per_h",
-                None,
-            ),
-            (
-                "thermal_growth_ppm_per_h",
-                "thermal_growth_um_per_m_per_h",
-                "thermal_growth_ppm_per_h",
-                None,
-            ),
-            (
-                "thermal_origin",
-                "thermal_origin_mm",
-                "thermal_origin_deg",
-                None,
-            ),
-            ("warm_up", "warm_up_um", "warm_up_arcsec", None),
-            ("warm_up_ppm", "warm_up_ppm", "warm_up_ppm", None),
-            ("warm_up_ppm", "warm_up_um_per_m", "warm_up_ppm", None),
-            (
-                "warm_up_tau_min",
-                "warm_up_tau_min",
-                "warm_up_tau_min",
-                None,
-            ),
-            ("run_offsets", "run_offsets_um", "run_offsets_arcsec", None),
-            (
-                "run_offset_sd",
-                "run_offset_sd_um",
-                "run_offset_sd_arcsec",
-                None,
-            ),
-            ("scatter", "scatter_um", "scatter_arcsec", None),
-            ("scatter_end", "scatter_end_um", "scatter_end_arcsec", None),
-            ("outliers", "outliers", "outliers", Some(Ctx::Outlier)),
-            ("outlier_rate", "outlier_rate", "outlier_rate", None),
-            (
-                "outlier_size",
-                "outlier_size_um",
-                "outlier_size_arcsec",
-                None,
-            ),
-            ("resolution", "resolution_um", "resolution_arcsec", None),
-        ],
-        Ctx::Periodic => &[
-            ("pitch", "pitch_mm", "pitch_deg", None),
-            ("amplitude", "amplitude_um", "amplitude_arcsec", None),
-            ("phase_deg", "phase_deg", "phase_deg", None),
-        ],
-        Ctx::Outlier => &[
-            ("run", "run", "run", None),
-            ("direction", "direction", "direction", None),
-            ("target", "target", "target", None),
-            ("size", "size_um", "size_arcsec", None),
-        ],
-        Ctx::Plan => &[
-            ("targets", "targets", "targets", Some(Ctx::Spacing)),
-            ("target_list", "targets_mm", "targets_deg", None),
-            ("runs", "runs", "runs", None),
-            ("cycle", "cycle", "cycle", None),
-            ("feed_per_min", "feed_mm_per_min", "feed_deg_per_min", None),
-            ("dwell_s", "dwell_s", "dwell_s", None),
-            ("overrun", "overrun_mm", "overrun_deg", None),
-        ],
-        Ctx::Spacing => &[
-            ("start", "start_mm", "start_deg", None),
-            ("end", "end_mm", "end_deg", None),
-            ("count", "count", "count", None),
-            ("jitter", "jitter_mm", "jitter_deg", None),
-        ],
+        Ctx::Top => TOP,
+        Ctx::Model => MODEL,
+        Ctx::Periodic => PERIODIC,
+        Ctx::Outlier => OUTLIER,
+        Ctx::Plan => PLAN,
+        Ctx::Spacing => SPACING,
+    }
+}
+
+/// The simulation file's top level ([`crate::axis_model::Simulation`]).
+const TOP: &[Key] = &[
+    plain("kind"),
+    plain("seed"),
+    plain("description"),
+    plain("model"),
+    plain("plan"),
+];
+
+/// `model` ([`crate::axis_model::ErrorModel`]).
+const MODEL: &[Key] = &[
+    plain("scale_ppm"),
+    ("scale_ppm", "scale_um_per_m", "scale_ppm"),
+    plain("shape"),
+    plain("periodic"),
+    ("reversal", "reversal_um", "reversal_arcsec"),
+    ("reversal_end", "reversal_end_um", "reversal_end_arcsec"),
+    ("drift_per_h", "drift_um_per_h", "drift_arcsec_per_h"),
+    plain("thermal_growth_ppm_per_h"),
+    (
+        "thermal_growth_ppm_per_h",
+        "thermal_growth_um_per_m_per_h",
+        "thermal_growth_ppm_per_h",
+    ),
+    ("thermal_origin", "thermal_origin_mm", "thermal_origin_deg"),
+    ("warm_up", "warm_up_um", "warm_up_arcsec"),
+    plain("warm_up_ppm"),
+    ("warm_up_ppm", "warm_up_um_per_m", "warm_up_ppm"),
+    plain("warm_up_tau_min"),
+    ("run_offsets", "run_offsets_um", "run_offsets_arcsec"),
+    ("run_offset_sd", "run_offset_sd_um", "run_offset_sd_arcsec"),
+    ("scatter", "scatter_um", "scatter_arcsec"),
+    ("scatter_end", "scatter_end_um", "scatter_end_arcsec"),
+    plain("outliers"),
+    plain("outlier_rate"),
+    ("outlier_size", "outlier_size_um", "outlier_size_arcsec"),
+    ("resolution", "resolution_um", "resolution_arcsec"),
+];
+
+/// An entry of `model.periodic` ([`crate::axis_model::PeriodicTerm`]).
+const PERIODIC: &[Key] = &[
+    ("pitch", "pitch_mm", "pitch_deg"),
+    ("amplitude", "amplitude_um", "amplitude_arcsec"),
+    plain("phase_deg"),
+];
+
+/// An entry of `model.outliers` ([`crate::axis_model::Outlier`]).
+const OUTLIER: &[Key] = &[
+    plain("run"),
+    plain("direction"),
+    plain("target"),
+    ("size", "size_um", "size_arcsec"),
+];
+
+/// `plan` ([`crate::axis_model::TestPlan`]).
+const PLAN: &[Key] = &[
+    plain("targets"),
+    ("target_list", "targets_mm", "targets_deg"),
+    plain("runs"),
+    plain("cycle"),
+    ("feed_per_min", "feed_mm_per_min", "feed_deg_per_min"),
+    plain("dwell_s"),
+    ("overrun", "overrun_mm", "overrun_deg"),
+];
+
+/// `plan.targets` ([`crate::axis_model::TargetSpacing`]).
+const SPACING: &[Key] = &[
+    ("start", "start_mm", "start_deg"),
+    ("end", "end_mm", "end_deg"),
+    plain("count"),
+    ("jitter", "jitter_mm", "jitter_deg"),
+];
+
+/// The mapping the field `field` of `ctx` holds, for those that hold one.
+fn child(ctx: Ctx, field: &str) -> Option<Ctx> {
+    match (ctx, field) {
+        (Ctx::Top, "model") => Some(Ctx::Model),
+        (Ctx::Top, "plan") => Some(Ctx::Plan),
+        (Ctx::Model, "periodic") => Some(Ctx::Periodic),
+        (Ctx::Model, "outliers") => Some(Ctx::Outlier),
+        (Ctx::Plan, "targets") => Some(Ctx::Spacing),
+        _ => None,
     }
 }
 
@@ -210,8 +218,8 @@ fn check(
                     let message = format!("{here}: expected {names}, got {}", describe(v));
                     return Err(Located::new(index.value(&here), message));
                 }
-                if let Some(child) = entry.3 {
-                    check(v, child, kind, &here, index)?;
+                if let Some(inner) = child(ctx, entry.0) {
+                    check(v, inner, kind, &here, index)?;
                 }
             }
             Ok(())
@@ -258,7 +266,7 @@ fn context_at(path: &str, kind: AxisKind) -> Option<Ctx> {
     let mut ctx = Ctx::Top;
     for segment in path.split('.').filter(|s| !s.is_empty()) {
         let name = segment.split('[').next().unwrap_or(segment);
-        ctx = spelled(ctx, kind, name)?.3?;
+        ctx = child(ctx, spelled(ctx, kind, name)?.0)?;
     }
     Some(ctx)
 }
@@ -317,14 +325,15 @@ fn spelled_path(token: &str, kind: AxisKind) -> Option<String> {
     let mut out = String::new();
     for segment in token.split('.') {
         let (name, subscript) = segment.split_at(segment.find('[').unwrap_or(segment.len()));
-        let table = keys(ctx?);
+        let here = ctx?;
+        let table = keys(here);
         let entry = table.iter().find(|e| e.0 == name).or_else(|| {
             table
                 .iter()
                 .find(|e| !name.is_empty() && e.0.starts_with(name))
         })?;
         out = join(&out, &format!("{}{subscript}", spelling(entry, kind)));
-        ctx = entry.3;
+        ctx = child(here, entry.0);
     }
     Some(out)
 }
@@ -347,8 +356,8 @@ fn rename(value: Value, ctx: Ctx, kind: AxisKind) -> Value {
                     .and_then(|name| keys(ctx).iter().find(|e| e.0 == name));
                 match entry {
                     Some(e) => {
-                        let v = match e.3 {
-                            Some(child) => rename(v, child, kind),
+                        let v = match child(ctx, e.0) {
+                            Some(inner) => rename(v, inner, kind),
                             None => v,
                         };
                         out.insert(Value::String(spelling(e, kind).to_string()), v);
@@ -361,5 +370,62 @@ fn rename(value: Value, ctx: Ctx, kind: AxisKind) -> Value {
             Value::Mapping(out)
         }
         other => other,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::axis_model::{
+        ErrorModel, Outlier, PeriodicTerm, Simulation, TargetSpacing, TestPlan,
+    };
+    use crate::yaml::field_names;
+
+    const CONTEXTS: [Ctx; 6] = [
+        Ctx::Top,
+        Ctx::Model,
+        Ctx::Periodic,
+        Ctx::Outlier,
+        Ctx::Plan,
+        Ctx::Spacing,
+    ];
+
+    /// Every name serde reads for the struct of `ctx`: each field's name and its aliases.
+    fn serde_names(ctx: Ctx) -> &'static [&'static str] {
+        match ctx {
+            Ctx::Top => field_names::<Simulation>(),
+            Ctx::Model => field_names::<ErrorModel>(),
+            Ctx::Periodic => field_names::<PeriodicTerm>(),
+            Ctx::Outlier => field_names::<Outlier>(),
+            Ctx::Plan => field_names::<TestPlan>(),
+            Ctx::Spacing => field_names::<TargetSpacing>(),
+        }
+    }
+
+    /// The table's names as serde lists them: field by field in the table's order, each
+    /// field's name with its spellings, sorted.
+    fn table_names(ctx: Ctx) -> Vec<&'static str> {
+        let mut fields: Vec<&str> = keys(ctx).iter().map(|k| k.0).collect();
+        fields.dedup();
+        let mut out = Vec::new();
+        for field in fields {
+            let rows = keys(ctx).iter().filter(|k| k.0 == field);
+            let mut names: Vec<&str> = rows.flat_map(|k| [k.0, k.1, k.2]).collect();
+            names.sort_unstable();
+            names.dedup();
+            out.extend(names);
+        }
+        out
+    }
+
+    /// The table spells every field serde reads, by serde's name, in the struct's order,
+    /// and each spelling is an alias serde accepts for that field: a field added to a
+    /// struct (or an alias) without its spellings fails here.
+    #[test]
+    fn the_table_spells_every_field_of_the_structs() {
+        for ctx in CONTEXTS {
+            assert!(!serde_names(ctx).is_empty(), "{ctx:?}");
+            assert_eq!(table_names(ctx), serde_names(ctx), "{ctx:?}");
+        }
     }
 }

@@ -242,7 +242,7 @@ fn worsening(
     let (lo, hi) = trend.slope_interval?;
     let level_only = CATALOGUE
         .iter()
-        .any(|d| d.key == series.parameter && d.quantity == Quantity::Level);
+        .any(|d| d.key.as_str() == series.parameter && d.quantity == Quantity::Level);
     let sign = worse_direction(trend, points);
     let surely = if sign > 0.0 { lo } else { -hi };
     let reference = series

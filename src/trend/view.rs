@@ -48,7 +48,10 @@ impl<'a> AxisTrend<'a> {
 
 /// The catalogue's symbol for a parameter key.
 fn symbol(key: &str) -> Option<&'static str> {
-    CATALOGUE.iter().find(|d| d.key == key).map(|d| d.symbol)
+    CATALOGUE
+        .iter()
+        .find(|d| d.key.as_str() == key)
+        .map(|d| d.symbol)
 }
 
 /// The JSON document of `trend --json`, pretty-printed: `{"axes": [...]}`.

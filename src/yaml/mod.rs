@@ -3,9 +3,11 @@
 //! whose errors say in the user's words what was expected and found, and did-you-mean for
 //! unknown keys.
 
+mod fields;
 mod index;
 mod words;
 
+pub use fields::field_names;
 pub use index::{LocationIndex, join};
 pub use words::{describe, keyword, names_of, not_a_name, optional_keyword, or_list};
 

@@ -2,7 +2,7 @@
 //! grows at a known rate, the others stable with scatter. The series are built directly
 //! from the evaluated simulations (no history store).
 
-use axcheck::evaluate::{StandardId, evaluate};
+use axcheck::evaluate::{ParamKey, StandardId, evaluate};
 use axcheck::judge::{BUILTIN_SPECS, Spec};
 use axcheck::simulate::rng::Rng;
 use axcheck::simulate::{Cycle, ErrorModel, PeriodicTerm, Simulation, TestPlan};
@@ -94,7 +94,7 @@ fn series() -> Vec<Series> {
         .unwrap()
         .tolerances
         .clone();
-    limits.insert("B_mean".into(), B_LIMIT);
+    limits.insert(ParamKey::BMean, B_LIMIT);
     let mut by_key: BTreeMap<(usize, &'static str), Vec<Point>> = BTreeMap::new();
     for axis in 0..AXES {
         for k in 0..INSPECTIONS {
@@ -117,7 +117,7 @@ fn series() -> Vec<Series> {
             axis: format!("X{axis}"),
             parameter: key.to_string(),
             unit: "um".into(),
-            limit: limits.get(key).copied(),
+            limit: ParamKey::parse(key).and_then(|k| limits.get(&k)).copied(),
             points,
         })
         .collect()

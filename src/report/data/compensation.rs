@@ -275,19 +275,12 @@ fn predicted_rows(measured: &Evaluation, predicted: &Evaluation) -> Vec<Predicte
         .collect()
 }
 
-/// Keys of the parameters that measure the scatter about the means (unidirectional
-/// repeatability or spread), which a table leaves as measured.
-const SCATTER: &[&str] = &["R_up", "R_down", "sigma_mean", "spread_up", "spread_down"];
-
 /// Why the repeatability is the floor, naming the parameters of the test's standard that
-/// stay (their clause from the catalogue).
+/// stay: those the catalogue calls scatter ([`crate::evaluate::ParameterDef::is_scatter`]),
+/// with their clause.
 fn floor(e: &Evaluation) -> String {
     let base = "The floor is the repeatability: a table corrects the mean positional deviations x̄↑ and x̄↓ at each target, not the scatter of the readings about them.";
-    let stay: Vec<_> = e
-        .parameters
-        .iter()
-        .filter(|p| SCATTER.contains(&p.key()))
-        .collect();
+    let stay: Vec<_> = e.parameters.iter().filter(|p| p.def.is_scatter()).collect();
     let Some(first) = stay.first() else {
         return base.to_string();
     };

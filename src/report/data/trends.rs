@@ -41,7 +41,7 @@ pub fn in_parameter_order(pairs: &mut [(&Series, &Trend)]) {
     let rank = |key: &str| {
         CATALOGUE
             .iter()
-            .position(|d| d.key == key)
+            .position(|d| d.key.as_str() == key)
             .unwrap_or(usize::MAX)
     };
     pairs.sort_by(|a, b| {
@@ -97,7 +97,7 @@ fn signed(x: f64) -> String {
 fn symbol(key: &str) -> String {
     CATALOGUE
         .iter()
-        .find(|d| d.key == key)
+        .find(|d| d.key.as_str() == key)
         .map_or(key.to_string(), |d| d.symbol.to_string())
 }
 
