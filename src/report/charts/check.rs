@@ -7,7 +7,7 @@ use crate::report::chart_kit::{
     draw_text, fmt_fixed_for_print, message_chart, render, round_px, row_height, sig_decimals,
     text_style,
 };
-use crate::report::charts::diagnosis::{
+use crate::report::charts::diagnosis::look::{
     CHECK_BAND, KIT, MARK_INSIDE, MARK_OUTSIDE, NOTE_PX, OUTSIDE, bold_width, draw_arrow, fill_rect,
 };
 use plotters::prelude::*;
@@ -424,4 +424,222 @@ fn draw_row_texts(
     )?;
     let band = KIT.fit_text(band, TICK_PX, layout.band_w as f64);
     draw_text(root, &band, (layout.band_right, mid), right(false, INK))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::chart_kit::svg_probe::{
+        assert_well_formed, degenerate_styles, has_text, text_tag, texts,
+    };
+    use crate::report::charts::diagnosis::look::testing::{
+        assert_plain_font_sizes, assert_small, circles_in, style,
+    };
+
+    // The chart as SVG with an element per outline, as plotters wrote it.
+    fn model_checks(bars: &[CheckBar], style: &Style) -> String {
+        super::model_checks(bars, style).element_svg()
+    }
+
+    fn check(label: &str, measured: f64, low: f64, high: f64, outside: bool) -> CheckBar {
+        CheckBar {
+            label: label.to_string(),
+            measured,
+            low,
+            high,
+            outside,
+        }
+    }
+
+    fn example_checks() -> Vec<CheckBar> {
+        vec![
+            check("R (max Ri)", 2.31, 1.42, 2.95, false),
+            check("run-mean spread", 1.21, 0.31, 0.96, true),
+            check("lag-1 autocorrelation", 0.12, -0.27, 0.25, false),
+            check("max periodogram power", 0.29, 0.18, 0.41, false),
+        ]
+    }
+
+    #[test]
+    fn model_checks_mark_outside_rows() {
+        let st = style(model_checks_height(4));
+        let svg = model_checks(&example_checks(), &st);
+        assert_well_formed(&svg);
+        for want in [
+            "R (max Ri)",
+            "run-mean spread",
+            "lag-1 autocorrelation",
+            "max periodogram power",
+            "measured",
+            "simulated 95 % band",
+            "simulated 95 % band (base model)",
+            "measured, check outside",
+            "2.31",
+            "1.42 … 2.95",
+            "1.21",
+            "0.31 … 0.96",
+            "−0.27 … 0.25",
+        ] {
+            assert!(
+                has_text(&svg, want),
+                "missing {want:?} in {:?}",
+                texts(&svg)
+            );
+        }
+        // Outside: bold dark red label and value; inside: plain.
+        for outside in ["run-mean spread", "1.21"] {
+            let tag = text_tag(&svg, outside).expect("outside row");
+            assert!(
+                tag.contains("font-weight=\"bold\"") && tag.contains("#6E1414"),
+                "{tag}"
+            );
+        }
+        for inside in ["R (max Ri)", "2.31"] {
+            let tag = text_tag(&svg, inside).expect("inside row");
+            assert!(!tag.contains("font-weight"), "{tag}");
+        }
+        // One diamond in the row, one in the key; inside values as black dots (3 + key).
+        assert_eq!(
+            svg.matches("<polygon opacity=\"1\" fill=\"#6E1414\"")
+                .count(),
+            2
+        );
+        assert_eq!(circles_in(&svg, "#1A1A1A"), 4);
+        // No value is off the scale: no arrow, no key for it.
+        assert!(!has_text(&svg, "beyond the scale"));
+    }
+
+    #[test]
+    fn model_checks_without_outside_rows_have_no_outside_key() {
+        let checks: Vec<CheckBar> = example_checks()
+            .into_iter()
+            .map(|c| CheckBar {
+                outside: false,
+                ..c
+            })
+            .collect();
+        let svg = model_checks(&checks, &style(model_checks_height(4)));
+        assert!(!has_text(&svg, "measured, check outside"));
+        assert!(!svg.contains("#6E1414"));
+    }
+
+    #[test]
+    fn far_values_are_clipped_with_an_arrow() {
+        let checks = [
+            check("far above", 50.0, 0.0, 1.0, true),
+            check("far below", -50.0, 0.0, 1.0, true),
+            check("inside", 0.5, 0.0, 1.0, false),
+        ];
+        let svg = model_checks(&checks, &style(model_checks_height(3)));
+        assert_well_formed(&svg);
+        assert!(has_text(&svg, "beyond the scale"));
+        assert!(
+            has_text(&svg, "50") && has_text(&svg, "−50"),
+            "{:?}",
+            texts(&svg)
+        );
+        // Two arrows in the rows (dark red, the checks are outside), one black in the key.
+        assert_eq!(
+            svg.matches("<polygon opacity=\"1\" fill=\"#6E1414\"")
+                .count(),
+            2 + 1
+        );
+        assert_eq!(check_position(&checks[0]), Some(1.0 / 3.0 + 50.0 / 3.0));
+    }
+
+    #[test]
+    fn check_positions_map_the_band_to_the_middle_third() {
+        let at = |m: f64, lo: f64, hi: f64| check_position(&check("", m, lo, hi, false));
+        let near = |a: Option<f64>, b: f64| a.is_some_and(|a| (a - b).abs() < 1e-12);
+        assert!(near(at(1.0, 1.0, 3.0), 1.0 / 3.0));
+        assert!(near(at(3.0, 1.0, 3.0), 2.0 / 3.0));
+        assert!(near(at(2.0, 3.0, 1.0), 0.5)); // low and high swapped
+        assert!(near(at(-1.0, 1.0, 3.0), 0.0));
+        assert!(near(at(5.0, 1.0, 3.0), 1.0));
+        // Degenerate bands: on it, or off the scale on the right side.
+        assert_eq!(at(2.0, 2.0, 2.0), Some(0.5));
+        assert_eq!(at(2.5, 2.0, 2.0), Some(f64::INFINITY));
+        assert_eq!(at(1.5, 2.0, 2.0), Some(f64::NEG_INFINITY));
+        assert_eq!(at(f64::NAN, 0.0, 1.0), None);
+        assert_eq!(at(0.5, f64::NAN, 1.0), None);
+        assert!(near(at(0.0, -f64::MAX, f64::MAX), 0.5));
+        assert!(at(f64::MAX, -1.0, 1.0).is_some_and(|u| u > 1.0));
+    }
+
+    #[test]
+    fn model_checks_height_fits_the_rows() {
+        assert!(model_checks_height(0) >= 150);
+        assert!(model_checks_height(4) < model_checks_height(5));
+        assert!(model_checks_height(40) > model_checks_height(12));
+        assert!(model_checks_height(usize::MAX) <= 20_000);
+        let many: Vec<CheckBar> = (0..40)
+            .map(|i| check(&format!("statistic {i}"), i as f64, 0.0, 20.0, i > 30))
+            .collect();
+        let svg = model_checks(&many, &style(model_checks_height(40)));
+        assert_well_formed(&svg);
+        assert!(has_text(&svg, "statistic 39"));
+    }
+
+    #[test]
+    fn font_sizes_are_plain_numbers() {
+        assert_plain_font_sizes(&model_checks(&example_checks(), &style(360)));
+    }
+
+    #[test]
+    fn same_input_gives_same_bytes() {
+        assert_eq!(
+            model_checks(&example_checks(), &style(360)),
+            model_checks(&example_checks(), &style(360))
+        );
+    }
+
+    #[test]
+    fn charts_stay_small() {
+        assert_small(&model_checks(&example_checks(), &style(360)));
+    }
+
+    #[test]
+    fn unicode_and_markup_survive_escaped() {
+        let checks = [check("<b>&", 1.0, 0.0, 2.0, true)];
+        let svg = model_checks(&checks, &style(model_checks_height(1)));
+        assert!(svg.contains("&lt;b&gt;&amp;") && !svg.contains("<b>"));
+    }
+
+    #[test]
+    fn degenerate_inputs_do_not_panic() {
+        let styles = degenerate_styles(style(360));
+        let check_cases: Vec<Vec<CheckBar>> = vec![
+            Vec::new(),
+            vec![check("", 0.0, 0.0, 0.0, false)],
+            vec![check("nan", f64::NAN, f64::NAN, f64::NAN, true)],
+            vec![check("inf", f64::INFINITY, f64::NEG_INFINITY, 1.0, true)],
+            vec![check("huge", 1e300, -1e300, 1e300, false)],
+            vec![check("tiny", 1e-300, 0.0, 2e-300, false)],
+            vec![check(
+                &"a very long statistic name ".repeat(20),
+                1.0,
+                0.0,
+                2.0,
+                true,
+            )],
+            (0..300)
+                .map(|i| check("row", i as f64, 0.0, 1.0, i % 3 == 0))
+                .collect(),
+        ];
+        for st in &styles {
+            for c in &check_cases {
+                assert_well_formed(&model_checks(c, st));
+            }
+        }
+    }
+
+    #[test]
+    fn numbers_are_formatted_for_print() {
+        let d = |lo, hi, m| row_decimals(&check("", m, lo, hi, false));
+        assert_eq!(d(1.42, 2.95, 2.31), 2);
+        assert_eq!(d(0.31, 0.96, 1.21), 2);
+        assert_eq!(d(0.0, 1.0, 0.5), 1);
+        assert_eq!(d(1000.0, 1000.5, 1000.2), 1);
+        assert_eq!(d(1000.0, 1000.5, 1000.25), 2);
+    }
 }

@@ -11,7 +11,9 @@ use crate::report::chart_kit::{
     Area, AxesSpec, Chart, DASHED, DOWN, Failed, INK, LegendItem, Marker, SOLID, Stroke, UP,
     X_DESC_H, X_TICK_H, draw_line, draw_marker, message_chart, padded_range, render, round_px,
 };
-use crate::report::charts::{DASHED_THIN, DOWN_LIGHT, KIT, UP_LIGHT, build_panel, curve, y_range};
+use crate::report::charts::iso::look::{
+    DASHED_THIN, DOWN_LIGHT, KIT, UP_LIGHT, build_panel, curve, y_range,
+};
 use plotters::style::RGBColor;
 
 pub use crate::report::chart_kit::Style;

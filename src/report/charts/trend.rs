@@ -14,7 +14,7 @@ use crate::report::chart_kit::{
     X_TICK_H, draw_line, draw_marker, draw_text, message_chart, padded_range, render, round_px,
     text_style,
 };
-use crate::report::charts::{KIT, build_panel, to_px, y_range};
+use crate::report::charts::iso::look::{KIT, build_panel, to_px, y_range};
 use plotters::prelude::*;
 use plotters::style::RGBColor;
 use plotters::style::text_anchor::{HPos, VPos};

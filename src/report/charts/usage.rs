@@ -1,7 +1,7 @@
 //! The campaign summary's tolerance usage: each axis's worst parameter as a fraction of
 //! its limit, one horizontal bar each (900 × [`ratio_chart_height`] pixels).
 
-use super::iso::KIT;
+use super::iso::look::KIT;
 use crate::report::chart_kit::scene::Scene;
 use crate::report::chart_kit::*;
 use plotters::prelude::*;
@@ -319,4 +319,148 @@ fn draw_usage_key(root: &Area, clipped: bool) -> Result<(), Failed> {
         draw_text(root, &note, (kx, key_y), style)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::iso::look::testing::{assert_plain_font_sizes, assert_small, style};
+    use super::*;
+    use crate::report::chart_kit::svg_probe::{
+        assert_well_formed, degenerate_styles, text_tag, texts,
+    };
+
+    // The chart as SVG with an element per outline, as plotters wrote it.
+    fn tolerance_usage(bars: &[RatioBar], style: &Style) -> String {
+        super::tolerance_usage(bars, style).element_svg()
+    }
+
+    fn bars(n: usize) -> Vec<RatioBar> {
+        (0..n)
+            .map(|i| {
+                let ratio = match i % 20 {
+                    3 => 2.6,
+                    7 => 1.15,
+                    12 => 5.4,
+                    _ => 0.1 + ((i * 37) % 90) as f64 / 100.0,
+                };
+                RatioBar {
+                    label: format!("Machine {} / {}", i / 5, ["X", "Y", "Z", "B", "C"][i % 5]),
+                    parameter: ["A", "B", "E", "M"][i % 4].to_string(),
+                    ratio,
+                    pass: ratio <= 1.0,
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn tolerance_usage_marks_bars_over_the_limit() {
+        let bars = bars(20);
+        let style = Style {
+            height_px: ratio_chart_height(bars.len()),
+            ..style()
+        };
+        let svg = tolerance_usage(&bars, &style);
+        assert_well_formed(&svg);
+        let t = texts(&svg);
+        for want in [
+            "limit",
+            "within tolerance",
+            "over tolerance",
+            "Worst parameter / tolerance",
+        ] {
+            assert!(t.iter().any(|x| x == want), "missing {want:?}");
+        }
+        // Over the limit: bold, dark label ...
+        let over = text_tag(&svg, "M 2.60").expect("label of the bar at 2.60");
+        assert!(over.contains("font-weight=\"bold\"") && over.contains("#6E1414"));
+        let ok = text_tag(&svg, "A 0.47").or_else(|| text_tag(&svg, "B 0.47"));
+        let ok = ok.expect("label of a bar within tolerance");
+        assert!(!ok.contains("font-weight"));
+        // ... a dark bar (key swatch plus three bars) ...
+        let dark = svg.matches("fill=\"#6E1414\" stroke=\"none\"").count();
+        assert_eq!(dark, 1 + 3);
+        // ... and the clipped one keeps its value and gets the arrow and the note.
+        assert!(t.iter().any(|x| x == "A 5.40"), "{t:?}");
+        assert!(t.iter().any(|x| x.contains("clipped")));
+        // Every bar has its axis label.
+        for b in &bars {
+            assert!(t.contains(&b.label), "missing {}", b.label);
+        }
+    }
+
+    #[test]
+    fn tolerance_usage_without_failures_has_no_dark_bar() {
+        let bars: Vec<RatioBar> = bars(5)
+            .into_iter()
+            .map(|mut b| {
+                b.ratio = b.ratio.min(0.9);
+                b.pass = true;
+                b
+            })
+            .collect();
+        let svg = tolerance_usage(&bars, &style());
+        assert_eq!(svg.matches("fill=\"#6E1414\" stroke=\"none\"").count(), 1);
+        assert!(!svg.contains("clipped"));
+        assert!(texts(&svg).iter().any(|x| x == "limit"));
+    }
+
+    #[test]
+    fn tolerance_usage_handles_1_to_60_bars_and_odd_ratios() {
+        for n in [1, 2, 20, 40, 60] {
+            let style = Style {
+                height_px: ratio_chart_height(n),
+                ..style()
+            };
+            let svg = tolerance_usage(&bars(n), &style);
+            assert_well_formed(&svg);
+            assert!(svg.len() < 80_000, "{n} bars: {} bytes", svg.len());
+        }
+        assert!(ratio_chart_height(60) > ratio_chart_height(20));
+        assert!(ratio_chart_height(1) >= 170);
+        let odd = [f64::NAN, f64::INFINITY, -2.0, 0.0, 1e300]
+            .into_iter()
+            .map(|ratio| RatioBar {
+                label: String::new(),
+                parameter: String::new(),
+                ratio,
+                pass: false,
+            })
+            .collect::<Vec<_>>();
+        assert_well_formed(&tolerance_usage(&odd, &style()));
+        // Too little height for 60 rows still draws.
+        assert_well_formed(&tolerance_usage(&bars(60), &style()));
+        let empty = tolerance_usage(&[], &style());
+        assert_well_formed(&empty);
+        assert!(texts(&empty).iter().any(|x| x.contains("No axes")));
+    }
+
+    #[test]
+    fn font_sizes_are_plain_numbers() {
+        assert_plain_font_sizes(&tolerance_usage(&bars(20), &style()));
+    }
+
+    #[test]
+    fn same_input_gives_same_bytes() {
+        assert_eq!(
+            tolerance_usage(&bars(20), &style()),
+            tolerance_usage(&bars(20), &style())
+        );
+        assert_eq!(
+            tolerance_usage(&bars(60), &style()),
+            tolerance_usage(&bars(60), &style())
+        );
+    }
+
+    #[test]
+    fn degenerate_inputs_do_not_panic() {
+        for st in &degenerate_styles(style()) {
+            assert_well_formed(&tolerance_usage(&bars(20), st));
+        }
+    }
+
+    #[test]
+    fn axis_charts_stay_small() {
+        assert_small(&tolerance_usage(&bars(20), &style()));
+    }
 }

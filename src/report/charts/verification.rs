@@ -6,7 +6,7 @@
 use crate::report::chart_kit::scene::Scene;
 use crate::report::chart_kit::{DASHED, DOWN, Marker, SOLID, Stroke, UP};
 use crate::report::charts::compensation::{Means, MeansChart, Style, means_chart};
-use crate::report::charts::{DASHED_THIN, DOWN_LIGHT, UP_LIGHT};
+use crate::report::charts::iso::look::{DASHED_THIN, DOWN_LIGHT, UP_LIGHT};
 use plotters::style::RGBColor;
 
 /// What the verification chart shows. Deviations in µm or arcsec, positions in mm or deg.

@@ -116,3 +116,31 @@ pub(super) fn draw_clipped(
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clipping_keeps_what_is_inside() {
+        let f = Frame {
+            x: (0.0, 1.0),
+            y: (0.0, 1.0),
+            l: 0.0,
+            r: 100.0,
+            t: 0.0,
+            b: 50.0,
+        };
+        let pieces = clip_polyline(&[(-50.0, 25.0), (50.0, 25.0), (150.0, 25.0)], &f);
+        assert_eq!(pieces, vec![vec![(0.0, 25.0), (50.0, 25.0), (100.0, 25.0)]]);
+        // Out, in, out again: two pieces.
+        let pieces = clip_polyline(
+            &[(10.0, 10.0), (10.0, 90.0), (20.0, 90.0), (20.0, 10.0)],
+            &f,
+        );
+        assert_eq!(pieces.len(), 2);
+        assert!(clip_polyline(&[(200.0, 0.0), (300.0, 0.0)], &f).is_empty());
+        assert!(clip_polyline(&[(1.0, 1.0), (f64::NAN, 2.0), (3.0, 3.0)], &f).is_empty());
+        assert!(clip_polyline(&[], &f).is_empty());
+    }
+}

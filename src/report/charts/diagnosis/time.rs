@@ -4,14 +4,15 @@
 //! spread of a run mean about it) in light grey; below, the residuals after the extended
 //! model with its ±2σ band. Designed for 900 × [`HEIGHT_PX`].
 
-use super::{
-    BAND, FIT, Frame, KIT, MARK_DOWN, MARK_UP, Residuals, Style, build_axes, draw_clipped,
-    fill_rect, fmt_short, non_empty, symmetric_range, unit_of,
+use super::frame::{Frame, draw_clipped};
+use super::look::{
+    BAND, FIT, KIT, MARK_DOWN, MARK_UP, build_axes, fill_rect, fmt_short, non_empty,
+    symmetric_range, unit_of,
 };
 use crate::report::chart_kit::scene::Scene;
 use crate::report::chart_kit::{
-    Area, AxesSpec, Failed, GUIDE, INK, LegendItem, MUTED, Marker, Px, TICK_PX, UP, draw_marker,
-    draw_text, padded_range, render, round_px, text_style,
+    Area, AxesSpec, Failed, GUIDE, INK, LegendItem, MUTED, Marker, Px, Style, TICK_PX, UP,
+    draw_marker, draw_text, padded_range, render, round_px, text_style,
 };
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
@@ -39,7 +40,7 @@ pub(super) const HEIGHT_PX: u32 = 600;
 
 /// Run means: larger than the readings' markers, so they read as summaries.
 const MEAN_UP: (Marker, RGBColor) = (Marker::Dot(6), UP);
-const MEAN_DOWN: (Marker, RGBColor) = (Marker::OpenTriangle(7), super::DOWN_MID);
+const MEAN_DOWN: (Marker, RGBColor) = (Marker::OpenTriangle(7), super::look::DOWN_MID);
 /// Height of a panel's title row.
 const TITLE_H: u32 = 22;
 
@@ -52,9 +53,10 @@ fn finite(points: &[(f64, f64, bool)]) -> Vec<(f64, f64, bool)> {
         .collect()
 }
 
-/// The two-panel time chart of `r` (its `time` panels), or a message when nothing can
-/// be drawn.
-pub(super) fn time_chart(r: &Residuals, t: &TimePanels, style: &Style) -> Scene {
+/// The two-panel time chart of a residual chart's `time` panels `t`, under the residual
+/// chart's axis descriptions `x_label` and `y_label` (whose unit it takes), or a message when
+/// nothing can be drawn.
+pub(super) fn time_chart(x_label: &str, y_label: &str, t: &TimePanels, style: &Style) -> Scene {
     let style = Style {
         height_px: HEIGHT_PX,
         ..*style
@@ -85,7 +87,7 @@ pub(super) fn time_chart(r: &Residuals, t: &TimePanels, style: &Style) -> Scene 
     ) else {
         return crate::report::chart_kit::message_chart(&style, "No run means to plot.");
     };
-    let unit = unit_of(&r.y_label).to_string();
+    let unit = unit_of(y_label).to_string();
     let items = legend(t, band, after_band, &unit, &means, &after);
     render(&style, |root| {
         let (w, h) = root.dim_in_pixel();
@@ -112,7 +114,7 @@ pub(super) fn time_chart(r: &Residuals, t: &TimePanels, style: &Style) -> Scene 
             y: y_low,
             top: TITLE_H + 4,
             right: 18,
-            x_desc: non_empty(&r.x_label),
+            x_desc: non_empty(x_label),
             own_x_ticks: false,
         };
         let (_, top) = build_axes(&upper, &top_spec, label_w)?;
@@ -274,6 +276,7 @@ fn clamp(p: Px, f: &Frame) -> (i32, i32) {
 
 #[cfg(test)]
 mod tests {
+    use super::super::residuals::Residuals;
     use super::*;
     use crate::report::chart_kit::svg_probe::{assert_well_formed, texts};
 
@@ -311,7 +314,7 @@ mod tests {
             width_px: 900,
             height_px: 340,
         };
-        let svg = time_chart(&r, &t, &style).element_svg();
+        let svg = time_chart(&r.x_label, &r.y_label, &t, &style).element_svg();
         assert_well_formed(&svg);
         assert!(
             svg.contains(&format!("height=\"{HEIGHT_PX}\"")),
@@ -341,7 +344,7 @@ mod tests {
             width_px: 900,
             height_px: 340,
         };
-        let svg = time_chart(&r, &t, &style).element_svg();
+        let svg = time_chart(&r.x_label, &r.y_label, &t, &style).element_svg();
         assert!(texts(&svg).iter().any(|s| s == "No run means to plot."));
     }
 }
