@@ -269,7 +269,7 @@ fn expand_tree(tree: &str) -> Vec<String> {
     parts
         .into_iter()
         .filter(|p| !p.trim().is_empty())
-        .flat_map(|p| expand_tree(p))
+        .flat_map(expand_tree)
         .map(|p| format!("{prefix}{p}"))
         .collect()
 }

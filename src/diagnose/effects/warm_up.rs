@@ -840,7 +840,7 @@ mod tests {
         let (a, b) = (davies(9.0, 50.0, 1.0), davies(9.0, 50.0, 3.0));
         assert!(a > f_upper(9.0, 1.0, 50.0) && b > a);
         // ν → ∞: P(χ²₁ ≥ u) + L/π·e^(−u/2).
-        let want = super::super::stats::chi2_upper(16.0, 1.0) + 2.0 / PI * (-8.0f64).exp();
+        let want = crate::diagnose::stats::chi2_upper(16.0, 1.0) + 2.0 / PI * (-8.0f64).exp();
         assert!((davies(16.0, 1e7, 2.0) - want).abs() < 1e-8);
     }
 
