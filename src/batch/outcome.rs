@@ -128,6 +128,15 @@ impl AxisTest {
         }
     }
 
+    /// The checks whose decision is inconclusive (the measurement's U straddles the
+    /// limit, ISO 14253-1): none when the test was not judged.
+    pub fn inconclusive(&self) -> impl Iterator<Item = &crate::judge::Check> {
+        self.evaluated()
+            .and_then(|e| e.judgement.as_ref())
+            .into_iter()
+            .flat_map(|j| j.inconclusive())
+    }
+
     /// The test-plan findings (none when the file was not read).
     pub fn findings(&self) -> &[Finding] {
         self.evaluated().map_or(&[], |e| &e.findings)

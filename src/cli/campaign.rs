@@ -181,10 +181,7 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
         Verdict::Error => t.error().unwrap_or_default().to_string(),
         Verdict::Noncompliant => t.broken_rules_text(),
         Verdict::Inconclusive => t
-            .evaluated()
-            .and_then(|e| e.judgement.as_ref())
-            .into_iter()
-            .flat_map(|j| j.inconclusive())
+            .inconclusive()
             .map(|c| {
                 format!(
                     "{} = {} {unit} ± {} {unit} at its limit {} {unit}",

@@ -213,10 +213,7 @@ impl VerdictText {
             Verdict::Inconclusive => {
                 let unit = t.kind().map_or("", |k| k.deviation_symbol());
                 let zone: Vec<String> = t
-                    .evaluated()
-                    .and_then(|e| e.judgement.as_ref())
-                    .into_iter()
-                    .flat_map(|j| j.inconclusive())
+                    .inconclusive()
                     .map(|c| {
                         format!(
                             "{} = {} ± {} {unit} against {} {unit}",
