@@ -1,11 +1,19 @@
 //! axcheck: positioning accuracy and repeatability of numerically controlled axes.
 //!
-//! The pipeline, one module per stage: [`campaign`] loads and validates campaign files,
-//! [`measurement`] reads test files, [`rules`] checks each test plan against the standard,
-//! [`evaluate`] computes the parameters of a standard (pure, no I/O), [`judge`] compares
-//! them with tolerance limits, [`batch`] runs a whole campaign in parallel and [`export`]
-//! writes its outputs; `history` keeps every run's results and [`trend`] follows each
-//! axis across them. [`simulate`] is the axis error model that produces test data.
+//! The pipeline, one module per stage, in the order a run takes them: ([`plan`]: test
+//! plans and part programs, before the measurement →) [`campaign`] loads and validates
+//! the campaign file → [`measurement`] reads the test files → [`rules`] checks each test
+//! plan against the standard → [`evaluate`] computes the standard's parameters (pure, no
+//! I/O; [`crosscheck`] sets another tool's printed results beside them) → [`uncertainty`]
+//! gives their U → [`judge`] decides against the limits (ISO 14253-1) → [`diagnose`]
+//! checks the standard's error model and names the causes → [`compensate`] writes the
+//! controllers' tables (→ [`verify`] compares a re-measurement with the prediction) →
+//! `history` keeps every run and [`trend`] follows each axis across them → `export` and
+//! `report` write the outputs. `session` runs one campaign in that order; [`batch`] runs
+//! the stages of every axis in parallel. Below them: [`axis_model`] (the axis's error
+//! model, test plan and a simulated test), [`nde`] (the temperature correction),
+//! [`files`] (all reading of user files, rooted), [`yaml`], [`units`], [`atomic`] and
+//! [`lock`]; [`simulate`] writes simulation files and synthetic fleets.
 
 pub mod atomic;
 pub mod axis_model;
