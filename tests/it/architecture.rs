@@ -55,14 +55,19 @@ fn top_module(path: &Path) -> String {
     first.trim_end_matches(".rs").to_string()
 }
 
-/// The top-level modules that `code` names as `crate::x` or in `crate::{x, y}` (outside
-/// comments: a doc comment may point up to where its values come from).
-fn uses(code: &str) -> Vec<String> {
-    let code: String = code
-        .lines()
+/// `code` without its comment lines: a doc comment may point up to where its values come
+/// from, which is no use.
+fn without_comments(code: &str) -> String {
+    code.lines()
         .filter(|line| !line.trim_start().starts_with("//"))
         .collect::<Vec<_>>()
-        .join("\n");
+        .join("\n")
+}
+
+/// The top-level modules that `code` names as `crate::x` or in `crate::{x, y}` (outside
+/// comments).
+fn uses(code: &str) -> Vec<String> {
+    let code = without_comments(code);
     let mut out = Vec::new();
     for (i, _) in code.match_indices("crate::") {
         let rest = &code[i + "crate::".len()..];
@@ -277,11 +282,7 @@ fn expand_tree(tree: &str) -> Vec<String> {
 /// The module paths `code` names: its `use` trees (not its re-exports) and its inline
 /// `crate::…` and `super::…` paths (outside comments).
 fn named_paths(code: &str) -> Vec<String> {
-    let code: String = code
-        .lines()
-        .filter(|line| !line.trim_start().starts_with("//"))
-        .collect::<Vec<_>>()
-        .join("\n");
+    let code = without_comments(code);
     let mut out = Vec::new();
     let mut lines = code.lines();
     while let Some(line) = lines.next() {
