@@ -167,6 +167,10 @@ fn read_template(root: &crate::files::Root, name: &str) -> Result<String, Report
 pub struct Rendered {
     pub pdf: Vec<u8>,
     pub warnings: Vec<String>,
+    /// Time spent laying the document out (Typst's compile) and writing it as PDF, for
+    /// the benchmark of what a report costs (`benches/reports.rs`).
+    pub typeset_time: std::time::Duration,
+    pub export_time: std::time::Duration,
 }
 
 /// Renders reports; build once, use from many threads.
@@ -227,6 +231,7 @@ impl Reports {
         let today = date.and_then(parse_date);
         let world = DocumentWorld::new(&self.typesetter, main, files.files, files.charts, today)
             .ok_or_else(|| fail("bad virtual path".into()))?;
+        let started = std::time::Instant::now();
         let warned = typst::compile::<PagedDocument>(&world);
         let warnings: Vec<String> = warned.warnings.iter().map(diagnostic).collect();
         let mut doc = warned
@@ -235,6 +240,7 @@ impl Reports {
         if doc.info_mut().title.is_none() {
             doc.info_mut().title = page_title(&doc).map(Into::into);
         }
+        let typeset_time = started.elapsed();
         let options = typst_pdf::PdfOptions {
             ident: Smart::Custom(ident),
             timestamp: None,
@@ -246,7 +252,12 @@ impl Reports {
         };
         let pdf = typst_pdf::pdf(&doc, &options)
             .map_err(|errors| fail(errors.iter().map(diagnostic).collect::<Vec<_>>().join("; ")))?;
-        Ok(Rendered { pdf, warnings })
+        Ok(Rendered {
+            pdf,
+            warnings,
+            export_time: started.elapsed() - typeset_time,
+            typeset_time,
+        })
     }
 
     /// The report of one axis test.
