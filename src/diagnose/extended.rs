@@ -8,7 +8,6 @@ use super::effects::Effect;
 use super::fitted::Fitted;
 use super::model::{self, r4};
 use super::model_terms::Predictor;
-use super::options::ALPHA;
 use super::prep::TimeUnit;
 use super::select::Selection;
 use crate::axis_model::{ErrorModel, Simulation};
@@ -73,7 +72,7 @@ impl Fitted {
             scatter_ends: a.scatter.as_ref().map(|s| (s.sigma_lo, s.sigma_hi)),
             warm_growth: (a.time.warm.as_ref())
                 .and_then(|w| w.estimate.as_ref())
-                .is_some_and(|e| e.g_p < ALPHA),
+                .is_some_and(|e| e.growth_found()),
         }
     }
 

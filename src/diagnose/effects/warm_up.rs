@@ -181,7 +181,7 @@ fn end_levels(a: &Basis, e: &WarmEstimate, growth: bool) -> [f64; 2] {
 impl WarmUp {
     fn new(a: &Basis, w: &WarmTest, e: &WarmEstimate) -> WarmUp {
         let u = a.units;
-        let growth = e.g_p < ALPHA;
+        let growth = e.growth_found();
         let levels = end_levels(a, e, growth);
         let largest = levels[0].abs().max(levels[1].abs());
         // Within 1 µm (1 arcsec): |level|·exp(−t/τ) ≤ 1.
@@ -623,6 +623,12 @@ pub(crate) struct WarmEstimate {
 }
 
 impl WarmEstimate {
+    /// Whether the level changes along the axis: the growth g is found at [`ALPHA`] (else
+    /// the warm-up is taken as uniform, in the finding and in the extended model).
+    pub fn growth_found(&self) -> bool {
+        self.g_p < ALPHA
+    }
+
     /// The estimate of a fit with the warm-up; `reference` is the mean square (scaled
     /// units) and degrees of freedom the warm-up was tested against.
     pub fn of(f: &TimeFit, reference: (f64, f64)) -> Option<WarmEstimate> {
