@@ -104,12 +104,29 @@ fn purge_delay_ms(command: &Command) -> Option<i64> {
     }
 }
 
+/// Whether the command turns transparent huge pages off for the process. The gate and
+/// the run touch their memory once: each huge page is 2 MB zeroed at its first touch,
+/// and after another large process (the fleet bench's pandas peer, a CI job before) the
+/// kernel compacts memory to find one, which made the gate's time on 10 000 axes range
+/// from 0.22 to 0.36 s; with small pages it stayed at 0.23–0.25 s, and the run's system
+/// time on 1 000 axes with reports fell from 1.5 to 0.6 s (bench/results.md).
+#[cfg(target_os = "linux")]
+fn small_pages_only(command: &Command) -> bool {
+    matches!(command, Command::Check(_) | Command::Run(_))
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     if let Some(ms) = purge_delay_ms(&cli.command) {
         // SAFETY: sets a global option before any worker thread starts; any value is
         // valid (mimalloc reads it at each purge).
         unsafe { libmimalloc_sys::mi_option_set(MI_OPTION_PURGE_DELAY, ms as _) };
+    }
+    #[cfg(target_os = "linux")]
+    if small_pages_only(&cli.command) {
+        // Applies to the memory mapped already too; where the call is refused (an old
+        // kernel, a sandbox) huge pages stay on, which is only slower.
+        let _ = rustix::thread::disable_transparent_huge_pages(true);
     }
     axcheck::panics::install_quiet_hook();
     match run(cli) {

@@ -112,7 +112,7 @@ pub fn evaluate(data: &[u8]) {
         for (_, spec) in builtin_specs() {
             let limits = Limits::new(Some(spec), &BTreeMap::new(), axis.kind, last - first);
             if let Ok(limits) = limits {
-                let j = judge::judge(&e, &limits, &judge::Decision::default());
+                let j = judge::judge(&e, limits, &judge::Decision::default());
                 let _ = j.worst();
             }
         }
@@ -201,7 +201,7 @@ pub fn campaign(data: &[u8]) {
             .map(|(_, s)| s);
         let (first, last) = data.measurement_travel();
         if let Ok(limits) = Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
-            let _ = judge::judge(&e, &limits, &judge::Decision::default());
+            let _ = judge::judge(&e, limits, &judge::Decision::default());
         }
     }
 }
@@ -268,7 +268,7 @@ pub fn spec(data: &[u8]) {
         for travel in [0.0, 1.0, 360.0, 999.9, 1000.0, 1e6, f64::INFINITY] {
             let _ = spec.band(data.kind, travel);
             if let Ok(limits) = Limits::new(Some(&spec), &BTreeMap::new(), data.kind, travel) {
-                let _ = judge::judge(e, &limits, &judge::Decision::default()).worst();
+                let _ = judge::judge(e, limits, &judge::Decision::default()).worst();
             }
         }
     }

@@ -448,7 +448,7 @@ fn judge_stage(
                 rule: judged.rule,
                 expanded: judged.uncertainty.map(|u| &u.expanded),
             };
-            let judgement = judge::judge(judged.evaluation, &limits, &decision);
+            let judgement = judge::judge(judged.evaluation, limits, &decision);
             let plan_broken = judged
                 .findings
                 .iter()

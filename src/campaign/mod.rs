@@ -121,7 +121,7 @@ impl Campaign {
     /// Parses campaign `text` read from `path`.
     pub fn parse(text: &str, path: &Path) -> Result<Campaign, CampaignError> {
         let file = path.display().to_string();
-        let (value, index) = yaml::parse(text, &file)?;
+        let (value, index) = yaml::parse_long_list(text, &file, "machines")?;
         let index = Arc::new(index);
         let fail = |located: Located| CampaignError::Invalid(located.in_file(&file));
         let top = top_level(&value, &index).map_err(fail)?;

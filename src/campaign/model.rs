@@ -154,7 +154,7 @@ pub struct AxisRaw {
     pub s_from_ranges: bool,
     /// The compensation table's grid, when the machine names a controller.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub compensation: Option<CompensationRaw>,
+    pub compensation: Option<Box<CompensationRaw>>,
     /// The test planned for the axis (`axcheck plan -o`): its measurement is compared with
     /// it. `plan: FILE` or `plan: {file: FILE, tolerance: 0.01}`.
     #[serde(
@@ -164,7 +164,7 @@ pub struct AxisRaw {
     )]
     pub plan: Option<PlanRaw>,
     #[serde(default)]
-    pub conditions: Conditions,
+    pub conditions: Box<Conditions>,
 }
 
 /// An axis's compensation table: `compensation: {interval: 50, reference: 0, axis: X1}`

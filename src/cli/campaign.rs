@@ -477,7 +477,8 @@ pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Re
         drop_data: true,
         compensate: false,
     };
-    let result = evaluate_with(&Campaign::load(path)?, options, progress);
+    let campaign = Campaign::load(path)?;
+    let result = evaluate_with(&campaign, options, progress);
     println!("{}", counts_line(&result));
     for line in problems(&result, "`axcheck run` lists them all in summary.md") {
         println!("{line}");
@@ -485,5 +486,10 @@ pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Re
     if let Some(line) = warnings_line(&result, "`axcheck run` lists them in summary.md") {
         println!("{line}");
     }
-    Ok(exit_code(&result))
+    let code = exit_code(&result);
+    // The process ends with the gate: freeing a fleet's campaign and results one block at
+    // a time cost the gate 6 % of its wall time on 10 000 axes, on one thread after the
+    // workers are done, and the system takes the memory back at once anyway.
+    std::mem::forget((campaign, result));
+    Ok(code)
 }

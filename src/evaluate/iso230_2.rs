@@ -55,7 +55,12 @@ impl Standard for Iso230_2 {
 /// when n = 1 (clause 5.2).
 fn parameters(targets: &[TargetResult]) -> Vec<Parameter> {
     let span = Parameter::spanned;
-    let mut p = band::accuracies(targets, [&iso::A, &iso::A_UP, &iso::A_DOWN]);
+    // Room for all twelve at once: a fleet keeps 10 000 of these lists.
+    let mut p = Vec::with_capacity(12);
+    p.extend(band::accuracies(
+        targets,
+        [&iso::A, &iso::A_UP, &iso::A_DOWN],
+    ));
     p.push(span(&iso::E, band::systematic(targets, &[Up, Down])));
     p.push(span(&iso::E_UP, band::systematic(targets, &[Up])));
     p.push(span(&iso::E_DOWN, band::systematic(targets, &[Down])));

@@ -251,9 +251,10 @@ impl Judgement {
 
 /// Checks every limited parameter under the `decision` rule: with `simple`, |value| ≤
 /// limit passes; with ISO 14253-1 the expanded uncertainty decides a zone around the limit.
-/// Signed parameters (B̄) are compared by magnitude.
-pub fn judge(evaluation: &Evaluation, limits: &Limits, decision: &Decision) -> Judgement {
-    let mut checks = Vec::new();
+/// Signed parameters (B̄) are compared by magnitude. The judgement keeps `limits` (taken,
+/// not copied: a fleet judges 10 000 tests).
+pub fn judge(evaluation: &Evaluation, limits: Limits, decision: &Decision) -> Judgement {
+    let mut checks = Vec::with_capacity(limits.values.len());
     let mut not_applicable = Vec::new();
     // In the standard's order of parameters, then any others.
     for p in &evaluation.parameters {
@@ -285,7 +286,7 @@ pub fn judge(evaluation: &Evaluation, limits: &Limits, decision: &Decision) -> J
         }
     }
     Judgement {
-        limits: limits.clone(),
+        limits,
         rule: decision.rule,
         checks,
         not_applicable,

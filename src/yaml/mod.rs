@@ -5,6 +5,7 @@
 
 mod fields;
 mod index;
+mod pieces;
 mod words;
 
 pub use fields::field_names;
@@ -207,6 +208,26 @@ pub fn parse(text: &str, file: &str) -> Result<(Value, LocationIndex), YamlError
     );
     let value = value.map_err(|e| syntax_error(&e, file, text, &index))?;
     Ok((value, index))
+}
+
+/// Pieces of a long list per thread: each piece's parser events are freed before the next
+/// piece is parsed, so smaller pieces reuse their memory (the gate's peak on 10 000 axes:
+/// 110 MB with one piece per thread, 91 MB with four, and 2 % faster).
+const PIECES_PER_THREAD: usize = 4;
+
+/// [`parse`] for a document whose top-level `key` holds a long block list (a campaign's
+/// `machines:`): the list is parsed in pieces on the pool's threads when its text can be
+/// cut plainly ([`pieces`]), else whole; the value is the same either way.
+pub fn parse_long_list(
+    text: &str,
+    file: &str,
+    key: &str,
+) -> Result<(Value, LocationIndex), YamlError> {
+    match pieces::parse_list_in_pieces(text, key, PIECES_PER_THREAD * rayon::current_num_threads())
+    {
+        Some(value) => Ok((value, LocationIndex::new(text))),
+        None => parse(text, file),
+    }
 }
 
 /// serde_norway's own errors carry a location; turn them into `file:line:col: message`,

@@ -57,7 +57,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
     let kind = t.kind();
     let ev = t.evaluated();
     let e = ev.map(|e| &e.evaluation);
-    let conditions = t.spec.as_ref().map(|s| &s.raw.conditions);
+    let conditions = t.spec.as_ref().map(|s| &*s.raw.conditions);
     AxisReport {
         campaign: CampaignHeader::new(result),
         title: format!("{} — axis {}", t.machine.id, t.axis),
