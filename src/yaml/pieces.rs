@@ -94,8 +94,8 @@ fn find_list(text: &str, lines: &[usize], key: &str) -> Option<List> {
     let mut items = Vec::new();
     let mut indent = None;
     let mut body_end = text.len();
-    for k in first + 1..lines.len() - 1 {
-        let l = line(k);
+    for bounds in lines[first + 1..].windows(2) {
+        let (start, l) = (bounds[0], &text[bounds[0]..bounds[1]]);
         let content = l.trim_start_matches(' ');
         if content.trim().is_empty() || content.starts_with('#') {
             continue;
@@ -109,12 +109,12 @@ fn find_list(text: &str, lines: &[usize], key: &str) -> Option<List> {
             Some(i) if depth > i => continue,
             // The list ends at the next top-level key.
             Some(_) if depth == 0 && !content.starts_with('-') => {
-                body_end = lines[k];
+                body_end = start;
                 break;
             }
             Some(_) => return None,
         }
-        items.push(lines[k]);
+        items.push(start);
     }
     Some(List {
         body_start,
