@@ -8,6 +8,8 @@
 #
 #   bash bench/fleet.sh            # default: 5 runs of check, 3 of run and trend, 3 pairs
 #   RUNS=3 PDF_RUNS=1 PEER_RUNS=1 bash bench/fleet.sh
+#   BASELINE=/path/to/old/axcheck bash bench/fleet.sh   # also: this build against another
+#     (check on 10 000 axes and run with PDFs on 1 000, in turn, the ratio pair by pair)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RUNS=${RUNS:-5}
@@ -96,6 +98,32 @@ for n in 1000 10000; do
   echo "peer axes=$n: median ${wall} s; the peer's time / check's, pair by pair: median ${ratio}" >&2
 done
 
+# This build and a baseline build in turn on the same files: the ratio of each pair.
+base_rows=()
+if [ -n "${BASELINE:-}" ]; then
+  base_pair() {
+    local what=$1 axes=$2 runs=$3; shift 3
+    local ratios=() ours_walls=() base_walls=() ours_mb=0 base_mb=0
+    for _ in $(seq "$runs"); do
+      read -r ours mb < <(measure 1 "$BIN" "$@")
+      [ "$mb" -gt "$ours_mb" ] && ours_mb=$mb
+      read -r base mb < <(measure 1 "$BASELINE" "$@")
+      [ "$mb" -gt "$base_mb" ] && base_mb=$mb
+      ours_walls+=("$ours"); base_walls+=("$base")
+      ratios+=("$(awk -v a="$base" -v b="$ours" 'BEGIN {printf "%.2f", a / b}')")
+    done
+    local mid='{a[NR]=$1} END {print a[int((NR+1)/2)]}'
+    local ratio ours_wall base_wall
+    ratio=$(printf '%s\n' "${ratios[@]}" | sort -g | awk "$mid")
+    ours_wall=$(printf '%s\n' "${ours_walls[@]}" | sort -g | awk "$mid")
+    base_wall=$(printf '%s\n' "${base_walls[@]}" | sort -g | awk "$mid")
+    base_rows+=("| $what | $axes | $base_wall | $base_mb | $ours_wall | $ours_mb | $runs | $ratio× |")
+    echo "$what axes=$axes: baseline ${base_wall} s, this build ${ours_wall} s; baseline / this, pair by pair: median ${ratio}" >&2
+  }
+  base_pair check 10000 "$RUNS" check "$WORK/f10000/campaign.yaml" --jobs "$CORES"
+  base_pair "run (PDFs)" 1000 "$PDF_RUNS" run "$WORK/f1000/campaign.yaml" --out "$WORK/out" --jobs "$CORES"
+fi
+
 readings_1k=$(grep -c . "$WORK"/f1000/data/*/*.csv | awk -F: '{s += $2 - 1} END {print s}')
 {
   echo "# Fleet benchmark"
@@ -115,5 +143,15 @@ readings_1k=$(grep -c . "$WORK"/f1000/data/*/*.csv | awk -F: '{s += $2 - 1} END 
   echo "| command | axes | workers | median wall (s) | peak memory (MB) | pairs | peer / check |"
   echo "|---|---:|---:|---:|---:|---:|---:|"
   printf '%s\n' "${peer_rows[@]}"
+  if [ ${#base_rows[@]} -gt 0 ]; then
+    echo
+    echo "This build against the baseline \`$("$BASELINE" --version)\` ($BASELINE), run in turn on the"
+    echo "same files with --jobs $CORES; the last column is the baseline's wall time over this build's,"
+    echo "the median of the pairs."
+    echo
+    echo "| command | axes | baseline median wall (s) | baseline peak (MB) | this build (s) | this build peak (MB) | pairs | baseline / this |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+    printf '%s\n' "${base_rows[@]}"
+  fi
 } > bench/results.md
 cat bench/results.md
