@@ -8,6 +8,7 @@ use super::cell::{Field, Place, Value};
 use super::error::{Location, ReadError, ReadErrorKind};
 use super::{AxisData, Lines};
 use crate::units::AxisKind;
+use std::borrow::Cow;
 use std::io::BufRead;
 
 /// One row: its 1-based line (CSV) or row (sheet) and its fields, one per header column.
@@ -116,13 +117,35 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
 
 /// A CSV line as a row of text fields, in `fields` (empty, its room reused).
 fn text_row<'a>(text: &'a str, sep: char, number: usize, mut fields: Vec<Field<'a>>) -> Row<'a> {
-    super::fields::fields_of(text, sep, |column, value| {
-        fields.push(Field {
-            column,
-            value: Value::Text(value),
-        });
+    let plain = super::fields::plain_fields(text, sep, |column, text| {
+        push_text(&mut fields, column, text)
     });
+    if !plain {
+        super::fields::fields_of(text, sep, |column, value| {
+            fields.push(Field {
+                column,
+                value: Value::Text(value),
+            });
+        });
+    }
     Row { number, fields }
+}
+
+/// Appends the field `text` at `column`, built where it goes in the vector: `push` built
+/// each field on the stack and copied it from there (the copy stalled on the stores just
+/// made: 7 % of the gate's time on 10 000 axes).
+#[inline(always)]
+fn push_text<'a>(fields: &mut Vec<Field<'a>>, column: usize, text: &'a str) {
+    if fields.len() == fields.capacity() {
+        fields.reserve(8);
+    }
+    let len = fields.len();
+    fields.spare_capacity_mut()[0].write(Field {
+        column,
+        value: Value::Text(Cow::Borrowed(text)),
+    });
+    // SAFETY: the slot at `len` lies within the capacity and was just initialised.
+    unsafe { fields.set_len(len + 1) };
 }
 
 /// An emptied buffer of fields, ready to borrow another line: the same allocation (the
