@@ -209,7 +209,7 @@ fn run_axis(
         planned: None,
     };
     let axis = match &entry.spec {
-        Ok(axis) => Arc::new(axis.clone()),
+        Ok(axis) => Arc::clone(axis),
         Err(message) => return vec![(slot.error(message.clone()), None)],
     };
     let slot = Slot {

@@ -131,7 +131,7 @@ fn axis(
     });
     AxisEntry {
         name: axis_name(value, a),
-        spec: spec.map_err(|e| e.in_file(file).to_string()),
+        spec: spec.map(Arc::new).map_err(|e| e.in_file(file).to_string()),
     }
 }
 

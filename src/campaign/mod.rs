@@ -60,7 +60,8 @@ pub struct Machine {
 pub struct AxisEntry {
     /// Axis name (or `axis N` when even the name could not be read).
     pub name: String,
-    pub spec: Result<AxisSpec, String>,
+    /// Shared: each test of the axis holds it (a fleet's gate copied it for each).
+    pub spec: Result<Arc<AxisSpec>, String>,
 }
 
 /// A validated axis.
