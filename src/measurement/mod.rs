@@ -205,13 +205,49 @@ impl AxisData {
     }
 }
 
-/// The distinct values, ascending.
+/// The first reading, in file order, whose cell (target, direction, run) an earlier
+/// reading already filled, with that earlier one: (first, again). The cells are looked up
+/// in a table when the grid is small (every test that can be evaluated: 2·m·n cells for
+/// 2·m·n readings), else found as neighbours after a sort (a ragged file's grid can be far
+/// larger than its readings).
+fn first_repeat(
+    raw: &[RawReading],
+    indices: &[(usize, usize)],
+    n: usize,
+) -> Option<(usize, usize)> {
+    let cell = |k: usize| (indices[k].0 * 2 + raw[k].direction.index()) * n + indices[k].1;
+    let size = indices
+        .iter()
+        .map(|&(i, _)| (i + 1) * 2 * n)
+        .max()
+        .unwrap_or(0);
+    if size <= 4 * raw.len() {
+        let mut first = vec![u32::MAX; size];
+        for k in 0..raw.len() {
+            let slot = &mut first[cell(k)];
+            if *slot != u32::MAX {
+                return Some((*slot as usize, k));
+            }
+            *slot = k as u32;
+        }
+        return None;
+    }
+    let mut cells: Vec<(usize, u32)> = (0..raw.len()).map(|k| (cell(k), k as u32)).collect();
+    cells.sort_unstable();
+    (cells.windows(2))
+        .filter(|w| w[0].0 == w[1].0)
+        .min_by_key(|w| w[1].1)
+        .map(|w| (w[0].1 as usize, w[1].1 as usize))
+}
+
+/// The distinct values, ascending. (Unstable: values the order calls equal are equal,
+/// and a stable sort's scratch buffer cost the gate 2 % of its time.)
 fn distinct_sorted<T: Copy + PartialEq>(
     values: impl Iterator<Item = T>,
     order: impl Fn(&T, &T) -> std::cmp::Ordering,
 ) -> Vec<T> {
     let mut out: Vec<T> = values.collect();
-    out.sort_by(order);
+    out.sort_unstable_by(order);
     out.dedup();
     out
 }
@@ -245,26 +281,12 @@ impl Cells {
         let run_index = |r: u32| run_labels.binary_search(&r).expect("run collected above");
         let mut counts = vec![[0usize; 2]; targets.len()];
         let mut indices = Vec::with_capacity(raw.len());
-        // Each reading's cell (target, direction, run) with its place in the file, sorted:
-        // a cell given twice shows as two neighbours (no hash map for a few hundred cells).
-        let mut cells: Vec<(u64, u32)> = Vec::with_capacity(raw.len());
-        for (k, r) in raw.iter().enumerate() {
-            let (i, j, d) = (
-                target_index(r.target),
-                run_index(r.run),
-                r.direction.index(),
-            );
-            counts[i][d] += 1;
+        for r in raw {
+            let (i, j) = (target_index(r.target), run_index(r.run));
+            counts[i][r.direction.index()] += 1;
             indices.push((i, j));
-            cells.push((((i * 2 + d) as u64) << 32 | j as u64, k as u32));
         }
-        cells.sort_unstable();
-        // The first reading, in file order, whose cell an earlier reading already filled.
-        let repeat = (cells.windows(2))
-            .filter(|w| w[0].0 == w[1].0)
-            .min_by_key(|w| w[1].1)
-            .map(|w| (w[0].1 as usize, w[1].1 as usize));
-        if let Some((first, again)) = repeat {
+        if let Some((first, again)) = first_repeat(raw, &indices, run_labels.len()) {
             let r = &raw[again];
             return Err(ReadError::new(
                 place.line(r.line),
@@ -712,6 +734,48 @@ mod tests {
         let data = AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "t.csv").unwrap();
         assert_eq!(data.targets.len(), 2);
         assert_eq!(data.targets[0].to_bits(), 0.0f64.to_bits());
+    }
+
+    /// The first repeated cell, in file order, with the reading that filled it first: the
+    /// same from the table (a full grid) and from the sort (a grid far larger than the
+    /// readings).
+    #[test]
+    fn the_first_repeat_in_file_order() {
+        let reading = |target, direction, run| RawReading {
+            target,
+            direction,
+            run,
+            deviation: 0.0,
+            time_s: None,
+            temps_c: Vec::new(),
+            line: 0,
+        };
+        let (up, down) = (Direction::Up, Direction::Down);
+        let full = [
+            (0, up, 1),
+            (1, up, 1),
+            (0, down, 1),
+            (1, up, 1),
+            (0, up, 1),
+            (1, up, 1),
+        ];
+        let ragged = [
+            (0, up, 1),
+            (9, up, 90),
+            (9, down, 90),
+            (9, up, 90),
+            (0, up, 1),
+        ];
+        for (readings, n, expected) in [(&full[..], 1, (1, 3)), (&ragged[..], 90, (1, 3))] {
+            let raw: Vec<RawReading> = (readings.iter())
+                .map(|&(i, d, r)| reading(i as f64, d, r))
+                .collect();
+            let indices: Vec<(usize, usize)> = (readings.iter())
+                .map(|&(i, _, r)| (i, r as usize - 1))
+                .collect();
+            assert_eq!(first_repeat(&raw, &indices, n), Some(expected), "n = {n}");
+            assert_eq!(first_repeat(&raw[..3], &indices[..3], n), None, "n = {n}");
+        }
     }
 
     #[test]
