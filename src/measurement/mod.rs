@@ -209,22 +209,21 @@ impl AxisData {
 /// reading already filled, with that earlier one: (first, again). The cells are looked up
 /// in a table when the grid is small (every test that can be evaluated: 2·m·n cells for
 /// 2·m·n readings), else found as neighbours after a sort (a ragged file's grid can be far
-/// larger than its readings).
+/// larger than its readings). `(m, n)`: the numbers of targets and of runs.
 fn first_repeat(
     raw: &[RawReading],
     indices: &[(usize, usize)],
-    n: usize,
+    (m, n): (usize, usize),
 ) -> Option<(usize, usize)> {
-    let cell = |k: usize| (indices[k].0 * 2 + raw[k].direction.index()) * n + indices[k].1;
-    let size = indices
-        .iter()
-        .map(|&(i, _)| (i + 1) * 2 * n)
-        .max()
-        .unwrap_or(0);
-    if size <= 4 * raw.len() {
+    let cell = |k: usize| {
+        let row = (indices[k].0 * 2 + raw[k].direction.index()) as u64;
+        row * n as u64 + indices[k].1 as u64
+    };
+    let grid = (2 * m).checked_mul(n).filter(|&size| size <= 4 * raw.len());
+    if let Some(size) = grid {
         let mut first = vec![u32::MAX; size];
         for k in 0..raw.len() {
-            let slot = &mut first[cell(k)];
+            let slot = &mut first[cell(k) as usize];
             if *slot != u32::MAX {
                 return Some((*slot as usize, k));
             }
@@ -232,7 +231,7 @@ fn first_repeat(
         }
         return None;
     }
-    let mut cells: Vec<(usize, u32)> = (0..raw.len()).map(|k| (cell(k), k as u32)).collect();
+    let mut cells: Vec<(u64, u32)> = (0..raw.len()).map(|k| (cell(k), k as u32)).collect();
     cells.sort_unstable();
     (cells.windows(2))
         .filter(|w| w[0].0 == w[1].0)
@@ -286,7 +285,8 @@ impl Cells {
             counts[i][r.direction.index()] += 1;
             indices.push((i, j));
         }
-        if let Some((first, again)) = first_repeat(raw, &indices, run_labels.len()) {
+        if let Some((first, again)) = first_repeat(raw, &indices, (targets.len(), run_labels.len()))
+        {
             let r = &raw[again];
             return Err(ReadError::new(
                 place.line(r.line),
@@ -773,8 +773,18 @@ mod tests {
             let indices: Vec<(usize, usize)> = (readings.iter())
                 .map(|&(i, _, r)| (i, r as usize - 1))
                 .collect();
-            assert_eq!(first_repeat(&raw, &indices, n), Some(expected), "n = {n}");
-            assert_eq!(first_repeat(&raw[..3], &indices[..3], n), None, "n = {n}");
+            let m = 1 + indices.iter().map(|&(i, _)| i).max().unwrap_or(0);
+            let grid = (m, n);
+            assert_eq!(
+                first_repeat(&raw, &indices, grid),
+                Some(expected),
+                "n = {n}"
+            );
+            assert_eq!(
+                first_repeat(&raw[..3], &indices[..3], grid),
+                None,
+                "n = {n}"
+            );
         }
     }
 
