@@ -713,6 +713,25 @@ impl<R: BufRead> Lines<R> {
 mod tests {
     use super::*;
 
+    /// A reading without time stamps or temperatures.
+    fn reading(
+        target: f64,
+        direction: Direction,
+        run: u32,
+        deviation: f64,
+        line: usize,
+    ) -> RawReading {
+        RawReading {
+            target,
+            direction,
+            run,
+            deviation,
+            time_s: None,
+            temps_c: Vec::new(),
+            line,
+        }
+    }
+
     /// Found by CI's fuzzing (the ecmc app's report): a target written `-00.00000` in one
     /// reading and `0.00000` in another is one target, not a panic.
     #[test]
@@ -720,15 +739,7 @@ mod tests {
         let raw: Vec<RawReading> = [(-0.0, Direction::Up), (0.0, Direction::Down)]
             .iter()
             .flat_map(|&(zero, direction)| {
-                [zero, 100.0].map(|target| RawReading {
-                    target,
-                    direction,
-                    run: 1,
-                    deviation: 0.001,
-                    time_s: None,
-                    temps_c: Vec::new(),
-                    line: 0,
-                })
+                [zero, 100.0].map(|target| reading(target, direction, 1, 0.001, 0))
             })
             .collect();
         let data = AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "t.csv").unwrap();
@@ -741,15 +752,6 @@ mod tests {
     /// readings).
     #[test]
     fn the_first_repeat_in_file_order() {
-        let reading = |target, direction, run| RawReading {
-            target,
-            direction,
-            run,
-            deviation: 0.0,
-            time_s: None,
-            temps_c: Vec::new(),
-            line: 0,
-        };
         let (up, down) = (Direction::Up, Direction::Down);
         let full = [
             (0, up, 1),
@@ -768,7 +770,7 @@ mod tests {
         ];
         for (readings, n, expected) in [(&full[..], 1, (1, 3)), (&ragged[..], 90, (1, 3))] {
             let raw: Vec<RawReading> = (readings.iter())
-                .map(|&(i, d, r)| reading(i as f64, d, r))
+                .map(|&(i, d, r)| reading(i as f64, d, r, 0.0, 0))
                 .collect();
             let indices: Vec<(usize, usize)> = (readings.iter())
                 .map(|&(i, _, r)| (i, r as usize - 1))
@@ -805,14 +807,8 @@ mod tests {
     fn distinct_targets_and_runs_are_refused_without_a_huge_grid() {
         let raw: Vec<RawReading> = (0..50_000u32)
             .flat_map(|k| {
-                [Direction::Up, Direction::Down].map(|direction| RawReading {
-                    target: f64::from(k),
-                    direction,
-                    run: k + 1,
-                    deviation: 0.5,
-                    time_s: None,
-                    temps_c: Vec::new(),
-                    line: 2 * k as usize + 2,
+                [Direction::Up, Direction::Down].map(|direction| {
+                    reading(f64::from(k), direction, k + 1, 0.5, 2 * k as usize + 2)
                 })
             })
             .collect();
