@@ -143,7 +143,7 @@ fn case(
     let path = files
         .resolve(&v.before)
         .map_err(|e| format!("compensation.verifies.before: {e}"))?;
-    let read = crate::measurement::read_file_within(&path, &Default::default(), files.real())
+    let read = crate::measurement::read_file_within(&path, &Default::default(), Some(files))
         .map_err(|e| e.to_string())?;
     let (before, _) = super::apply_nde(axis, read.data);
     let before_active = match &v.active {

@@ -383,7 +383,7 @@ fn read_stage(
     files: &Files,
 ) -> Result<(AxisData, Recognised), Box<AxisTest>> {
     let (data, recognised) =
-        match measurement::read_file_within(path, &axis.data.read_options(), files.real()) {
+        match measurement::read_file_within(path, &axis.data.read_options(), Some(files)) {
             Ok(read) => (read.data, read.recognised),
             Err(e) => return Err(Box::new(slot.clone().error(e.to_string()))),
         };

@@ -10,6 +10,7 @@
 //! size and modification time are compared with those at opening, so a file that is
 //! written while axcheck reads it is noticed instead of giving half a measurement.
 
+mod beneath;
 mod real;
 mod root;
 
@@ -141,8 +142,7 @@ fn opened_real_path(file: &File, path: &Path) -> std::io::Result<PathBuf> {
 
 /// The regular-file part of [`open_within`].
 fn open_regular(path: &Path) -> Result<Opened, FileError> {
-    let before = std::fs::metadata(path)?;
-    regular(&before)?;
+    regular(&std::fs::metadata(path)?)?;
     let mut options = std::fs::OpenOptions::new();
     options.read(true);
     #[cfg(unix)]
@@ -151,9 +151,12 @@ fn open_regular(path: &Path) -> Result<Opened, FileError> {
         // A pipe swapped in after the check opens at once instead of waiting for a writer.
         options.custom_flags(rustix::fs::OFlags::NONBLOCK.bits() as i32);
     }
-    let file = options.open(path)?;
-    // The handle is what is read: a regular file, whichever. Another regular file renamed
-    // over the path between the check and the open (an atomic write) is read whole.
+    opened(options.open(path)?)
+}
+
+/// The handle is what is read: a regular file, whichever. Another regular file renamed
+/// over the path between the check and the open (an atomic write) is read whole.
+fn opened(file: File) -> Result<Opened, FileError> {
     let after = file.metadata()?;
     regular(&after)?;
     Ok(Opened {
@@ -163,6 +166,25 @@ fn open_regular(path: &Path) -> Result<Opened, FileError> {
     })
 }
 
+/// [`open_within`] by a handle on the folder whose real path is `root`: `path` is the
+/// folder's `relative`, opened beneath the handle in one system call ([`beneath`]); when
+/// the kernel refuses it, [`open_within`] decides and says why.
+fn open_beneath(
+    handle: &beneath::Handle,
+    relative: &Path,
+    path: &Path,
+    root: Option<&Path>,
+) -> Result<Opened, FileError> {
+    if !handle.is_regular(relative) {
+        // Not a regular file, or not found from the folder: the portable check says which.
+        regular(&std::fs::metadata(path)?)?;
+    }
+    match handle.open_file(relative) {
+        Some(file) => opened(file),
+        None => open_within(path, root),
+    }
+}
+
 /// Opens `path` as [`open_within`] does, gives the file to `read`, and refuses the result
 /// when the file changed while `read` ran (whatever `read` returned).
 pub fn read_with<T>(
@@ -170,7 +192,11 @@ pub fn read_with<T>(
     root: Option<&Path>,
     read: impl FnOnce(&mut File) -> T,
 ) -> Result<T, FileError> {
-    let mut opened = open_within(path, root)?;
+    read_opened(open_within(path, root)?, read)
+}
+
+/// Gives the opened file to `read` and refuses the result when the file changed meanwhile.
+fn read_opened<T>(mut opened: Opened, read: impl FnOnce(&mut File) -> T) -> Result<T, FileError> {
     let value = read(&mut opened.file);
     opened.check_unchanged()?;
     Ok(value)
@@ -183,11 +209,12 @@ pub fn read(path: &Path) -> Result<Vec<u8>, FileError> {
 
 /// The bytes of the regular file `path`, opened inside `root` ([`open_within`]).
 pub fn read_within(path: &Path, root: Option<&Path>) -> Result<Vec<u8>, FileError> {
-    read_with(path, root, |file| {
-        let mut bytes = Vec::new();
-        file.read_to_end(&mut bytes).map(|_| bytes)
-    })?
-    .map_err(FileError::Io)
+    read_with(path, root, bytes)?.map_err(FileError::Io)
+}
+
+fn bytes(file: &mut File) -> std::io::Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    file.read_to_end(&mut bytes).map(|_| bytes)
 }
 
 /// The text of the regular file `path` (UTF-8).
@@ -197,7 +224,11 @@ pub fn read_to_string(path: &Path) -> Result<String, FileError> {
 
 /// The text of the regular file `path` (UTF-8), opened inside `root` ([`open_within`]).
 pub fn read_to_string_within(path: &Path, root: Option<&Path>) -> Result<String, FileError> {
-    String::from_utf8(read_within(path, root)?).map_err(|_| {
+    utf8(read_within(path, root)?)
+}
+
+fn utf8(bytes: Vec<u8>) -> Result<String, FileError> {
+    String::from_utf8(bytes).map_err(|_| {
         FileError::Io(std::io::Error::new(
             std::io::ErrorKind::InvalidData,
             "stream did not contain valid UTF-8",

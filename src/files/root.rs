@@ -7,12 +7,16 @@
 //!   the folder's real path, resolved once;
 //! - the file is opened only if it is a regular file, and what the system opened is
 //!   checked against the folder's real path again ([`super::open_within`]): a link
-//!   swapped after the check is refused before a byte is read.
+//!   swapped after the check is refused before a byte is read. On Linux a handle on the
+//!   folder does both checks in the kernel ([`super::beneath`]), and the portable rules
+//!   decide only what it refuses.
 
+use super::beneath::Handle;
 use super::real::{Outside, check_real, folder, real_path};
 use super::{FileError, Opened};
 use std::fs::File;
 use std::path::{Component, Path, PathBuf};
+use std::sync::Arc;
 
 /// What to tell the user when a campaign path leads outside.
 const CAMPAIGN_HINT: &str = "set campaign.allow_outside_paths: true to allow it";
@@ -28,16 +32,20 @@ pub struct Root {
     allow_outside: bool,
     /// For messages: `campaign folder`, `templates folder`, `history folder`.
     name: &'static str,
+    /// A handle on the folder at its real path, that files are opened beneath (Linux).
+    handle: Option<Arc<Handle>>,
 }
 
 impl Root {
     /// A campaign's folder (`allow_outside`: its `allow_outside_paths`).
     pub fn campaign(dir: &Path, allow_outside: bool) -> Root {
+        let real = (!allow_outside)
+            .then(|| real_path(folder(dir)).ok())
+            .flatten();
         Root {
             dir: dir.to_path_buf(),
-            real: (!allow_outside)
-                .then(|| real_path(folder(dir)).ok())
-                .flatten(),
+            handle: real.as_deref().and_then(Handle::open).map(Arc::new),
+            real,
             allow_outside,
             name: "campaign folder",
         }
@@ -110,6 +118,10 @@ impl Root {
 
     /// The real-path rule for `relative` (a path inside the folder as written).
     pub fn check(&self, relative: &Path) -> Result<(), Outside> {
+        // A path beneath the folder with no link on its way stays inside: one system call.
+        if self.handle.as_ref().is_some_and(|h| h.plain(relative)) {
+            return Ok(());
+        }
         check_real(&self.dir, self.real(), relative, self.name)
     }
 
@@ -129,7 +141,13 @@ impl Root {
 
     /// Opens `path` ([`super::open_within`] this folder's real path).
     pub fn open(&self, path: &Path) -> Result<Opened, FileError> {
-        super::open_within(path, self.real())
+        let relative = path.strip_prefix(&self.dir).ok();
+        match (&self.handle, relative) {
+            (Some(handle), Some(relative)) => {
+                super::open_beneath(handle, relative, path, self.real())
+            }
+            _ => super::open_within(path, self.real()),
+        }
     }
 
     /// Opens `path`, gives it to `read`, and refuses the result when the file changed.
@@ -138,17 +156,17 @@ impl Root {
         path: &Path,
         read: impl FnOnce(&mut File) -> T,
     ) -> Result<T, FileError> {
-        super::read_with(path, self.real(), read)
+        super::read_opened(self.open(path)?, read)
     }
 
     /// The bytes of `path`.
     pub fn read(&self, path: &Path) -> Result<Vec<u8>, FileError> {
-        super::read_within(path, self.real())
+        self.read_with(path, super::bytes)?.map_err(FileError::Io)
     }
 
     /// The text of `path` (UTF-8).
     pub fn read_to_string(&self, path: &Path) -> Result<String, FileError> {
-        super::read_to_string_within(path, self.real())
+        super::utf8(self.read(path)?)
     }
 }
 

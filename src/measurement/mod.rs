@@ -630,20 +630,24 @@ pub fn read_file_with(path: &Path, options: &ReadOptions) -> Result<ReadTest, Re
 }
 
 /// [`read_file`] with `options`, refused unless the file opened lies inside the folder
-/// `root` (a real path; [`crate::files::open_within`]).
+/// `files` ([`crate::files::Root`]; `None`: no folder rule).
 pub fn read_file_within(
     path: &Path,
     options: &ReadOptions,
-    root: Option<&Path>,
+    files: Option<&crate::files::Root>,
 ) -> Result<ReadTest, ReadError> {
     let name = path.display().to_string();
-    crate::files::read_with(path, root, |file| {
+    let read = |file: &mut std::fs::File| {
         read_with(
             std::io::BufReader::with_capacity(64 * 1024, file),
             &name,
             options,
         )
-    })
+    };
+    match files {
+        Some(files) => files.read_with(path, read),
+        None => crate::files::read_with(path, None, read),
+    }
     .map_err(|e| ReadError::new(Location::file(&name), ReadErrorKind::Io(e.to_string())))?
 }
 
