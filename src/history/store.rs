@@ -172,7 +172,7 @@ pub fn visit(dir: &Path, mut visit: impl FnMut(Vec<Record>)) -> Result<(), Histo
     // way swapped for a link after the walk is refused, not read.
     let root = crate::files::Root::folder(dir, "history folder");
     for path in &files {
-        visit(read_file(path, root.real())?);
+        visit(read_file(path, &root)?);
     }
     Ok(())
 }
@@ -200,9 +200,9 @@ const UNREADABLE_ADVICE: &str =
     "restore it from a backup, or move it out of the history folder to read the others";
 
 /// One history file's rows, its schema checked; refused unless the file opened lies
-/// inside `root` (a real path; [`crate::files::open_within`]).
-pub fn read_file(path: &Path, root: Option<&Path>) -> Result<Vec<Record>, HistoryError> {
-    let bytes = crate::files::read_within(path, root).map_err(|e| HistoryError::Io {
+/// inside the folder `root` ([`crate::files::Root::read`]).
+pub fn read_file(path: &Path, root: &crate::files::Root) -> Result<Vec<Record>, HistoryError> {
+    let bytes = root.read(path).map_err(|e| HistoryError::Io {
         path: path.to_path_buf(),
         source: e.into(),
     })?;
