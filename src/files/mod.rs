@@ -204,12 +204,7 @@ fn read_opened<T>(mut opened: Opened, read: impl FnOnce(&mut File) -> T) -> Resu
 
 /// The bytes of the regular file `path`.
 pub fn read(path: &Path) -> Result<Vec<u8>, FileError> {
-    read_within(path, None)
-}
-
-/// The bytes of the regular file `path`, opened inside `root` ([`open_within`]).
-pub fn read_within(path: &Path, root: Option<&Path>) -> Result<Vec<u8>, FileError> {
-    read_with(path, root, bytes)?.map_err(FileError::Io)
+    read_with(path, None, bytes)?.map_err(FileError::Io)
 }
 
 fn bytes(file: &mut File) -> std::io::Result<Vec<u8>> {
@@ -219,12 +214,7 @@ fn bytes(file: &mut File) -> std::io::Result<Vec<u8>> {
 
 /// The text of the regular file `path` (UTF-8).
 pub fn read_to_string(path: &Path) -> Result<String, FileError> {
-    read_to_string_within(path, None)
-}
-
-/// The text of the regular file `path` (UTF-8), opened inside `root` ([`open_within`]).
-pub fn read_to_string_within(path: &Path, root: Option<&Path>) -> Result<String, FileError> {
-    utf8(read_within(path, root)?)
+    utf8(read(path)?)
 }
 
 fn utf8(bytes: Vec<u8>) -> Result<String, FileError> {
@@ -294,18 +284,27 @@ mod tests {
         // As after a link was swapped in once the path had been checked.
         std::os::unix::fs::symlink(outside.join("secret.csv"), inside.join("data/b.csv")).unwrap();
         let root = std::fs::canonicalize(&inside).unwrap();
-        let a = read_to_string_within(&inside.join("data/a.csv"), Some(&root)).unwrap();
-        assert_eq!(a, "in");
-        let e = read_to_string_within(&inside.join("data/b.csv"), Some(&root)).unwrap_err();
+        let within = |path: &Path| read_with(path, Some(&root), bytes)?.map_err(FileError::Io);
+        assert_eq!(within(&inside.join("data/a.csv")).unwrap(), b"in");
         let secret = std::fs::canonicalize(outside.join("secret.csv")).unwrap();
+        let expected = format!(
+            "it was opened as {}, outside the folder {} (a link on its way was changed \
+             after the path was checked); nothing was read from it",
+            secret.display(),
+            root.display()
+        );
+        let e = within(&inside.join("data/b.csv")).unwrap_err();
+        assert_eq!(e.to_string(), expected);
+        // Through the folder's handle (Linux): the kernel refuses the link out, and the
+        // portable open says why in the same words.
+        let folder = Root::folder(&inside, "campaign folder");
+        let e = folder
+            .read_to_string(&inside.join("data/b.csv"))
+            .unwrap_err();
+        assert_eq!(e.to_string(), expected);
         assert_eq!(
-            e.to_string(),
-            format!(
-                "it was opened as {}, outside the folder {} (a link on its way was changed \
-                 after the path was checked); nothing was read from it",
-                secret.display(),
-                root.display()
-            )
+            folder.read_to_string(&inside.join("data/a.csv")).unwrap(),
+            "in"
         );
         // Without a root, links are followed as before.
         assert!(read_to_string(&inside.join("data/b.csv")).is_ok());
