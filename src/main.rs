@@ -38,6 +38,7 @@ enum Command {
     /// axis gets wrong (drift, warm-up, thermal growth, run offsets, periodic error, reversal or
     /// scatter varying along the axis, outliers), with evidence and the held-out gain; several
     /// files of one axis are each also predicted from the others.
+    #[command(mut_arg(cli::ECMC_REFERENCE, |a| a.visible_alias(cli::REFERENCE_ALIAS)))]
     Diagnose {
         /// Measurement files (long or wide CSV, XLSX workbook, or ecmc key=value): one
         /// test, or several tests of one axis, each then also predicted by the models
@@ -218,4 +219,138 @@ fn write_extended_model(
         .with_context(|| format!("cannot write {}", path.display()))?;
     eprintln!("axcheck: wrote the extended model to {}", path.display());
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Cli;
+    use clap::CommandFactory;
+
+    /// clap's own checks of the whole tree: no long or short name, alias or id that two
+    /// options of a command share, no conflict or requirement naming no option, … A
+    /// release build would parse past such a defect (two `--reference` options made clap
+    /// hand a position to the ecmc one); Cargo.toml keeps clap's checks in release builds.
+    #[test]
+    fn the_command_tree_passes_clap_checks() {
+        Cli::command().debug_assert();
+    }
+
+    /// The check above can fail in the build the tests run in: a command with one long
+    /// name on two options panics.
+    #[test]
+    fn clap_checks_are_compiled_in() {
+        let caught = std::panic::catch_unwind(|| {
+            clap::Command::new("twice")
+                .arg(clap::Arg::new("a").long("reference"))
+                .arg(clap::Arg::new("b").long("reference"))
+                .debug_assert()
+        });
+        assert!(caught.is_err(), "clap's checks are not compiled in");
+    }
+
+    /// One row of the README's command table: the command and its options, each with
+    /// whether the README shows a value after it.
+    #[derive(Debug)]
+    struct Row {
+        command: String,
+        options: Vec<(String, bool)>,
+    }
+
+    /// The rows of the `| command | what it does |` table of `readme`.
+    fn command_table(readme: &str) -> Vec<Row> {
+        let mut lines = readme.lines().skip_while(|l| !l.starts_with("| command |"));
+        lines.next();
+        lines
+            .take_while(|l| l.starts_with('|'))
+            .filter_map(|l| l.split('`').nth(1))
+            .map(row)
+            .collect()
+    }
+
+    /// `axcheck run CAMPAIGN [--out DIR] [--wait]` → run, [(out, true), (wait, false)].
+    fn row(cell: &str) -> Row {
+        let tokens: Vec<&str> = cell.split_whitespace().collect();
+        let mut options = Vec::new();
+        for (i, token) in tokens.iter().enumerate() {
+            let bare = token.trim_start_matches(['[', '(']);
+            let Some(name) = bare.strip_prefix("--") else {
+                continue;
+            };
+            let name: String = name
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '-')
+                .collect();
+            let closed = bare.ends_with([']', ')']);
+            let value = !closed
+                && tokens
+                    .get(i + 1)
+                    .is_some_and(|next| !next.starts_with(['[', '(', '-', '\\', '…', '|']));
+            options.push((name, value));
+        }
+        Row {
+            command: tokens[1].to_string(),
+            options,
+        }
+    }
+
+    /// Every `--option` of every row of the README's command table is one option of that
+    /// command (by its name or an alias, never two options), taking a value where the
+    /// README shows one and none where it shows none.
+    #[test]
+    fn every_option_in_the_readme_command_table_is_accepted() {
+        let readme = include_str!("../README.md");
+        let rows = command_table(readme);
+        assert!(rows.len() >= 9, "the command table has {} rows", rows.len());
+        let tree = Cli::command();
+        let mut checked = 0;
+        for r in &rows {
+            let cmd = tree
+                .find_subcommand(&r.command)
+                .unwrap_or_else(|| panic!("README names `axcheck {}`: no such command", r.command));
+            for (name, value) in &r.options {
+                let named: Vec<&clap::Arg> = cmd
+                    .get_arguments()
+                    .filter(|a| {
+                        a.get_long() == Some(name.as_str())
+                            || a.get_all_aliases()
+                                .is_some_and(|x| x.contains(&name.as_str()))
+                    })
+                    .collect();
+                let [arg] = named.as_slice() else {
+                    panic!(
+                        "`axcheck {} --{name}`: {} options have that name",
+                        r.command,
+                        named.len()
+                    );
+                };
+                assert_eq!(
+                    arg.get_action().takes_values(),
+                    *value,
+                    "`axcheck {} --{name}`: the README shows {} value",
+                    r.command,
+                    if *value { "a" } else { "no" }
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked >= 60, "{checked} options checked");
+    }
+
+    #[test]
+    fn a_table_row_gives_its_options() {
+        let r = row(
+            "axcheck plan (--kind linear\\|rotary \\| --from PLAN.yaml) [-o OUT] [--program CONTROL --axis NAME] [--json] [--other AXIS=TABLE …]",
+        );
+        assert_eq!(r.command, "plan");
+        let want = [
+            ("kind", true),
+            ("from", true),
+            ("program", true),
+            ("axis", true),
+            ("json", false),
+            ("other", true),
+        ];
+        let got: Vec<(&str, bool)> = r.options.iter().map(|(n, v)| (n.as_str(), *v)).collect();
+        assert_eq!(got, want);
+    }
 }

@@ -173,7 +173,8 @@ pub struct AxisRaw {
 #[serde(deny_unknown_fields)]
 pub struct CompensationRaw {
     /// The axis's name on the controller, where the file names it (HEIDENHAIN `X`, Siemens
-    /// `X1`); default: a placeholder in the file.
+    /// `X1`, TwinCAT its logical number `2`); default: a placeholder in the file that the
+    /// control cannot load.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub axis: Option<String>,
     /// Spacing of an equidistant table; default: the controller's (the targets, or their

@@ -23,14 +23,15 @@ pub struct TableArgs {
     interval: Option<f64>,
     /// Reference point (mm or deg): the grid passes through it and the correction is zero
     /// there; default: the first grid point, corrections as measured.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, value_name = "POS", allow_negative_numbers = true)]
     reference: Option<f64>,
     /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
     #[arg(long)]
     pitch: Option<f64>,
     /// The axis's name on the controller, for formats that name it (HEIDENHAIN `X`,
-    /// Siemens `X1`) and to pick its table from an active file of several; default: the
-    /// active table's, else a placeholder in the file to replace.
+    /// Siemens `X1`, TwinCAT its logical number `2`) and to pick its table from an active
+    /// file of several; default: the active table's, else a placeholder in the file that
+    /// the control cannot load, to replace.
     #[arg(long)]
     axis: Option<String>,
     /// Siemens: the measuring system, 0 (the first encoder) or 1 (a direct measuring
@@ -167,7 +168,11 @@ pub struct Args {
 /// `axcheck compensate`: reads the file, writes the table; the text to print.
 pub fn command(args: Args) -> Result<String> {
     let controller = controller(&args.controller)?;
-    let data = axcheck::measurement::read_file_with(&args.file, &args.sheet.options())?.data;
+    let read = axcheck::measurement::read_file_with(&args.file, &args.sheet.options())?;
+    if let Some(note) = reference_note(&read.recognised.layout, &args) {
+        eprintln!("axcheck: note: {note}");
+    }
+    let data = read.data;
     let request = Request {
         controller,
         out: args.out.as_deref(),
@@ -176,6 +181,20 @@ pub fn command(args: Args) -> Result<String> {
         json: args.json,
     };
     run(&data, &request)
+}
+
+/// On an ecmc ISO 230 app file, `--reference 1` to `5` without `--ecmc-reference` may be
+/// meant as the file's reference (`--reference N` was that option's name): say what it is.
+fn reference_note(layout: &axcheck::measurement::Layout, args: &Args) -> Option<String> {
+    use axcheck::measurement::Layout;
+    let at = args.table.reference?;
+    let ecmc = matches!(layout, Layout::EcmcAppReport | Layout::EcmcAppCsv);
+    let like_source = at.fract() == 0.0 && (1.0..=5.0).contains(&at);
+    (ecmc && like_source && !args.sheet.names_source()).then(|| {
+        format!(
+            "--reference {at} is the table's reference point ({at} on the axis); the file's reference {at} is read with --ecmc-reference {at}"
+        )
+    })
 }
 
 /// What `compensate` was asked for.

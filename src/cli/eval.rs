@@ -8,8 +8,10 @@ use axcheck::measurement::{self, Recognised};
 use axcheck::units::{Direction, fmt_fixed, fmt_position};
 use std::fmt::Write;
 
-/// `axcheck eval`'s arguments.
+/// `axcheck eval`'s arguments (`--reference` is `--ecmc-reference` here: eval has no
+/// reference point).
 #[derive(clap::Args)]
+#[command(mut_arg(super::ECMC_REFERENCE, |a| a.visible_alias(super::REFERENCE_ALIAS)))]
 pub struct Args {
     /// Measurement file (long or wide CSV, XLSX workbook, ecmc key=value or report, ecmc
     /// ISO 230 app report or CSV, Renishaw .rtl/.rta; the layout is recognised from the

@@ -51,7 +51,12 @@ pub fn json_with_read<T: serde::Serialize>(
     Ok(serde_json::to_string_pretty(&with)? + "\n")
 }
 
-/// `--sheet NAME` and `--reference N`: what to read of a file.
+/// `--sheet NAME` and `--ecmc-reference N`: what to read of a file.
+///
+/// The ecmc option is not `--reference`: `compensate` has its own `--reference POS`, the
+/// table's reference point, and one name for two options made clap hand the position to
+/// this one. `eval` and `diagnose`, which have no reference point, keep `--reference` as an
+/// alias ([`REFERENCE_ALIAS`]).
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct SheetArg {
     /// The sheet to read when the file is a workbook (XLSX); default: the first.
@@ -60,16 +65,27 @@ pub struct SheetArg {
     /// The position source of an ecmc ISO 230 app file: reference 1 to 5, or `rbv` (the
     /// motor's readback); default: the reference the app evaluated.
     #[arg(long, value_name = "N|rbv", value_parser = axcheck::measurement::Source::parse)]
-    reference: Option<axcheck::measurement::Source>,
+    ecmc_reference: Option<axcheck::measurement::Source>,
 }
+
+/// The id of `--ecmc-reference`, for commands that add `--reference` as its alias.
+pub const ECMC_REFERENCE: &str = "ecmc_reference";
+
+/// `--ecmc-reference`'s older name, kept where no other option has it.
+pub const REFERENCE_ALIAS: &str = "reference";
 
 impl SheetArg {
     /// The sheet and the reference, as the readers take them.
     pub fn options(&self) -> axcheck::measurement::ReadOptions<'_> {
         axcheck::measurement::ReadOptions {
             sheet: self.sheet.as_deref(),
-            source: self.reference,
+            source: self.ecmc_reference,
         }
+    }
+
+    /// Whether `--ecmc-reference` was given.
+    pub fn names_source(&self) -> bool {
+        self.ecmc_reference.is_some()
     }
 }
 

@@ -1,6 +1,6 @@
 //! What `run` prints of the compensation tables: how many were written and on what state,
-//! those refused, those written over a state that is unknown or contradicted, and each
-//! verification's verdict.
+//! those refused, those written over a state that is unknown or contradicted, those whose
+//! file names no axis (what to replace), and each verification's verdict.
 
 use super::text::MAX_PROBLEM_LINES;
 use axcheck::batch::{AxisTest, CampaignResult};
@@ -79,8 +79,32 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
             lines.push(format!("  {} ({key}): {words}", listed(&named)));
         }
     }
+    lines.extend(placeholders(&compensated));
     lines.extend(result.tests.iter().filter_map(verification));
     lines
+}
+
+/// `  VMC-07 X, VMC-07 Y (axis_placeholder): the file names no machine axis: replace …`:
+/// the tables written with a placeholder for the axis, by what to replace (one controller's
+/// words).
+fn placeholders(compensated: &[&AxisTest]) -> Vec<String> {
+    let mut by_message: Vec<(&str, Vec<String>)> = Vec::new();
+    for t in compensated {
+        let c = t.evaluated().and_then(|e| e.compensation.as_deref());
+        let Some(c) = c.filter(|c| c.outcome.is_ok()) else {
+            continue;
+        };
+        for w in c.warnings.iter().filter(|w| w.key == "axis_placeholder") {
+            match by_message.iter_mut().find(|(m, _)| *m == w.message) {
+                Some((_, named)) => named.push(t.label()),
+                None => by_message.push((&w.message, vec![t.label()])),
+            }
+        }
+    }
+    by_message
+        .into_iter()
+        .map(|(message, named)| format!("  {} (axis_placeholder): {message}", listed(&named)))
+        .collect()
 }
 
 /// `  VMC-07 Z  not written: …`.

@@ -204,6 +204,10 @@ pub fn compensation(
         })
         .map_err(|e| format!("{}: {e}", controller.name()));
     if let Ok(c) = &outcome {
+        warnings.extend(controller.unnamed_axis(&c.table).map(|message| Warning {
+            key: "axis_placeholder",
+            message,
+        }));
         warnings.extend(warnings::warnings(
             data,
             diagnosis,

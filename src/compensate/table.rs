@@ -42,13 +42,15 @@ pub struct Table {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Place {
     /// The axis's name on the controller (HEIDENHAIN's column `X`, Siemens' machine axis
-    /// `X1`); `None`: the file carries a placeholder to replace.
+    /// `X1`, TwinCAT's logical number `2` as given); `None`: the file carries a placeholder
+    /// the control cannot load, to replace.
     pub axis: Option<String>,
     /// Siemens: the measuring system, 0 (the first encoder) or 1 (a direct, second
     /// measuring system the axis is closed on); `None`: 0.
     pub measuring_system: Option<u8>,
-    /// TwinCAT: the axis's logical number `kopf.achs_nr`; FANUC: the first pitch error
-    /// number of the + direction table (3621); `None`: the format's default.
+    /// TwinCAT: the axis's logical number `kopf.achs_nr` of the active list (`axis`, when
+    /// given, comes first); FANUC: the first pitch error number of the + direction table
+    /// (3621); `None`: the format's default.
     pub number: Option<usize>,
 }
 

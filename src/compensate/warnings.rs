@@ -10,10 +10,13 @@ use crate::measurement::AxisData;
 use crate::units::fmt_fixed;
 use serde::Serialize;
 
-/// A reason the table may not achieve its prediction on the machine.
+/// A reason the table may not achieve its prediction on the machine, or cannot be loaded
+/// as written.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Warning {
-    /// Stable key: `time_effect`, `aliased_periodic`, `single_run`, `outliers`.
+    /// Stable key: `time_effect`, `aliased_periodic`, `single_run`, `outliers`,
+    /// `axis_placeholder` (the file names no axis: what to replace), and those of the
+    /// active state ([`super::active`]).
     pub key: &'static str,
     pub message: String,
 }

@@ -38,7 +38,7 @@ fn campaign(dir: &Path) -> std::path::PathBuf {
     std::fs::write(dir.join("active/X.ini"), &file).unwrap();
     std::fs::write(
         dir.join("active/V.ini"),
-        file.replace("[0,2,AX1]=", "[0,2,AX1]=x"),
+        file.replace("[0,2,<AXIS?>]=", "[0,2,<AXIS?>]=x"),
     )
     .unwrap();
     let axis = |name: &str, compensation: &str, conditions: &str| {
@@ -110,7 +110,8 @@ fn a_campaign_states_what_was_active_and_is_told_what_it_did_not() {
     assert_eq!(x["mode"], "incremental");
     assert_eq!(x["active_file"], "active/X.ini");
     // Its grid is the active table's: the interval given is not used, and it is said.
-    assert_eq!(keys(x), ["active_grid_kept"], "{x}");
+    // No axis named in the campaign: the file says what to replace.
+    assert_eq!(keys(x), ["active_grid_kept", "axis_placeholder"], "{x}");
     let written = std::fs::read_to_string(out.join("compensation/M/X.ini")).unwrap();
     assert!(
         written.contains("\n; Incremental: the table active during the measurement (active/X.ini) plus this measurement's correction; load it in place of that table.\n"),
@@ -119,10 +120,13 @@ fn a_campaign_states_what_was_active_and_is_told_what_it_did_not() {
     // Y: `none` stated, but the conditions say compensation was on.
     let y = block(&json, "Y");
     assert_eq!(y["mode"], "absolute");
-    assert_eq!(keys(y), ["active_compensation_contradiction"]);
+    assert_eq!(
+        keys(y),
+        ["active_compensation_contradiction", "axis_placeholder"]
+    );
     // Z: nothing stated: the file, the JSON and the console say so.
     let z = block(&json, "Z");
-    assert_eq!(keys(z), ["active_compensation_unknown"]);
+    assert_eq!(keys(z), ["active_compensation_unknown", "axis_placeholder"]);
     let head = std::fs::read_to_string(out.join("compensation/M/Z.ini")).unwrap();
     assert!(
         head.contains("\n; Warning: the compensation active during the test was not stated"),

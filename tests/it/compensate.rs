@@ -300,7 +300,7 @@ fn a_rotary_axis_over_a_turn_gets_a_modulo_table() {
     .data;
     assert_eq!(data.measurement_travel(), (0.0, 1080.0));
     let flags = [
-        ("siemens-840d", "$AA_ENC_COMP_IS_MODULO[0,AX1]=1"),
+        ("siemens-840d", "$AA_ENC_COMP_IS_MODULO[0,<AXIS?>]=1"),
         ("fanuc", "3625   = 360000"),
         ("heidenhain", "\n9     +360.0000 "),
         ("twincat", "kw.ssfk.modulo               1"),

@@ -219,12 +219,17 @@ const AXIS: &str = "kind: linear\nseed: 11\nmodel:\n  scale_um_per_m: 30\n  peri
 const ACTIVE: &str = "kind: linear\nseed: 5\nmodel:\n  scale_um_per_m: -12\n  periodic: [{pitch_mm: 250, amplitude_um: 2}]\n  reversal_um: 3\n  scatter_um: 0.2\nplan:\n  targets: {start_mm: 0, end_mm: 1000, count: 21}\n  runs: 5\n";
 
 /// The settings both tables are written with: every 50 mm where the controller wants an
-/// interval, the machine axis named.
+/// interval, the machine axis named (TwinCAT names it by its logical number).
 fn grid_settings(controller: &dyn Controller) -> Settings {
+    let axis = if controller.name() == "twincat" {
+        "1"
+    } else {
+        "X1"
+    };
     Settings {
         interval: (controller.format().spacing == Spacing::Equidistant).then_some(50.0),
         place: compensate::Place {
-            axis: Some("X1".into()),
+            axis: Some(axis.into()),
             ..Default::default()
         },
         active: Some(Active::default()),

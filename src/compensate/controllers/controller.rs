@@ -181,6 +181,13 @@ pub trait Controller: Sync {
     /// format's sign undone), its place; what the controller would refuse, or read
     /// otherwise than the file seems to say, is refused with its line and field.
     fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable>;
+    /// What to fill in before the control can load the file, when the format names the
+    /// axis and `table.place` does not give it: the placeholder written instead (one the
+    /// control cannot load, never a valid axis) and what replaces it. `None`: nothing.
+    fn unnamed_axis(&self, table: &Table) -> Option<String> {
+        let _ = table;
+        None
+    }
 }
 
 /// Every position and correction finite: a value rounded to the controller's unit can
@@ -212,12 +219,18 @@ pub fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refu
     }
 }
 
+/// What a file says where it names an axis that was not given: `<`, `?` and `>` are in no
+/// control's axis names (SINUMERIK identifiers are letters, digits and `_`; HEIDENHAIN file
+/// names exclude them), so the control refuses the file instead of loading it onto an axis
+/// the name happens to mean (`AX1`, SINUMERIK's machine axis 1).
+pub const AXIS_PLACEHOLDER: &str = "<AXIS?>";
+
 /// The axis's name on the controller as the file can hold it (letters, digits and `_`: a
-/// blank, a bracket or a comma would break the file's syntax), or `placeholder` when none
-/// is given.
-pub fn axis_name<'t>(table: &'t Table, placeholder: &'t str) -> Result<&'t str, Refused> {
+/// blank, a bracket or a comma would break the file's syntax), or [`AXIS_PLACEHOLDER`]
+/// when none is given.
+pub fn axis_name(table: &Table) -> Result<&str, Refused> {
     match table.place.axis.as_deref() {
-        None => Ok(placeholder),
+        None => Ok(AXIS_PLACEHOLDER),
         Some(name)
             if !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') =>
         {

@@ -6,11 +6,16 @@
 //! axis (its key in CfgAxes/axisList) holding the values; `BACKLASH`, "the compensation
 //! values measured in the negative direction of traverse".
 //!
-//! The axis key is not known to a writer (`Controller::write` gets the table only), so the
-//! table names its value column and itself `AXIS`: replace it with the axis key (`X`, and
-//! the file `X.COM`), keeping the columns aligned. A key left `AXIS` names no axis; a wrong
-//! key would make it a cross compensation (the column's axis as a function of the `.CMA`
-//! column's), so it is not guessed.
+//! The axis key names the value column and the table (`--axis X`, campaign
+//! `compensation: {axis: X}`; the file `X.COM`). Without it both say `<AXIS?>`, and a note
+//! on the console asks for the axis key from CfgAxes/axisList, keeping the columns aligned;
+//! a wrong key would make it a cross compensation (the column's axis as a function of the
+//! `.CMA` column's), so it is not guessed. `<`, `?` and `>` are not permitted in TNC file
+//! names (TNC 620 User's Manual 340 56x-01, "File names", p. 80, lists them; the TNC 640
+//! User's Manual 1/2015, p. 115, allows only letters, digits, `.`, `_` and `-`): the name
+//! is no file the control holds and, as far as found, no axis key (earlier files said
+//! `AXIS`, a plain name a key could have). Not confirmed: what the control does with a
+//! `.COM` column that names none of its axes (refuses the table, or ignores the column).
 //!
 //! Units: mm (degrees on a rotary axis) for positions and values, printed to 4 decimals:
 //! the table as held is the correction rounded to 0.1 µm or 0.0001° (0.36″), at
@@ -79,7 +84,10 @@ const MAX_POINTS: usize = 256;
 const DECIMALS: usize = 4;
 
 /// The value column's name until the user gives the axis key.
-const AXIS_KEY: &str = "AXIS";
+const AXIS_KEY: &str = super::AXIS_PLACEHOLDER;
+
+/// The placeholder of files written before `<AXIS?>`, read as naming no axis too.
+const OLD_AXIS_KEY: &str = "AXIS";
 
 /// The columns and their widths.
 const COLUMNS: [(&str, usize); 4] = [("NR", 6), ("AXISPOS", 14), (AXIS_KEY, 14), ("BACKLASH", 14)];
@@ -196,7 +204,7 @@ impl Controller for Heidenhain {
         // Corrections in µm or arcsec, the table in mm or degrees; it holds the error.
         let per_unit = table.kind.deviation_units_per_position_unit();
         // The axis key names the value column and the table (X.COM).
-        let key = super::axis_name(table, AXIS_KEY)?;
+        let key = super::axis_name(table)?;
         let names = COLUMNS.map(|(name, _)| if name == AXIS_KEY { key } else { name });
         let mut out = format!("BEGIN {key}.COM MM\n");
         out.push_str(&row(names)?);
@@ -213,6 +221,14 @@ impl Controller for Heidenhain {
         }
         out.push_str("[END]\n");
         Ok(out)
+    }
+
+    fn unnamed_axis(&self, table: &Table) -> Option<String> {
+        table.place.axis.is_none().then(|| {
+            format!(
+                "the table names no axis: replace {AXIS_KEY} in its BEGIN line and its value column by the axis key from CfgAxes/axisList (X, Y, ...; as written it names no axis of the control), keep the columns aligned and save it as KEY.COM; or give the key with --axis (compensation: {{axis}} in a campaign)"
+            )
+        })
     }
 }
 
@@ -389,7 +405,7 @@ fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
     let modulo = reading::one_revolution(reading.kind, &points.positions);
     let key = columns.names[axis].0.clone();
     let place = Place {
-        axis: (key != AXIS_KEY).then_some(key),
+        axis: (key != AXIS_KEY && key != OLD_AXIS_KEY).then_some(key),
         ..Place::default()
     };
     Ok(points.table(None, modulo, place, Default::default()))

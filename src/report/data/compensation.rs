@@ -28,7 +28,8 @@ pub struct CompensationSection<'a> {
     floor: String,
     /// How the controller applies the table between its points, for the prediction's note.
     applied: &'static str,
-    /// What the state the table builds on leaves unsure (not stated, contradicted).
+    /// What the state the table builds on leaves unsure (not stated, contradicted), and
+    /// what the file leaves to fill in before it loads (the axis): beside the facts.
     state_warnings: Vec<&'a str>,
     warnings: Vec<&'a str>,
     /// The verification, when this test re-measures a table it verifies.
@@ -78,7 +79,7 @@ pub(super) fn compensation_section<'a>(
     let (state, other): (Vec<_>, Vec<_>) = c
         .warnings
         .iter()
-        .partition(|w| w.key.starts_with("active_"));
+        .partition(|w| w.key.starts_with("active_") || w.key == "axis_placeholder");
     let message = |w: &&'a crate::compensate::Warning| w.message.as_str();
     let state_warnings = state.iter().map(message).collect();
     let warnings = other.iter().map(message).collect();

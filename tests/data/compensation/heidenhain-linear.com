@@ -1,5 +1,5 @@
-BEGIN AXIS.COM MM
-NR    AXISPOS       AXIS          BACKLASH      
+BEGIN <AXIS?>.COM MM
+NR    AXISPOS       <AXIS?>       BACKLASH      
 0     -100.0000     +0.0000       +0.0020       
 1     -75.0000      +0.0025       +0.0045       
 2     -50.0000      +0.0010       +0.0030       

@@ -1,5 +1,5 @@
-BEGIN AXIS.COM MM
-NR    AXISPOS       AXIS          BACKLASH      
+BEGIN <AXIS?>.COM MM
+NR    AXISPOS       <AXIS?>       BACKLASH      
 0     +0.0000       +0.0004       +0.0000       
 1     +90.0000      +0.0010       +0.0006       
 2     +180.0000     +0.0020       +0.0016       

@@ -1,13 +1,22 @@
 //! `siemens-840d`: a SINUMERIK 840D / 840D sl leadscrew and measuring-system error
 //! compensation (LEC / MSEC) table, the INI part program `%_N_AX_EEC_INI`: one
-//! `$AA_ENC_COMP[0,N,AX1]=value` per point N, then `$AA_ENC_COMP_STEP`, `_MIN`, `_MAX`,
+//! `$AA_ENC_COMP[0,N,X1]=value` per point N, then `$AA_ENC_COMP_STEP`, `_MIN`, `_MAX`,
 //! `_IS_MODULO` and `M17`, in mm (degrees on a rotary axis; inches if MD10240
 //! SCALING_SYSTEM_IS_METRIC = 0, which axcheck does not write). The first index is the
 //! measuring system: 0 for the first encoder, 1 for an axis closed on a direct (second)
 //! measuring system (`--measuring-system 1`, campaign `compensation: {measuring_system: 1}`,
 //! or the active table's own). The machine axis is the table's `axis` (`--axis X1`,
-//! campaign `compensation: {axis: X1}`); without it the file says `AX1` and a comment asks
-//! the user to replace it by the machine axis (X1, Y1, …). Notes go in the `;` comments.
+//! campaign `compensation: {axis: X1}`); without it the file says `<AXIS?>` and a comment
+//! (and the console) asks the user to replace it by the machine axis (X1, Y1, …). Not `AX1`,
+//! as before: K3 writes the index `<AXi>`, and `AX1` is the NC's name of machine axis 1
+//! ([recalled]: machine data archives address axes so; in any case a valid identifier), so
+//! an unedited file would load onto the first machine axis. An axis identifier is
+//! letters, digits and underscores, the first two letters or underscores, at most 8
+//! characters (SINUMERIK 840D Programming Manual Fundamentals, 10.2004, 6FC5298-7AB00-0BP1,
+//! §2.2 "Language elements", p. 2-14; SINUMERIK ONE Programming Manual NC programming,
+//! 12/2019, 6FC5398-2EP40-0BA0, "Names", p. 383): `<`, `?` and `>` are none of them, and
+//! the NC cannot run the line (the alarm it gives was not confirmed). Notes go in the `;`
+//! comments.
 //!
 //! Sign: the NC modifies the actual position value by the table value, and "a positive
 //! compensation value causes the corresponding machine axis to move in the negative
@@ -58,9 +67,6 @@ const MAX_POINTS: usize = 5000;
 
 /// Decimals printed: 1 nm or 1e-6°.
 const DECIMALS: usize = 6;
-
-/// The placeholder for the machine axis name.
-const AXIS: &str = "AX1";
 
 impl Controller for Siemens840d {
     fn name(&self) -> &'static str {
@@ -113,7 +119,7 @@ impl Controller for Siemens840d {
         let unit = table.kind.position_unit();
         let value = |correction: f64| fmt_fixed(-correction / per_unit, DECIMALS);
         let mean = table.mean();
-        let axis = super::axis_name(table, AXIS)?;
+        let axis = super::axis_name(table)?;
         let e = measuring_system(table);
         let mut out = String::from("%_N_AX_EEC_INI\nCHANDATA(1)\n");
         out.push_str(&header(table, &mean, per_unit));
@@ -139,6 +145,15 @@ impl Controller for Siemens840d {
             "$AA_ENC_COMP_IS_MODULO[{e},{axis}]={modulo}\nM17\n"
         ));
         Ok(out)
+    }
+
+    fn unnamed_axis(&self, table: &Table) -> Option<String> {
+        table.place.axis.is_none().then(|| {
+            format!(
+                "the file names no machine axis: replace {} in every line by the machine axis name (X1, Y1, ...; the NC cannot run the file as written), or give it with --axis (compensation: {{axis}} in a campaign)",
+                super::AXIS_PLACEHOLDER
+            )
+        })
     }
 }
 
@@ -200,9 +215,11 @@ fn header(table: &Table, mean: &[f64], per_unit: f64) -> String {
          ; MD32450 $MA_BACKLASH[{e}]={} ; mean reversal, {unit} (positive: the encoder leads the machine part)\n",
         e + 1,
         match table.place.axis {
-            None =>
-                "; Replace AX1 by the machine axis name (X1, Y1, ...) in every line before loading.\n",
-            Some(_) => "",
+            None => format!(
+                "; Replace {} by the machine axis name (X1, Y1, ...) in every line before loading: the NC cannot run it as written.\n",
+                super::AXIS_PLACEHOLDER
+            ),
+            Some(_) => String::new(),
         },
         reference(table, mean, per_unit),
         table.positions.len(),

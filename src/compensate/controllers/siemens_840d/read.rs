@@ -60,7 +60,8 @@ pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
     }
     let modulo = modulo(vars.modulo, min, max)?;
     let place = Place {
-        axis: Some(axis.clone()),
+        // A file still holding the placeholder names no axis: the next one written says so.
+        axis: (axis != super::super::AXIS_PLACEHOLDER).then(|| axis.clone()),
         measuring_system: Some(*system),
         number: None,
     };

@@ -34,9 +34,15 @@
 //! Loading: the axis parameter list activates it (`lr_param.ssfk 1`, P-AXIS-00175), the
 //! start-up list [STUP] names it (`zahl_kw`, `achs_kw_log_ax_nr[i]`, `achs_kw[i]`; TwinCAT
 //! XAE writes these when the list is configured there). `kopf.achs_nr` must be the axis's
-//! logical number: the list says the active list's number, else 1 for the user to change
-//! (a mismatch aborts the list, error 110229). Comment lines start with `# `; `End` closes the list as in
-//! Beckhoff's plane-compensation example (the SSFK example shows none).
+//! logical number (a mismatch aborts the list, error 110229): `--axis 2` (campaign
+//! `compensation: {axis: 2}`) gives it, else the active list's; without either the list
+//! says 0, which P-COMP-00001 does not allow ("0 < achs_nr"; ISG kernel documentation,
+//! "Logical axis number (P-COMP-00001)", isg-stuttgart.de/fileadmin/kernel/kernel-html/
+//! en-GB/113373067.html), and a note asks for the number. Earlier lists said 1, a
+//! valid number: an unedited list was checked against axis 1. An axis name (`X`) is
+//! refused: the list names its axis by number only. Comment lines start with `# `; `End`
+//! closes the list as in Beckhoff's plane-compensation example (the SSFK example shows
+//! none).
 //!
 //! Sources (Beckhoff Infosys, TF5200 Axis compensation): "Leadscrew error compensation"
 //! infosys.beckhoff.com/content/1033/tf5200_axis_compensation/308683659.html; parameters
@@ -111,7 +117,8 @@ impl List {
         })
     }
 
-    fn text(&self, kind: AxisKind, axis_number: usize, notes: &[String]) -> String {
+    /// `axis_number`: `None` writes [`NO_AXIS_NUMBER`], which the CNC refuses.
+    fn text(&self, kind: AxisKind, axis_number: Option<usize>, notes: &[String]) -> String {
         let unit = match kind {
             AxisKind::Linear => "0.1 um",
             AxisKind::Rotary => "0.0001 deg",
@@ -125,9 +132,17 @@ impl List {
         out.push_str(
             "# kopf.achs_nr: the axis' logical number, as achs_kw_log_ax_nr[i] in [STUP]\n",
         );
+        if axis_number.is_none() {
+            out.push_str(
+                "# Replace 0 in kopf.achs_nr by the axis' logical number before loading: the CNC allows no 0.\n",
+            );
+        }
         out.push_str(&super::commented("# ", notes));
         let mut line = |key: &str, value: i64| out.push_str(&format!("{key:<28} {value}\n"));
-        line("kopf.achs_nr", axis_number as i64);
+        line(
+            "kopf.achs_nr",
+            axis_number.map_or(NO_AXIS_NUMBER, |n| n as i64),
+        );
         line("kw.ssfk.unit", 1);
         line("kw.ssfk.interval", self.interval);
         line("kw.ssfk.kw_startpos", self.start);
@@ -140,6 +155,24 @@ impl List {
         }
         out.push_str("End\n");
         out
+    }
+}
+
+/// `kopf.achs_nr` of a list whose axis was not given: P-COMP-00001 allows no 0.
+const NO_AXIS_NUMBER: i64 = 0;
+
+/// The axis's logical number: `--axis` (0 < n < 65535, P-COMP-00001), else the active list's;
+/// `None` when neither gives one.
+fn axis_number(table: &Table) -> Result<Option<usize>, Refused> {
+    match &table.place.axis {
+        None => Ok(table.place.number.filter(|&n| n > 0)),
+        Some(text) => match text.trim().parse::<u16>() {
+            Ok(n) if n > 0 && n < u16::MAX => Ok(Some(usize::from(n))),
+            _ => Err(Refused::Grid(format!(
+                "the axis `{}`: a TwinCAT list names its axis by the logical axis number (kopf.achs_nr, 1 to 65534), not by name; give that number (--axis 2, or compensation: {{axis: 2}} in a campaign)",
+                text.escape_debug()
+            ))),
+        },
     }
 }
 
@@ -221,8 +254,14 @@ impl Controller for TwinCat {
 
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
         super::finite(table)?;
-        let axis_number = table.place.number.unwrap_or(1);
+        let axis_number = axis_number(table)?;
         Ok(List::of(table)?.text(table.kind, axis_number, notes))
+    }
+
+    fn unnamed_axis(&self, table: &Table) -> Option<String> {
+        matches!(axis_number(table), Ok(None)).then(|| {
+            "the list names no axis: replace 0 in kopf.achs_nr by the axis' logical number (achs_kw_log_ax_nr in [STUP]; the CNC allows no 0), or give it with --axis (compensation: {axis} in a campaign)".to_string()
+        })
     }
 }
 

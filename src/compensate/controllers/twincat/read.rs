@@ -140,7 +140,8 @@ impl List {
             positions,
         };
         let place = Place {
-            number: self.axis_number.map(|(n, _)| n),
+            // 0, which the CNC does not allow, is the placeholder of an unnamed axis.
+            number: self.axis_number.map(|(n, _)| n).filter(|&n| n > 0),
             ..Place::default()
         };
         Ok(points.table(None, modulo, place, Interpolation::Linear))
