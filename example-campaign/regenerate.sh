@@ -23,15 +23,15 @@ for axis in X Y Z; do
     --reference 0 --axis "${axis}1" --active none -o "active/VMC-07/$axis.ini" >/dev/null
 done
 
-# MILL-3: measured with nothing active, its LinuxCNC tables written and loaded, measured
-# again. X's table was loaded as written; Y's with every trim negated (the sign of
-# LinuxCNC's INI documentation, not of its code).
+# MILL-3: measured with nothing active, its LinuxCNC tables written (type 1, trims, as its
+# INI says) and loaded, measured again. X's table was loaded as written; Y's with every
+# trim negated (the sign of LinuxCNC's INI documentation, not of its code).
 for axis in X Y; do
   lower=$(echo "$axis" | tr 'XY' 'xy')
   model="models/mill3-$lower.yaml"
   axcheck simulate "$model" -o "data/mill3-$lower-before.csv"
   axcheck compensate "data/mill3-$lower-before.csv" --controller linuxcnc --active none \
-    -o "active/MILL-3/$axis.txt" >/dev/null
+    --comp-file-type 1 -o "active/MILL-3/$axis.txt" >/dev/null
 done
 awk 'NF >= 3 && $1 !~ /^#/ { printf "%s %.7f %.7f\n", $1, -$2, -$3 }' \
   active/MILL-3/Y.txt > "$scratch/y-negated.txt"

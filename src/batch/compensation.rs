@@ -298,6 +298,13 @@ pub fn for_test(
     let Some(c) = controller.and_then(crate::compensate::controllers::find) else {
         return (None, None);
     };
+    let file_type = axis
+        .raw
+        .compensation
+        .as_ref()
+        .and_then(|r| r.comp_file_type);
+    // Checked when the campaign was loaded: only LinuxCNC's, 0 or 1.
+    let c = crate::compensate::controllers::with_comp_file_type(c, file_type).unwrap_or(c);
     let own;
     let diagnosis = match diagnosis {
         Some(d) => d,

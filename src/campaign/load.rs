@@ -41,7 +41,8 @@ pub(super) fn machine(
             .enumerate()
             .map(|(a, v)| {
                 let base = format!("{base}.axes[{a}]");
-                axis(v, a, &base, index, file, campaign, standard)
+                let entry = axis(v, a, &base, index, file, campaign, standard);
+                comp_file_type_fits(entry, info.controller.as_deref(), &base, index, file)
             })
             .collect(),
         None | Some(Value::Null) => Vec::new(),
@@ -59,6 +60,39 @@ pub(super) fn machine(
         }],
     };
     Machine { info, axes }
+}
+
+/// An axis that asks for a LinuxCNC comp file type on a machine whose controller is not
+/// LinuxCNC fails with where it asks.
+fn comp_file_type_fits(
+    entry: AxisEntry,
+    controller: Option<&str>,
+    base: &str,
+    index: &LocationIndex,
+    file: &str,
+) -> AxisEntry {
+    let asks = entry.spec.as_ref().is_ok_and(|s| {
+        s.raw
+            .compensation
+            .as_ref()
+            .is_some_and(|c| c.comp_file_type.is_some())
+    });
+    use crate::compensate::controllers::{Controller, linuxcnc::LinuxCnc};
+    let linuxcnc = LinuxCnc::TYPE_0.name();
+    if !asks || controller == Some(linuxcnc) {
+        return entry;
+    }
+    let path = format!("{base}.compensation.comp_file_type");
+    let has = controller.map_or("names no controller".to_string(), |c| {
+        format!("has controller {c}")
+    });
+    let message = format!("{path}: LinuxCNC's COMP_FILE_TYPE, but the machine {has}");
+    AxisEntry {
+        spec: Err(Located::new(index.key(&path), message)
+            .in_file(file)
+            .to_string()),
+        ..entry
+    }
 }
 
 /// A machine that cannot be read: each of its axes reports why (or one entry if none).
@@ -274,6 +308,14 @@ fn check_compensation(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Resul
         return bad(
             "measuring_system",
             "0 (the first encoder) or 1 (a direct measuring system)",
+        );
+    }
+    if let Some(t) = c.comp_file_type
+        && t > 1
+    {
+        return bad(
+            "comp_file_type",
+            "LinuxCNC's COMP_FILE_TYPE, 0 (actual positions) or 1 (trims)",
         );
     }
     let base = format!("{base}.compensation");

@@ -188,6 +188,10 @@ pub struct CompensationRaw {
     /// (a direct measuring system the axis is closed on).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub measuring_system: Option<u8>,
+    /// LinuxCNC: the file's `COMP_FILE_TYPE`, 0 (actual positions, LinuxCNC's default and
+    /// axcheck's) or 1 (trims).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub comp_file_type: Option<u8>,
     /// What was active during this test (ISO 230-2 3.2): `none`, or the table file in the
     /// controller's format and its backlash parameter; absent: not stated (a warning says
     /// so). With `verifies`, the table verified.

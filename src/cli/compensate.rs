@@ -151,6 +151,11 @@ pub struct Args {
     /// heidenhain, twincat, ecmc (10.0.0 and later), ecmc-9.6.
     #[arg(long, short)]
     controller: String,
+    /// LinuxCNC: the file's COMP_FILE_TYPE, 0 (nominal, forward and reverse actual
+    /// position; LinuxCNC's default) or 1 (nominal and trims); the file's notes and the
+    /// listing name the INI lines to set.
+    #[arg(long, value_name = "0|1", value_parser = clap::value_parser!(u8).range(0..=1))]
+    comp_file_type: Option<u8>,
     /// Table file to write (then a summary of measured and predicted parameters is
     /// printed).
     #[arg(long, short)]
@@ -167,7 +172,9 @@ pub struct Args {
 
 /// `axcheck compensate`: reads the file, writes the table; the text to print.
 pub fn command(args: Args) -> Result<String> {
-    let controller = controller(&args.controller)?;
+    let controller =
+        controllers::with_comp_file_type(controller(&args.controller)?, args.comp_file_type)
+            .map_err(|e| anyhow!("--comp-file-type: {e}"))?;
     let read = axcheck::measurement::read_file_with(&args.file, &args.sheet.options())?;
     if let Some(note) = reference_note(&read.recognised.layout, &args) {
         eprintln!("axcheck: note: {note}");
@@ -222,6 +229,9 @@ struct CompensationJson<'a> {
     predicted: ParameterSet<'a>,
     /// Why the table may not achieve the prediction on the machine.
     warnings: &'a [Warning],
+    /// What the controller must be told to load the file (LinuxCNC's INI lines).
+    #[serde(skip_serializing_if = "<[String]>::is_empty")]
+    loading: &'a [String],
     /// The table file written, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     file: Option<String>,
@@ -265,6 +275,7 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
             measured: ParameterSet::of(&measured),
             predicted: ParameterSet::of(&done.predicted),
             warnings: &c.warnings,
+            loading: &c.loading,
             file: request.out.map(|p| p.display().to_string()),
         };
         return Ok(serde_json::to_string_pretty(&json)? + "\n");
@@ -278,11 +289,19 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
         }
         Some(out) => {
             let mut text = format!(
-                "{} table written to {} ({})\n\n",
+                "{} table written to {} ({})\n",
                 controller.name(),
                 out.display(),
                 mode_words(c.mode, c.active_file.as_deref())
             );
+            for line in &c.loading {
+                let _ = writeln!(
+                    text,
+                    "{}",
+                    line.replace("<file>", &out.display().to_string())
+                );
+            }
+            text.push('\n');
             text.push_str(&summary(&measured, &done.predicted, data));
             for w in &c.warnings {
                 let _ = writeln!(text, "Warning: {}", w.message);

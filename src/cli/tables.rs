@@ -1,6 +1,7 @@
 //! What `run` prints of the compensation tables: how many were written and on what state,
 //! those refused, those written over a state that is unknown or contradicted, those whose
-//! file names no axis (what to replace), and each verification's verdict.
+//! file names no axis (what to replace), what the controllers must be told to load them,
+//! and each verification's verdict.
 
 use super::text::MAX_PROBLEM_LINES;
 use axcheck::batch::{AxisTest, CampaignResult};
@@ -80,6 +81,7 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
         }
     }
     lines.extend(placeholders(&compensated));
+    lines.extend(loading_lines(&compensated));
     lines.extend(result.tests.iter().filter_map(verification));
     lines
 }
@@ -104,6 +106,29 @@ fn placeholders(compensated: &[&AxisTest]) -> Vec<String> {
     by_message
         .into_iter()
         .map(|(message, named)| format!("  {} (axis_placeholder): {message}", listed(&named)))
+        .collect()
+}
+
+/// What the controllers must be told to load the tables written (LinuxCNC's INI lines),
+/// each once with the tests it is for: `  M X, M Y: COMP_FILE_TYPE = 0: …`.
+fn loading_lines(compensated: &[&AxisTest]) -> Vec<String> {
+    let mut groups: Vec<(String, Vec<String>)> = Vec::new();
+    for t in compensated {
+        let c = t.evaluated().and_then(|e| e.compensation.as_deref());
+        let Some(c) = c.filter(|c| c.outcome.is_ok()) else {
+            continue;
+        };
+        let path = format!("compensation/MACHINE/AXIS.{}", c.extension);
+        for line in c.loading.iter().map(|l| l.replace("<file>", &path)) {
+            match groups.iter_mut().find(|(l, _)| *l == line) {
+                Some((_, named)) => named.push(t.label()),
+                None => groups.push((line, vec![t.label()])),
+            }
+        }
+    }
+    groups
+        .into_iter()
+        .map(|(line, named)| format!("  {}: {line}", listed(&named)))
         .collect()
 }
 

@@ -148,6 +148,9 @@ pub struct Compensation {
     /// What the active state leaves unsure, and why the table may not achieve the
     /// prediction on the machine.
     pub warnings: Vec<Warning>,
+    /// What the controller must be told to load the file as written (LinuxCNC's INI
+    /// lines), `<file>` standing for its path; empty when no table was written.
+    pub loading: Vec<String>,
 }
 
 impl Compensation {
@@ -160,6 +163,7 @@ impl Compensation {
             active_file: None,
             outcome: Err(format!("{}: {reason}", controller.name())),
             warnings: Vec::new(),
+            loading: Vec::new(),
         }
     }
 }
@@ -215,6 +219,10 @@ pub fn compensation(
             settings.pitch,
         ));
     }
+    let loading = match &outcome {
+        Ok(_) => controller.loading(data.kind),
+        Err(_) => Vec::new(),
+    };
     Compensation {
         controller: controller.name(),
         extension: controller.extension(),
@@ -222,6 +230,7 @@ pub fn compensation(
         active_file: active.and_then(|a| a.file.clone()),
         outcome,
         warnings,
+        loading,
     }
 }
 

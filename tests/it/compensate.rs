@@ -272,9 +272,30 @@ fn a_campaign_axis_sets_its_table_grid() {
     let table = std::fs::read_to_string(out.join("compensation/M/X.txt")).unwrap();
     let first: Vec<&str> = table.lines().take(2).collect();
     // Table 2's targets run from 6.711 mm: the grid starts at 0 (at or before the first
-    // target) and the ↑ trim is 0 there; ↓ keeps the reversal −(x̄↓ − x̄↑) = −3.86 µm.
-    assert_eq!(first[0], "0.000000 0.0000000 -0.0038600");
+    // target) and the ↑ trim is 0 there; ↓ keeps the reversal −(x̄↓ − x̄↑) = −3.86 µm,
+    // written as the actual position 0 − (−0.00386) mm (type 0).
+    assert_eq!(first[0], "0.000000 0.0000000 0.0038600");
     assert!(first[1].starts_with("20.000000 "), "{table}");
+    assert!(
+        stdout.contains("  M X: COMP_FILE_TYPE = 0: nominal, forward actual and reverse actual position (mm); LinuxCNC corrects by nominal − actual. In the joint's `[JOINT_n]` section of the INI: `COMP_FILE = compensation/MACHINE/AXIS.txt` and `COMP_FILE_TYPE = 0`;"),
+        "{stdout}"
+    );
+    // Asked for type 1, the trims themselves.
+    write("interval: 20, reference: 0, comp_file_type: 1");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(stdout.contains("  M X: COMP_FILE_TYPE = 1: "), "{stdout}");
+    let table = std::fs::read_to_string(out.join("compensation/M/X.txt")).unwrap();
+    assert!(
+        table.starts_with("0.000000 0.0000000 -0.0038600\n"),
+        "{table}"
+    );
     write("interval: 20, refrence: 0");
     let (code, stdout, _) = axcheck(&["check", campaign.to_str().unwrap()]);
     assert_eq!(code, 1);
@@ -331,4 +352,128 @@ fn a_rotary_axis_over_a_turn_gets_a_modulo_table() {
         let at = |p| table.correction(p, axcheck::units::Direction::Up);
         assert_eq!(at(1000.0), at(280.0), "{}", c.name());
     }
+}
+
+/// A LinuxCNC file is of type 0 unless type 1 is asked for (`--comp-file-type`,
+/// `compensation: {comp_file_type}`), and says so after its points (never before: the
+/// loader would stop there and load nothing), as does the console with the INI lines;
+/// a rotary joint's file and console say that the lookup does not wrap. The type is
+/// LinuxCNC's alone.
+#[test]
+fn linuxcnc_files_state_their_type_and_ini_lines() {
+    let dir = scratch("linuxcnc-type");
+    let out = dir.join("x.txt");
+    let out_arg = out.to_str().unwrap();
+    let data = "tests/data/iso230-2_table2.csv";
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "compensate",
+            data,
+            "--controller",
+            "linuxcnc",
+            "-o",
+            out_arg,
+        ];
+        args.extend(extra);
+        let (code, stdout, stderr) = axcheck(&args);
+        assert_eq!(code, 0, "{stdout}{stderr}");
+        (stdout, std::fs::read_to_string(&out).unwrap())
+    };
+    let (stdout, file) = run(&[]);
+    // Table 2's first target 6.711 mm: x̄↑ = −1.6 µm, x̄↓ = 2.26 µm (the means of its five
+    // runs), trims 0.0016 and −0.00226 mm: actual positions 6.711 − 0.0016 and
+    // 6.711 + 0.00226 mm in type 0.
+    assert!(file.starts_with("6.711000 6.7094000 6.7132600\n"), "{file}");
+    let points = file.lines().take_while(|l| !l.starts_with('#')).count();
+    let notes: Vec<&str> = file.lines().skip(points).collect();
+    assert!(notes.iter().all(|l| l.starts_with("# ")), "{file}");
+    assert!(
+        notes[0].starts_with(
+            "# COMP_FILE_TYPE = 0: nominal, forward actual and reverse actual position (mm)"
+        ),
+        "{file}"
+    );
+    assert!(
+        notes[0].contains("`COMP_FILE = <file>` and `COMP_FILE_TYPE = 0`"),
+        "{file}"
+    );
+    assert!(!file.contains("does not wrap"));
+    assert!(
+        stdout.contains(&format!("`COMP_FILE = {out_arg}` and `COMP_FILE_TYPE = 0`; read as type 1, each correction would be about the nominal position.\n")),
+        "{stdout}"
+    );
+    let (stdout, file) = run(&["--comp-file-type", "1"]);
+    assert!(
+        file.starts_with("6.711000 0.0016000 -0.0022600\n"),
+        "{file}"
+    );
+    assert!(file.contains("\n# COMP_FILE_TYPE = 1: nominal, forward trim and reverse trim (mm)"));
+    assert!(
+        stdout.contains(
+            "`COMP_FILE_TYPE = 1`; read as type 0 (LinuxCNC's default when the key is missing)"
+        ),
+        "{stdout}"
+    );
+    // A rotary joint: no modulo, over the positions measured (three turns here).
+    let rotary = "tests/data/compensation/rotary-three-turns.csv";
+    let (code, stdout, stderr) = axcheck(&[
+        "compensate",
+        rotary,
+        "--controller",
+        "linuxcnc",
+        "-o",
+        out_arg,
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let file = std::fs::read_to_string(&out).unwrap();
+    assert!(file.contains("\n# Rotary joint: LinuxCNC's comp lookup does not wrap (no modulo): the table covers joint positions 0 to 1080 deg; beyond them its end values are held.\n"), "{file}");
+    assert!(stdout.contains("Rotary joint: LinuxCNC's comp lookup does not wrap (no modulo): the table covers the joint positions it lists; beyond them its end values are held.\n"), "{stdout}");
+    for (extra, message) in [
+        (
+            ["--controller", "fanuc", "--comp-file-type", "1"],
+            "--comp-file-type: the comp file type is LinuxCNC's COMP_FILE_TYPE, not a setting of fanuc",
+        ),
+        (
+            ["--controller", "linuxcnc", "--comp-file-type", "2"],
+            "2 is not in 0..=1",
+        ),
+    ] {
+        let mut args = vec!["compensate", data];
+        args.extend(extra);
+        let (code, _, stderr) = axcheck(&args);
+        assert_ne!(code, 0);
+        assert!(stderr.contains(message), "{stderr}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `compensation: {comp_file_type}` is 0 or 1, and only where the machine's controller is
+/// LinuxCNC: `check` names the key.
+#[test]
+fn a_campaign_asks_for_a_comp_file_type_only_of_linuxcnc() {
+    let dir = scratch("comp-file-type");
+    std::fs::copy("tests/data/iso230-2_table2.csv", dir.join("data/x.csv")).unwrap();
+    let campaign = dir.join("campaign.yaml");
+    for (controller, value, message) in [
+        (
+            "fanuc",
+            "1",
+            "machines[0].axes[0].compensation.comp_file_type: LinuxCNC's COMP_FILE_TYPE, but the machine has controller fanuc",
+        ),
+        (
+            "linuxcnc",
+            "2",
+            "machines[0].axes[0].compensation.comp_file_type: expected LinuxCNC's COMP_FILE_TYPE, 0 (actual positions) or 1 (trims)",
+        ),
+    ] {
+        std::fs::write(
+            &campaign,
+            format!("campaign: {{name: comp}}\nmachines:\n  - id: M\n    controller: {controller}\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv, compensation: {{comp_file_type: {value}}}}}\n"),
+        )
+        .unwrap();
+        let (code, stdout, _) = axcheck(&["check", campaign.to_str().unwrap()]);
+        assert_eq!(code, 1, "{stdout}");
+        assert!(stdout.contains(message), "{stdout}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -182,13 +182,15 @@ fn round_trip(controller: &dyn Controller, a: &RandomAxis) -> Result<bool, TestC
     Ok(true)
 }
 
-/// Every controller: a thousand random tables it can hold, written and read back (the
-/// axes it refuses are drawn again, at most one in two).
+/// Every controller (and LinuxCNC's type 1 beside its type 0): a thousand random tables
+/// it can hold, written and read back (the axes it refuses are drawn again, at most one
+/// in two).
 #[test]
 fn every_controller_reads_back_a_thousand_random_tables() {
     use proptest::strategy::ValueTree;
     let strategy = random_axis();
-    for controller in CONTROLLERS {
+    let type_1: &dyn Controller = &compensate::controllers::linuxcnc::LinuxCnc::TYPE_1;
+    for controller in CONTROLLERS.iter().chain([&type_1]) {
         let mut runner = proptest::test_runner::TestRunner::deterministic();
         let (mut read, mut drawn) = (0, 0);
         while read < 1000 {

@@ -25,6 +25,8 @@ mod history;
 mod hostile_fs;
 mod iso230_2;
 mod layouts;
+#[cfg(unix)]
+mod linuxcnc_sim;
 mod options;
 mod outputs;
 mod placeholders;

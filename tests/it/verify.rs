@@ -147,13 +147,15 @@ fn the_cli_verifies_a_re_measurement() {
         &path("before.csv"),
         "--controller",
         "linuxcnc",
+        "--comp-file-type",
+        "1",
         "--active",
         "none",
         "-o",
         &path("x.txt"),
     ]);
-    // The same file with every trim negated: loaded by a user who read LinuxCNC's INI
-    // documentation rather than its code.
+    // The same file (type 1: trims) with every trim negated: loaded by a user who read
+    // LinuxCNC's INI documentation rather than its code.
     let table = std::fs::read_to_string(dir.join("x.txt")).unwrap();
     let negated: String = table
         .lines()

@@ -176,6 +176,12 @@ pub trait Controller: Sync {
     /// comments (each a line of text without the comment mark), or nowhere where it takes
     /// none.
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused>;
+    /// What the controller must be told to load a file of an axis of `kind` as written
+    /// (LinuxCNC: its type and INI lines), `<file>` standing for the file's path: the
+    /// listings print it with the table. Nothing by default.
+    fn loading(&self, _kind: AxisKind) -> Vec<String> {
+        Vec::new()
+    }
     /// The table a file holds, as the controller would load it: its points, the
     /// correction added in each direction (the correction convention of [`Table`], the
     /// format's sign undone), its place; what the controller would refuse, or read

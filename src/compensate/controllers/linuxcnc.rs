@@ -22,17 +22,126 @@
 //! after the line where the loader stops (it would not load them), positions that do not
 //! increase, more than 256 points.
 
+//! `linuxcnc`: a joint compensation file (`[JOINT_n] COMP_FILE = …`), one line per point,
+//! `nominal forward reverse`, in the joint's units (mm, or degrees on a rotary joint), of
+//! `COMP_FILE_TYPE = 0` by default (LinuxCNC's default when the key is missing:
+//! `inijoint.cc`, `findIntV("COMP_FILE_TYPE", …, 0, 0, 1)`) or `COMP_FILE_TYPE = 1` when
+//! asked (`--comp-file-type 1`, `compensation: {comp_file_type: 1}`).
+//!
+//! What LinuxCNC does with the file (LinuxCNC source, github.com/LinuxCNC/linuxcnc, the same
+//! at the commit Debian packages as 2.9.0~pre1, f1270d6ed7, and at master 5c41560e of
+//! 2026-08-22):
+//! - `usrmotLoadComp` (`src/emc/motion/usrmotintf.cc`) reads lines with
+//!   `sscanf("%lf %lf %lf")` and stops (`break`) at the first line that is not three
+//!   numbers: notes go after the points (a note first loads no point at all, silently).
+//!   Type 0 lines are `nominal forward_actual reverse_actual`, converted to trims as
+//!   `comp_forward = nom - fwd` ("convert to diffs"); type 1 lines are
+//!   `nominal forward_trim reverse_trim`, taken as they are. Read with the other type, a
+//!   file gives trims of about the nominal position (≈ 1190 mm at 1190 mm), which LinuxCNC
+//!   ramps in at up to half the joint's speed: the file's notes and every listing of it
+//!   state its type and the INI lines to set.
+//! - `EMCMOT_SET_JOINT_COMP` (`command.c`): nominal positions must increase ("compensation
+//!   values must increase"), at most 256 points (`EMCMOT_COMP_SIZE`, "too many compensation
+//!   entries"); the slope to the next point is computed there.
+//! - `compute_screw_comp` (`control.c`): the trim at the commanded joint position, linear
+//!   between points, the forward one while `vel_cmd > 0` and the reverse one while
+//!   `vel_cmd < 0` (kept when the joint stops), "is added to the joint_pos_cmd to create
+//!   motor_pos_cmd". So the trim is the correction, −x̄↑ forward and −x̄↓ reverse. With a
+//!   table, `BACKLASH` is not used.
+//! - The table (`motion.c`) is bounded by entries at −DBL_MAX and +DBL_MAX whose slopes
+//!   are 0: beyond the first and last points their values are held. The lookup compares
+//!   the joint position with the nominal ones and nothing else: no modulo, so a rotary
+//!   joint's table covers the positions it lists, and the notes say so. The trims and
+//!   slopes are held as `float` (`emcmot_comp_entry_t`, `motion.h`): about 7 significant
+//!   digits, 6e-10 mm on a trim of 0.01 mm.
+//!
+//! LinuxCNC's INI documentation (`docs/src/config/ini-config.adoc`, `[JOINT_n]`) calls
+//! type 1's values offsets "from nominal", with examples that read as the error rather than
+//! the correction; axcheck follows the code, and a real LinuxCNC 2.9 (the test
+//! `linuxcnc_sim`) applies each table as axcheck predicts, type 0 and 1, linear and rotary.
+//!
+//! Read back as the loader reads (text after the third number is ignored), type 0 or 1 as
+//! the note axcheck writes says (`# COMP_FILE_TYPE = 0: …`); a file without it is told by
+//! its size (a trim is near 0, an actual position near its nominal one; where the sizes do
+//! not tell, every nominal position near 0, type 1). Refused, with the line: a first line
+//! that is not three numbers (LinuxCNC would load no table), points after the line where
+//! the loader stops (it would not load them), positions that do not increase, more than
+//! 256 points.
+
 use super::controller::{
     Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable,
 };
 use super::reading::{self, Points, numbered};
 use crate::compensate::table::Table;
-use crate::units::{AxisKind, fmt_fixed};
+use crate::units::{AxisKind, fmt_fixed, fmt_position};
 
-pub struct LinuxCnc;
+/// The writer and reader of one `COMP_FILE_TYPE`.
+pub struct LinuxCnc {
+    file_type: FileType,
+}
+
+impl LinuxCnc {
+    /// Type 0, LinuxCNC's default: actual positions.
+    pub const TYPE_0: LinuxCnc = LinuxCnc {
+        file_type: FileType::Actual,
+    };
+    /// Type 1: trims.
+    pub const TYPE_1: LinuxCnc = LinuxCnc {
+        file_type: FileType::Trims,
+    };
+
+    /// The controller writing `COMP_FILE_TYPE = n` files, for n = 0 or 1.
+    pub fn of_type(n: u8) -> Option<&'static LinuxCnc> {
+        match n {
+            0 => Some(&Self::TYPE_0),
+            1 => Some(&Self::TYPE_1),
+            _ => None,
+        }
+    }
+
+    /// What the INI must say for this file, `<file>` standing for its path; for a rotary
+    /// joint, that the lookup does not wrap, over `covered` (first, last) when known.
+    fn notes(&self, kind: AxisKind, covered: Option<(f64, f64)>) -> Vec<String> {
+        let n = self.file_type.number();
+        let unit = kind.position_unit();
+        let (columns, other) = match self.file_type {
+            FileType::Actual => (
+                format!(
+                    "nominal, forward actual and reverse actual position ({unit}); LinuxCNC corrects by nominal − actual"
+                ),
+                "as type 1",
+            ),
+            FileType::Trims => (
+                format!(
+                    "nominal, forward trim and reverse trim ({unit}); LinuxCNC adds the trim to the commanded position"
+                ),
+                "as type 0 (LinuxCNC's default when the key is missing)",
+            ),
+        };
+        let mut notes = vec![format!(
+            "{TYPE_NOTE}{n}: {columns}. In the joint's `[JOINT_n]` section of the INI: `COMP_FILE = <file>` and `COMP_FILE_TYPE = {n}`; read {other}, each correction would be about the nominal position."
+        )];
+        if kind == AxisKind::Rotary {
+            let covers = covered.map_or("the joint positions it lists".to_string(), |(a, b)| {
+                format!(
+                    "joint positions {} to {} {unit}",
+                    fmt_position(a),
+                    fmt_position(b)
+                )
+            });
+            notes.push(format!(
+                "Rotary joint: LinuxCNC's comp lookup does not wrap (no modulo): the table covers {covers}; beyond them its end values are held."
+            ));
+        }
+        notes
+    }
+}
 
 /// Points per joint the motion controller holds (`EMCMOT_COMP_SIZE`).
 const MAX_POINTS: usize = 256;
+
+/// How axcheck's note naming the file's type starts, the type's number after it.
+const TYPE_NOTE: &str = "COMP_FILE_TYPE = ";
 
 impl Controller for LinuxCnc {
     fn name(&self) -> &'static str {
@@ -57,25 +166,36 @@ impl Controller for LinuxCnc {
         }
     }
 
+    /// Type 0 prints each actual position as the printed nominal one minus the trim, so
+    /// that the loader's `nom - fwd` gives the trim to the last digit.
     fn write(&self, table: &Table, notes: &[String]) -> Result<String, Refused> {
         super::finite(table)?;
         super::printed_increasing(&table.positions, 6)?;
         // Corrections in µm or arcsec, the file in mm or degrees.
-        let per_unit = match table.kind {
-            AxisKind::Linear => 1000.0,
-            AxisKind::Rotary => 3600.0,
-        };
+        let per_unit = table.kind.deviation_units_per_position_unit();
         let mut out = String::new();
         for ((p, u), d) in table.positions.iter().zip(&table.up).zip(&table.down) {
+            let nominal = fmt_fixed(*p, 6);
+            let printed: f64 = nominal.parse().unwrap_or(*p);
+            let column = |trim: f64| match self.file_type {
+                FileType::Trims => fmt_fixed(trim, 7),
+                FileType::Actual => fmt_fixed(printed - trim, 7),
+            };
             out.push_str(&format!(
-                "{} {} {}\n",
-                fmt_fixed(*p, 6),
-                fmt_fixed(u / per_unit, 7),
-                fmt_fixed(d / per_unit, 7)
+                "{nominal} {} {}\n",
+                column(u / per_unit),
+                column(d / per_unit)
             ));
         }
+        let covered = table.positions.first().zip(table.positions.last());
+        let own = self.notes(table.kind, covered.map(|(a, b)| (*a, *b)));
+        out.push_str(&super::commented("# ", &own));
         out.push_str(&super::commented("# ", notes));
         Ok(out)
+    }
+
+    fn loading(&self, kind: AxisKind) -> Vec<String> {
+        self.notes(kind, None)
     }
 
     /// `BACKLASH` is not used while a table is loaded (`control.c`): the reversal goes
@@ -97,9 +217,9 @@ impl Controller for LinuxCnc {
         }
         let nominal: Vec<f64> = rows.iter().map(|r| r[0]).collect();
         reading::increasing(&nominal, &lines, "nominal")?;
-        let trims = file_type(&rows);
+        let file_type = stated_type(text).unwrap_or_else(|| file_type(&rows));
         let per_unit = reading.kind.deviation_units_per_position_unit();
-        let trim = |r: &[f64; 3], k: usize| match trims {
+        let trim = |r: &[f64; 3], k: usize| match file_type {
             FileType::Trims => r[k] * per_unit,
             FileType::Actual => (r[0] - r[k]) * per_unit,
         };
@@ -175,12 +295,34 @@ fn three_numbers(line: &str) -> Option<[f64; 3]> {
 }
 
 /// The type of a comp file (`COMP_FILE_TYPE`).
-#[derive(Debug, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 enum FileType {
-    /// Type 1: the trims themselves.
-    Trims,
     /// Type 0: the actual positions, trims = nominal − actual.
     Actual,
+    /// Type 1: the trims themselves.
+    Trims,
+}
+
+impl FileType {
+    /// Its `COMP_FILE_TYPE`.
+    fn number(self) -> u8 {
+        match self {
+            FileType::Actual => 0,
+            FileType::Trims => 1,
+        }
+    }
+}
+
+/// The type axcheck's note states (`# COMP_FILE_TYPE = 0: …`), if the file has one.
+fn stated_type(text: &str) -> Option<FileType> {
+    numbered(text).find_map(|(_, line)| {
+        let rest = line.trim_start().strip_prefix('#')?.trim_start();
+        match rest.strip_prefix(TYPE_NOTE)?.split(':').next()? {
+            "0" => Some(FileType::Actual),
+            "1" => Some(FileType::Trims),
+            _ => None,
+        }
+    })
 }
 
 /// Type 0 when the second and third columns are far nearer the nominal positions than 0
@@ -206,37 +348,84 @@ mod tests {
 
     /// Targets 0, 30, 70, 100 mm; x̄↑ = 0, 3, −1, 2 µm; x̄↓ = x̄↑ + 2 µm; every 25 mm with
     /// the reference at 50 mm. Corrections −x̄↑ on the grid: 0, −2.5, −1, 0.5, −2 µm; zero at
-    /// 50 adds 1: trims ↑ 1, −1.5, 0, 1.5, −1 µm and ↓ two less, written in mm.
+    /// 50 adds 1: trims ↑ 1, −1.5, 0, 1.5, −1 µm and ↓ two less, written in mm: as they are
+    /// in type 1, as nominal − trim in type 0 (0.001 at 0 mm ↑ is −0.0010000). The file's
+    /// type and INI lines are its first notes, after the points.
     #[test]
-    fn golden_type_1_file_by_hand() {
+    fn golden_files_by_hand() {
         let data = irregular_linear();
         let settings = Settings {
             interval: Some(25.0),
             reference: Some(50.0),
             ..Default::default()
         };
-        let table = held_table(&LinuxCnc, &data, &settings).unwrap();
-        assert_eq!(
-            LinuxCnc.write(&table, &[]).unwrap(),
-            include_str!("../../../tests/data/compensation/linuxcnc-linear.txt")
-        );
+        let table = held_table(&LinuxCnc::TYPE_0, &data, &settings).unwrap();
+        let notes = ["Warning: a note".to_string()];
+        for (controller, golden) in [
+            (
+                &LinuxCnc::TYPE_0,
+                include_str!("../../../tests/data/compensation/linuxcnc-linear.txt"),
+            ),
+            (
+                &LinuxCnc::TYPE_1,
+                include_str!("../../../tests/data/compensation/linuxcnc-linear-type1.txt"),
+            ),
+        ] {
+            assert_eq!(controller.write(&table, &notes).unwrap(), golden);
+            let back = controller.read(golden, reading(AxisKind::Linear)).unwrap();
+            let read = back.up.iter().chain(&back.down);
+            for (r, t) in read.zip(table.up.iter().chain(&table.down)) {
+                assert!((r - t).abs() < 1e-9, "{r} µm read, {t} µm written");
+            }
+        }
         // A rotary joint in degrees: x̄↑ = −3.6″, 7.2″ → trims 0.001°, −0.002°.
         let rotary = axis(AxisKind::Rotary, &[0.0, 90.0], 2, |p, d| match d {
             Direction::Up if p == 0.0 => -3.6,
             Direction::Up => 7.2,
             Direction::Down => 0.0,
         });
-        let table = held_table(&LinuxCnc, &rotary, &Settings::default()).unwrap();
+        let table = held_table(&LinuxCnc::TYPE_0, &rotary, &Settings::default()).unwrap();
         assert_eq!(
-            LinuxCnc.write(&table, &[]).unwrap(),
-            "0.000000 0.0010000 0.0000000\n90.000000 -0.0020000 0.0000000\n"
+            LinuxCnc::TYPE_0.write(&table, &[]).unwrap(),
+            include_str!("../../../tests/data/compensation/linuxcnc-rotary.txt")
+        );
+    }
+
+    fn reading(kind: AxisKind) -> Reading<'static> {
+        Reading { kind, axis: None }
+    }
+
+    /// The type note decides where the sizes would not: `0 0.001 0.002` is trims of 1 and
+    /// 2 µm by size, and −1 and −2 µm as type 0 (nominal − actual) when the note says so;
+    /// a note before the points is not one (LinuxCNC would load nothing).
+    #[test]
+    fn the_type_note_decides() {
+        let points = "0 0.001 0.002\n0.5 0.001 0.002\n";
+        let by_size = LinuxCnc::TYPE_0
+            .read(points, reading(AxisKind::Linear))
+            .unwrap();
+        assert_eq!(by_size.up, [1.0, 1.0]);
+        for (note, up) in [
+            ("# COMP_FILE_TYPE = 0: x\n", -1.0),
+            ("# COMP_FILE_TYPE = 1: x\n", 1.0),
+        ] {
+            let t = LinuxCnc::TYPE_1
+                .read(&format!("{points}{note}"), reading(AxisKind::Linear))
+                .unwrap();
+            assert!((t.up[0] - up).abs() < 1e-9, "{note}: {:?}", t.up);
+        }
+        let first = format!("# COMP_FILE_TYPE = 0: x\n{points}");
+        assert!(
+            LinuxCnc::TYPE_0
+                .read(&first, reading(AxisKind::Linear))
+                .is_err()
         );
     }
 
     #[test]
     fn refuses_what_a_joint_cannot_hold() {
         let data = crate::compensate::testing::straight(0.0, 1.0, MAX_POINTS + 1);
-        let err = crate::compensate::held_table(&LinuxCnc, &data, &Default::default())
+        let err = crate::compensate::held_table(&LinuxCnc::TYPE_0, &data, &Default::default())
             .unwrap_err()
             .to_string();
         assert_eq!(

@@ -19,7 +19,7 @@ pub use controller::*;
 /// Every controller, by name.
 pub const CONTROLLERS: &[&dyn Controller] = &[
     &csv::Csv,
-    &linuxcnc::LinuxCnc,
+    &linuxcnc::LinuxCnc::TYPE_0,
     &siemens_840d::Siemens840d,
     &fanuc::Fanuc,
     &heidenhain::Heidenhain,
@@ -36,4 +36,27 @@ pub fn find(name: &str) -> Option<&'static dyn Controller> {
 /// The controllers' names, for messages.
 pub fn names() -> Vec<&'static str> {
     CONTROLLERS.iter().map(|c| c.name()).collect()
+}
+
+/// `controller` writing LinuxCNC's `COMP_FILE_TYPE = file_type` (0 or 1; `None`: as it
+/// is), or why not: the type is LinuxCNC's alone.
+pub fn with_comp_file_type(
+    controller: &'static dyn Controller,
+    file_type: Option<u8>,
+) -> Result<&'static dyn Controller, String> {
+    let Some(n) = file_type else {
+        return Ok(controller);
+    };
+    if controller.name() != linuxcnc::LinuxCnc::TYPE_0.name() {
+        return Err(format!(
+            "the comp file type is LinuxCNC's COMP_FILE_TYPE, not a setting of {}",
+            controller.name()
+        ));
+    }
+    match linuxcnc::LinuxCnc::of_type(n) {
+        Some(c) => Ok(c),
+        None => Err(format!(
+            "LinuxCNC's COMP_FILE_TYPE is 0 (actual positions) or 1 (trims), not {n}"
+        )),
+    }
 }

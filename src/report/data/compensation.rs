@@ -197,7 +197,19 @@ fn table_facts(c: &Compensation, table: &Table, e: &Evaluation) -> Vec<Row> {
                 .modulo_deg
                 .map(|r| format!("one revolution, {}", pos(AxisKind::Rotary, r))),
         ),
+        ("Loading", loading(c)),
     ])
+}
+
+/// What the controller must be told to load the file (LinuxCNC's type and INI lines).
+fn loading(c: &Compensation) -> Option<String> {
+    let path = format!("compensation/MACHINE/AXIS.{}", c.extension);
+    let lines: Vec<String> = c
+        .loading
+        .iter()
+        .map(|l| l.replace("<file>", &path))
+        .collect();
+    (!lines.is_empty()).then(|| lines.join(" "))
 }
 
 /// What the table builds on: the active table, nothing, or an unknown state.
