@@ -1,27 +1,3 @@
-//! `linuxcnc`: a joint compensation file of type 1 (`[JOINT_n] COMP_FILE = …`,
-//! `COMP_FILE_TYPE = 1`): one line per point, `nominal forward_trim reverse_trim`, in the
-//! joint's units (mm, or degrees on a rotary joint), three numbers and nothing else (the
-//! loader stops at the first line that is not three numbers: no header, no comment).
-//!
-//! LinuxCNC adds the trim to the commanded joint position, interpolating linearly between
-//! points on the commanded position and holding the end values beyond them, the forward
-//! trim when moving in the positive direction (LinuxCNC source: `src/emc/motion/control.c`,
-//! `compute_screw_comp`; the file read by `usrmotLoadComp` in `usrmotintf.cc`): so the
-//! trim is the correction, −x̄↑ forward and −x̄↓ reverse. Nominal positions must increase
-//! strictly; at most 256 points per joint (`EMCMOT_COMP_SIZE`). With a table, `BACKLASH`
-//! is not used: the reversal is in the two columns. Notes go after the points, as `# `
-//! lines: the loader stops reading at the first of them.
-//!
-//! Read back as the loader reads (`sscanf("%lf %lf %lf")` per line, `break` at the first
-//! line that is not three numbers; text after the third number is ignored): type 1
-//! (`nominal forward_trim reverse_trim`) and type 0 (`nominal forward_actual
-//! reverse_actual`, trims = nominal − actual), told apart by their size, as the file does
-//! not say which (a trim is near 0, an actual position near its nominal one; where the
-//! sizes do not tell, every nominal position near 0, type 1, which axcheck writes). Refused, with
-//! the line: a first line that is not three numbers (LinuxCNC would load no table), points
-//! after the line where the loader stops (it would not load them), positions that do not
-//! increase, more than 256 points.
-
 //! `linuxcnc`: a joint compensation file (`[JOINT_n] COMP_FILE = …`), one line per point,
 //! `nominal forward reverse`, in the joint's units (mm, or degrees on a rotary joint), of
 //! `COMP_FILE_TYPE = 0` by default (LinuxCNC's default when the key is missing:
@@ -47,7 +23,11 @@
 //!   between points, the forward one while `vel_cmd > 0` and the reverse one while
 //!   `vel_cmd < 0` (kept when the joint stops), "is added to the joint_pos_cmd to create
 //!   motor_pos_cmd". So the trim is the correction, −x̄↑ forward and −x̄↓ reverse. With a
-//!   table, `BACKLASH` is not used.
+//!   table, `BACKLASH` is not used. The value is ramped in (`backlash_filt`) at up to half
+//!   the joint's velocity and acceleration, and the ramp can stop short of it by up to
+//!   `MAX_ACCELERATION` × servo period² / 2 (from rest, a step between a quarter and a half
+//!   of that is not ramped at all): a property of the controller, not of the table, seen
+//!   on the real LinuxCNC of `linuxcnc_sim` and not in the prediction.
 //! - The table (`motion.c`) is bounded by entries at −DBL_MAX and +DBL_MAX whose slopes
 //!   are 0: beyond the first and last points their values are held. The lookup compares
 //!   the joint position with the nominal ones and nothing else: no modulo, so a rotary
