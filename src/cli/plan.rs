@@ -168,7 +168,8 @@ pub fn run(args: &Args) -> Result<String> {
         };
         let program = dialect.write(&job)?;
         if args.coordinates == Coordinates::Work {
-            let _ = writeln!(text, "\nNote: {}.", programs::work_note(&address));
+            let [work, tables] = programs::work_note(&address);
+            let _ = writeln!(text, "\nNote: {work}. {tables}.");
         }
         match &args.out {
             Some(path) => written(path, &program, &mut text, "part program")?,

@@ -563,9 +563,14 @@ fn work_coordinates_are_said_to_need_the_offset_added() {
     ];
     let (code, out, err) = axcheck(&[&args[..], &["--coordinates", "work"]].concat());
     assert_eq!(code, 0, "{err}");
-    let note = "Work coordinates, as --coordinates work asks: every position is in the active work offset; the compensation tables axcheck writes are in machine positions, so add the active work offset of axis X to each table position";
-    assert!(out.contains(&format!("\nNote: {note}.\n")), "{out}");
-    assert!(out.contains(&format!("\n; {note}\n")), "{out}");
+    let work =
+        "Work coordinates, as --coordinates work asks: every position is in the active work offset";
+    let tables = "The compensation tables axcheck writes are in machine positions: add the active work offset of axis X to each table position";
+    assert!(
+        out.contains(&format!("\nNote: {work}. {tables}.\n")),
+        "{out}"
+    );
+    assert!(out.contains(&format!("\n; {work}\n; {tables}\n")), "{out}");
     assert!(
         out.contains("\nG1 X5.000 F1000.000 ; start at 5.000 mm\n"),
         "{out}"

@@ -121,14 +121,17 @@ impl Dialect for Fanuc {
         (first, vec![setup(job)])
     }
 
-    fn machine_coordinates(&self, job: &Job) -> String {
-        format!(
-            "G53 is not used, as FANUC moves G53 blocks at rapid traverse; G54 is selected, and the G54 and external EXT offsets of axis {a}, any G52 or G92 shift of it and any tool offset acting on it must be 0: the absolute position display then equals the machine position",
-            a = job.axis
-        )
+    fn machine_coordinates(&self, job: &Job) -> Vec<String> {
+        vec![
+            "G53 is not used, as FANUC moves G53 blocks at rapid traverse; G54 is selected".into(),
+            format!(
+                "The G54 and external EXT offsets of axis {}, any G52 or G92 shift of it and any tool offset acting on it must be 0: the absolute position display then equals the machine position",
+                job.axis
+            ),
+        ]
     }
 
-    fn lathe(&self, job: &Job) -> Result<String, ProgramError> {
+    fn lathe(&self, job: &Job) -> Result<Vec<String>, ProgramError> {
         let system = job.lathe.unwrap_or_default();
         let words = match system {
             GcodeSystem::A => {
@@ -141,12 +144,12 @@ impl Dialect for Fanuc {
         let x = if diameter(job) {
             "X is programmed in diameter, parameter 1006 bit 3 DIA = 1: every X word is twice the slide's position, the comments give the slide's position"
         } else {
-            "only X is programmed in diameter; this axis's words are its positions"
+            "Only X is programmed in diameter; this axis's words are its positions"
         };
-        Ok(format!(
-            "Lathe, G-code system {}: {words}; {x}",
-            system.letter()
-        ))
+        Ok(vec![
+            format!("Lathe, G-code system {}: {words}", system.letter()),
+            x.to_string(),
+        ])
     }
 
     /// The start with `G90 G01` (set again, as the program may follow another; `G01` alone

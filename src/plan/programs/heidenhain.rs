@@ -62,11 +62,11 @@ impl Dialect for Heidenhain {
         (vec![format!("BEGIN PGM {} MM", job.name)], Vec::new())
     }
 
-    fn machine_coordinates(&self, _job: &Job) -> String {
-        "M91 in every absolute L block references that block to the machine datum".into()
+    fn machine_coordinates(&self, _job: &Job) -> Vec<String> {
+        vec!["M91 in every absolute L block references that block to the machine datum".into()]
     }
 
-    fn lathe(&self, _job: &Job) -> Result<String, ProgramError> {
+    fn lathe(&self, _job: &Job) -> Result<Vec<String>, ProgramError> {
         Err(ProgramError(
             "no HEIDENHAIN program is written for a lathe: whether the TNC's turning mode (FUNCTION MODE TURN) programs X as a diameter is not confirmed here; write it by hand, or drop --lathe if the axis moves in milling mode".into(),
         ))

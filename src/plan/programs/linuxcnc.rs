@@ -57,12 +57,17 @@ impl Dialect for LinuxCnc {
         (vec!["%".to_string()], vec![setup.to_string()])
     }
 
-    fn machine_coordinates(&self, _job: &Job) -> String {
-        "G53 in every absolute move suspends the G5x, G92 and tool offsets for that block; LinuxCNC refuses G53 in G91, so the incremental moves carry none, and they do not depend on offsets".into()
+    fn machine_coordinates(&self, _job: &Job) -> Vec<String> {
+        vec![
+            "G53 in every absolute move suspends the G5x, G92 and tool offsets for that block".into(),
+            "LinuxCNC refuses G53 in G91, so the incremental moves carry none; they do not depend on offsets".into(),
+        ]
     }
 
-    fn lathe(&self, _job: &Job) -> Result<String, ProgramError> {
-        Ok("Lathe: G18 G8, X is programmed in radius, the slide's position".into())
+    fn lathe(&self, _job: &Job) -> Result<Vec<String>, ProgramError> {
+        Ok(vec![
+            "Lathe: G18 G8, X is programmed in radius, the slide's position".into(),
+        ])
     }
 
     /// `G53 G1 X…` absolute in machine coordinates, `G1 X…` otherwise.

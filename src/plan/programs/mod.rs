@@ -223,7 +223,7 @@ impl<'a> Job<'a> {
 
     /// The lines that describe the plan, for the program's head: `means` is how the
     /// control addresses machine coordinates, `lathe` how it programs X on a lathe.
-    pub fn description(&self, means: &str, lathe: Option<&str>) -> Vec<String> {
+    pub fn description(&self, means: &[String], lathe: &[String]) -> Vec<String> {
         let p = self.plan;
         let unit = p.axis.kind.position_unit();
         let mut out = vec![
@@ -249,11 +249,14 @@ impl<'a> Job<'a> {
                 .enumerate()
                 .map(|(i, t)| format!("T{} = {} {unit}", i + 1, fmt_fixed(*t, 3))),
         );
-        out.push(match self.coordinates {
-            Coordinates::Machine => format!("Machine coordinates: {means}"),
-            Coordinates::Work => work_note(self.axis),
-        });
-        out.extend(lathe.map(str::to_string));
+        match self.coordinates {
+            Coordinates::Machine => out.extend(means.iter().enumerate().map(|(k, m)| match k {
+                0 => format!("Machine coordinates: {m}"),
+                _ => m.clone(),
+            })),
+            Coordinates::Work => out.extend(work_note(self.axis)),
+        }
+        out.extend(lathe.iter().cloned());
         out.extend(self.rotary_notes());
         out.push(format!(
             "Only axis {} moves: no block changes a tool, a tool length or an offset",
@@ -275,10 +278,11 @@ impl<'a> Job<'a> {
         if self.continuous_rotary() {
             let start = start_position(self.plan);
             out.push(format!(
-                "The axis is continuous, it turns freely: the start at {} deg is written as its angle within one turn, {} deg, which modulo, roll-over and shortest-path axes reach alike; the comments give the unwrapped positions",
+                "The axis is continuous, it turns freely: the start at {} deg is written as its angle within one turn, {} deg",
                 number(start),
                 number(within_turn(start))
             ));
+            out.push("Modulo, roll-over and shortest-path axes reach that angle alike; the comments give the unwrapped positions".into());
         } else {
             let [a, b] = travel_ends(self.plan.axis.travel);
             out.push(format!(
@@ -292,10 +296,14 @@ impl<'a> Job<'a> {
 }
 
 /// The head's note on work coordinates (and the console's).
-pub fn work_note(axis: &str) -> String {
-    format!(
-        "Work coordinates, as --coordinates work asks: every position is in the active work offset; the compensation tables axcheck writes are in machine positions, so add the active work offset of axis {axis} to each table position"
-    )
+pub fn work_note(axis: &str) -> [String; 2] {
+    [
+        "Work coordinates, as --coordinates work asks: every position is in the active work offset"
+            .into(),
+        format!(
+            "The compensation tables axcheck writes are in machine positions: add the active work offset of axis {axis} to each table position"
+        ),
+    ]
 }
 
 /// A control's syntax: its own words for the program's frame, moves, dwell and comments;
@@ -311,10 +319,10 @@ pub trait Dialect: Sync {
     fn comment(&self, text: &str) -> String;
     /// The program's first lines (before the description) and the modal set-up after it.
     fn begin(&self, job: &Job) -> (Vec<String>, Vec<String>);
-    /// How the program addresses machine coordinates, for the head.
-    fn machine_coordinates(&self, job: &Job) -> String;
+    /// How the program addresses machine coordinates, for the head (a line each).
+    fn machine_coordinates(&self, job: &Job) -> Vec<String>;
     /// How X is programmed on a lathe, for the head, or why no lathe program is written.
-    fn lathe(&self, job: &Job) -> Result<String, ProgramError>;
+    fn lathe(&self, job: &Job) -> Result<Vec<String>, ProgramError>;
     /// The move of `block` (a [`Block::Move`]): absolute, or incremental on a rotary axis
     /// after the start; `feed` on the first move only (every control keeps it).
     fn move_to(&self, job: &Job, block: &Block, feed: Option<f64>) -> Vec<String>;
@@ -339,12 +347,16 @@ pub trait Dialect: Sync {
 /// or the machine, or a move leaves the travel of an axis that is not continuous.
 pub fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, ProgramError> {
     d.address(job)?;
-    let lathe = job.lathe.map(|_| d.lathe(job)).transpose()?;
+    let lathe = job
+        .lathe
+        .map(|_| d.lathe(job))
+        .transpose()?
+        .unwrap_or_default();
     check_travel(job)?;
     let (first, setup) = d.begin(job);
     let mut lines = first;
     let means = d.machine_coordinates(job);
-    let head = job.description(&means, lathe.as_deref());
+    let head = job.description(&means, &lathe);
     lines.extend(head.iter().map(|t| d.comment(t)));
     lines.push(d.comment(&format!("Not confirmed: {}", d.unconfirmed(job))));
     lines.extend(setup);

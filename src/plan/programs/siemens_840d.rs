@@ -62,15 +62,20 @@ impl Dialect for Siemens840d {
         (first, vec![setup.to_string()])
     }
 
-    fn machine_coordinates(&self, job: &Job) -> String {
-        format!(
-            "SUPA in every absolute block suppresses the zero offsets and frames (settable, programmable, base) for that block; no tool offset may act on axis {} (SUPA keeps it unless MD10760 G53_TOOLCORR = 1)",
-            job.axis
-        )
+    fn machine_coordinates(&self, job: &Job) -> Vec<String> {
+        vec![
+            "SUPA in every absolute block suppresses the zero offsets and frames (settable, programmable, base) for that block".into(),
+            format!(
+                "No tool offset may act on axis {}: SUPA keeps it unless MD10760 G53_TOOLCORR = 1",
+                job.axis
+            ),
+        ]
     }
 
-    fn lathe(&self, _job: &Job) -> Result<String, ProgramError> {
-        Ok("Lathe: G18 DIAMOF, X is programmed in radius, the slide's position".into())
+    fn lathe(&self, _job: &Job) -> Result<Vec<String>, ProgramError> {
+        Ok(vec![
+            "Lathe: G18 DIAMOF, X is programmed in radius, the slide's position".into(),
+        ])
     }
 
     /// `G1 SUPA X…` absolute in machine coordinates, `G1 X…` otherwise.

@@ -90,12 +90,15 @@ impl Dialect for TwinCat {
         (vec![format!("% {}", job.name)], setup)
     }
 
-    fn machine_coordinates(&self, _job: &Job) -> String {
-        "#SUPPRESS OFFSETS in every absolute move suppresses the zero, G92, preset, clamping, tool, measuring and manual offsets for that block, at the G01 feed set before it".into()
+    fn machine_coordinates(&self, _job: &Job) -> Vec<String> {
+        vec![
+            "#SUPPRESS OFFSETS in every absolute move suppresses the zero, G92, preset, clamping, tool, measuring and manual offsets for that block".into(),
+            "It moves at the G01 feed set before it".into(),
+        ]
     }
 
-    fn lathe(&self, _job: &Job) -> Result<String, ProgramError> {
-        Ok("Lathe: G18 G52, X is programmed in radius (diameter programming deselected), the slide's position".into())
+    fn lathe(&self, _job: &Job) -> Result<Vec<String>, ProgramError> {
+        Ok(vec!["Lathe: G18 G52, X is programmed in radius (diameter programming deselected), the slide's position".into()])
     }
 
     /// `#SUPPRESS OFFSETS X…` absolute in machine coordinates (the feed set before it),

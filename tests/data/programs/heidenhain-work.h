@@ -5,64 +5,65 @@
 4 ;T1 = 10.000 mm
 5 ;T2 = 55.300 mm
 6 ;T3 = 100.000 mm
-7 ;Work coordinates, as --coordinates work asks: every position is in the active work offset; the compensation tables axcheck writes are in machine positions, so add the active work offset of axis X to each table position
-8 ;Only axis X moves: no block changes a tool, a tool length or an offset
-9 ;Check the axis address, the travel and the feed; run it once without the laser first
-10 ;Not confirmed: the cycle 9 text in other dialog languages; comments after an L block; whether M91 blocks leave out the tool length on TNC 640
-11 ;start at 5.000 mm
-12 L X+5.000 R0 F1000.000
-13 ;T1 up, run 1 at 10.000 mm
-14 L X+10.000
-15 CYCL DEF 9.0 DWELL TIME
-16 CYCL DEF 9.1 DWELL 2.000
-17 ;T2 up, run 1 at 55.300 mm
-18 L X+55.300
-19 CYCL DEF 9.0 DWELL TIME
-20 CYCL DEF 9.1 DWELL 2.000
-21 ;T3 up, run 1 at 100.000 mm
-22 L X+100.000
-23 CYCL DEF 9.0 DWELL TIME
-24 CYCL DEF 9.1 DWELL 2.000
-25 ;overrun at 105.000 mm
-26 L X+105.000
-27 ;T3 down, run 1 at 100.000 mm
-28 L X+100.000
-29 CYCL DEF 9.0 DWELL TIME
-30 CYCL DEF 9.1 DWELL 2.000
-31 ;T2 down, run 1 at 55.300 mm
-32 L X+55.300
-33 CYCL DEF 9.0 DWELL TIME
-34 CYCL DEF 9.1 DWELL 2.000
-35 ;T1 down, run 1 at 10.000 mm
-36 L X+10.000
-37 CYCL DEF 9.0 DWELL TIME
-38 CYCL DEF 9.1 DWELL 2.000
-39 ;overrun at 5.000 mm
-40 L X+5.000
-41 ;T1 up, run 2 at 10.000 mm
-42 L X+10.000
-43 CYCL DEF 9.0 DWELL TIME
-44 CYCL DEF 9.1 DWELL 2.000
-45 ;T2 up, run 2 at 55.300 mm
-46 L X+55.300
-47 CYCL DEF 9.0 DWELL TIME
-48 CYCL DEF 9.1 DWELL 2.000
-49 ;T3 up, run 2 at 100.000 mm
-50 L X+100.000
-51 CYCL DEF 9.0 DWELL TIME
-52 CYCL DEF 9.1 DWELL 2.000
-53 ;overrun at 105.000 mm
-54 L X+105.000
-55 ;T3 down, run 2 at 100.000 mm
-56 L X+100.000
-57 CYCL DEF 9.0 DWELL TIME
-58 CYCL DEF 9.1 DWELL 2.000
-59 ;T2 down, run 2 at 55.300 mm
-60 L X+55.300
-61 CYCL DEF 9.0 DWELL TIME
-62 CYCL DEF 9.1 DWELL 2.000
-63 ;T1 down, run 2 at 10.000 mm
-64 L X+10.000
-65 CYCL DEF 9.0 DWELL TIME
-66 CYCL DEF 9.1 DWELL 2.000
-67 END PGM ISO230X MM
+7 ;Work coordinates, as --coordinates work asks: every position is in the active work offset
+8 ;The compensation tables axcheck writes are in machine positions: add the active work offset of axis X to each table position
+9 ;Only axis X moves: no block changes a tool, a tool length or an offset
+10 ;Check the axis address, the travel and the feed; run it once without the laser first
+11 ;Not confirmed: the cycle 9 text in other dialog languages; comments after an L block; whether M91 blocks leave out the tool length on TNC 640
+12 ;start at 5.000 mm
+13 L X+5.000 R0 F1000.000
+14 ;T1 up, run 1 at 10.000 mm
+15 L X+10.000
+16 CYCL DEF 9.0 DWELL TIME
+17 CYCL DEF 9.1 DWELL 2.000
+18 ;T2 up, run 1 at 55.300 mm
+19 L X+55.300
+20 CYCL DEF 9.0 DWELL TIME
+21 CYCL DEF 9.1 DWELL 2.000
+22 ;T3 up, run 1 at 100.000 mm
+23 L X+100.000
+24 CYCL DEF 9.0 DWELL TIME
+25 CYCL DEF 9.1 DWELL 2.000
+26 ;overrun at 105.000 mm
+27 L X+105.000
+28 ;T3 down, run 1 at 100.000 mm
+29 L X+100.000
+30 CYCL DEF 9.0 DWELL TIME
+31 CYCL DEF 9.1 DWELL 2.000
+32 ;T2 down, run 1 at 55.300 mm
+33 L X+55.300
+34 CYCL DEF 9.0 DWELL TIME
+35 CYCL DEF 9.1 DWELL 2.000
+36 ;T1 down, run 1 at 10.000 mm
+37 L X+10.000
+38 CYCL DEF 9.0 DWELL TIME
+39 CYCL DEF 9.1 DWELL 2.000
+40 ;overrun at 5.000 mm
+41 L X+5.000
+42 ;T1 up, run 2 at 10.000 mm
+43 L X+10.000
+44 CYCL DEF 9.0 DWELL TIME
+45 CYCL DEF 9.1 DWELL 2.000
+46 ;T2 up, run 2 at 55.300 mm
+47 L X+55.300
+48 CYCL DEF 9.0 DWELL TIME
+49 CYCL DEF 9.1 DWELL 2.000
+50 ;T3 up, run 2 at 100.000 mm
+51 L X+100.000
+52 CYCL DEF 9.0 DWELL TIME
+53 CYCL DEF 9.1 DWELL 2.000
+54 ;overrun at 105.000 mm
+55 L X+105.000
+56 ;T3 down, run 2 at 100.000 mm
+57 L X+100.000
+58 CYCL DEF 9.0 DWELL TIME
+59 CYCL DEF 9.1 DWELL 2.000
+60 ;T2 down, run 2 at 55.300 mm
+61 L X+55.300
+62 CYCL DEF 9.0 DWELL TIME
+63 CYCL DEF 9.1 DWELL 2.000
+64 ;T1 down, run 2 at 10.000 mm
+65 L X+10.000
+66 CYCL DEF 9.0 DWELL TIME
+67 CYCL DEF 9.1 DWELL 2.000
+68 END PGM ISO230X MM

@@ -5,9 +5,11 @@
 ; T1 = 0.000 deg
 ; T2 = 90.000 deg
 ; T3 = 180.000 deg
-; Machine coordinates: #SUPPRESS OFFSETS in every absolute move suppresses the zero, G92, preset, clamping, tool, measuring and manual offsets for that block, at the G01 feed set before it
+; Machine coordinates: #SUPPRESS OFFSETS in every absolute move suppresses the zero, G92, preset, clamping, tool, measuring and manual offsets for that block
+; It moves at the G01 feed set before it
 ; Rotary axis: after the start every move is incremental, so its sign is its direction whatever the axis's modulo or shortest-path setting
-; The axis is continuous, it turns freely: the start at -5.000 deg is written as its angle within one turn, 355.000 deg, which modulo, roll-over and shortest-path axes reach alike; the comments give the unwrapped positions
+; The axis is continuous, it turns freely: the start at -5.000 deg is written as its angle within one turn, 355.000 deg
+; Modulo, roll-over and shortest-path axes reach that angle alike; the comments give the unwrapped positions
 ; Only axis C moves: no block changes a tool, a tool length or an offset
 ; Check the axis address, the travel and the feed; run it once without the laser first
 ; Not confirmed: #SUPPRESS OFFSETS with a multi-letter axis name and after a G01 F block of its own; not run on a control

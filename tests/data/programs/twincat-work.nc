@@ -5,7 +5,8 @@
 ; T1 = 10.000 mm
 ; T2 = 55.300 mm
 ; T3 = 100.000 mm
-; Work coordinates, as --coordinates work asks: every position is in the active work offset; the compensation tables axcheck writes are in machine positions, so add the active work offset of axis X to each table position
+; Work coordinates, as --coordinates work asks: every position is in the active work offset
+; The compensation tables axcheck writes are in machine positions: add the active work offset of axis X to each table position
 ; Only axis X moves: no block changes a tool, a tool length or an offset
 ; Check the axis address, the travel and the feed; run it once without the laser first
 ; Not confirmed: not run on a control

@@ -5,7 +5,8 @@
 ; T1 = 10.000 mm
 ; T2 = 55.300 mm
 ; T3 = 100.000 mm
-; Machine coordinates: #SUPPRESS OFFSETS in every absolute move suppresses the zero, G92, preset, clamping, tool, measuring and manual offsets for that block, at the G01 feed set before it
+; Machine coordinates: #SUPPRESS OFFSETS in every absolute move suppresses the zero, G92, preset, clamping, tool, measuring and manual offsets for that block
+; It moves at the G01 feed set before it
 ; Only axis X moves: no block changes a tool, a tool length or an offset
 ; Check the axis address, the travel and the feed; run it once without the laser first
 ; Not confirmed: #SUPPRESS OFFSETS with a multi-letter axis name and after a G01 F block of its own; not run on a control
