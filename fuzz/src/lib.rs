@@ -245,12 +245,17 @@ fn plan_file(text: &str) {
         AxisKind::Rotary => "C",
     };
     for dialect in programs::DIALECTS {
-        let job = programs::Job {
-            plan: &plan,
-            axis,
-            name: "FUZZ",
-        };
-        let _ = dialect.write(&job);
+        for (coordinates, lathe) in [
+            (programs::Coordinates::Machine, None),
+            (programs::Coordinates::Work, Some(programs::GcodeSystem::A)),
+        ] {
+            let job = programs::Job {
+                coordinates,
+                lathe,
+                ..programs::Job::new(&plan, axis, "FUZZ")
+            };
+            let _ = dialect.write(&job);
+        }
     }
     let _ = (laser::readings_csv(&plan), laser::rtl_targets(&plan));
 }

@@ -118,6 +118,10 @@ pub struct AxisRaw {
     /// Axis travel (clause 2.1), mm or deg.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub travel: Option<Travel>,
+    /// A rotary axis that turns freely (a table with no end stops): planned over its whole
+    /// travel with overruns beyond its ends; any other axis keeps every move inside it.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub continuous: bool,
     /// Measurement travel (clause 2.2), [first, last], mm or deg.
     #[serde(
         default,

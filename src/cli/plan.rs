@@ -6,6 +6,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use axcheck::axis_model::Cycle;
 use axcheck::campaign::Campaign;
 use axcheck::evaluate::StandardId;
+use axcheck::plan::programs::{Coordinates, GcodeSystem};
 use axcheck::plan::{self, Axis, Motion, Plan, laser, programs};
 use axcheck::units::{AxisKind, Travel, fmt_fixed};
 use std::fmt::Write;
@@ -72,6 +73,21 @@ pub struct Args {
     /// The part program's control: fanuc, siemens-840d, heidenhain, linuxcnc, twincat.
     #[arg(long)]
     program: Option<String>,
+    /// A rotary axis that turns freely: measured over its whole travel with overruns
+    /// beyond its ends (any other axis keeps every move inside its travel).
+    #[arg(long)]
+    continuous: bool,
+    /// The program's coordinates: machine (default: each control's machine-coordinate
+    /// form) or work (the active work offset, which the tables then need added).
+    #[arg(long, value_parser = parse_coordinates, default_value = "machine")]
+    coordinates: Coordinates,
+    /// The machine is a lathe (a campaign machine whose type says lathe or turning is
+    /// one): X in radius where the control has a radius mode, in diameter on FANUC.
+    #[arg(long)]
+    lathe: bool,
+    /// FANUC lathe G-code system: a (default), b or c.
+    #[arg(long, value_parser = parse_gcode_system)]
+    gcode_system: Option<GcodeSystem>,
     /// The program's name (default: the output file's name, else ISO230 and the axis).
     #[arg(long)]
     name: Option<String>,
@@ -98,6 +114,14 @@ fn parse_kind(text: &str) -> Result<AxisKind, String> {
     }
 }
 
+fn parse_coordinates(text: &str) -> Result<Coordinates, String> {
+    Coordinates::parse(text).ok_or_else(|| format!("expected machine or work, got `{text}`"))
+}
+
+fn parse_gcode_system(text: &str) -> Result<GcodeSystem, String> {
+    GcodeSystem::parse(text).ok_or_else(|| format!("expected a, b or c, got `{text}`"))
+}
+
 fn parse_cycle(text: &str) -> Result<Cycle, String> {
     match text {
         "standard" => Ok(Cycle::Standard),
@@ -122,7 +146,8 @@ fn parse_pair(text: &str, what: &str) -> Result<Vec<f64>> {
 
 /// Runs `plan`: writes what was asked and returns the console's text.
 pub fn run(args: &Args) -> Result<String> {
-    let (plan, address) = make(args)?;
+    let made = make(args)?;
+    let plan = made.plan;
     let mut text = table(&plan);
     if let Some(name) = &args.program {
         let dialect = programs::find(name).ok_or_else(|| {
@@ -131,16 +156,21 @@ pub fn run(args: &Args) -> Result<String> {
                 programs::names().join(", ")
             )
         })?;
-        let address = address.ok_or_else(|| {
+        let address = made.address.ok_or_else(|| {
             anyhow!("give the axis's address on the control with --axis (X, Y, Z, C …)")
         })?;
         let name = program_name(args, &address);
+        let lathe = lathe_of(args, made.lathe)?;
         let job = programs::Job {
-            plan: &plan,
-            axis: &address,
-            name: &name,
+            coordinates: args.coordinates,
+            lathe,
+            ..programs::Job::new(&plan, &address, &name)
         };
         let program = dialect.write(&job)?;
+        if args.coordinates == Coordinates::Work {
+            let [work, tables] = programs::work_note(&address);
+            let _ = writeln!(text, "\nNote: {work}. {tables}.");
+        }
         match &args.out {
             Some(path) => written(path, &program, &mut text, "part program")?,
             None => text.push_str(&program),
@@ -196,27 +226,61 @@ fn program_name(args: &Args, address: &str) -> String {
         .unwrap_or_else(|| format!("ISO230{address}"))
 }
 
+/// The lathe's G-code system when the machine is a lathe (`--lathe`, or a campaign
+/// machine's type); `--gcode-system` only with one.
+fn lathe_of(args: &Args, campaign_lathe: bool) -> Result<Option<GcodeSystem>> {
+    let lathe = args.lathe || campaign_lathe;
+    if args.gcode_system.is_some() && !lathe {
+        bail!(
+            "--gcode-system applies to a lathe: give --lathe (a campaign machine whose type says lathe or turning is one)"
+        );
+    }
+    Ok(lathe.then(|| args.gcode_system.unwrap_or_default()))
+}
+
+/// What `make` finds: the plan, the axis address for a program, and whether the
+/// campaign's machine is a lathe.
+struct Made {
+    plan: Plan,
+    address: Option<String>,
+    lathe: bool,
+}
+
 /// The plan asked for, and the axis address for a program.
-fn make(args: &Args) -> Result<(Plan, Option<String>)> {
+fn make(args: &Args) -> Result<Made> {
     if let Some(path) = &args.from {
         let text = axcheck::files::read_to_string(path)
             .with_context(|| format!("cannot read the plan {}", path.display()))?;
-        let plan = Plan::from_yaml(&text, &path.display().to_string())?;
-        return Ok((plan, args.address.clone().or(args.axis.clone())));
+        let mut plan = Plan::from_yaml(&text, &path.display().to_string())?;
+        if args.continuous {
+            plan.axis.continuous = true;
+            plan::measurement_travel(&plan.axis, plan.motion.overrun)?;
+        }
+        let address = args.address.clone().or(args.axis.clone());
+        return Ok(Made {
+            plan,
+            address,
+            lathe: false,
+        });
     }
-    let (axis, motion, address) = match &args.campaign {
+    let (axis, motion, address, lathe) = match &args.campaign {
         Some(path) => from_campaign(path, args)?,
         None => (
             standalone_axis(args)?,
             motion(args, &Motion::default()),
             args.axis.clone(),
+            false,
         ),
     };
     let plan = match &args.targets {
         Some(t) => plan::with_targets(&axis, &motion, t.clone())?,
         None => plan::plan(&axis, &motion, args.seed)?,
     };
-    Ok((plan, args.address.clone().or(address)))
+    Ok(Made {
+        plan,
+        address: args.address.clone().or(address),
+        lathe,
+    })
 }
 
 /// The axis from --kind, --travel, --measurement-travel, --standard, --pitch.
@@ -232,6 +296,7 @@ fn standalone_axis(args: &Args) -> Result<Axis> {
         kind,
         standard: args.standard.unwrap_or(StandardId::Iso230_2),
         travel: travel_of(&parse_pair(travel, "--travel")?)?,
+        continuous: args.continuous,
         measurement_travel: measurement_of(args)?,
         pitch: args.pitch,
         scale_pitch: args.scale_pitch,
@@ -267,18 +332,30 @@ fn motion(args: &Args, base: &Motion) -> Motion {
     }
 }
 
+/// The axis, the motion, the axis address and whether the machine is a lathe.
+type CampaignAxis = (Axis, Motion, Option<String>, bool);
+
+/// Whether a machine's `type` says it is a lathe (`CNC turning centre`, `lathe`).
+fn is_lathe(machine_type: Option<&str>) -> bool {
+    machine_type.is_some_and(|t| {
+        let t = t.to_lowercase();
+        t.contains("lathe") || t.contains("turning")
+    })
+}
+
 /// The axis `--axis` of machine `--machine` in the campaign, its conditions as the motion's
 /// defaults.
-fn from_campaign(path: &Path, args: &Args) -> Result<(Axis, Motion, Option<String>)> {
+fn from_campaign(path: &Path, args: &Args) -> Result<CampaignAxis> {
     let (machine, name) = match (&args.machine, &args.axis) {
         (Some(m), Some(a)) => (m, a),
         _ => bail!("--campaign needs --machine M and --axis A"),
     };
     let campaign = Campaign::load(path)?;
-    let (_, entry) = campaign
+    let (found, entry) = campaign
         .axes()
         .find(|(m, a)| &m.info.id == machine && &a.name == name)
         .ok_or_else(|| anyhow!("{}: no axis {name} of machine {machine}", path.display()))?;
+    let lathe = is_lathe(found.info.machine_type.as_deref());
     let spec = entry.spec.as_ref().map_err(|e| anyhow!("{e}"))?;
     let raw = &spec.raw;
     let travel = raw.travel.ok_or_else(|| {
@@ -298,11 +375,12 @@ fn from_campaign(path: &Path, args: &Args) -> Result<(Axis, Motion, Option<Strin
         kind: raw.kind,
         standard: args.standard.unwrap_or(spec.standard),
         travel,
+        continuous: raw.continuous || args.continuous,
         measurement_travel: measurement_of(args)?.or(raw.measurement_travel),
         pitch: args.pitch.or(raw.pitch),
         scale_pitch: args.scale_pitch,
     };
-    Ok((axis, motion(args, &base), Some(name.clone())))
+    Ok((axis, motion(args, &base), Some(name.clone()), lathe))
 }
 
 /// The plan as a table: each target, its offset r from even spacing, and the rules.

@@ -1,5 +1,5 @@
-//! The plan file (YAML): the axis, the targets in the axis unit, and how the axis is
-//! driven (`runs`, `cycle`, `overrun`, `dwell_s`, `feed`), as `axcheck plan -o` writes it;
+//! The plan file (YAML): the axis (`continuous: true` for a rotary axis that turns
+//! freely), the targets in the axis unit, and how the axis is driven (`runs`, `cycle`, `overrun`, `dwell_s`, `feed`), as `axcheck plan -o` writes it;
 //! `axcheck simulate --plan`, `plan --from` and a campaign's `plan:` read it.
 
 use super::{Axis, Motion, Plan, PlanError};
@@ -19,6 +19,9 @@ pub struct PlanFile {
     pub standard: String,
     /// mm or deg: a length or its two ends.
     pub axis_travel: Travel,
+    /// A rotary axis that turns freely; absent: false (every move inside the travel).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub continuous: bool,
     /// [first, last] target, mm or deg.
     pub measurement_travel: [f64; 2],
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -47,6 +50,7 @@ impl Plan {
             kind: self.axis.kind,
             standard: short_name(self.axis.standard).to_string(),
             axis_travel: self.axis.travel,
+            continuous: self.axis.continuous,
             measurement_travel: self.measurement_travel,
             pitch: self.axis.pitch,
             scale_pitch: self.axis.scale_pitch,
@@ -94,6 +98,7 @@ impl Plan {
             kind: raw.kind,
             standard,
             travel: raw.axis_travel,
+            continuous: raw.continuous,
             measurement_travel: Some(raw.measurement_travel),
             pitch: raw.pitch,
             scale_pitch: raw.scale_pitch,

@@ -23,6 +23,9 @@ pub struct Axis {
     pub standard: StandardId,
     /// The axis travel (ISO 230-2 2.1), mm or deg.
     pub travel: Travel,
+    /// A rotary axis that turns freely (no ends): measured over its whole travel with the
+    /// overruns beyond it. Any other axis keeps every move of its test inside its travel.
+    pub continuous: bool,
     /// The measurement travel (2.2); `None`: the axis travel less twice the overrun at each
     /// end.
     pub measurement_travel: Option<[f64; 2]>,
@@ -188,8 +191,9 @@ fn default_runs(axis: &Axis, travel: f64) -> usize {
 
 /// The measurement travel: given, or the axis travel less twice the overrun at each end:
 /// room to approach the first and last targets from both sides (ISO 230-2 2.2), with the
-/// overrun moves kept an overrun clear of the travel's ends; a rotary axis of a turn or
-/// more has no ends, and is measured over its whole travel.
+/// overrun moves kept an overrun clear of the travel's ends, linear and rotary alike; a
+/// continuous rotary axis (one that turns freely) has no ends, and is measured over its
+/// whole travel.
 pub fn measurement_travel(axis: &Axis, overrun: f64) -> Result<[f64; 2], PlanError> {
     let (start, end) = match axis.travel {
         Travel::Length(l) => (0.0, l),
@@ -198,6 +202,18 @@ pub fn measurement_travel(axis: &Axis, overrun: f64) -> Result<[f64; 2], PlanErr
     if !(end > start && start.is_finite() && end.is_finite()) {
         return Err(PlanError::Travel(format!(
             "the axis travel must run from a start to a greater end, got {start} to {end}"
+        )));
+    }
+    if axis.continuous && axis.kind != AxisKind::Rotary {
+        return Err(PlanError::Travel(
+            "continuous: only a rotary axis turns freely; a linear axis has ends".into(),
+        ));
+    }
+    if axis.continuous && end - start < rules::ROTARY_SHORT_DEG - 1e-9 {
+        return Err(PlanError::Travel(format!(
+            "continuous: a rotary axis that turns freely has a travel of a turn or more; got {} to {} deg",
+            fmt_position(start),
+            fmt_position(end)
         )));
     }
     if let Some([a, b]) = axis.measurement_travel {
@@ -212,7 +228,7 @@ pub fn measurement_travel(axis: &Axis, overrun: f64) -> Result<[f64; 2], PlanErr
         }
         return Ok([a, b]);
     }
-    if axis.kind == AxisKind::Rotary && end - start >= rules::ROTARY_SHORT_DEG - 1e-9 {
+    if axis.continuous {
         return Ok([targets::recorded(start), targets::recorded(end)]);
     }
     // The overrun beyond the first and last targets, and as much again to the ends of the

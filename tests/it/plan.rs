@@ -28,10 +28,12 @@ fn random_axis(seed: u64) -> Axis {
         AxisKind::Rotary => [1.0, 5.0, 10.0][(rng.uniform() * 3.0) as usize % 3],
     };
     let scale_pitch = (rng.uniform() < 0.3).then_some(0.02);
+    let continuous = kind == AxisKind::Rotary && length >= 360.0 && rng.uniform() < 0.5;
     Axis {
         kind,
         standard,
         travel: Travel::Range([start, start + length]),
+        continuous,
         measurement_travel: None,
         pitch: Some(pitch),
         scale_pitch,
@@ -69,6 +71,7 @@ fn targets_given_are_checked_by_the_rules() {
         kind: AxisKind::Linear,
         standard: StandardId::Iso230_2,
         travel: Travel::Range([0.0, 1100.0]),
+        continuous: false,
         measurement_travel: None,
         pitch: Some(10.0),
         scale_pitch: None,
@@ -95,6 +98,7 @@ fn a_plan_keeps_room_to_reverse_and_the_principal_positions() {
         kind: AxisKind::Linear,
         standard: StandardId::Iso230_2,
         travel: Travel::Range([0.0, 1000.0]),
+        continuous: false,
         measurement_travel: None,
         pitch: Some(10.0),
         scale_pitch: None,
@@ -117,6 +121,7 @@ fn a_plan_keeps_room_to_reverse_and_the_principal_positions() {
     let table = Axis {
         kind: AxisKind::Rotary,
         travel: Travel::Length(360.0),
+        continuous: true,
         pitch: None,
         ..linear
     };
@@ -126,9 +131,30 @@ fn a_plan_keeps_room_to_reverse_and_the_principal_positions() {
         assert!(p.targets.contains(&cardinal), "{:?}", p.targets);
     }
     assert_eq!(p.targets.len(), 9);
+    // Not continuous: the travel's ends kept clear as on a linear axis.
+    let stops = Axis {
+        continuous: false,
+        ..table.clone()
+    };
+    let p = plan::plan(&stops, &Motion::default(), 1).unwrap();
+    assert_eq!(p.measurement_travel, [10.0, 350.0]);
+    for cardinal in [90.0, 180.0, 270.0] {
+        assert!(p.targets.contains(&cardinal), "{:?}", p.targets);
+    }
+    let linear_continuous = Axis {
+        kind: AxisKind::Linear,
+        ..table.clone()
+    };
+    assert_eq!(
+        plan::plan(&linear_continuous, &Motion::default(), 1)
+            .unwrap_err()
+            .to_string(),
+        "continuous: only a rotary axis turns freely; a linear axis has ends"
+    );
     let long = Axis {
         kind: AxisKind::Linear,
         travel: Travel::Range([0.0, 4000.0]),
+        continuous: false,
         ..table
     };
     let p = plan::plan(&long, &Motion::default(), 1).unwrap();
@@ -275,6 +301,7 @@ fn the_laser_software_gets_the_plans_targets_and_order() {
         kind: AxisKind::Linear,
         standard: StandardId::Iso230_2,
         travel: Travel::Range([0.0, 1500.0]),
+        continuous: false,
         measurement_travel: None,
         pitch: Some(20.0),
         scale_pitch: None,
@@ -327,7 +354,7 @@ fn a_campaign_axis_is_planned_with_its_conditions() {
         "{out}"
     );
     assert!(
-        out.contains("\nG1 X5.000 F2000.000 (start at 5.000 mm)\n"),
+        out.contains("\nG53 G1 X5.000 F2000.000 (start at 5.000 mm)\n"),
         "{out}"
     );
     assert!(out.contains("\nG4 P4.000\n"), "{out}");
@@ -360,4 +387,215 @@ fn a_campaign_axis_is_planned_with_its_conditions() {
     ]);
     assert_eq!(code, 2);
     assert!(err.contains("FANUC addresses an axis by one of the letters X, Y, Z, A, B, C, U, V, W; got `X1` (--axis)"), "{err}");
+}
+
+/// The example's LATHE-5 is a FANUC lathe ("CNC turning centre"): its X program, in lathe
+/// G-code system A, has no G91 and no G90 or G94 (turning cycles there), feeds per
+/// minute with G98 and states that X is programmed in diameter, each X word twice the
+/// slide's position.
+#[test]
+fn the_example_lathe_gets_a_turning_program() {
+    use crate::common::axcheck;
+    let (code, out, err) = axcheck(&[
+        "plan",
+        "--campaign",
+        "example-campaign/campaign.yaml",
+        "--machine",
+        "LATHE-5",
+        "--axis",
+        "X",
+        "--program",
+        "fanuc",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let program = &out[out.find("%\n").unwrap()..];
+    let words: Vec<&str> = program
+        .lines()
+        .flat_map(|l| l.split('(').next().unwrap().split_whitespace())
+        .collect();
+    for word in ["G90", "G91", "G94"] {
+        assert!(!words.contains(&word), "{word}: {program}");
+    }
+    assert!(program.contains("\nG18 G21 G40 G98 G54\n"), "{program}");
+    assert!(
+        program.contains("X IS PROGRAMMED IN DIAMETER, PARAMETER 1006 BIT 3 DIA = 1 EVERY X WORD IS TWICE THE SLIDE S POSITION"),
+        "{program}"
+    );
+    assert!(
+        program.contains("\nG01 X10.000 F1000.000 (START AT 5.000 MM)\n"),
+        "{program}"
+    );
+    // B and C only on a lathe.
+    let (code, _, err) = axcheck(&[
+        "plan",
+        "--kind",
+        "linear",
+        "--travel",
+        "600",
+        "--program",
+        "fanuc",
+        "--axis",
+        "X",
+        "--gcode-system",
+        "b",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--gcode-system applies to a lathe"), "{err}");
+    let (code, out, err) = axcheck(&[
+        "plan",
+        "--kind",
+        "linear",
+        "--travel",
+        "600",
+        "--program",
+        "fanuc",
+        "--axis",
+        "X",
+        "--lathe",
+        "--gcode-system",
+        "b",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("\nG90 G01 X10.000 F1000.000 (START AT 5.000 MM)\n"),
+        "{out}"
+    );
+}
+
+/// `--continuous` (a rotary axis that turns freely) plans the whole travel with its
+/// overruns beyond the ends and starts within one turn; without it a rotary axis keeps
+/// clear of its travel's ends. An old plan file of 0…360° is refused, naming the move
+/// and the travel, unless the axis is marked continuous; a campaign axis's
+/// `continuous: true` does the same as the option.
+#[test]
+fn only_a_continuous_rotary_axis_overruns_its_travel() {
+    use crate::common::{axcheck, scratch};
+    let rotary = [
+        "plan",
+        "--kind",
+        "rotary",
+        "--travel",
+        "0,360",
+        "--program",
+        "linuxcnc",
+        "--axis",
+        "C",
+    ];
+    let (code, out, err) = axcheck(&rotary);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.starts_with("Test plan: 9 targets over 10.000 … 350.000 deg"),
+        "{out}"
+    );
+    assert!(
+        out.contains("\nG53 G1 C5.000 F1000.000 (start at 5.000 deg)\n"),
+        "{out}"
+    );
+    let (code, out, err) = axcheck(&[&rotary[..], &["--continuous"]].concat());
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.starts_with("Test plan: 9 targets over 0.000 … 360.000 deg"),
+        "{out}"
+    );
+    assert!(
+        out.contains("\nG53 G1 C355.000 F1000.000 (start at -5.000 deg)\n"),
+        "{out}"
+    );
+    let dir = scratch("plan-continuous");
+    let old = "kind: rotary\nstandard: iso230-2\naxis_travel: [0, 360]\nmeasurement_travel: [0, 360]\ntargets: [0, 90, 180, 270, 360]\nruns: 2\ncycle: standard\noverrun: 5\ndwell_s: 2\nfeed: 1000\n";
+    let path = dir.join("old.yaml").to_string_lossy().into_owned();
+    std::fs::write(&path, old).unwrap();
+    let from = ["plan", "--from", &path, "--program", "fanuc", "--axis", "C"];
+    let (code, _, err) = axcheck(&from);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("the start move to -5.000 deg leaves the axis travel 0.000 to 360.000 deg of axis C, which is not continuous"),
+        "{err}"
+    );
+    let (code, out, err) = axcheck(&[&from[..], &["--continuous"]].concat());
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("\nG90 G01 C355.000 F1000.000 (START AT -5.000 DEG)\n"),
+        "{out}"
+    );
+    let campaign = "campaign: {name: c}\nmachines:\n  - id: M\n    axes:\n      - {name: C, kind: rotary, travel: 360, continuous: true, data: c.csv}\n";
+    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
+    let campaign_path = dir.join("campaign.yaml").to_string_lossy().into_owned();
+    let (code, out, err) = axcheck(&[
+        "plan",
+        "--campaign",
+        &campaign_path,
+        "--machine",
+        "M",
+        "--axis",
+        "C",
+        "-o",
+        &dir.join("c.yaml").to_string_lossy(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.starts_with("Test plan: 9 targets over 0.000 … 360.000 deg"),
+        "{out}"
+    );
+    let saved = std::fs::read_to_string(dir.join("c.yaml")).unwrap();
+    assert!(
+        saved.contains("\naxis_travel: 360.0\ncontinuous: true\n"),
+        "{saved}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `--coordinates work` writes the moves in the active work offset, and the console and
+/// the head say that the tables then need it added; a program still needs `--axis`.
+#[test]
+fn work_coordinates_are_said_to_need_the_offset_added() {
+    use crate::common::axcheck;
+    let args = [
+        "plan",
+        "--kind",
+        "linear",
+        "--travel",
+        "600",
+        "--program",
+        "siemens-840d",
+        "--axis",
+        "X",
+    ];
+    let (code, out, err) = axcheck(&[&args[..], &["--coordinates", "work"]].concat());
+    assert_eq!(code, 0, "{err}");
+    let work =
+        "Work coordinates, as --coordinates work asks: every position is in the active work offset";
+    let tables = "The compensation tables axcheck writes are in machine positions: add the active work offset of axis X to each table position";
+    assert!(
+        out.contains(&format!("\nNote: {work}. {tables}.\n")),
+        "{out}"
+    );
+    assert!(out.contains(&format!("\n; {work}\n; {tables}\n")), "{out}");
+    assert!(
+        out.contains("\nG1 X5.000 F1000.000 ; start at 5.000 mm\n"),
+        "{out}"
+    );
+    let (code, out, _) = axcheck(&args);
+    assert_eq!(code, 0);
+    assert!(!out.contains("Note: Work") && out.contains("\nG1 SUPA X5.000 F1000.000"));
+    let (code, _, err) = axcheck(&[
+        "plan",
+        "--kind",
+        "linear",
+        "--travel",
+        "600",
+        "--program",
+        "fanuc",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("give the axis's address on the control with --axis"),
+        "{err}"
+    );
+    let (code, _, err) = axcheck(&[&args[..], &["--coordinates", "joint"]].concat());
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("expected machine or work, got `joint`"),
+        "{err}"
+    );
 }

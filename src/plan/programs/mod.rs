@@ -3,12 +3,35 @@
 //! each target approached from its direction after the overrun, a dwell at each), written
 //! in each control's own syntax for moves, dwell and comments ([`Dialect`]).
 //!
-//! Linear axes move to absolute positions (G90). Rotary axes move to their start position
-//! absolutely and then incrementally (G91 or its equivalent): the sign of each move is its
-//! direction whatever the axis's modulo, roll-over or shortest-path setting, which the
-//! controls define differently (FANUC parameter 1008, Siemens ACP/ACN and MD30455,
-//! HEIDENHAIN M126, LinuxCNC WRAPPED_ROTARY, ISG modulo signs), and positions need not stay
-//! within a turn. The comments give every absolute position.
+//! - **Only the tested axis moves.** No block addresses another axis, selects or cancels a
+//!   tool or its length offset (`G49` is not written: cancelling a length offset may move
+//!   the tool axis), nor changes an offset.
+//! - **Machine coordinates** by default ([`Coordinates`]): every absolute move is
+//!   addressed in the machine's own coordinates by the control's own means that keeps the
+//!   programmed feed (LinuxCNC `G53`, SINUMERIK `SUPA`, HEIDENHAIN `M91`, TwinCAT
+//!   `#SUPPRESS OFFSETS` in the block; FANUC's `G53` moves at rapid traverse, so its
+//!   program selects `G54` and its head states what must be zero). The compensation tables
+//!   axcheck writes are in machine positions; with `--coordinates work` the head says that
+//!   the active work offset must be added to each table position.
+//! - **Rotary axes** move to their start absolutely and then incrementally (G91 or its
+//!   equivalent): the sign of each move after the start is its direction whatever the
+//!   axis's modulo, roll-over or shortest-path setting, which the controls define
+//!   differently (FANUC parameter 1008, Siemens ACP/ACN and MD30455, HEIDENHAIN M126,
+//!   LinuxCNC WRAPPED_ROTARY, ISG modulo signs). On a continuous axis (one that turns
+//!   freely) the start is written as its angle within one turn, 0 to under 360° (`C355.000`
+//!   for −5°), which every one of those settings reaches at the same angle: LinuxCNC's
+//!   `unwrap_rotary` (interp_find.cc) reads a negative value as a direction and its
+//!   magnitude as the position, an ISG modulo axis's first sign is a direction, and
+//!   SINUMERIK refuses a modulo position outside 0…360° when MD30455 bit 0 is 0 (alarm
+//!   16830, from a third-party source). Any other axis keeps every move inside its travel
+//!   ([`check_travel`]), and its start is its position.
+//! - **Lathes** ([`Job::lathe`]): X in radius where the control has a programmable radius
+//!   mode (SINUMERIK `DIAMOF`, LinuxCNC `G8`, TwinCAT `G52`), in diameter on FANUC (every X
+//!   word twice the slide's position), with FANUC's G-code system A, B or C; HEIDENHAIN
+//!   refuses.
+//!
+//! The comments give every absolute position, unwrapped, as the data file numbers the
+//! targets.
 
 pub mod fanuc;
 pub mod heidenhain;
@@ -18,7 +41,7 @@ pub mod twincat;
 
 use super::Plan;
 use crate::axis_model::Step;
-use crate::units::{AxisKind, Direction, fmt_fixed};
+use crate::units::{AxisKind, Direction, Travel, fmt_fixed};
 
 /// Why a program cannot be written.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -109,6 +132,56 @@ pub fn blocks(plan: &Plan) -> Vec<Block> {
     out
 }
 
+/// Which coordinates the absolute moves address.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Coordinates {
+    /// The machine's own (the compensation tables' positions): by each control's means.
+    #[default]
+    Machine,
+    /// The active work offset, as the shop has it set.
+    Work,
+}
+
+impl Coordinates {
+    /// `machine` or `work`, as `--coordinates` takes it.
+    pub fn parse(text: &str) -> Option<Coordinates> {
+        match text {
+            "machine" => Some(Coordinates::Machine),
+            "work" => Some(Coordinates::Work),
+            _ => None,
+        }
+    }
+}
+
+/// FANUC's G-code system of a lathe (parameter 3401#6, #7): A, B or C.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GcodeSystem {
+    #[default]
+    A,
+    B,
+    C,
+}
+
+impl GcodeSystem {
+    /// `a`, `b` or `c`, as `--gcode-system` takes it.
+    pub fn parse(text: &str) -> Option<GcodeSystem> {
+        match text {
+            "a" | "A" => Some(GcodeSystem::A),
+            "b" | "B" => Some(GcodeSystem::B),
+            "c" | "C" => Some(GcodeSystem::C),
+            _ => None,
+        }
+    }
+
+    pub fn letter(self) -> char {
+        match self {
+            GcodeSystem::A => 'A',
+            GcodeSystem::B => 'B',
+            GcodeSystem::C => 'C',
+        }
+    }
+}
+
 /// What a program is written for.
 pub struct Job<'a> {
     pub plan: &'a Plan,
@@ -116,15 +189,41 @@ pub struct Job<'a> {
     pub axis: &'a str,
     /// The program's name (`ISO230X`).
     pub name: &'a str,
+    pub coordinates: Coordinates,
+    /// `Some`: the machine is a lathe, with FANUC's G-code system (the other controls
+    /// ignore it).
+    pub lathe: Option<GcodeSystem>,
 }
 
-impl Job<'_> {
+impl<'a> Job<'a> {
+    /// A job in machine coordinates on a machine that is not a lathe.
+    pub fn new(plan: &'a Plan, axis: &'a str, name: &'a str) -> Job<'a> {
+        Job {
+            plan,
+            axis,
+            name,
+            coordinates: Coordinates::Machine,
+            lathe: None,
+        }
+    }
+
     pub fn kind(&self) -> AxisKind {
         self.plan.axis.kind
     }
 
-    /// The lines that describe the plan, for the program's head.
-    pub fn description(&self) -> Vec<String> {
+    /// A rotary axis that turns freely: its start is written within one turn.
+    pub fn continuous_rotary(&self) -> bool {
+        self.kind() == AxisKind::Rotary && self.plan.axis.continuous
+    }
+
+    /// Whether absolute moves carry the control's machine-coordinate word.
+    pub fn machine(&self) -> bool {
+        self.coordinates == Coordinates::Machine
+    }
+
+    /// The lines that describe the plan, for the program's head: `means` is how the
+    /// control addresses machine coordinates, `lathe` how it programs X on a lathe.
+    pub fn description(&self, means: &[String], lathe: &[String]) -> Vec<String> {
         let p = self.plan;
         let unit = p.axis.kind.position_unit();
         let mut out = vec![
@@ -150,15 +249,61 @@ impl Job<'_> {
                 .enumerate()
                 .map(|(i, t)| format!("T{} = {} {unit}", i + 1, fmt_fixed(*t, 3))),
         );
-        if p.axis.kind == AxisKind::Rotary {
-            out.push("Rotary axis: after the start every move is incremental, so its sign is its direction whatever the axis's modulo or shortest-path setting".into());
+        match self.coordinates {
+            Coordinates::Machine => out.extend(means.iter().enumerate().map(|(k, m)| match k {
+                0 => format!("Machine coordinates: {m}"),
+                _ => m.clone(),
+            })),
+            Coordinates::Work => out.extend(work_note(self.axis)),
         }
+        out.extend(lathe.iter().cloned());
+        out.extend(self.rotary_notes());
+        out.push(format!(
+            "Only axis {} moves: no block changes a tool, a tool length or an offset",
+            self.axis
+        ));
         out.push(
             "Check the axis address, the travel and the feed; run it once without the laser first"
                 .into(),
         );
         out
     }
+
+    /// How a rotary axis's moves are written, for the head.
+    fn rotary_notes(&self) -> Vec<String> {
+        if self.kind() != AxisKind::Rotary {
+            return Vec::new();
+        }
+        let mut out = vec!["Rotary axis: after the start every move is incremental, so its sign is its direction whatever the axis's modulo or shortest-path setting".to_string()];
+        if self.continuous_rotary() {
+            let start = start_position(self.plan);
+            out.push(format!(
+                "The axis is continuous, it turns freely: the start at {} deg is written as its angle within one turn, {} deg",
+                number(start),
+                number(within_turn(start))
+            ));
+            out.push("Modulo, roll-over and shortest-path axes reach that angle alike; the comments give the unwrapped positions".into());
+        } else {
+            let [a, b] = travel_ends(self.plan.axis.travel);
+            out.push(format!(
+                "The axis is not continuous: every move stays inside its travel {} to {} deg",
+                number(a),
+                number(b)
+            ));
+        }
+        out
+    }
+}
+
+/// The head's note on work coordinates (and the console's).
+pub fn work_note(axis: &str) -> [String; 2] {
+    [
+        "Work coordinates, as --coordinates work asks: every position is in the active work offset"
+            .into(),
+        format!(
+            "The compensation tables axcheck writes are in machine positions: add the active work offset of axis {axis} to each table position"
+        ),
+    ]
 }
 
 /// A control's syntax: its own words for the program's frame, moves, dwell and comments;
@@ -168,12 +313,16 @@ pub trait Dialect: Sync {
     fn name(&self) -> &'static str;
     /// The program file's extension.
     fn extension(&self) -> &'static str;
-    /// The axis address as the control takes it, or why not.
-    fn address(&self, axis: &str) -> Result<(), ProgramError>;
+    /// The axis address as the control takes it on the job's machine, or why not.
+    fn address(&self, job: &Job) -> Result<(), ProgramError>;
     /// A comment line.
     fn comment(&self, text: &str) -> String;
     /// The program's first lines (before the description) and the modal set-up after it.
     fn begin(&self, job: &Job) -> (Vec<String>, Vec<String>);
+    /// How the program addresses machine coordinates, for the head (a line each).
+    fn machine_coordinates(&self, job: &Job) -> Vec<String>;
+    /// How X is programmed on a lathe, for the head, or why no lathe program is written.
+    fn lathe(&self, job: &Job) -> Result<Vec<String>, ProgramError>;
     /// The move of `block` (a [`Block::Move`]): absolute, or incremental on a rotary axis
     /// after the start; `feed` on the first move only (every control keeps it).
     fn move_to(&self, job: &Job, block: &Block, feed: Option<f64>) -> Vec<String>;
@@ -181,11 +330,11 @@ pub trait Dialect: Sync {
     fn dwell(&self, seconds: f64) -> Vec<String>;
     /// The lines that switch to incremental moves and back, for a rotary axis (`None`: the
     /// control marks each move incremental itself).
-    fn incremental(&self) -> Option<(&'static str, &'static str)>;
+    fn incremental(&self, job: &Job) -> Option<(&'static str, &'static str)>;
     /// The program's last lines.
     fn end(&self, job: &Job) -> Vec<String>;
     /// What is not confirmed about this control's syntax, for the program's head.
-    fn unconfirmed(&self) -> &'static str;
+    fn unconfirmed(&self, job: &Job) -> String;
 
     /// The whole program.
     fn write(&self, job: &Job) -> Result<String, ProgramError> {
@@ -194,13 +343,22 @@ pub trait Dialect: Sync {
 }
 
 /// The program of `job` in `d`'s words: its frame, the description as comments, the
-/// set-up, the moves and dwells, the end.
+/// set-up, the moves and dwells, the end; refused where the control cannot take the axis
+/// or the machine, or a move leaves the travel of an axis that is not continuous.
 pub fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, ProgramError> {
-    d.address(job.axis)?;
+    d.address(job)?;
+    let lathe = job
+        .lathe
+        .map(|_| d.lathe(job))
+        .transpose()?
+        .unwrap_or_default();
+    check_travel(job)?;
     let (first, setup) = d.begin(job);
     let mut lines = first;
-    lines.extend(job.description().iter().map(|t| d.comment(t)));
-    lines.push(d.comment(&format!("Not confirmed: {}", d.unconfirmed())));
+    let means = d.machine_coordinates(job);
+    let head = job.description(&means, &lathe);
+    lines.extend(head.iter().map(|t| d.comment(t)));
+    lines.push(d.comment(&format!("Not confirmed: {}", d.unconfirmed(job))));
     lines.extend(setup);
     let rotary = job.kind() == AxisKind::Rotary;
     for (k, block) in blocks(job.plan).iter().enumerate() {
@@ -210,7 +368,7 @@ pub fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, Program
                 lines.extend(d.move_to(job, block, feed));
                 if k == 0
                     && rotary
-                    && let Some((on, _)) = d.incremental()
+                    && let Some((on, _)) = d.incremental(job)
                 {
                     lines.push(on.to_string());
                 }
@@ -218,39 +376,110 @@ pub fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, Program
             Block::Dwell(s) => lines.extend(d.dwell(*s)),
         }
     }
-    if rotary && let Some((_, off)) = d.incremental() {
+    if rotary && let Some((_, off)) = d.incremental(job) {
         lines.push(off.to_string());
     }
     lines.extend(d.end(job));
     Ok(lines.join("\n") + "\n")
 }
 
-/// A G-code move block: `prefix` (`G1 `), the axis word `word(axis, value)` (the absolute
-/// position, or on a rotary axis after the start the signed move), ` F…` with the first
-/// move, and a comment with the target's number and absolute position.
+/// The ends of a travel, mm or deg.
+pub fn travel_ends(travel: Travel) -> [f64; 2] {
+    match travel {
+        Travel::Length(l) => [0.0, l],
+        Travel::Range(r) => r,
+    }
+}
+
+/// Every move of an axis that is not continuous lies inside its axis travel; else the
+/// first that leaves it is named, with the travel.
+pub fn check_travel(job: &Job) -> Result<(), ProgramError> {
+    if job.continuous_rotary() {
+        return Ok(());
+    }
+    let [a, b] = travel_ends(job.plan.axis.travel);
+    let unit = job.kind().position_unit();
+    for block in blocks(job.plan) {
+        let Block::Move { position, what, .. } = block else {
+            continue;
+        };
+        if position < a - 1e-9 || position > b + 1e-9 {
+            let hint = match job.kind() {
+                AxisKind::Rotary => {
+                    ", which is not continuous: mark a rotary axis that turns freely continuous (--continuous, or `continuous: true` in the campaign or the plan file), else plan it again inside its travel"
+                }
+                AxisKind::Linear => ": plan it again inside the travel",
+            };
+            return Err(ProgramError(format!(
+                "the {} move to {} {unit} leaves the axis travel {} to {} {unit} of axis {}{hint}",
+                what.text(),
+                number(position),
+                number(a),
+                number(b),
+                job.axis
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The plan's start position, mm or deg.
+pub fn start_position(plan: &Plan) -> f64 {
+    match blocks(plan).first() {
+        Some(Block::Move { position, .. }) => *position,
+        _ => 0.0,
+    }
+}
+
+/// An angle within one turn, 0 to under 360° (to 0.001°, exactly).
+pub fn within_turn(deg: f64) -> f64 {
+    let milli = (deg * 1000.0).round() as i64;
+    milli.rem_euclid(360_000) as f64 / 1000.0
+}
+
+/// What a move block programs: the value of its axis word and whether it is incremental.
+/// Absolute: the position (on a continuous rotary axis, within one turn); incremental (a
+/// rotary axis after the start): the signed move.
+pub fn word_value(job: &Job, block: &Block) -> (f64, bool) {
+    let Block::Move { position, by, .. } = block else {
+        return (0.0, false);
+    };
+    if is_incremental(job, block) {
+        (*by, true)
+    } else if job.continuous_rotary() {
+        (within_turn(*position), false)
+    } else {
+        (*position, false)
+    }
+}
+
+/// The comment of a move: why, and its absolute position (unwrapped).
+pub fn move_note<D: Dialect + ?Sized>(d: &D, job: &Job, block: &Block) -> String {
+    let Block::Move { position, what, .. } = block else {
+        return String::new();
+    };
+    let unit = job.kind().position_unit();
+    d.comment(&format!("{} at {} {unit}", what.text(), number(*position)))
+}
+
+/// A G-code move block: `words(value, incremental)` (the block's words for the value of
+/// [`word_value`]), ` F…` with the first move, and the move's comment.
 pub fn g_move<D: Dialect + ?Sized>(
     d: &D,
     job: &Job,
     block: &Block,
     feed: Option<f64>,
-    prefix: &str,
-    word: fn(&str, f64) -> String,
+    words: impl Fn(f64, bool) -> String,
 ) -> Vec<String> {
-    let Block::Move { position, by, what } = block else {
+    if !matches!(block, Block::Move { .. }) {
         return Vec::new();
-    };
-    let value = if is_incremental(job, block) {
-        *by
-    } else {
-        *position
-    };
-    let mut line = format!("{prefix}{}", word(job.axis, value));
+    }
+    let (value, incremental) = word_value(job, block);
+    let mut line = words(value, incremental);
     if let Some(f) = feed {
         line.push_str(&format!(" F{}", number(f)));
     }
-    let unit = job.kind().position_unit();
-    let note = d.comment(&format!("{} at {} {unit}", what.text(), number(*position)));
-    vec![format!("{line} {note}")]
+    vec![format!("{line} {}", move_note(d, job, block))]
 }
 
 /// `X10.000`: the axis letter and the number.
@@ -258,17 +487,31 @@ pub fn plain_word(axis: &str, value: f64) -> String {
     format!("{axis}{}", number(value))
 }
 
+/// `X10.000`, or for a name of more than one character `X1=10.000` (SINUMERIK, and ISG:
+/// "an equals sign must follow axis identifiers that contain more than one character").
+pub fn named_word(axis: &str, value: f64) -> String {
+    if axis.len() == 1 {
+        plain_word(axis, value)
+    } else {
+        format!("{axis}={}", number(value))
+    }
+}
+
+/// Whether the move is the start.
+pub fn is_start(block: &Block) -> bool {
+    matches!(
+        block,
+        Block::Move {
+            what: Purpose::Start,
+            ..
+        }
+    )
+}
+
 /// Whether a move of a program for `job` is written incrementally: on a rotary axis, all
 /// but the start.
 pub fn is_incremental(job: &Job, block: &Block) -> bool {
-    job.kind() == AxisKind::Rotary
-        && !matches!(
-            block,
-            Block::Move {
-                what: Purpose::Start,
-                ..
-            }
-        )
+    job.kind() == AxisKind::Rotary && !is_start(block)
 }
 
 /// Every control, by name.
