@@ -27,6 +27,7 @@ mod iso230_2;
 mod layouts;
 mod outputs;
 mod plan;
+mod program_check;
 mod programs;
 mod properties;
 mod renishaw;
