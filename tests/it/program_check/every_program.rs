@@ -9,7 +9,7 @@
 
 use super::fanuc::{self, Fanuc, GCodeSystem, Rotary};
 use super::heidenhain::{self, Heidenhain};
-use super::machine::{Expect, Trace, verify};
+use super::machine::{Expect, Trace, turn, verify};
 use super::rs274::{self, Lcnc};
 use super::siemens_840d::{self, Modulo, Sinumerik};
 use super::twincat::{self, Isg};
@@ -18,6 +18,7 @@ use axcheck::plan::programs::{self, Job};
 use axcheck::plan::{self, Plan};
 use axcheck::simulate::Cycle;
 use axcheck::units::{AxisKind, Travel};
+use std::collections::BTreeMap;
 
 /// How the program addresses positions.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -112,9 +113,15 @@ fn linuxcnc(axis: char, rotary: bool, lathe: bool) -> Vec<Runner> {
                 lathe,
             };
             let mut r = runner(format!("rs274 wrapped={wrapped}"), wrapped, move |p| {
-                rs274::run(p, &cfg)
-                    .map(|r| r.trace)
-                    .map_err(|e| e.to_string())
+                let run = rs274::run(p, &cfg).map_err(|e| e.to_string())?;
+                let offsets = (run.g5x - cfg.g54).abs() + (run.g92 - cfg.g92).abs();
+                if !run.trace.moves.is_empty() && offsets > 1e-4 {
+                    return Err(format!(
+                        "rs274 moved with G54 {} and G92 {}",
+                        run.g5x, run.g92
+                    ));
+                }
+                Ok(run.trace)
             });
             r.tolerance = 0.001;
             r
@@ -252,11 +259,13 @@ fn twincat_runners(axis: &str, rotary: bool) -> Vec<Runner> {
 fn cases() -> Vec<Case> {
     let linear = axis(AxisKind::Linear, Travel::Range([-200.0, 800.0]));
     let rotary = axis(AxisKind::Rotary, Travel::Length(360.0));
+    let part_turn = axis(AxisKind::Rotary, Travel::Range([10.0, 300.0]));
     let lathe_x = axis(AxisKind::Linear, Travel::Range([0.0, 300.0]));
     let mut shapes: Vec<(&'static str, &'static str, &plan::Axis, Option<Lathe>)> = Vec::new();
     for control in programs::names() {
         shapes.push((control, "X", &linear, None));
         shapes.push((control, "C", &rotary, None));
+        shapes.push((control, "C", &part_turn, None));
     }
     shapes.push(("siemens-840d", "X1", &linear, None));
     shapes.push(("twincat", "X1", &linear, None));
@@ -295,16 +304,21 @@ fn check(case: &Case, program: &str, r: &Runner) -> Option<String> {
         tolerance: r.tolerance,
     };
     let problems = match (r.run)(program) {
-        Ok(trace) => verify(&case.plan, &trace, &expect),
+        Ok(trace) => {
+            let mut found = verify(&case.plan, &trace, &expect);
+            found.extend(outside_travel(&case.plan, &trace, &expect));
+            found
+        }
         Err(refusal) => vec![format!("refused: {refusal}")],
     };
     (!problems.is_empty()).then(|| {
         let shown: Vec<&str> = problems.iter().take(2).map(String::as_str).collect();
         format!(
-            "{} --axis {} {:?} {} {:?} {:?} on {}: {} problem(s): {}",
+            "{} --axis {} {:?} {:?} {} {:?} {:?} on {}: {} problem(s): {}",
             case.control,
             case.axis,
             case.plan.axis.kind,
+            case.plan.axis.travel,
             case.plan.motion.cycle.name(),
             case.coordinates,
             case.lathe,
@@ -315,13 +329,41 @@ fn check(case: &Case, program: &str, r: &Runner) -> Option<String> {
     })
 }
 
+/// The moves beyond the axis's stated travel (shifted by the expected offset), unless the
+/// axis is a rotary one of a whole turn (it has no ends).
+fn outside_travel(plan: &Plan, trace: &Trace, expect: &Expect) -> Vec<String> {
+    let (lo, hi) = match plan.axis.travel {
+        Travel::Length(l) => (0.0, l),
+        Travel::Range([a, b]) => (a, b),
+    };
+    if plan.axis.kind == AxisKind::Rotary && hi - lo >= 360.0 {
+        return Vec::new();
+    }
+    let angles = expect.modulo && lo >= 0.0 && hi <= 360.0;
+    trace
+        .moves
+        .iter()
+        .filter(|m| {
+            let at = m.to - expect.offset;
+            let at = if angles { turn(at) } else { at };
+            at < lo - expect.tolerance || at > hi + expect.tolerance
+        })
+        .map(|m| {
+            format!(
+                "line {}: moves to {:.4}, outside the travel [{lo}, {hi}]",
+                m.line, m.to
+            )
+        })
+        .collect()
+}
+
 /// Each plan target reached in machine coordinates (or work coordinates plus the offsets),
 /// exactly n times from each side, after at least the overrun, with the dwell, at the
 /// plan's feed, nothing else moved — by every program on every machine setting.
 #[test]
 fn every_program_reaches_every_target_in_machine_coordinates() {
     let mut failures = Vec::new();
-    let mut runs = 0;
+    let mut tally: BTreeMap<&str, [usize; 2]> = BTreeMap::new();
     for case in cases() {
         let program = match write(&case) {
             Ok(p) => p,
@@ -334,14 +376,21 @@ fn every_program_reaches_every_target_in_machine_coordinates() {
             }
         };
         for r in runners(&case) {
-            runs += 1;
-            failures.extend(check(&case, &program, &r));
+            let found = check(&case, &program, &r);
+            let t = tally.entry(case.control).or_default();
+            t[0] += 1;
+            t[1] += usize::from(found.is_some());
+            failures.extend(found);
         }
     }
+    let summary: Vec<String> = tally
+        .iter()
+        .map(|(control, [runs, failed])| format!("{control}: {failed} of {runs}"))
+        .collect();
     assert!(
         failures.is_empty(),
-        "{} of {runs} runs do not run the plan:\n{}",
-        failures.len(),
+        "runs that do not run the plan, per control: {}\n{}",
+        summary.join(", "),
         failures.join("\n")
     );
 }

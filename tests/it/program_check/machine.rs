@@ -54,9 +54,16 @@ pub struct Refusal {
     pub why: String,
 }
 
+/// `line 12 `G49`: why`; without the line (0) or the block when there is none.
 impl fmt::Display for Refusal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {} `{}`: {}", self.line, self.block, self.why)
+        if self.line > 0 {
+            write!(f, "line {} ", self.line)?;
+        }
+        if !self.block.is_empty() {
+            write!(f, "`{}`: ", self.block)?;
+        }
+        write!(f, "{}", self.why)
     }
 }
 

@@ -304,8 +304,11 @@ impl Canon {
             let Some((name, args)) = call(line) else {
                 continue;
             };
-            self.call(k + 1, &name, &args)
-                .map_err(|why| refusal(k + 1, format!("{why}: {}", line.trim())))?;
+            self.call(k + 1, &name, &args).map_err(|why| Refusal {
+                line: 0,
+                block: format!("rs274 output: {}", line.trim()),
+                why,
+            })?;
         }
         let (g5x, g92) = self.first.unwrap_or((0.0, 0.0));
         Ok(Run {
