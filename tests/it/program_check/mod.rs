@@ -72,3 +72,19 @@ pub fn expect(offset: f64, modulo: bool) -> machine::Expect {
         tolerance: 1e-6,
     }
 }
+
+/// The linear plan of the program tests: -200 to 800 mm, seed 7.
+pub fn linear_plan(cycle: Cycle) -> Plan {
+    let a = axis(AxisKind::Linear, Travel::Range([-200.0, 800.0]));
+    plan::plan(&a, &motion(cycle), 7).expect("a plan")
+}
+
+/// A program as the library wrote it before issue 41 (`tests/data/program_check/today`):
+/// `linuxcnc.ngc` and the others for [`linear_plan`] (standard cycle) on X,
+/// `linuxcnc-rotary.ngc` for targets 0° and 90° on C (standard cycle, travel −10° to 360°).
+pub fn today(file: &str) -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/program_check/today")
+        .join(file);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}

@@ -439,10 +439,8 @@ impl Canon {
 #[cfg(test)]
 mod tests {
     use super::super::machine::{turn, verify};
-    use super::super::{expect, plan_at, small_plan};
+    use super::super::{expect, linear_plan, plan_at, small_plan, today};
     use super::*;
-    use axcheck::plan::Plan;
-    use axcheck::plan::programs::{self, Job};
     use axcheck::simulate::Cycle;
     use axcheck::units::{AxisKind, Travel};
 
@@ -454,16 +452,6 @@ mod tests {
             wrapped: false,
             lathe: false,
         }
-    }
-
-    /// Today's LinuxCNC program for `plan` on `axis`.
-    fn today(plan: &Plan, axis: &str) -> String {
-        let job = Job {
-            plan,
-            axis,
-            name: "TODAY",
-        };
-        programs::find("linuxcnc").unwrap().write(&job).unwrap()
     }
 
     /// The small plan with G53 in every motion block.
@@ -485,7 +473,7 @@ mod tests {
     /// Today's head `G17 G21 G40 G49 G54 G80 G90 G94`: G49 is a tool-length change.
     #[test]
     fn g49_is_refused() {
-        let program = today(&small_plan(AxisKind::Linear), "X");
+        let program = today("linuxcnc.ngc");
         assert!(
             program.contains("\nG17 G21 G40 G49 G54 G80 G90 G94\n"),
             "{program}"
@@ -500,18 +488,15 @@ mod tests {
     /// Today's program (its G49 taken out) moves in G54 + G92: every reading 107 mm off.
     #[test]
     fn todays_program_moves_in_the_work_offset() {
-        let plan = small_plan(AxisKind::Linear);
-        let program = today(&plan, "X").replace(" G49", "");
+        let plan = linear_plan(Cycle::Standard);
+        let program = today("linuxcnc.ngc").replace(" G49", "");
         let run = run(&program, &lcnc('X')).unwrap();
-        assert_eq!(
-            verify(&plan, &run.trace, &expect(107.0, false)),
-            Vec::<String>::new()
-        );
+        let in_work = verify(&plan, &run.trace, &expect(107.0, false));
+        assert_eq!(in_work, Vec::<String>::new());
         let problems = verify(&plan, &run.trace, &expect(0.0, false));
-        assert!(
-            problems[0].contains("at 117.0000 instead of 10.0000"),
-            "{problems:?}"
-        );
+        let t1 = plan.targets[0];
+        let first = format!("at {:.4} instead of {t1:.4}", t1 + 107.0);
+        assert!(problems[0].contains(&first), "{problems:?}");
     }
 
     /// Today's rotary start `G1 C-4.000` with WRAPPED_ROTARY: rs274 takes it as 4° reached
@@ -524,7 +509,7 @@ mod tests {
             Cycle::Standard,
             &[0.0, 90.0],
         );
-        let program = today(&plan, "C").replace(" G49", "");
+        let program = today("linuxcnc-rotary.ngc").replace(" G49", "");
         assert!(program.contains("\nG1 C-4.000 F1500.000 "), "{program}");
         let cfg = Lcnc {
             g54: 0.0,

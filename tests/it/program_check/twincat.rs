@@ -17,6 +17,8 @@
 //!   select one; a new offset acts from the next absolute position. G92 (reference point
 //!   offset) is refused: it changes offsets. "Temporary transition to the machine
 //!   coordinate system (#MCS ON/OFF)": all offsets off (a licensed extension).
+//!   "Suppressing offsets (#SUPPRESS OFFSETS)": the axis positions of that block without
+//!   any offset (kinematic and CS offsets excepted), non-modal, G90 only (ID 20985).
 //! - "Programming modulo axes" (default mode): in G90 the first sign after the axis name is
 //!   the direction (`C-5` is 5° reached turning negative), no sign the shorter way, at most
 //!   one turn (the value modulo 360); in G91 the value is the signed rotation, and a second
@@ -183,6 +185,9 @@ fn block(
     ws: &[Word],
 ) -> Result<(), Refusal> {
     if let [Word::Hash(h)] = ws {
+        if let Some(rest) = h.strip_prefix("SUPPRESS OFFSETS") {
+            return suppressed(m, s, axis, (n, raw), rest);
+        }
         return hash(s, axis, (n, raw), h);
     }
     let dwell = ws
@@ -229,6 +234,41 @@ fn block(
     let feed = feed(s).or_else(|e| refuse(n, raw, e))?;
     axis.go(n, to, feed);
     Ok(())
+}
+
+/// `#SUPPRESS OFFSETS <axis positions>`: a motion block (modal G01/G00 and F) whose
+/// positions take no offset, in G90 only (ID 20985); the offset types' list is not
+/// modelled.
+fn suppressed(
+    m: &Isg,
+    s: &mut Modal,
+    axis: &mut Tracker,
+    (n, raw): (usize, &str),
+    rest: &str,
+) -> Result<(), Refusal> {
+    let rest = rest.trim();
+    if rest.starts_with('[') {
+        return refuse(
+            n,
+            raw,
+            "#SUPPRESS OFFSETS with a list of offset types is not modelled",
+        );
+    }
+    if s.incremental != Some(false) {
+        return refuse(
+            n,
+            raw,
+            "#SUPPRESS OFFSETS only in absolute programming, G90 (ID 20985)",
+        );
+    }
+    let ws = words(n, raw, rest, m)?;
+    if ws.is_empty() || !ws.iter().all(|w| matches!(w, Word::Axis(..))) {
+        return refuse(n, raw, "#SUPPRESS OFFSETS takes axis positions only");
+    }
+    let mcs = std::mem::replace(&mut s.mcs, true);
+    let moved = block(m, s, axis, (n, raw), &ws);
+    s.mcs = mcs;
+    moved
 }
 
 fn g_code(s: &mut Modal, g: &str) -> Result<(), String> {
@@ -389,6 +429,25 @@ mod tests {
     /// The small plan as today's writer puts it for `--axis X1`: `X16.000` for 6 mm,
     /// `X110.000` for 10 mm.
     const X1_TODAY: &str = "% TEST\nG17 G71 G90 G94 G40 G53\nG01 X16.000 F1500.000\nG01 X110.000\n#TIME 2.500\nG01 X150.000\n#TIME 2.500\nG01 X154.000\nG01 X150.000\n#TIME 2.500\nG01 X110.000\n#TIME 2.500\nM30\n";
+
+    #[test]
+    fn suppress_offsets_moves_in_machine_coordinates() {
+        let program = G53
+            .replace("G40 G53", "G40 G54")
+            .replace("G01 X", "#SUPPRESS OFFSETS X")
+            .replace(
+                "#SUPPRESS OFFSETS X6.000 F1500.000",
+                "G01 F1500.000\n#SUPPRESS OFFSETS X6.000",
+            );
+        let trace = run(&program, &isg(&["X", "Y", "Z"], "X")).unwrap();
+        let plan = small_plan(AxisKind::Linear);
+        assert_eq!(
+            verify(&plan, &trace, &expect(0.0, false)),
+            Vec::<String>::new()
+        );
+        let e = run(&program.replace("G90", "G91"), &isg(&["X", "Y", "Z"], "X")).unwrap_err();
+        assert!(e.why.contains("ID 20985"), "{e}");
+    }
 
     /// Today's `G01 X110.000` for X1 = 10 mm: axis X at 110. Refused where the channel has
     /// no X; where it has one, X moves and X1 never does.
