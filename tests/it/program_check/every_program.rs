@@ -91,7 +91,7 @@ fn runners(case: &Case) -> Vec<Runner> {
     let rotary = case.plan.axis.kind == AxisKind::Rotary;
     let letter = case.axis.chars().next().unwrap_or('X');
     match case.control {
-        "linuxcnc" => linuxcnc(letter, rotary, case.lathe.is_some()),
+        "linuxcnc" => linuxcnc(letter, full_turn(&case.plan), case.lathe.is_some()),
         "fanuc" => fanuc_runners(letter, rotary, case.lathe, case.coordinates),
         "siemens-840d" => siemens(case.axis, rotary, case.lathe.is_some()),
         "heidenhain" => heidenhain_runners(letter, rotary),
@@ -100,8 +100,25 @@ fn runners(case: &Case) -> Vec<Runner> {
     }
 }
 
-fn linuxcnc(axis: char, rotary: bool, lathe: bool) -> Vec<Runner> {
-    let wraps: &[bool] = if rotary { &[false, true] } else { &[false] };
+/// Whether the plan's axis is a rotary one of a whole turn (no ends). At merge: the
+/// plan's `continuous`.
+fn full_turn(plan: &Plan) -> bool {
+    let (lo, hi) = ends(plan);
+    plan.axis.kind == AxisKind::Rotary && hi - lo >= 360.0
+}
+
+/// The ends of the axis's stated travel.
+fn ends(plan: &Plan) -> (f64, f64) {
+    match plan.axis.travel {
+        Travel::Length(l) => (0.0, l),
+        Travel::Range([a, b]) => (a, b),
+    }
+}
+
+/// LinuxCNC: a rotary axis of a whole turn with and without `WRAPPED_ROTARY` (a wrapped
+/// axis turns freely; one with ends is not wrapped).
+fn linuxcnc(axis: char, full_turn: bool, lathe: bool) -> Vec<Runner> {
+    let wraps: &[bool] = if full_turn { &[false, true] } else { &[false] };
     wraps
         .iter()
         .map(|&wrapped| {
@@ -347,11 +364,8 @@ fn check(case: &Case, program: &str, r: &Runner) -> Option<String> {
 /// The moves beyond the axis's stated travel (shifted by the expected offset), unless the
 /// axis is a rotary one of a whole turn (it has no ends).
 fn outside_travel(plan: &Plan, trace: &Trace, expect: &Expect) -> Vec<String> {
-    let (lo, hi) = match plan.axis.travel {
-        Travel::Length(l) => (0.0, l),
-        Travel::Range([a, b]) => (a, b),
-    };
-    if plan.axis.kind == AxisKind::Rotary && hi - lo >= 360.0 {
+    let (lo, hi) = ends(plan);
+    if full_turn(plan) {
         return Vec::new();
     }
     let angles = expect.modulo && lo >= 0.0 && hi <= 360.0;
