@@ -31,6 +31,7 @@ mod options;
 mod outputs;
 mod placeholders;
 mod plan;
+mod program_check;
 mod programs;
 mod properties;
 mod renishaw;
