@@ -29,6 +29,12 @@ pub fn axis(kind: AxisKind, travel: Travel) -> Axis {
         measurement_travel: None,
         pitch: Some(5.0),
         scale_pitch: None,
+        // A rotary axis of a whole turn turns freely: it is measured over the turn.
+        continuous: kind == AxisKind::Rotary
+            && match travel {
+                Travel::Length(l) => l >= 360.0,
+                Travel::Range([a, b]) => b - a >= 360.0,
+            },
     }
 }
 
