@@ -82,6 +82,7 @@ fn main() {
         old: None,
         new: &table,
         others: &[],
+        controller: Some(csv),
         standard: StandardId::Iso230_2,
     };
     let us = median_us(|| {

@@ -19,6 +19,8 @@ pub struct VerifyCase {
     pub before: AxisData,
     pub old: Option<Table>,
     pub new: Table,
+    /// The controller's name, for the effects of its own parameters.
+    pub controller: &'static str,
     /// Notes on what was assumed (an unstated backlash).
     pub notes: Vec<String>,
 }
@@ -198,6 +200,7 @@ fn case(
         before,
         old: before_active.total(rule, kind),
         new,
+        controller: controller.name(),
         notes,
     })
 }
@@ -248,7 +251,10 @@ pub fn verify_all(tests: &mut [(AxisTest, Case)]) {
 /// A table built on a stated active table that the verification shows did not act as
 /// stated is wrong too: it is not written, and the refusal says why.
 fn withhold(c: &mut compensate::Compensation, v: &Verification) {
-    let failed = matches!(v.verdict, Verdict::NotEffective | Verdict::MadeWorse);
+    let failed = matches!(
+        v.verdict,
+        Verdict::NotEffective | Verdict::MadeWorse | Verdict::TableMismatch
+    );
     if v.findings.is_empty() && !failed || c.outcome.is_err() {
         return;
     }
@@ -277,6 +283,7 @@ fn compare(
         old: case.old.as_ref(),
         new: &case.new,
         others,
+        controller: crate::compensate::controllers::find(case.controller),
         standard,
     };
     let mut v = verify::verify(&input).map_err(|e| format!("verification: {e}"))?;

@@ -84,6 +84,7 @@ pub fn run(args: &Args) -> Result<(String, bool)> {
         old: old.as_ref(),
         new: &new,
         others: &others,
+        controller: Some(controller),
         standard: args.standard,
     };
     let v = verify::verify(&input)?;
@@ -131,6 +132,15 @@ fn render(v: &Verification, kind: AxisKind, name: &str) -> String {
         fmt_fixed(e.predicted, 2),
         fmt_fixed(e.achieved, 2),
         fmt_fixed(e.uncertainty, 2)
+    );
+    let p = axcheck::diagnose::stats::chi2_upper(v.chi2, v.dof as f64);
+    let _ = writeln!(
+        out,
+        "Per target: χ² = {} on {} degrees of freedom against the table named ({}; rejected below P = {})",
+        fmt_fixed(v.chi2, 1),
+        v.dof,
+        verify::explain::fmt_p(p),
+        verify::ALPHA
     );
     for f in &v.findings {
         let _ = writeln!(out, "\n{}: {}", f.effect.name(), f.evidence);

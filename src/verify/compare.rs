@@ -3,7 +3,12 @@
 //! change the tables applied, the mean achieved, and the standard uncertainty of the
 //! difference of two means, from each measurement's pooled scatter (ISO 230-2 2.15,
 //! GUM 4.2: s/√n for a mean of n readings).
+//!
+//! Where the targets differ, the mean before at a target of the re-measurement is
+//! interpolated linearly, and the interpolation's uncertainty joins the difference's
+//! ([`super::interpolation`]).
 
+use super::interpolation;
 use crate::compensate::build::means;
 use crate::compensate::{Table, linear};
 use crate::evaluate::stats::sample_sd;
@@ -29,7 +34,8 @@ pub struct Row {
     pub achieved: f64,
     /// achieved − predicted − the constant offset between the two measurements.
     pub difference: f64,
-    /// Standard uncertainty of the difference of the two means.
+    /// Standard uncertainty of the difference of the two means, with the interpolation's
+    /// where the mean before is interpolated.
     pub u: f64,
 }
 
@@ -55,6 +61,12 @@ pub fn pooled_s(data: &AxisData) -> Option<f64> {
     (count > 0).then(|| (sum / count as f64).sqrt())
 }
 
+/// The standard uncertainty of a difference of a target mean after and one before, from
+/// the pooled scatter `s` of before and after (s/√n each).
+fn u_means(before: &AxisData, after: &AxisData, s: (f64, f64)) -> f64 {
+    (s.0 * s.0 / before.runs() as f64 + s.1 * s.1 / after.runs() as f64).sqrt()
+}
+
 /// The rows of the re-measurement `after` against `before`, with `old` (the correction
 /// active before; `None`: nothing) replaced by `new`; `s`: the pooled scatter of before
 /// and after.
@@ -65,12 +77,14 @@ pub fn rows(
     new: &Table,
     s: (f64, f64),
 ) -> Vec<Row> {
-    let u = (s.0 * s.0 / before.runs() as f64 + s.1 * s.1 / after.runs() as f64).sqrt();
+    let u = u_means(before, after, s);
+    let rough = interpolation::roughness(before, s.0);
     let mut rows = Vec::with_capacity(2 * after.target_count());
     for d in [Direction::Up, Direction::Down] {
         let (b, a) = (means(before, d), means(after, d));
         for (i, &p) in after.targets.iter().enumerate() {
             let before_mean = linear(&before.targets, &b, p);
+            let u_interpolation = interpolation::u(&before.targets, &b, p, rough);
             let applied = new.correction(p, d) - old.map_or(0.0, |t| t.correction(p, d));
             rows.push(Row {
                 position: p,
@@ -80,7 +94,7 @@ pub fn rows(
                 predicted: before_mean + applied,
                 achieved: a[i],
                 difference: 0.0,
-                u,
+                u: u.hypot(u_interpolation),
             });
         }
     }

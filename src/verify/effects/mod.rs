@@ -10,6 +10,8 @@
 //! Adding an effect is one file here and one line in [`EFFECTS`].
 
 pub mod applied_twice;
+pub mod backlash_not_loaded;
+pub mod backlash_relative;
 pub mod not_active;
 pub mod position_shift;
 pub mod scale;
@@ -18,6 +20,8 @@ pub mod wrong_axis;
 
 use super::compare::{Row, weighted_mean};
 use crate::compensate::Table;
+use crate::compensate::controllers::Controller;
+use crate::units::Direction;
 use serde::Serialize;
 
 /// The stable keys of the effects.
@@ -30,6 +34,11 @@ pub enum Key {
     PositionShift,
     Scale,
     WrongAxis,
+    BacklashNotLoaded,
+    BacklashRelative,
+    /// Not an effect: the change follows neither the table named nor any effect (see
+    /// [`super::explain::mismatch`]).
+    TableMismatch,
 }
 
 impl Key {
@@ -41,6 +50,9 @@ impl Key {
             Key::PositionShift => "position_shift",
             Key::Scale => "scale",
             Key::WrongAxis => "wrong_axis",
+            Key::BacklashNotLoaded => "backlash_not_loaded",
+            Key::BacklashRelative => "backlash_relative",
+            Key::TableMismatch => "table_mismatch",
         }
     }
 }
@@ -62,6 +74,9 @@ pub struct Context<'a> {
     /// The correction loaded since.
     pub new: &'a Table,
     pub others: &'a [Other],
+    /// The controller the tables are loaded on; `None`: not known (its own effects are
+    /// not tried).
+    pub controller: Option<&'a dyn Controller>,
 }
 
 impl Context<'_> {
@@ -84,11 +99,29 @@ impl Context<'_> {
         self.rows.iter().map(|r| r.applied).collect()
     }
 
-    /// The widest interval between the new table's points (mm or deg), 0 for one point.
+    /// The change at each row if `new` and `old` acted as `acted` makes them act (the
+    /// controller reading both files alike): acted(new)(P) − acted(old)(P).
+    pub fn change_acted(&self, acted: impl Fn(&Table) -> Table) -> Vec<f64> {
+        let (new, old) = (acted(self.new), self.old.map(&acted));
+        self.rows
+            .iter()
+            .map(|r| {
+                let before = old
+                    .as_ref()
+                    .map_or(0.0, |t| t.correction(r.position, r.direction));
+                new.correction(r.position, r.direction) - before
+            })
+            .collect()
+    }
+
+    /// The mean interval between the new table's points (mm or deg; its interval when
+    /// equidistant), 0 for one point.
     pub fn interval(&self) -> f64 {
         let p = &self.new.positions;
-        let steps = p.windows(2).map(|w| w[1] - w[0]);
-        steps.fold(0.0, f64::max)
+        match (p.first(), p.last()) {
+            (Some(a), Some(b)) if p.len() > 1 => (b - a) / (p.len() - 1) as f64,
+            _ => 0.0,
+        }
     }
 }
 
@@ -116,6 +149,8 @@ pub const EFFECTS: &[&dyn Effect] = &[
     &not_active::NotActive,
     &sign_inverted::SignInverted,
     &applied_twice::AppliedTwice,
+    &backlash_not_loaded::BacklashNotLoaded,
+    &backlash_relative::BacklashRelative,
     &position_shift::PositionShift,
     &scale::Scale,
     &wrong_axis::WrongAxis,
@@ -129,6 +164,32 @@ pub fn chi2(rows: &[Row], change: &[f64]) -> f64 {
     (0..rows.len())
         .map(|k| ((residual(k) - offset) / rows[k].u).powi(2))
         .sum()
+}
+
+/// The χ² of the rows of one direction against `change` (as [`chi2`], its own offset),
+/// and their number.
+pub fn chi2_of(rows: &[Row], change: &[f64], direction: Direction) -> (f64, usize) {
+    let (r, c): (Vec<Row>, Vec<f64>) = rows
+        .iter()
+        .zip(change)
+        .filter(|(r, _)| r.direction == direction)
+        .map(|(r, c)| (r.clone(), *c))
+        .unzip();
+    (chi2(&r, &c), r.len())
+}
+
+/// The mean reversal B̄ = mean of x̄↑ − x̄↓ over the targets (ISO 230-2 2.14) of
+/// `value` (before, predicted or achieved) in the rows.
+pub fn mean_reversal(rows: &[Row], value: impl Fn(&Row) -> f64) -> f64 {
+    let mean = |d: Direction| {
+        let v: Vec<f64> = rows
+            .iter()
+            .filter(|r| r.direction == d)
+            .map(&value)
+            .collect();
+        v.iter().sum::<f64>() / v.len().max(1) as f64
+    };
+    mean(Direction::Up) - mean(Direction::Down)
 }
 
 /// The factor f that best scales the predicted change to the measured one (least
