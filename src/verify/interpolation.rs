@@ -11,15 +11,19 @@
 //!   than twice their spacing: a screw's pitch error between targets 100 mm apart): each
 //!   interior mean before predicted by the cubic through its two neighbours either side,
 //!   the mean square of the misses over both directions less what the means' own scatter
-//!   (s/√n through the cubic's weights) explains. Predicted across twice the spacing, it
-//!   over-states the curvature part of a smooth error: conservative.
+//!   (s/√n through the cubic's weights) explains, raised to its upper 95 % bound (ν/χ²_ν
+//!   at 5 %, ν the interior targets: the two directions of a target share its error).
+//!   Predicted across twice the spacing, it over-states the curvature part of a smooth
+//!   error: conservative.
 //!
-//! Measured on simulations (tables acting as named, re-measured at targets jittered
-//! anew, 40 seeds each): with the curvature part alone, a 0.5 µm error of 10 mm pitch
-//! between targets 98 mm apart left χ²/ν at 5.2 and every seed beyond the 0.1 % point; a
-//! 4 µm sine of 300 mm between targets 50 mm apart, without either part, 7 seeds of 50.
-//! On the same targets nothing is added: re-measure at the targets before, as ISO 230-2
-//! asks of a re-measurement, for the test to see what the targets resolve.
+//! Measured on the example campaign's axis models (tables acting as named, re-measured at
+//! targets jittered anew, 40 seeds each): with the curvature part alone, VMC-07 X (a
+//! 0.5 µm error of 10 mm pitch between targets 98 mm apart) left χ²/ν at 5.2 and every seed
+//! beyond the 0.1 % point; with both, χ²/ν 0.48 and 1 seed of 40 (VMC-07 Z, 8 targets: 3;
+//! GANTRY-1 X work: 2), the roughness of few targets being itself uncertain. A 4 µm sine of
+//! 300 mm between targets 50 mm apart, without either part, was beyond it in 7 seeds of
+//! 50. On the same targets nothing is added: re-measure at the targets before, as ISO
+//! 230-2 asks of a re-measurement, for the test to see what the targets resolve.
 
 use crate::compensate::build::means;
 use crate::compensate::linear;
