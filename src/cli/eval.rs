@@ -4,8 +4,9 @@ use super::text::{left, right};
 use anyhow::{Result, bail};
 use axcheck::evaluate::gost27843::{Gost27843, SMethod};
 use axcheck::evaluate::{Evaluation, Standard, StandardId};
-use axcheck::measurement::{self, Recognised};
-use axcheck::units::{Direction, fmt_fixed, fmt_position};
+use axcheck::measurement::{self, AxisData, Recognised};
+use axcheck::nde::{self, NdeCorrection};
+use axcheck::units::{AxisKind, Direction, fmt_fixed, fmt_position};
 use std::fmt::Write;
 
 /// `axcheck eval`'s arguments (`--reference` is `--ecmc-reference` here: eval has no
@@ -25,9 +26,34 @@ pub struct Args {
     /// GOST 27843 only: estimate S from the ranges, formula (6), instead of formula (5).
     #[arg(long)]
     s_from_ranges: bool,
+    /// Correct the deviations to 20 °C (ISO 230-2 3.1, nominal differential expansion)
+    /// with this expansion coefficient of the positioning system, µm/(m·°C); the
+    /// temperature from --material-temperature, else from the file's material temperature
+    /// columns.
+    #[arg(long, value_name = "COEFF", allow_negative_numbers = true)]
+    nde: Option<f64>,
+    /// The positioning system's mean temperature during the test, °C (with --nde).
+    #[arg(
+        long,
+        value_name = "T",
+        requires = "nde",
+        allow_negative_numbers = true
+    )]
+    material_temperature: Option<f64>,
     /// Print JSON (a stable interface) instead of text.
     #[arg(long)]
     json: bool,
+}
+
+/// What `eval` applied to the readings and what it did not, for the text and the JSON
+/// (`applied`): a result printed without the campaign's corrections must say so.
+#[derive(serde::Serialize)]
+struct Applied {
+    /// The correction to 20 °C, when asked (`--nde`).
+    nde: Option<NdeCorrection>,
+    /// Always empty: eval applies no tolerance and no decision rule.
+    tolerance: Option<()>,
+    decision_rule: Option<()>,
 }
 
 /// `axcheck eval`: the parameters of one file, what it was read as, and the results of
@@ -38,6 +64,12 @@ pub fn run(args: &Args) -> Result<String> {
     }
     let measurement::ReadTest { data, recognised } =
         measurement::read_file_with(&args.file, &args.sheet.options())?;
+    let (data, nde) = correct(args, data)?;
+    let applied = Applied {
+        nde,
+        tolerance: None,
+        decision_rule: None,
+    };
     let evaluation = match args.s_from_ranges {
         true => Gost27843 {
             s_method: SMethod::Ranges,
@@ -48,9 +80,71 @@ pub fn run(args: &Args) -> Result<String> {
     let name = args.file.display().to_string();
     let other = (recognised.reported.as_ref()).map(|r| axcheck::crosscheck::compare(r, &data));
     Ok(match args.json {
-        true => super::json_with_read(&evaluation.json(), &name, &recognised, other.as_ref())?,
-        false => render(&name, &recognised, &evaluation, other.as_ref()),
+        true => {
+            #[derive(serde::Serialize)]
+            struct WithApplied<'a, T> {
+                #[serde(flatten)]
+                evaluation: T,
+                applied: &'a Applied,
+            }
+            let value = WithApplied {
+                evaluation: evaluation.json(),
+                applied: &applied,
+            };
+            super::json_with_read(&value, &name, &recognised, other.as_ref())?
+        }
+        false => {
+            let mut text = render(&name, &recognised, &evaluation, other.as_ref());
+            let at = text.find("\nAxis parameters").unwrap_or(text.len());
+            text.insert_str(at, &applied_lines(&applied));
+            text
+        }
     })
+}
+
+/// The readings corrected to 20 °C when `--nde` asks (linear axes only), with what was
+/// applied; else the readings as read.
+fn correct(args: &Args, data: AxisData) -> Result<(AxisData, Option<NdeCorrection>)> {
+    let Some(alpha) = args.nde else {
+        return Ok((data, None));
+    };
+    if data.kind != AxisKind::Linear {
+        bail!(
+            "--nde: the correction to 20 °C (ISO 230-2 3.1) applies to linear axes; {} is a rotary axis's file",
+            args.file.display()
+        );
+    }
+    let temperature = match args.material_temperature {
+        Some(t) => nde::Temperature::Constant(t),
+        None => nde::Temperature::PerReading,
+    };
+    let Some((corrected, mut info)) = nde::correct(&data, alpha, temperature) else {
+        bail!(
+            "--nde: {} has no material temperature column (temp_NAME_c other than air): give the positioning system's mean temperature with --material-temperature T (°C)",
+            args.file.display()
+        );
+    };
+    if args.material_temperature.is_some() {
+        info.source = "--material-temperature".into();
+    }
+    Ok((corrected, Some(info)))
+}
+
+/// `corrected to 20 °C …` or `not corrected …`, and `not judged …`, after the header.
+fn applied_lines(a: &Applied) -> String {
+    let nde = match &a.nde {
+        Some(n) => format!(
+            "corrected to 20 °C (ISO 230-2 3.1): α = {} µm/(m·°C), temperature {} °C ({}), largest correction {} µm",
+            fmt_fixed(n.coefficient_um_per_m_c, 2),
+            fmt_fixed(n.mean_temperature_c, 2),
+            n.source,
+            fmt_fixed(n.max_correction_um, 2)
+        ),
+        None => "not corrected to 20 °C (ISO 230-2 3.1): the deviations are as read; --nde COEFF --material-temperature T applies the correction a campaign's `nde:` applies".into(),
+    };
+    format!(
+        "{nde}\nnot judged: eval applies no tolerance and no decision rule (a campaign's `spec:` does, in `axcheck check` and `run`)\n"
+    )
 }
 
 /// Targets per block of the per-target table (keeps lines under 90 columns).

@@ -5,7 +5,7 @@
 
 use super::text::MAX_PROBLEM_LINES;
 use axcheck::batch::{AxisTest, CampaignResult};
-use axcheck::compensate::Mode;
+use axcheck::compensate::{Compensation, Mode};
 
 /// Warnings that concern the state a table builds on, shown on the console once for all
 /// the tests they concern (the others, from the diagnosis, are in the reports and
@@ -90,36 +90,46 @@ pub fn lines(result: &CampaignResult) -> Vec<String> {
 /// the tables written with a placeholder for the axis, by what to replace (one controller's
 /// words).
 fn placeholders(compensated: &[&AxisTest]) -> Vec<String> {
-    let mut by_message: Vec<(&str, Vec<String>)> = Vec::new();
-    for t in compensated {
-        let c = t.evaluated().and_then(|e| e.compensation.as_deref());
-        let Some(c) = c.filter(|c| c.outcome.is_ok()) else {
-            continue;
-        };
-        for w in c.warnings.iter().filter(|w| w.key == "axis_placeholder") {
-            match by_message.iter_mut().find(|(m, _)| *m == w.message) {
-                Some((_, named)) => named.push(t.label()),
-                None => by_message.push((&w.message, vec![t.label()])),
-            }
-        }
-    }
-    by_message
-        .into_iter()
-        .map(|(message, named)| format!("  {} (axis_placeholder): {message}", listed(&named)))
-        .collect()
+    grouped(compensated, |c| {
+        c.warnings
+            .iter()
+            .filter(|w| w.key == "axis_placeholder")
+            .map(|w| w.message.clone())
+            .collect()
+    })
+    .into_iter()
+    .map(|(message, named)| format!("  {} (axis_placeholder): {message}", listed(&named)))
+    .collect()
 }
 
 /// What the controllers must be told to load the tables written (LinuxCNC's INI lines),
 /// each once with the tests it is for: `  M X, M Y: COMP_FILE_TYPE = 0: …`.
 fn loading_lines(compensated: &[&AxisTest]) -> Vec<String> {
+    grouped(compensated, |c| {
+        let path = format!("compensation/MACHINE/AXIS.{}", c.extension);
+        c.loading
+            .iter()
+            .map(|l| l.replace("<file>", &path))
+            .collect()
+    })
+    .into_iter()
+    .map(|(line, named)| format!("  {}: {line}", listed(&named)))
+    .collect()
+}
+
+/// The lines `lines` gives for each written table, each once in the order first met,
+/// with the labels of the tests it came from.
+fn grouped(
+    compensated: &[&AxisTest],
+    lines: impl Fn(&Compensation) -> Vec<String>,
+) -> Vec<(String, Vec<String>)> {
     let mut groups: Vec<(String, Vec<String>)> = Vec::new();
     for t in compensated {
         let c = t.evaluated().and_then(|e| e.compensation.as_deref());
         let Some(c) = c.filter(|c| c.outcome.is_ok()) else {
             continue;
         };
-        let path = format!("compensation/MACHINE/AXIS.{}", c.extension);
-        for line in c.loading.iter().map(|l| l.replace("<file>", &path)) {
+        for line in lines(c) {
             match groups.iter_mut().find(|(l, _)| *l == line) {
                 Some((_, named)) => named.push(t.label()),
                 None => groups.push((line, vec![t.label()])),
@@ -127,9 +137,6 @@ fn loading_lines(compensated: &[&AxisTest]) -> Vec<String> {
         }
     }
     groups
-        .into_iter()
-        .map(|(line, named)| format!("  {}: {line}", listed(&named)))
-        .collect()
 }
 
 /// `  VMC-07 Z  not written: …`.

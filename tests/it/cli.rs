@@ -245,3 +245,47 @@ fn diagnose_does_not_write_a_model_that_simulate_would_refuse() {
     assert!(!model.exists());
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+/// `eval` says what it did not apply: `vmc07-x.csv` read as it is gives A = 19.48 µm where
+/// the campaign's report (NDE with α = 11.5 µm/(m·°C) at the material sensors' mean,
+/// 21.15 °C) gives 7.27 µm; eval says it is not corrected, and `--nde` with
+/// `--material-temperature` gives the report's value. No tolerance, no decision rule.
+#[test]
+fn eval_says_what_it_did_not_apply_and_applies_nde_when_asked() {
+    let file = "example-campaign/data/vmc07-x.csv";
+    let (code, out, err) = axcheck(&["eval", file]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("A = 19.48 µm"), "{out}");
+    assert!(
+        out.contains("not corrected to 20 °C (ISO 230-2 3.1): the deviations are as read"),
+        "{out}"
+    );
+    assert!(out.contains("not judged: eval applies no tolerance and no decision rule"));
+    let args = [
+        "eval",
+        file,
+        "--nde",
+        "11.5",
+        "--material-temperature",
+        "21.15",
+    ];
+    let (code, out, err) = axcheck(&args);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("A = 7.27 µm"), "{out}");
+    assert!(
+        out.contains("corrected to 20 °C (ISO 230-2 3.1): α = 11.50 µm/(m·°C), temperature 21.15 °C (--material-temperature)"),
+        "{out}"
+    );
+    let v = json(&[&args[..], &["--json"]].concat());
+    assert_eq!(v["applied"]["nde"]["coefficient_um_per_m_c"], 11.5);
+    assert!(v["applied"]["tolerance"].is_null() && v["applied"]["decision_rule"].is_null());
+    let plain = json(&["eval", file, "--json"]);
+    assert!(plain["applied"]["nde"].is_null(), "{}", plain["applied"]);
+    let (code, _, err) = axcheck(&["eval", file, "--nde", "11.5"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("has no material temperature column")
+            && err.contains("--material-temperature T"),
+        "{err}"
+    );
+}

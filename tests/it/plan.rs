@@ -498,7 +498,8 @@ fn only_a_continuous_rotary_axis_overruns_its_travel() {
         "{out}"
     );
     assert!(
-        out.contains("\nG53 G1 C355.000 F1000.000 (start at -5.000 deg)\n"),
+        out.contains("\nG53 G1 C0.000 F1000.000 (align at 0.000 deg)\n")
+            && out.contains("\nG91\nG1 C-5.000 (start at -5.000 deg)\n"),
         "{out}"
     );
     let dir = scratch("plan-continuous");
@@ -515,7 +516,9 @@ fn only_a_continuous_rotary_axis_overruns_its_travel() {
     let (code, out, err) = axcheck(&[&from[..], &["--continuous"]].concat());
     assert_eq!(code, 0, "{err}");
     assert!(
-        out.contains("\nG90 G01 C355.000 F1000.000 (START AT -5.000 DEG)\n"),
+        out.contains(
+            "\nG90 G01 C0.000 F1000.000 (ALIGN AT 0.000 DEG)\nG91\nC-5.000 (START AT -5.000 DEG)\n"
+        ),
         "{out}"
     );
     let campaign = "campaign: {name: c}\nmachines:\n  - id: M\n    axes:\n      - {name: C, kind: rotary, travel: 360, continuous: true, data: c.csv}\n";

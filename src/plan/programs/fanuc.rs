@@ -4,8 +4,8 @@
 //! seconds in a block of its own, comments in parentheses in upper case with letters,
 //! digits and `. , = _ -` only, `M30`, `%`. Rotary axes: incremental moves after the start,
 //! so the roll-over parameters (1008#0 ROA, #1 RAB) do not decide the direction; a
-//! continuous axis's start is written within one turn (`C355.000` for −5°), which
-//! roll-over reaches at that angle whichever way it turns.
+//! continuous axis first goes to a target's angle within one turn (`C0.000`), the same
+//! position with roll-over and without, and reaches its start incrementally.
 //!
 //! **Machine coordinates.** FANUC's `G53` is a one-shot selection that moves at rapid
 //! traverse, not at the programmed feed (SINUMERIK ISO Milling 04.07 §3.1.1, describing
@@ -34,7 +34,7 @@
 //! range on each machine.
 
 use super::{
-    Block, Dialect, GcodeSystem, Job, ProgramError, g_move, is_start, number, one_letter,
+    Block, Dialect, GcodeSystem, Job, ProgramError, g_move, is_first, number, one_letter,
     plain_word,
 };
 use crate::units::AxisKind;
@@ -155,7 +155,7 @@ impl Dialect for Fanuc {
     /// The start with `G90 G01` (set again, as the program may follow another; `G01` alone
     /// in system A), the others modal; in system A a rotary axis's increments are H words.
     fn move_to(&self, job: &Job, block: &Block, feed: Option<f64>) -> Vec<String> {
-        let start = is_start(block);
+        let start = is_first(block);
         let scale = if diameter(job) { 2.0 } else { 1.0 };
         let words = |value: f64, incremental: bool| {
             let axis = if incremental && system_a(job) {

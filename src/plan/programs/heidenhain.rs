@@ -12,8 +12,8 @@
 //!
 //! Rotary axes: `L IC±…` incremental moves after the start, as HEIDENHAIN has no absolute
 //! move with a direction and M126 (shortest path) would otherwise decide it; a continuous
-//! axis's start is written within one turn (`C+355.000` for −5°), which a modulo display
-//! reaches at that angle whichever way it turns. Lathes: no program is written (whether
+//! axis first goes to a target's angle within one turn (`C+0.000`), the same position on
+//! a modulo display and on one that counts turns, and reaches its start incrementally. Lathes: no program is written (whether
 //! the TNC's turning mode, FUNCTION MODE TURN, takes X as a diameter is not confirmed
 //! here): the writer refuses.
 //!

@@ -13,18 +13,22 @@
 //!   program selects `G54` and its head states what must be zero). The compensation tables
 //!   axcheck writes are in machine positions; with `--coordinates work` the head says that
 //!   the active work offset must be added to each table position.
-//! - **Rotary axes** move to their start absolutely and then incrementally (G91 or its
-//!   equivalent): the sign of each move after the start is its direction whatever the
-//!   axis's modulo, roll-over or shortest-path setting, which the controls define
+//! - **Rotary axes** move to their first position absolutely and then incrementally (G91
+//!   or its equivalent): the sign of each move after the first is its direction whatever
+//!   the axis's modulo, roll-over or shortest-path setting, which the controls define
 //!   differently (FANUC parameter 1008, Siemens ACP/ACN and MD30455, HEIDENHAIN M126,
 //!   LinuxCNC WRAPPED_ROTARY, ISG modulo signs). On a continuous axis (one that turns
-//!   freely) the start is written as its angle within one turn, 0 to under 360° (`C355.000`
-//!   for −5°), which every one of those settings reaches at the same angle: LinuxCNC's
-//!   `unwrap_rotary` (interp_find.cc) reads a negative value as a direction and its
-//!   magnitude as the position, an ISG modulo axis's first sign is a direction, and
-//!   SINUMERIK refuses a modulo position outside 0…360° when MD30455 bit 0 is 0 (alarm
-//!   16830, from a third-party source). Any other axis keeps every move inside its travel
-//!   ([`check_travel`]), and its start is its position.
+//!   freely) the first move goes to a target's angle within one turn, 0 to under 360°
+//!   (the first target in that range, [`Purpose::Align`]), and the start below the first
+//!   target follows incrementally: an angle within one turn is the same position on an
+//!   axis that counts turns (LinuxCNC without WRAPPED_ROTARY, a SINUMERIK or ISG axis that
+//!   is not modulo, a TNC that counts) and on a modulo one (LinuxCNC's `unwrap_rotary`,
+//!   interp_find.cc, reads a negative value as a direction and its magnitude as the
+//!   position; an ISG modulo axis's first sign is a direction; SINUMERIK refuses a modulo
+//!   position outside 0…360° when MD30455 bit 0 is 0, alarm 16830, from a third-party
+//!   source). A start written as `C355.000` for −5° put the readings of a counting axis a
+//!   turn up. Any other axis keeps every move inside its travel ([`check_travel`]), and
+//!   its start is its position.
 //! - **Lathes** ([`Job::lathe`]): X in radius where the control has a programmable radius
 //!   mode (SINUMERIK `DIAMOF`, LinuxCNC `G8`, TwinCAT `G52`), in diameter on FANUC (every X
 //!   word twice the slide's position), with FANUC's G-code system A, B or C; HEIDENHAIN
@@ -51,11 +55,14 @@ pub struct ProgramError(pub String);
 /// One block of the program, before a control's syntax.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Block {
-    /// A move to `position` (absolute, mm or deg), `by` from the position before it.
+    /// A move to `position` (mm or deg, as the data file numbers it), `by` from the
+    /// position before it; `absolute`: written as a position (every move of an axis that
+    /// is not rotary, a rotary axis's first), else as its signed distance.
     Move {
         position: f64,
         by: f64,
         what: Purpose,
+        absolute: bool,
     },
     /// The dwell at a target, s.
     Dwell(f64),
@@ -64,6 +71,9 @@ pub enum Block {
 /// Why the axis moves.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Purpose {
+    /// On a continuous rotary axis, first to the angle of a target within one turn, where
+    /// an axis that counts turns and a modulo one agree.
+    Align,
     /// To the start, below the first target by the overrun.
     Start,
     /// Beyond a target by the overrun, to reverse.
@@ -81,6 +91,7 @@ impl Purpose {
     /// `T3 up, run 2`, `overrun`, `start`.
     pub fn text(&self) -> String {
         match self {
+            Purpose::Align => "align".into(),
             Purpose::Start => "start".into(),
             Purpose::Overrun => "overrun".into(),
             Purpose::Target {
@@ -93,16 +104,28 @@ impl Purpose {
 }
 
 /// The program's path: the plan's steps as moves (to 0.001, the recorded step: every
-/// incremental move is exact) and a dwell after each target.
+/// incremental move is exact) and a dwell after each target; on a continuous rotary axis
+/// led by the move to a target's angle within one turn ([`align_at`]).
 pub fn blocks(plan: &Plan) -> Vec<Block> {
+    let rotary = plan.axis.kind == AxisKind::Rotary;
     let steps = plan.test_plan().steps(&plan.targets);
-    let mut out = Vec::with_capacity(2 * steps.len());
+    let mut out = Vec::with_capacity(2 * steps.len() + 1);
     let mut at: Option<i64> = None;
+    if let Some(align) = align_at(plan) {
+        at = Some(milli(align));
+        out.push(Block::Move {
+            position: align,
+            by: 0.0,
+            what: Purpose::Align,
+            absolute: true,
+        });
+    }
+    let mut started = false;
     for step in steps {
-        let position = (step.position() * 1000.0).round() as i64;
+        let position = milli(step.position());
         let by = at.map_or(0, |a| position - a) as f64 / 1000.0;
         let what = match step {
-            Step::Move(_) if at.is_none() => Purpose::Start,
+            Step::Move(_) if !started => Purpose::Start,
             Step::Move(_) => Purpose::Overrun,
             Step::Read {
                 target,
@@ -115,21 +138,43 @@ pub fn blocks(plan: &Plan) -> Vec<Block> {
                 run: run + 1,
             },
         };
+        started = true;
         // A move of no length (the start when the path begins there) is not written again.
-        if at.is_some() && by == 0.0 && what == Purpose::Overrun {
+        if at.is_some() && by == 0.0 && !matches!(what, Purpose::Target { .. }) {
             continue;
         }
+        let absolute = at.is_none() || !rotary;
         at = Some(position);
         out.push(Block::Move {
             position: position as f64 / 1000.0,
             by,
             what,
+            absolute,
         });
         if matches!(what, Purpose::Target { .. }) && plan.motion.dwell_s > 0.0 {
             out.push(Block::Dwell(plan.motion.dwell_s));
         }
     }
     out
+}
+
+/// A position in thousandths of its unit, the program's step.
+fn milli(x: f64) -> i64 {
+    (x * 1000.0).round() as i64
+}
+
+/// Where a continuous rotary axis goes first: the first target (in the plan's order) at
+/// an angle within one turn, 0 to under 360°, where an axis that counts turns and a
+/// modulo one stand at the same position; without one, the first target's angle within
+/// one turn (a counting axis's readings are then whole turns from the targets, as the
+/// head says). `None` on any other axis.
+pub fn align_at(plan: &Plan) -> Option<f64> {
+    if plan.axis.kind != AxisKind::Rotary || !plan.axis.continuous {
+        return None;
+    }
+    let in_turn = |t: &&f64| (0.0..360.0).contains(*t);
+    let first = plan.targets.iter().find(in_turn).or(plan.targets.first())?;
+    Some(milli(*first) as f64 / 1000.0)
 }
 
 /// Which coordinates the absolute moves address.
@@ -274,15 +319,19 @@ impl<'a> Job<'a> {
         if self.kind() != AxisKind::Rotary {
             return Vec::new();
         }
-        let mut out = vec!["Rotary axis: after the start every move is incremental, so its sign is its direction whatever the axis's modulo or shortest-path setting".to_string()];
-        if self.continuous_rotary() {
-            let start = start_position(self.plan);
+        let mut out = vec!["Rotary axis: after the first move every move is incremental, so its sign is its direction whatever the axis's modulo or shortest-path setting".to_string()];
+        if let Some(align) = align_at(self.plan) {
             out.push(format!(
-                "The axis is continuous, it turns freely: the start at {} deg is written as its angle within one turn, {} deg",
-                number(start),
-                number(within_turn(start))
+                "The axis is continuous, it turns freely: the first move goes to {} deg, an angle within one turn, where an axis that counts turns and a modulo, roll-over or shortest-path axis agree; the start follows incrementally",
+                number(within_turn(align))
             ));
-            out.push("Modulo, roll-over and shortest-path axes reach that angle alike; the comments give the unwrapped positions".into());
+            if within_turn(align) != align {
+                out.push(format!(
+                    "No target lies within 0 to 360 deg: on an axis that counts turns the positions read are {} deg from the targets' numbers",
+                    number(within_turn(align) - align)
+                ));
+            }
+            out.push("The comments give the positions as the data file numbers the targets".into());
         } else {
             let [a, b] = travel_ends(self.plan.axis.travel);
             out.push(format!(
@@ -423,8 +472,9 @@ pub fn check_travel(job: &Job) -> Result<(), ProgramError> {
     Ok(())
 }
 
-/// The plan's start position, mm or deg.
-pub fn start_position(plan: &Plan) -> f64 {
+/// The program's first position, mm or deg: the start, or on a continuous rotary axis
+/// the angle it aligns at ([`align_at`]).
+pub fn first_position(plan: &Plan) -> f64 {
     match blocks(plan).first() {
         Some(Block::Move { position, .. }) => *position,
         _ => 0.0,
@@ -439,12 +489,12 @@ pub fn within_turn(deg: f64) -> f64 {
 
 /// What a move block programs: the value of its axis word and whether it is incremental.
 /// Absolute: the position (on a continuous rotary axis, within one turn); incremental (a
-/// rotary axis after the start): the signed move.
+/// rotary axis after its first move): the signed move.
 pub fn word_value(job: &Job, block: &Block) -> (f64, bool) {
     let Block::Move { position, by, .. } = block else {
         return (0.0, false);
     };
-    if is_incremental(job, block) {
+    if is_incremental(block) {
         (*by, true)
     } else if job.continuous_rotary() {
         (within_turn(*position), false)
@@ -497,21 +547,28 @@ pub fn named_word(axis: &str, value: f64) -> String {
     }
 }
 
-/// Whether the move is the start.
-pub fn is_start(block: &Block) -> bool {
+/// Whether the move is the program's first (the start, or on a continuous rotary axis
+/// the alignment before it).
+pub fn is_first(block: &Block) -> bool {
     matches!(
         block,
         Block::Move {
-            what: Purpose::Start,
+            what: Purpose::Start | Purpose::Align,
+            absolute: true,
             ..
         }
     )
 }
 
-/// Whether a move of a program for `job` is written incrementally: on a rotary axis, all
-/// but the start.
-pub fn is_incremental(job: &Job, block: &Block) -> bool {
-    job.kind() == AxisKind::Rotary && !is_start(block)
+/// Whether a move is written incrementally: on a rotary axis, all but the first.
+pub fn is_incremental(block: &Block) -> bool {
+    matches!(
+        block,
+        Block::Move {
+            absolute: false,
+            ..
+        }
+    )
 }
 
 /// Every control, by name.

@@ -15,9 +15,10 @@
 //! active frames.
 //!
 //! Rotary axes: incremental moves (`G91`) after the start, so MD30455 (how G90 moves a
-//! modulo axis) does not decide the direction; a continuous axis's start is written within
-//! one turn (`C355.000` for −5°): a modulo axis with MD30455 bit 0 = 0 refuses a position
-//! outside 0…360° (alarm 16830, third-party source). Lathes: `G18` and `DIAMOF`, so X is
+//! modulo axis) does not decide the direction; a continuous axis first goes to a target's
+//! angle within one turn (`C0.000`), the same position on a modulo axis and on one that
+//! is not, and reaches its start incrementally: a modulo axis with MD30455 bit 0 = 0
+//! refuses a position outside 0…360° (alarm 16830, third-party source). Lathes: `G18` and `DIAMOF`, so X is
 //! programmed in radius, the slide's position (many turning machines start in `DIAMON`).
 //!
 //! Sources: SINUMERIK ONE NC Programming 12/2019 (program names, `;` comments, machine

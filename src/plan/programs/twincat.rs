@@ -23,9 +23,10 @@
 //!
 //! Rotary axes: incremental moves (`G91`) after the start: a modulo axis's sign words
 //! (`C+θ`, `C-θ`) and P-CHAN-00346 (always the shortest way) do not decide the direction
-//! then; a continuous axis's start is written within one turn (`C355.000` for −5°),
-//! without a sign, so a modulo axis reaches 355° by the shortest way (`C-5.000` would be
-//! +5° reached turning negative). Lathes: `G18` and `G52` (diameter programming
+//! then; a continuous axis first goes to a target's angle within one turn (`C0.000`),
+//! without a sign, so a modulo axis reaches it by the shortest way and one that is not
+//! modulo stands at the same position (`C-5.000` would be +5° reached turning negative on
+//! a modulo axis); the start follows incrementally. Lathes: `G18` and `G52` (diameter programming
 //! deselected, its initial state): X in radius, the slide's position.
 //!
 //! Sources (Beckhoff Infosys, TF5200 programming manual): "Axis commands" (axis names,

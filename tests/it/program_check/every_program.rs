@@ -127,13 +127,14 @@ fn ends(plan: &Plan) -> (f64, f64) {
 /// axis turns freely; one with ends is not wrapped).
 fn linuxcnc(axis: char, full_turn: bool, lathe: bool) -> Vec<Runner> {
     let wraps: &[bool] = if full_turn { &[false, true] } else { &[false] };
+    let (g54, g92) = (100.0, 7.0);
     wraps
         .iter()
         .map(|&wrapped| {
             let cfg = Lcnc {
                 axis,
-                g54: 100.0,
-                g92: 7.0,
+                g54,
+                g92,
                 wrapped,
                 lathe,
             };
@@ -397,12 +398,9 @@ fn outside_travel(plan: &Plan, trace: &Trace, expect: &Expect) -> Vec<String> {
 /// Each plan target reached in machine coordinates (or work coordinates plus the offsets),
 /// exactly n times from each side, after at least the overrun, with the dwell, at the
 /// plan's feed, nothing else moved — by every program on every machine setting.
+/// (Before issue 41 was closed: a continuous rotary axis that counts past 360° read every
+/// target a turn up from its start `C355.000`, 30 of 252 runs.)
 #[test]
-#[ignore = "issue 41 still open: a continuous rotary axis that counts past 360° (LinuxCNC \
-            without WRAPPED_ROTARY, SINUMERIK without modulo, a counting TNC, ISG without \
-            modulo) reads every target a turn up from the start `C355`; a start at the first \
-            target then back by the overrun fixes those but meets LinuxCNC's G53 on a wrapped \
-            axis with offsets (unwrap_rotary). 30 of 252 runs; every other run passes"]
 fn every_program_reaches_every_target_in_machine_coordinates() {
     let mut failures = Vec::new();
     let mut tally: BTreeMap<&str, [usize; 2]> = BTreeMap::new();
@@ -487,5 +485,61 @@ fn corrected(control: &str, program: &str) -> String {
             })
             .collect(),
         _ => program,
+    }
+}
+
+/// LinuxCNC's G53 on a `WRAPPED_ROTARY` axis reads a position below the offsets wrong
+/// (`unwrap_rotary` takes the magnitude of the value less the offsets): `G53 G1 C0` with
+/// 107° of offsets ends at 214°, measured by rs274. The program for a continuous axis in
+/// machine coordinates reads where the axis went and moves back by the difference: with
+/// the offsets, wrapped or counting, its first target is read at 0° (the whole program on
+/// every setting: every_program_reaches_every_target_in_machine_coordinates).
+#[test]
+fn lcnc_full_turn_corrects_what_g53_misreads() {
+    let with_offsets = |wrapped| Lcnc {
+        axis: 'C',
+        g54: 100.0,
+        g92: 7.0,
+        wrapped,
+        lathe: false,
+    };
+    let bare = "%\nG21 G90 G94\nG53 G1 C0 F1000\nM2\n%\n";
+    let trace = rs274::run(bare, &with_offsets(true))
+        .expect("rs274 runs it")
+        .trace;
+    assert!(
+        (trace.moves[0].to - 214.0).abs() < 1e-6,
+        "{:?}",
+        trace.moves
+    );
+    let rotary = axis(AxisKind::Rotary, Travel::Length(360.0));
+    let case = Case {
+        control: "linuxcnc",
+        plan: plan::plan(&rotary, &motion(Cycle::Standard), 7).expect("a plan"),
+        axis: "C",
+        coordinates: Coordinates::Machine,
+        lathe: None,
+    };
+    let program = write(&case).expect("a program");
+    assert!(
+        program.contains(
+            "\n#<misread> = [#5425 + #[5206 + 20 * #5220] + #5216 * #5210 + #5406 - 0.000]\n"
+        ),
+        "{program}"
+    );
+    for wrapped in [false, true] {
+        let trace = rs274::run(&program, &with_offsets(wrapped))
+            .expect("it runs")
+            .trace;
+        let after_first: Vec<f64> = trace.moves.iter().take(2).map(|m| m.to).collect();
+        let start = -case.plan.motion.overrun;
+        let expected = if wrapped { [214.0, 0.0] } else { [0.0, start] };
+        assert_eq!(after_first.len(), 2);
+        for (got, want) in after_first.iter().zip(expected) {
+            assert!(
+                (got - want).abs() < 1e-6,
+                "wrapped {wrapped}: {after_first:?}"
+            );
+        }
     }
 }

@@ -124,9 +124,20 @@ pub fn g_code(control: &Control, program: &str) -> Machine {
         diameter: control.lathe.is_some(),
         ..Machine::default()
     };
+    let mut skipping = false;
     for line in program.lines() {
         let code = code(control.name, line);
         let words: Vec<&str> = code.split_whitespace().collect();
+        // LinuxCNC's correction of what G53 misreads on a wrapped axis: 0 here, where G53
+        // has no such defect (rs274 runs it in program_check); its block is skipped.
+        if control.name == "linuxcnc" && words.first() == Some(&"#<misread>") {
+            skipping = true;
+            continue;
+        }
+        if skipping {
+            skipping = words[..] != ["O101", "endif"];
+            continue;
+        }
         if words.is_empty() || matches!(words[0], "%" | "M30" | "M2") || words[0].starts_with('O') {
             continue;
         }
