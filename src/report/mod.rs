@@ -83,7 +83,9 @@ impl Files {
         path: String,
         data: &impl serde::Serialize,
     ) -> Result<(), ReportError> {
-        let bytes = serde_json::to_vec(data).map_err(|source| ReportError::Data {
+        // Hidden characters of names and notes as text: a report shows them, never acts on
+        // them (U+202E would print a name backwards).
+        let bytes = crate::safe_text::shown_json(data).map_err(|source| ReportError::Data {
             document: document.to_string(),
             source,
         })?;
