@@ -406,7 +406,8 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
         .filter_map(|t| {
             let worst = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
             Some(charts::RatioBar {
-                label: t.label(),
+                // Drawn as text by the chart, not read from the report's data.
+                label: crate::safe_text::visible(&t.label()).into_owned(),
                 parameter: t
                     .evaluated()
                     .map(|e| &e.evaluation)

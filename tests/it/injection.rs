@@ -250,7 +250,7 @@ print("\n".join(c.get("name") for c in ET.parse(sys.argv[1]).iter("testcase")))
         "the page's data show the escape as text"
     );
 
-    let mut reports = String::new();
+    let mut reports = crate::common::pdf_text(&out.join("summary.pdf"));
     for entry in walkdir::WalkDir::new(out.join("reports")) {
         let entry = entry.unwrap();
         if entry.path().extension().is_some_and(|x| x == "pdf") {
