@@ -18,7 +18,11 @@
 //! 4. [`OutputDir::write`] writes each file atomically;
 //! 5. [`OutputDir::finish`] removes the previous run's outputs this run no longer produces
 //!    (an axis taken out of the campaign, PDFs after `--no-pdf`), then writes the manifest
-//!    with exactly this run's outputs.
+//!    with exactly this run's outputs and `# complete: true`; after a failed write
+//!    [`OutputDir::finish_incomplete`] does the same without the outputs it could not
+//!    write (their older copies removed too) and records `# complete: false` and each
+//!    `# missing: PATH`. Until then the manifest says `# complete: false`, so a folder
+//!    whose run was stopped while writing says so as well.
 //!
 //! Each manifest write is followed by a sync of the folder ([`sync_dir`]), so a power loss
 //! keeps the old manifest or the new one, and never a removal the manifest has forgotten.
@@ -148,6 +152,8 @@ pub struct OutputDir {
     /// This run's outputs, once [`OutputDir::prepare`]d.
     new_files: BTreeSet<PathBuf>,
     new_dirs: BTreeSet<PathBuf>,
+    /// The outputs this run could not write.
+    missing: BTreeSet<PathBuf>,
 }
 
 /// What is at a path, without following a final symbolic link.
@@ -218,6 +224,7 @@ impl OutputDir {
             owned_dirs: BTreeSet::new(),
             new_files: BTreeSet::new(),
             new_dirs: BTreeSet::new(),
+            missing: BTreeSet::new(),
         };
         let path = dir.manifest_path();
         match entry(&path)? {
@@ -336,13 +343,25 @@ impl OutputDir {
         self.remove_stale_temporaries()?;
         let files: BTreeSet<&PathBuf> = self.owned_files.iter().chain(&self.new_files).collect();
         let dirs: BTreeSet<&PathBuf> = self.owned_dirs.iter().chain(&self.new_dirs).collect();
-        self.write_manifest(&files, &dirs)
+        self.write_manifest(&files, &dirs, false)
     }
 
     /// Writes one output (a relative path given to [`prepare`](OutputDir::prepare)).
     pub fn write(&self, output: &Path, bytes: &[u8]) -> Result<(), OutputError> {
         let path = self.root.join(output);
         write(&path, bytes).map_err(io_error(&path))
+    }
+
+    /// After some outputs could not be written (`missing`): finishes as [`finish`] would
+    /// with the outputs that were written, so an older copy of a missing output is removed
+    /// too (the folder never mixes two runs), and records the run as incomplete with what
+    /// is missing.
+    ///
+    /// [`finish`]: OutputDir::finish
+    pub fn finish_incomplete(mut self, missing: BTreeSet<PathBuf>) -> Result<(), OutputError> {
+        self.new_files.retain(|p| !missing.contains(p));
+        self.missing = missing;
+        self.finish()
     }
 
     /// After every output is written: removes the previous run's outputs this run did not
@@ -376,13 +395,16 @@ impl OutputDir {
         }
         let files: BTreeSet<&PathBuf> = self.new_files.iter().collect();
         let dirs: BTreeSet<&PathBuf> = self.new_dirs.iter().collect();
-        self.write_manifest(&files, &dirs)
+        self.write_manifest(&files, &dirs, self.missing.is_empty())
     }
 
+    /// The manifest: the header, whether the run is complete (and what it could not
+    /// write), then the files and folders.
     fn write_manifest(
         &self,
         files: &BTreeSet<&PathBuf>,
         dirs: &BTreeSet<&PathBuf>,
+        complete: bool,
     ) -> Result<(), OutputError> {
         let mut lines: Vec<String> = files
             .iter()
@@ -391,6 +413,10 @@ impl OutputDir {
             .collect();
         lines.sort();
         let mut text = String::from(MANIFEST_HEADER);
+        text.push_str(&format!("# complete: {complete}\n"));
+        for missing in &self.missing {
+            text.push_str(&format!("# missing: {}\n", manifest_line(missing)));
+        }
         for line in lines {
             text.push_str(&line);
             text.push('\n');

@@ -12,8 +12,8 @@
 //! `report` write the outputs. `session` runs one campaign in that order; [`batch`] runs
 //! the stages of every axis in parallel. Below them: [`axis_model`] (the axis's error
 //! model, test plan and a simulated test), [`nde`] (the temperature correction),
-//! [`files`] (all reading of user files, rooted), [`yaml`], [`units`], [`atomic`] and
-//! [`lock`]; [`simulate`] writes simulation files and synthetic fleets.
+//! [`files`] (all reading of user files, rooted), [`yaml`], [`units`], [`atomic`],
+//! [`lock`] and [`safe_text`] (input text made safe for each output); [`simulate`] writes simulation files and synthetic fleets.
 
 pub mod atomic;
 pub mod axis_model;
@@ -35,6 +35,7 @@ pub mod plan;
 #[cfg(feature = "pdf")]
 pub mod report;
 pub mod rules;
+pub mod safe_text;
 #[cfg(all(feature = "pdf", feature = "parquet"))]
 pub mod session;
 pub mod simulate;

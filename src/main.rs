@@ -133,7 +133,7 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("axcheck: error: {e:#}");
+            cli::tell(&format!("axcheck: error: {e:#}"));
             ExitCode::from(2)
         }
     }
@@ -217,7 +217,10 @@ fn write_extended_model(
     }
     axcheck::atomic::write(path, model.to_yaml().as_bytes())
         .with_context(|| format!("cannot write {}", path.display()))?;
-    eprintln!("axcheck: wrote the extended model to {}", path.display());
+    cli::tell(&format!(
+        "axcheck: wrote the extended model to {}",
+        path.display()
+    ));
     Ok(())
 }
 

@@ -72,10 +72,11 @@ impl Console {
         match (&self.bar, self.progress) {
             (Some(bar), _) => {
                 bar.set_position(axes as u64);
-                bar.set_message(format!("{} {}", t.label(), t.verdict()));
+                let label = format!("{} {}", t.label(), t.verdict());
+                bar.set_message(axcheck::safe_text::visible(&label).into_owned());
             }
             (None, Progress::EveryTest) => {
-                eprintln!("axcheck: [{k}] {}: {}", t.label(), t.verdict())
+                super::tell(&format!("axcheck: [{k}] {}: {}", t.label(), t.verdict()))
             }
             (None, Progress::Auto) => {
                 let total = self.total;
@@ -100,7 +101,7 @@ impl Console {
 
 impl session::Observer for Console {
     fn lock(&self, message: &str) {
-        eprintln!("axcheck: {message}");
+        super::tell(&format!("axcheck: {message}"));
     }
 
     fn test_done(&self, test: &AxisTest) {
@@ -135,7 +136,7 @@ pub fn problems(result: &CampaignResult, where_all: &str) -> Vec<String> {
     let shown = &attention[..attention.len().min(MAX_PROBLEM_LINES)];
     let width = shown
         .iter()
-        .map(|t| t.label().chars().count())
+        .map(|t| axcheck::safe_text::visible(&t.label()).chars().count())
         .max()
         .unwrap_or(0);
     let mut lines: Vec<String> = shown.iter().map(|t| problem_line(t, width)).collect();
@@ -212,7 +213,8 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
     format!(
         "  {:<12} {:<width$}  {why}",
         t.verdict().name().to_uppercase(),
-        t.label()
+        // Shown as printed (hidden characters as escapes), so the columns line up.
+        axcheck::safe_text::visible(&t.label())
     )
 }
 
@@ -360,19 +362,19 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     console.finish();
     let outcome = outcome?;
     let result = &outcome.result;
-    println!("{}", counts_line(result));
+    super::say(&counts_line(result));
     for line in problems(result, "all in summary.md") {
-        println!("{line}");
+        super::say(&line);
     }
     if let Some(line) = warnings_line(result, "all in summary.md") {
-        println!("{line}");
+        super::say(&line);
     }
     for line in super::tables::lines(result) {
-        println!("{line}");
+        super::say(&line);
     }
-    println!("{}", outputs_line(&plan, &outcome, start));
+    super::say(&outputs_line(&plan, &outcome, start));
     match outcome.appended {
-        Some(Ok(appended)) => println!("{}", appended_line(&appended, plan.history.as_deref())),
+        Some(Ok(appended)) => super::say(&appended_line(&appended, plan.history.as_deref())),
         Some(Err(e)) => {
             let dir = plan.history.clone().unwrap_or_default();
             return Err(anyhow::Error::new(e).context(format!(
@@ -383,7 +385,7 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
         None => {}
     }
     if let Some(trends) = &outcome.trends {
-        print!("{}", flagged_lines(trends));
+        super::print(&flagged_lines(trends))?;
     }
     Ok(exit_code(result))
 }
@@ -479,12 +481,12 @@ pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Re
     };
     let campaign = Campaign::load(path)?;
     let result = evaluate_with(&campaign, options, progress);
-    println!("{}", counts_line(&result));
+    super::say(&counts_line(&result));
     for line in problems(&result, "`axcheck run` lists them all in summary.md") {
-        println!("{line}");
+        super::say(&line);
     }
     if let Some(line) = warnings_line(&result, "`axcheck run` lists them in summary.md") {
-        println!("{line}");
+        super::say(&line);
     }
     let code = exit_code(&result);
     // The process ends with the gate: freeing a fleet's campaign and results one block at

@@ -177,7 +177,7 @@ pub fn command(args: Args) -> Result<String> {
             .map_err(|e| anyhow!("--comp-file-type: {e}"))?;
     let read = axcheck::measurement::read_file_with(&args.file, &args.sheet.options())?;
     if let Some(note) = reference_note(&read.recognised.layout, &args) {
-        eprintln!("axcheck: note: {note}");
+        super::tell(&format!("axcheck: note: {note}"));
     }
     let data = read.data;
     let request = Request {
@@ -283,7 +283,7 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     Ok(match request.out {
         None => {
             for w in &c.warnings {
-                eprintln!("axcheck: warning: {}", w.message);
+                super::tell(&format!("axcheck: warning: {}", w.message));
             }
             done.file
         }

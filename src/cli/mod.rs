@@ -98,12 +98,25 @@ pub fn parse_standard(text: &str) -> Result<axcheck::evaluate::StandardId, Strin
     })
 }
 
-/// Prints to stdout; a closed pipe (`| head`) is not an error.
+/// Prints to stdout, hidden characters from input shown as `\uXXXX` (so a name cannot
+/// clear the screen or reverse a line; in `--json` output the escape is JSON's own, the
+/// strings unchanged); a closed pipe (`| head`) is not an error.
 pub fn print(text: &str) -> anyhow::Result<()> {
     use std::io::Write;
+    let text = axcheck::safe_text::visible(text);
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
         other => Ok(other?),
     }
+}
+
+/// Prints `line` and a line break to stdout, hidden characters shown.
+pub fn say(line: &str) {
+    println!("{}", axcheck::safe_text::visible(line));
+}
+
+/// Prints `line` and a line break to stderr, hidden characters shown.
+pub fn tell(line: &str) {
+    eprintln!("{}", axcheck::safe_text::visible(line));
 }

@@ -61,7 +61,7 @@ pub fn command(args: &Args) -> Result<Option<String>> {
     };
     axcheck::atomic::write(path, csv.as_bytes())
         .with_context(|| format!("cannot write {}", path.display()))?;
-    eprintln!("axcheck: wrote {}", path.display());
+    super::tell(&format!("axcheck: wrote {}", path.display()));
     Ok(None)
 }
 
@@ -146,7 +146,9 @@ pub fn fleet(axes: usize, seed: u64, dir: &Path) -> Result<()> {
         anyhow::bail!("--fleet needs at least one axis");
     }
     let start = std::time::Instant::now();
-    let _lock = axcheck::session::lock_folders(dir, None, false, &|m| eprintln!("axcheck: {m}"))?;
+    let _lock = axcheck::session::lock_folders(dir, None, false, &|m| {
+        super::tell(&format!("axcheck: {m}"))
+    })?;
     let fleet = axcheck::simulate::fleet::generate(axes, seed);
     for f in &fleet.files {
         let path = dir.join(&f.path);
@@ -156,12 +158,12 @@ pub fn fleet(axes: usize, seed: u64, dir: &Path) -> Result<()> {
     let campaign = dir.join("campaign.yaml");
     axcheck::atomic::write(&campaign, fleet.campaign_yaml.as_bytes())
         .with_context(|| format!("cannot write {}", campaign.display()))?;
-    eprintln!(
+    super::tell(&format!(
         "axcheck: wrote {} ({} axes, {} readings) in {:.1} s",
         campaign.display(),
         fleet.axes,
         fleet.readings,
         start.elapsed().as_secs_f64()
-    );
+    ));
     Ok(())
 }

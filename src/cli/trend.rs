@@ -73,7 +73,9 @@ pub fn run(request: &Args) -> Result<String> {
 
 /// `OUT/trends.csv` and `OUT/trends.pdf`.
 fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &Args) -> Result<()> {
-    let _lock = axcheck::session::lock_folders(out, None, false, &|m| eprintln!("axcheck: {m}"))?;
+    let _lock = axcheck::session::lock_folders(out, None, false, &|m| {
+        super::tell(&format!("axcheck: {m}"))
+    })?;
     let path = out.join("trends.csv");
     axcheck::atomic::write(&path, trend::view::csv(pairs.iter().copied()).as_bytes())
         .with_context(|| format!("cannot write {}", path.display()))?;

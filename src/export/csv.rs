@@ -1,18 +1,11 @@
-//! `summary.csv`: the summary table, RFC 4180 quoting, numbers in shortest round-trip form.
+//! `summary.csv`: the summary table, RFC 4180 quoting, numbers in shortest round-trip form;
+//! text cells neutralised against formulas ([`crate::safe_text::csv_text`]).
 
 use super::table::{Cell, columns, rows};
 use super::{ExportError, Exporter, OutputFile};
 use crate::batch::CampaignResult;
 
 pub struct Csv;
-
-fn quote(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
 
 impl Exporter for Csv {
     fn name(&self) -> &'static str {
@@ -28,7 +21,7 @@ impl Exporter for Csv {
             let cells: Vec<String> = row
                 .iter()
                 .map(|c| match c {
-                    Cell::Text(s) => quote(s),
+                    Cell::Text(s) => crate::safe_text::csv_text(s),
                     Cell::Int(i) => i.to_string(),
                     Cell::Number(x) if x.is_finite() => x.to_string(),
                     Cell::Number(_) | Cell::Empty => String::new(),

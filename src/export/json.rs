@@ -306,6 +306,18 @@ fn results_head(result: &CampaignResult) -> Head<'_> {
     }
 }
 
+/// `json` with the hidden characters serde_json writes raw (DEL, C1, bidirectional
+/// controls) as JSON escapes: the same strings, which no terminal or viewer acts on.
+fn shown(json: Vec<u8>) -> Vec<u8> {
+    match String::from_utf8(json) {
+        Ok(text) => match crate::safe_text::visible(&text) {
+            std::borrow::Cow::Owned(shown) => shown.into_bytes(),
+            std::borrow::Cow::Borrowed(_) => text.into_bytes(),
+        },
+        Err(e) => e.into_bytes(),
+    }
+}
+
 /// `results.json`, pretty-printed: the axes are serialised in parallel (1 000 axes are
 /// 48 MB, 0.8 s of one core) and set into the head as `to_vec_pretty` would place them.
 pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Error> {
@@ -321,10 +333,10 @@ pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Erro
                 .evaluated()
                 .and_then(|e| e.compensation.as_deref())
                 .map(|c| CompensationJson::new(t, c, table.as_deref()));
-            serde_json::to_vec_pretty(&json)
+            serde_json::to_vec_pretty(&json).map(shown)
         })
         .collect::<Result<_, _>>()?;
-    let mut out = serde_json::to_vec_pretty(&results_head(result))?;
+    let mut out = shown(serde_json::to_vec_pretty(&results_head(result))?);
     let empty = b"\"axes\": []\n}";
     if axes.is_empty() || !out.ends_with(empty) {
         return Ok(out);

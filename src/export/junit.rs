@@ -9,22 +9,10 @@ use std::fmt::Write;
 
 pub struct Junit;
 
-/// Escapes text for XML attributes and content; drops characters XML 1.0 forbids.
+/// Text for XML attributes and content: markup as entities, the characters XML 1.0
+/// forbids and those that hide or reorder text shown visibly ([`crate::safe_text`]).
 pub fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            '\t' | '\n' | '\r' => out.push(c),
-            c if (c as u32) < 0x20 || c == '\u{FFFE}' || c == '\u{FFFF}' => {}
-            c => out.push(c),
-        }
-    }
-    out
+    crate::safe_text::xml_text(s)
 }
 
 impl Exporter for Junit {
@@ -140,7 +128,7 @@ mod tests {
     fn escapes_markup_and_control_characters() {
         assert_eq!(
             super::escape("a<b>&\"c'\u{1}"),
-            "a&lt;b&gt;&amp;&quot;c&apos;"
+            "a&lt;b&gt;&amp;&quot;c&apos;\\u0001"
         );
     }
 }

@@ -10,9 +10,10 @@ use std::fmt::Write;
 
 pub struct Markdown;
 
-/// User text made safe for a table cell.
+/// Text from input made safe for a table cell or a line: no HTML, no Markdown syntax, no
+/// hidden characters.
 fn cell(s: &str) -> String {
-    s.replace('|', "\\|").replace('\n', " ")
+    crate::safe_text::markdown_text(s)
 }
 
 impl Exporter for Markdown {
@@ -36,6 +37,9 @@ impl Exporter for Markdown {
                 let _ = writeln!(out, "{p}");
             }
         }
+        // Every text from input went through `cell`; what axcheck composed around it (a
+        // parameter's check, a rule's id) is made visible too, whatever it quotes.
+        let out = crate::safe_text::visible(&out).into_owned();
         Ok(vec![OutputFile {
             path: "summary.md".into(),
             bytes: out.into_bytes(),

@@ -38,6 +38,36 @@ pub enum ExportError {
     /// way), or writing it failed.
     #[error(transparent)]
     Output(#[from] crate::atomic::OutputError),
+    /// Some outputs could not be written (a full disk): the others are, and the manifest
+    /// says the folder is incomplete and what it misses.
+    #[error("{}", incomplete_message(.written, .missing, .manifest))]
+    Incomplete {
+        written: usize,
+        missing: Vec<PathBuf>,
+        manifest: PathBuf,
+        /// Why the first missing output could not be written.
+        #[source]
+        first: Box<crate::atomic::OutputError>,
+    },
+}
+
+/// Missing outputs named in the message; the manifest lists them all.
+const MISSING_NAMED: usize = 20;
+
+/// `wrote 33 of 36 outputs; missing: …; …`.
+fn incomplete_message(written: &usize, missing: &[PathBuf], manifest: &Path) -> String {
+    let mut names: Vec<String> = (missing.iter().take(MISSING_NAMED))
+        .map(|p| p.display().to_string())
+        .collect();
+    if missing.len() > MISSING_NAMED {
+        names.push(format!("… and {} more", missing.len() - MISSING_NAMED));
+    }
+    format!(
+        "the outputs are incomplete: {written} of {} written; missing: {} (listed in {}, which says complete: false); free space or fix the cause below and run again",
+        written + missing.len(),
+        names.join(", "),
+        manifest.display()
+    )
 }
 
 /// One file an exporter produces, its path relative to the output folder.
@@ -90,9 +120,23 @@ pub fn write_all(
         files.extend(produced);
     }
     out.prepare(files.iter().map(|f| f.path.as_path()))?;
-    write_files(&out, &files)?;
-    out.finish()?;
-    Ok(files.iter().map(|f| dir.join(&f.path)).collect())
+    let mut failed = write_files(&out, &files)?.into_iter();
+    let Some((path, first)) = failed.next() else {
+        out.finish()?;
+        return Ok(files.iter().map(|f| dir.join(&f.path)).collect());
+    };
+    let missing: Vec<PathBuf> = std::iter::once(path)
+        .chain(failed.map(|(p, _)| p))
+        .collect();
+    // The manifest records what is missing; if even it cannot be written, the message
+    // still names the missing outputs.
+    let _ = out.finish_incomplete(missing.iter().cloned().collect());
+    Err(ExportError::Incomplete {
+        written: files.len() - missing.len(),
+        missing,
+        manifest: dir.join(crate::atomic::MANIFEST),
+        first: Box::new(first),
+    })
 }
 
 /// Writers working at once: each file is synced to disk before its rename, and a sync waits
@@ -100,14 +144,21 @@ pub fn write_all(
 /// seconds waiting; several writers overlap the waits (0.75 ms per file with two).
 const WRITERS: usize = 8;
 
-/// Writes `files` with up to [`WRITERS`] threads; the first error stops the others.
-fn write_files(out: &crate::atomic::OutputDir, files: &[OutputFile]) -> Result<(), ExportError> {
+/// Writes `files` with up to [`WRITERS`] threads, each of them whatever becomes of the
+/// others (so which outputs a full disk leaves out depends on their sizes, not on timing);
+/// returns those that could not be written, in order, with why.
+fn write_files(
+    out: &crate::atomic::OutputDir,
+    files: &[OutputFile],
+) -> Result<Vec<(PathBuf, crate::atomic::OutputError)>, ExportError> {
     let here = |work: &(dyn Fn() + Sync)| {
         work();
         Ok::<(), crate::atomic::OutputError>(())
     };
-    workers::map_in_order(files, WRITERS, here, |file| {
-        out.write(&file.path, &file.bytes)
+    let written = workers::map_in_order(files, WRITERS, here, |file| {
+        Ok(out.write(&file.path, &file.bytes).err())
     })?;
-    Ok(())
+    Ok((files.iter().zip(written))
+        .filter_map(|(file, error)| error.map(|e| (file.path.clone(), e)))
+        .collect())
 }

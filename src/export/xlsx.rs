@@ -53,7 +53,10 @@ fn workbook(result: &CampaignResult, trends: Option<&AxisTrends>) -> Result<Vec<
     let created = created(result.info.date.as_deref())?;
     book.set_properties(
         &DocProperties::new()
-            .set_title(format!("{}: axis tests", result.info.name))
+            .set_title(format!(
+                "{}: axis tests",
+                crate::safe_text::visible(&result.info.name)
+            ))
             .set_creation_datetime(&created),
     );
     tests_sheet(book.add_worksheet(), result, trends)?;
@@ -241,8 +244,12 @@ fn write_test(sheet: &mut Worksheet, r: u32, t: &crate::batch::AxisTest) -> Resu
     write_number(sheet, r, 2, t.test as f64)
 }
 
-/// Text, cut at Excel's limit with `…` (an error message can be long).
+/// Text, written as a string (never a formula, whatever it starts with), hidden characters
+/// shown ([`crate::safe_text::visible`]), cut at Excel's limit with `…` (an error message
+/// can be long).
 fn write_text(sheet: &mut Worksheet, r: u32, col: u16, text: &str) -> Result<(), XlsxError> {
+    let text = crate::safe_text::visible(text);
+    let text = text.as_ref();
     if text.chars().count() <= MAX_CELL_CHARS {
         sheet.write_string(r, col, text)?;
     } else {

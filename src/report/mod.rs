@@ -83,7 +83,9 @@ impl Files {
         path: String,
         data: &impl serde::Serialize,
     ) -> Result<(), ReportError> {
-        let bytes = serde_json::to_vec(data).map_err(|source| ReportError::Data {
+        // Hidden characters of names and notes as text: a report shows them, never acts on
+        // them (U+202E would print a name backwards).
+        let bytes = crate::safe_text::shown_json(data).map_err(|source| ReportError::Data {
             document: document.to_string(),
             source,
         })?;
@@ -404,7 +406,8 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
         .filter_map(|t| {
             let worst = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
             Some(charts::RatioBar {
-                label: t.label(),
+                // Drawn as text by the chart, not read from the report's data.
+                label: crate::safe_text::visible(&t.label()).into_owned(),
                 parameter: t
                     .evaluated()
                     .map(|e| &e.evaluation)

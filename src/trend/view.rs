@@ -143,13 +143,9 @@ fn csv_row(series: &Series, trend: &Trend) -> Vec<String> {
     ]
 }
 
-/// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
+/// A text field: RFC 4180 quoting, neutralised against formulas and hidden characters.
 fn quote(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
+    crate::safe_text::csv_text(s)
 }
 
 #[cfg(test)]

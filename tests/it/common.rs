@@ -95,3 +95,17 @@ pub fn while_swapping<T>(mut swap: impl FnMut() + Send, body: impl FnOnce() -> T
         body()
     })
 }
+
+/// Copies the folder `from` with everything in it to `to`.
+pub fn copy_tree(from: &std::path::Path, to: &std::path::Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_tree(&entry.path(), &target);
+        } else {
+            std::fs::copy(entry.path(), target).unwrap();
+        }
+    }
+}

@@ -23,6 +23,7 @@ mod gost27843;
 mod history;
 #[cfg(unix)]
 mod hostile_fs;
+mod injection;
 mod iso230_2;
 mod layouts;
 #[cfg(unix)]

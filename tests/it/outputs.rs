@@ -174,7 +174,8 @@ fn run_and_kill(campaign: &Path, out: &Path, when: Kill) -> bool {
 /// A run killed (SIGKILL) at several moments, before and while it writes, alternating
 /// between two campaigns whose outputs differ in every file: after each kill every output
 /// is complete and valid, and byte-identical either to what the folder held before that
-/// run or to the complete outputs of the new one. Stale temporary files are removed by
+/// run or to the complete outputs of the new one (the manifest may also be the run's own
+/// while it writes, which says `complete: false`). Stale temporary files are removed by
 /// the next run.
 #[cfg(unix)]
 #[test]
@@ -253,6 +254,18 @@ fn a_run_killed_at_any_moment_leaves_complete_outputs() {
         let mut fresh = 0;
         for (name, bytes) in &after.files {
             assert_complete(name, bytes, &new.files[name]);
+            let previous = before.files.get(name);
+            if name == MANIFEST && bytes != &new.files[name] && Some(bytes) != previous {
+                // Killed while writing: the manifest lists the same files and says so.
+                let new = String::from_utf8_lossy(&new.files[name]);
+                let writing = new.replace("\n# complete: true\n", "\n# complete: false\n");
+                assert_eq!(
+                    String::from_utf8_lossy(bytes),
+                    writing,
+                    "kill {k} ({when:?})"
+                );
+                continue;
+            }
             if bytes == &new.files[name] {
                 fresh += 1;
             } else {
@@ -529,5 +542,88 @@ fn a_tampered_manifest_or_a_link_in_the_way_is_refused() {
         assert_eq!(std::fs::read_dir(&elsewhere).unwrap().count(), 0);
         assert!(!out.join("results.json").exists());
     }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A write that fails (issue 42: a full disk; here, deterministically, a file-size limit of
+/// the process, `ulimit -f`, which the kernel enforces with EFBIG as it does a full disk)
+/// leaves the other outputs written, removes the older copies of the missing ones, marks the
+/// manifest `complete: false` with each missing output, and `run` names them and exits 2.
+/// The next run without the limit completes the folder again.
+#[test]
+fn a_failed_write_marks_the_folder_incomplete_and_names_what_is_missing() {
+    let dir = scratch("outputs-incomplete");
+    let campaign = small_campaign(&dir);
+    let out = dir.join("out");
+    let (code, log) = run(&campaign, &out, &[]);
+    assert_eq!(code, 0, "{log}");
+    let complete = snapshot(&out);
+    assert!(
+        std::fs::read_to_string(out.join(MANIFEST))
+            .unwrap()
+            .contains("\n# complete: true\n")
+    );
+    // The limit in KiB: below the three largest outputs, above the others.
+    let mut sizes: Vec<(usize, &String)> = (complete.files.iter())
+        .map(|(name, bytes)| (bytes.len(), name))
+        .collect();
+    sizes.sort();
+    let limit_kib = sizes[sizes.len() - 4].0 / 1024 + 1;
+    let too_big: Vec<&String> = (sizes.iter())
+        .filter(|(n, _)| *n > limit_kib * 1024)
+        .map(|(_, name)| *name)
+        .collect();
+    assert_eq!(too_big.len(), 3, "{sizes:?}");
+
+    let limited = std::process::Command::new("bash")
+        .args([
+            "-c",
+            "trap '' XFSZ; ulimit -f \"$1\"; shift; exec \"$@\"",
+            "bash",
+        ])
+        .arg(limit_kib.to_string())
+        .arg(env!("CARGO_BIN_EXE_axcheck"))
+        .args(["run", s(&campaign), "--out", s(&out)])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&limited.stderr);
+    assert_eq!(limited.status.code(), Some(2), "{stderr}");
+    let total = complete.files.len() - 1;
+    assert!(
+        stderr.contains(&format!(
+            "the outputs are incomplete: {} of {total} written; missing: ",
+            total - 3
+        )),
+        "{stderr}"
+    );
+    let manifest = std::fs::read_to_string(out.join(MANIFEST)).unwrap();
+    assert!(manifest.contains("\n# complete: false\n"), "{manifest}");
+    let after = snapshot(&out);
+    for name in &too_big {
+        assert!(stderr.contains(name.as_str()), "{name}: {stderr}");
+        assert!(
+            manifest.contains(&format!("\n# missing: {name}\n")),
+            "{manifest}"
+        );
+        assert!(
+            !after.files.contains_key(*name),
+            "{name}: the older copy is removed"
+        );
+        assert!(
+            !manifest_entries(&out).contains(name),
+            "{name} listed as written"
+        );
+    }
+    assert!(after.temporaries.is_empty(), "{:?}", after.temporaries);
+    assert_eq!(after.files.len(), complete.files.len() - 3);
+    for (name, bytes) in &after.files {
+        if name != MANIFEST {
+            assert_eq!(bytes, &complete.files[name], "{name}");
+        }
+    }
+
+    let (code, log) = run(&campaign, &out, &[]);
+    assert_eq!(code, 0, "{log}");
+    assert_eq!(snapshot(&out), complete);
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -3,7 +3,7 @@
 //! page's script and markup.
 
 use crate::browser::cdp::Browser;
-use crate::common::{axcheck, copy_data, scratch};
+use crate::common::{axcheck, copy_data, copy_tree, scratch};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -317,17 +317,4 @@ fn a_run_with_a_history_shows_trends_and_history_charts() {
     // One chart per parameter with a limit or a trend: A, A↑, E, R, B, B̄ for this axis.
     assert_eq!(n, 6);
     assert_eq!(b.console_errors(), Vec::<String>::new());
-}
-
-fn copy_tree(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for entry in std::fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_tree(&entry.path(), &target);
-        } else {
-            std::fs::copy(entry.path(), target).unwrap();
-        }
-    }
 }

@@ -360,7 +360,8 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
 
 /// The example plant's committed history (2022–2026, `example-campaign/history`): the trend
 /// flags VMC-07 Y, whose nut wears (reversal +1.2 µm a year), worsening significantly in B̄;
-/// of the other axes only ROTARY-T A, whose R↑ is over its limit at the latest inspection.
+/// of the other axes only ROTARY-T A, whose R↑ is over its limit at the latest inspection,
+/// and MILL-3 Y, over seven limits since its table was loaded with the wrong sign in 2026.
 #[test]
 fn the_example_history_flags_the_wearing_axis() {
     let (code, stdout, err) =
@@ -380,8 +381,9 @@ fn the_example_history_flags_the_wearing_axis() {
     let of = |m: &str, x: &str| flagged.iter().filter(|f| f.0 == m && f.1 == x).count();
     assert!(of("VMC-07", "Y") >= 4, "{flagged:?}");
     assert!(flagged.contains(&("VMC-07".into(), "Y".into(), "B_mean".into())));
+    assert_eq!(of("MILL-3", "Y"), 7, "{flagged:?}");
     assert_eq!(
-        of("VMC-07", "Y") + of("ROTARY-T", "A"),
+        of("VMC-07", "Y") + of("ROTARY-T", "A") + of("MILL-3", "Y"),
         flagged.len(),
         "{flagged:?}"
     );
@@ -394,4 +396,50 @@ fn the_example_history_flags_the_wearing_axis() {
     let slope = b["slope_per_year"].as_f64().unwrap();
     // B̄ = x̄↑ − x̄↓ grows in magnitude by the model's 1.2 µm a year.
     assert!((slope.abs() - 1.2).abs() < 0.2, "{slope}");
+}
+
+/// The README's claims about the example history, measured: a run of the example campaign
+/// with it replaces the 2026 file with the same bytes (the committed history is what the
+/// campaign writes), and `trend` prints what the README shows, word for word.
+#[test]
+fn the_example_history_is_what_the_readme_says() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let committed = root.join("example-campaign/history");
+    let dir = crate::common::scratch("example-history-rerun");
+    let history = dir.join("history");
+    crate::common::copy_tree(&committed, &history);
+    let file = "year=2026/plant-2-annual-inspection_2026-11-20.parquet";
+    let out = dir.join("out");
+    let args = [
+        "run",
+        "example-campaign/campaign.yaml",
+        "--out",
+        out.to_str().unwrap(),
+        "--history",
+        history.to_str().unwrap(),
+        "--no-pdf",
+    ];
+    let (code, stdout, err) = crate::common::axcheck(&args);
+    assert_eq!(code, 1, "{stdout}{err}");
+    assert!(stdout.contains("History: 225 rows appended to"), "{stdout}");
+    assert!(
+        stdout.contains("Trends (2022-11-20 to 2026-11-20, horizon 2 years): 13 series flagged"),
+        "{stdout}"
+    );
+    let rewritten = std::fs::read(history.join(file)).unwrap();
+    assert!(
+        rewritten == std::fs::read(committed.join(file)).unwrap(),
+        "the run changed {file}: run example-campaign/history/regenerate.sh"
+    );
+
+    let (code, stdout, err) = crate::common::axcheck(&["trend", "example-campaign/history"]);
+    assert_eq!(code, 0, "{err}");
+    let readme = include_str!("../../README.md");
+    let start = readme
+        .find("```text\nexample-campaign/history: ")
+        .expect("the README shows trend's output on the example history");
+    let shown = &readme[start + "```text\n".len()..];
+    let shown = &shown[..shown.find("```").unwrap()];
+    assert_eq!(stdout, shown);
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -113,7 +113,7 @@ fn details(
                 detail::detail(t, trends, links)
             })
             .collect();
-        let json = serde_json::to_vec(&details).map_err(json_error)?;
+        let json = crate::safe_text::shown_json(&details).map_err(json_error)?;
         let mut deflate = flate2::write::ZlibEncoder::new(Vec::new(), flate2::Compression::best());
         deflate.write_all(&json).map_err(io_error)?;
         let bytes = deflate.finish().map_err(io_error)?;
@@ -139,9 +139,11 @@ fn io_error(e: std::io::Error) -> ExportError {
 
 /// `data` as JSON that can stand inside a `<script>` element: `<`, `>`, `&` and the line
 /// separators U+2028/U+2029 as `\u` escapes (JSON has them only inside strings, where the
-/// escape means the same character).
+/// escape means the same character); hidden characters of the strings as text
+/// ([`crate::safe_text::shown_json`]), so the page shows them.
 pub fn script_json(data: &impl Serialize) -> Result<String, ExportError> {
-    let json = serde_json::to_string(data).map_err(json_error)?;
+    let json = crate::safe_text::shown_json(data).map_err(json_error)?;
+    let json = String::from_utf8(json).map_err(|e| io_error(std::io::Error::other(e)))?;
     let mut out = String::with_capacity(json.len() + json.len() / 64);
     for c in json.chars() {
         match c {
