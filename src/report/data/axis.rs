@@ -19,6 +19,8 @@ use serde::Serialize;
 #[derive(Serialize)]
 pub struct AxisReport<'a> {
     campaign: CampaignHeader<'a>,
+    /// The campaign's name for headings and footers ([`super::campaign_short`]).
+    campaign_short: String,
     title: String,
     facts: Vec<Row>,
     /// Names the facts shorten, in full.
@@ -62,6 +64,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
     let conditions = t.spec.as_ref().map(|s| &*s.raw.conditions);
     AxisReport {
         campaign: CampaignHeader::new(result),
+        campaign_short: super::campaign_short(result),
         // Shortened: the facts below print the names whole.
         title: format!(
             "{} — axis {}",

@@ -91,8 +91,6 @@ pub(in crate::report) fn short_name(name: &str, max: usize) -> String {
 #[derive(Serialize)]
 pub struct CampaignHeader<'a> {
     name: &'a str,
-    /// The name as the axis reports' headings and the footers show it ([`short_name`]).
-    short_name: String,
     site: &'a str,
     purpose: &'a str,
     date: &'a str,
@@ -106,7 +104,6 @@ impl<'a> CampaignHeader<'a> {
         let info = &result.info;
         CampaignHeader {
             name: &info.name,
-            short_name: short_name(&info.name, 2 * SHORT_NAME),
             site: info.site.as_deref().unwrap_or_default(),
             purpose: info.purpose.as_deref().unwrap_or_default(),
             date: info.date.as_deref().unwrap_or_default(),
@@ -115,6 +112,12 @@ impl<'a> CampaignHeader<'a> {
             standard: result.standard.title(),
         }
     }
+}
+
+/// The campaign's name as the axis reports' headings and the footers show it: longer
+/// names shortened ([`short_name`]); the summary's title prints it whole.
+pub(in crate::report) fn campaign_short(result: &CampaignResult) -> String {
+    short_name(&result.info.name, 2 * SHORT_NAME)
 }
 
 /// A test's label (`MACHINE AXIS`) with each name shortened ([`short_name`]).

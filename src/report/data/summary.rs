@@ -12,6 +12,8 @@ use serde::Serialize;
 #[derive(Serialize)]
 pub struct Summary<'a> {
     campaign: CampaignHeader<'a>,
+    /// The campaign's name for headings and footers ([`super::campaign_short`]).
+    campaign_short: String,
     counts: Counts,
     rows: Vec<SummaryRow>,
     errors: Vec<Problem>,
@@ -85,6 +87,7 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
     };
     Summary {
         campaign: CampaignHeader::new(result),
+        campaign_short: super::campaign_short(result),
         counts: Counts {
             total: result.tests.len(),
             pass: counts[&Verdict::Pass],
