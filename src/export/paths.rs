@@ -5,36 +5,56 @@ use crate::batch::CampaignResult;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;
 
-/// A file-name part from user text: ASCII letters, digits, `-`, `_` and `.` kept, anything
-/// else (`/`, `..`, NUL, spaces, non-ASCII) becomes `_`; no leading dot; Windows' reserved
-/// device names get a trailing `_`; at most 64 characters.
+/// Longest file-name part, in bytes of UTF-8: with `-testK`, `-N` and the extension the
+/// name stays under the 255 bytes of ext4 and the 255 UTF-16 units of NTFS.
+const NAME_BYTES: usize = 120;
+
+/// A file-name part from user text: letters, marks and digits of every script, `-`, `_` and
+/// `.` kept (`Ось X` → `Ось_X`); anything else (`/`, `\`, `:`, `..`, NUL, controls,
+/// spaces, direction marks) becomes `_`; no leading dot and no trailing dot (Windows drops
+/// it); Windows' reserved device names get a trailing `_`; at most 64 characters and
+/// [`NAME_BYTES`] bytes, cut before a letter, never between it and its marks.
 pub fn safe_name(text: &str) -> String {
-    let mut s: String = text
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.') {
-                c
-            } else {
-                '_'
-            }
-        })
-        .take(64)
-        .collect();
+    use unicode_properties::{GeneralCategoryGroup as G, UnicodeGeneralCategory};
+    let mut s = String::new();
+    for (n, c) in text.chars().enumerate() {
+        let group = c.general_category_group();
+        let kept = matches!(group, G::Letter | G::Mark | G::Number) || matches!(c, '-' | '_' | '.');
+        let c = if kept { c } else { '_' };
+        let full = n >= 64 || s.len() + c.len_utf8() > NAME_BYTES;
+        if full && group != G::Mark || s.len() + c.len_utf8() > NAME_BYTES {
+            break;
+        }
+        s.push(c);
+    }
     while s.starts_with('.') {
         s.replace_range(0..1, "_");
+    }
+    while s.ends_with('.') {
+        s.pop();
+        s.push('_');
     }
     if s.is_empty() {
         s.push('_');
     }
-    let stem = s.split('.').next().unwrap_or("").to_ascii_uppercase();
-    let reserved = matches!(stem.as_str(), "CON" | "PRN" | "AUX" | "NUL")
-        || ((stem.starts_with("COM") || stem.starts_with("LPT"))
-            && stem.len() == 4
-            && stem.as_bytes()[3].is_ascii_digit());
-    if reserved {
+    if reserved_on_windows(&s) {
         s.push('_');
     }
     s
+}
+
+/// `CON`, `PRN`, `AUX`, `NUL`, `COM1`…`COM9`, `LPT1`…`LPT9` (also with the superscript
+/// digits ¹ ² ³, and `COM0`/`LPT0`), before any extension: Windows opens the device.
+fn reserved_on_windows(name: &str) -> bool {
+    let stem = name.split('.').next().unwrap_or("").to_uppercase();
+    let digit = |d: &str| {
+        let mut it = d.chars();
+        matches!((it.next(), it.next()), (Some(c), None) if c.is_ascii_digit() || "¹²³".contains(c))
+    };
+    matches!(stem.as_str(), "CON" | "PRN" | "AUX" | "NUL")
+        || ["COM", "LPT"]
+            .iter()
+            .any(|p| stem.strip_prefix(p).is_some_and(digit))
 }
 
 /// A path per test under `folder`, `MACHINE/AXIS.ext` (`AXIS-testK.ext` when an axis has
@@ -73,7 +93,8 @@ pub fn test_stems(result: &CampaignResult, folder: &str) -> Vec<PathBuf> {
 fn unique(base: &str, taken: &mut BTreeSet<String>) -> String {
     let mut name = base.to_string();
     let mut k = 2;
-    while !taken.insert(name.to_ascii_lowercase()) {
+    // Case-insensitive file systems (NTFS, APFS) fold every script's case.
+    while !taken.insert(name.to_lowercase()) {
         name = format!("{base}-{k}");
         k += 1;
     }
@@ -88,12 +109,39 @@ mod tests {
     fn names_are_safe() {
         assert_eq!(safe_name("VMC-07"), "VMC-07");
         assert_eq!(safe_name("../etc/passwd"), "_._etc_passwd");
-        assert_eq!(safe_name(".."), "_.");
+        assert_eq!(safe_name(".."), "__");
         assert_eq!(safe_name("a\0b"), "a_b");
         assert_eq!(safe_name("slit 1"), "slit_1");
         assert_eq!(safe_name("CON"), "CON_");
         assert_eq!(safe_name("com1.txt"), "com1.txt_");
         assert_eq!(safe_name(""), "_");
-        assert_eq!(safe_name("Ось X"), "____X");
+        assert_eq!(safe_name("Ось X"), "Ось_X");
+        assert_eq!(safe_name("COM¹"), "COM¹_");
+        assert_eq!(safe_name("lpt0.pdf"), "lpt0.pdf_");
+        assert_eq!(safe_name("X."), "X_");
+    }
+
+    #[test]
+    fn every_script_keeps_its_letters() {
+        assert_eq!(safe_name("Станок-16К20Ф3"), "Станок-16К20Ф3");
+        assert_eq!(safe_name("主轴Z轴"), "主轴Z轴");
+        assert_eq!(safe_name("ציר Y"), "ציר_Y");
+        assert_eq!(safe_name("المحور X"), "المحور_X");
+        // Combining marks stay with their letter (X̄, Hindi vowel signs).
+        assert_eq!(safe_name("X\u{304}"), "X\u{304}");
+        assert_eq!(safe_name("अक्ष"), "अक्ष");
+        // Windows' forbidden characters and direction overrides are replaced.
+        assert_eq!(safe_name("a<b>c:d\"e|f?g*h\\i/j"), "a_b_c_d_e_f_g_h_i_j");
+        assert_eq!(safe_name("\u{202E}X"), "_X");
+    }
+
+    #[test]
+    fn names_are_bounded_in_characters_and_bytes() {
+        assert_eq!(safe_name(&"x".repeat(10_000)).len(), 64);
+        // 4-byte letters: at most NAME_BYTES bytes, whole characters.
+        let wide = safe_name(&"𠀀".repeat(100));
+        assert_eq!(wide, "𠀀".repeat(NAME_BYTES / 4));
+        // Deterministic.
+        assert_eq!(safe_name("Ось X"), safe_name("Ось X"));
     }
 }

@@ -414,7 +414,7 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
                     .and_then(|e| e.parameter(&worst.key))
                     .map_or(worst.key.clone(), |p| p.symbol().to_string()),
                 ratio: worst.ratio(),
-                pass: worst.pass,
+                verdict: t.verdict(),
             })
         })
         .collect()

@@ -37,6 +37,7 @@ mod programs;
 mod properties;
 mod renishaw;
 mod report_compensation;
+mod report_layout;
 mod reports;
 mod rules;
 mod simulator;

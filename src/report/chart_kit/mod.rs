@@ -39,6 +39,20 @@ pub(crate) const GUIDE: RGBColor = RGBColor(0xC4, 0xC4, 0xC4);
 pub(crate) const FRAME: RGBColor = RGBColor(0x9A, 0x9A, 0x9A);
 pub(crate) const STRIPE: RGBColor = RGBColor(0xF3, 0xF3, 0xF3);
 
+/// A verdict's colours (light fill, dark edge and text), as the templates' `verdict-style`
+/// (style.typ) has them. Every verdict has its own: a chart coloured by verdict follows
+/// when one is added.
+pub(crate) fn verdict_tone(v: crate::judge::Verdict) -> (RGBColor, RGBColor) {
+    use crate::judge::Verdict;
+    match v {
+        Verdict::Pass => (RGBColor(0xE3, 0xF1, 0xE3), RGBColor(0x2D, 0x6A, 0x2D)),
+        Verdict::Fail => (RGBColor(0xF8, 0xDE, 0xDB), RGBColor(0x9B, 0x1C, 0x12)),
+        Verdict::Noncompliant => (RGBColor(0xFB, 0xED, 0xD0), RGBColor(0x8A, 0x5A, 0x00)),
+        Verdict::Error => (RGBColor(228, 228, 228), RGBColor(40, 40, 40)),
+        Verdict::Inconclusive => (RGBColor(0xE6, 0xE9, 0xF5), RGBColor(0x2F, 0x3F, 0x7A)),
+    }
+}
+
 /// Text sizes in SVG pixels (the `font-size` written into the SVG).
 pub(crate) const TICK_PX: f64 = 14.0;
 pub(crate) const DESC_PX: f64 = 15.5;

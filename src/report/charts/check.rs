@@ -21,6 +21,9 @@ pub struct CheckBar {
     pub low: f64,
     pub high: f64,
     pub outside: bool,
+    /// The decimals to print the row's numbers with, when they must agree with a table's
+    /// (the decision zones: the results table's); else chosen from the numbers.
+    pub decimals: Option<usize>,
 }
 
 const CHECK_TOP: u32 = 62;
@@ -36,9 +39,12 @@ pub fn model_checks_height(bars: usize) -> u32 {
     (CHECK_TOP + CHECK_BOTTOM + n as u32 * check_row_height(n)).max(150)
 }
 
-/// Decimals for one row's numbers: three significant digits of the band's larger end, and
-/// enough to show the band's width to two digits.
+/// Decimals for one row's numbers: its own when it has them; else three significant
+/// digits of the band's larger end, and enough to show the band's width to two digits.
 pub(crate) fn row_decimals(c: &CheckBar) -> usize {
+    if let Some(d) = c.decimals {
+        return d;
+    }
     let ends = [c.low, c.high].into_iter().filter(|v| v.is_finite());
     let mag = ends.clone().map(f64::abs).fold(0.0, f64::max);
     let mag = if mag > 0.0 { mag } else { c.measured.abs() };
@@ -448,6 +454,7 @@ mod tests {
             low,
             high,
             outside,
+            decimals: None,
         }
     }
 

@@ -2,6 +2,7 @@
 //! its limit, one horizontal bar each (900 × [`ratio_chart_height`] pixels).
 
 use super::iso::look::KIT;
+use crate::judge::Verdict;
 use crate::report::chart_kit::scene::Scene;
 use crate::report::chart_kit::*;
 use plotters::prelude::*;
@@ -15,7 +16,8 @@ pub struct RatioBar {
     pub label: String,
     pub parameter: String,
     pub ratio: f64,
-    pub pass: bool,
+    /// The test's verdict, which the bar's colour follows.
+    pub verdict: Verdict,
 }
 
 const BAR_OK: RGBColor = RGBColor(0x9D, 0xAF, 0xC8);
@@ -62,7 +64,7 @@ pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> Scene {
         let ends = draw_usage_bars(root, &chart, bars, &rows, x_max)?;
         draw_limit(root, &chart)?;
         draw_usage_texts(root, &chart, bars, &columns, &rows, &ends)?;
-        draw_usage_key(root, clipped)
+        draw_usage_key(root, bars, clipped)
     })
 }
 
@@ -205,11 +207,12 @@ fn draw_usage_bars(
             (l, mid - thickness / 2),
             (end_x, mid - thickness / 2 + thickness),
         ];
-        if end_x > l && is_over(bar) {
-            root.draw(&Rectangle::new(bar_box, BAR_OVER.filled()))?;
-        } else if end_x > l {
-            root.draw(&Rectangle::new(bar_box, BAR_OK.filled()))?;
-            root.draw(&Rectangle::new(bar_box, BAR_OK_EDGE.stroke_width(1)))?;
+        if end_x > l {
+            let (fill, edge) = tone(bar).colours();
+            root.draw(&Rectangle::new(bar_box, fill.filled()))?;
+            if let Some(edge) = edge {
+                root.draw(&Rectangle::new(bar_box, edge.stroke_width(1)))?;
+            }
         }
         if ratio > RATIO_CLIP {
             // Clipped: an arrow head past the bar's end points on.
@@ -228,9 +231,60 @@ fn draw_usage_bars(
     Ok(ends)
 }
 
-/// Over its tolerance (or not passing): drawn dark.
-fn is_over(bar: &RatioBar) -> bool {
-    !bar.pass || bar.ratio > 1.0
+/// How a bar is drawn: within or over its tolerance, or in its verdict's colour when the
+/// verdict says neither (inconclusive: neither conformance nor nonconformance is proven).
+#[derive(Clone, Copy, PartialEq)]
+enum Tone {
+    Within,
+    Over,
+    Verdict(Verdict),
+}
+
+impl Tone {
+    /// Fill and edge.
+    fn colours(self) -> (RGBColor, Option<RGBColor>) {
+        match self {
+            Tone::Within => (BAR_OK, Some(BAR_OK_EDGE)),
+            Tone::Over => (BAR_OVER, None),
+            Tone::Verdict(v) => {
+                let (fill, edge) = verdict_tone(v);
+                (fill, Some(edge))
+            }
+        }
+    }
+
+    /// The bar's value label: bold in a dark tone unless within tolerance.
+    fn label(self) -> (bool, RGBColor) {
+        match self {
+            Tone::Within => (false, INK),
+            Tone::Over => (true, BAR_OVER),
+            Tone::Verdict(v) => (true, verdict_tone(v).1),
+        }
+    }
+
+    /// The key's text.
+    fn key(self) -> &'static str {
+        match self {
+            Tone::Within => "within tolerance",
+            Tone::Over => "over tolerance",
+            Tone::Verdict(v) => v.name(),
+        }
+    }
+}
+
+/// A bar's tone: a passed, failed, noncompliant or error test by its ratio (over 1.0 or
+/// failed: dark), any other verdict in its own colour.
+fn tone(bar: &RatioBar) -> Tone {
+    match bar.verdict {
+        Verdict::Pass | Verdict::Fail | Verdict::Noncompliant | Verdict::Error => {
+            if bar.verdict == Verdict::Fail || bar.ratio > 1.0 {
+                Tone::Over
+            } else {
+                Tone::Within
+            }
+        }
+        other => Tone::Verdict(other),
+    }
 }
 
 /// The limit line at 1.0, labelled above the plot.
@@ -278,11 +332,7 @@ fn draw_usage_texts(
             let corners = [(text_x - 2, top), (bg_right, top + text_h)];
             root.draw(&Rectangle::new(corners, background.filled()))?;
         }
-        let (bold, color) = if is_over(bar) {
-            (true, BAR_OVER)
-        } else {
-            (false, INK)
-        };
+        let (bold, color) = tone(bar).label();
         draw_text(
             root,
             value,
@@ -293,14 +343,19 @@ fn draw_usage_texts(
     Ok(())
 }
 
-/// Key on its own row above the "limit" label: what the two tones mean.
-fn draw_usage_key(root: &Area, clipped: bool) -> Result<(), Failed> {
+/// Key on its own row above the "limit" label: what the tones mean (a verdict's own only
+/// when a bar has it).
+fn draw_usage_key(root: &Area, bars: &[RatioBar], clipped: bool) -> Result<(), Failed> {
     let key_y = 14;
     let mut kx = 10;
-    for (fill, edge, text) in [
-        (BAR_OK, Some(BAR_OK_EDGE), "within tolerance"),
-        (BAR_OVER, None, "over tolerance"),
-    ] {
+    let mut tones = vec![Tone::Within, Tone::Over];
+    for t in bars.iter().map(tone) {
+        if !tones.contains(&t) {
+            tones.push(t);
+        }
+    }
+    for t in tones {
+        let ((fill, edge), text) = (t.colours(), t.key());
         let swatch = [(kx, key_y - 6), (kx + 22, key_y + 6)];
         root.draw(&Rectangle::new(swatch, fill.filled()))?;
         if let Some(edge) = edge {
@@ -347,7 +402,11 @@ mod tests {
                     label: format!("Machine {} / {}", i / 5, ["X", "Y", "Z", "B", "C"][i % 5]),
                     parameter: ["A", "B", "E", "M"][i % 4].to_string(),
                     ratio,
-                    pass: ratio <= 1.0,
+                    verdict: if ratio <= 1.0 {
+                        Verdict::Pass
+                    } else {
+                        Verdict::Fail
+                    },
                 }
             })
             .collect()
@@ -390,12 +449,31 @@ mod tests {
     }
 
     #[test]
+    fn an_inconclusive_axis_is_drawn_in_the_inconclusive_colour() {
+        let mut bars = bars(3);
+        bars[0].ratio = 1.01;
+        bars[0].verdict = Verdict::Inconclusive;
+        let svg = tolerance_usage(&bars, &style());
+        // The key's swatch and the bar, in the verdict's light fill; no dark bar but the
+        // key's; the label in the verdict's dark tone.
+        assert_eq!(
+            svg.matches("fill=\"#E6E9F5\" stroke=\"none\"").count(),
+            2,
+            "{svg}"
+        );
+        assert_eq!(svg.matches("fill=\"#6E1414\" stroke=\"none\"").count(), 1);
+        let label = text_tag(&svg, &format!("{} 1.01", bars[0].parameter)).unwrap();
+        assert!(label.contains("#2F3F7A"), "{label}");
+        assert!(texts(&svg).iter().any(|x| x == "inconclusive"));
+    }
+
+    #[test]
     fn tolerance_usage_without_failures_has_no_dark_bar() {
         let bars: Vec<RatioBar> = bars(5)
             .into_iter()
             .map(|mut b| {
                 b.ratio = b.ratio.min(0.9);
-                b.pass = true;
+                b.verdict = Verdict::Pass;
                 b
             })
             .collect();
@@ -424,7 +502,7 @@ mod tests {
                 label: String::new(),
                 parameter: String::new(),
                 ratio,
-                pass: false,
+                verdict: Verdict::Fail,
             })
             .collect::<Vec<_>>();
         assert_well_formed(&tolerance_usage(&odd, &style()));

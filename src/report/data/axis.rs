@@ -5,7 +5,7 @@
 use super::compensation::{CompensationSection, compensation_section};
 use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
 use super::uncertainty::{UncertaintySection, uncertainty_section};
-use super::{CampaignHeader, generator, num, opt, pos, s_symbol, symbol_of};
+use super::{CampaignHeader, generator, num, opt, pos, s_symbol, short_name, symbol_of};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::{DirectionResult, Evaluation, StandardId};
 use crate::judge::{Outcome, Verdict};
@@ -19,8 +19,12 @@ use serde::Serialize;
 #[derive(Serialize)]
 pub struct AxisReport<'a> {
     campaign: CampaignHeader<'a>,
+    /// The campaign's name for headings and footers ([`super::campaign_short`]).
+    campaign_short: String,
     title: String,
     facts: Vec<Row>,
+    /// Names the facts shorten, in full.
+    full_names: Vec<Row>,
     verdict: VerdictText,
     unit: &'static str,
     conditions: Vec<Row>,
@@ -60,8 +64,15 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
     let conditions = t.spec.as_ref().map(|s| &*s.raw.conditions);
     AxisReport {
         campaign: CampaignHeader::new(result),
-        title: format!("{} — axis {}", t.machine.id, t.axis),
+        campaign_short: super::campaign_short(result),
+        // Shortened: the facts below print the names whole.
+        title: format!(
+            "{} — axis {}",
+            short_name(&t.machine.id, super::SHORT_NAME),
+            short_name(&t.axis, AXIS_NAME)
+        ),
         facts: facts(result, t),
+        full_names: full_names(t),
         verdict: VerdictText::new(t),
         unit: kind.map_or("", |k| k.deviation_symbol()),
         conditions: match (conditions, kind) {
@@ -77,9 +88,10 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         notes: e.map_or(&[], |e| &e.notes),
         findings: t.findings(),
         has_charts: e.is_some(),
-        diagnosis: ev
-            .and_then(|e| e.diagnosis.as_deref())
-            .map(|d| diagnosis_section(d, ev.map_or(&[][..], |e| &e.out_of_test))),
+        diagnosis: ev.and_then(|e| e.diagnosis.as_deref()).map(|d| {
+            let out_of_test = ev.map_or(&[][..], |e| &e.out_of_test);
+            diagnosis_section(d, out_of_test, |k| symbol_of(t, k))
+        }),
         uncertainty: ev
             .and_then(|e| e.uncertainty.as_ref())
             .zip(kind)
@@ -94,6 +106,34 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .map(super::other_tool::other_tool_section),
         generator: generator(),
     }
+}
+
+/// Longest axis name shown whole in a heading or a fact.
+const AXIS_NAME: usize = 40;
+
+/// A name in the two-column facts: whole when short, else shortened with a pointer to
+/// [`full_names`] (a 10 000-character name in a half-width column filled nine pages).
+fn in_facts(name: &str, max: usize) -> String {
+    if name.chars().count() <= max {
+        name.to_string()
+    } else {
+        format!("{} (in full below)", short_name(name, max))
+    }
+}
+
+/// The machine's and the axis's names in full, across the text width, where the facts
+/// shorten them: each printed whole once.
+fn full_names(t: &AxisTest) -> Vec<Row> {
+    Row::present([
+        (
+            "Machine, in full",
+            (t.machine.id.chars().count() > super::SHORT_NAME).then(|| t.machine.id.clone()),
+        ),
+        (
+            "Axis, in full",
+            (t.axis.chars().count() > AXIS_NAME).then(|| t.axis.clone()),
+        ),
+    ])
 }
 
 /// The header facts: machine, axis, travels, file, standard, spec, date and inspector.
@@ -115,7 +155,7 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
     });
     let axis = format!(
         "{}{}",
-        t.axis,
+        in_facts(&t.axis, AXIS_NAME),
         kind.map_or(String::new(), |k| format!(" ({k})"))
     );
     let test = (t.tests > 1).then(|| format!("{} of {} tests of this axis", t.test, t.tests));
@@ -130,7 +170,7 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
             .filter(|v| v.trim() != campaign)
     };
     Row::present([
-        ("Machine", Some(m.id.clone())),
+        ("Machine", Some(in_facts(&m.id, super::SHORT_NAME))),
         ("Machine in the file", differs(|i| &i.machine, &m.id)),
         ("Model", m.model.clone()),
         (

@@ -5,7 +5,7 @@
 //! re-measurement (before, predicted and achieved).
 
 use super::conditions::Row;
-use super::{num, pos};
+use super::{key_words, num, pos};
 use crate::compensate::{Compensated, Compensation, Interpolation, Mode, Table};
 use crate::evaluate::Evaluation;
 use crate::report::charts::compensation::CompensationChart;
@@ -19,7 +19,7 @@ use serde::Serialize;
 pub struct CompensationSection<'a> {
     controller: &'static str,
     /// Why the controller cannot hold the table: shown instead of the rest.
-    refusal: Option<&'a str>,
+    refusal: Option<String>,
     /// Controller, points, interval, reference point, range of the corrections.
     facts: Vec<Row>,
     unit: &'static str,
@@ -53,7 +53,8 @@ struct VerificationSection<'a> {
 /// What went wrong, with its evidence.
 #[derive(Serialize)]
 struct FindingRow<'a> {
-    effect: &'static str,
+    /// The effect in words (`sign inverted`).
+    effect: String,
     evidence: &'a str,
 }
 
@@ -90,7 +91,7 @@ pub(super) fn compensation_section<'a>(
                 .strip_prefix(c.controller)
                 .and_then(|r| r.strip_prefix(": "));
             (
-                Some(reason.unwrap_or(refusal)),
+                Some(keys_in_words(reason.unwrap_or(refusal), verification)),
                 Vec::new(),
                 Vec::new(),
                 String::new(),
@@ -119,6 +120,18 @@ pub(super) fn compensation_section<'a>(
         warnings,
         verification: verification.map(|v| verification_section(v, measured.kind)),
     }
+}
+
+/// A refusal with the verification's verdict and findings (`made_worse (sign_inverted)`,
+/// as the console names them) in words.
+fn keys_in_words(refusal: &str, verification: Option<&Result<Verification, String>>) -> String {
+    let Some(Ok(v)) = verification else {
+        return refusal.to_string();
+    };
+    let keys = std::iter::once(v.verdict.name()).chain(v.findings.iter().map(|f| f.effect.name()));
+    keys.fold(refusal.to_string(), |text, key| {
+        text.replace(key, &key_words(key))
+    })
 }
 
 /// The verification's verdict, E at each stage and what went wrong.
@@ -156,7 +169,7 @@ fn verification_section(
             .findings
             .iter()
             .map(|f| FindingRow {
-                effect: f.effect.name(),
+                effect: key_words(f.effect.name()),
                 evidence: &f.evidence,
             })
             .collect(),

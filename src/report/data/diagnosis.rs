@@ -5,7 +5,7 @@
 use crate::diagnose::cross::OutOfTest;
 use crate::diagnose::effects::periodic::Periodic;
 use crate::diagnose::{Diagnosis, Effect, Finding, TimeEffect, Unconfirmed};
-use crate::report::data::num;
+use crate::report::data::{key_words, num};
 use crate::units::{AxisKind, Direction, fmt_fixed};
 use serde::Serialize;
 
@@ -28,8 +28,8 @@ pub(in crate::report) struct DiagnosisSection<'a> {
     term_gains: Vec<String>,
     validation: &'static str,
     /// The effect of `corrected` (`all` when several were removed).
-    corrected_label: &'a str,
-    corrected: Vec<CorrectedLine<'a>>,
+    corrected_label: String,
+    corrected: Vec<CorrectedLine>,
     notes: &'a [String],
     has_periodogram: bool,
     /// This test predicted by the models of the axis's other tests.
@@ -113,10 +113,19 @@ impl<'a> From<&'a Unconfirmed> for UnconfirmedLine<'a> {
 
 /// One parameter as measured and with the effects removed.
 #[derive(Serialize)]
-struct CorrectedLine<'a> {
-    key: &'a str,
+struct CorrectedLine {
+    /// The parameter's symbol (`E↑`).
+    key: String,
     measured: String,
     corrected: String,
+}
+
+/// The model's terms in words, as a list.
+fn terms_in_words(terms: &[impl AsRef<str>]) -> String {
+    (terms.iter())
+        .map(|t| key_words(t.as_ref()))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// A statistic or parameter: scientific notation when very small or large.
@@ -131,7 +140,16 @@ fn fmt(x: f64) -> String {
 impl<'a> From<&'a Finding> for FindingLine<'a> {
     fn from(f: &'a Finding) -> FindingLine<'a> {
         let evidence = f.evidence.describe(fmt);
-        let params = f.params_text(fmt);
+        // As `params_text`, with the keys in words for the customer.
+        let params = (f.params().iter())
+            .map(|(k, v)| format!("{} = {}", key_words(k), fmt(*v)))
+            .chain(
+                f.labels()
+                    .iter()
+                    .map(|(k, v)| format!("{} = {v}", key_words(k))),
+            )
+            .collect::<Vec<_>>()
+            .join(", ");
         FindingLine {
             effect: f.effect().name(),
             message: &f.message,
@@ -147,6 +165,7 @@ impl<'a> From<&'a Finding> for FindingLine<'a> {
 pub(in crate::report) fn diagnosis_section<'a>(
     d: &'a Diagnosis,
     out_of_test: &[OutOfTest],
+    symbol: impl Fn(&str) -> String,
 ) -> DiagnosisSection<'a> {
     let all = d
         .corrected
@@ -157,7 +176,7 @@ pub(in crate::report) fn diagnosis_section<'a>(
         c.parameters
             .iter()
             .map(|p| CorrectedLine {
-                key: &p.key,
+                key: symbol(&p.key),
                 measured: num(p.measured),
                 corrected: num(p.corrected),
             })
@@ -170,8 +189,8 @@ pub(in crate::report) fn diagnosis_section<'a>(
         has_time_effect: d.residuals.time_effect.is_some(),
         base_rms: fmt_fixed(d.base.heldout_rms, 3),
         extended_rms: fmt_fixed(d.extended.heldout_rms, 3),
-        base_terms: d.base.terms.join(", "),
-        extended_terms: d.extended.terms.join(", "),
+        base_terms: terms_in_words(&d.base.terms),
+        extended_terms: terms_in_words(&d.extended.terms),
         gain: if d.gain_pct.is_finite() {
             fmt_fixed(d.gain_pct, 1)
         } else {
@@ -180,10 +199,17 @@ pub(in crate::report) fn diagnosis_section<'a>(
         term_gains: d
             .term_gains
             .iter()
-            .map(|g| g.describe(d.kind.deviation_symbol()))
+            .map(|g| {
+                let text = g.describe(d.kind.deviation_symbol());
+                let name = g.effect.name();
+                match text.strip_prefix(name) {
+                    Some(rest) => format!("{}{rest}", key_words(name)),
+                    None => text,
+                }
+            })
             .collect(),
         validation: d.validation,
-        corrected_label: all.map_or("", |c| c.effect.as_str()),
+        corrected_label: all.map_or(String::new(), |c| key_words(&c.effect)),
         corrected,
         notes: &d.notes,
         has_periodogram: !d.residuals.periodogram.is_empty(),
@@ -219,6 +245,7 @@ pub fn diagnosis_charts(
             low: c.simulated_low,
             high: c.simulated_high,
             outside: c.outside,
+            decimals: None,
         })
         .collect();
     let readings = &d.residuals.readings;

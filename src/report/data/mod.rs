@@ -63,6 +63,30 @@ fn symbol_of(t: &AxisTest, key: &str) -> String {
         .map_or(key.to_string(), |p| p.symbol().to_string())
 }
 
+/// Longest name, in characters, that a heading, a table cell or a footer shows whole:
+/// longer ones are shortened there ([`short_name`]) and printed whole once (the axis
+/// report's facts, the summary's title).
+const SHORT_NAME: usize = 60;
+
+/// `name` shortened to at most `max` characters with an ellipsis, cut before a character
+/// (never between a letter and its combining marks): where a 10 000-character name would
+/// fill the page, a table column or the footer.
+pub(in crate::report) fn short_name(name: &str, max: usize) -> String {
+    use unicode_properties::{GeneralCategoryGroup, UnicodeGeneralCategory};
+    if name.chars().count() <= max {
+        return name.to_string();
+    }
+    let mut end = 0;
+    for (n, (i, c)) in name.char_indices().enumerate() {
+        let mark = c.general_category_group() == GeneralCategoryGroup::Mark;
+        if n >= max.saturating_sub(1) && !mark {
+            break;
+        }
+        end = i + c.len_utf8();
+    }
+    format!("{}…", name[..end].trim_end())
+}
+
 /// The campaign header both templates show (absent items as empty strings).
 #[derive(Serialize)]
 pub struct CampaignHeader<'a> {
@@ -88,6 +112,46 @@ impl<'a> CampaignHeader<'a> {
             standard: result.standard.title(),
         }
     }
+}
+
+/// The campaign's name as the axis reports' headings and the footers show it: longer
+/// names shortened ([`short_name`]); the summary's title prints it whole.
+pub(in crate::report) fn campaign_short(result: &CampaignResult) -> String {
+    short_name(&result.info.name, 2 * SHORT_NAME)
+}
+
+/// A test's label (`MACHINE AXIS`) with each name shortened ([`short_name`]).
+pub(in crate::report) fn short_label(t: &AxisTest) -> String {
+    let (m, a) = (
+        short_name(&t.machine.id, SHORT_NAME),
+        short_name(&t.axis, 40),
+    );
+    if t.tests > 1 {
+        format!("{m} {a} ({}/{})", t.test, t.tests)
+    } else {
+        format!("{m} {a}")
+    }
+}
+
+/// A key of the JSON (`slope_um_per_m`, `systematic_per_target`) in words for a customer:
+/// underscores as spaces, and from the first unit on the unit in brackets with its first
+/// `per` as a slash (`slope (µm/m)`, `growth (µm/m per run)`).
+pub(in crate::report) fn key_words(key: &str) -> String {
+    let words: Vec<&str> = key.split('_').collect();
+    let unit = |w: &str| matches!(w, "um" | "arcsec" | "mm" | "deg" | "ppm" | "pct");
+    let Some(i) = words.iter().skip(1).position(|w| unit(w)).map(|i| i + 1) else {
+        return words.join(" ");
+    };
+    let spelled: Vec<&str> = (words[i..].iter())
+        .map(|w| match *w {
+            "um" => "µm",
+            "deg" => "°",
+            "pct" => "%",
+            other => other,
+        })
+        .collect();
+    let unit = spelled.join(" ").replacen(" per ", "/", 1);
+    format!("{} ({unit})", words[..i].join(" "))
 }
 
 /// The version that made the report, for its footer.
@@ -139,4 +203,36 @@ pub fn axis_chart(e: &Evaluation) -> (AxisChart, Vec<Span>, Vec<Span>) {
         spans: spans(Approach::Both),
     };
     (chart, spans(Approach::Up), spans(Approach::Down))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{key_words, short_name};
+
+    #[test]
+    fn long_names_are_shortened_with_an_ellipsis() {
+        assert_eq!(short_name("VMC-07", 60), "VMC-07");
+        let long = "Fräszentrum-".repeat(900);
+        let short = short_name(&long, 60);
+        assert_eq!(short.chars().count(), 60);
+        assert!(short.ends_with('…') && long.starts_with(short.trim_end_matches('…')));
+        // A combining mark stays with its letter.
+        let marked = "X\u{304}".repeat(40);
+        let short = short_name(&marked, 9);
+        assert!(short.ends_with("X\u{304}…"), "{short:?}");
+    }
+
+    #[test]
+    fn keys_read_as_words() {
+        assert_eq!(key_words("slope_um_per_m"), "slope (µm/m)");
+        assert_eq!(key_words("reversal_start_um"), "reversal start (µm)");
+        assert_eq!(key_words("systematic_per_target"), "systematic per target");
+        assert_eq!(key_words("shape"), "shape");
+        assert_eq!(
+            key_words("growth_se_um_per_m_per_run"),
+            "growth se (µm/m per run)"
+        );
+        assert_eq!(key_words("offset_run1_um"), "offset run1 (µm)");
+        assert_eq!(key_words("origin_mm"), "origin (mm)");
+    }
 }

@@ -1,7 +1,7 @@
 //! The data of the campaign summary: verdict counts, one row per axis test (what needs
 //! attention first), the errors and the noncompliant test plans.
 
-use super::{CampaignHeader, generator, num, pos, symbol_of};
+use super::{CampaignHeader, generator, num, pos, short_label, short_name, symbol_of};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::Role;
 use crate::judge::Verdict;
@@ -12,8 +12,10 @@ use serde::Serialize;
 #[derive(Serialize)]
 pub struct Summary<'a> {
     campaign: CampaignHeader<'a>,
+    /// The campaign's name for headings and footers ([`super::campaign_short`]).
+    campaign_short: String,
     counts: Counts,
-    rows: Vec<SummaryRow<'a>>,
+    rows: Vec<SummaryRow>,
     errors: Vec<Problem>,
     noncompliant: Vec<Problem>,
     has_chart: bool,
@@ -44,8 +46,9 @@ struct Counts {
 /// One axis test: its headline parameters (A, E, R, B of its standard), the parameter
 /// closest to its limit, the diagnosis and the verdict.
 #[derive(Serialize)]
-struct SummaryRow<'a> {
-    machine: &'a str,
+struct SummaryRow {
+    /// Shortened ([`short_name`]): each axis report prints the names whole.
+    machine: String,
     axis: String,
     travel: String,
     n: String,
@@ -77,13 +80,14 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
             .iter()
             .filter(|t| t.verdict() == verdict)
             .map(|t| Problem {
-                label: t.label(),
+                label: short_label(t),
                 message: message(t),
             })
             .collect()
     };
     Summary {
         campaign: CampaignHeader::new(result),
+        campaign_short: super::campaign_short(result),
         counts: Counts {
             total: result.tests.len(),
             pass: counts[&Verdict::Pass],
@@ -110,7 +114,7 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
     }
 }
 
-fn row(t: &AxisTest) -> SummaryRow<'_> {
+fn row(t: &AxisTest) -> SummaryRow {
     let e = t.evaluated().map(|e| &e.evaluation);
     let headline = |role: Role| {
         e.and_then(|e| e.headline(role))
@@ -133,11 +137,11 @@ fn row(t: &AxisTest) -> SummaryRow<'_> {
         None => "–".to_string(),
     };
     SummaryRow {
-        machine: &t.machine.id,
+        machine: short_name(&t.machine.id, 40),
         axis: if t.tests > 1 {
-            format!("{} ({}/{})", t.axis, t.test, t.tests)
+            format!("{} ({}/{})", short_name(&t.axis, 30), t.test, t.tests)
         } else {
-            t.axis.clone()
+            short_name(&t.axis, 30)
         },
         travel,
         n: e.map_or("–".into(), |e| e.n.to_string()),

@@ -44,11 +44,20 @@ fn sig(x: f64) -> String {
     fmt_fixed(x, decimals).replace('-', "−")
 }
 
+/// A budget input's unit as the rest of the report prints it: `um` (the budget's and the
+/// JSON's spelling) as `µm`, also in `um/(m·°C)`.
+fn budget_unit(unit: &str) -> String {
+    match unit.strip_prefix("um") {
+        Some(rest) if rest.is_empty() || rest.starts_with('/') => format!("µm{rest}"),
+        _ => unit.to_string(),
+    }
+}
+
 impl BudgetRow {
     fn new(l: &BudgetLine) -> BudgetRow {
         BudgetRow {
             contributor: l.contributor.replace('_', " "),
-            value: format!("{} {}", sig(l.value), l.unit),
+            value: format!("{} {}", sig(l.value), budget_unit(l.unit)),
             distribution: l.distribution.name(),
             u: sig(l.u),
             sensitivity: sig(l.sensitivity),
@@ -56,6 +65,14 @@ impl BudgetRow {
             share: format!("{} %", fmt_fixed(l.share * 100.0, 1)),
         }
     }
+}
+
+/// Decimals of the results table's values, limits and U ([`num`]).
+const TABLE_DECIMALS: usize = 2;
+
+/// `x` rounded as [`num`] prints it.
+fn table_round(x: f64) -> f64 {
+    fmt_fixed(x, TABLE_DECIMALS).parse().unwrap_or(x)
 }
 
 /// Each limited parameter's |value| against its zone limit ± U (ISO 14253-1): left of the
@@ -70,13 +87,21 @@ pub fn decision_bars(t: &AxisTest) -> Vec<CheckBar> {
     j.checks
         .iter()
         .filter_map(|c| {
-            let zone = u.expanded_of(&c.key)?;
+            let expanded = u.expanded_of(&c.key)?;
+            // The values as the results table prints them (2 decimals), and the zone's ends
+            // from those, so that chart and table agree to the last digit.
+            let (value, limit, zone) = (
+                table_round(c.value.abs()),
+                table_round(c.limit),
+                table_round(expanded),
+            );
             Some(CheckBar {
                 label: symbol_of(t, &c.key),
-                measured: c.value.abs(),
-                low: c.limit - zone,
-                high: c.limit + zone,
-                outside: c.value.abs() > c.limit + zone,
+                measured: value,
+                low: limit - zone,
+                high: limit + zone,
+                outside: c.value.abs() > c.limit + expanded,
+                decimals: Some(TABLE_DECIMALS),
             })
         })
         .collect()
@@ -101,7 +126,15 @@ pub(super) fn uncertainty_section<'a>(
 
 #[cfg(test)]
 mod tests {
-    use super::sig;
+    use super::{budget_unit, sig};
+
+    #[test]
+    fn budget_units_print_micrometres() {
+        assert_eq!(budget_unit("um"), "µm");
+        assert_eq!(budget_unit("um/(m·°C)"), "µm/(m·°C)");
+        assert_eq!(budget_unit("ppm"), "ppm");
+        assert_eq!(budget_unit("arcsec"), "arcsec");
+    }
 
     #[test]
     fn three_significant_digits() {
