@@ -123,6 +123,7 @@ pub fn evaluate(data: &[u8]) {
             measurement_travel: Some([first, last]),
             pitch: Some(5.0),
             planned: None,
+            unstated: None,
         };
         let _ = rules::check(&ctx, &axis);
     }

@@ -249,8 +249,8 @@ fn run_axis(
             match &spec {
                 Err(e) => (slot.error(e.clone()), None),
                 Ok(spec) => {
-                    let rule = campaign.info.decision_rule;
-                    run_test(slot, &axis, spec.as_deref(), rule, path, files, options)
+                    let info = &campaign.info;
+                    run_test(slot, &axis, spec.as_deref(), info, path, files, options)
                 }
             }
         })
@@ -298,13 +298,13 @@ fn relative_name(base: &Path, path: &Path) -> String {
 
 /// One test of an axis, stage by stage: read, the file's own conditions, NDE, the plan
 /// rules, the evaluation, U, the verdict, the diagnosis and the compensation.
-/// `campaign_rule`: the campaign's decision rule; the axis's own and then its spec's come
-/// first. `files`: where the data and table files are opened.
+/// `campaign`: its decision rule (the axis's own and then its spec's come first) and its
+/// date (clause 7.1). `files`: where the data and table files are opened.
 fn run_test(
     slot: Slot,
     axis: &AxisSpec,
     spec: Option<&Spec>,
-    campaign_rule: Option<DecisionRule>,
+    campaign: &crate::campaign::CampaignInfo,
     path: &Path,
     files: &Files,
     options: Options,
@@ -323,11 +323,13 @@ fn run_test(
     let spec_arc = completed.map(|(s, _)| s);
     let axis: &AxisSpec = spec_arc.as_deref().unwrap_or(axis);
     let (data, nde) = apply_nde(axis, data);
+    let unstated = unstated_conditions(axis, &slot.machine, campaign, &recognised, &data);
     let mut context = plan_context(axis);
     context.planned = slot.planned.clone();
+    context.unstated = Some(unstated.clone());
     let findings = rules::check(&context, &data);
     let evaluation = evaluate_stage(axis, &data);
-    let rule = decision_rule(axis, spec, campaign_rule);
+    let rule = decision_rule(axis, spec, campaign.decision_rule);
     // The gate computes what it prints: U only where the decision rule judges with it.
     let uncertainty = (!options.drop_data || rule == DecisionRule::Iso14253_1).then(|| {
         let setup = uncertainty_setup(axis, &data, nde.as_ref());
@@ -360,6 +362,7 @@ fn run_test(
         error,
         recognised,
         conditions_from_file: from_file,
+        unstated,
         data: Some(data),
         evaluation,
         judgement,
@@ -373,6 +376,25 @@ fn run_test(
         other_tool: other_tool.map(Box::new),
     })));
     (test, verify_case)
+}
+
+/// The clause 7.1 conditions of the test that neither the campaign nor the file states.
+fn unstated_conditions(
+    axis: &AxisSpec,
+    machine: &MachineInfo,
+    campaign: &crate::campaign::CampaignInfo,
+    recognised: &Recognised,
+    data: &AxisData,
+) -> Vec<&'static str> {
+    let file_date = (recognised.info.as_ref()).is_some_and(|i| i.date.is_some());
+    let air = |n: &String| n.to_ascii_lowercase().contains("air");
+    let known = crate::campaign::clause7_1::Known {
+        machine,
+        dated: campaign.date.is_some() || file_date,
+        material_per_reading: has_material_temperatures(data),
+        air_per_reading: data.temperature_names.iter().any(air),
+    };
+    crate::campaign::clause7_1::unstated(axis, &known)
 }
 
 /// The file read, and of the axis kind the campaign declares; else the test's error.
@@ -548,6 +570,7 @@ pub fn plan_context(axis: &AxisSpec) -> PlanContext {
         measurement_travel: axis.raw.measurement_travel,
         pitch: axis.raw.pitch,
         planned: None,
+        unstated: None,
     }
 }
 

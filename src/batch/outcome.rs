@@ -58,6 +58,9 @@ pub struct Evaluated {
     /// The test conditions taken from the measurement file where the campaign gives
     /// none (e.g. "air temperature, pressure and humidity"; see `AxisSpec::completed_by`).
     pub conditions_from_file: Vec<&'static str>,
+    /// The test conditions of ISO 230-2 clause 7.1 stated neither by the campaign nor by
+    /// the file, in the clause's order (`crate::campaign::clause7_1`).
+    pub unstated: Vec<&'static str>,
     /// The readings (dropped by the CI gate once the test is judged).
     pub data: Option<AxisData>,
     pub evaluation: Evaluation,
@@ -128,6 +131,21 @@ impl AxisTest {
         }
     }
 
+    /// The judgement against the limits, when the test was judged.
+    pub fn judgement(&self) -> Option<&crate::judge::Judgement> {
+        self.evaluated().and_then(|e| e.judgement.as_ref())
+    }
+
+    /// The checks whose U is over half the limit or over the value (none when the test
+    /// was not judged or its U not computed: `check` computes U only for ISO 14253-1).
+    pub fn large_uncertainty(&self) -> Vec<crate::judge::LargeUncertainty> {
+        let e = self.evaluated();
+        match (self.judgement(), e.and_then(|e| e.uncertainty.as_ref())) {
+            (Some(j), Some(u)) => j.large_uncertainty(&u.expanded),
+            _ => Vec::new(),
+        }
+    }
+
     /// The checks whose decision is inconclusive (the measurement's U straddles the
     /// limit, ISO 14253-1): none when the test was not judged.
     pub fn inconclusive(&self) -> impl Iterator<Item = &crate::judge::Check> {
@@ -173,6 +191,9 @@ impl AxisTest {
     }
 }
 
+/// Tests named one by one under a caveat before `… and N more`.
+pub const CAVEAT_TESTS: usize = 20;
+
 /// A whole campaign's results.
 #[derive(Debug, Clone)]
 pub struct CampaignResult {
@@ -192,6 +213,7 @@ impl CampaignResult {
             (Verdict::Noncompliant, 0),
             (Verdict::Error, 0),
             (Verdict::Inconclusive, 0),
+            (Verdict::NotJudged, 0),
         ]);
         for t in &self.tests {
             *counts.entry(t.verdict()).or_default() += 1;
@@ -208,7 +230,7 @@ impl CampaignResult {
     }
 
     /// `16 pass, 2 fail, 1 noncompliant, 0 error` (and `, 1 inconclusive` when a test was
-    /// judged by ISO 14253-1).
+    /// judged by ISO 14253-1, `, 1 not judged` when a test had no limit).
     pub fn counts_text(&self) -> String {
         let c = self.counts();
         let mut text = format!(
@@ -221,11 +243,101 @@ impl CampaignResult {
         if self.uses_uncertainty_rule() {
             text.push_str(&format!(", {} inconclusive", c[&Verdict::Inconclusive]));
         }
+        let unjudged = c[&Verdict::NotJudged];
+        if unjudged > 0 {
+            let allowed = match self.info.unjudged_allowed() {
+                true => " (allowed by the campaign)",
+                false => "",
+            };
+            text.push_str(&format!(", {unjudged} not judged{allowed}"));
+        }
         text
     }
 
-    /// True when every test passes.
-    pub fn all_pass(&self) -> bool {
-        self.tests.iter().all(|t| t.verdict() == Verdict::Pass)
+    /// What the verdicts rest on that a reader must know, a line each, for the console,
+    /// `summary.md` and the summary PDF: tests judged by example limits (`example:
+    /// true`), clause 7.1 conditions not stated, uncertainties too large for their verdict.
+    pub fn caveats(&self) -> Vec<String> {
+        let mut lines = Vec::new();
+        let example: Vec<&AxisTest> = (self.tests.iter())
+            .filter(|t| t.judgement().is_some_and(|j| j.limits.example))
+            .collect();
+        if !example.is_empty() {
+            let mut specs: Vec<&str> = (example.iter())
+                .filter_map(|t| t.judgement()?.limits.spec.as_deref())
+                .map(|s| s.split(" (").next().unwrap_or(s))
+                .collect();
+            specs.sort_unstable();
+            specs.dedup();
+            lines.push(format!(
+                "Example limits, not from a standard: {} of {} tests judged by spec {}",
+                example.len(),
+                self.tests.len(),
+                specs.join(", ")
+            ));
+        }
+        lines.extend(self.large_uncertainty_lines());
+        let unstated: Vec<usize> = (self.tests.iter())
+            .filter_map(|t| t.evaluated().map(|e| e.unstated.len()))
+            .filter(|n| *n > 0)
+            .collect();
+        if !unstated.is_empty() {
+            lines.push(format!(
+                "Test conditions not stated (ISO 230-2 7.1): {} items over {} of {} tests (each report lists them)",
+                unstated.iter().sum::<usize>(),
+                unstated.len(),
+                self.tests.len()
+            ));
+        }
+        lines
+    }
+
+    /// The tests whose U is large against a limit or a value: a line saying how many,
+    /// then one per test (at most [`CAVEAT_TESTS`]).
+    fn large_uncertainty_lines(&self) -> Vec<String> {
+        let flagged: Vec<(&AxisTest, Vec<crate::judge::LargeUncertainty>)> = (self.tests.iter())
+            .map(|t| (t, t.large_uncertainty()))
+            .filter(|(_, l)| !l.is_empty())
+            .collect();
+        if flagged.is_empty() {
+            return Vec::new();
+        }
+        let mut lines = vec![format!(
+            "Uncertainty large for the verdict (U over half its limit or over the value): {} of {} tests",
+            flagged.len(),
+            self.tests.len()
+        )];
+        for (t, large) in flagged.iter().take(CAVEAT_TESTS) {
+            let unit = t.kind().map_or("", |k| k.deviation_symbol());
+            // The first in the standard's order (A before E, M …), and how many more.
+            let Some(worst) = large.first() else {
+                continue;
+            };
+            let more = match large.len() - 1 {
+                0 => String::new(),
+                1 => " (and 1 more parameter)".to_string(),
+                n => format!(" (and {n} more parameters)"),
+            };
+            let (label, verdict) = (t.label(), t.verdict().words());
+            lines.push(format!(
+                "  {label} ({verdict}): {}{more}",
+                worst.text(2, unit)
+            ));
+        }
+        if flagged.len() > CAVEAT_TESTS {
+            lines.push(format!("  … and {} more", flagged.len() - CAVEAT_TESTS));
+        }
+        lines
+    }
+
+    /// True when the CI gate passes: every test passes, or is not judged and the campaign
+    /// allows that (`unjudged: allowed`).
+    pub fn passes_gate(&self) -> bool {
+        let allowed = self.info.unjudged_allowed();
+        (self.tests.iter()).all(|t| match t.verdict() {
+            Verdict::Pass => true,
+            Verdict::NotJudged => allowed,
+            _ => false,
+        })
     }
 }

@@ -4,6 +4,7 @@
 //! error. A broken machine or axis is kept as an entry with its error, so the rest of the
 //! campaign is still evaluated. Every error names the campaign file, line and column.
 
+pub mod clause7_1;
 pub mod data;
 mod file_info;
 mod load;
@@ -11,7 +12,7 @@ pub mod model;
 
 pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, Instrument, MachineInfo, Nde, OutputOptions,
-    SensorKind, TemperatureSensor,
+    SensorKind, TemperatureSensor, Unjudged,
 };
 
 use crate::evaluate::StandardId;

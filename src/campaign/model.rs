@@ -43,6 +43,15 @@ pub struct CampaignInfo {
         skip_serializing_if = "Option::is_none"
     )]
     pub decision_rule: Option<DecisionRule>,
+    /// Whether a test judged against no limit (`not_judged`) may pass the gate:
+    /// `unjudged: allowed` lets `check` and `run` exit 0 on it (the count is still shown);
+    /// absent or `refused`, such a test makes them exit 1.
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub unjudged: Option<Unjudged>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
     /// Allow data paths that are absolute or leave the campaign's folder.
@@ -58,6 +67,24 @@ pub struct CampaignInfo {
     pub trend_horizon_years: Option<f64>,
     #[serde(default)]
     pub output: OutputOptions,
+}
+
+/// `campaign.unjudged`: what the gate makes of a test no limit was applied to.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Unjudged {
+    /// Such a test fails the gate (exit 1): a CI job is not green because a key is missing.
+    #[default]
+    Refused,
+    /// Such a test is counted apart and does not fail the gate.
+    Allowed,
+}
+
+impl CampaignInfo {
+    /// Whether tests without limits may pass the gate (`unjudged: allowed`).
+    pub fn unjudged_allowed(&self) -> bool {
+        self.unjudged == Some(Unjudged::Allowed)
+    }
 }
 
 /// `campaign.output`.

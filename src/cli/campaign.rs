@@ -12,9 +12,10 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
-/// Exit status of a campaign: 0 when every axis passes, 1 otherwise.
+/// Exit status of a campaign: 0 when every axis passes (or is not judged, where the
+/// campaign says `unjudged: allowed`), 1 otherwise.
 pub fn exit_code(result: &CampaignResult) -> u8 {
-    u8::from(!result.all_pass())
+    u8::from(!result.passes_gate())
 }
 
 /// How `run` and `check` report progress on stderr.
@@ -123,14 +124,18 @@ pub fn evaluate_with(
 
 use super::text::MAX_PROBLEM_LINES;
 
-/// One line per test that did not pass, failures first, then noncompliant plans, then
-/// errors (each in campaign order), at most [`MAX_PROBLEM_LINES`]; then how many more
-/// there are and where they are all listed (`where_all`).
+/// One line per test that did not pass, failures first, then noncompliant plans,
+/// inconclusive tests, errors, then tests not judged unless the campaign allows them (each
+/// in campaign order), at most [`MAX_PROBLEM_LINES`]; then how many more there are and
+/// where they are all listed (`where_all`).
 pub fn problems(result: &CampaignResult, where_all: &str) -> Vec<String> {
-    let mut attention: Vec<&AxisTest> = result
-        .tests
-        .iter()
-        .filter(|t| t.verdict() != Verdict::Pass)
+    let allowed = result.info.unjudged_allowed();
+    let mut attention: Vec<&AxisTest> = (result.tests.iter())
+        .filter(|t| match t.verdict() {
+            Verdict::Pass => false,
+            Verdict::NotJudged => !allowed,
+            _ => true,
+        })
         .collect();
     attention.sort_by_key(|t| t.verdict().attention_rank());
     let shown = &attention[..attention.len().min(MAX_PROBLEM_LINES)];
@@ -181,6 +186,7 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
     let why = match t.verdict() {
         Verdict::Error => t.error().unwrap_or_default().to_string(),
         Verdict::Noncompliant => t.broken_rules_text(),
+        Verdict::NotJudged => not_judged_why(t),
         Verdict::Inconclusive => t
             .inconclusive()
             .map(|c| {
@@ -210,12 +216,30 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
             .collect::<Vec<_>>()
             .join(", "),
     };
+    let example = (t.judgement()).is_some_and(|j| j.limits.example)
+        && matches!(t.verdict(), Verdict::Fail | Verdict::Inconclusive);
+    let why = match example {
+        true => format!("{why} ({})", axcheck::judge::EXAMPLE_LIMITS),
+        false => why,
+    };
     format!(
         "  {:<12} {:<width$}  {why}",
-        t.verdict().name().to_uppercase(),
+        t.verdict().words().to_uppercase(),
         // Shown as printed (hidden characters as escapes), so the columns line up.
         axcheck::safe_text::visible(&t.label())
     )
+}
+
+/// Why a test is not judged: no limit, or only limits of parameters it does not have.
+fn not_judged_why(t: &AxisTest) -> String {
+    let judgement = t.evaluated().and_then(|e| e.judgement.as_ref());
+    match judgement.map(|j| &j.not_applicable) {
+        Some(keys) if !keys.is_empty() => format!(
+            "no limit applied: the limits of {} do not apply to this test",
+            keys.join(", ")
+        ),
+        _ => "no limit applied (no spec, no tolerances): nothing was compared".to_string(),
+    }
 }
 
 /// The one-line count of verdicts.
@@ -363,6 +387,9 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let outcome = outcome?;
     let result = &outcome.result;
     super::say(&counts_line(result));
+    for line in result.caveats() {
+        super::say(&line);
+    }
     for line in problems(result, "all in summary.md") {
         super::say(&line);
     }
@@ -482,6 +509,9 @@ pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Re
     let campaign = Campaign::load(path)?;
     let result = evaluate_with(&campaign, options, progress);
     super::say(&counts_line(&result));
+    for line in result.caveats() {
+        super::say(&line);
+    }
     for line in problems(&result, "`axcheck run` lists them all in summary.md") {
         super::say(&line);
     }

@@ -55,6 +55,9 @@ pub struct TestJson<'a> {
     nde: Option<&'a NdeCorrection>,
     #[serde(skip_serializing_if = "Option::is_none")]
     uncertainty: Option<UncertaintyJson<'a>>,
+    /// The checks whose U is over half the limit or over the value.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    large_uncertainty: Vec<crate::judge::LargeUncertainty>,
     /// The machine's controller's table for this test and the parameters it predicts.
     #[serde(skip_serializing_if = "Option::is_none")]
     compensation: Option<CompensationJson<'a>>,
@@ -92,6 +95,9 @@ struct Evaluated<'a> {
     parameters: ParameterValues<'a>,
     at_target: TargetIndices<'a>,
     notes: &'a [String],
+    /// The ISO 230-2 7.1 test conditions stated neither by the campaign nor by the file.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    conditions_not_stated: &'a [&'static str],
 }
 
 #[derive(Serialize)]
@@ -106,6 +112,9 @@ struct Judged<'a> {
     decision_rule: &'static str,
     not_applicable_limits: &'a [String],
     no_tolerance: bool,
+    /// An example spec's limit applies (`example: true`): not from a standard.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    example_limits: bool,
 }
 
 impl<'a> Judged<'a> {
@@ -124,6 +133,7 @@ impl<'a> Judged<'a> {
             decision_rule: j.rule.key(),
             not_applicable_limits: &j.not_applicable,
             no_tolerance: j.limits.is_empty(),
+            example_limits: j.limits.example,
         }
     }
 }
@@ -248,12 +258,13 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
             }
         }),
         verdict: t.verdict(),
-        evaluation: ev.map(|e| &e.evaluation).map(|e| Evaluated {
-            n: e.n,
-            m: e.targets.len(),
-            parameters: ParameterValues(&e.parameters),
-            at_target: TargetIndices(&e.parameters),
-            notes: &e.notes,
+        evaluation: ev.map(|ev| Evaluated {
+            n: ev.evaluation.n,
+            m: ev.evaluation.targets.len(),
+            parameters: ParameterValues(&ev.evaluation.parameters),
+            at_target: TargetIndices(&ev.evaluation.parameters),
+            notes: &ev.evaluation.notes,
+            conditions_not_stated: &ev.unstated,
         }),
         judgement: ev.and_then(|e| e.judgement.as_ref()).map(Judged::new),
         rules: t.findings(),
@@ -261,6 +272,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
         uncertainty: ev
             .and_then(|e| e.uncertainty.as_ref())
             .map(UncertaintyJson::new),
+        large_uncertainty: t.large_uncertainty(),
         compensation: None,
         diagnosis: ev.and_then(|e| e.diagnosis.as_deref()),
         out_of_test: ev.map_or(&[][..], |e| &e.out_of_test),

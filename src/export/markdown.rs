@@ -60,12 +60,17 @@ fn header(result: &CampaignResult) -> String {
     .filter_map(|(label, value)| value.as_ref().map(|v| format!("{label}: {}", cell(v))))
     .collect();
     facts.push(format!("Campaign file: {}", cell(&result.file_name)));
+    let caveats: String = (result.caveats().iter())
+        .map(|c| format!("- {}\n", cell(c)))
+        .collect();
     format!(
-        "# {}\n\n{}\n\n**{}** tests: {}\n\n",
+        "# {}\n\n{}\n\n**{}** tests: {}\n\n{}{}",
         cell(&info.name),
         facts.join(" · "),
         result.tests.len(),
-        result.counts_text()
+        result.counts_text(),
+        caveats,
+        if caveats.is_empty() { "" } else { "\n" }
     )
 }
 
@@ -77,14 +82,14 @@ fn row(t: &AxisTest) -> String {
             .map_or("–".to_string(), |p| fmt_fixed(p.value, 2))
     };
     format!(
-        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | **{}** |\n",
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
         cell(&t.machine.id),
         cell(&t.axis),
         cell(t.file.as_deref().unwrap_or("–")),
         t.standard().map_or("–", |s| s.key()),
         t.evaluated()
             .and_then(|e| e.judgement.as_ref())
-            .map_or("–".to_string(), |j| cell(&j.limits.describe())),
+            .map_or("–".to_string(), |j| cell(&j.limits.describe_labelled())),
         e.map_or("–".to_string(), |e| e.n.to_string()),
         v(Role::Accuracy),
         v(Role::Systematic),
@@ -92,8 +97,18 @@ fn row(t: &AxisTest) -> String {
         v(Role::Repeatability),
         v(Role::Reversal),
         t.kind().map_or("–", |k| k.deviation_symbol()),
-        t.verdict()
+        verdict_cell(t)
     )
+}
+
+/// The verdict in bold, flagged when its U is large (over half a limit or over the
+/// value): `**pass** (U large: A)`.
+fn verdict_cell(t: &AxisTest) -> String {
+    let large: Vec<String> = t.large_uncertainty().into_iter().map(|l| l.key).collect();
+    match large.is_empty() {
+        true => format!("**{}**", t.verdict()),
+        false => format!("**{}** (U large: {})", t.verdict(), cell(&large.join(", "))),
+    }
 }
 
 /// What the findings list says of a test: its error, the parameters over their limits and

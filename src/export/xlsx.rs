@@ -93,6 +93,7 @@ fn verdict_format(verdict: Verdict) -> Format {
         Verdict::Noncompliant => (0xFBE6CF, 0x7A3E00),
         Verdict::Inconclusive => (0xFDF3C4, 0x5E4B00),
         Verdict::Error => (0xE7E2F3, 0x3E2A75),
+        Verdict::NotJudged => (0xE4ECF2, 0x2C4A5E),
     };
     Format::new()
         .set_bold()

@@ -12,6 +12,9 @@ use std::collections::BTreeMap;
 /// What the summary says of a test judged against no limit.
 pub const NO_TOLERANCE: &str = "no tolerance applied";
 
+/// What every line built on an example spec's limits says (`example: true`).
+pub const EXAMPLE_LIMITS: &str = "example limits, not from a standard";
+
 /// How a measured value is compared with its limit.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum DecisionRule {
@@ -83,6 +86,9 @@ pub struct Limits {
     /// Spec name and band, e.g. `general (linear ≤ 1000 mm)`.
     pub spec: Option<String>,
     pub values: BTreeMap<ParamKey, (f64, LimitSource)>,
+    /// A limit from a spec marked `example: true` applies: the verdict rests on example
+    /// values, quoted from no standard.
+    pub example: bool,
 }
 
 impl Limits {
@@ -114,7 +120,18 @@ impl Limits {
         for (k, v) in overrides {
             limits.values.insert(*k, (*v, LimitSource::Axis));
         }
+        limits.example = spec.is_some_and(|s| s.example)
+            && (limits.values.values()).any(|(_, s)| *s == LimitSource::Spec);
         Ok(limits)
+    }
+
+    /// [`Self::describe`] followed by ` — example limits, not from a standard` when an
+    /// example spec's limit applies: what reports and summaries print.
+    pub fn describe_labelled(&self) -> String {
+        match self.example {
+            true => format!("{} — {EXAMPLE_LIMITS}", self.describe()),
+            false => self.describe(),
+        }
     }
 
     pub fn is_empty(&self) -> bool {
@@ -215,11 +232,16 @@ pub struct Judgement {
 
 impl Judgement {
     /// The test's verdict: noncompliant when its plan breaks a rule of the standard (the
-    /// result does not follow it, whatever the values), else fail when a nonconformance is
-    /// proven, inconclusive when one lies within its uncertainty zone (ISO 14253-1), pass.
+    /// result does not follow it, whatever the values), else not judged when no limit
+    /// applied to any of its parameters (no spec, no tolerances, or only limits of
+    /// parameters the test does not have: nothing was compared, so nothing passed), else
+    /// fail when a nonconformance is proven, inconclusive when one lies within its
+    /// uncertainty zone (ISO 14253-1), pass.
     pub fn verdict(&self, plan_broken: bool) -> Verdict {
         if plan_broken {
             Verdict::Noncompliant
+        } else if self.checks.is_empty() {
+            Verdict::NotJudged
         } else if self.failed().next().is_some() {
             Verdict::Fail
         } else if self.inconclusive().next().is_some() {
@@ -246,6 +268,63 @@ impl Judgement {
         self.checks
             .iter()
             .max_by(|a, b| a.ratio().total_cmp(&b.ratio()))
+    }
+}
+
+/// A check whose expanded uncertainty is too large for its verdict to carry weight: U
+/// over half its limit, where ISO 14253-1's conformance zone (|value| ≤ limit − U) is
+/// narrower than the zone of doubt around the limit, or U over the value itself, which
+/// the measurement then cannot tell from zero. Flagged beside the verdict; the verdict
+/// stands as the decision rule made it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LargeUncertainty {
+    pub key: String,
+    pub value: f64,
+    #[serde(rename = "U")]
+    pub expanded: f64,
+    pub limit: f64,
+    pub over_half_limit: bool,
+    pub over_value: bool,
+}
+
+impl LargeUncertainty {
+    /// `A = 11.55 ± 45.58 µm against its limit 20.00 µm: U over half its limit and over
+    /// the value`; `unit` may be empty.
+    pub fn text(&self, decimals: usize, unit: &str) -> String {
+        let why = match (self.over_half_limit, self.over_value) {
+            (true, true) => "U over half its limit and over the value",
+            (true, false) => "U over half its limit",
+            _ => "U over the value",
+        };
+        format!(
+            "{} = {} ± {} against its limit {}: {why}",
+            self.key,
+            fmt_fixed(self.value.abs(), decimals),
+            with_unit(self.expanded, decimals, unit),
+            with_unit(self.limit, decimals, unit)
+        )
+    }
+}
+
+impl Judgement {
+    /// The checks whose U (from `expanded`, by parameter key) is over half the limit or
+    /// over the value ([`LargeUncertainty`]).
+    pub fn large_uncertainty(&self, expanded: &BTreeMap<String, f64>) -> Vec<LargeUncertainty> {
+        (self.checks.iter())
+            .filter_map(|c| {
+                let u = *expanded.get(&c.key)?;
+                let over_half_limit = u > c.limit / 2.0;
+                let over_value = u > c.value.abs();
+                (over_half_limit || over_value).then(|| LargeUncertainty {
+                    key: c.key.clone(),
+                    value: c.value,
+                    expanded: u,
+                    limit: c.limit,
+                    over_half_limit,
+                    over_value,
+                })
+            })
+            .collect()
     }
 }
 
@@ -307,22 +386,29 @@ pub enum Verdict {
     /// No parameter is proven over its limit, but one lies within its uncertainty zone
     /// (ISO 14253-1): neither conformance nor nonconformance is proven.
     Inconclusive,
+    /// No limit was applied (no spec, no tolerances): evaluated and rule-checked, but
+    /// nothing was compared with a limit, so nothing is proven either way. Never a pass:
+    /// `check` and `run` exit 1 on it unless the campaign says `unjudged: allowed`.
+    #[serde(rename = "not_judged")]
+    NotJudged,
 }
 
 impl Verdict {
     /// Order for lists that put what needs attention first: fail, noncompliant,
-    /// inconclusive, error, pass.
+    /// inconclusive, error, not judged, pass.
     pub fn attention_rank(self) -> u8 {
         match self {
             Verdict::Fail => 0,
             Verdict::Noncompliant => 1,
             Verdict::Inconclusive => 2,
             Verdict::Error => 3,
-            Verdict::Pass => 4,
+            Verdict::NotJudged => 4,
+            Verdict::Pass => 5,
         }
     }
 
-    /// Whether the verdict fails a CI gate as a failure (an error is counted apart).
+    /// Whether the verdict fails a CI gate as a failure (an error and a test not judged
+    /// are counted apart).
     pub fn is_failure(self) -> bool {
         matches!(
             self,
@@ -337,6 +423,15 @@ impl Verdict {
             Verdict::Noncompliant => "noncompliant",
             Verdict::Error => "error",
             Verdict::Inconclusive => "inconclusive",
+            Verdict::NotJudged => "not_judged",
+        }
+    }
+
+    /// The verdict in words for counts and badges: `not judged` (the others as named).
+    pub fn words(self) -> &'static str {
+        match self {
+            Verdict::NotJudged => "not judged",
+            other => other.name(),
         }
     }
 }
@@ -387,6 +482,117 @@ mod tests {
                 outcome(Simple, value, 8.0, 0.0)
             );
         }
+    }
+
+    fn check(key: &str, value: f64, limit: f64) -> Check {
+        Check {
+            key: key.to_string(),
+            value,
+            limit,
+            margin: limit - value.abs(),
+            pass: value.abs() <= limit,
+            source: LimitSource::Spec,
+            expanded_uncertainty: None,
+            outcome: if value.abs() <= limit {
+                Outcome::Pass
+            } else {
+                Outcome::Fail
+            },
+        }
+    }
+
+    /// Issue 42: a test no limit was applied to is `not_judged`, never `pass`: without
+    /// limits, and with only limits of parameters the test does not have (A with n = 1).
+    #[test]
+    fn a_test_without_an_applied_limit_is_not_judged() {
+        let none = Judgement::default();
+        assert_eq!(none.verdict(false), Verdict::NotJudged);
+        assert_eq!(none.verdict(true), Verdict::Noncompliant);
+        let inapplicable = Judgement {
+            not_applicable: vec!["A".to_string()],
+            ..Judgement::default()
+        };
+        assert_eq!(inapplicable.verdict(false), Verdict::NotJudged);
+        let judged = Judgement {
+            checks: vec![check("E", 3.0, 6.0)],
+            ..Judgement::default()
+        };
+        assert_eq!(judged.verdict(false), Verdict::Pass);
+        assert_eq!(
+            serde_json::to_value(Verdict::NotJudged).unwrap(),
+            "not_judged"
+        );
+        assert_eq!(Verdict::NotJudged.name(), "not_judged");
+        assert_eq!(Verdict::NotJudged.words(), "not judged");
+        assert!(!Verdict::NotJudged.is_failure());
+        let back: Verdict = serde_json::from_value("not_judged".into()).unwrap();
+        assert_eq!(back, Verdict::NotJudged);
+    }
+
+    /// Issue 42: HMC-02 Y's A = 11.55 ± 45.58 µm against 28 µm is flagged on both counts;
+    /// U over half the limit alone, over the value alone, and neither.
+    #[test]
+    fn a_large_uncertainty_is_flagged() {
+        let j = Judgement {
+            checks: vec![
+                check("A", 11.55, 28.0),
+                check("E", 10.0, 20.0),
+                check("M", 1.0, 14.0),
+                check("B", 2.0, 8.0),
+            ],
+            ..Judgement::default()
+        };
+        let u = BTreeMap::from([
+            ("A".to_string(), 45.58),
+            ("E".to_string(), 10.5),
+            ("M".to_string(), 1.5),
+            ("B".to_string(), 1.0),
+        ]);
+        let large = j.large_uncertainty(&u);
+        let flags: Vec<(&str, bool, bool)> = (large.iter())
+            .map(|l| (l.key.as_str(), l.over_half_limit, l.over_value))
+            .collect();
+        assert_eq!(
+            flags,
+            vec![("A", true, true), ("E", true, true), ("M", false, true)]
+        );
+        assert_eq!(
+            large[0].text(2, "µm"),
+            "A = 11.55 ± 45.58 µm against its limit 28.00 µm: U over half its limit and over the value"
+        );
+        let half_only = j.large_uncertainty(&BTreeMap::from([("E".to_string(), 10.01)]));
+        assert_eq!(
+            half_only[0].text(1, ""),
+            "E = 10.0 ± 10.0 against its limit 20.0: U over half its limit and over the value"
+        );
+        let half = Judgement {
+            checks: vec![check("E", 12.0, 20.0)],
+            ..Judgement::default()
+        };
+        let half_only = half.large_uncertainty(&BTreeMap::from([("E".to_string(), 10.5)]));
+        assert_eq!(
+            half_only[0].text(1, ""),
+            "E = 12.0 ± 10.5 against its limit 20.0: U over half its limit"
+        );
+    }
+
+    /// Issue 42: an example spec's limits say so wherever the spec is described; an axis's
+    /// own limits alone do not.
+    #[test]
+    fn example_limits_are_labelled() {
+        let spec = Spec::from_yaml(BUILTIN_SPECS[0].1, "general").unwrap();
+        assert!(spec.example, "specs/general.yaml carries example: true");
+        let limits = Limits::new(Some(&spec), &Tolerances::new(), AxisKind::Linear, 500.0).unwrap();
+        assert!(limits.example);
+        assert_eq!(
+            limits.describe_labelled(),
+            "general (linear ≤ 1000 mm) — example limits, not from a standard"
+        );
+        assert_eq!(limits.describe(), "general (linear ≤ 1000 mm)");
+        let own = Tolerances::from([(ParamKey::A, 5.0)]);
+        let axis_only = Limits::new(None, &own, AxisKind::Linear, 500.0).unwrap();
+        assert!(!axis_only.example);
+        assert_eq!(axis_only.describe_labelled(), "axis tolerances");
     }
 
     #[test]

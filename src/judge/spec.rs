@@ -46,6 +46,10 @@ pub struct Spec {
     pub title: String,
     #[serde(default)]
     pub note: String,
+    /// The limits are examples, quoted from no standard (`example: true`): every report,
+    /// summary and console line judged by them says [`super::EXAMPLE_LIMITS`].
+    #[serde(default)]
+    pub example: bool,
     /// The standard whose parameters the limits name.
     #[serde(default)]
     pub standard: Option<String>,

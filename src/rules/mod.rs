@@ -26,6 +26,7 @@ mod iso_4_3_4_targets;
 mod iso_4_3_5_range;
 mod iso_4_3_5_runs;
 mod iso_4_3_5_spacing;
+mod iso_7_1_conditions;
 mod plan_targets;
 
 use crate::evaluate::StandardId;
@@ -73,6 +74,9 @@ pub struct PlanContext {
     pub pitch: Option<f64>,
     /// The test planned for the axis (`plan:`), to compare the measurement with.
     pub planned: Option<std::sync::Arc<Planned>>,
+    /// The clause 7.1 conditions the campaign does not state (`None`: not a campaign's
+    /// test, e.g. a plan before the measurement).
+    pub unstated: Option<Vec<&'static str>>,
 }
 
 /// A planned test as the rules compare it: its targets (mm or deg) and runs, or why its
@@ -132,6 +136,7 @@ pub const RULES: &[Rule] = &[
     iso_3_3_thermal::RULE,
     data_unit::RULE,
     plan_targets::RULE,
+    iso_7_1_conditions::RULE,
 ];
 
 /// Checks the plan of one test.

@@ -13,6 +13,20 @@
 //! 4.2.3) and an estimate s of σ, distributed as σ·χ(n−1)/√(n−1), has the standard
 //! deviation σ·√(1 − c4²) with E[s] = c4·σ, so u(s) = s·√(1 − c4²)/c4 (GUM E.4.3 gives
 //! the first-order form 1/√(2(n−1))).
+//!
+//! With n = 1 (one run per direction: the long-axis tests of clauses 4.3.3 and 4.3.5)
+//! no target has a scatter of its own, and leaving the statistical part out would make
+//! U of a reversal, where the length-dependent errors cancel, about 0: under ISO 14253-1
+//! a U that small proves conformance the test never showed. What the test has is m
+//! reversals Bi = Xi↑ − Xi↓, each the difference of two single readings. Assuming the
+//! reversal is the same at every target, their standard deviation over the targets is
+//! √2 times the scatter σ of one reading, so ŝ = s(Bi)/√2 (m − 1 degrees of freedom) is
+//! a pooled estimate of σ in the sense of GUM 4.2.4 and stands for s wherever a mean of
+//! n = 1 readings enters (u = ŝ/√1). A real change of the reversal along the axis counts
+//! as scatter too, so ŝ errs high: on the safe side for whoever must prove conformance
+//! (ISO 14253-1 puts U against the one who claims). The report states this assumption
+//! and ŝ ([`single_reading_s`]). With fewer than 3 targets no estimate is made and the
+//! note says the statistical part is left out.
 
 use crate::evaluate::catalogue::{Approach, Quantity, Spread};
 use crate::evaluate::{Evaluation, Parameter, StandardId, TargetResult};
@@ -88,23 +102,41 @@ pub fn of(e: &Evaluation, p: &Parameter) -> Option<Extent> {
         StandardId::Iso230_2 | StandardId::Gbt17421_2 | StandardId::Gost27843
     );
     let k = e.coverage_factor;
+    let single = single_reading_s(e);
     Some(match (band, p.def.spread) {
-        (true, Spread::Band) => range(e, p, Term::Band),
-        (true, Spread::Mean) => range(e, p, Term::Mean),
-        (true, Spread::Bidirectional) => range(e, p, Term::Bidirectional),
+        (true, Spread::Band) => range(e, p, Term::Band, single),
+        (true, Spread::Mean) => range(e, p, Term::Mean, single),
+        (true, Spread::Bidirectional) => range(e, p, Term::Bidirectional, single),
         (true, Spread::Repeatability) => repeatability(e, p),
         (true, Spread::MeanRepeatability) => mean_repeatability(e),
         (true, Spread::ReversalAtTarget) => {
-            reversal(e, p.at_target.and_then(|i| e.targets.get(i..=i)))
+            reversal(e, p.at_target.and_then(|i| e.targets.get(i..=i)), single)
         }
-        (true, Spread::ReversalMean) => reversal(e, Some(&e.targets)),
+        (true, Spread::ReversalMean) => reversal(e, Some(&e.targets), single),
         // VDI 3441 and NMTBA: no statistical part (see the README).
         (false, Spread::Scatter { factor, of_k }) => {
             scatter_only(if of_k { factor * k } else { factor })
         }
-        (false, Spread::LostMotion) => reversal(e, None),
+        (false, Spread::LostMotion) => reversal(e, None, None),
         _ => Extent::range(travel(e)),
     })
+}
+
+/// Fewest targets from which the scatter of one reading is estimated when n = 1.
+pub const SINGLE_READING_MIN_TARGETS: usize = 3;
+
+/// n = 1: the scatter of one reading estimated from the reversals' spread over the
+/// targets, ŝ = s(Bi)/√2 (see the module's doc); `None` when n ≥ 2 (each target has its
+/// own s) or fewer than [`SINGLE_READING_MIN_TARGETS`] targets.
+pub fn single_reading_s(e: &Evaluation) -> Option<f64> {
+    let m = e.targets.len();
+    if e.n >= 2 || m < SINGLE_READING_MIN_TARGETS {
+        return None;
+    }
+    let mean = e.targets.iter().map(|t| t.reversal).sum::<f64>() / m as f64;
+    let ss: f64 = e.targets.iter().map(|t| (t.reversal - mean).powi(2)).sum();
+    let s = (ss / (m - 1) as f64).sqrt() / std::f64::consts::SQRT_2;
+    s.is_finite().then_some(s)
 }
 
 /// Which term of a target a range's ends are.
@@ -134,17 +166,24 @@ struct End {
     scatter_u: Option<f64>,
 }
 
-fn ends(e: &Evaluation, approach: Approach, term: Term, upper: bool) -> Vec<End> {
+/// `single`: for n = 1, the estimated scatter of one reading ([`single_reading_s`]),
+/// used for the means (never for the scatter of s, which n = 1 does not have).
+fn ends(
+    e: &Evaluation,
+    approach: Approach,
+    term: Term,
+    upper: bool,
+    single: Option<f64>,
+) -> Vec<End> {
     let n = e.n;
     let k = e.coverage_factor;
     let sign = if upper { 1.0 } else { -1.0 };
     let mut out = Vec::new();
     for t in &e.targets {
         if let Term::Bidirectional = term {
-            let means_u =
-                t.up.s
-                    .zip(t.down.s)
-                    .map(|(a, b)| ((a * a + b * b) / (4.0 * n as f64)).sqrt());
+            let means_u = (t.up.s.or(single))
+                .zip(t.down.s.or(single))
+                .map(|(a, b)| ((a * a + b * b) / (4.0 * n as f64)).sqrt());
             out.push(End {
                 position: t.position,
                 value: t.mean,
@@ -155,7 +194,7 @@ fn ends(e: &Evaluation, approach: Approach, term: Term, upper: bool) -> Vec<End>
         }
         for &d in directions(approach) {
             let r = t.direction(d);
-            let means_u = r.s.map(|s| s / (n as f64).sqrt());
+            let means_u = r.s.or(single).map(|s| s / (n as f64).sqrt());
             let (value, scatter_u) = match term {
                 Term::Band => (
                     r.mean + sign * k * r.s.unwrap_or(f64::NAN),
@@ -207,13 +246,13 @@ fn quadrature(a: Option<f64>, b: Option<f64>) -> Option<f64> {
     a.zip(b).map(|(a, b)| a.hypot(b))
 }
 
-fn range(e: &Evaluation, p: &Parameter, term: Term) -> Extent {
+fn range(e: &Evaluation, p: &Parameter, term: Term, single: Option<f64>) -> Extent {
     let Some((hi, lo)) = p.span else {
         return Extent::range(travel(e));
     };
     let approach = p.def.approach;
-    let top = matching(ends(e, approach, term, true), hi);
-    let bottom = matching(ends(e, approach, term, false), lo);
+    let top = matching(ends(e, approach, term, true, single), hi);
+    let bottom = matching(ends(e, approach, term, false, single), lo);
     let Some((a, b)) = farthest(&top, &bottom) else {
         return Extent::range(travel(e));
     };
@@ -279,8 +318,8 @@ fn mean_repeatability(e: &Evaluation) -> Extent {
 }
 
 /// B at one target, or B̄ over `targets` (the mean of Bi = X̄i↑ − X̄i↓); `None`: no
-/// statistical part.
-fn reversal(e: &Evaluation, targets: Option<&[TargetResult]>) -> Extent {
+/// statistical part. `single`: for n = 1, the estimated scatter of one reading.
+fn reversal(e: &Evaluation, targets: Option<&[TargetResult]>, single: Option<f64>) -> Extent {
     let mut extent = Extent {
         shape: Shape::Reversal,
         length: 0.0,
@@ -294,8 +333,8 @@ fn reversal(e: &Evaluation, targets: Option<&[TargetResult]>) -> Extent {
     let variances: Option<f64> = targets
         .iter()
         .map(|t| {
-            t.up.s
-                .zip(t.down.s)
+            (t.up.s.or(single))
+                .zip(t.down.s.or(single))
                 .map(|(a, b)| (a * a + b * b) / e.n as f64)
         })
         .sum();

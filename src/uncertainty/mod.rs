@@ -124,7 +124,26 @@ fn notes(setup: &Setup, e: &Evaluation) -> Vec<String> {
             t.unrecorded_band_c
         ));
     }
-    if e.n < 2 {
+    let band = matches!(
+        e.standard,
+        StandardId::Iso230_2 | StandardId::Gbt17421_2 | StandardId::Gost27843
+    );
+    if e.n < 2
+        && band
+        && let Some(s) = extent::single_reading_s(e)
+    {
+        notes.push(format!(
+            "n = 1: the scatter of one reading estimated from the reversals over the {} targets, s = s(Bi)/√2 = {} {} (GUM 4.2.4; assumed: the reversal is the same at every target, so a real change along the axis counts as scatter and U errs high)",
+            e.targets.len(),
+            crate::units::fmt_fixed(s, 3),
+            e.kind.deviation_symbol()
+        ));
+    } else if e.n < 2 && band {
+        notes.push(format!(
+            "n = 1: the scatter of the means is unknown (fewer than {} targets to estimate it from); the statistical part is left out and U holds the instrument and the environment only",
+            extent::SINGLE_READING_MIN_TARGETS
+        ));
+    } else if e.n < 2 {
         notes.push(
             "n = 1: the scatter of the means is unknown; the statistical part is left out"
                 .to_string(),

@@ -66,12 +66,13 @@ fn one_broken_axis_fails_alone() {
     assert_eq!(axes[4]["failed"], serde_json::json!(["A", "R_up"]));
     assert_eq!(axes[4]["spec"], "general (linear ≤ 2000 mm)");
     assert_eq!(axes[4]["limits"]["A"], 10.0);
-    assert_eq!(verdict(5), "pass");
+    // No spec, no tolerances: not judged (issue 42), never a pass.
+    assert_eq!(verdict(5), "not_judged");
     assert_eq!(axes[5]["no_tolerance"], true);
     assert_eq!(results["counts"]["error"], 3);
     let junit = std::fs::read_to_string(out.join("junit.xml")).unwrap();
     assert!(
-        junit.contains("tests=\"6\" failures=\"1\" errors=\"3\""),
+        junit.contains("tests=\"6\" failures=\"2\" errors=\"3\""),
         "{junit}"
     );
     assert!(

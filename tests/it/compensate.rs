@@ -160,7 +160,7 @@ fn a_campaign_machine_with_a_controller_gets_its_tables() {
     let write = |controller: &str| {
         std::fs::write(
             &campaign,
-            format!("campaign: {{name: comp}}\nmachines:\n  - id: M\n    controller: {controller}\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv}}\n"),
+            format!("campaign: {{name: comp, unjudged: allowed}}\nmachines:\n  - id: M\n    controller: {controller}\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv}}\n"),
         )
         .unwrap();
     };
@@ -254,7 +254,7 @@ fn a_campaign_axis_sets_its_table_grid() {
     let write = |keys: &str| {
         std::fs::write(
             &campaign,
-            format!("campaign: {{name: comp}}\nmachines:\n  - id: M\n    controller: linuxcnc\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv, compensation: {{{keys}}}}}\n"),
+            format!("campaign: {{name: comp, unjudged: allowed}}\nmachines:\n  - id: M\n    controller: linuxcnc\n    axes:\n      - {{name: X, kind: linear, data: data/x.csv, compensation: {{{keys}}}}}\n"),
         )
         .unwrap();
     };

@@ -41,10 +41,7 @@ fn a_fleet_prints_twenty_problems_and_a_count_of_the_rest() {
         "{stdout}"
     );
     let summary = std::fs::read_to_string(out.join("summary.md")).unwrap();
-    let listed = summary
-        .lines()
-        .filter(|l| l.ends_with("| **fail** |"))
-        .count();
+    let listed = summary.lines().filter(|l| l.contains("| **fail**")).count();
     assert_eq!(listed, 25, "summary.md lists every failing axis");
     // Not a terminal: a progress line at every tenth, not one per axis.
     let progress: Vec<&str> = stderr.lines().filter(|l| l.contains(" % (")).collect();
@@ -73,7 +70,7 @@ fn progress_counts_axes_when_an_axis_has_several_tests() {
     let (code, stdout, stderr) =
         axcheck(&["check", "example-campaign/campaign.yaml", "--jobs", "1"]);
     assert_eq!(code, 1, "{stderr}");
-    assert!(stdout.contains("21 tests: 17 pass"), "{stdout}");
+    assert!(stdout.contains("21 tests: 16 pass"), "{stdout}");
     let progress: Vec<&str> = stderr.lines().filter(|l| l.contains(" % (")).collect();
     assert_eq!(progress.len(), 10, "{stderr}");
     assert_eq!(progress[4], "axcheck: 50 % (10 of 20 axes evaluated)");

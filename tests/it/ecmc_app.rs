@@ -365,7 +365,7 @@ fn a_campaign_names_the_reference_of_its_data() {
     let dir = scratch("ecmc-app-campaign");
     let targets = [0.0, 250.0, 500.0, 750.0, 1000.0];
     write(&dir, "data/r.md", &made_report(&targets, 5, 1.0, 0.0));
-    let campaign = "campaign: {name: Refs, date: 2026-11-20, spec: none}\nmachines:\n  - id: M1\n    axes:\n      - {name: X, kind: linear, data: {file: data/r.md, reference: 2}}\n      - {name: Y, kind: linear, data: {file: data/r.md, reference: 7}}\n";
+    let campaign = "campaign: {name: Refs, date: 2026-11-20, spec: none, unjudged: allowed}\nmachines:\n  - id: M1\n    axes:\n      - {name: X, kind: linear, data: {file: data/r.md, reference: 2}}\n      - {name: Y, kind: linear, data: {file: data/r.md, reference: 7}}\n";
     let c = write(&dir, "campaign.yaml", campaign);
     // The broken axis fails alone, its error naming file, line and key.
     let (code, stdout, stderr) = axcheck(&["check", &c]);

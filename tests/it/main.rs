@@ -45,5 +45,6 @@ mod standards;
 mod summary_html;
 mod trend;
 mod uncertainty;
+mod verdicts;
 mod verify;
 mod workbook;

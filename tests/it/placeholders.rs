@@ -194,7 +194,7 @@ fn run_says_which_tables_need_their_axis() {
     let campaign = dir.join("campaign.yaml");
     std::fs::write(
         &campaign,
-        "campaign: {name: axes}\nmachines:\n  - id: M\n    controller: siemens-840d\n    axes:\n      - {name: X, kind: linear, data: data/x.csv}\n      - {name: Y, kind: linear, data: data/x.csv, compensation: {axis: Y1}}\n  - id: T\n    controller: twincat\n    axes:\n      - {name: Z, kind: linear, data: data/x.csv}\n",
+        "campaign: {name: axes, unjudged: allowed}\nmachines:\n  - id: M\n    controller: siemens-840d\n    axes:\n      - {name: X, kind: linear, data: data/x.csv}\n      - {name: Y, kind: linear, data: data/x.csv, compensation: {axis: Y1}}\n  - id: T\n    controller: twincat\n    axes:\n      - {name: Z, kind: linear, data: data/x.csv}\n",
     )
     .unwrap();
     let out = dir.join("out");

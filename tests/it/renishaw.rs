@@ -86,7 +86,7 @@ fn a_campaign_reads_a_renishaw_file_as_the_long_csv_and_keeps_what_it_says() {
     std::fs::write(dir.join("data/x.rtl"), rtl(&table2.data)).unwrap();
     std::fs::write(
         dir.join("campaign.yaml"),
-        "campaign: {name: lab files, date: 2026-11-23}\nmachines:\n  - id: M1\n    axes:\n      - {name: X, kind: linear, data: data/x.csv}\n      - {name: X1, kind: linear, data: data/x.rtl}\n      - {name: X2, kind: linear, data: data/x.rtl, conditions: {nde: {}}}\n",
+        "campaign: {name: lab files, date: 2026-11-23, unjudged: allowed}\nmachines:\n  - id: M1\n    axes:\n      - {name: X, kind: linear, data: data/x.csv}\n      - {name: X1, kind: linear, data: data/x.rtl}\n      - {name: X2, kind: linear, data: data/x.rtl, conditions: {nde: {}}}\n",
     )
     .unwrap();
     let out = dir.join("out");

@@ -112,7 +112,8 @@ fn every_pdf_of_the_example_campaign() {
             0
         };
         assert!(
-            (4..=5 + extra).contains(&pages),
+            // One more since issue 42: the clause 7.1 items not stated.
+            (4..=6 + extra).contains(&pages),
             "{machine} {name}: {pages} pages"
         );
         // The last page holds more than its footer (closing line, title, page number).
@@ -132,9 +133,13 @@ fn every_pdf_of_the_example_campaign() {
             text.contains("Modelcheckanddiagnosis"),
             "{machine} {name}: diagnosis section"
         );
-        let verdict = axis["verdict"].as_str().unwrap().to_uppercase();
+        let verdict = axis["verdict"]
+            .as_str()
+            .unwrap()
+            .replace('_', " ")
+            .to_uppercase();
         assert!(
-            text.contains(&verdict),
+            text.contains(&squash(&verdict)),
             "{machine} {name}: verdict {verdict}"
         );
         if let Some(a) = axis["parameters"].get("A").and_then(|v| v.as_f64()) {
@@ -209,7 +214,7 @@ fn user_text_is_data_not_markup() {
     std::fs::write(
         &campaign,
         format!(
-            "campaign: {{name: '{evil}'}}\nmachines:\n  - id: '{evil}'\n    model: '<script>alert(1)</script> & \\u0000'\n    axes:\n      - {{name: 'X {evil}', kind: linear, data: data/x.csv}}\n"
+            "campaign: {{name: '{evil}', unjudged: allowed}}\nmachines:\n  - id: '{evil}'\n    model: '<script>alert(1)</script> & \\u0000'\n    axes:\n      - {{name: 'X {evil}', kind: linear, data: data/x.csv}}\n"
         ),
     )
     .unwrap();

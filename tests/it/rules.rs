@@ -53,6 +53,7 @@ fn ctx(kind: AxisKind) -> PlanContext {
         measurement_travel: None,
         pitch: None,
         planned: None,
+        unstated: None,
     }
 }
 
@@ -265,6 +266,35 @@ fn deviations_in_the_wrong_unit_warn() {
     let in_mm = d.map_deviations(|r| r.deviation / 1000.0);
     assert_eq!(ids(&ctx(AxisKind::Linear), &in_mm), vec!["data-unit"]);
     assert!(ids(&ctx(AxisKind::Linear), &d).is_empty());
+}
+
+/// Issue 42: every deviation exactly 0 (a zero-filled column) passed every limit silently.
+#[test]
+fn all_zero_deviations_warn() {
+    let d = data(AxisKind::Linear, &spread(0.0, 1000.0, 6), 5);
+    let zero = d.map_deviations(|_| 0.0);
+    let f = check(&ctx(AxisKind::Linear), &zero);
+    assert_eq!(
+        f.iter().map(|f| f.id).collect::<Vec<_>>(),
+        vec!["data-unit"]
+    );
+    assert_eq!(f[0].severity, Severity::Warning);
+    assert!(
+        f[0].message.starts_with("every deviation is exactly 0 µm"),
+        "{}",
+        f[0].message
+    );
+    let rotary = data(
+        AxisKind::Rotary,
+        &[0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0],
+        5,
+    );
+    let f = check(&ctx(AxisKind::Rotary), &rotary.map_deviations(|_| 0.0));
+    assert!(
+        f.iter()
+            .any(|f| f.id == "data-unit" && f.message.contains("exactly 0 arcsec")),
+        "{f:?}"
+    );
 }
 
 #[test]

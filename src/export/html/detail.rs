@@ -91,7 +91,7 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
         standard: t.standard().map(|s| s.title()),
         limits: ev
             .and_then(|e| e.judgement.as_ref())
-            .map(|j| j.limits.describe()),
+            .map(|j| j.limits.describe_labelled()),
         unit,
         parameters: parameters(t),
         not_applicable: (ev.map(|e| &e.evaluation).into_iter())

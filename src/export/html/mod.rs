@@ -46,7 +46,7 @@ struct Page<'a> {
     generator: String,
     campaign: crate::report::data::CampaignHeader<'a>,
     /// Tests per verdict, in the order of attention (fail first); inconclusive only when
-    /// a test was judged by ISO 14253-1.
+    /// a test was judged by ISO 14253-1, not judged only when a test had no limit.
     counts: Vec<(Verdict, usize)>,
     /// Whether the run keeps a history (the table's trend column).
     history: bool,
@@ -83,6 +83,7 @@ fn counts(result: &CampaignResult) -> Vec<(Verdict, usize)> {
     verdicts.sort_by_key(|v| v.attention_rank());
     (verdicts.into_iter())
         .filter(|v| *v != Verdict::Inconclusive || result.uses_uncertainty_rule())
+        .filter(|v| *v != Verdict::NotJudged || counts[v] > 0)
         .map(|v| (v, counts[&v]))
         .collect()
 }

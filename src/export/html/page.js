@@ -5,7 +5,7 @@
 (function () {
   const data = JSON.parse(document.getElementById("page-data").textContent);
   const rows = data.rows;
-  const RANK = { fail: 0, noncompliant: 1, inconclusive: 2, error: 3, pass: 4 };
+  const RANK = { fail: 0, noncompliant: 1, inconclusive: 2, error: 3, not_judged: 4, pass: 5 };
   const ROW_PX = 28;
   const OVERSCAN = 12;
 
@@ -21,7 +21,7 @@
     return e;
   }
   const dash = "–";
-  const verdictBadge = (v) => el("span", { class: "badge v-" + v }, v.toUpperCase());
+  const verdictBadge = (v) => el("span", { class: "badge v-" + v }, v.replace("_", " ").toUpperCase());
   const axisLabel = (r) => (r.tests > 1 ? `${r.axis} (${r.test}/${r.tests})` : r.axis);
   const value = (r, k) => r.values[k];
 

@@ -50,6 +50,7 @@ pub(crate) fn verdict_tone(v: crate::judge::Verdict) -> (RGBColor, RGBColor) {
         Verdict::Noncompliant => (RGBColor(0xFB, 0xED, 0xD0), RGBColor(0x8A, 0x5A, 0x00)),
         Verdict::Error => (RGBColor(228, 228, 228), RGBColor(40, 40, 40)),
         Verdict::Inconclusive => (RGBColor(0xE6, 0xE9, 0xF5), RGBColor(0x2F, 0x3F, 0x7A)),
+        Verdict::NotJudged => (RGBColor(0xE4, 0xEC, 0xF2), RGBColor(0x2C, 0x4A, 0x5E)),
     }
 }
 

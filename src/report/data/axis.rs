@@ -193,7 +193,7 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
             "Acceptance spec",
             t.evaluated()
                 .and_then(|e| e.judgement.as_ref())
-                .map(|j| j.limits.describe()),
+                .map(|j| j.limits.describe_labelled()),
         ),
         (
             "Test date",
@@ -221,8 +221,8 @@ struct VerdictText {
 impl VerdictText {
     fn new(t: &AxisTest) -> VerdictText {
         let detail = match t.verdict() {
-            Verdict::Pass if t.no_tolerance() => {
-                "No tolerance applied: evaluated and checked against the test-plan rules only."
+            Verdict::NotJudged => {
+                "Not judged: no tolerance applied, so nothing was compared with a limit; evaluated and checked against the test-plan rules only."
                     .to_string()
             }
             Verdict::Pass => {
@@ -270,9 +270,20 @@ impl VerdictText {
                 )
             }
         };
+        let unit = t.kind().map_or("", |k| k.deviation_symbol());
+        let large: Vec<String> = (t.large_uncertainty().iter())
+            .map(|l| l.text(2, unit))
+            .collect();
+        let detail = match large.is_empty() {
+            true => detail,
+            false => format!(
+                "{detail} The uncertainty is large for this verdict: {}.",
+                large.join("; ")
+            ),
+        };
         VerdictText {
             key: t.verdict(),
-            word: t.verdict().name().to_uppercase(),
+            word: t.verdict().words().to_uppercase(),
             detail,
         }
     }

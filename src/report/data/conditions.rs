@@ -75,6 +75,21 @@ pub(super) fn condition_rows(c: &Conditions, kind: AxisKind, t: &AxisTest) -> Ve
         ),
         ("Notes", c.notes.clone()),
     ])
+    .into_iter()
+    .chain(not_stated(t))
+    .collect()
+}
+
+/// A row "not stated" for each clause 7.1 item neither the campaign nor the file states,
+/// in the clause's order.
+fn not_stated(t: &AxisTest) -> Vec<Row> {
+    let unstated = t.evaluated().map_or(&[][..], |e| &e.unstated);
+    (unstated.iter())
+        .map(|label| Row {
+            label,
+            value: "not stated".to_string(),
+        })
+        .collect()
 }
 
 /// The layout the file was read as, then what was assumed or skipped: `wide CSV; 11

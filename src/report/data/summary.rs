@@ -15,6 +15,8 @@ pub struct Summary<'a> {
     /// The campaign's name for headings and footers ([`super::campaign_short`]).
     campaign_short: String,
     counts: Counts,
+    /// What the verdicts rest on that a reader must know ([`CampaignResult::caveats`]).
+    caveats: Vec<String>,
     rows: Vec<SummaryRow>,
     errors: Vec<Problem>,
     noncompliant: Vec<Problem>,
@@ -41,6 +43,8 @@ struct Counts {
     error: usize,
     /// Shown when a test was judged by ISO 14253-1.
     inconclusive: Option<usize>,
+    /// Shown when a test had no limit applied.
+    not_judged: Option<usize>,
 }
 
 /// One axis test: its headline parameters (A, E, R, B of its standard), the parameter
@@ -97,7 +101,9 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
             inconclusive: result
                 .uses_uncertainty_rule()
                 .then(|| counts[&Verdict::Inconclusive]),
+            not_judged: Some(counts[&Verdict::NotJudged]).filter(|n| *n > 0),
         },
+        caveats: result.caveats(),
         rows: tests.into_iter().map(row).collect(),
         errors: with(Verdict::Error, |t| {
             t.error().unwrap_or_default().to_string()
