@@ -54,10 +54,10 @@ pub enum ReportError {
     Templates(String),
     #[error("typesetting {document}: {message}")]
     Typeset { document: String, message: String },
-    #[error("writing the data of {document}: {source}")]
+    #[error("writing the data of {document}: {cause}")]
     Data {
         document: String,
-        source: serde_json::Error,
+        cause: serde_json::Error,
     },
 }
 
@@ -83,9 +83,9 @@ impl Files {
         path: String,
         data: &impl serde::Serialize,
     ) -> Result<(), ReportError> {
-        let bytes = serde_json::to_vec(data).map_err(|source| ReportError::Data {
+        let bytes = serde_json::to_vec(data).map_err(|cause| ReportError::Data {
             document: document.to_string(),
-            source,
+            cause,
         })?;
         self.files.push((path, bytes));
         Ok(())
