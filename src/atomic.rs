@@ -127,17 +127,18 @@ pub enum OutputError {
         line: usize,
         problem: String,
     },
-    #[error("cannot write {path}: {source}")]
+    // `cause`, not `source`: a source is printed again after the message (`{e:#}`).
+    #[error("cannot write {path}: {cause}")]
     Io {
         path: PathBuf,
-        source: std::io::Error,
+        cause: std::io::Error,
     },
 }
 
 fn io_error(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
-    move |source| OutputError::Io {
+    move |cause| OutputError::Io {
         path: path.to_path_buf(),
-        source,
+        cause,
     }
 }
 
@@ -281,7 +282,7 @@ impl OutputDir {
             let Some(relative) = clean_relative(&output.to_string_lossy()) else {
                 return Err(OutputError::Io {
                     path: self.root.join(output),
-                    source: std::io::Error::other("not a relative path inside the output folder"),
+                    cause: std::io::Error::other("not a relative path inside the output folder"),
                 });
             };
             for dir in ancestors(&relative) {

@@ -128,11 +128,32 @@ pub enum LockError {
         "{path} is {what}, not axcheck's lock file; remove it (axcheck creates its lock file itself)"
     )]
     InTheWay { path: PathBuf, what: &'static str },
-    #[error("cannot lock {path}: {source}")]
+    #[error(
+        "cannot write in {}: {cause}; axcheck locks a folder before it writes there: choose a folder you may write in, or make this one writable",
+        path.parent().unwrap_or(path).display()
+    )]
+    ReadOnly {
+        path: PathBuf,
+        cause: std::io::Error,
+    },
+    // `cause`, not `source`: a source is printed again after the message (`{e:#}`).
+    #[error("cannot lock {path}: {cause}")]
     Io {
         path: PathBuf,
-        source: std::io::Error,
+        cause: std::io::Error,
     },
+}
+
+impl LockError {
+    /// An I/O error at the lock file `path`: a folder that cannot be written (a read-only
+    /// file system, no permission) is said so, not "cannot lock".
+    fn io(path: PathBuf, cause: std::io::Error) -> LockError {
+        use std::io::ErrorKind::{PermissionDenied, ReadOnlyFilesystem};
+        match cause.kind() {
+            ReadOnlyFilesystem | PermissionDenied => LockError::ReadOnly { path, cause },
+            _ => LockError::Io { path, cause },
+        }
+    }
 }
 
 /// A locked folder; dropping it releases the lock, removes the lock file (unix) and the
@@ -155,10 +176,7 @@ impl FolderLock {
         mut waiting: impl FnMut(&Locked),
     ) -> Result<FolderLock, LockError> {
         let path = dir.join(LOCK_FILE);
-        let io = |source| LockError::Io {
-            path: path.clone(),
-            source,
-        };
+        let io = |cause| LockError::io(path.clone(), cause);
         let created = create_folders(dir).map_err(io)?;
         let mut announced = false;
         let mut attempts = 0;
@@ -166,8 +184,8 @@ impl FolderLock {
             // Again on every attempt: the run before may have removed the folder it created.
             std::fs::create_dir_all(dir).map_err(io)?;
             let mut file = match open_lock_file(&path) {
-                Err(LockError::Io { source, .. })
-                    if source.kind() == std::io::ErrorKind::NotFound && attempts < 100 =>
+                Err(LockError::Io { cause, .. })
+                    if cause.kind() == std::io::ErrorKind::NotFound && attempts < 100 =>
                 {
                     attempts += 1;
                     continue;
@@ -265,10 +283,9 @@ fn open_lock_file(path: &Path) -> Result<File, LockError> {
         let flags = rustix::fs::OFlags::NOFOLLOW | rustix::fs::OFlags::NONBLOCK;
         options.custom_flags(flags.bits() as i32).mode(0o644);
     }
-    let file = options.open(path).map_err(|source| LockError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let file = options
+        .open(path)
+        .map_err(|cause| LockError::io(path.to_path_buf(), cause))?;
     match file
         .metadata()
         .ok()
@@ -320,6 +337,20 @@ fn read_holder(file: &mut File) -> Holder {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A read-only file system is said so, and its OS error text is printed once (it was
+    /// "cannot lock …: (os error 30): … (os error 30)").
+    #[test]
+    fn a_read_only_folder_is_said_so_once() {
+        let path = PathBuf::from("/media/disk/out").join(LOCK_FILE);
+        let e = LockError::io(path, std::io::Error::from_raw_os_error(30));
+        let shown = format!("{:#}", anyhow::Error::from(e));
+        assert!(
+            shown.starts_with("cannot write in /media/disk/out: "),
+            "{shown}"
+        );
+        assert_eq!(shown.matches("(os error 30)").count(), 1, "{shown}");
+    }
 
     fn scratch(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("axcheck-lock-{name}-{}", std::process::id()));

@@ -51,7 +51,7 @@ enum Command {
         #[arg(long, short, default_value = "iso230-2", value_parser = cli::parse_standard)]
         standard: StandardId,
         /// Lead-screw or encoder pitch (mm or deg), tested as a candidate period.
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true, value_parser = cli::parse_pitch)]
         pitch: Option<f64>,
         /// Tests simulated from the fitted base model for the model check.
         #[arg(long, default_value_t = 200)]
@@ -143,12 +143,15 @@ fn run(cli: Cli) -> Result<ExitCode> {
     // One pool for the whole process: --jobs workers evaluate the axes (0: one per core);
     // reports are typeset by as many workers of their own (export::pdf), so --jobs bounds
     // both. Large stacks, as Typst's layout recurses deeply.
-    let jobs = match &cli.command {
-        Command::Run(args) => Some(args.jobs),
-        Command::Check(args) => Some(args.jobs),
+    let mut cli = cli;
+    let jobs = match &mut cli.command {
+        Command::Run(args) => Some(&mut args.jobs),
+        Command::Check(args) => Some(&mut args.jobs),
         _ => None,
     };
     if let Some(jobs) = jobs {
+        *jobs = cli::capped_jobs(*jobs);
+        let jobs = *jobs;
         rayon::ThreadPoolBuilder::new()
             .num_threads(jobs)
             .stack_size(64 << 20)

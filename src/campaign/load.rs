@@ -177,6 +177,7 @@ fn validated_axis(
     default_standard: StandardId,
 ) -> Result<(AxisRaw, StandardId, DataSource), Located> {
     let mut raw: AxisRaw = deserialize_at(value, base, index)?;
+    check_name(&raw, base, index)?;
     let standard = match &raw.standard {
         None => default_standard,
         Some(s) => parse_standard(s, &format!("{base}.standard"), index)?,
@@ -197,6 +198,21 @@ fn validated_axis(
     check_tolerances(&mut raw, base, index)?;
     check_instrument(&raw, base, index)?;
     Ok((raw, standard, data))
+}
+
+/// An axis has a name: it names the axis in every output and, with the machine's id, its
+/// series in the history.
+fn check_name(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    if !raw.name.trim().is_empty() {
+        return Ok(());
+    }
+    let path = format!("{base}.name");
+    Err(Located::new(
+        index.value(&path),
+        format!(
+            "{path}: the axis name is empty; name the axis as the machine does (X, Y, Z, A, B, C …)"
+        ),
+    ))
 }
 
 /// The instrument's stated accuracy, resolution, dead path and beam walk are numbers ≥ 0

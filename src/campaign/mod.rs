@@ -98,6 +98,19 @@ impl Place {
     pub fn line(&self) -> usize {
         self.index.value(&self.path).map_or(0, |(l, _)| l)
     }
+
+    /// Where the entry's `key` is written, as `path.key` with its line: the axis's own,
+    /// else the campaign's (`campaign.spec` for an axis that inherits it), else the entry.
+    pub fn key(&self, key: &str) -> (String, usize) {
+        let own = format!("{}.{key}", self.path);
+        let campaign = format!("campaign.{key}");
+        for path in [own, campaign] {
+            if let Some((line, _)) = self.index.key(&path) {
+                return (path, line);
+            }
+        }
+        (self.path.clone(), self.line())
+    }
 }
 
 /// Two places are the same path in the document.
@@ -195,9 +208,29 @@ impl Campaign {
                     ),
                 ));
             }
+            unique_axis_names(machine, m, index)?;
         }
         Ok(())
     }
+}
+
+/// The axes of one machine have different names: machine and axis are one history
+/// series, and two axes of one name would write one series.
+fn unique_axis_names(machine: &Machine, m: usize, index: &LocationIndex) -> Result<(), Located> {
+    let mut axes = BTreeMap::new();
+    for (a, entry) in machine.axes.iter().enumerate() {
+        let Ok(spec) = &entry.spec else { continue };
+        if let Some(first) = axes.insert(spec.raw.name.as_str(), a) {
+            return Err(Located::new(
+                index.value(&format!("machines[{m}].axes[{a}].name")),
+                format!(
+                    "machines[{m}].axes[{a}].name: axis `{}` of machine `{}` is named twice (axes[{first}] and axes[{a}]); each axis of a machine needs its own name",
+                    spec.raw.name, machine.info.id
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The top level: a mapping of `campaign:` and `machines:` and nothing else.

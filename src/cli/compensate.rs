@@ -26,7 +26,7 @@ pub struct TableArgs {
     #[arg(long, value_name = "POS", allow_negative_numbers = true)]
     reference: Option<f64>,
     /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::parse_pitch)]
     pitch: Option<f64>,
     /// The axis's name on the controller, for formats that name it (HEIDENHAIN `X`,
     /// Siemens `X1`, TwinCAT its logical number `2`) and to pick its table from an active

@@ -41,10 +41,10 @@ pub struct Args {
     #[arg(long)]
     address: Option<String>,
     /// The lead-screw pitch, mm or deg: the targets sample it at spread phases (4.2).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::parse_pitch)]
     pitch: Option<f64>,
     /// The scale's (encoder's) pitch, mm or deg: sampled too.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::parse_pitch)]
     scale_pitch: Option<f64>,
     /// The seed of the targets' offsets (the same seed, the same plan).
     #[arg(long, default_value_t = 1)]
@@ -274,13 +274,34 @@ fn make(args: &Args) -> Result<Made> {
     };
     let plan = match &args.targets {
         Some(t) => plan::with_targets(&axis, &motion, t.clone())?,
-        None => plan::plan(&axis, &motion, args.seed)?,
+        None => {
+            check_target_count(&axis, &motion)?;
+            plan::plan(&axis, &motion, args.seed)?
+        }
     };
     Ok(Made {
         plan,
         address: args.address.clone().or(address),
         lathe,
     })
+}
+
+/// Refuses, before any target is placed, an axis whose travel asks for more targets than
+/// a plan holds ([`plan::MAX_TARGETS`]): `--travel 1e9` placed 4 million and wrote a
+/// 658 MB program.
+fn check_target_count(axis: &Axis, motion: &Motion) -> Result<()> {
+    let [first, last] = plan::measurement_travel(axis, motion.overrun)?;
+    let (least, _) = plan::targets::least(axis.kind, axis.standard, last - first);
+    if least > plan::MAX_TARGETS {
+        let unit = axis.kind.position_unit();
+        bail!(
+            "a measurement travel of {} {unit} needs {least} targets under {}, more than the {} a plan holds; check --travel (mm for a linear axis, deg for a rotary one) or plan the travel in parts",
+            last - first,
+            axis.standard.title(),
+            plan::MAX_TARGETS
+        );
+    }
+    Ok(())
 }
 
 /// The axis from --kind, --travel, --measurement-travel, --standard, --pitch.
@@ -354,13 +375,18 @@ fn from_campaign(path: &Path, args: &Args) -> Result<CampaignAxis> {
     let (found, entry) = campaign
         .axes()
         .find(|(m, a)| &m.info.id == machine && &a.name == name)
-        .ok_or_else(|| anyhow!("{}: no axis {name} of machine {machine}", path.display()))?;
+        .ok_or_else(|| {
+            anyhow!(
+                "{}: no axis `{name}` of machine `{machine}`",
+                path.display()
+            )
+        })?;
     let lathe = is_lathe(found.info.machine_type.as_deref());
     let spec = entry.spec.as_ref().map_err(|e| anyhow!("{e}"))?;
     let raw = &spec.raw;
     let travel = raw.travel.ok_or_else(|| {
         anyhow!(
-            "{}: axis {machine} {name} gives no travel: a plan needs it",
+            "{}: axis `{name}` of machine `{machine}` gives no travel: a plan needs it; add `travel:` to the axis",
             path.display()
         )
     })?;

@@ -142,8 +142,9 @@ pub fn run(
 
 /// Writes a synthetic fleet campaign into `dir`.
 pub fn fleet(axes: usize, seed: u64, dir: &Path) -> Result<()> {
-    if axes == 0 {
-        anyhow::bail!("--fleet needs at least one axis");
+    let most = axcheck::simulate::fleet::MAX_AXES;
+    if axes == 0 || axes > most {
+        anyhow::bail!("--fleet {axes}: a fleet has 1 to {most} axes; ask for fewer");
     }
     let start = std::time::Instant::now();
     let _lock = axcheck::session::lock_folders(dir, None, false, &|m| {

@@ -29,10 +29,10 @@ pub enum ExportError {
         format: &'static str,
         message: String,
     },
-    #[error("cannot write {path}: {source}")]
+    #[error("cannot write {path}: {cause}")]
     Write {
         path: PathBuf,
-        source: std::io::Error,
+        cause: std::io::Error,
     },
     /// The output folder cannot take the outputs (a file axcheck did not write is in the
     /// way), or writing it failed.

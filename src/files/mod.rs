@@ -39,6 +39,10 @@ pub enum FileError {
         root.display()
     )]
     Outside { real: PathBuf, root: PathBuf },
+    #[error(
+        "it is {0} text; axcheck reads UTF-8: save it as UTF-8 (an editor's Save as, Encoding UTF-8) or convert it with `iconv -f UTF-16 -t UTF-8`"
+    )]
+    Utf16(&'static str),
     #[error("{0}")]
     Io(#[from] std::io::Error),
 }
@@ -212,18 +216,50 @@ fn bytes(file: &mut File) -> std::io::Result<Vec<u8>> {
     file.read_to_end(&mut bytes).map(|_| bytes)
 }
 
-/// The text of the regular file `path` (UTF-8).
+/// The text of the regular file `path` (UTF-8, with or without a byte-order mark).
 pub fn read_to_string(path: &Path) -> Result<String, FileError> {
     utf8(read(path)?)
 }
 
-fn utf8(bytes: Vec<u8>) -> Result<String, FileError> {
+/// The bytes as UTF-8 text without its byte-order mark (Windows' "UTF-8 with BOM"); UTF-16
+/// text is named as such, for the user to save it as UTF-8.
+fn utf8(mut bytes: Vec<u8>) -> Result<String, FileError> {
+    if let Some(kind) = utf16_kind(&bytes) {
+        return Err(FileError::Utf16(kind));
+    }
+    if bytes.starts_with(UTF8_BOM) {
+        bytes.drain(..UTF8_BOM.len());
+    }
     String::from_utf8(bytes).map_err(|_| {
         FileError::Io(std::io::Error::new(
             std::io::ErrorKind::InvalidData,
             "stream did not contain valid UTF-8",
         ))
     })
+}
+
+/// The byte-order mark of UTF-8 text.
+pub const UTF8_BOM: &[u8] = b"\xEF\xBB\xBF";
+
+/// Which UTF-16 the text starting with `head` is: by its byte-order mark, or without one
+/// by a NUL byte beside most of its first characters (Latin text as Notepad and Excel's
+/// "Unicode text" write it); UTF-8 text has no NUL byte.
+pub fn utf16_kind(head: &[u8]) -> Option<&'static str> {
+    if head.starts_with(b"\xFF\xFE") {
+        return Some("UTF-16 little-endian");
+    }
+    if head.starts_with(b"\xFE\xFF") {
+        return Some("UTF-16 big-endian");
+    }
+    let pairs: Vec<&[u8]> = head.chunks_exact(2).take(64).collect();
+    let most = |fits: fn(&[u8]) -> bool| {
+        pairs.len() >= 4 && 4 * pairs.iter().filter(|p| fits(p)).count() >= 3 * pairs.len()
+    };
+    match () {
+        _ if most(|p| p[0] != 0 && p[1] == 0) => Some("UTF-16 little-endian"),
+        _ if most(|p| p[0] == 0 && p[1] != 0) => Some("UTF-16 big-endian"),
+        _ => None,
+    }
 }
 
 #[cfg(test)]

@@ -41,6 +41,15 @@ pub enum HistoryError {
     )]
     MissingName { file: String },
     #[error(
+        "{file}: campaign.name: the campaign's history file name would be {bytes} bytes, more than the {} a file system takes with axcheck's temporary name; shorten campaign.name (nothing was evaluated or written)",
+        MAX_FILE_NAME_BYTES
+    )]
+    NameTooLong { file: String, bytes: usize },
+    #[error(
+        "{path}: it is {kind}, named as an inspection; a history holds its inspections as regular files (the links are not followed): put the file itself there, or rename or move it out of the history folder"
+    )]
+    NotAFile { path: PathBuf, kind: &'static str },
+    #[error(
         "the rows to append belong to more than one campaign run ({first} and {other}); append one run at a time"
     )]
     MixedRuns { first: String, other: String },
@@ -54,10 +63,12 @@ pub enum HistoryError {
     },
     #[error("the history folder {path} does not exist")]
     NoHistory { path: PathBuf },
-    #[error("{path}: {source}")]
+    // `cause`, not `source`: a source is printed again after the message (`{e:#}`), and
+    // the message holds it already.
+    #[error("{path}: {cause}")]
     Io {
         path: PathBuf,
-        source: std::io::Error,
+        cause: std::io::Error,
     },
     #[error("{path}: not a readable Parquet file of the history: {message}")]
     Parquet { path: PathBuf, message: String },
@@ -83,6 +94,15 @@ pub enum HistoryError {
         column: &'static str,
     },
 }
+
+/// A run's history file name: `<campaign-slug>_<YYYY-MM-DD>.parquet`.
+pub fn file_name(campaign: &str, date: chrono::NaiveDate) -> String {
+    format!("{}_{date}.parquet", slug(campaign))
+}
+
+/// The longest history file name, in bytes: it is written as `.NAME.axcheck-tmp-PID`
+/// first (25 bytes more), and file systems take names of 255 bytes (ext4, XFS, Btrfs).
+pub const MAX_FILE_NAME_BYTES: usize = 230;
 
 /// `Plant 2 annual inspection` → `plant-2-annual-inspection`: lower-case letters and digits
 /// (any script), everything else a single `-`; `campaign` when nothing is left.

@@ -6,8 +6,9 @@ use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::CampaignInfo;
 use chrono::NaiveDate;
 
-/// The run's date (`campaign.date`), which a history needs; `file` names the campaign file
-/// in the error.
+/// The run's date (`campaign.date`), which a history needs, checked with the history file
+/// name it gives (before the evaluation: not after the outputs are written); `file` names
+/// the campaign file in the error.
 pub fn run_date(info: &CampaignInfo, file: &str) -> Result<NaiveDate, HistoryError> {
     if info.name.trim().is_empty() {
         return Err(HistoryError::MissingName { file: file.into() });
@@ -16,10 +17,18 @@ pub fn run_date(info: &CampaignInfo, file: &str) -> Result<NaiveDate, HistoryErr
         .date
         .as_deref()
         .ok_or_else(|| HistoryError::MissingDate { file: file.into() })?;
-    NaiveDate::parse_from_str(date, "%Y-%m-%d").map_err(|_| HistoryError::BadDate {
+    let date = NaiveDate::parse_from_str(date, "%Y-%m-%d").map_err(|_| HistoryError::BadDate {
         file: file.into(),
         date: date.into(),
-    })
+    })?;
+    let name = super::file_name(&info.name, date);
+    if name.len() > super::MAX_FILE_NAME_BYTES {
+        return Err(HistoryError::NameTooLong {
+            file: file.into(),
+            bytes: name.len(),
+        });
+    }
+    Ok(date)
 }
 
 /// One row per (axis test, evaluated parameter), in campaign order then the standard's

@@ -2,7 +2,7 @@
 //! and read back with their schema checked.
 
 use super::record::Text;
-use super::{HistoryError, Record, SCHEMA_VERSION, slug};
+use super::{HistoryError, Record, SCHEMA_VERSION};
 use chrono::{Datelike, NaiveDate};
 use polars::prelude::*;
 use std::path::{Path, PathBuf};
@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 /// one path, so a rerun replaces its file.
 pub fn file_path(dir: &Path, campaign: &str, date: NaiveDate) -> PathBuf {
     dir.join(format!("year={}", date.year()))
-        .join(format!("{}_{date}.parquet", slug(campaign)))
+        .join(super::file_name(campaign, date))
 }
 
 /// Writes one run's rows to its file under `dir` (replacing the run's earlier file) and
@@ -39,9 +39,9 @@ pub fn append(dir: &Path, records: &[Record]) -> Result<Option<PathBuf>, History
     })?;
     crate::atomic::write(&path, &bytes)
         .and_then(|()| crate::atomic::sync_dir(path.parent().unwrap_or(dir)))
-        .map_err(|source| HistoryError::Io {
+        .map_err(|cause| HistoryError::Io {
             path: path.clone(),
-            source,
+            cause,
         })?;
     Ok(Some(path))
 }
@@ -183,12 +183,26 @@ fn history_files(dir: &Path) -> Result<Vec<PathBuf>, HistoryError> {
     for entry in walkdir::WalkDir::new(dir) {
         let entry = entry.map_err(|e| HistoryError::Io {
             path: e.path().unwrap_or(dir).to_path_buf(),
-            source: e.into(),
+            cause: e.into(),
         })?;
         let name = entry.file_name().to_string_lossy();
-        if entry.file_type().is_file() && name.ends_with(".parquet") && !name.starts_with('.') {
-            files.push(entry.into_path());
+        if !name.ends_with(".parquet") || name.starts_with('.') {
+            continue;
         }
+        if !entry.file_type().is_file() {
+            // A link or a folder named as an inspection is refused, not skipped: no trend
+            // may silently miss an inspection.
+            let kind = match entry.file_type() {
+                t if t.is_symlink() => "a symbolic link",
+                t if t.is_dir() => "a folder",
+                _ => "not a regular file",
+            };
+            return Err(HistoryError::NotAFile {
+                path: entry.into_path(),
+                kind,
+            });
+        }
+        files.push(entry.into_path());
     }
     files.sort();
     Ok(files)
@@ -204,7 +218,7 @@ const UNREADABLE_ADVICE: &str =
 pub fn read_file(path: &Path, root: &crate::files::Root) -> Result<Vec<Record>, HistoryError> {
     let bytes = root.read(path).map_err(|e| HistoryError::Io {
         path: path.to_path_buf(),
-        source: e.into(),
+        cause: e.into(),
     })?;
     read_bytes(&bytes, path)
 }

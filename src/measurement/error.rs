@@ -268,6 +268,10 @@ pub enum ReadErrorKind {
     EmptyCell { column: String },
     #[error("column `{column}`: expected a number, found {found}")]
     WrongCellType { column: String, found: String },
+    #[error(
+        "the file is {encoding} text; axcheck reads UTF-8: save it as UTF-8 (Excel: \"CSV UTF-8\"; Notepad: Encoding UTF-8) or convert it with `iconv -f UTF-16 -t UTF-8`"
+    )]
+    Utf16 { encoding: &'static str },
     #[error("no layout recognised; tried: {tried}")]
     Unrecognised { tried: String },
     #[error(

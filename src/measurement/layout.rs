@@ -155,6 +155,9 @@ pub(crate) fn recognise(head: &[u8]) -> Result<Reader, ReadErrorKind> {
     if head.starts_with(ZIP_MAGIC) || head.starts_with(OLE_MAGIC) {
         return Ok(Reader::Book);
     }
+    if let Some(encoding) = crate::files::utf16_kind(head) {
+        return Err(ReadErrorKind::Utf16 { encoding });
+    }
     if super::renishaw::looks_like(head) {
         return Ok(Reader::Renishaw);
     }
@@ -303,10 +306,30 @@ mod tests {
         assert!(tried.contains("ecmc key=value: line 2 `hello world` is not KEY=VALUE"));
         assert!(tried.contains("long CSV: line 2 `hello world` names none of"));
         assert!(tried.contains("wide CSV: line 2 `hello world` has neither"));
-        let Err(ReadErrorKind::Unrecognised { tried }) = recognise(b"\xff\xfe\x00junk") else {
+        let Err(ReadErrorKind::Unrecognised { tried }) = recognise(b"\xc3\x28junk") else {
             panic!("recognised")
         };
         assert!(tried.contains("line 1 (not UTF-8 text)"), "{tried}");
+    }
+
+    #[test]
+    fn utf16_is_named() {
+        let le: Vec<u8> = "target_mm,direction\n"
+            .encode_utf16()
+            .flat_map(u16::to_le_bytes)
+            .collect();
+        let be: Vec<u8> = "target_mm,direction\n"
+            .encode_utf16()
+            .flat_map(u16::to_be_bytes)
+            .collect();
+        let with_bom = [&[0xFF, 0xFE][..], &le].concat();
+        for (bytes, encoding) in [
+            (&le, "UTF-16 little-endian"),
+            (&be, "UTF-16 big-endian"),
+            (&with_bom, "UTF-16 little-endian"),
+        ] {
+            assert_eq!(recognise(bytes), Err(ReadErrorKind::Utf16 { encoding }));
+        }
     }
 
     #[test]

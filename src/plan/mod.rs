@@ -88,7 +88,7 @@ pub enum PlanError {
 }
 
 /// Most targets a plan holds (a measurement file of 5 runs holds them all).
-const MAX_TARGETS: usize = 10_000;
+pub const MAX_TARGETS: usize = 10_000;
 
 /// A plan for `axis` with the standard's targets, offsets drawn from `seed`.
 pub fn plan(axis: &Axis, motion: &Motion, seed: u64) -> Result<Plan, PlanError> {

@@ -54,10 +54,10 @@ pub enum ReportError {
     Templates(String),
     #[error("typesetting {document}: {message}")]
     Typeset { document: String, message: String },
-    #[error("writing the data of {document}: {source}")]
+    #[error("writing the data of {document}: {cause}")]
     Data {
         document: String,
-        source: serde_json::Error,
+        cause: serde_json::Error,
     },
 }
 
@@ -85,9 +85,9 @@ impl Files {
     ) -> Result<(), ReportError> {
         // Hidden characters of names and notes as text: a report shows them, never acts on
         // them (U+202E would print a name backwards).
-        let bytes = crate::safe_text::shown_json(data).map_err(|source| ReportError::Data {
+        let bytes = crate::safe_text::shown_json(data).map_err(|cause| ReportError::Data {
             document: document.to_string(),
-            source,
+            cause,
         })?;
         self.files.push((path, bytes));
         Ok(())

@@ -85,9 +85,11 @@ pub fn run(
 ) -> Result<Outcome, SessionError> {
     let out = plan.out;
     check_output_dir(campaign, out)?;
-    if plan.history.is_some() {
-        // Before the evaluation: a history needs the run's date.
+    if let Some(history) = plan.history.as_deref() {
+        // Before the evaluation: a history needs the run's date and a file name the file
+        // system takes, in a folder of its own.
         crate::history::run_date(&campaign.info, &campaign.file.display().to_string())?;
+        output_dir::check_history_dir(out, history)?;
     }
     // One writer per folder, from before the manifest is read until the history is
     // appended: a second run on the folder stops here (or waits), not half-way.

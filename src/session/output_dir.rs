@@ -9,7 +9,7 @@ pub enum OutputDirError {
     #[error("the output folder {} is a file; choose a folder with --out", out.display())]
     IsAFile { out: PathBuf },
     #[error(
-        "the output folder {} is inside the data folder {} of {machine} {axis}; choose another --out",
+        "the output folder {} is inside the data folder {} of machine `{machine}` axis `{axis}`; choose another --out",
         out.display(),
         data.display()
     )]
@@ -19,6 +19,56 @@ pub enum OutputDirError {
         machine: String,
         axis: String,
     },
+    #[error(
+        "the history folder {} {how} the output folder {}: the outputs (summary.parquet among them) would be read as inspections and break the history; keep the history in a folder of its own (--history or campaign.history)",
+        history.display(),
+        out.display()
+    )]
+    HistoryOverlaps {
+        history: PathBuf,
+        out: PathBuf,
+        how: &'static str,
+    },
+}
+
+/// Refuses a history folder that is the output folder, lies inside it or holds it.
+pub fn check_history_dir(out: &Path, history: &Path) -> Result<(), OutputDirError> {
+    let (Some(out_abs), Some(history_abs)) = (resolved(out), resolved(history)) else {
+        return Ok(());
+    };
+    let how = match () {
+        _ if out_abs == history_abs => "is",
+        _ if history_abs.starts_with(&out_abs) => "is inside",
+        _ if out_abs.starts_with(&history_abs) => "holds",
+        _ => return Ok(()),
+    };
+    Err(OutputDirError::HistoryOverlaps {
+        history: history.into(),
+        out: out.into(),
+        how,
+    })
+}
+
+/// `path` made absolute through its real folders: its nearest existing ancestor's real
+/// path and the rest of it (the folders a run creates).
+fn resolved(path: &Path) -> Option<PathBuf> {
+    let mut rest = Vec::new();
+    let mut existing = path;
+    loop {
+        let probe = match existing.as_os_str().is_empty() {
+            true => Path::new("."),
+            false => existing,
+        };
+        if let Ok(real) = std::fs::canonicalize(probe) {
+            return Some(
+                rest.iter()
+                    .rev()
+                    .fold(real, |p: PathBuf, name| p.join(name)),
+            );
+        }
+        rest.push(existing.file_name()?);
+        existing = existing.parent()?;
+    }
 }
 
 /// Refuses an output folder that is a file, or is (or lies inside) a folder holding the
@@ -28,15 +78,10 @@ pub fn check_output_dir(campaign: &Campaign, out: &Path) -> Result<(), OutputDir
         return Err(OutputDirError::IsAFile { out: out.into() });
     }
     let canonical = |p: &Path| std::fs::canonicalize(p).ok();
-    let Some(out_abs) = canonical(out).or_else(|| {
-        let parent = (out.parent())
-            .filter(|p| !p.as_os_str().is_empty())
-            .unwrap_or(Path::new("."));
-        canonical(parent).map(|p| p.join(out.file_name().unwrap_or_default()))
-    }) else {
+    let Some(out_abs) = resolved(out) else {
         return Ok(());
     };
-    for (_, entry) in campaign.axes() {
+    for (machine, entry) in campaign.axes() {
         let Ok(axis) = &entry.spec else { continue };
         for folder in data_folders(campaign, &axis.data) {
             if let Some(data) = canonical(&folder)
@@ -45,7 +90,7 @@ pub fn check_output_dir(campaign: &Campaign, out: &Path) -> Result<(), OutputDir
                 return Err(OutputDirError::InsideData {
                     out: out.into(),
                     data: folder,
-                    machine: entry.name.to_string(),
+                    machine: machine.info.id.clone(),
                     axis: axis.raw.name.clone(),
                 });
             }

@@ -160,6 +160,11 @@ fn multi_turn(r: &mut Rng, mut model: ErrorModel) -> AxisDraw {
     (AxisKind::Rotary, model, plan, 360.0 * turns)
 }
 
+/// The largest fleet written: ten times the largest benchmark (10 000 axes). The fleet is
+/// built in memory before it is written (about 6 kB an axis); `--fleet 99999999999` grew
+/// past 5.5 GB before this bound.
+pub const MAX_AXES: usize = 100_000;
+
 /// Generates a fleet of `axes` axes from `seed`.
 pub fn generate(axes: usize, seed: u64) -> Fleet {
     const LINEAR: [&str; 5] = ["X", "Y", "Z", "U", "W"];

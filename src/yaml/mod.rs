@@ -3,11 +3,13 @@
 //! whose errors say in the user's words what was expected and found, and did-you-mean for
 //! unknown keys.
 
+mod depth;
 mod fields;
 mod index;
 mod pieces;
 mod words;
 
+pub use depth::MAX_DEPTH;
 pub use fields::field_names;
 pub use index::{LocationIndex, join};
 pub use words::{describe, keyword, names_of, not_a_name, optional_keyword, or_list};
@@ -201,6 +203,7 @@ pub fn deserialize_spelled<T: serde::de::DeserializeOwned>(
 /// error names its line and column, with a hint when a line is indented with a tab (YAML
 /// allows only spaces).
 pub fn parse(text: &str, file: &str) -> Result<(Value, LocationIndex), YamlError> {
+    depth::check(text).map_err(|e| e.in_file(file))?;
     // The locations are indexed only when an error needs them.
     let (value, index) = (
         serde_norway::from_str::<Value>(text),
@@ -223,6 +226,7 @@ pub fn parse_long_list(
     file: &str,
     key: &str,
 ) -> Result<(Value, LocationIndex), YamlError> {
+    depth::check(text).map_err(|e| e.in_file(file))?;
     match pieces::parse_list_in_pieces(text, key, PIECES_PER_THREAD * rayon::current_num_threads())
     {
         Some(value) => Ok((value, LocationIndex::new(text))),

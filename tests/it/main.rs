@@ -43,6 +43,7 @@ mod rules;
 mod simulator;
 mod standards;
 mod summary_html;
+mod surface;
 mod trend;
 mod uncertainty;
 mod verdicts;

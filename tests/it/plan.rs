@@ -376,7 +376,7 @@ fn a_campaign_axis_is_planned_with_its_conditions() {
     ]);
     assert_eq!(code, 2);
     assert!(
-        err.contains("axis ESS-BIFROST slit 1 gives no travel: a plan needs it"),
+        err.contains("axis `slit 1` of machine `ESS-BIFROST` gives no travel: a plan needs it; add `travel:` to the axis"),
         "{err}"
     );
     let (code, _, err) = axcheck(&[

@@ -225,6 +225,7 @@ fn loaded_rows(text: &str) -> Result<(Vec<[f64; 3]>, Vec<usize>), Unreadable> {
             None => break None,
             Some((line, l)) => match three_numbers(l) {
                 Some(r) => {
+                    within_bounds(&r, line, l)?;
                     rows.push(r);
                     at.push(line);
                 }
@@ -258,20 +259,38 @@ fn loaded_rows(text: &str) -> Result<(Vec<[f64; 3]>, Vec<usize>), Unreadable> {
 
 /// Three numbers at the start of `line`, as `sscanf("%lf %lf %lf")` reads them (each
 /// after optional white space; what follows the third is ignored); `None` when it would
-/// not read three, or one is not a number of at most 1e12 (`nan`, `inf`).
+/// not read three.
 fn three_numbers(line: &str) -> Option<[f64; 3]> {
     let mut rest = line;
     let mut out = [0.0; 3];
     for v in out.iter_mut() {
         let t = rest.trim_start();
         let n = reading::float_prefix(t);
-        *v = t[..n]
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.abs() <= reading::LARGEST)?;
+        *v = t[..n].parse::<f64>().ok()?;
         rest = &t[n..];
     }
     Some(out)
+}
+
+/// A row LinuxCNC loads whose numbers are all within [`reading::LARGEST`]: one beyond it
+/// (`1e300 0 0`, which overflows to infinity in µm) is refused at its line, not dropped.
+fn within_bounds(row: &[f64; 3], line: usize, text: &str) -> Result<(), Unreadable> {
+    let fields = ["nominal", "forward", "reverse"];
+    let Some(k) = (row.iter()).position(|v| !v.is_finite() || v.abs() > reading::LARGEST) else {
+        return Ok(());
+    };
+    let shown = match row[k].abs() < 1e15 {
+        true => row[k].to_string(),
+        false => format!("{:e}", row[k]),
+    };
+    Err(Unreadable::field(
+        line,
+        fields[k],
+        format!(
+            "expected a number of at most 1e12, got {shown} in `{}`; LinuxCNC would load it: correct the line or remove it",
+            text.trim()
+        ),
+    ))
 }
 
 /// The type of a comp file (`COMP_FILE_TYPE`).
@@ -400,6 +419,29 @@ mod tests {
                 .read(&first, reading(AxisKind::Linear))
                 .is_err()
         );
+    }
+
+    /// A last point beyond 1e12 is refused at its line, not dropped (it left a one-point
+    /// table).
+    #[test]
+    fn a_value_over_the_bound_is_refused_not_dropped() {
+        let text = "0 0.001 0.002\n1e300 0 0\n";
+        let e = LinuxCnc::TYPE_1
+            .read(text, reading(AxisKind::Linear))
+            .unwrap_err();
+        assert_eq!((e.line, e.field.as_deref()), (Some(2), Some("nominal")));
+        assert!(
+            e.message
+                .starts_with("expected a number of at most 1e12, got 1e300"),
+            "{e}"
+        );
+        let e = LinuxCnc::TYPE_1
+            .read(
+                "0 0.001 0.002\n5 0 -2e13\n7 0 0\n",
+                reading(AxisKind::Linear),
+            )
+            .unwrap_err();
+        assert_eq!((e.line, e.field.as_deref()), (Some(2), Some("reverse")));
     }
 
     #[test]
