@@ -258,6 +258,11 @@ impl CampaignResult {
     /// `summary.md` and the summary PDF: tests judged by example limits (`example:
     /// true`), clause 7.1 conditions not stated, uncertainties too large for their verdict.
     pub fn caveats(&self) -> Vec<String> {
+        self.caveats_labelled(AxisTest::label)
+    }
+
+    /// [`Self::caveats`] with each test named by `label` (a report shortens long names).
+    pub fn caveats_labelled(&self, label: impl Fn(&AxisTest) -> String) -> Vec<String> {
         let mut lines = Vec::new();
         let example: Vec<&AxisTest> = (self.tests.iter())
             .filter(|t| t.judgement().is_some_and(|j| j.limits.example))
@@ -276,7 +281,7 @@ impl CampaignResult {
                 specs.join(", ")
             ));
         }
-        lines.extend(self.large_uncertainty_lines());
+        lines.extend(self.large_uncertainty_lines(&label));
         let unstated: Vec<usize> = (self.tests.iter())
             .filter_map(|t| t.evaluated().map(|e| e.unstated.len()))
             .filter(|n| *n > 0)
@@ -294,7 +299,7 @@ impl CampaignResult {
 
     /// The tests whose U is large against a limit or a value: a line saying how many,
     /// then one per test (at most [`CAVEAT_TESTS`]).
-    fn large_uncertainty_lines(&self) -> Vec<String> {
+    fn large_uncertainty_lines(&self, label: &impl Fn(&AxisTest) -> String) -> Vec<String> {
         let flagged: Vec<(&AxisTest, Vec<crate::judge::LargeUncertainty>)> = (self.tests.iter())
             .map(|t| (t, t.large_uncertainty()))
             .filter(|(_, l)| !l.is_empty())
@@ -318,7 +323,7 @@ impl CampaignResult {
                 1 => " (and 1 more parameter)".to_string(),
                 n => format!(" (and {n} more parameters)"),
             };
-            let (label, verdict) = (t.label(), t.verdict().words());
+            let (label, verdict) = (label(t), t.verdict().words());
             lines.push(format!(
                 "  {label} ({verdict}): {}{more}",
                 worst.text(2, unit)

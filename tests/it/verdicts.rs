@@ -314,7 +314,7 @@ fn a_large_uncertainty_is_flagged_beside_the_verdict() {
     );
     let md = read(&out.join("summary.md"));
     assert!(
-        md.contains("| **pass** (U large: A, A_up, A_down, E, M) |"),
+        md.contains(r"| **pass** (U large: A, A\_up, A\_down, E, M) |"),
         "{md}"
     );
     let results = json(&out.join("results.json"));

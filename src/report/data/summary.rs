@@ -103,7 +103,7 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
                 .then(|| counts[&Verdict::Inconclusive]),
             not_judged: Some(counts[&Verdict::NotJudged]).filter(|n| *n > 0),
         },
-        caveats: result.caveats(),
+        caveats: result.caveats_labelled(short_label),
         rows: tests.into_iter().map(row).collect(),
         errors: with(Verdict::Error, |t| {
             t.error().unwrap_or_default().to_string()
