@@ -293,6 +293,19 @@ fn first_page_text(pdf: &Path) -> String {
         .collect()
 }
 
+/// Every page's text as pdftotext reads it, words joined by single spaces.
+fn words_of(pdf: &Path) -> String {
+    let out = std::process::Command::new("pdftotext")
+        .arg(pdf)
+        .arg("-")
+        .output()
+        .unwrap();
+    String::from_utf8_lossy(&out.stdout)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
 #[test]
 fn long_names_are_shortened_and_printed_whole_once() {
     let out = run("tests/data/names/campaign.yaml", "long-names");
@@ -414,17 +427,7 @@ fn reports_speak_in_micrometres_and_words() {
         }
     }
     let mill = first_page_text(&out.join("reports/MILL-3/Y.pdf"));
-    let all = String::from_utf8_lossy(
-        &std::process::Command::new("pdftotext")
-            .arg(out.join("reports/MILL-3/Y.pdf"))
-            .arg("-")
-            .output()
-            .unwrap()
-            .stdout,
-    )
-    .split_whitespace()
-    .collect::<Vec<_>>()
-    .join(" ");
+    let all = words_of(&out.join("reports/MILL-3/Y.pdf"));
     assert!(
         all.contains("found it made worse (sign inverted)"),
         "{mill:.300}"
@@ -435,17 +438,7 @@ fn reports_speak_in_micrometres_and_words() {
 #[test]
 fn the_decision_chart_rounds_as_the_results_table() {
     let out = run("example-campaign/campaign.yaml", "decision");
-    let text = String::from_utf8_lossy(
-        &std::process::Command::new("pdftotext")
-            .arg(out.join("reports/ROTARY-T/A.pdf"))
-            .arg("-")
-            .output()
-            .unwrap()
-            .stdout,
-    )
-    .split_whitespace()
-    .collect::<Vec<_>>()
-    .join(" ");
+    let text = words_of(&out.join("reports/ROTARY-T/A.pdf"));
     // The table: A = 8.35 ± 2.33 against 10.00; the chart's row of A prints the same
     // digits and the zone from them, 10.00 ∓ 2.33 (it printed "A 8.3 7.7 … 12.3").
     assert!(text.contains("8.35 ±2.33"), "{text:.3000}");
