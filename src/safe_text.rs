@@ -31,6 +31,22 @@ pub fn visible(text: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
+/// [`visible`] for a text that is one line by nature (a name, a title): line feeds and
+/// tabs are shown as escapes too, so a name cannot break a console line or a column.
+pub fn one_line(text: &str) -> Cow<'_, str> {
+    if !text.chars().any(|c| is_hidden(c) || c == '\n' || c == '\t') {
+        return Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 16);
+    for c in text.chars() {
+        match c {
+            '\n' | '\t' => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => push_visible(&mut out, c),
+        }
+    }
+    Cow::Owned(out)
+}
+
 fn push_visible(out: &mut String, c: char) {
     if is_hidden(c) {
         out.push_str(&format!("\\u{:04x}", c as u32));
@@ -154,6 +170,18 @@ impl serde_json::ser::Formatter for Shown {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn one_line_shows_line_breaks_and_tabs_too() {
+        assert_eq!(
+            super::one_line("VMC\n07\tX\u{1b}"),
+            "VMC\\u000a07\\u0009X\\u001b"
+        );
+        assert!(matches!(
+            super::one_line("长轴"),
+            super::Cow::Borrowed("长轴")
+        ));
+    }
 
     #[test]
     fn hidden_characters_are_shown_as_escapes() {

@@ -10,6 +10,7 @@ use crate::judge::{DecisionRule, Judgement, Verdict};
 use crate::measurement::{AxisData, Recognised};
 use crate::nde::NdeCorrection;
 use crate::rules::{Finding, Severity};
+use crate::safe_text::one_line;
 use crate::uncertainty::Uncertainty;
 use crate::units::AxisKind;
 use std::collections::BTreeMap;
@@ -160,15 +161,14 @@ impl AxisTest {
         self.evaluated().map_or(&[], |e| &e.findings)
     }
 
-    /// `VMC-07 X` or `VMC-07 X (2/3)`.
+    /// `VMC-07 X` or `VMC-07 X (2/3)`, on one line whatever the names hold: hidden
+    /// characters, line breaks and tabs as escapes ([`crate::safe_text::one_line`]).
     pub fn label(&self) -> String {
+        let (id, axis) = (one_line(&self.machine.id), one_line(&self.axis));
         if self.tests > 1 {
-            format!(
-                "{} {} ({}/{})",
-                self.machine.id, self.axis, self.test, self.tests
-            )
+            format!("{id} {axis} ({}/{})", self.test, self.tests)
         } else {
-            format!("{} {}", self.machine.id, self.axis)
+            format!("{id} {axis}")
         }
     }
 

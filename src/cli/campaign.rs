@@ -141,7 +141,7 @@ pub fn problems(result: &CampaignResult, where_all: &str) -> Vec<String> {
     let shown = &attention[..attention.len().min(MAX_PROBLEM_LINES)];
     let width = shown
         .iter()
-        .map(|t| axcheck::safe_text::visible(&t.label()).chars().count())
+        .map(|t| super::text::width(&t.label()))
         .max()
         .unwrap_or(0);
     let mut lines: Vec<String> = shown.iter().map(|t| problem_line(t, width)).collect();
@@ -223,10 +223,10 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
         false => why,
     };
     format!(
-        "  {:<12} {:<width$}  {why}",
+        "  {:<12} {}  {why}",
         t.verdict().words().to_uppercase(),
-        // Shown as printed (hidden characters as escapes), so the columns line up.
-        axcheck::safe_text::visible(&t.label())
+        // The label shows hidden characters as escapes already: padded by terminal columns.
+        super::text::left(&t.label(), width)
     )
 }
 
@@ -246,7 +246,7 @@ fn not_judged_why(t: &AxisTest) -> String {
 pub fn counts_line(result: &CampaignResult) -> String {
     format!(
         "{}: {} tests: {}",
-        result.info.name,
+        axcheck::safe_text::one_line(&result.info.name),
         result.tests.len(),
         result.counts_text()
     )

@@ -1,10 +1,9 @@
 //! Plain-text table helpers for the terminal.
 
-/// Width of `s` on a terminal: combining marks (as in X̄, B̄) take no column.
+/// Width of `s` on a terminal (Unicode's East Asian Width, UAX #11): combining marks (as in
+/// X̄, B̄) take no column, CJK characters two.
 pub fn width(s: &str) -> usize {
-    s.chars()
-        .filter(|c| !matches!(*c as u32, 0x0300..=0x036F))
-        .count()
+    unicode_width::UnicodeWidthStr::width(s)
 }
 
 /// `s` padded on the left to `w` columns.
@@ -26,5 +25,12 @@ mod tests {
     fn combining_marks_take_no_width() {
         assert_eq!(super::width("X̄i↑"), 3);
         assert_eq!(super::right("B̄", 3), "  B̄");
+    }
+
+    /// Issue 42: a CJK name takes two columns a character, so the columns after it line up.
+    #[test]
+    fn wide_characters_take_two_columns() {
+        assert_eq!(super::width("长轴 X"), 6);
+        assert_eq!(super::left("长轴", 6), "长轴  ");
     }
 }

@@ -3,6 +3,7 @@
 
 use anyhow::{Context, Result, anyhow};
 use axcheck::history;
+use axcheck::safe_text::one_line;
 use axcheck::trend::{self, Series, Trend};
 use rayon::prelude::*;
 use std::fmt::Write;
@@ -104,7 +105,8 @@ fn summary(dates: &[chrono::NaiveDate], pairs: &[(&Series, &Trend)], r: &Args) -
     );
     for (s, t) in flagged.iter().take(SHOWN) {
         let reason = t.reason.as_deref().unwrap_or("");
-        let _ = writeln!(text, "  {} {} {}: {reason}", s.machine, s.axis, s.parameter);
+        let (machine, axis) = (one_line(&s.machine), one_line(&s.axis));
+        let _ = writeln!(text, "  {machine} {axis} {}: {reason}", s.parameter);
     }
     if flagged.len() > SHOWN {
         let _ = writeln!(text, "  … and {} more", flagged.len() - SHOWN);

@@ -23,6 +23,7 @@ impl Exporter for Csv {
                 .map(|c| match c {
                     Cell::Text(s) => crate::safe_text::csv_text(s),
                     Cell::Int(i) => i.to_string(),
+                    Cell::Bool(b) => b.to_string(),
                     Cell::Number(x) if x.is_finite() => x.to_string(),
                     Cell::Number(_) | Cell::Empty => String::new(),
                 })

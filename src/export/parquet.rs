@@ -1,5 +1,5 @@
 //! `summary.parquet`: the summary table through polars, typed columns (text, integer,
-//! float; empty cells are nulls).
+//! float, boolean; empty cells are nulls).
 
 use super::table::{Cell, ColumnKind, columns, rows};
 use super::{ExportError, Exporter, OutputFile};
@@ -26,33 +26,22 @@ impl Exporter for Parquet {
             .map(|(k, (name, kind))| {
                 let cells = rows.iter().map(|r| &r[k]);
                 match kind {
-                    ColumnKind::Text => Column::new(
-                        name.into(),
-                        cells
-                            .map(|c| match c {
-                                Cell::Text(s) => Some(s.clone()),
-                                _ => None,
-                            })
-                            .collect::<Vec<Option<String>>>(),
-                    ),
-                    ColumnKind::Int => Column::new(
-                        name.into(),
-                        cells
-                            .map(|c| match c {
-                                Cell::Int(i) => Some(*i),
-                                _ => None,
-                            })
-                            .collect::<Vec<Option<i64>>>(),
-                    ),
-                    ColumnKind::Number => Column::new(
-                        name.into(),
-                        cells
-                            .map(|c| match c {
-                                Cell::Number(x) if x.is_finite() => Some(*x),
-                                _ => None,
-                            })
-                            .collect::<Vec<Option<f64>>>(),
-                    ),
+                    ColumnKind::Text => typed(&name, cells, |c| match c {
+                        Cell::Text(s) => Some(s.clone()),
+                        _ => None,
+                    }),
+                    ColumnKind::Int => typed(&name, cells, |c| match c {
+                        Cell::Int(i) => Some(*i),
+                        _ => None,
+                    }),
+                    ColumnKind::Number => typed(&name, cells, |c| match c {
+                        Cell::Number(x) if x.is_finite() => Some(*x),
+                        _ => None,
+                    }),
+                    ColumnKind::Bool => typed(&name, cells, |c| match c {
+                        Cell::Bool(b) => Some(*b),
+                        _ => None,
+                    }),
                 }
             })
             .collect();
@@ -66,4 +55,16 @@ impl Exporter for Parquet {
             bytes,
         }])
     }
+}
+
+/// A column of the cells `pick` types (`None` for an empty or other cell).
+fn typed<'a, T>(
+    name: &str,
+    cells: impl Iterator<Item = &'a Cell>,
+    pick: impl Fn(&Cell) -> Option<T>,
+) -> Column
+where
+    Series: NamedFrom<Vec<Option<T>>, [Option<T>]>,
+{
+    Column::new(name.into(), cells.map(pick).collect::<Vec<Option<T>>>())
 }

@@ -10,6 +10,7 @@ pub enum Cell {
     Text(String),
     Int(i64),
     Number(f64),
+    Bool(bool),
     Empty,
 }
 
@@ -33,6 +34,7 @@ pub enum ColumnKind {
     Text,
     Int,
     Number,
+    Bool,
 }
 
 /// The column names and kinds, in order.
@@ -69,6 +71,8 @@ pub fn columns() -> Vec<(String, ColumnKind)> {
             ("rules", Text),
             ("diagnosis", Text),
             ("error", Text),
+            // Added in issue 42: the verdict rests on a spec marked `example: true`.
+            ("example_limits", Bool),
         ]
         .iter()
         .map(|(n, k)| (n.to_string(), *k)),
@@ -127,5 +131,11 @@ fn row(t: &AxisTest) -> Vec<Cell> {
         None => Cell::Empty,
     });
     cells.push(Cell::opt_text(t.error()));
+    // Empty where no limit applied: there is no verdict to qualify.
+    cells.push(
+        ev.and_then(|e| e.judgement.as_ref())
+            .filter(|j| !j.limits.is_empty())
+            .map_or(Cell::Empty, |j| Cell::Bool(j.limits.example)),
+    );
     cells
 }

@@ -161,6 +161,9 @@ fn tests_sheet(
                 Cell::Text(s) => write_text(sheet, r, col16, s)?,
                 Cell::Int(n) => write_number(sheet, r, col16, *n as f64)?,
                 Cell::Number(x) => write_number(sheet, r, col16, *x)?,
+                Cell::Bool(b) => {
+                    sheet.write_boolean(r, col16, *b)?;
+                }
                 Cell::Empty => {}
             }
         }

@@ -91,6 +91,26 @@ pub struct Limits {
     pub example: bool,
 }
 
+/// Where the spec lacks a band for the test and what to do: `specs/house.yaml:3: spec
+/// `house` has no linear band for a measurement travel of 1200 mm (its last ends at 1000
+/// mm): add one …`.
+fn no_band(spec: &Spec, kind: AxisKind, travel: f64) -> String {
+    let unit = kind.position_unit();
+    let bands = match kind {
+        AxisKind::Linear => &spec.linear,
+        AxisKind::Rotary => &spec.rotary,
+    };
+    let last = match bands.last().and_then(|b| b.up_to) {
+        Some(u) => format!(" (its last ends at {u} {unit})"),
+        None => format!(" (it has no `{kind}` bands)"),
+    };
+    format!(
+        "{}: spec `{}` has no {kind} band for a measurement travel of {travel} {unit}{last}: add a `{kind}` band with `up_to` of at least {travel} (or none) to the spec, or give the axis its own `tolerances`",
+        spec.origin.at(kind),
+        spec.name
+    )
+}
+
 impl Limits {
     /// Limits from a spec band (if any) overridden by the axis's own tolerances.
     pub fn new(
@@ -101,13 +121,9 @@ impl Limits {
     ) -> Result<Limits, String> {
         let mut limits = Limits::default();
         if let Some(spec) = spec {
-            let band = spec.band(kind, travel).ok_or_else(|| {
-                format!(
-                    "spec `{}` has no {kind} band for a measurement travel of {travel} {}",
-                    spec.name,
-                    kind.position_unit()
-                )
-            })?;
+            let band = spec
+                .band(kind, travel)
+                .ok_or_else(|| no_band(spec, kind, travel))?;
             let range = match band.up_to {
                 Some(u) => format!("≤ {u} {}", kind.position_unit()),
                 None => "all travels".to_string(),

@@ -61,6 +61,33 @@ pub struct Spec {
     pub linear: Vec<Band>,
     #[serde(default)]
     pub rotary: Vec<Band>,
+    /// Where the spec was read (`specs/general.yaml`, `built-in spec general`) and the
+    /// lines of its `linear` and `rotary` keys: a test no band covers is told where to
+    /// add one.
+    #[serde(skip)]
+    pub origin: SpecOrigin,
+}
+
+/// Where a spec and its band lists are written.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SpecOrigin {
+    pub file: String,
+    pub linear_line: Option<usize>,
+    pub rotary_line: Option<usize>,
+}
+
+impl SpecOrigin {
+    /// `specs/house.yaml:4` (the `linear:`/`rotary:` line), or the file alone.
+    pub fn at(&self, kind: AxisKind) -> String {
+        let line = match kind {
+            AxisKind::Linear => self.linear_line,
+            AxisKind::Rotary => self.rotary_line,
+        };
+        match line {
+            Some(line) => format!("{}:{line}", self.file),
+            None => self.file.clone(),
+        }
+    }
 }
 
 impl Spec {
@@ -71,6 +98,11 @@ impl Spec {
         for (group, bands) in [("linear", &mut spec.linear), ("rotary", &mut spec.rotary)] {
             check_bands(group, bands, &index).map_err(|e| e.in_file(file))?;
         }
+        spec.origin = SpecOrigin {
+            file: file.to_string(),
+            linear_line: index.key("linear").map(|(line, _)| line),
+            rotary_line: index.key("rotary").map(|(line, _)| line),
+        };
         Ok(spec)
     }
 

@@ -178,6 +178,14 @@ pub enum ReadErrorKind {
         limit: String,
         unit: String,
     },
+    #[error(
+        "target {value} {unit} is not a plausible position (more than {limit} {unit} from zero); check the target column and its unit"
+    )]
+    ImplausibleTarget {
+        value: String,
+        limit: String,
+        unit: String,
+    },
     #[error("column `run`: expected a run number 1, 2, 3 …, found `{found}`")]
     InvalidRun { found: String },
     #[error(

@@ -41,6 +41,10 @@ pub const MAX_READINGS: usize = 100_000;
 /// Largest plausible |deviation| in µm or arcsec (100 mm, or 27.8°): anything larger is a
 /// unit mistake or a corrupt value, not a positioning error.
 pub const MAX_DEVIATION: f64 = 1e5;
+/// Largest plausible |target position| in mm or degrees (1 km, or 2 778 turns), the bound
+/// a plan's targets have too: a target of `1e300` is a corrupt value, and its squares and
+/// differences overflow every statistic.
+pub const MAX_TARGET: f64 = 1e6;
 /// Most `temp_<name>_c` columns a CSV file may have: with [`MAX_READINGS`] this bounds
 /// the temperatures kept (64 × 100 000 × 8 bytes = 51 MB) whatever the file holds.
 pub const MAX_TEMPERATURES: usize = 64;
@@ -98,6 +102,28 @@ pub struct AxisData {
     grid: [Vec<f64>; 2],
 }
 
+/// A target beyond [`MAX_TARGET`] refused at its line, for every reader (they all build
+/// their data here).
+fn check_target(r: &RawReading, kind: AxisKind, place: &Place) -> Result<(), ReadError> {
+    if r.target.abs() <= MAX_TARGET {
+        return Ok(());
+    }
+    let location = match r.line {
+        0 => place.whole(),
+        line => place.line(line),
+    };
+    let kind = ReadErrorKind::ImplausibleTarget {
+        // `1e300`, not 301 digits.
+        value: match r.target.abs() < 1e15 {
+            true => format!("{}", r.target),
+            false => format!("{:e}", r.target),
+        },
+        limit: format!("{MAX_TARGET}"),
+        unit: kind.position_unit().to_string(),
+    };
+    Err(ReadError::new(location, kind))
+}
+
 impl AxisData {
     /// Validates raw readings (duplicates, one-direction targets, ragged runs) and builds
     /// the dense grid. `file` names the source in errors.
@@ -125,6 +151,7 @@ impl AxisData {
         // direction): the targets are ordered and found by their bits.
         for r in &mut raw {
             r.target += 0.0;
+            check_target(r, kind, place)?;
         }
         let targets = distinct_sorted(raw.iter().map(|r| r.target), f64::total_cmp);
         let run_labels = distinct_sorted(raw.iter().map(|r| r.run), u32::cmp);

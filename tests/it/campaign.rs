@@ -241,6 +241,7 @@ fn outputs_agree_and_are_deterministic() {
     let machine = df.column("machine").unwrap().str().unwrap();
     let a_col = df.column("A").unwrap().f64().unwrap();
     let n_col = df.column("n").unwrap().i64().unwrap();
+    let example = df.column("example_limits").unwrap().bool().unwrap();
     for (k, axis) in axes.iter().enumerate() {
         assert_eq!(machine.get(k), axis["machine"].as_str());
         assert_eq!(
@@ -248,7 +249,13 @@ fn outputs_agree_and_are_deterministic() {
             axis["parameters"].get("A").and_then(|v| v.as_f64())
         );
         assert_eq!(n_col.get(k), axis["n"].as_i64());
+        // Issue 42: `example_limits` where a limit applied, as results.json says it.
+        let judged = axis["checks"].as_array().is_some_and(|c| !c.is_empty());
+        let want = judged.then(|| axis["example_limits"].as_bool().unwrap_or(false));
+        assert_eq!(example.get(k), want, "{}", axis["machine"]);
     }
+    let examples = (0..axes.len()).filter(|&k| example.get(k) == Some(true));
+    assert!(examples.count() > 0, "gost-example is an example spec");
     std::fs::remove_dir_all(&a).unwrap();
     std::fs::remove_dir_all(&b).unwrap();
 }

@@ -110,7 +110,10 @@ fn no_summary_cell_is_a_formula() {
     let (dir, _) = hostile_run("inject-csv", &["--no-pdf", "--history", s(&history)]);
     let out = dir.join("out");
     let numeric: Vec<String> = (axcheck::export::table::columns().into_iter())
-        .filter(|(_, kind)| *kind != axcheck::export::table::ColumnKind::Text)
+        .filter(|(_, kind)| {
+            use axcheck::export::table::ColumnKind::{Int, Number};
+            matches!(kind, Int | Number)
+        })
         .map(|(name, _)| name)
         .collect();
     let counts = python(
@@ -263,4 +266,37 @@ print("\n".join(c.get("name") for c in ET.parse(sys.argv[1]).iter("testcase")))
         "the report shows U+202E as an escape"
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Issue 42: a line break or tab in a name is shown as an escape on the console (one line
+/// per test, the campaign's count on one line), and a CJK name takes two columns a
+/// character, so the reasons after the names start in one column.
+#[test]
+fn names_stay_on_one_line_and_in_their_columns() {
+    let dir = scratch("inject-lines");
+    copy_data(&dir, "iso230-2_table2.csv");
+    let campaign = dir.join("campaign.yaml");
+    let text = r#"campaign: {name: "Two\nlines", date: 2026-11-20}
+machines:
+  - id: "VMC\n07"
+    axes:
+      - {name: "X\tQ", kind: linear, data: data/iso230-2_table2.csv, tolerances: {A: 0.1}}
+      - {name: "长轴", kind: linear, data: data/iso230-2_table2.csv, tolerances: {A: 0.1}}
+"#;
+    std::fs::write(&campaign, text).unwrap();
+    let (code, stdout, stderr) = axcheck(&["check", s(&campaign)]);
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    assert!(stdout.starts_with("Two\\u000alines: 2 tests:"), "{stdout}");
+    let lines: Vec<&str> = (stdout.lines())
+        .filter(|l| l.starts_with("  FAIL"))
+        .collect();
+    assert_eq!(lines.len(), 2, "{stdout}");
+    assert!(lines[0].contains("VMC\\u000a07 X\\u0009Q"), "{stdout}");
+    assert!(lines[1].contains("VMC\\u000a07 长轴"), "{stdout}");
+    let column = |l: &str| {
+        let at = l.find("A =").unwrap();
+        unicode_width::UnicodeWidthStr::width(&l[..at])
+    };
+    assert_eq!(column(lines[0]), column(lines[1]), "{stdout}");
+    std::fs::remove_dir_all(dir).unwrap();
 }

@@ -343,3 +343,52 @@ fn a_misspelt_spec_gets_its_line_and_a_suggestion() {
         "{all}"
     );
 }
+
+/// Issue 42, item 8: a target beyond 1e6 mm (or °) is refused at its line by every reader
+/// (they all build their data in one place), not evaluated into overflowing statistics.
+#[test]
+fn targets_beyond_the_bound_are_refused_at_their_line() {
+    let dir = scratch("huge-target");
+    let table2 = std::fs::read_to_string(crate::common::data_path("iso230-2_table2.csv")).unwrap();
+    let long = dir.join("long.csv");
+    std::fs::write(&long, table2.replacen("6.711,up,1", "1e300,up,1", 1)).unwrap();
+    let (code, stdout, stderr) = axcheck(&["eval", s(&long)]);
+    assert_eq!(code, 2, "{stdout}{stderr}");
+    assert!(
+        stderr.contains("long.csv:2: target 1e300 mm is not a plausible position (more than 1000000 mm from zero)"),
+        "{stderr}"
+    );
+    let wide = dir.join("wide.csv");
+    let text = "target_mm;up_1_um;down_1_um\n0;1;2\n500;1;2\n2000000;1;2\n";
+    std::fs::write(&wide, text).unwrap();
+    let (code, _, stderr) = axcheck(&["eval", s(&wide)]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("wide.csv:4: target 2000000 mm is not a plausible position"),
+        "{stderr}"
+    );
+}
+
+/// Issue 42, item 9: a spec without a band for the test's travel names its file and the
+/// line of its band list, and says what to add.
+#[test]
+fn a_spec_without_a_band_names_its_file_and_line() {
+    let dir = scratch("spec-band");
+    copy_data(&dir, "iso230-2_table2.csv");
+    std::fs::create_dir_all(dir.join("specs")).unwrap();
+    let spec = "name: house\nlinear:\n  - {up_to: 500, tolerances: {A: 10}}\n";
+    std::fs::write(dir.join("specs/house.yaml"), spec).unwrap();
+    let axis = format!("{{name: X, kind: linear, spec: house, {TABLE2}}}");
+    let path = campaign(&dir, "name: C", &[&axis]);
+    let (code, stdout, stderr) = axcheck(&["check", s(&path)]);
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    let all = stdout + &stderr;
+    let house = dir.join("specs").join("house.yaml");
+    assert!(
+        all.contains(&format!(
+            "{}:2: spec `house` has no linear band for a measurement travel of 1744.209 mm (its last ends at 500 mm): add a `linear` band",
+            house.display()
+        )),
+        "{all}"
+    );
+}

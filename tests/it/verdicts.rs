@@ -161,6 +161,9 @@ fn example_limits_say_they_are_examples() {
     assert_eq!(code, 1, "{stdout}{stderr}");
     let results = json(&out.join("results.json"));
     assert_eq!(results["axes"][0]["example_limits"], true);
+    let csv = crate::campaign::read_csv(&read(&out.join("summary.csv")));
+    let column = csv[0].iter().position(|h| h == "example_limits").unwrap();
+    assert_eq!(csv[1][column], "true", "summary.csv");
     let md = read(&out.join("summary.md"));
     assert!(
         md.contains(&format!("precision (linear ≤ 1000 mm) — {LABEL}")),

@@ -50,6 +50,7 @@ fn cell_text(d: &Data) -> String {
         Data::String(s) => s.clone(),
         Data::Float(x) => x.to_string(),
         Data::Int(x) => x.to_string(),
+        Data::Bool(b) => b.to_string(),
         other => panic!("unexpected cell {other:?}"),
     }
 }
@@ -186,7 +187,9 @@ for k, name in enumerate(table[0]):
     col = column(name)
     for r in range(1, len(table)):
         want, got = table[r][k], rows[r][col]
-        if isinstance(got, float) or (isinstance(got, int) and not isinstance(got, bool)):
+        if isinstance(got, bool):
+            assert want == str(got).lower(), (r, name, want, got)
+        elif isinstance(got, float) or isinstance(got, int):
             assert float(want) == float(got), (r, name, want, got)
         else:
             assert (got or "") == want, (r, name, want, got)
@@ -202,5 +205,5 @@ print(checked)
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert!(run.status.success(), "{stderr}");
     let checked: usize = String::from_utf8_lossy(&run.stdout).trim().parse().unwrap();
-    assert_eq!(checked, 33 * 21, "every cell of the CSV");
+    assert_eq!(checked, 34 * 21, "every cell of the CSV");
 }
