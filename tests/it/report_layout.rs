@@ -6,10 +6,11 @@
 //!
 //! A word's box from pdftotext spans its font's ascender to its descender, more than the
 //! ink: lines set closer than that (the per-target table, a number over its label in the
-//! summary's boxes) touch without any glyph touching. The check uses the box from the cap
-//! height to half the descender (Inter: ascender 0.969 em, cap height 0.727 em, descender
-//! 0.242 em), where two words of different lines cannot meet without their letters
-//! meeting.
+//! summary's boxes) touch without any glyph touching. The check uses the body of the
+//! letters, from the cap height to half the descender (Inter: ascender 0.969 em, cap height
+//! 0.727 em, descender 0.242 em), where two words of different lines cannot meet without
+//! their letters meeting; words in the fallback faces (Hebrew, Arabic, CJK) are measured
+//! by their face's metrics ([`Face`]).
 
 use crate::common::axcheck;
 use std::path::{Path, PathBuf};
@@ -24,11 +25,83 @@ struct Word {
     text: String,
 }
 
+/// A face's vertical metrics, in em: pdftotext's box of a word spans `ascender` above the
+/// baseline to `descender` below it; the letters' body `top` above it to `bottom` below.
+struct Face {
+    ascender: f64,
+    descender: f64,
+    top: f64,
+    bottom: f64,
+}
+
+/// Inter: cap height to half the descender.
+const INTER: Face = Face {
+    ascender: 0.969,
+    descender: 0.242,
+    top: 0.727,
+    bottom: 0.121,
+};
+/// Noto Sans Arabic (templates/fonts): alef's height, half the deepest letter (ي, 0.42 em).
+const ARABIC: Face = Face {
+    ascender: 1.374,
+    descender: 0.738,
+    top: 0.714,
+    bottom: 0.21,
+};
+/// Noto Sans Hebrew: the letters' height, half the descender of ק ך ן (0.19 em).
+const HEBREW: Face = Face {
+    ascender: 1.068,
+    descender: 0.292,
+    top: 0.603,
+    bottom: 0.096,
+};
+/// Droid Sans Fallback: an ideograph's whole ink (0.10 em below the baseline to 0.82).
+const CJK: Face = Face {
+    ascender: 0.766,
+    descender: 0.238,
+    top: 0.82,
+    bottom: 0.10,
+};
+
 impl Word {
-    /// The box of the letters' main body: cap height to half the descender.
+    /// The face the word is set in, by its letters: the embedded fallbacks set what Inter
+    /// lacks.
+    fn face(&self) -> &'static Face {
+        let any = |range: &[(u32, u32)]| {
+            (self.text.chars()).any(|c| range.iter().any(|(a, b)| (*a..=*b).contains(&(c as u32))))
+        };
+        if any(&[
+            (0x600, 0x6FF),
+            (0x750, 0x77F),
+            (0x8A0, 0x8FF),
+            (0xFB50, 0xFDFF),
+            (0xFE70, 0xFEFF),
+        ]) {
+            &ARABIC
+        } else if any(&[(0x590, 0x5FF), (0xFB1D, 0xFB4F)]) {
+            &HEBREW
+        } else if any(&[(0x2E80, 0x9FFF), (0xF900, 0xFAFF), (0xFF00, 0xFFEF)]) {
+            &CJK
+        } else {
+            &INTER
+        }
+    }
+
+    /// The font size (points).
+    fn size(&self) -> f64 {
+        let face = self.face();
+        (self.y1 - self.y0) / (face.ascender + face.descender)
+    }
+
+    fn baseline(&self) -> f64 {
+        self.y0 + self.face().ascender * self.size()
+    }
+
+    /// The box of the letters' main body (see [`Face`]).
     fn ink(&self) -> (f64, f64, f64, f64) {
-        let h = self.y1 - self.y0;
-        (self.x0, self.y0 + 0.2 * h, self.x1, self.y1 - 0.1 * h)
+        let (face, size, baseline) = (self.face(), self.size(), self.baseline());
+        let top = baseline - face.top * size;
+        (self.x0, top, self.x1, baseline + face.bottom * size)
     }
 }
 
@@ -106,9 +179,9 @@ fn footer(page: &Page) -> Vec<bool> {
         .iter()
         .map(|w| {
             number.is_some_and(|n| {
-                let same_size = ((w.y1 - w.y0) - (n.y1 - n.y0)).abs() < 0.2;
-                let same_line = (w.y1 - n.y1).abs() < 0.5;
-                w.y0 >= band && (same_size || same_line)
+                let same_size = (w.size() - n.size()).abs() < 0.15;
+                let same_line = (w.baseline() - n.baseline()).abs() < 0.5;
+                w.ink().1 >= band && (same_size || same_line)
             })
         })
         .collect()
@@ -306,6 +379,18 @@ fn words_of(pdf: &Path) -> String {
         .join(" ")
 }
 
+/// The words of every page's body, joined (a page's footer would fall inside a name that
+/// runs on).
+fn body_text(pdf: &Path) -> String {
+    (pages(pdf).iter())
+        .flat_map(|page| {
+            (page.words.iter().zip(footer(page)))
+                .filter(|(_, f)| !f)
+                .map(|(w, _)| w.text.clone())
+        })
+        .collect()
+}
+
 #[test]
 fn long_names_are_shortened_and_printed_whole_once() {
     let out = run("tests/data/names/campaign.yaml", "long-names");
@@ -331,15 +416,7 @@ fn long_names_are_shortened_and_printed_whole_once() {
             .filter(|c| *c != '-' && !c.is_whitespace())
             .collect()
     };
-    // The body's words (a page's footer would fall inside a name that runs on).
-    let body: String = (pages(&report).iter())
-        .flat_map(|page| {
-            (page.words.iter().zip(footer(page)))
-                .filter(|(_, f)| !f)
-                .map(|(w, _)| w.text.clone())
-        })
-        .collect();
-    let all = plain(&body);
+    let all = plain(&body_text(&report));
     assert_eq!(all.matches(&plain(&long)).count(), 1);
     assert!(pages(&report).len() <= 8, "{} pages", pages(&report).len());
     let first = plain(&first_page_text(&report));
@@ -444,4 +521,210 @@ fn the_decision_chart_rounds_as_the_results_table() {
     assert!(text.contains("8.35 ±2.33"), "{text:.3000}");
     assert!(text.contains("A 8.35 7.67 … 12.33"), "{text}");
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// Every glyph drawn on the pages of `pdf`: its font's name without the subset tag
+/// (`Inter-Bold-Identity-H`) and its CID. Typst writes every face as a CID font with
+/// two-byte codes, and glyph 0 is `.notdef`: the empty box of a letter no face has.
+fn glyphs_drawn(pdf: &Path) -> Vec<(String, u16)> {
+    use lopdf::Object;
+    let doc = lopdf::Document::load(pdf).unwrap();
+    let mut glyphs = Vec::new();
+    for page in doc.get_pages().into_values() {
+        let fonts = doc.get_page_fonts(page).unwrap();
+        let content = lopdf::content::Content::decode(&doc.get_page_content(page)).unwrap();
+        let mut font = String::new();
+        for op in &content.operations {
+            let strings: Vec<&[u8]> = match (op.operator.as_str(), op.operands.first()) {
+                ("Tf", Some(name)) => {
+                    let dict = fonts[name.as_name().unwrap()];
+                    let base = dict.get(b"BaseFont").unwrap().as_name().unwrap();
+                    let base = String::from_utf8_lossy(base);
+                    font = base.split_once('+').map_or(&*base, |(_, f)| f).to_string();
+                    continue;
+                }
+                ("Tj", Some(Object::String(s, _))) => vec![s],
+                ("TJ", Some(Object::Array(parts))) => {
+                    (parts.iter()).filter_map(|p| p.as_str().ok()).collect()
+                }
+                _ => continue,
+            };
+            for s in strings {
+                assert_eq!(s.len() % 2, 0, "{font}: two-byte codes");
+                (s.chunks(2))
+                    .for_each(|c| glyphs.push((font.clone(), u16::from_be_bytes([c[0], c[1]]))));
+            }
+        }
+    }
+    glyphs
+}
+
+/// The text of the first page of `pdf` as pdftotext reads it, without whitespace and the
+/// direction marks it puts around right-to-left words.
+fn first_page_letters(pdf: &Path) -> String {
+    (first_page_text(pdf).chars())
+        .filter(|c| !matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}'))
+        .collect()
+}
+
+/// Hebrew, Arabic and CJK names print with real glyphs: each in an embedded face of its
+/// script (not a serif or a monospace face Typst found for the letters Inter lacks), no
+/// `.notdef` anywhere, and pdftotext reads every name back. Right to left too: pdftotext
+/// turns the glyphs of an RTL word, which stand right to left, back into the word, and
+/// reads a line of RTL words in their order; the parts of a name joined by hyphens in a
+/// left-to-right line it gives as they stand, right to left (glyphs drawn in the order of
+/// the text would read as each word backwards).
+#[test]
+fn names_in_every_script_print_with_real_glyphs() {
+    let out = run("tests/data/names/campaign.yaml", "glyphs");
+    let files = pdfs(&out);
+    assert_eq!(files.len(), 9);
+    let faces = [
+        "Inter-",
+        "NotoSansHebrew-",
+        "NotoSansArabic-",
+        "DroidSansFallback",
+        "DejaVuSansMono",
+    ];
+    for pdf in &files {
+        let shown = pdf.strip_prefix(&out).unwrap().display().to_string();
+        let glyphs = glyphs_drawn(pdf);
+        assert!(glyphs.len() > 500, "{shown}: {} glyphs", glyphs.len());
+        let notdef: Vec<&String> = glyphs.iter().filter(|g| g.1 == 0).map(|g| &g.0).collect();
+        assert!(
+            notdef.is_empty(),
+            "{shown}: {} .notdef glyphs in {notdef:?}",
+            notdef.len()
+        );
+        for (font, _) in &glyphs {
+            assert!(
+                faces.iter().any(|f| font.starts_with(f)),
+                "{shown}: a glyph in {font}"
+            );
+        }
+    }
+    // Name as written → as pdftotext reads the report's first page.
+    let reports = [
+        (
+            "立式加工中心-三号车间-精密加工/主轴Z轴.pdf",
+            "DroidSansFallback",
+            &[
+                (
+                    "立式加工中心-三号车间-精密加工",
+                    "立式加工中心-三号车间-精密加工",
+                ),
+                ("立式加工中心 VMC-850", "立式加工中心VMC-850"),
+                ("三号车间", "三号车间"),
+                ("主轴Z轴", "主轴Z轴"),
+            ],
+        ),
+        (
+            "מכונת-כרסום-אנכית/ציר_Y.pdf",
+            "NotoSansHebrew-",
+            &[
+                ("מכונת-כרסום-אנכית", "אנכית-כרסום-מכונת"),
+                ("מרכז עיבוד אנכי", "מרכזעיבודאנכי"),
+                ("אולם 2", "2אולם"),
+                ("ציר Y", "צירY"),
+            ],
+        ),
+        (
+            "آلة-تفريز-عمودية/المحور_X.pdf",
+            "NotoSansArabic-",
+            &[
+                ("آلة-تفريز-عمودية", "عمودية-تفريز-آلة"),
+                ("مركز تشغيل عمودي", "مركزتشغيلعمودي"),
+                ("القاعة 3", "3القاعة"),
+                ("المحور X", "المحورX"),
+            ],
+        ),
+    ];
+    for (file, face, names) in reports {
+        let pdf = out.join("reports").join(file);
+        let text = first_page_letters(&pdf);
+        for (name, read) in names.iter() {
+            assert!(
+                text.contains(read),
+                "{file}: {name} not read as {read}: {text:.400}"
+            );
+        }
+        let drawn = glyphs_drawn(&pdf);
+        assert!(
+            drawn.iter().any(|(f, _)| f.starts_with(face)),
+            "{file}: nothing in {face}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// The names campaign with three inspections in a history (2024 to 2026; its longest
+/// machine given a limit its X exceeds, so that it is flagged): the reports of the last run
+/// (each with its history section, the summary with the flagged series) and `trend`'s
+/// trends.pdf neither overprint nor leave the page, and trends.pdf prints each long name
+/// whole once (its headings shortened).
+#[test]
+fn no_report_of_a_history_with_long_names_overprints() {
+    let dir = crate::common::scratch("layout-trends");
+    let campaign = dir.join("names");
+    crate::common::copy_tree(Path::new("tests/data/names"), &campaign);
+    let yaml = std::fs::read_to_string(campaign.join("campaign.yaml")).unwrap();
+    let gantry = "data: data/gantry1-x-full.csv}";
+    assert!(yaml.contains(gantry));
+    let yaml = yaml.replace(
+        gantry,
+        "data: data/gantry1-x-full.csv, tolerances: {E: 10}}",
+    );
+    let (history, out) = (dir.join("history"), dir.join("out"));
+    let s = |p: &Path| p.to_str().unwrap().to_string();
+    for date in ["2024-11-20", "2025-11-20", "2026-11-20"] {
+        let dated = yaml.replace("date: 2026-11-20", &format!("date: {date}"));
+        std::fs::write(campaign.join("campaign.yaml"), dated).unwrap();
+        let pdf = if date == "2026-11-20" {
+            "--jobs=2"
+        } else {
+            "--no-pdf"
+        };
+        let args = [
+            "run",
+            &s(&campaign.join("campaign.yaml")),
+            "--out",
+            &s(&out),
+            pdf,
+            "--history",
+            &s(&history),
+        ];
+        let (code, stdout, stderr) = axcheck(&args);
+        assert!(code <= 1, "{date}: {code}: {stdout}{stderr}");
+    }
+    let summary = words_of(&out.join("summary.pdf"));
+    assert!(
+        summary.contains("Trends over the inspection history (2024-11-20 to 2026-11-20)"),
+        "{summary:.2000}"
+    );
+    assert_no_overprinting(&out, 9);
+    let trends = dir.join("trends");
+    let (code, stdout, stderr) = axcheck(&["trend", &s(&history), "--out", &s(&trends)]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let pdf = trends.join("trends.pdf");
+    assert_no_overprinting(&trends, 1);
+    // The long machine first (flagged), under its shortened name, and whole once.
+    let plain = |s: &str| -> String {
+        s.chars()
+            .filter(|c| *c != '-' && !c.is_whitespace())
+            .collect()
+    };
+    let long: String = "Fräszentrum-Baureihe-"
+        .repeat(600)
+        .chars()
+        .take(10_000)
+        .collect();
+    assert!(
+        stdout.contains(&format!("\n  {long} X E: over its limit")),
+        "{stdout:.300}"
+    );
+    let text = plain(&body_text(&pdf));
+    assert_eq!(text.matches(&plain(&long)).count(), 1);
+    assert!(text.contains("Machine,infull"), "{text:.600}");
+    assert!(glyphs_drawn(&pdf).iter().all(|g| g.1 != 0));
+    let _ = std::fs::remove_dir_all(&dir);
 }

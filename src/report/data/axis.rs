@@ -5,7 +5,7 @@
 use super::compensation::{CompensationSection, compensation_section};
 use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
 use super::uncertainty::{UncertaintySection, uncertainty_section};
-use super::{CampaignHeader, generator, num, opt, pos, s_symbol, short_name, symbol_of};
+use super::{AXIS_NAME, CampaignHeader, generator, num, opt, pos, s_symbol, short_name, symbol_of};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::{DirectionResult, Evaluation, StandardId};
 use crate::judge::{Outcome, Verdict};
@@ -107,9 +107,6 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         generator: generator(),
     }
 }
-
-/// Longest axis name shown whole in a heading or a fact.
-const AXIS_NAME: usize = 40;
 
 /// A name in the two-column facts: whole when short, else shortened with a pointer to
 /// [`full_names`] (a 10 000-character name in a half-width column filled nine pages).

@@ -9,7 +9,7 @@ use crate::units::{AxisKind, fmt_fixed, fmt_position};
 use serde::Serialize;
 
 /// A labelled line: a header fact or a test condition.
-#[derive(Serialize)]
+#[derive(Debug, Serialize)]
 pub(super) struct Row {
     label: &'static str,
     value: String,

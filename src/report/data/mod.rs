@@ -68,6 +68,9 @@ fn symbol_of(t: &AxisTest, key: &str) -> String {
 /// report's facts, the summary's title).
 const SHORT_NAME: usize = 60;
 
+/// Longest axis name shown whole in a heading or a fact.
+const AXIS_NAME: usize = 40;
+
 /// `name` shortened to at most `max` characters with an ellipsis, cut before a character
 /// (never between a letter and its combining marks): where a 10 000-character name would
 /// fill the page, a table column or the footer.
@@ -124,7 +127,7 @@ pub(in crate::report) fn campaign_short(result: &CampaignResult) -> String {
 pub(in crate::report) fn short_label(t: &AxisTest) -> String {
     let (m, a) = (
         short_name(&t.machine.id, SHORT_NAME),
-        short_name(&t.axis, 40),
+        short_name(&t.axis, AXIS_NAME),
     );
     if t.tests > 1 {
         format!("{m} {a} ({}/{})", t.test, t.tests)

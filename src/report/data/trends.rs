@@ -5,7 +5,8 @@
 //! The numbers are those of [`crate::trend::fit`] (Theil–Sen slope, Sen's 95 % interval,
 //! forecast against the latest limit), formatted to the reports' 0.01 µm / 0.01″.
 
-use super::num;
+use super::conditions::Row;
+use super::{AXIS_NAME, SHORT_NAME, num, short_name};
 use crate::evaluate::catalogue::CATALOGUE;
 use crate::report::charts::trend::TrendChart;
 use crate::trend::fit::unit_for_people;
@@ -362,14 +363,41 @@ pub struct TrendsDocument {
     pub table: String,
 }
 
-/// One axis in `trends.pdf`.
+/// One axis in `trends.pdf`: its names whole, and shortened for its heading (a
+/// 10 000-character machine name filled the page and ran over the footer) with the long
+/// ones printed whole once below its table (`full_names`).
 #[derive(Debug, Serialize)]
 pub struct AxisTrends {
     pub machine: String,
     pub serial: Option<String>,
     pub axis: String,
+    pub machine_short: String,
+    pub serial_short: Option<String>,
+    pub axis_short: String,
+    full_names: Vec<Row>,
     pub flagged: bool,
     pub rows: Vec<TrendRow>,
+}
+
+impl AxisTrends {
+    fn new(machine: &str, serial: Option<&str>, axis: &str, rows: Vec<TrendRow>) -> AxisTrends {
+        let long = |name: &str, max: usize| (name.chars().count() > max).then(|| name.to_string());
+        AxisTrends {
+            machine_short: short_name(machine, SHORT_NAME),
+            serial_short: serial.map(|s| short_name(s, AXIS_NAME)),
+            axis_short: short_name(axis, AXIS_NAME),
+            full_names: Row::present([
+                ("Machine, in full", long(machine, SHORT_NAME)),
+                ("Serial, in full", serial.and_then(|s| long(s, AXIS_NAME))),
+                ("Axis, in full", long(axis, AXIS_NAME)),
+            ]),
+            machine: machine.to_string(),
+            serial: serial.map(str::to_string),
+            axis: axis.to_string(),
+            flagged: rows.iter().any(|r| r.flagged),
+            rows,
+        }
+    }
 }
 
 /// Most axes `trends.pdf` charts (one page each at most); the rest are counted and are in
@@ -409,13 +437,7 @@ pub fn trends_document(
                 row(s, t, Some(name))
             })
             .collect::<Vec<_>>();
-        views.push(AxisTrends {
-            machine: machine.to_string(),
-            serial: serial.map(str::to_string),
-            axis: axis.to_string(),
-            flagged: rows.iter().any(|r| r.flagged),
-            rows,
-        });
+        views.push(AxisTrends::new(machine, serial, axis, rows));
     }
     let document = TrendsDocument {
         title: "Inspection trends".into(),

@@ -441,7 +441,13 @@ mod tests {
 
     /// The glyphs of the first page above `split` pt and below it, moved up by `split`.
     fn halves(main: &str, split: f64) -> (Vec<Placed>, Vec<Placed>) {
-        let templates = HashMap::from([("/main.typ".to_string(), main.to_string())]);
+        let templates = HashMap::from([
+            ("/main.typ".to_string(), main.to_string()),
+            (
+                "/style.typ".to_string(),
+                include_str!("../../../templates/style.typ").to_string(),
+            ),
+        ]);
         let typesetter = Typesetter::new(templates).unwrap();
         let world = DocumentWorld::new(&typesetter, "/main.typ", vec![], vec![], None).unwrap();
         let doc = typst::compile::<PagedDocument>(&world).output.unwrap();
@@ -491,6 +497,26 @@ mod tests {
         let (direct, typst) = halves(&main, 300.0);
         assert!(direct.len() > 60, "{}", direct.len());
         same_places(&direct, &typst);
+    }
+
+    /// Names in scripts Inter lacks: set by Typst from the reports' fallback faces (the
+    /// direct path refuses them), Latin lines still directly, each as Typst sets it, and
+    /// none a `.notdef` box (glyph 0), as CJK names were.
+    #[test]
+    fn letters_inter_lacks_come_from_the_fallback_faces() {
+        let main = r#"
+            #import "/style.typ": sans
+            #set page(width: 400pt, height: 600pt, margin: 0pt)
+            #set text(font: sans, size: 9pt)
+            #let lines = ("主轴Z轴", "12.5", "ציר Y", "المحور X", "Ось X", "三号车间")
+            #place(top + left, text-lines(lines))
+            #place(top + left, dy: 300pt, lines.join("\n"))
+        "#;
+        let (direct, typst) = halves(main, 300.0);
+        // Every letter and digit, the Arabic ones joined but not ligated.
+        assert_eq!(direct.len(), 27);
+        same_places(&direct, &typst);
+        assert!(direct.iter().all(|g| g.2 != 0), "{direct:?}");
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! The Typst `World` behind every report: all I/O of the typesetter goes through it.
 //!
 //! [`Typesetter`] holds what every document shares — the standard library, the font book
-//! and the fonts (typst-assets' faces plus the embedded Inter) and the templates — and is
+//! and the fonts (typst-assets' faces plus the embedded Inter and its fallbacks) and the templates — and is
 //! built once per process; its library has the `chart-drawing` function (see
 //! [`crate::report::typeset::drawing`]). [`DocumentWorld`] adds one document's files (its main template,
 //! `/data.json`, the charts' drawings and labels), all in memory: a template can read
@@ -22,11 +22,21 @@ use typst::{Library, LibraryExt, World};
 /// The sans-serif face embedded for body text and charts.
 pub const SANS_FAMILY: &str = "Inter";
 
-const INTER: [&[u8]; 4] = [
+/// The embedded faces (templates/fonts/README.md): Inter, and for the letters it lacks
+/// (names of machines and axes, in any script) Noto Sans Hebrew and Arabic and Droid Sans
+/// Fallback (Chinese, Japanese kana), which `templates/style.typ` lists after it. Without
+/// them Typst took Hebrew from a serif face of typst-assets, Arabic from a monospace one and
+/// printed CJK as empty boxes.
+const EMBEDDED: [&[u8]; 9] = [
     include_bytes!("../../../templates/fonts/Inter-Regular.otf"),
     include_bytes!("../../../templates/fonts/Inter-Italic.otf"),
     include_bytes!("../../../templates/fonts/Inter-SemiBold.otf"),
     include_bytes!("../../../templates/fonts/Inter-Bold.otf"),
+    include_bytes!("../../../templates/fonts/NotoSansHebrew-Regular.ttf"),
+    include_bytes!("../../../templates/fonts/NotoSansHebrew-Bold.ttf"),
+    include_bytes!("../../../templates/fonts/NotoSansArabic-Regular.ttf"),
+    include_bytes!("../../../templates/fonts/NotoSansArabic-Bold.ttf"),
+    include_bytes!("../../../templates/fonts/DroidSansFallbackFull.ttf"),
 ];
 
 /// Shared, read-only typesetting state.
@@ -45,7 +55,7 @@ impl Typesetter {
     /// (`None` if one is not a valid virtual path).
     pub fn new(templates: HashMap<String, String>) -> Option<Typesetter> {
         let fonts: Vec<Font> = typst_assets::fonts()
-            .chain(INTER)
+            .chain(EMBEDDED)
             .flat_map(|data| Font::iter(Bytes::new(data)))
             .collect();
         let sources = templates
@@ -211,5 +221,51 @@ impl World for DocumentWorld<'_> {
 
     fn today(&self, _offset: Option<typst::foundations::Duration>) -> Option<Datetime> {
         self.today
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every letter of the names campaign (tests/data/names/) and of GB/T 17421.2's terms
+    /// (a report in simplified Chinese) has a glyph in an embedded face: the one the
+    /// templates' font list gives it, after Inter.
+    #[test]
+    fn the_embedded_faces_cover_every_script_of_the_names() {
+        let fonts: Vec<Font> = EMBEDDED
+            .iter()
+            .flat_map(|data| Font::iter(Bytes::new(*data)))
+            .collect();
+        let family = |c: char| {
+            (fonts.iter())
+                .find(|f| f.info().coverage.contains(c as u32))
+                .map(|f| f.info().family.clone())
+        };
+        let samples = [
+            ("Станок-16К20Ф3 Поворотная ось", "Inter"),
+            ("מכונת-כרסום-אנכית ציר", "Noto Sans Hebrew"),
+            ("آلة-تفريز-عمودية المحور", "Noto Sans Arabic"),
+            ("立式加工中心三号车间精密主轴", "Droid Sans Fallback"),
+            (
+                "定位精度重复定位精度反向差值系统偏差",
+                "Droid Sans Fallback",
+            ),
+            ("轴线双向单向平均值扩展不确定度合格", "Droid Sans Fallback"),
+        ];
+        for (text, face) in samples {
+            for c in text
+                .chars()
+                .filter(|c| !c.is_ascii_punctuation() && *c != ' ')
+            {
+                let found = family(c);
+                let expected = if c.is_ascii_alphanumeric() {
+                    "Inter"
+                } else {
+                    face
+                };
+                assert_eq!(found.as_deref(), Some(expected), "{c:?} in {text}");
+            }
+        }
     }
 }
