@@ -537,3 +537,30 @@ fn device_names_are_never_read_as_files() {
         );
     }
 }
+
+/// An output folder whose paths pass Windows' old limit of 260 characters
+/// (`MAX_PATH`): the standard library gives such paths to Windows as `\\?\` paths, so
+/// every output is written and a second run replaces them.
+#[test]
+fn outputs_deeper_than_260_characters_are_written() {
+    let dir = scratch("win-long");
+    let campaign = small_campaign(&dir);
+    let out = ["a", "b", "c"]
+        .iter()
+        .fold(dir.clone(), |p, c| p.join(c.repeat(90)));
+    let deepest = out.join("compensation").join("M").join("X.ini");
+    assert!(deepest.as_os_str().len() > 300, "{}", deepest.display());
+    std::fs::write(
+        &campaign,
+        std::fs::read_to_string(&campaign)
+            .unwrap()
+            .replace("  - id: M\n", "  - id: M\n    controller: siemens-840d\n"),
+    )
+    .unwrap();
+    for round in 0..2 {
+        let (code, stdout, stderr) = axcheck(&run_args(&campaign, &out, &["--no-html"]));
+        assert_eq!(code, 0, "round {round}: {stdout}{stderr}");
+        assert!(deepest.is_file() && out.join("summary.csv").is_file());
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}
