@@ -133,6 +133,13 @@ pub enum OutputError {
         path: PathBuf,
         cause: std::io::Error,
     },
+    #[error(
+        "cannot replace {path}: {cause}; another program has it open (a PDF viewer, Excel): close it there and run again"
+    )]
+    InUse {
+        path: PathBuf,
+        cause: std::io::Error,
+    },
 }
 
 fn io_error(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
@@ -185,14 +192,40 @@ fn entry(path: &Path) -> Result<Entry, OutputError> {
     }
 }
 
-/// A manifest entry: a relative path of plain names (no `..`, `.`, root or prefix).
+/// A manifest entry: `/`-separated plain names ([`plain_name`]), the same text on every
+/// platform (a manifest written on Windows reads on Linux and back).
 fn clean_relative(text: &str) -> Option<PathBuf> {
-    let path = PathBuf::from(text);
-    (!text.is_empty()
-        && !text.contains('\\')
-        && !text.contains('\0')
-        && path.components().all(|c| matches!(c, Component::Normal(_))))
-    .then_some(path)
+    if text.is_empty() {
+        return None;
+    }
+    let mut path = PathBuf::new();
+    for name in text.split('/') {
+        path.push(plain_name(name)?);
+    }
+    Some(path)
+}
+
+/// An output path as the exporters make it (with the platform's separator: `\` on
+/// Windows): plain names only, no root, drive, `.` or `..`.
+fn clean_output(path: &Path) -> Option<PathBuf> {
+    let mut clean = PathBuf::new();
+    for part in path.components() {
+        match part {
+            Component::Normal(name) => clean.push(plain_name(name.to_str()?)?),
+            _ => return None,
+        }
+    }
+    (!clean.as_os_str().is_empty()).then_some(clean)
+}
+
+/// A file or folder name that means itself on every platform: not empty, `.` or `..`; no
+/// separator (`/`, `\`), NUL, or `:` (a drive or an NTFS stream); no trailing dot or space
+/// (Windows drops them, so `a.` would be `a`).
+fn plain_name(name: &str) -> Option<&str> {
+    let plain = !matches!(name, "" | "." | "..")
+        && !name.contains(['/', '\\', '\0', ':'])
+        && !name.ends_with(['.', ' ']);
+    plain.then_some(name)
 }
 
 /// `path` as a manifest line: `/`-separated whatever the platform.
@@ -279,7 +312,7 @@ impl OutputDir {
         outputs: impl IntoIterator<Item = &'a Path>,
     ) -> Result<(), OutputError> {
         for output in outputs {
-            let Some(relative) = clean_relative(&output.to_string_lossy()) else {
+            let Some(relative) = clean_output(output) else {
                 return Err(OutputError::Io {
                     path: self.root.join(output),
                     cause: std::io::Error::other("not a relative path inside the output folder"),
@@ -350,7 +383,18 @@ impl OutputDir {
     /// Writes one output (a relative path given to [`prepare`](OutputDir::prepare)).
     pub fn write(&self, output: &Path, bytes: &[u8]) -> Result<(), OutputError> {
         let path = self.root.join(output);
-        write(&path, bytes).map_err(io_error(&path))
+        write(&path, bytes).map_err(|cause| {
+            // Windows refuses to replace a file another program holds open (without
+            // allowing its deletion, or at all before Windows 10 1809 and on FAT and
+            // network shares); elsewhere the same error means a folder not writable.
+            let in_use = cfg!(windows)
+                && cause.kind() == std::io::ErrorKind::PermissionDenied
+                && path.is_file();
+            match in_use {
+                true => OutputError::InUse { path, cause },
+                false => OutputError::Io { path, cause },
+            }
+        })
     }
 
     /// After some outputs could not be written (`missing`): finishes as [`finish`] would
@@ -507,8 +551,48 @@ mod tests {
     #[test]
     fn manifest_entries_stay_inside_the_folder() {
         assert!(clean_relative("reports/M/X.pdf").is_some());
-        for bad in ["", "/etc/passwd", "../x", "a/../../x", "./a", "a\\b"] {
+        for bad in [
+            "",
+            "/etc/passwd",
+            "../x",
+            "a/../../x",
+            "./a",
+            "a\\b",
+            "a//b",
+            "C:/x",
+            "c:x",
+            "x.pdf:stream",
+            "a./b",
+            "a /b",
+            "\\\\server\\share\\x",
+        ] {
             assert!(clean_relative(bad).is_none(), "{bad}");
+        }
+    }
+
+    /// The exporters join output paths with the platform's separator; a check that took
+    /// only `/` refused every output on Windows (`compensation\\VMC-07\\X.ini`).
+    #[test]
+    fn output_paths_take_the_platform_separator() {
+        let joined = Path::new("compensation").join("VMC-07").join("X.ini");
+        assert_eq!(
+            clean_output(&joined),
+            Some(PathBuf::from("compensation/VMC-07/X.ini"))
+        );
+        assert_eq!(manifest_line(&joined), "compensation/VMC-07/X.ini");
+        for bad in ["", "../x", "a/../b", "/abs", "./a", "a/x:y", "a/x."] {
+            assert_eq!(clean_output(Path::new(bad)), None, "{bad}");
+        }
+        #[cfg(windows)]
+        for bad in [
+            "C:\\x",
+            "C:x",
+            "\\x",
+            "\\\\server\\share\\x",
+            "a\\..\\..\\x",
+            "x:y",
+        ] {
+            assert_eq!(clean_output(Path::new(bad)), None, "{bad}");
         }
     }
 

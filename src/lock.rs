@@ -2,12 +2,16 @@
 //! before it writes anything, so two runs on one shared folder never mix their files.
 //!
 //! The lock is an advisory lock of the operating system on [`LOCK_FILE`] in the folder
-//! (`flock` on unix, `LockFileEx` on Windows): the kernel releases it when the process
+//! (`flock` on unix; `LockFileEx` on one byte past the text on Windows, whose locks are
+//! mandatory and would otherwise hide the text): the system releases it when the process
 //! ends, however it ends, so the lock of a killed run is never stale; the next run finds
 //! the file unlocked and takes it over. The file holds the pid, host and start time of
 //! the run that holds it, for the message of a run that finds it locked. A run removes
 //! the file when it is done (unix), still holding the lock; a run that waited on the
-//! removed file sees that it is no longer in the folder and locks the new one.
+//! removed file sees that it is no longer in the folder and locks the new one. On Windows
+//! a file open in another process cannot be removed at once everywhere (FAT, network
+//! shares, Wine), so the file stays and a run that ends empties it instead: only a
+//! killed run leaves its holder in it.
 
 use std::fs::File;
 use std::io::{Read, Seek, Write};
@@ -161,6 +165,8 @@ impl LockError {
 #[derive(Debug)]
 pub struct FolderLock {
     file: File,
+    /// The lock file, removed when the lock is released (unix only).
+    #[cfg_attr(not(unix), allow(dead_code))]
     path: PathBuf,
     created: Vec<PathBuf>,
     /// The holder written in a lock file nobody held any more: a run that was killed.
@@ -192,7 +198,7 @@ impl FolderLock {
                 }
                 other => other?,
             };
-            match file.try_lock() {
+            match try_lock(&file) {
                 Ok(()) => {}
                 Err(std::fs::TryLockError::WouldBlock) => {
                     let locked = Locked {
@@ -206,7 +212,7 @@ impl FolderLock {
                         waiting(&locked);
                         announced = true;
                     }
-                    file.lock().map_err(io)?;
+                    lock(&file).map_err(io)?;
                 }
                 Err(std::fs::TryLockError::Error(e)) => return Err(io(e)),
             }
@@ -240,11 +246,53 @@ impl Drop for FolderLock {
         // Removed while still locked, so no run can lock it after it is released.
         #[cfg(unix)]
         let _ = std::fs::remove_file(&self.path);
-        let _ = self.file.unlock();
+        // Emptied while still locked: the next run finds no holder to take over.
+        #[cfg(not(unix))]
+        let _ = self.file.set_len(0);
+        let _ = unlock(&self.file);
         for dir in self.created.iter().rev() {
             // Only when empty: a run that wrote nothing leaves no folder behind.
             let _ = std::fs::remove_dir(dir);
         }
+    }
+}
+
+/// Takes the lock of `file` if no other run holds it.
+fn try_lock(file: &File) -> Result<(), std::fs::TryLockError> {
+    #[cfg(windows)]
+    {
+        use std::fs::TryLockError;
+        crate::files::windows::lock_byte(file, false).map_err(|e| match e.kind() {
+            std::io::ErrorKind::WouldBlock => TryLockError::WouldBlock,
+            _ => TryLockError::Error(e),
+        })
+    }
+    #[cfg(not(windows))]
+    {
+        file.try_lock()
+    }
+}
+
+/// Waits for the lock of `file` and takes it.
+fn lock(file: &File) -> std::io::Result<()> {
+    #[cfg(windows)]
+    {
+        crate::files::windows::lock_byte(file, true)
+    }
+    #[cfg(not(windows))]
+    {
+        file.lock()
+    }
+}
+
+fn unlock(file: &File) -> std::io::Result<()> {
+    #[cfg(windows)]
+    {
+        crate::files::windows::unlock_byte(file)
+    }
+    #[cfg(not(windows))]
+    {
+        file.unlock()
     }
 }
 
@@ -340,6 +388,7 @@ mod tests {
 
     /// A read-only file system is said so, and its OS error text is printed once (it was
     /// "cannot lock …: (os error 30): … (os error 30)").
+    #[cfg(unix)]
     #[test]
     fn a_read_only_folder_is_said_so_once() {
         let path = PathBuf::from("/media/disk/out").join(LOCK_FILE);
@@ -379,11 +428,21 @@ mod tests {
             "{e}"
         );
         drop(first);
-        assert!(!dir.exists(), "the folder it created is removed when empty");
+        if cfg!(unix) {
+            assert!(!dir.exists(), "the folder it created is removed when empty");
+        } else {
+            let left = std::fs::read(dir.join(LOCK_FILE)).unwrap();
+            assert!(left.is_empty(), "emptied when released");
+        }
         let again = FolderLock::acquire(&dir, false, |_| {}).unwrap();
+        assert!(
+            again.taken_over.is_none(),
+            "a released lock is not taken over"
+        );
         std::fs::write(dir.join("output.txt"), "x").unwrap();
         drop(again);
-        assert!(dir.join("output.txt").exists() && !dir.join(LOCK_FILE).exists());
+        assert!(dir.join("output.txt").exists());
+        assert_eq!(dir.join(LOCK_FILE).exists(), cfg!(not(unix)));
         std::fs::remove_dir_all(dir).unwrap();
     }
 

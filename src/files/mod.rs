@@ -13,6 +13,8 @@
 mod beneath;
 mod real;
 mod root;
+#[cfg(windows)]
+pub mod windows;
 
 pub use real::{Outside, real_path};
 pub use root::{Root, may_match};
@@ -35,8 +37,8 @@ pub enum FileError {
     Changed,
     #[error(
         "it was opened as {}, outside the folder {} (a link on its way was changed after the path was checked); nothing was read from it",
-        real.display(),
-        root.display()
+        dunce::simplified(real).display(),
+        dunce::simplified(root).display()
     )]
     Outside { real: PathBuf, root: PathBuf },
     #[error(
@@ -130,8 +132,9 @@ pub fn open_within(path: &Path, root: Option<&Path>) -> Result<Opened, FileError
     Ok(opened)
 }
 
-/// The real path of the file behind `file`: on Linux what the kernel opened
-/// (`/proc/self/fd`); elsewhere `path` resolved again, a narrower window than none.
+/// The real path of the file behind `file`: what the system opened (Linux:
+/// `/proc/self/fd`; Windows: `GetFinalPathNameByHandleW`); elsewhere `path` resolved
+/// again, a narrower window than none.
 fn opened_real_path(file: &File, path: &Path) -> std::io::Result<PathBuf> {
     #[cfg(target_os = "linux")]
     {
@@ -139,6 +142,10 @@ fn opened_real_path(file: &File, path: &Path) -> std::io::Result<PathBuf> {
         if let Ok(real) = std::fs::read_link(format!("/proc/self/fd/{}", file.as_raw_fd())) {
             return Ok(real);
         }
+    }
+    #[cfg(windows)]
+    if let Ok(real) = windows::final_path(file) {
+        return Ok(real);
     }
     let _ = file;
     std::fs::canonicalize(path)
@@ -161,6 +168,12 @@ fn open_regular(path: &Path) -> Result<Opened, FileError> {
 /// The handle is what is read: a regular file, whichever. Another regular file renamed
 /// over the path between the check and the open (an atomic write) is read whole.
 fn opened(file: File) -> Result<Opened, FileError> {
+    // `CON`, `NUL`, `COM1` name devices in any folder on Windows, which a file's type
+    // does not show: the handle says what it is.
+    #[cfg(windows)]
+    if !windows::on_disk(&file) {
+        return Err(FileError::NotRegular("a device or a pipe"));
+    }
     let after = file.metadata()?;
     regular(&after)?;
     Ok(Opened {

@@ -35,8 +35,8 @@ impl std::fmt::Display for Outside {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let (path, real, root) = (
             self.path.display(),
-            self.real.display(),
-            self.root.display(),
+            dunce::simplified(&self.real).display(),
+            dunce::simplified(&self.root).display(),
         );
         let folder = self.folder;
         match &self.through {

@@ -99,6 +99,12 @@ impl Root {
                     "path `{relative}` is absolute; paths in a campaign are relative to its folder ({CAMPAIGN_HINT})"
                 ));
             }
+            // Windows: `C:data\x.csv` is relative to drive C's current folder, not this one.
+            if let Some(Component::Prefix(_)) = rel.components().next() {
+                return Err(format!(
+                    "path `{relative}` names a drive; paths in a campaign are relative to its folder ({CAMPAIGN_HINT})"
+                ));
+            }
             let mut depth: i64 = 0;
             for c in rel.components() {
                 match c {

@@ -1,7 +1,10 @@
 //! Helpers shared by the integration tests.
 
 use axcheck::measurement::{self, AxisData};
-use std::path::PathBuf;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
 
 pub fn data_path(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -72,6 +75,7 @@ pub fn pdf_text(path: &std::path::Path) -> String {
 /// Runs `body` while another thread calls `swap` over and over (a race with whoever can
 /// write a folder), from the first swap on. The swapping stops when `body` returns, and also
 /// when it fails: the scope waits for the thread before it lets the failure through.
+#[cfg(unix)]
 pub fn while_swapping<T>(mut swap: impl FnMut() + Send, body: impl FnOnce() -> T) -> T {
     use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
     struct StopOnDrop<'a>(&'a AtomicBool);
@@ -108,4 +112,69 @@ pub fn copy_tree(from: &std::path::Path, to: &std::path::Path) {
             std::fs::copy(entry.path(), target).unwrap();
         }
     }
+}
+
+/// How long a spawned run may take before a test calls it blocked.
+pub const DEADLINE: Duration = Duration::from_secs(120);
+
+/// Starts `axcheck ARGS` in the crate folder, its output piped.
+pub fn spawn(args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_axcheck"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("axcheck starts")
+}
+
+/// Waits for `child` until `limit`, then kills it and fails: (exit code, stdout, stderr).
+pub fn finish(mut child: Child, limit: Duration) -> (i32, String, String) {
+    let pipe = |mut r: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            let _ = r.read_to_string(&mut text);
+            text
+        })
+    };
+    let stdout = pipe(Box::new(child.stdout.take().unwrap()));
+    let stderr = pipe(Box::new(child.stderr.take().unwrap()));
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("axcheck did not finish within {limit:?}: it blocks");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let (stdout, stderr) = (stdout.join().unwrap(), stderr.join().unwrap());
+    (status.code().unwrap_or(-1), stdout, stderr)
+}
+
+/// A small campaign in `dir` (one good axis) for the lock and race tests.
+pub fn small_campaign(dir: &Path) -> PathBuf {
+    std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
+    let yaml = "campaign: {name: L, date: 2026-11-20, unjudged: allowed}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n";
+    let campaign = dir.join("campaign.yaml");
+    std::fs::write(&campaign, yaml).unwrap();
+    campaign
+}
+
+/// `run CAMPAIGN --out OUT --no-pdf --no-diagnose EXTRA…`.
+pub fn run_args<'a>(campaign: &'a Path, out: &'a Path, extra: &[&'a str]) -> Vec<&'a str> {
+    let mut args = vec![
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+        "--no-diagnose",
+    ];
+    args.extend_from_slice(extra);
+    args
 }

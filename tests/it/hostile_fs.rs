@@ -5,54 +5,15 @@
 //! in the files outside) reaches any output. Every run has a deadline, so a regression
 //! that blocks on a pipe or a lock fails instead of hanging the test binary.
 
-use crate::common::{data_path, scratch, while_swapping};
-use std::io::{BufRead, Read};
+use crate::common::{
+    DEADLINE, data_path, finish, run_args, scratch, small_campaign, spawn, while_swapping,
+};
 use std::os::unix::fs::symlink;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 /// Written into every file outside the campaign folder: it must appear in no output.
 const MARKER: &str = "OUTSIDE_MARKER_5f1c";
-const DEADLINE: Duration = Duration::from_secs(120);
-
-fn spawn(args: &[&str]) -> Child {
-    Command::new(env!("CARGO_BIN_EXE_axcheck"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("axcheck starts")
-}
-
-/// Waits for `child` until `limit`, then kills it and fails: (exit code, stdout, stderr).
-fn finish(mut child: Child, limit: Duration) -> (i32, String, String) {
-    let pipe = |mut r: Box<dyn Read + Send>| {
-        std::thread::spawn(move || {
-            let mut text = String::new();
-            let _ = r.read_to_string(&mut text);
-            text
-        })
-    };
-    let stdout = pipe(Box::new(child.stdout.take().unwrap()));
-    let stderr = pipe(Box::new(child.stderr.take().unwrap()));
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > limit {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("axcheck did not finish within {limit:?}: it blocks");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let (stdout, stderr) = (stdout.join().unwrap(), stderr.join().unwrap());
-    (status.code().unwrap_or(-1), stdout, stderr)
-}
 
 /// `axcheck ARGS` with the deadline.
 fn axcheck(args: &[&str]) -> (i32, String, String) {
@@ -722,99 +683,14 @@ fn link_swapper(link: PathBuf, targets: [PathBuf; 2]) -> impl FnMut() + Send {
     }
 }
 
-/// A small campaign in `dir` (one good axis) for the lock and race tests.
-fn small_campaign(dir: &Path) -> PathBuf {
-    std::fs::copy(data_path("iso230-2_table2.csv"), dir.join("data/good.csv")).unwrap();
-    let yaml = "campaign: {name: L, date: 2026-11-20, unjudged: allowed}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/good.csv}\n";
-    let campaign = dir.join("campaign.yaml");
-    std::fs::write(&campaign, yaml).unwrap();
-    campaign
-}
-
-fn run_args<'a>(campaign: &'a Path, out: &'a Path, extra: &[&'a str]) -> Vec<&'a str> {
-    let mut args = vec![
-        "run",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--no-pdf",
-        "--no-diagnose",
-    ];
-    args.extend_from_slice(extra);
-    args
-}
-
-/// A second run on a folder that another run holds stops at once with who holds it
-/// (exit 2), or with `--wait` waits for it and then writes; a history folder is held
-/// the same way, and a link in place of the lock file is refused.
+/// A link planted in place of the lock file is not followed (the lock itself is tested on
+/// every platform in `windows`).
 #[test]
-fn a_held_output_folder_stops_a_second_run_or_makes_it_wait() {
-    let dir = scratch("hostile-lock");
+fn a_link_in_place_of_the_lock_file_is_refused() {
+    let dir = scratch("hostile-lock-link");
     let campaign = small_campaign(&dir);
     let out = dir.join("out");
-    let held = axcheck::lock::FolderLock::acquire(&out, false, |_| {}).unwrap();
-    let start = Instant::now();
-    let (code, stdout, stderr) = axcheck(&run_args(&campaign, &out, &[]));
-    assert_eq!(code, 2, "{stdout}{stderr}");
-    assert!(start.elapsed() < Duration::from_secs(30), "stops at once");
-    let want = format!("another axcheck run (pid {}, started ", std::process::id());
-    assert!(stderr.contains(&want), "{stderr}");
-    assert!(
-        stderr.contains(&format!(") is writing to {}", out.display())),
-        "{stderr}"
-    );
-    assert!(stderr.contains("run again with --wait"), "{stderr}");
-    assert!(!stderr.contains("was not written by axcheck"), "{stderr}");
-    assert!(!out.join("results.json").exists());
-
-    // --wait: the run waits while the folder is held, then writes.
-    let mut waiting = spawn(&run_args(&campaign, &out, &["--wait"]));
-    let mut first_line = String::new();
-    std::io::BufReader::new(waiting.stderr.as_mut().unwrap())
-        .read_line(&mut first_line)
-        .unwrap();
-    assert!(
-        first_line.contains("is writing to")
-            && first_line.contains("waiting for it to finish (--wait)"),
-        "{first_line}"
-    );
-    std::thread::sleep(Duration::from_millis(300));
-    assert!(
-        waiting.try_wait().unwrap().is_none(),
-        "still waiting while the folder is held"
-    );
-    assert!(!out.join("results.json").exists());
-    drop(held);
-    let (code, stdout, stderr) = finish(waiting, DEADLINE);
-    assert_eq!(code, 0, "{stdout}{stderr}");
-    assert!(out.join("results.json").exists());
-    assert!(
-        !out.join(axcheck::lock::LOCK_FILE).exists(),
-        "the lock file is removed after the run"
-    );
-
-    // The history folder is held the same way.
-    let history = dir.join("history");
-    let held = axcheck::lock::FolderLock::acquire(&history, false, |_| {}).unwrap();
-    let (code, _, stderr) = axcheck(&run_args(
-        &campaign,
-        &out,
-        &["--history", history.to_str().unwrap()],
-    ));
-    assert_eq!(code, 2, "{stderr}");
-    assert!(
-        stderr.contains(&format!(") is writing to {}", history.display())),
-        "{stderr}"
-    );
-    drop(held);
-    let (code, _, stderr) = axcheck(&run_args(
-        &campaign,
-        &out,
-        &["--history", history.to_str().unwrap()],
-    ));
-    assert_eq!(code, 0, "{stderr}");
-
-    // A link planted in place of the lock file is not followed.
+    std::fs::create_dir_all(&out).unwrap();
     std::fs::write(dir.join("victim.txt"), "keep").unwrap();
     symlink(dir.join("victim.txt"), out.join(axcheck::lock::LOCK_FILE)).unwrap();
     let (code, _, stderr) = axcheck(&run_args(&campaign, &out, &[]));
@@ -828,132 +704,4 @@ fn a_held_output_folder_stops_a_second_run_or_makes_it_wait() {
         "keep"
     );
     std::fs::remove_dir_all(dir).unwrap();
-}
-
-/// Two runs started together on one output folder: without `--wait` each writes or stops
-/// with the lock message (never "not written by axcheck"); with `--wait` both write.
-#[test]
-fn two_runs_at_once_on_one_output_folder() {
-    let dir = scratch("hostile-concurrent");
-    let (code, _, stderr) = axcheck(&[
-        "simulate",
-        "--fleet",
-        "60",
-        "--seed",
-        "3",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    assert_eq!(code, 0, "{stderr}");
-    let campaign = dir.join("campaign.yaml");
-    let out = dir.join("out");
-    for wait in [false, true] {
-        let extra: &[&str] = if wait { &["--wait"] } else { &[] };
-        let children = [
-            spawn(&run_args(&campaign, &out, extra)),
-            spawn(&run_args(&campaign, &out, extra)),
-        ];
-        let mut written = 0;
-        for child in children {
-            let (code, stdout, stderr) = finish(child, DEADLINE);
-            assert!(!stderr.contains("was not written by axcheck"), "{stderr}");
-            match code {
-                0 | 1 => written += 1,
-                2 => assert!(
-                    !wait && stderr.contains("another axcheck run (pid "),
-                    "{stdout}{stderr}"
-                ),
-                _ => panic!("{stdout}{stderr}"),
-            }
-        }
-        assert!(
-            written >= 1 && (!wait || written == 2),
-            "wait {wait}: {written} runs wrote"
-        );
-        let results: serde_json::Value =
-            serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
-        assert_eq!(results["axes"].as_array().unwrap().len(), 60);
-    }
-    std::fs::remove_dir_all(dir).unwrap();
-}
-
-/// The lock of a run that was killed is released by the system; the next run takes the
-/// lock file over and says so.
-#[test]
-fn the_lock_of_a_killed_run_is_taken_over() {
-    let dir = scratch("hostile-stale");
-    let campaign = small_campaign(&dir);
-    // A real run that holds its output folder: it waits (--wait) for the history folder
-    // this test holds (folders are locked in the order of their paths: a-out first).
-    let (out, history) = (dir.join("a-out"), dir.join("b-history"));
-    let held = axcheck::lock::FolderLock::acquire(&history, false, |_| {}).unwrap();
-    let mut holder = spawn(&run_args(
-        &campaign,
-        &out,
-        &["--history", history.to_str().unwrap(), "--wait"],
-    ));
-    let mut line = String::new();
-    std::io::BufReader::new(holder.stderr.as_mut().unwrap())
-        .read_line(&mut line)
-        .unwrap();
-    assert!(
-        line.contains(&format!("is writing to {}", history.display())),
-        "{line}"
-    );
-    let lock_text = std::fs::read_to_string(out.join(axcheck::lock::LOCK_FILE)).unwrap();
-    assert!(
-        lock_text.contains(&format!("pid {}\n", holder.id())),
-        "{lock_text}"
-    );
-    holder.kill().unwrap();
-    holder.wait().unwrap();
-    drop(held);
-    assert!(
-        out.join(axcheck::lock::LOCK_FILE).exists(),
-        "a killed run leaves its lock file"
-    );
-
-    let (code, stdout, stderr) = axcheck(&run_args(&campaign, &out, &[]));
-    assert_eq!(code, 0, "{stdout}{stderr}");
-    let want = format!(
-        "holds the lock file of a run that ended without removing it (pid {}, started ",
-        holder.id()
-    );
-    assert!(stderr.contains(&want), "{stderr}");
-    assert!(out.join("results.json").exists());
-    assert!(!out.join(axcheck::lock::LOCK_FILE).exists());
-    std::fs::remove_dir_all(dir).unwrap();
-}
-
-/// `trend --out` and `simulate --fleet` write folders too: a held one stops them at once
-/// with who holds it, and nothing is written into it.
-#[test]
-fn trend_and_simulate_stop_at_a_held_folder() {
-    let dir = scratch("hostile-lock-other");
-    let out = dir.join("trends");
-    let held = axcheck::lock::FolderLock::acquire(&out, false, |_| {}).unwrap();
-    let want = format!("another axcheck run (pid {}, started ", std::process::id());
-    let history = Path::new(env!("CARGO_MANIFEST_DIR")).join("example-campaign/history");
-    let (code, stdout, stderr) = axcheck(&[
-        "trend",
-        history.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert_eq!(code, 2, "{stdout}{stderr}");
-    assert!(stderr.contains(&want), "{stderr}");
-    assert!(!out.join("trends.csv").exists() && !out.join("trends.pdf").exists());
-
-    let (code, stdout, stderr) =
-        axcheck(&["simulate", "--fleet", "3", "--out", out.to_str().unwrap()]);
-    assert_eq!(code, 2, "{stdout}{stderr}");
-    assert!(stderr.contains(&want), "{stderr}");
-    assert!(!out.join("campaign.yaml").exists());
-    drop(held);
-    let (code, stdout, stderr) =
-        axcheck(&["simulate", "--fleet", "3", "--out", out.to_str().unwrap()]);
-    assert_eq!(code, 0, "{stdout}{stderr}");
-    assert!(out.join("campaign.yaml").exists());
-    assert!(!out.join(".axcheck.lock").exists(), "released at the end");
-    std::fs::remove_dir_all(&dir).unwrap();
 }

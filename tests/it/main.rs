@@ -48,4 +48,5 @@ mod trend;
 mod uncertainty;
 mod verdicts;
 mod verify;
+mod windows;
 mod workbook;

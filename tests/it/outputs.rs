@@ -56,6 +56,7 @@ fn snapshot(dir: &Path) -> Snapshot {
 
 /// Asserts that `bytes` is a complete, valid output of its format; `reference` is a
 /// complete version of the same file (for the CSV header and row count).
+#[cfg(unix)]
 fn assert_complete(name: &str, bytes: &[u8], reference: &[u8]) {
     let text = || String::from_utf8_lossy(bytes);
     match Path::new(name).extension().and_then(|e| e.to_str()) {
