@@ -60,7 +60,7 @@ pub fn check_real(
     root: Option<&Path>,
     relative: &Path,
     folder_name: &'static str,
-) -> Result<(), Outside> {
+) -> Result<(), Box<Outside>> {
     let base = folder(base);
     // Most paths are plain: no link on the way, no `..`; then they stay inside, whatever
     // the folder's real path (nothing is resolved or copied for them).
@@ -90,22 +90,22 @@ pub fn check_real(
             && !link_real.starts_with(&root)
         {
             let through = (prefix.as_path() != relative).then_some(prefix);
-            return Err(Outside {
+            return Err(Box::new(Outside {
                 path: relative.to_path_buf(),
                 through,
                 real: link_real,
                 root,
                 folder: folder_name,
-            });
+            }));
         }
     }
-    Err(Outside {
+    Err(Box::new(Outside {
         path: relative.to_path_buf(),
         through: None,
         real,
         root,
         folder: folder_name,
-    })
+    }))
 }
 
 /// Whether `base/relative` exists with no link among the components of `relative` and

@@ -123,7 +123,8 @@ impl Root {
     }
 
     /// The real-path rule for `relative` (a path inside the folder as written).
-    pub fn check(&self, relative: &Path) -> Result<(), Outside> {
+    /// Boxed: the message's four paths are large (144 bytes on Windows).
+    pub fn check(&self, relative: &Path) -> Result<(), Box<Outside>> {
         // A path beneath the folder with no link on its way stays inside: one system call.
         if self.handle.as_ref().is_some_and(|h| h.plain(relative)) {
             return Ok(());
