@@ -45,6 +45,14 @@ pub enum FileError {
         "it is {0} text; axcheck reads UTF-8: save it as UTF-8 (an editor's Save as, Encoding UTF-8) or convert it with `iconv -f UTF-16 -t UTF-8`"
     )]
     Utf16(&'static str),
+    #[error(
+        "line {line}, column {column}: byte 0x{byte:02X} is not UTF-8 (a Windows editor's \"ANSI\" text, Windows-1252 or Latin-1, writes `ü` so); axcheck reads UTF-8: save it as UTF-8 (Save as, Encoding UTF-8) or convert it with `iconv -f WINDOWS-1252 -t UTF-8`"
+    )]
+    NotUtf8 {
+        line: usize,
+        column: usize,
+        byte: u8,
+    },
     #[error("{0}")]
     Io(#[from] std::io::Error),
 }
@@ -243,12 +251,18 @@ fn utf8(mut bytes: Vec<u8>) -> Result<String, FileError> {
     if bytes.starts_with(UTF8_BOM) {
         bytes.drain(..UTF8_BOM.len());
     }
-    String::from_utf8(bytes).map_err(|_| {
-        FileError::Io(std::io::Error::new(
-            std::io::ErrorKind::InvalidData,
-            "stream did not contain valid UTF-8",
-        ))
-    })
+    String::from_utf8(bytes).map_err(|e| not_utf8(e.as_bytes(), e.utf8_error().valid_up_to()))
+}
+
+/// Where the first byte that is not UTF-8 stands (1-based line and column in characters).
+fn not_utf8(bytes: &[u8], at: usize) -> FileError {
+    let before = String::from_utf8_lossy(&bytes[..at]);
+    let line_start = before.rfind('\n').map_or(0, |k| k + 1);
+    FileError::NotUtf8 {
+        line: before.matches('\n').count() + 1,
+        column: before[line_start..].chars().count() + 1,
+        byte: bytes[at],
+    }
 }
 
 /// The byte-order mark of UTF-8 text.
@@ -286,6 +300,20 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         dir
+    }
+
+    /// Issue 49: a campaign saved as Windows-1252 ("ANSI") is named so, with the line and
+    /// column of its first such byte, instead of "stream did not contain valid UTF-8".
+    #[test]
+    fn windows_1252_text_is_named_at_its_first_byte() {
+        let e = utf8(b"campaign:\r\n  name: Pr\xFCfung\r\n".to_vec()).unwrap_err();
+        let text = e.to_string();
+        assert!(
+            text.starts_with("line 2, column 11: byte 0xFC is not UTF-8"),
+            "{text}"
+        );
+        assert!(text.contains("iconv -f WINDOWS-1252 -t UTF-8"), "{text}");
+        assert_eq!(utf8(b"a: \xC3\xBC\r\n".to_vec()).unwrap(), "a: ü\r\n");
     }
 
     #[test]

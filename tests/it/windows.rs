@@ -564,3 +564,31 @@ fn outputs_deeper_than_260_characters_are_written() {
     }
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+/// A campaign as Notepad saves it: CRLF line ends are read as any other; saved as "ANSI"
+/// (Windows-1252, `ü` one byte 0xFC) it is refused naming the line, the column and what to
+/// do, not as "stream did not contain valid UTF-8".
+#[test]
+fn a_notepad_campaign_is_read_or_named() {
+    let dir = scratch("win-notepad");
+    let campaign = small_campaign(&dir);
+    let text = std::fs::read_to_string(&campaign).unwrap();
+    let crlf = dir.join("crlf.yaml");
+    std::fs::write(&crlf, text.replace('\n', "\r\n")).unwrap();
+    let (code, stdout, stderr) = axcheck(&["check", crlf.to_str().unwrap()]);
+    assert_ne!(code, 2, "{stdout}{stderr}");
+    assert!(stdout.contains(" tests: "), "{stdout}");
+    let ansi = dir.join("ansi.yaml");
+    let mut bytes = b"# Pr\xFCfung\r\n".to_vec();
+    bytes.extend_from_slice(text.replace('\n', "\r\n").as_bytes());
+    std::fs::write(&ansi, bytes).unwrap();
+    let (code, _, stderr) = axcheck(&["check", ansi.to_str().unwrap()]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains(
+            "ansi.yaml: cannot read the campaign file: line 1, column 5: byte 0xFC is not UTF-8"
+        ),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
