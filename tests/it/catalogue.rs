@@ -423,14 +423,7 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
     std::fs::write(&campaign, &yaml).unwrap();
 
     let out = dir.join("out");
-    let (code, stdout, stderr) = axcheck(&[
-        "run",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--no-pdf",
-        "--no-diagnose",
-    ]);
+    let (code, stdout, stderr) = axcheck(&crate::common::run_args(&campaign, &out, &[]));
     assert_eq!(code, 1, "{stdout}{stderr}");
     let results: serde_json::Value =
         serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();

@@ -22,14 +22,7 @@ fn the_axis_then_its_spec_then_the_campaign_decide() {
     )
     .unwrap();
     let out = dir.join("out");
-    let (code, stdout, stderr) = axcheck(&[
-        "run",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--no-pdf",
-        "--no-diagnose",
-    ]);
+    let (code, stdout, stderr) = axcheck(&crate::common::run_args(&campaign, &out, &[]));
     assert_eq!(code, 1, "inconclusive fails the gate: {stdout}{stderr}");
     assert!(
         stdout.contains("4 tests: 2 pass, 0 fail, 0 noncompliant, 0 error, 2 inconclusive"),
