@@ -61,6 +61,12 @@ pub struct ErrorModel {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[serde(alias = "reversal_end_um", alias = "reversal_end_arcsec")]
     pub reversal_end: Option<f64>,
+    /// Reversal value B along the travel as knots [position, B], linear between them and
+    /// constant beyond (a worn section, one value per target); replaces `reversal` and
+    /// `reversal_end` where given.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(alias = "reversal_knots_um", alias = "reversal_knots_arcsec")]
+    pub reversal_knots: Vec<[f64; 2]>,
     /// Drift in time, uniform along the axis, per hour.
     #[serde(skip_serializing_if = "is_zero")]
     #[serde(alias = "drift_um_per_h", alias = "drift_arcsec_per_h")]
@@ -103,6 +109,12 @@ pub struct ErrorModel {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[serde(alias = "scatter_end_um", alias = "scatter_end_arcsec")]
     pub scatter_end: Option<f64>,
+    /// Scatter σ along the travel as knots [position, σ], linear between them and constant
+    /// beyond (a section that scatters more); replaces `scatter` and `scatter_end` where
+    /// given.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(alias = "scatter_knots_um", alias = "scatter_knots_arcsec")]
+    pub scatter_knots: Vec<[f64; 2]>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub outliers: Vec<Outlier>,
     /// Probability that a reading is an outlier.
@@ -146,6 +158,9 @@ impl ErrorModel {
 
     /// The reversal value B at `position`.
     pub fn reversal_at(&self, position: f64, travel: (f64, f64)) -> f64 {
+        if !self.reversal_knots.is_empty() {
+            return piecewise_linear(&self.reversal_knots, position);
+        }
         match self.reversal_end {
             Some(end) => self.reversal + (end - self.reversal) * along(position, travel),
             None => self.reversal,
@@ -154,6 +169,9 @@ impl ErrorModel {
 
     /// The scatter σ at `position`.
     pub fn scatter_at(&self, position: f64, travel: (f64, f64)) -> f64 {
+        if !self.scatter_knots.is_empty() {
+            return piecewise_linear(&self.scatter_knots, position);
+        }
         match self.scatter_end {
             Some(end) => self.scatter + (end - self.scatter) * along(position, travel),
             None => self.scatter,
@@ -246,12 +264,29 @@ impl ErrorModel {
                 ));
             }
         }
-        let mut last = f64::NEG_INFINITY;
-        for k in &self.shape {
-            if k[0].partial_cmp(&last) != Some(std::cmp::Ordering::Greater) {
-                return Err("model.shape: knot positions must increase".into());
+        if self
+            .scatter_knots
+            .iter()
+            .any(|k| k[1].is_nan() || k[1] < 0.0)
+        {
+            return Err("model.scatter_knots: σ must be ≥ 0 at every knot".into());
+        }
+        let knotted = [
+            ("shape", &self.shape),
+            ("reversal_knots", &self.reversal_knots),
+            ("scatter_knots", &self.scatter_knots),
+        ];
+        for (name, knots) in knotted {
+            let mut last = f64::NEG_INFINITY;
+            for k in knots {
+                if k[0].partial_cmp(&last) != Some(std::cmp::Ordering::Greater) {
+                    return Err(format!("model.{name}: knot positions must increase"));
+                }
+                if !k[1].is_finite() {
+                    return Err(format!("model.{name}: a knot's value must be finite"));
+                }
+                last = k[0];
             }
-            last = k[0];
         }
         Ok(())
     }
@@ -282,6 +317,21 @@ impl ErrorModel {
             ));
         }
         Ok(())
+    }
+}
+
+/// Linear interpolation through `knots` (positions increasing); constant beyond the ends.
+pub fn piecewise_linear(knots: &[[f64; 2]], x: f64) -> f64 {
+    let last = knots.len().saturating_sub(1);
+    match knots {
+        [] => 0.0,
+        _ if x <= knots[0][0] => knots[0][1],
+        _ if x >= knots[last][0] => knots[last][1],
+        _ => {
+            let j = knots.partition_point(|k| k[0] <= x).clamp(1, last);
+            let ([x0, y0], [x1, y1]) = (knots[j - 1], knots[j]);
+            y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+        }
     }
 }
 

@@ -210,9 +210,7 @@ fn checks(out: &mut String, d: &Diagnosis) {
 /// The findings with their parameters and evidence.
 fn findings(out: &mut String, d: &Diagnosis) {
     let _ = writeln!(out, "\nFindings");
-    if d.findings.is_empty() {
-        let _ = writeln!(out, "  none: the base model explains the data");
-    }
+    let _ = writeln!(out, "  {}", d.model_check.sentence);
     for f in &d.findings {
         let _ = writeln!(out, "  {}: {}", f.effect().name(), f.message);
         let params = f.params_text(num);

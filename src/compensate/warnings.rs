@@ -6,6 +6,7 @@ use super::Table;
 use crate::diagnose::Diagnosis;
 use crate::diagnose::effects::Effect;
 use crate::diagnose::effects::periodic::Periodic;
+use crate::diagnose::effects::reversal_variation::ReversalVariation;
 use crate::measurement::AxisData;
 use crate::units::fmt_fixed;
 use serde::Serialize;
@@ -15,6 +16,7 @@ use serde::Serialize;
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Warning {
     /// Stable key: `time_effect`, `aliased_periodic`, `single_run`, `outliers`,
+    /// `reversal_variation` (a reversal that one backlash value cannot follow),
     /// `axis_placeholder` (the file names no axis: what to replace), and those of the
     /// active state ([`super::active`]).
     pub key: &'static str,
@@ -30,6 +32,7 @@ pub fn warnings(
 ) -> Vec<Warning> {
     let mut out = Vec::new();
     out.extend(time_effects(diagnosis));
+    out.extend(reversal_variation(diagnosis, table));
     out.extend(aliased_periodic(diagnosis, table).or_else(|| aliased_pitch(pitch, table)));
     if data.runs() < 2 {
         out.push(Warning {
@@ -47,6 +50,35 @@ pub fn warnings(
         });
     }
     out
+}
+
+/// A reversal value that changes along the axis, where the table has one correction per
+/// position for both directions (the controller's single backlash value takes the
+/// reversal): that value removes the mean reversal and leaves half the range of the Bi on
+/// either side (Hemingray et al. 1971, §5.2: lost motion measured at every position).
+fn reversal_variation(diagnosis: &Diagnosis, table: &Table) -> Option<Warning> {
+    let r = diagnosis.estimates::<ReversalVariation>().next()?;
+    let gaps: Vec<f64> = table
+        .up
+        .iter()
+        .zip(&table.down)
+        .map(|(u, d)| u - d)
+        .collect();
+    let spread = gaps.iter().fold(f64::NEG_INFINITY, |a, &g| a.max(g))
+        - gaps.iter().fold(f64::INFINITY, |a, &g| a.min(g));
+    if spread > 1e-9 {
+        return None;
+    }
+    let symbol = table.kind.deviation_symbol();
+    let f = |v: f64| fmt_fixed(v, 2);
+    Some(Warning {
+        key: "reversal_variation",
+        message: format!(
+            "the reversal value changes along the axis (Bi range {} {symbol}): one backlash value for the axis removes the mean reversal and leaves up to ±{} {symbol}, half that range, on either side (Hemingray et al. 1971, §5.2); compensate per position and direction where the control has direction-dependent tables, or repair the cause where the reversal is largest",
+            f(r.range),
+            f(r.range / 2.0)
+        ),
+    })
 }
 
 /// Drift, warm-up and thermal growth change the deviations with time: a table records

@@ -180,7 +180,8 @@ fn time_and_scatter(
     let mut sc = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2);
     if let Some(s) = sc.as_ref().filter(|s| s.p < ALPHA) {
         scale = s.rel_scale.clone();
-        hits = outlier::detect(prep, x, &scale, tt.warm_tau(ALPHA), ALPHA);
+        let at = scatter_variation::outlier_scale(prep, s, &tt.full, x);
+        hits = outlier::detect(prep, x, &at, tt.warm_tau(ALPHA), ALPHA);
         active = mask(&hits);
         tt = time::tests(prep, x, &active, &scale, ALPHA);
         if let Some(s2) = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2) {

@@ -56,6 +56,11 @@ impl Statistic {
         }
     }
 
+    /// The statistic whose [`Statistic::name`] is `name`.
+    pub(crate) fn named(name: &str) -> Option<Statistic> {
+        Statistic::ALL.into_iter().find(|s| s.name() == name)
+    }
+
     fn description(self) -> &'static str {
         match self {
             Statistic::R => {

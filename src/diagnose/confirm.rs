@@ -14,7 +14,10 @@
 //!   random (groups of the runs' sizes that are no runs);
 //! * a reversal or scatter line, or a periodic sinusoid, along the targets in a random
 //!   order;
-//! * for outliers, as many ordinary readings left out of the fit.
+//! * for outliers, as many ordinary readings left out of the fit;
+//! * for a reversal variation, which may take one value per target (unchanged by any
+//!   order of the targets), tests simulated from the model without it
+//!   ([`super::shaped`]).
 //!
 //! Each is cross-validated on the same folds (the periodic term on the same targets) as
 //! the term, and the term is kept when its gain is larger than all of theirs: when the
@@ -40,9 +43,11 @@ use crate::axis_model::rng::Rng;
 /// beating all of them has probability 1/20 for a term that is itself unrelated.
 pub(crate) const UNRELATED: usize = 19;
 
-/// The unrelated terms a found effect's term is compared with.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Unrelated {
+/// The unrelated terms a found effect's term is compared with (`null` of a term's gain in
+/// the JSON).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Unrelated {
     /// The columns the term adds read at the readings' times in random orders
     /// ([`row_orders`]): drift, thermal growth, warm-up.
     TimeOrders,
@@ -52,6 +57,10 @@ pub(crate) enum Unrelated {
     TargetOrders,
     /// As many ordinary readings left out of the fit ([`ordinary_draws`]).
     OrdinaryReadings,
+    /// The term, in the shape each test chooses, on tests simulated from the model
+    /// without it with the test's own plan ([`super::shaped`]): for terms that take one
+    /// value per target, which no order of the targets changes.
+    SimulatedTests,
 }
 
 /// The seed of the unrelated terms, from the test's plan (its target positions and its

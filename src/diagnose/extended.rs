@@ -66,6 +66,7 @@ impl Fitted {
             run_offsets,
             reversal,
             reversal_mean,
+            reversal_shape: sel.terms.reversal_shape,
             periodic: sel.periodic.clone(),
             train,
             outliers: a.hits.iter().map(|h| (h.row, h.size)).collect(),

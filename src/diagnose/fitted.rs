@@ -23,6 +23,8 @@ pub(crate) struct Fitted {
     /// Reversal value per target, and its mean.
     pub reversal: Vec<f64>,
     pub reversal_mean: f64,
+    /// The shape of the reversal term (a line without it).
+    pub reversal_shape: super::shape::Shape,
     /// The periodic term, when kept.
     pub periodic: Option<Peak>,
     /// Rows the fit used.

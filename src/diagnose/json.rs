@@ -6,11 +6,16 @@
 //! with units, `labels`, `evidence` {`statistic`, `value`, `p_value`, `effect_size`},
 //! `message`), `unconfirmed` (the findings of the tests whose term the held-out prediction
 //! does not confirm: `effect`, `params`, `labels`, `evidence`, `message`, `scheme`,
-//! `gain_pct`, `threshold_pct`), `base` and `extended` (each `terms`, `heldout_rms`, `heldout_nlpd`,
+//! `gain_pct`, `threshold_pct`, `null`), `base` and `extended` (each `terms`, `heldout_rms`, `heldout_nlpd`,
 //! `between_targets_rms`), `gain_pct` (held-out RMS of the readings),
 //! `gain_between_targets_pct` (leave-targets-out, when a periodic term was judged),
 //! `term_gains` (each judged term: `effect`, `scheme`, `without`, `with`, `gain_pct`,
-//! `threshold_pct`, `kept`), `validation`, `checks`, `corrected`, `residuals`,
+//! `threshold_pct`, `kept`, `null`: what the gain was compared with — `target_orders`,
+//! `time_orders`, `run_orders`, `ordinary_readings` or `simulated_tests`; `shape` and
+//! `shapes` for a term along the axis: `line`, `curve` or `per_target`, each with its
+//! `parameters` and `heldout_rms`), `validation`, `checks`, `model_check` (`verdict`:
+//! `explained`, `effects_found`, `not_explained` or `not_checked`; `checks`; `outside`, each
+//! `statistic`, `side`, `points_to`, `accounted_for_by`, `seen_unconfirmed`; `sentence`), `corrected`, `residuals`,
 //! `base_model` and `extended_model` (simulation files as YAML text), `notes`.
 //! Numbers that do not apply are `null`.
 
@@ -34,6 +39,7 @@ struct DiagnosisJson<'a> {
     term_gains: &'a [TermGain],
     validation: &'static str,
     checks: Vec<CheckJson<'a>>,
+    model_check: &'a super::ModelVerdict,
     corrected: &'a [Corrected],
     residuals: &'a Residuals,
     base_model: String,
@@ -114,6 +120,7 @@ impl Serialize for Diagnosis {
             term_gains: &self.term_gains,
             validation: self.validation,
             checks: self.checks.iter().map(CheckJson::from).collect(),
+            model_check: &self.model_check,
             corrected: &self.corrected,
             residuals: &self.residuals,
             base_model: self.base_model.to_yaml(),

@@ -43,13 +43,18 @@ mod options;
 mod prep;
 mod residuals;
 mod select;
+pub mod shape;
+mod shaped;
 pub use select::{Scheme, TermGain, Unconfirmed};
+pub use shaped::ShapeScore;
 mod maths;
 pub use maths::stats;
 mod time;
 mod time_fit;
 mod timeline;
 mod validate;
+mod verdict;
+pub use verdict::{ModelVerdict, Outside, VerdictKind};
 
 pub use checks::ModelCheck;
 pub use corrected::{Corrected, CorrectedParameter};
@@ -90,6 +95,8 @@ pub struct Diagnosis {
     pub term_gains: Vec<TermGain>,
     pub validation: &'static str,
     pub checks: Vec<ModelCheck>,
+    /// What the findings and the checks say together, in one sentence.
+    pub model_check: ModelVerdict,
     pub residuals: Residuals,
     pub corrected: Vec<Corrected>,
     /// The fitted base model (the standard's assumptions), as simulated for the checks.
@@ -139,6 +146,13 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let mut seen = a.findings();
     seen.sort_by_key(Finding::effect);
     let selection = select::select(&a, &seen, options.seed);
+    for g in &selection.term_gains {
+        if let Some(shape) = g.shape {
+            (seen.iter_mut())
+                .filter(|f| f.effect() == g.effect)
+                .for_each(|f| effects::reversal_variation::ReversalVariation::reshape(f, shape));
+        }
+    }
     let (findings, unconfirmed) = Unconfirmed::split(seen, &selection.term_gains);
     let fit = Fitted::new(&a, &selection);
     notes.extend(fit.guess.notes.iter().cloned());
@@ -146,6 +160,7 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let base_model = checks::base_model(&a, &fit.guess.plan, options.seed);
     let simulable = fit.guess.simulable;
     let checks = checks::check_base_model(&a, &base_model, simulable, options, &mut notes);
+    let model_check = verdict::verdict(&checks, &findings, &unconfirmed);
     let residuals = residuals::residuals(&a, &fit, &selection.effects);
     let corrected =
         corrected::corrected(&a, &fit, &selection.effects, options.standard, &mut notes);
@@ -162,6 +177,7 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
         term_gains: selection.term_gains,
         validation: VALIDATION,
         checks,
+        model_check,
         residuals,
         corrected,
         base_model,

@@ -3,6 +3,7 @@
 //! per-fold tests of the terms) is `validate.rs`, above the effects.
 
 use super::prep::Prep;
+use super::shape::Shape;
 use super::time_fit::TimeFit;
 
 /// The terms of a model.
@@ -16,6 +17,8 @@ pub(crate) struct ModelTerms {
     pub thermal: bool,
     pub runs: bool,
     pub reversal: bool,
+    /// The reversal's shape along the axis, with `reversal`.
+    pub reversal_shape: Shape,
     pub outliers: bool,
     pub scatter: bool,
 }

@@ -14,6 +14,8 @@ use super::finding::{Evidence, Keyed, fmt};
 use super::maths::periodogram::Peak;
 use super::model_terms::ModelTerms;
 use super::prep::{Clocks, Prep};
+use super::shape::Shape;
+use super::shaped::{self, ShapeScore};
 use super::validate::{self, Score};
 use serde::Serialize;
 use serde::ser::Serializer;
@@ -63,6 +65,13 @@ pub struct TermGain {
     pub threshold_pct: f64,
     /// Kept in the extended model: only with a gain above `threshold_pct`.
     pub kept: bool,
+    /// What the unrelated terms were: the term along the targets, the times or the runs
+    /// in random orders, ordinary readings left out, or tests simulated without it.
+    pub null: Unrelated,
+    /// The shape chosen (a term along the axis that offers shapes), and every shape's
+    /// held-out error.
+    pub shape: Option<Shape>,
+    pub shapes: Vec<ShapeScore>,
 }
 
 impl TermGain {
@@ -78,12 +87,20 @@ impl TermGain {
             _ => format!("{} → {} {unit}", fmt(self.without), fmt(self.with)),
         };
         let threshold = if self.threshold_pct.is_finite() {
-            format!("; unrelated terms at most {:+.1} %", self.threshold_pct)
+            let compared = match self.null {
+                Unrelated::SimulatedTests => "tests simulated without it",
+                _ => "unrelated terms",
+            };
+            format!("; {compared} at most {:+.1} %", self.threshold_pct)
         } else {
             String::new()
         };
+        let shape = match self.shape {
+            Some(shape) => format!(" as {}", shape.name().replace('_', " ")),
+            None => String::new(),
+        };
         format!(
-            "{}: {:+.1} % ({}: {measure}{threshold}), {}",
+            "{}{shape}: {:+.1} % ({}: {measure}{threshold}), {}",
             self.effect.name(),
             self.gain_pct,
             self.scheme.describe(),
@@ -102,6 +119,9 @@ impl TermGain {
             gain_pct,
             threshold_pct,
             kept: gain_pct > 0.0 && gain_pct > threshold_pct,
+            null: effect.rule().unrelated(),
+            shape: None,
+            shapes: Vec::new(),
         }
     }
 }
@@ -133,6 +153,8 @@ pub struct Unconfirmed {
     pub scheme: Scheme,
     pub gain_pct: f64,
     pub threshold_pct: f64,
+    /// What the gain was compared with (see [`TermGain::null`]).
+    pub null: Unrelated,
 }
 
 impl Unconfirmed {
@@ -151,6 +173,7 @@ impl Unconfirmed {
                     scheme: g.scheme,
                     gain_pct: g.gain_pct,
                     threshold_pct: g.threshold_pct,
+                    null: g.null,
                 }),
                 None => findings.push(f),
             }
@@ -166,8 +189,12 @@ impl Unconfirmed {
         } else {
             "not scored".to_string()
         };
+        let compared = match self.null {
+            Unrelated::SimulatedTests => "19 tests simulated without it, each in its best shape",
+            _ => "19 unrelated terms of the same size",
+        };
         format!(
-            "{:+.1} % held out ({}); 19 unrelated terms of the same size {threshold}",
+            "{:+.1} % held out ({}); {compared} {threshold}",
             self.gain_pct,
             self.scheme.describe()
         )
@@ -185,6 +212,7 @@ struct UnconfirmedJson<'a> {
     scheme: Scheme,
     gain_pct: f64,
     threshold_pct: f64,
+    null: Unrelated,
 }
 
 impl Serialize for Unconfirmed {
@@ -199,6 +227,7 @@ impl Serialize for Unconfirmed {
             scheme: self.scheme,
             gain_pct: self.gain_pct,
             threshold_pct: self.threshold_pct,
+            null: self.null,
         }
         .serialize(s)
     }
@@ -299,6 +328,7 @@ impl Judge<'_> {
                     .collect();
                 (self.score(terms), others)
             }
+            Unrelated::SimulatedTests => unreachable!("a shaped term is judged by `shaped`"),
             Unrelated::OrdinaryReadings => {
                 let others = confirm::ordinary_draws(&self.outlier, self.seed)
                     .iter()
@@ -313,6 +343,43 @@ impl Judge<'_> {
                 (self.score(terms), others)
             }
         }
+    }
+
+    /// The shaped term `set` over the `kept` terms: the shape with the smallest held-out
+    /// error, against tests simulated without the term ([`shaped`]).
+    fn shaped(
+        &self,
+        effect: Effect,
+        kept: ModelTerms,
+        current: Score,
+        set: fn(&mut ModelTerms, Shape),
+    ) -> Option<(TermGain, ModelTerms, Score)> {
+        let (p, x) = (&self.a.basis.prep, &self.a.basis.x);
+        let left_out: Vec<bool> = (self.outlier.iter()).map(|&o| o && kept.outliers).collect();
+        let mut fixed = kept;
+        if kept.warm && kept.warm_tau.is_none() {
+            let train: Vec<bool> = left_out.iter().map(|l| !l).collect();
+            fixed.warm_tau = validate::fit_time(p, x, &train, kept).tau;
+        }
+        let setup = shaped::Setup {
+            prep: p,
+            fold: &self.fold,
+            rows: validate::Rows {
+                scored: &self.outlier,
+                left_out: &left_out,
+            },
+            kept: fixed,
+            set,
+        };
+        let judged = shaped::judge(&setup, x, self.seed)?;
+        let threshold = (judged.null_gains_pct.iter()).fold(f64::NAN, |a, &b| a.max(b));
+        let scheme = Scheme::KFoldRms;
+        let mut gain = TermGain::new(effect, scheme, current.rms, judged.score.rms, threshold);
+        gain.shape = Some(judged.shape);
+        gain.shapes = judged.shapes;
+        let mut terms = kept;
+        set(&mut terms, judged.shape);
+        Some((gain, terms, judged.score))
     }
 
     /// An unrelated warm-up curve (the warm-up judged, not one kept before) takes the
@@ -379,6 +446,16 @@ pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection
             Term::Readings(set) => (set, false),
             Term::Density(set) => (set, true),
             Term::TargetMeans => continue,
+            Term::Shaped(set) => {
+                if let Some((gain, terms, s)) = judge.shaped(effect, kept, current, set) {
+                    if gain.kept {
+                        (kept, current) = (terms, s);
+                        effects.push(effect);
+                    }
+                    term_gains.push(gain);
+                }
+                continue;
+            }
         };
         let mut terms = kept;
         set(&mut terms);

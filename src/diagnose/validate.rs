@@ -9,7 +9,7 @@
 //! * base (the standard's model, the simulator with its assumptions): the bidirectional
 //!   mean at each target, one reversal value B̄ for the axis, nothing in time;
 //! * extended: plus the kept terms — drift, warm-up (its τ profiled on each fold's
-//!   training readings) and thermal growth (time regressors with cell effects), run offsets, a reversal varying linearly along the axis, outliers left out
+//!   training readings) and thermal growth (time regressors with cell effects), run offsets, a reversal varying along the axis (a line, a curve or per target: [`super::shape`]), outliers left out
 //!   of the fit, a scatter varying along the axis (changes only the predictive variance,
 //!   so it is judged by the mean negative log predictive density, not the RMS).
 //!
@@ -76,7 +76,7 @@ impl Lines {
             .map(|i| (mu[2 * i] + mu[2 * i + 1]) / 2.0)
             .collect();
         let b: Vec<f64> = (0..prep.m).map(|i| mu[2 * i] - mu[2 * i + 1]).collect();
-        let reversal = reversal_line(&b, along, terms.reversal);
+        let reversal = reversal_values(&b, along, terms);
         let s2 = time.sigma2();
         let sigma = match (terms.scatter, s2 > 0.0) {
             (true, true) => match scatter::test_along(prep, along, &time.residuals, s2) {
@@ -94,23 +94,15 @@ impl Lines {
     }
 }
 
-/// The reversal value per target: the least-squares line of the values `b` over `along`
-/// when `varies`, else their mean.
-fn reversal_line(b: &[f64], along: &[f64], varies: bool) -> Vec<f64> {
-    let m = b.len();
-    let finite: Vec<usize> = (0..m).filter(|&i| b[i].is_finite()).collect();
-    if varies && finite.len() >= 2 {
-        let n = finite.len() as f64;
-        let px = finite.iter().map(|&i| along[i]).sum::<f64>() / n;
-        let by = finite.iter().map(|&i| b[i]).sum::<f64>() / n;
-        let sxx: f64 = finite.iter().map(|&i| (along[i] - px).powi(2)).sum();
-        let sxy: f64 = finite.iter().map(|&i| (along[i] - px) * (b[i] - by)).sum();
-        let slope = if sxx > 0.0 { sxy / sxx } else { 0.0 };
-        (0..m).map(|i| by + slope * (along[i] - px)).collect()
-    } else {
-        let bbar = finite.iter().map(|&i| b[i]).sum::<f64>() / finite.len().max(1) as f64;
-        vec![bbar; m]
+/// The reversal value per target: the term's shape fitted to the values `b` over `along`
+/// when the model has the term, else their mean.
+fn reversal_values(b: &[f64], along: &[f64], terms: ModelTerms) -> Vec<f64> {
+    if terms.reversal {
+        return terms.reversal_shape.fit(b, along);
     }
+    let finite: Vec<f64> = b.iter().copied().filter(|v| v.is_finite()).collect();
+    let bbar = finite.iter().sum::<f64>() / finite.len().max(1) as f64;
+    vec![bbar; b.len()]
 }
 
 /// The fold of each row (stratified by cell, deterministic for `seed`).
@@ -214,13 +206,28 @@ pub(crate) fn scores(
     terms: ModelTerms,
     unrelated: &[Vec<f64>],
 ) -> Vec<Score> {
-    let alongs: Vec<&[f64]> = std::iter::once(prep.positions.as_slice())
+    let variants: Vec<(&[f64], ModelTerms)> = std::iter::once(prep.positions.as_slice())
         .chain(unrelated.iter().map(Vec::as_slice))
+        .map(|along| (along, terms))
         .collect();
+    variants_scores(prep, x, fold, rows, terms, &variants)
+}
+
+/// Cross-validates variants of a model that share its time model (`terms`' time part):
+/// each variant's lines along its positions with its terms (reversal and scatter: on or
+/// off, their shape), one score each, the time model fitted once per fold for all.
+pub(crate) fn variants_scores(
+    prep: &Prep,
+    x: &[f64],
+    fold: &[usize],
+    rows: Rows,
+    terms: ModelTerms,
+    variants: &[(&[f64], ModelTerms)],
+) -> Vec<Score> {
     if prep.n < 2 {
-        return alongs.iter().map(|_| Score::none()).collect();
+        return variants.iter().map(|_| Score::none()).collect();
     }
-    let mut folds: Vec<Vec<FoldLoss>> = vec![Vec::new(); alongs.len()];
+    let mut folds: Vec<Vec<FoldLoss>> = vec![Vec::new(); variants.len()];
     for f in 0..K {
         if !fold.contains(&f) {
             continue;
@@ -229,8 +236,8 @@ pub(crate) fn scores(
             .map(|k| fold[k] != f && !rows.left_out[k])
             .collect();
         let time = fit_time(prep, x, &train, terms);
-        for (v, along) in alongs.iter().enumerate() {
-            let lines = Lines::along(prep, &time, terms, along);
+        for (v, (along, variant)) in variants.iter().enumerate() {
+            let lines = Lines::along(prep, &time, *variant, along);
             let held_out = (0..prep.rows.len()).filter(|&k| fold[k] == f && !rows.scored[k]);
             folds[v].push(fold_loss(prep, x, &time, &lines, held_out));
         }

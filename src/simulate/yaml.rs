@@ -61,6 +61,11 @@ const MODEL: &[Key] = &[
     plain("periodic"),
     ("reversal", "reversal_um", "reversal_arcsec"),
     ("reversal_end", "reversal_end_um", "reversal_end_arcsec"),
+    (
+        "reversal_knots",
+        "reversal_knots_um",
+        "reversal_knots_arcsec",
+    ),
     ("drift_per_h", "drift_um_per_h", "drift_arcsec_per_h"),
     plain("thermal_growth_ppm_per_h"),
     (
@@ -77,6 +82,7 @@ const MODEL: &[Key] = &[
     ("run_offset_sd", "run_offset_sd_um", "run_offset_sd_arcsec"),
     ("scatter", "scatter_um", "scatter_arcsec"),
     ("scatter_end", "scatter_end_um", "scatter_end_arcsec"),
+    ("scatter_knots", "scatter_knots_um", "scatter_knots_arcsec"),
     plain("outliers"),
     plain("outlier_rate"),
     ("outlier_size", "outlier_size_um", "outlier_size_arcsec"),

@@ -21,6 +21,7 @@ use rayon::prelude::*;
 
 mod shown;
 mod sweep;
+mod worn;
 
 /// Monte-Carlo simulations per diagnosis in these tests (the checks do not decide
 /// findings; they cost time).

@@ -46,6 +46,10 @@ pub(crate) enum Term {
     Density(fn(&mut ModelTerms)),
     /// A term of the target means: their leave-targets-out RMS.
     TargetMeans,
+    /// A term of the reading model along the axis in a shape ([`super::shape::Shape`]):
+    /// the held-out RMS of the readings, the shape chosen by it, compared with tests
+    /// simulated without the term ([`super::shaped`]).
+    Shaped(fn(&mut ModelTerms, super::shape::Shape)),
 }
 
 /// One effect of the vocabulary. Its findings come from its own test (each effect's

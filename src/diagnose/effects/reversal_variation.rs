@@ -1,17 +1,19 @@
 //! Reversal variation: the reversal value changes along the axis (lost motion; Hemingray
 //! et al. 1971, §5.2). Tested (below) on the Bi of the readings
-//! corrected for the time effects: the slope of a straight line, and what the line leaves,
-//! each at half the level.
+//! corrected for the time effects: the slope of a straight line, and their spread about
+//! their mean (a worn end or section, which a line misses), each at half the level.
 //!
 //! The test. ISO 230-2 2.12 defines Bi per target but reports one B and B̄ as if it were
 //! one number. The Bi = X̄i↑ − X̄i↓ of readings corrected for the time effects (in the standard cycle a
 //! drift reaches the down approaches later than the up ones and would show as a reversal
 //! growing along the axis) have the known standard error σ√(1/n↑ + 1/n↓). Two tests:
-//! the slope of a weighted straight line through the Bi (t-test, df of σ), and what the
-//! line leaves (χ²/(m − 2) against σ², an F-test) for a reversal whose shape is not a
-//! line. With n = 1 the slope is tested against the line's own residuals (df = m − 2).
+//! the slope of a weighted straight line through the Bi (t-test, df of σ), and their
+//! spread about the weighted mean B̄ (χ²/(m − 1) against σ², an F-test) for a reversal of
+//! any shape — one worn target among five moves a line little, and the spread about a
+//! line leaves out what the line took of it. With n = 1 the slope is tested against the
+//! line's own residuals (df = m − 2).
 
-use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Estimate, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
@@ -20,6 +22,7 @@ use crate::diagnose::maths::linalg::least_squares;
 use crate::diagnose::maths::stats::{f_upper, t_two_sided};
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::shape::Shape;
 use crate::measurement::fmt_target;
 use crate::units::AxisKind;
 
@@ -35,6 +38,44 @@ pub struct ReversalVariation {
     pub range: f64,
     /// Whether the slope was found (else only the departure from a straight line).
     pub linear: bool,
+    /// The shape the held-out prediction chose (None: not judged, n = 1).
+    pub fitted_shape: Option<Shape>,
+    /// Bi per target: (position, Bi), as measured (corrected for the time effects).
+    pub per_target: Vec<(f64, f64)>,
+}
+
+impl ReversalVariation {
+    /// The estimate in the shape the held-out prediction chose: its values at the first
+    /// and last target from that shape; per target, the message lists every Bi.
+    pub(crate) fn reshape(f: &mut Finding, shape: Shape) {
+        let Estimate::ReversalVariation(r) = &mut f.estimate else {
+            return;
+        };
+        r.fitted_shape = Some(shape);
+        let (along, b): (Vec<f64>, Vec<f64>) = r.per_target.iter().copied().unzip();
+        let fitted = shape.fit(&b, &along);
+        if let (Some(first), Some(last)) = (fitted.first(), fitted.last()) {
+            (r.start, r.end) = (*first, *last);
+        }
+        if shape == Shape::Line {
+            return;
+        }
+        let u = f.units;
+        let ds = u.symbol();
+        let listed = (r.per_target.iter())
+            .map(|(p, b)| format!("{} {ds} at {}", fmt(*b), fmt_target(u.kind, *p)))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let what = match shape {
+            Shape::PerTarget => "from target to target",
+            _ => "along the axis on a curve",
+        };
+        f.message = format!(
+            "the reversal value changes {what}, range {} {ds}: Bi = {listed} (p = {})",
+            fmt(r.range),
+            fmt_p(f.evidence.p_value.unwrap_or(f64::NAN))
+        );
+    }
 }
 
 impl Fields for ReversalVariation {
@@ -50,6 +91,13 @@ impl Fields for ReversalVariation {
             (format!("reversal_end_{du}"), self.end),
             (format!("reversal_range_{du}"), self.range),
         ]
+        .into_iter()
+        .chain(
+            (self.per_target.iter().enumerate())
+                .filter(|_| self.fitted_shape == Some(Shape::PerTarget))
+                .map(|(i, (_, b))| (format!("reversal_target_{}_{du}", i + 1), *b)),
+        )
+        .collect()
     }
 
     fn labels(&self) -> Vec<(&'static str, &'static str)> {
@@ -58,7 +106,11 @@ impl Fields for ReversalVariation {
         } else {
             "not a straight line"
         };
-        vec![("shape", shape)]
+        let mut labels = vec![("shape", shape)];
+        if let Some(fitted) = self.fitted_shape {
+            labels.push(("fitted_shape", fitted.name()));
+        }
+        labels
     }
 
     /// A backlash compensation is one value per axis: it removes the mean reversal B̄ and
@@ -106,7 +158,7 @@ impl Rule {
             )
         } else {
             (
-                format!("F of Bi about a straight line ({}, {} df)", p.m - 2, r.df),
+                format!("F of Bi about their mean ({}, {} df)", p.m - 1, r.df),
                 r.f_shape.unwrap_or(f64::NAN),
                 r.p_shape.unwrap_or(f64::NAN),
             )
@@ -123,7 +175,10 @@ impl Rule {
             fmt(b_hi),
             fmt_target(u.kind, p.hi),
             if shape_hit && !slope_hit {
-                format!(", not along a straight line (Bi range {} {ds})", fmt(range))
+                format!(
+                    ", not only along a straight line (Bi range {} {ds})",
+                    fmt(range)
+                )
             } else {
                 String::new()
             },
@@ -136,6 +191,11 @@ impl Rule {
                 end: b_hi,
                 range,
                 linear: slope_hit,
+                fitted_shape: None,
+                per_target: (p.positions.iter().zip(&a.b))
+                    .filter(|(_, b)| b.is_finite())
+                    .map(|(p, b)| (*p, *b))
+                    .collect(),
             }
             .into(),
             units: u,
@@ -151,19 +211,31 @@ impl Rule {
 }
 
 impl EffectRule for Rule {
+    /// A line, a curve or one value per target, whichever predicts held-out readings
+    /// best.
     fn term(&self) -> Term {
-        Term::Readings(|t| t.reversal = true)
+        Term::Shaped(|t, shape| {
+            t.reversal = true;
+            t.reversal_shape = shape;
+        })
     }
 
-    /// A line (or sinusoid) through the targets: compared with the same term along the
-    /// targets in random orders.
+    /// One value per target is the same term in every order of the targets: compared
+    /// with tests simulated without it.
     fn unrelated(&self) -> Unrelated {
-        Unrelated::TargetOrders
+        Unrelated::SimulatedTests
     }
 
+    /// A line as the reversal at both ends; another shape as its value at every target.
     fn extend(&self, a: &Basis, fit: &Fitted, model: &mut ErrorModel) {
         model.reversal = r4(fit.reversal[0]);
         model.reversal_end = Some(r4(fit.reversal[a.prep.m - 1]));
+        if fit.reversal_shape != Shape::Line {
+            model.reversal_end = None;
+            model.reversal_knots = (a.prep.positions.iter().zip(&fit.reversal))
+                .map(|(p, b)| [*p, r4(*b)])
+                .collect();
+        }
     }
 
     fn removed(&self, a: &Basis, fit: &Fitted) -> Option<Vec<f64>> {
@@ -188,6 +260,8 @@ pub(crate) struct ReversalTest {
     pub t_slope: f64,
     pub p_slope: f64,
     pub df: f64,
+    /// F of the Bi about their weighted mean (m − 1 and σ's df): a reversal that varies
+    /// in any shape, a worn end or section as well as a line.
     pub f_shape: Option<f64>,
     pub p_shape: Option<f64>,
 }
@@ -248,9 +322,17 @@ pub(crate) fn test(
                 return None;
             }
             let t = slope / fit.cov[1][1].sqrt();
+            // Bi about their weighted mean (the standard's one B̄), in units of their
+            // standard errors: χ²/(m − 1) against σ².
+            let bbar = idx.iter().zip(&w).map(|(&i, wi)| wi * b[i]).sum::<f64>() / sw;
+            let rss0: f64 = idx
+                .iter()
+                .zip(&w)
+                .map(|(&i, wi)| wi * (b[i] - bbar).powi(2))
+                .sum();
             let (f_shape, p_shape) = if m >= 3 {
-                let f = fit.rss / (m - 2) as f64;
-                (Some(f), Some(f_upper(f, (m - 2) as f64, df_sigma)))
+                let f = rss0 / (m - 1) as f64;
+                (Some(f), Some(f_upper(f, (m - 1) as f64, df_sigma)))
             } else {
                 (None, None)
             };

@@ -19,6 +19,7 @@ use crate::diagnose::maths::stats::t_two_sided;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
+use crate::diagnose::time_fit::TimeFit;
 use crate::measurement::fmt_target;
 
 /// A scatter σ that changes along the axis (log-linearly in position).
@@ -134,6 +135,39 @@ pub(crate) struct ScatterTest {
     pub sigma_hi: f64,
     /// Relative scatter per cell (σ(P)/σ̄; mean square 1).
     pub rel_scale: Vec<f64>,
+}
+
+/// The scatter per cell relative to √`sigma2` for the outlier test once a scatter variation
+/// is found: the larger of the fitted log-linear scale and each target's own robust scale
+/// (1.4826 × the median |residual| of its readings in both directions, which one outlier
+/// does not inflate), so that a scatter that changes in a step, which a log-linear fit
+/// smooths over, does not make outliers of the readings where it is large.
+///
+/// Every reading counts, those a first pass took for outliers too (its residual from the
+/// fit `full` of the others): with the scatter not yet modelled, that pass takes the
+/// largest readings where the scatter is large, and leaving them out would shrink the
+/// scale exactly there.
+pub(crate) fn outlier_scale(prep: &Prep, t: &ScatterTest, full: &TimeFit, x: &[f64]) -> Vec<f64> {
+    let mut by_target: Vec<Vec<f64>> = vec![Vec::new(); prep.m];
+    for (k, r) in prep.rows.iter().enumerate() {
+        let e = x[k] - full.intercepts[prep.cell(r)] - full.effect(prep, k);
+        if e.is_finite() {
+            by_target[r.i].push(e.abs());
+        }
+    }
+    let sigma = full.sigma2().sqrt();
+    (0..prep.cells())
+        .map(|c| {
+            let v = &mut by_target[c / 2];
+            v.sort_by(f64::total_cmp);
+            let robust = if v.len() >= 4 && sigma > 0.0 {
+                1.4826 * crate::diagnose::maths::stats::quantile_sorted(v, 0.5) / sigma
+            } else {
+                0.0
+            };
+            t.rel_scale[c].max(robust)
+        })
+        .collect()
 }
 
 /// Tests the residuals (one per row, NaN for inactive rows) of a fit with pooled variance

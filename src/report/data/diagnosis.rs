@@ -13,6 +13,8 @@ use serde::Serialize;
 #[derive(Serialize)]
 pub(in crate::report) struct DiagnosisSection<'a> {
     unit: &'static str,
+    /// The model check's verdict in one sentence (findings and checks together).
+    verdict: String,
     findings: Vec<FindingLine<'a>>,
     /// Findings of the tests whose term the held-out prediction does not confirm.
     unconfirmed: Vec<UnconfirmedLine<'a>>,
@@ -146,7 +148,7 @@ impl<'a> From<&'a Finding> for FindingLine<'a> {
             .chain(
                 f.labels()
                     .iter()
-                    .map(|(k, v)| format!("{} = {v}", key_words(k))),
+                    .map(|(k, v)| format!("{} = {}", key_words(k), v.replace('_', " "))),
             )
             .collect::<Vec<_>>()
             .join(", ");
@@ -184,6 +186,7 @@ pub(in crate::report) fn diagnosis_section<'a>(
     });
     DiagnosisSection {
         unit: d.kind.deviation_symbol(),
+        verdict: d.model_check.in_words(),
         findings: d.findings.iter().map(FindingLine::from).collect(),
         unconfirmed: d.unconfirmed.iter().map(UnconfirmedLine::from).collect(),
         has_time_effect: d.residuals.time_effect.is_some(),

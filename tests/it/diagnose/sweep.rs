@@ -67,6 +67,129 @@ fn reversal_and_run_offset_right(c: &Case, d: &Diagnosis) -> bool {
         && rel_err(rms, offsets_rms(c)) <= 0.5
 }
 
+/// A small plan (issue 43): 5 targets without jitter over 200–1000 mm, `runs` runs.
+fn small_plan(rng: &mut Rng, runs: usize) -> TestPlan {
+    let mut plan = standard_plan(rng);
+    let t = plan.targets.as_mut().unwrap();
+    t.end = t.start + rng.range(200.0, 1000.0);
+    t.count = 5;
+    t.jitter = 0.0;
+    plan.runs = runs;
+    plan
+}
+
+/// Clean data on a small plan (5 targets, 3 or 5 runs).
+fn small_clean_case(seed: u64) -> Case {
+    let mut rng = Rng::new(seed, 1501);
+    let sigma = rng.range(0.3, 1.2);
+    let plan = small_plan(&mut rng, if seed.is_multiple_of(2) { 3 } else { 5 });
+    let (start, end, _) = spacing_of(&plan);
+    let model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
+    Case {
+        sim: linear(model, plan, seed),
+        seed,
+        pitch: None,
+        truth: 0.0,
+        at: None,
+    }
+}
+
+/// The nominal target positions of a plan without jitter.
+fn nominal_targets(plan: &TestPlan) -> Vec<f64> {
+    let (start, end, count) = spacing_of(plan);
+    (0..count)
+        .map(|i| start + (end - start) * i as f64 / (count - 1) as f64)
+        .collect()
+}
+
+/// A reversal that is B everywhere but at the targets `worn` (indices), where it is
+/// B + `change`: knots at every target, linear between them.
+fn reversal_at_targets(model: &mut ErrorModel, targets: &[f64], worn: &[usize], change: f64) {
+    model.reversal_knots = (targets.iter().enumerate())
+        .map(|(i, &p)| {
+            [
+                p,
+                model.reversal + if worn.contains(&i) { change } else { 0.0 },
+            ]
+        })
+        .collect();
+}
+
+/// A reversal changed at some targets only, 8–12 standard errors of Bi (σ√(2/n)): worn
+/// at one end (the last target, or the last two), or a damaged section (one inner target),
+/// on a small plan (5 targets, 3 or 5 runs) or a standard one without jitter.
+fn worn_case(seed: u64, small: bool, section: bool) -> Case {
+    let mut rng = Rng::new(seed, 1601);
+    let sigma = rng.range(0.3, 1.2);
+    let mut plan = if small {
+        small_plan(&mut rng, if seed.is_multiple_of(2) { 3 } else { 5 })
+    } else {
+        standard_plan(&mut rng)
+    };
+    plan.targets.as_mut().unwrap().jitter = 0.0;
+    let targets = nominal_targets(&plan);
+    let (start, end, m) = spacing_of(&plan);
+    let mut model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
+    let se_b = sigma * (2.0 / plan.runs as f64).sqrt();
+    let change = rng.range(8.0, 12.0) * se_b * sign(&mut rng);
+    let worn: Vec<usize> = if section {
+        vec![1 + (rng.uniform() * (m - 2) as f64) as usize]
+    } else if m > 5 && rng.uniform() < 0.5 {
+        vec![m - 2, m - 1]
+    } else {
+        vec![m - 1]
+    };
+    reversal_at_targets(&mut model, &targets, &worn, change);
+    Case {
+        sim: linear(model, plan, seed),
+        seed,
+        pitch: None,
+        truth: change,
+        at: None,
+    }
+}
+
+/// A reversal variation of a few targets named with its range within 50 % of the change.
+fn worn_right(c: &Case, d: &Diagnosis) -> bool {
+    let range = param(d, Effect::ReversalVariation, "reversal_range_um");
+    rel_err(range, c.truth.abs()) <= 0.5
+}
+
+/// A reversal along a straight line on a small plan (5 targets, 3 or 5 runs), changing by
+/// 8–12 standard errors of Bi over the axis (6 on 5 targets and 3 runs is a slope t of
+/// about 4.8 on 20 df, at the edge of what the test at 0.05 % per side can tell).
+fn small_reversal_case(seed: u64) -> Case {
+    let mut rng = Rng::new(seed, 1701);
+    let sigma = rng.range(0.3, 1.2);
+    let plan = small_plan(&mut rng, if seed.is_multiple_of(2) { 3 } else { 5 });
+    let (start, end, _) = spacing_of(&plan);
+    let mut model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
+    let se_b = sigma * (2.0 / plan.runs as f64).sqrt();
+    let change = rng.range(8.0, 12.0) * se_b * sign(&mut rng);
+    model.reversal_end = Some(model.reversal + change);
+    Case {
+        sim: linear(model, plan, seed),
+        seed,
+        pitch: None,
+        truth: change,
+        at: None,
+    }
+}
+
+/// Scatter that changes along the axis in a step (issue 43): σ on one side of a point 30–70 %
+/// along the travel, 3–5 times σ on the other, on the scatter plan of the sweep.
+fn scatter_step_case(seed: u64) -> Case {
+    let mut c = scatter_case(seed);
+    let mut rng = Rng::new(seed, 1801);
+    let (start, end, _) = spacing_of(&c.sim.plan);
+    let at = start + rng.range(0.3, 0.7) * (end - start);
+    let m = &mut c.sim.model;
+    let (lo, hi) = (m.scatter, m.scatter_end.unwrap());
+    let gap = 1e-3 * (end - start);
+    m.scatter_knots = vec![[start, lo], [at - gap, lo], [at + gap, hi], [end, hi]];
+    c
+}
+
 /// One case type of the sweep.
 struct Type {
     name: &'static str,
@@ -75,6 +198,9 @@ struct Type {
     hidden: &'static [Effect],
     /// Named right: every hidden effect named, with accurate estimates.
     right: fn(&Case, &Diagnosis) -> bool,
+    /// Measured and printed but not yet held to the rates: a case the diagnosis does not
+    /// meet yet, stated in the README (issue 43 open).
+    open: bool,
 }
 
 fn types() -> Vec<Type> {
@@ -85,84 +211,147 @@ fn types() -> Vec<Type> {
             make: clean_case,
             hidden: &[],
             right: |_, d| d.findings.is_empty(),
+            open: false,
         },
         Type {
             name: "drift",
             make: drift_case,
             hidden: &[Drift],
             right: drift_right,
+            open: false,
         },
         Type {
             name: "warm_up",
             make: |s| warm_up_case(s, false),
             hidden: &[WarmUp],
             right: warm_up_right,
+            open: false,
         },
         Type {
             name: "warm_up without time_s",
             make: |s| warm_up_case(s, true),
             hidden: &[WarmUp],
             right: warm_up_right,
+            open: false,
         },
         Type {
             name: "thermal_growth",
             make: thermal_case,
             hidden: &[ThermalGrowth],
             right: thermal_right,
+            open: false,
         },
         Type {
             name: "run_offset (trend removed)",
             make: run_offset_case,
             hidden: &[RunOffset],
             right: run_offset_right,
+            open: false,
         },
         Type {
             name: "run_offset (random)",
             make: random_run_offset_case,
             hidden: &[RunOffset],
             right: run_offset_right,
+            open: false,
         },
         Type {
             name: "periodic",
             make: periodic_case,
             hidden: &[Periodic],
             right: periodic_right,
+            open: false,
         },
         Type {
             name: "reversal_variation",
             make: reversal_case,
             hidden: &[ReversalVariation],
             right: reversal_right,
+            open: false,
         },
         Type {
             name: "outlier",
             make: outlier_case,
             hidden: &[Outlier],
             right: outlier_right,
+            open: false,
         },
         Type {
             name: "scatter_variation",
             make: scatter_case,
             hidden: &[ScatterVariation],
             right: scatter_right,
+            open: false,
         },
         Type {
             name: "periodic + drift",
             make: periodic_and_drift_case,
             hidden: &[Periodic, Drift],
             right: |c, d| periodic_right(c, d) && d.has(Effect::Drift),
+            open: false,
         },
         Type {
             name: "reversal_variation + outlier",
             make: reversal_and_outlier_case,
             hidden: &[ReversalVariation, Outlier],
             right: |c, d| outlier_right(c, d) && d.has(Effect::ReversalVariation),
+            open: false,
         },
         Type {
             name: "reversal_variation + run_offset",
             make: reversal_and_run_offset_case,
             hidden: &[ReversalVariation, RunOffset],
             right: reversal_and_run_offset_right,
+            open: false,
+        },
+        Type {
+            name: "clean, 5 targets",
+            make: small_clean_case,
+            hidden: &[],
+            right: |_, d| d.findings.is_empty(),
+            open: false,
+        },
+        Type {
+            name: "reversal_variation, 5 targets",
+            make: small_reversal_case,
+            hidden: &[ReversalVariation],
+            right: reversal_right,
+            open: false,
+        },
+        Type {
+            name: "reversal worn at one end, 5 targets",
+            make: |s| worn_case(s, true, false),
+            hidden: &[ReversalVariation],
+            right: worn_right,
+            open: false,
+        },
+        Type {
+            name: "reversal damaged section, 5 targets",
+            make: |s| worn_case(s, true, true),
+            hidden: &[ReversalVariation],
+            right: worn_right,
+            open: false,
+        },
+        Type {
+            name: "reversal worn at one end",
+            make: |s| worn_case(s, false, false),
+            hidden: &[ReversalVariation],
+            right: worn_right,
+            open: false,
+        },
+        Type {
+            name: "reversal damaged section",
+            make: |s| worn_case(s, false, true),
+            hidden: &[ReversalVariation],
+            right: worn_right,
+            open: false,
+        },
+        Type {
+            name: "scatter_variation in a step",
+            make: scatter_step_case,
+            hidden: &[ScatterVariation],
+            right: scatter_right,
+            open: true,
         },
     ]
 }
@@ -212,8 +401,9 @@ fn pct(k: usize, n: usize) -> f64 {
     100.0 * k as f64 / n as f64
 }
 
-/// Every type named right in at least 95 % of its seeds with other findings in at most
-/// 2 %; clean data with any finding in at most 1 %; every kept term with a positive gain.
+/// Every type named right in at least 96 % of its seeds with other findings in at most
+/// 2 % (1 in 50; issue 43); clean data, on standard and on small plans, with any finding in
+/// at most 1 %; every kept term with a positive gain.
 #[test]
 fn sweep_of_every_case_type() {
     let mut table = vec![format!(
@@ -221,7 +411,12 @@ fn sweep_of_every_case_type() {
         "case type", "seeds", "named right %", "other findings %", "unconfirmed %"
     )];
     let mut failures = Vec::new();
+    // SWEEP_ONLY=<part of a name> runs only the matching types (while tuning).
+    let only = std::env::var("SWEEP_ONLY").unwrap_or_default();
     for (k, t) in types().iter().enumerate() {
+        if !t.name.contains(only.as_str()) {
+            continue;
+        }
         let base = 300_000 + 10_000 * k as u64;
         let count = if t.hidden.is_empty() {
             3 * SWEEP
@@ -244,9 +439,9 @@ fn sweep_of_every_case_type() {
         let ok = if t.hidden.is_empty() {
             other <= 1.0
         } else {
-            right >= 95.0 && other <= 2.0
+            right >= 96.0 && other <= 2.0
         };
-        if !ok || r.kept_without_gain > 0 {
+        if (!ok && !t.open) || r.kept_without_gain > 0 {
             failures.push(format!(
                 "{}: named right {right:.1} %, other {other:.1} %, kept without gain {}: {:?}",
                 t.name, r.kept_without_gain, r.wrong
