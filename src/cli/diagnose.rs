@@ -174,6 +174,7 @@ pub fn render(file: &str, d: &Diagnosis) -> String {
     checks(&mut out, d);
     findings(&mut out, d);
     unconfirmed(&mut out, d);
+    detectable(&mut out, d);
     held_out(&mut out, d);
     corrected(&mut out, d);
     for note in &d.notes {
@@ -220,6 +221,20 @@ fn findings(out: &mut String, d: &Diagnosis) {
         let evidence = f.evidence.describe(num);
         let _ = writeln!(out, "      evidence: {evidence}");
         let _ = writeln!(out, "      what to do: {}", f.advice());
+    }
+}
+
+/// The smallest effect of each kind this plan confirms.
+fn detectable(out: &mut String, d: &Diagnosis) {
+    if d.detectable.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "\nWhat this plan can confirm (the size found in 80 % of tests)"
+    );
+    for x in &d.detectable {
+        let _ = writeln!(out, "  {}: {}", x.effect.name(), x.advice);
     }
 }
 

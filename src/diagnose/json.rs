@@ -15,7 +15,9 @@
 //! `shapes` for a term along the axis: `line`, `curve` or `per_target`, each with its
 //! `parameters` and `heldout_rms`), `validation`, `checks`, `model_check` (`verdict`:
 //! `explained`, `effects_found`, `not_explained` or `not_checked`; `checks`; `outside`, each
-//! `statistic`, `side`, `points_to`, `accounted_for_by`, `seen_unconfirmed`; `sentence`), `corrected`, `residuals`,
+//! `statistic`, `side`, `points_to`, `accounted_for_by`, `seen_unconfirmed`; `sentence`), `detectable` (per effect whose test ran: `effect`,
+//! `size` found in 80 % of tests with this plan, `measure` with its unit, `more_targets`
+//! and `size_with_more_targets`, `advice`), `corrected`, `residuals`,
 //! `base_model` and `extended_model` (simulation files as YAML text), `notes`.
 //! Numbers that do not apply are `null`.
 
@@ -40,6 +42,7 @@ struct DiagnosisJson<'a> {
     validation: &'static str,
     checks: Vec<CheckJson<'a>>,
     model_check: &'a super::ModelVerdict,
+    detectable: &'a [super::Detectable],
     corrected: &'a [Corrected],
     residuals: &'a Residuals,
     base_model: String,
@@ -121,6 +124,7 @@ impl Serialize for Diagnosis {
             validation: self.validation,
             checks: self.checks.iter().map(CheckJson::from).collect(),
             model_check: &self.model_check,
+            detectable: &self.detectable,
             corrected: &self.corrected,
             residuals: &self.residuals,
             base_model: self.base_model.to_yaml(),

@@ -31,6 +31,8 @@ mod basis;
 mod checks;
 mod confirm;
 mod corrected;
+mod detectable;
+pub use detectable::Detectable;
 pub mod cross;
 pub mod effects;
 mod extended;
@@ -97,6 +99,8 @@ pub struct Diagnosis {
     pub checks: Vec<ModelCheck>,
     /// What the findings and the checks say together, in one sentence.
     pub model_check: ModelVerdict,
+    /// The smallest effect of each kind this plan confirms ([`detectable`]).
+    pub detectable: Vec<Detectable>,
     pub residuals: Residuals,
     pub corrected: Vec<Corrected>,
     /// The fitted base model (the standard's assumptions), as simulated for the checks.
@@ -161,6 +165,7 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let simulable = fit.guess.simulable;
     let checks = checks::check_base_model(&a, &base_model, simulable, options, &mut notes);
     let model_check = verdict::verdict(&checks, &findings, &unconfirmed);
+    let detectable = detectable::detectable(&a.basis.prep, a.basis.units, a.reversal.as_ref());
     let residuals = residuals::residuals(&a, &fit, &selection.effects);
     let corrected =
         corrected::corrected(&a, &fit, &selection.effects, options.standard, &mut notes);
@@ -178,6 +183,7 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
         validation: VALIDATION,
         checks,
         model_check,
+        detectable,
         residuals,
         corrected,
         base_model,

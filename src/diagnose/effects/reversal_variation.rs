@@ -259,6 +259,8 @@ pub(crate) struct ReversalTest {
     pub center: f64,
     pub t_slope: f64,
     pub p_slope: f64,
+    /// Standard error of the slope.
+    pub se_slope: f64,
     pub df: f64,
     /// F of the Bi about their weighted mean (m − 1 and σ's df): a reversal that varies
     /// in any shape, a worn end or section as well as a line.
@@ -342,6 +344,7 @@ pub(crate) fn test(
                 center,
                 t_slope: t,
                 p_slope: t_two_sided(t, df_sigma),
+                se_slope: fit.cov[1][1].sqrt(),
                 df: df_sigma,
                 f_shape,
                 p_shape,
@@ -363,6 +366,7 @@ pub(crate) fn test(
                 center,
                 t_slope: t,
                 p_slope: t_two_sided(t, df),
+                se_slope: (s2 * fit.cov[1][1]).sqrt(),
                 df,
                 f_shape: None,
                 p_shape: None,

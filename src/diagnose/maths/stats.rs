@@ -161,6 +161,27 @@ pub fn t_two_sided(t: f64, df: f64) -> f64 {
     beta_inc(df / 2.0, 0.5, df / (df + t * t))
 }
 
+/// The t with two-sided p-value `p` on `df` degrees of freedom (|t| such that
+/// P(|T| ≥ t) = p), by bisection on [`t_two_sided`].
+pub fn t_two_sided_quantile(p: f64, df: f64) -> f64 {
+    if !(p > 0.0 && p < 1.0) || df.is_nan() || df <= 0.0 {
+        return f64::NAN;
+    }
+    let (mut lo, mut hi) = (0.0, 1.0);
+    while t_two_sided(hi, df) > p && hi < 1e12 {
+        hi *= 2.0;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if t_two_sided(mid, df) > p {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 /// Upper tail P(F ≥ f) of the F distribution with (d1, d2) degrees of freedom.
 pub fn f_upper(f: f64, d1: f64, d2: f64) -> f64 {
     if f.is_nan() || d1 <= 0.0 || d2 <= 0.0 {

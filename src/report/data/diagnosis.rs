@@ -18,6 +18,8 @@ pub(in crate::report) struct DiagnosisSection<'a> {
     findings: Vec<FindingLine<'a>>,
     /// Findings of the tests whose term the held-out prediction does not confirm.
     unconfirmed: Vec<UnconfirmedLine<'a>>,
+    /// What this plan can confirm, per effect, in words.
+    detectable: Vec<String>,
     /// The time chart shows a kept effect in time against the run means.
     has_time_effect: bool,
     base_rms: String,
@@ -189,6 +191,9 @@ pub(in crate::report) fn diagnosis_section<'a>(
         verdict: d.model_check.in_words(),
         findings: d.findings.iter().map(FindingLine::from).collect(),
         unconfirmed: d.unconfirmed.iter().map(UnconfirmedLine::from).collect(),
+        detectable: (d.detectable.iter())
+            .map(|x| format!("{}: {}", x.effect.name().replace('_', " "), x.advice))
+            .collect(),
         has_time_effect: d.residuals.time_effect.is_some(),
         base_rms: fmt_fixed(d.base.heldout_rms, 3),
         extended_rms: fmt_fixed(d.extended.heldout_rms, 3),

@@ -70,6 +70,23 @@ fn a_reversal_that_varies_per_target_is_confirmed_on_five_targets() {
         .collect();
     assert_eq!(shapes, ["line", "per_target"]);
     assert!(gain["gain_pct"].as_f64().unwrap() > gain["threshold_pct"].as_f64().unwrap());
+    // What the plan could confirm: a reversal changing along the axis, and 10 targets.
+    let x = &d["detectable"][0];
+    assert_eq!(x["effect"], "reversal_variation", "{:#}", d["detectable"]);
+    assert_eq!(x["measure"], "change_over_axis_um");
+    assert_eq!(x["more_targets"], 10);
+    let (size, more) = (
+        x["size"].as_f64().unwrap(),
+        x["size_with_more_targets"].as_f64().unwrap(),
+    );
+    assert!(size > 0.0 && more < size, "{x:#}");
+    assert!(
+        x["advice"]
+            .as_str()
+            .unwrap()
+            .starts_with("with 5 targets and 5 runs a reversal variation under "),
+        "{x:#}"
+    );
     // The extended model carries the reversal per target.
     let model = d["extended_model"].as_str().unwrap();
     assert!(model.contains("reversal_knots"), "{model}");
