@@ -210,8 +210,9 @@ fn sentence(
                 "no effect confirmed, but the base model does not explain the data".to_string()
             } else {
                 format!(
-                    "{} found, and the base model with them does not explain everything",
-                    effects.join(", ")
+                    "{} found, and the base model with {} does not explain everything",
+                    effects.join(", "),
+                    if effects.len() == 1 { "it" } else { "them" }
                 )
             };
             format!(
