@@ -120,6 +120,19 @@ struct Case {
     at: Option<(u32, Direction, usize)>,
 }
 
+impl Case {
+    /// A linear axis with its hidden value `truth` and nothing located.
+    fn linear(model: ErrorModel, plan: TestPlan, seed: u64, truth: f64) -> Case {
+        Case {
+            sim: linear(model, plan, seed),
+            seed,
+            pitch: None,
+            truth,
+            at: None,
+        }
+    }
+}
+
 fn linear(model: ErrorModel, plan: TestPlan, seed: u64) -> Simulation {
     Simulation {
         kind: AxisKind::Linear,

@@ -85,13 +85,7 @@ fn small_clean_case(seed: u64) -> Case {
     let plan = small_plan(&mut rng, if seed.is_multiple_of(2) { 3 } else { 5 });
     let (start, end, _) = spacing_of(&plan);
     let model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
-    Case {
-        sim: linear(model, plan, seed),
-        seed,
-        pitch: None,
-        truth: 0.0,
-        at: None,
-    }
+    Case::linear(model, plan, seed, 0.0)
 }
 
 /// The nominal target positions of a plan without jitter.
@@ -115,6 +109,11 @@ fn reversal_at_targets(model: &mut ErrorModel, targets: &[f64], worn: &[usize], 
         .collect();
 }
 
+/// A change of the reversal of 8–12 standard errors of Bi, σ√(2/n), either sign.
+fn small_plan_change(rng: &mut Rng, sigma: f64, runs: usize) -> f64 {
+    rng.range(8.0, 12.0) * sigma * (2.0 / runs as f64).sqrt() * sign(rng)
+}
+
 /// A reversal changed at some targets only, 8–12 standard errors of Bi (σ√(2/n)): worn
 /// at one end (the last target, or the last two), or a damaged section (one inner target),
 /// on a small plan (5 targets, 3 or 5 runs) or a standard one without jitter.
@@ -130,8 +129,7 @@ fn worn_case(seed: u64, small: bool, section: bool) -> Case {
     let targets = nominal_targets(&plan);
     let (start, end, m) = spacing_of(&plan);
     let mut model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
-    let se_b = sigma * (2.0 / plan.runs as f64).sqrt();
-    let change = rng.range(8.0, 12.0) * se_b * sign(&mut rng);
+    let change = small_plan_change(&mut rng, sigma, plan.runs);
     let worn: Vec<usize> = if section {
         vec![1 + (rng.uniform() * (m - 2) as f64) as usize]
     } else if m > 5 && rng.uniform() < 0.5 {
@@ -140,13 +138,7 @@ fn worn_case(seed: u64, small: bool, section: bool) -> Case {
         vec![m - 1]
     };
     reversal_at_targets(&mut model, &targets, &worn, change);
-    Case {
-        sim: linear(model, plan, seed),
-        seed,
-        pitch: None,
-        truth: change,
-        at: None,
-    }
+    Case::linear(model, plan, seed, change)
 }
 
 /// A reversal variation of a few targets named with its range within 50 % of the change.
@@ -164,16 +156,9 @@ fn small_reversal_case(seed: u64) -> Case {
     let plan = small_plan(&mut rng, if seed.is_multiple_of(2) { 3 } else { 5 });
     let (start, end, _) = spacing_of(&plan);
     let mut model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
-    let se_b = sigma * (2.0 / plan.runs as f64).sqrt();
-    let change = rng.range(8.0, 12.0) * se_b * sign(&mut rng);
+    let change = small_plan_change(&mut rng, sigma, plan.runs);
     model.reversal_end = Some(model.reversal + change);
-    Case {
-        sim: linear(model, plan, seed),
-        seed,
-        pitch: None,
-        truth: change,
-        at: None,
-    }
+    Case::linear(model, plan, seed, change)
 }
 
 /// Scatter that changes along the axis in a step (issue 43): σ on one side of a point 30–70 %
