@@ -180,7 +180,6 @@ fn sentence(
     name: Name,
 ) -> String {
     let effects: Vec<String> = found.iter().map(|e| name(e.name())).collect();
-    let findings = found;
     let listed = (outside.iter())
         .map(|o| describe(o, name))
         .collect::<Vec<_>>()
@@ -189,7 +188,7 @@ fn sentence(
         VerdictKind::Explained => format!(
             "none: the base model explains the data (all {checks} model checks inside their simulated 95 % bands)"
         ),
-        VerdictKind::NotChecked if findings.is_empty() => {
+        VerdictKind::NotChecked if found.is_empty() => {
             "none found; no model check could be made (a single run, or a plan that cannot be simulated), so nothing says the base model explains the data".to_string()
         }
         VerdictKind::NotChecked => format!(
@@ -206,7 +205,7 @@ fn sentence(
         ),
         VerdictKind::NotExplained => {
             let unexplained = outside.iter().filter(|o| o.accounted_for_by.is_empty()).count();
-            let lead = if findings.is_empty() {
+            let lead = if found.is_empty() {
                 "no effect confirmed, but the base model does not explain the data".to_string()
             } else {
                 format!(
