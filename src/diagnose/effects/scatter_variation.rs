@@ -156,17 +156,28 @@ pub(crate) fn outlier_scale(prep: &Prep, t: &ScatterTest, full: &TimeFit, x: &[f
         }
     }
     let sigma = full.sigma2().sqrt();
-    (0..prep.cells())
-        .map(|c| {
-            let v = &mut by_target[c / 2];
-            v.sort_by(f64::total_cmp);
-            let robust = if v.len() >= 4 && sigma > 0.0 {
-                1.4826 * crate::diagnose::maths::stats::quantile_sorted(v, 0.5) / sigma
-            } else {
-                0.0
-            };
-            t.rel_scale[c].max(robust)
+    let robust = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        if v.len() >= 4 && sigma > 0.0 {
+            1.4826 * crate::diagnose::maths::stats::quantile_sorted(v, 0.5) / sigma
+        } else {
+            0.0
+        }
+    };
+    // A target's own median rests on a dozen readings and comes out low by chance now and
+    // then, just where its largest reading then looks extreme: its neighbours' readings
+    // with its own steady it.
+    let own: Vec<f64> = (0..prep.m)
+        .map(|i| robust(&mut by_target[i].clone()))
+        .collect();
+    let near: Vec<f64> = (0..prep.m)
+        .map(|i| {
+            let (a, b) = (i.saturating_sub(1), (i + 1).min(prep.m - 1));
+            robust(&mut by_target[a..=b].concat())
         })
+        .collect();
+    (0..prep.cells())
+        .map(|c| t.rel_scale[c].max(own[c / 2]).max(near[c / 2]))
         .collect()
 }
 
