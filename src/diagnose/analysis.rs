@@ -8,11 +8,12 @@
 //! ([`super::effects::periodic`]).
 
 use super::basis::Basis;
+use super::detectable::Detectable;
 use super::effects::outlier::{self, Hit};
 use super::effects::periodic::{self, Search};
 use super::effects::reversal_variation::{self, ReversalTest};
 use super::effects::scatter_variation::{self, ScatterTest};
-use super::effects::{Finding, drift, run_offset, thermal_growth, warm_up};
+use super::effects::{Effect, Finding, drift, run_offset, thermal_growth, warm_up};
 use super::finding::Units;
 use super::options::ALPHA;
 use super::prep::{Prep, TimeUnit};
@@ -95,6 +96,28 @@ impl<'a> Analysis<'a> {
 }
 
 impl Analysis<'_> {
+    /// The smallest confirmable size of every effect, in the order of the vocabulary.
+    pub fn detectable(&self) -> Vec<Detectable> {
+        let (p, u, tt) = (&self.basis.prep, self.basis.units, &self.time);
+        Effect::ALL
+            .iter()
+            .map(|&e| match e {
+                Effect::Drift => drift::detectable(p, u, tt.drift.as_ref()),
+                Effect::WarmUp => warm_up::detectable(p, u, tt.warm.as_ref()),
+                Effect::ThermalGrowth => thermal_growth::detectable(p, u, tt.thermal.as_ref()),
+                Effect::RunOffset => {
+                    run_offset::detectable(p, u, tt.runs.as_ref(), tt.sigma2, tt.full.rows.len())
+                }
+                Effect::Periodic => periodic::detectable(p, u, &self.periodic),
+                Effect::ReversalVariation => {
+                    reversal_variation::detectable(p, u, self.reversal.as_ref())
+                }
+                Effect::Outlier => outlier::detectable(p, u, tt.sigma2, tt.df),
+                Effect::ScatterVariation => scatter_variation::detectable(p, tt.df),
+            })
+            .collect()
+    }
+
     /// Each effect's findings from its own test, in the order of the vocabulary.
     pub fn findings(&self) -> Vec<Finding> {
         let (b, t) = (&self.basis, &self.time);

@@ -15,9 +15,10 @@
 //! `shapes` for a term along the axis: `line`, `curve` or `per_target`, each with its
 //! `parameters` and `heldout_rms`), `validation`, `checks`, `model_check` (`verdict`:
 //! `explained`, `effects_found`, `not_explained` or `not_checked`; `checks`; `outside`, each
-//! `statistic`, `side`, `points_to`, `accounted_for_by`, `seen_unconfirmed`; `sentence`), `detectable` (per effect whose test ran: `effect`,
-//! `size` found in 80 % of tests with this plan, `measure` with its unit, `more_targets`
-//! and `size_with_more_targets`, `advice`), `corrected`, `residuals`,
+//! `statistic`, `side`, `points_to`, `accounted_for_by`, `seen_unconfirmed`; `sentence`), `detectable` (every effect: `effect`,
+//! `size` found in 80 % of tests with this plan, null when the plan cannot test it,
+//! `measure` with its unit, `assumed` (the period or time constant the size assumes,
+//! keyed with units), `more_targets` and `size_with_more_targets`, `advice`), `corrected`, `residuals`,
 //! `base_model` and `extended_model` (simulation files as YAML text), `notes`.
 //! Numbers that do not apply are `null`.
 

@@ -165,7 +165,7 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let simulable = fit.guess.simulable;
     let checks = checks::check_base_model(&a, &base_model, simulable, options, &mut notes);
     let model_check = verdict::verdict(&checks, &findings, &unconfirmed);
-    let detectable = detectable::detectable(&a.basis.prep, a.basis.units, a.reversal.as_ref());
+    let detectable = a.detectable();
     let residuals = residuals::residuals(&a, &fit, &selection.effects);
     let corrected =
         corrected::corrected(&a, &fit, &selection.effects, options.standard, &mut notes);

@@ -7,6 +7,10 @@ use crate::evaluate::StandardId;
 /// without a finding in at least 99.2 % of tests.
 pub const ALPHA: f64 = 0.001;
 
+/// The share of tests in which an effect of the size a plan is said to confirm is found
+/// (`detectable`).
+pub const POWER: f64 = 0.80;
+
 /// Options of a diagnosis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {

@@ -274,25 +274,9 @@ fn run_offset_case(seed: u64) -> Case {
     let mut model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
     // Zero shifts not ordered in time: random, with mean and linear trend over the runs
     // removed, RMS 3–6 σ/√n.
-    let mut z: Vec<f64> = (0..n).map(|_| rng.normal()).collect();
-    let jbar = (n - 1) as f64 / 2.0;
-    let mean = z.iter().sum::<f64>() / n as f64;
-    for v in &mut z {
-        *v -= mean;
-    }
-    let sjj: f64 = (0..n).map(|j| (j as f64 - jbar).powi(2)).sum();
-    let slope: f64 = z
-        .iter()
-        .enumerate()
-        .map(|(j, v)| (j as f64 - jbar) * v)
-        .sum::<f64>()
-        / sjj;
-    for (j, v) in z.iter_mut().enumerate() {
-        *v -= slope * (j as f64 - jbar);
-    }
-    let rms = (z.iter().map(|v| v * v).sum::<f64>() / n as f64).sqrt();
+    let unit = offsets_beyond_a_line(n, 1.0, &mut rng);
     let target = rng.range(3.0, 6.0) * sigma / (n as f64).sqrt();
-    model.run_offsets = z.iter().map(|v| v * target / rms).collect();
+    model.run_offsets = unit.iter().map(|v| v * target).collect();
     Case {
         sim: linear(model, plan, seed),
         seed,
@@ -300,6 +284,24 @@ fn run_offset_case(seed: u64) -> Case {
         truth: target,
         at: None,
     }
+}
+
+/// Random run offsets with RMS `rms` about the straight line through them in run order
+/// (what no drift explains).
+fn offsets_beyond_a_line(runs: usize, rms: f64, rng: &mut Rng) -> Vec<f64> {
+    let jbar = (runs - 1) as f64 / 2.0;
+    let mut z: Vec<f64> = (0..runs).map(|_| rng.normal()).collect();
+    let mean = z.iter().sum::<f64>() / runs as f64;
+    let sjj: f64 = (0..runs).map(|j| (j as f64 - jbar).powi(2)).sum();
+    let slope = (z.iter().enumerate())
+        .map(|(j, v)| (j as f64 - jbar) * v)
+        .sum::<f64>()
+        / sjj;
+    for (j, v) in z.iter_mut().enumerate() {
+        *v -= mean + slope * (j as f64 - jbar);
+    }
+    let now = (z.iter().map(|v| v * v).sum::<f64>() / runs as f64).sqrt();
+    z.iter().map(|v| v * rms / now).collect()
 }
 
 fn periodic_case(seed: u64) -> Case {

@@ -4,9 +4,10 @@
 //! rate of the trend model, against the scatter or, when the run offsets are real, against
 //! the run-to-run variation.
 
-use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
+use crate::diagnose::detectable::{Detectable, plan_words, span_words, t_shift, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::stats::t_two_sided;
@@ -182,4 +183,27 @@ pub(crate) fn test(
         origin,
         against,
     })
+}
+
+/// What this plan confirms: a drift whose total over the test reaches the t shift of
+/// [`crate::diagnose::detectable::POWER`] at the level, in standard errors of the rate
+/// (against the scatter, or the run-to-run variation when run offsets are real) times
+/// the test's span.
+pub(crate) fn detectable(p: &Prep, u: Units, d: Option<&DriftTest>) -> Detectable {
+    let measure = format!("total_{}", u.dev());
+    let Some(d) = d else {
+        return Detectable::untestable(
+            Effect::Drift,
+            measure,
+            "a drift needs at least two runs and readings left beyond the time model",
+        );
+    };
+    let size = t_shift(ALPHA, d.test.df) * d.test.se * p.t_span;
+    let advice = format!(
+        "{} over {} a drift under {} over the test may go unconfirmed",
+        plan_words(p.m, p.n),
+        span_words(p),
+        with_unit(size, u)
+    );
+    Detectable::sized(Effect::Drift, measure, size, advice)
 }

@@ -10,13 +10,15 @@
 //! found is set aside and the search repeats. A cell needs n ≥ 3 readings: with two, either
 //! could be the odd one.
 
-use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::{ErrorModel, Outlier as SimulatedOutlier};
 use crate::diagnose::basis::Basis;
+use crate::diagnose::detectable::{Detectable, plan_words, t_shift, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::stats::t_two_sided;
 use crate::diagnose::model::r4;
+use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
 use crate::diagnose::time_fit::{Terms, fit};
 use crate::measurement::fmt_target;
@@ -232,4 +234,36 @@ pub(crate) fn detect(
         active[k] = false;
     }
     hits
+}
+
+/// What this plan confirms: one reading off by a size whose externally studentised
+/// residual reaches the t shift of [`crate::diagnose::detectable::POWER`] at the
+/// Bonferroni level over all readings. The residual keeps √(1 − h) of the size, h being
+/// the reading's leverage: 1/n for its cell's mean and about (n + 1)/N for the run
+/// effects, the drift and the thermal growth of the time model.
+pub(crate) fn detectable(p: &Prep, u: Units, sigma2: f64, df: f64) -> Detectable {
+    let measure = format!("size_{}", u.dev());
+    if p.n < 3 {
+        return Detectable::untestable(
+            Effect::Outlier,
+            measure,
+            "an odd reading needs at least three runs (of two readings, either could be it)",
+        );
+    }
+    if !(df >= 3.0 && sigma2 > 0.0) {
+        return Detectable::untestable(
+            Effect::Outlier,
+            measure,
+            "too few readings beyond the time model",
+        );
+    }
+    let total = p.rows.len() as f64;
+    let h = 1.0 / p.n as f64 + (p.n as f64 + 1.0) / total;
+    let size = t_shift(ALPHA / total, df - 1.0) * sigma2.sqrt() / (1.0 - h).sqrt();
+    let advice = format!(
+        "{} a single reading off by less than {} may go unconfirmed",
+        plan_words(p.m, p.n),
+        with_unit(size, u)
+    );
+    Detectable::sized(Effect::Outlier, measure, size, advice)
 }

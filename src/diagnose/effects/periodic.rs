@@ -23,14 +23,17 @@
 //! of two resolves nothing, and the diagnosis says which plan would (Hemingray et al.
 //! 1971, §4: a short travel of about 25 mm with about 0.5 mm steps).
 
-use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::{ErrorModel, PeriodicTerm};
 use crate::diagnose::basis::Basis;
+use crate::diagnose::detectable::{Detectable, plan_words, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::periodogram::{Peak, Resolution, TREND_DEGREE, Trend, resolution};
-use crate::diagnose::maths::stats::max_of;
+use crate::diagnose::maths::stats::{f_upper_quantile, max_of, noncentrality_for_power};
 use crate::diagnose::model::r4;
+use crate::diagnose::options::POWER;
+use crate::diagnose::prep::Prep;
 use crate::units::AxisKind;
 use std::f64::consts::TAU;
 
@@ -186,6 +189,15 @@ pub(crate) struct Search {
     pub max_f: f64,
     /// RMS of the target means about the smooth trend, µm or arcsec.
     pub trend_rms: f64,
+    /// The amplitude this plan confirms in [`POWER`] of tests and its period.
+    pub smallest: Option<Smallest>,
+}
+
+/// A periodic error of `amplitude` at `period` found in [`POWER`] of tests.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Smallest {
+    pub period: f64,
+    pub amplitude: f64,
 }
 
 /// Effective number of independent trial frequencies in [f_lo, f_hi] over a travel of
@@ -215,6 +227,7 @@ pub(crate) fn search(
         periodogram: Vec::new(),
         max_f: f64::NAN,
         trend_rms: f64::NAN,
+        smallest: None,
     };
     if positions.len() < TREND_DEGREE + 2 {
         return out;
@@ -261,6 +274,16 @@ pub(crate) fn search(
     } else {
         alpha
     };
+    out.smallest = var.and_then(|_| {
+        smallest(
+            &trend,
+            scanner.trend_dof() - 2.0,
+            &res,
+            pitch_ok,
+            alpha,
+            m_eff,
+        )
+    });
     if let Some(p) = pitch_ok {
         let at = scanner.peak(1.0 / p);
         let fap = fap_of(&at, 1.0);
@@ -279,6 +302,68 @@ pub(crate) fn search(
         out.peak = Some(scan_peak);
     }
     out
+}
+
+/// What this plan confirms (with the scatter known): the amplitude at which the F test
+/// of the peak, at the level of one trial (the declared pitch at `alpha`/2, or one of
+/// the `trials` of the scan at `alpha`), rejects in [`POWER`] of tests; the noncentrality
+/// is the amplitude² times the sinusoid's weighted energy beyond the trend, averaged
+/// over its phase. The period is the declared pitch when the plan resolves it, else the
+/// middle of the resolvable range on a log scale.
+fn smallest(
+    trend: &Trend,
+    dof: f64,
+    res: &Resolution,
+    pitch: Option<f64>,
+    alpha: f64,
+    trials: f64,
+) -> Option<Smallest> {
+    if dof < 1.0 {
+        return None;
+    }
+    let (period, level) = match pitch {
+        Some(p) => (p, alpha / 2.0),
+        None => (
+            (res.p_min * res.p_max).sqrt(),
+            -((-alpha).ln_1p() / trials).exp_m1(),
+        ),
+    };
+    let critical = f_upper_quantile(level, 2.0, dof);
+    let lambda = noncentrality_for_power(critical, 2.0, dof, POWER);
+    let amplitude = (lambda / trend.sinusoid_information(1.0 / period)).sqrt();
+    (amplitude.is_finite() && amplitude > 0.0).then_some(Smallest { period, amplitude })
+}
+
+/// What this plan confirms: [`smallest`], or why the plan cannot test a periodic error.
+pub(crate) fn detectable(p: &Prep, u: Units, search: &Search) -> Detectable {
+    let measure = format!("amplitude_{}", u.dev());
+    let res = &search.resolution;
+    if !res.applicable {
+        return Detectable::untestable(
+            Effect::Periodic,
+            measure,
+            &format!(
+                "{} targets at this spacing resolve no period (the search needs at least 10 targets, and periods from twice the spacing to a third of the travel at least a factor of two apart)",
+                p.m
+            ),
+        );
+    }
+    let Some(s) = search.smallest else {
+        return Detectable::untestable(
+            Effect::Periodic,
+            measure,
+            "the scatter is not known (one run)",
+        );
+    };
+    let advice = format!(
+        "{} a periodic error of period {} {} with an amplitude under {} may go unconfirmed",
+        plan_words(p.m, p.n),
+        fmt(s.period),
+        u.pos(),
+        with_unit(s.amplitude, u)
+    );
+    Detectable::sized(Effect::Periodic, measure, s.amplitude, advice)
+        .assuming(format!("period_{}", u.pos()), s.period)
 }
 
 /// The short fine-step test that measures a periodic error of pitch `pitch` (or looks for

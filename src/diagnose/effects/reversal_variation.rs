@@ -13,15 +13,17 @@
 //! line leaves out what the line took of it. With n = 1 the slope is tested against the
 //! line's own residuals (df = m − 2).
 
-use super::{Estimate, Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Estimate, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
+use crate::diagnose::detectable::{Detectable, plan_words, t_shift, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::linalg::least_squares;
 use crate::diagnose::maths::stats::{f_upper, t_two_sided};
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::prep::Prep;
 use crate::diagnose::shape::Shape;
 use crate::measurement::fmt_target;
 use crate::units::AxisKind;
@@ -373,4 +375,40 @@ pub(crate) fn test(
             })
         }
     }
+}
+
+/// What this plan confirms: a reversal changing linearly by the size over the measured
+/// travel. Its test of the slope of Bi at half the level finds a change Δ in
+/// [`crate::diagnose::detectable::POWER`] of tests when Δ / se(Δ) reaches the t shift of
+/// that power, se(Δ) being the slope's standard error times the travel.
+pub(crate) fn detectable(p: &Prep, u: Units, r: Option<&ReversalTest>) -> Detectable {
+    let measure = format!("change_over_axis_{}", u.dev());
+    let Some(r) = r else {
+        return Detectable::untestable(
+            Effect::ReversalVariation,
+            measure,
+            "Bi along the axis need two targets with both directions, and a scatter or four targets",
+        );
+    };
+    let size = t_shift(ALPHA / 2.0, r.df) * r.se_slope * (p.hi - p.lo);
+    // Equally spaced targets over the same travel: se(slope) ∝ 1/√Σ(x − x̄)², and
+    // Σ(x − x̄)² = L²·m(m + 1)/(12(m − 1)).
+    let spread = |m: f64| m * (m + 1.0) / (12.0 * (m - 1.0));
+    let more = (p.m < 10).then_some(10);
+    let with_more = more.map(|k| size * (spread(p.m as f64) / spread(k as f64)).sqrt());
+    let advice = format!(
+        "{} a reversal variation under {} over the axis may go unconfirmed",
+        plan_words(p.m, p.n),
+        with_unit(size, u)
+    );
+    let mut x = Detectable::sized(Effect::ReversalVariation, measure, size, advice);
+    if let (Some(k), Some(s), Some(_)) = (more, with_more, x.size) {
+        x.advice += &format!(
+            "; {k} targets over the same travel would confirm about {}",
+            with_unit(s, u)
+        );
+        x.more_targets = more;
+        x.size_with_more_targets = with_more;
+    }
+    x
 }

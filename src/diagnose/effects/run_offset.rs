@@ -3,14 +3,16 @@
 //! `time.rs`) takes what a straight line and a warm-up curve in time leave of the between-run variation, against the pure
 //! scatter.
 
-use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
+use crate::diagnose::detectable::{Detectable, plan_words, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::maths::stats::f_upper;
+use crate::diagnose::maths::stats::{f_upper, f_upper_quantile, noncentrality_for_power};
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::options::POWER;
 use crate::diagnose::prep::Prep;
 use crate::diagnose::time_fit::TimeFit;
 
@@ -177,4 +179,43 @@ pub(crate) fn offsets(prep: &Prep, trend: &TimeFit) -> Vec<f64> {
         *o -= mean;
     }
     offsets
+}
+
+/// What this plan confirms: run offsets of an RMS (over the runs, about the straight line
+/// through them in run order: what no drift explains) at which the F test at the level
+/// rejects in [`POWER`] of tests. Such offsets add rows × RMS² / σ² to the
+/// noncentrality, of which a warm-up curve beside the line takes its share (the test
+/// keeps `df1` of the n − 2 degrees of freedom the line leaves).
+pub(crate) fn detectable(
+    p: &Prep,
+    u: Units,
+    runs: Option<&RunTest>,
+    sigma2: f64,
+    rows: usize,
+) -> Detectable {
+    let measure = format!("rms_{}", u.dev());
+    let Some(r) = runs.filter(|_| sigma2 > 0.0 && rows > 0) else {
+        return Detectable::untestable(
+            Effect::RunOffset,
+            measure,
+            "run offsets beyond a drift need at least three runs and a scatter",
+        );
+    };
+    if p.n < 3 {
+        return Detectable::untestable(
+            Effect::RunOffset,
+            measure,
+            "with two runs, an offset between them is a drift",
+        );
+    }
+    let critical = f_upper_quantile(ALPHA, r.df1, r.df2);
+    let lambda = noncentrality_for_power(critical, r.df1, r.df2, POWER);
+    let share = r.df1 / (p.n as f64 - 2.0);
+    let size = (lambda * sigma2 / (rows as f64 * share)).sqrt();
+    let advice = format!(
+        "{} run offsets under {} RMS about a line through them may go unconfirmed",
+        plan_words(p.m, p.n),
+        with_unit(size, u)
+    );
+    Detectable::sized(Effect::RunOffset, measure, size, advice)
 }

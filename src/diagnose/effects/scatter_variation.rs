@@ -10,12 +10,13 @@
 //! of the slope with the regression's own residual variance (df = cells − 2), which needs
 //! no normality of the log variances. Needs n ≥ 3 and m ≥ 3.
 
-use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
+use crate::diagnose::detectable::{Detectable, plan_words, t_shift};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::maths::stats::t_two_sided;
+use crate::diagnose::maths::stats::{t_two_sided, trigamma};
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
@@ -257,4 +258,33 @@ pub(crate) fn test_along(
         sigma_hi: (kappa * shape(prep.hi)).sqrt(),
         rel_scale,
     })
+}
+
+/// What this plan confirms: a scatter changing log-linearly along the axis by a ratio
+/// (σ at the last target over σ at the first, or its inverse) whose log slope reaches
+/// the t shift of [`crate::diagnose::detectable::POWER`] at the level (df = cells − 2).
+/// A cell's log variance on ν degrees of freedom scatters by ψ′(ν/2) (the trigamma
+/// function); ν is the time model's df shared among the cells. σ's log changes by half
+/// the variance's.
+pub(crate) fn detectable(p: &Prep, df: f64) -> Detectable {
+    let measure = "ratio_end_to_start".to_string();
+    let cells = p.cells();
+    if p.n < 3 || p.m < 3 || df.is_nan() || df <= 0.0 {
+        return Detectable::untestable(
+            Effect::ScatterVariation,
+            measure,
+            "a scatter per target needs at least three runs and three targets",
+        );
+    }
+    let nu = df / cells as f64;
+    let sxx = 2.0 * (p.positions.iter().map(|x| (x - p.pbar).powi(2))).sum::<f64>();
+    let se_slope = (trigamma(nu / 2.0) / sxx).sqrt();
+    let log_ratio = t_shift(ALPHA, cells as f64 - 2.0) * se_slope * p.length() / 2.0;
+    let size = log_ratio.exp();
+    let advice = format!(
+        "{} a scatter that changes along the axis by less than a factor {} between its ends may go unconfirmed",
+        plan_words(p.m, p.n),
+        fmt(size)
+    );
+    Detectable::sized(Effect::ScatterVariation, measure, size, advice)
 }

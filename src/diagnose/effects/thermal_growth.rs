@@ -3,14 +3,16 @@
 //! order by the joint time tests of `time.rs`) takes the position × time coefficient of the full time model,
 //! against the pure scatter.
 
-use super::{Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
+use crate::diagnose::detectable::{Detectable, plan_words, span_words, t_shift, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::stats::t_two_sided;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
+use crate::diagnose::prep::Prep;
 use crate::diagnose::time_fit::CoefTest;
 use crate::diagnose::time_fit::TimeFit;
 use crate::measurement::fmt_target;
@@ -150,4 +152,26 @@ pub(crate) fn test(full: &TimeFit, sigma2: f64, df: f64) -> Option<CoefTest> {
         p: t_two_sided(t, df),
         df,
     })
+}
+
+/// What this plan confirms: a growth over the measured travel and the test whose
+/// position × time coefficient reaches the t shift of
+/// [`crate::diagnose::detectable::POWER`] at the level, in its standard errors.
+pub(crate) fn detectable(p: &Prep, u: Units, t: Option<&CoefTest>) -> Detectable {
+    let measure = format!("growth_over_travel_and_test_{}", u.dev());
+    let Some(t) = t else {
+        return Detectable::untestable(
+            Effect::ThermalGrowth,
+            measure,
+            "a growth with time along the axis needs two runs, two targets and readings left beyond the time model",
+        );
+    };
+    let size = t_shift(ALPHA, t.df) * t.se * p.length() * p.t_span;
+    let advice = format!(
+        "{} over {} a growth under {} over the measured travel and the test may go unconfirmed",
+        plan_words(p.m, p.n),
+        span_words(p),
+        with_unit(size, u)
+    );
+    Detectable::sized(Effect::ThermalGrowth, measure, size, advice)
 }

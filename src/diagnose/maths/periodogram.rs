@@ -262,6 +262,16 @@ impl Trend {
         project_out_pairs(&self.basis, v);
     }
 
+    /// The weighted energy a sinusoid of unit amplitude and frequency `f` keeps beyond
+    /// the trend, averaged over its phase: an amplitude A adds A² times this to the
+    /// reduction of the residual sum of squares its fit makes (the noncentrality of the
+    /// test when the weights are 1/variance).
+    pub fn sinusoid_information(&self, f: f64) -> f64 {
+        let mut v = Vec::with_capacity(self.positions.len());
+        self.project(f, &mut v);
+        v.iter().map(|[s, c]| s * s + c * c).sum::<f64>() / 2.0
+    }
+
     /// The grid of [`Scanner::best`] over [f_lo, f_hi] with its columns.
     pub fn grid(&self, f_lo: f64, f_hi: f64, length: f64) -> Grid {
         let step = 1.0 / (OVERSAMPLE * length);

@@ -161,27 +161,6 @@ pub fn t_two_sided(t: f64, df: f64) -> f64 {
     beta_inc(df / 2.0, 0.5, df / (df + t * t))
 }
 
-/// The t with two-sided p-value `p` on `df` degrees of freedom (|t| such that
-/// P(|T| ≥ t) = p), by bisection on [`t_two_sided`].
-pub fn t_two_sided_quantile(p: f64, df: f64) -> f64 {
-    if !(p > 0.0 && p < 1.0) || df.is_nan() || df <= 0.0 {
-        return f64::NAN;
-    }
-    let (mut lo, mut hi) = (0.0, 1.0);
-    while t_two_sided(hi, df) > p && hi < 1e12 {
-        hi *= 2.0;
-    }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if t_two_sided(mid, df) > p {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
 /// Upper tail P(F ≥ f) of the F distribution with (d1, d2) degrees of freedom.
 pub fn f_upper(f: f64, d1: f64, d2: f64) -> f64 {
     if f.is_nan() || d1 <= 0.0 || d2 <= 0.0 {
@@ -194,6 +173,94 @@ pub fn f_upper(f: f64, d1: f64, d2: f64) -> f64 {
         return 0.0;
     }
     beta_inc(d2 / 2.0, d1 / 2.0, d2 / (d2 + d1 * f))
+}
+
+/// The f with P(F(d1, d2) ≥ f) = `p`, by bisection on [`f_upper`].
+pub fn f_upper_quantile(p: f64, d1: f64, d2: f64) -> f64 {
+    if !(p > 0.0 && p < 1.0 && d1 > 0.0 && d2 > 0.0) {
+        return f64::NAN;
+    }
+    bisect_increasing(|f| -f_upper(f, d1, d2), -p, 1e300)
+}
+
+/// Upper tail P(F′ ≥ f) of the noncentral F distribution with (d1, d2) degrees of freedom
+/// and noncentrality λ: the Poisson(λ/2) mixture of central F tails with d1 + 2j numerator
+/// degrees of freedom (Johnson, Kotz and Balakrishnan 1995, "Continuous Univariate
+/// Distributions" vol. 2, §30.3), summed over the weights that matter.
+pub fn noncentral_f_upper(f: f64, d1: f64, d2: f64, lambda: f64) -> f64 {
+    if f.is_nan() || lambda.is_nan() || d1 <= 0.0 || d2 <= 0.0 || lambda < 0.0 {
+        return f64::NAN;
+    }
+    if f <= 0.0 {
+        return 1.0;
+    }
+    let half = lambda / 2.0;
+    let x = d2 / (d2 + d1 * f);
+    let ln_weight = |j: f64| -half + if j > 0.0 { j * half.ln() } else { 0.0 } - ln_gamma(j + 1.0);
+    // The weights peak at j ≈ λ/2 and are negligible 12 standard deviations away.
+    let spread = 12.0 * half.sqrt() + 12.0;
+    let (lo, hi) = ((half - spread).max(0.0).floor(), (half + spread).ceil());
+    let mut sum = 0.0;
+    let mut j = lo;
+    while j <= hi {
+        sum += ln_weight(j).exp() * beta_inc(d2 / 2.0, d1 / 2.0 + j, x);
+        j += 1.0;
+    }
+    sum.min(1.0)
+}
+
+/// The noncentrality λ at which a test that rejects when F(d1, d2) ≥ `critical` does so
+/// with probability `power` (the power of an F test, or of a two-sided t test as F(1, d2),
+/// used to say what a plan can confirm): [`noncentral_f_upper`] solved for λ.
+pub fn noncentrality_for_power(critical: f64, d1: f64, d2: f64, power: f64) -> f64 {
+    if !(critical > 0.0 && d1 > 0.0 && d2 > 0.0 && power > 0.0 && power < 1.0) {
+        return f64::NAN;
+    }
+    // λ beyond 10⁶ (an effect a thousand standard errors in size) is no plan's answer,
+    // and its sum would take 10⁴ terms.
+    bisect_increasing(
+        |lambda| noncentral_f_upper(critical, d1, d2, lambda),
+        power,
+        1e6,
+    )
+}
+
+/// The x in [0, `limit`] with `g(x)` = `target` for `g` increasing from below `target`
+/// at 0, to a relative 1e-9; NaN when `g` stays below `target` up to `limit`.
+pub fn bisect_increasing(g: impl Fn(f64) -> f64, target: f64, limit: f64) -> f64 {
+    let (mut lo, mut hi) = (0.0, 1.0);
+    while g(hi) < target {
+        if hi >= limit {
+            return f64::NAN;
+        }
+        lo = hi;
+        hi *= 2.0;
+    }
+    while hi - lo > 1e-9 * hi {
+        let mid = 0.5 * (lo + hi);
+        if g(mid) < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The trigamma function ψ′(x), x > 0: the variance of the log of a χ²(2x) variable
+/// (used for the scatter of log variances). Recurrence up to x ≥ 12, then the asymptotic
+/// series (Abramowitz and Stegun 6.4.12).
+pub fn trigamma(x: f64) -> f64 {
+    if x.is_nan() || x <= 0.0 {
+        return f64::NAN;
+    }
+    let (mut x, mut acc) = (x, 0.0);
+    while x < 12.0 {
+        acc += 1.0 / (x * x);
+        x += 1.0;
+    }
+    let x2 = 1.0 / (x * x);
+    acc + 1.0 / x + x2 / 2.0 + x2 / x * (1.0 / 6.0 - x2 * (1.0 / 30.0 - x2 / 42.0))
 }
 
 /// Upper tail P(X ≥ x) of the χ² distribution with `k` degrees of freedom.
@@ -261,6 +328,61 @@ mod tests {
         let p = t_two_sided(8.0, 100.0);
         assert!(p > 1e-13 && p < 1e-11, "{p}");
         assert!(close(t_two_sided(0.0, 7.0), 1.0, 1e-12));
+    }
+
+    #[test]
+    fn f_quantile_and_trigamma() {
+        // F(1, 10) at 5 %: 4.9646 (= t(10)² at 2.5 % each side, 2.2281²).
+        assert!(close(f_upper_quantile(0.05, 1.0, 10.0), 4.9646, 1e-4));
+        let f = f_upper_quantile(1e-6, 3.0, 12.0);
+        assert!(close(f_upper(f, 3.0, 12.0), 1e-6, 1e-6));
+        // ψ′(1) = π²/6, ψ′(1/2) = π²/2, ψ′(x + 1) = ψ′(x) − 1/x².
+        let pi2 = std::f64::consts::PI.powi(2);
+        assert!(close(trigamma(1.0), pi2 / 6.0, 1e-10));
+        assert!(close(trigamma(0.5), pi2 / 2.0, 1e-10));
+        assert!(close(
+            trigamma(7.5),
+            trigamma(6.5) - 1.0 / 6.5f64.powi(2),
+            1e-12
+        ));
+    }
+
+    #[test]
+    fn noncentral_f_tail() {
+        // λ = 0 is the central F; F(1, d2) is a t test: P(|t + δ| ≥ c) for δ = √λ, here
+        // with d2 = 1e6 (a normal): Φ(δ − c) + Φ(−δ − c), δ = 2, c = 1.96 → 0.5160.
+        assert!(close(
+            noncentral_f_upper(3.0, 2.0, 9.0, 0.0),
+            f_upper(3.0, 2.0, 9.0),
+            1e-12
+        ));
+        let p = noncentral_f_upper(1.96f64.powi(2), 1.0, 1e6, 4.0);
+        assert!(close(p, 0.516_0, 1e-3), "{p}");
+    }
+
+    /// The power [`noncentrality_for_power`] promises, checked by drawing noncentral F
+    /// statistics (20 000 each): within two points of 80 %.
+    #[test]
+    fn noncentrality_for_power_gives_that_power() {
+        use crate::axis_model::rng::Rng;
+        for (d1, d2, alpha) in [(1.0, 8.0, 0.001), (2.0, 7.0, 0.001), (3.0, 40.0, 1e-5)] {
+            let critical = f_upper_quantile(alpha, d1, d2);
+            let lambda = noncentrality_for_power(critical, d1, d2, 0.8);
+            let mut rng = Rng::new(7, d1 as u64);
+            let draws = 20_000;
+            let shift = (lambda / d1).sqrt();
+            let rejected = (0..draws)
+                .filter(|_| {
+                    let num: f64 = (0..d1 as usize)
+                        .map(|_| (rng.normal() + shift).powi(2))
+                        .sum();
+                    let den: f64 = (0..d2 as usize).map(|_| rng.normal().powi(2)).sum();
+                    (num / d1) / (den / d2) >= critical
+                })
+                .count();
+            let power = rejected as f64 / draws as f64;
+            assert!((power - 0.8).abs() < 0.02, "d1 {d1}, d2 {d2}: {power}");
+        }
     }
 
     #[test]

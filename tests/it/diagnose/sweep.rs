@@ -78,14 +78,48 @@ fn small_plan(rng: &mut Rng, runs: usize) -> TestPlan {
     plan
 }
 
+/// Effects whose stated size is measured and printed but not yet held to 70–90 % (issue 43
+/// open; README): the periodic error's test finds its stated amplitude in about 80 % of
+/// tests but the held-out confirmation keeps fewer; the run offsets' and the scatter
+/// variation's sizes come out too small (30 and 22 %), the warm-up's a little large (93 %).
+const DETECTABLE_OPEN: &[Effect] = &[
+    Effect::WarmUp,
+    Effect::RunOffset,
+    Effect::Periodic,
+    Effect::ScatterVariation,
+];
+
+/// Clean data on a plan drawn by `plan` (rng stream `stream`), σ 0.3–1.2, a realistic
+/// error with a bow and a scale error up to `bow` µm and `ppm`.
+fn clean_on(
+    seed: u64,
+    stream: u64,
+    plan: impl FnOnce(&mut Rng) -> TestPlan,
+    bow: f64,
+    ppm: f64,
+) -> Case {
+    let mut rng = Rng::new(seed, stream);
+    let sigma = rng.range(0.3, 1.2);
+    let plan = plan(&mut rng);
+    let (start, end, _) = spacing_of(&plan);
+    let model = realistic(&mut rng, start, end, sigma, bow, ppm);
+    Case::linear(model, plan, seed, 0.0)
+}
+
 /// Clean data on a small plan (5 targets, 3 or 5 runs).
 fn small_clean_case(seed: u64) -> Case {
-    let mut rng = Rng::new(seed, 1501);
-    let sigma = rng.range(0.3, 1.2);
-    let plan = small_plan(&mut rng, if seed.is_multiple_of(2) { 3 } else { 5 });
-    let (start, end, _) = spacing_of(&plan);
-    let model = realistic(&mut rng, start, end, sigma, 4.0, 10.0);
-    Case::linear(model, plan, seed, 0.0)
+    let runs = if seed.is_multiple_of(2) { 3 } else { 5 };
+    clean_on(seed, 1501, |r| small_plan(r, runs), 4.0, 10.0)
+}
+
+/// Clean data on a fine-step plan (as the periodic cases): periods it resolves.
+fn fine_clean_case(seed: u64) -> Case {
+    clean_on(seed, 1601, fine_plan, 0.5, 20.0)
+}
+
+/// Clean data on a standard plan (11–21 targets).
+fn standard_clean_case(seed: u64) -> Case {
+    clean_on(seed, 1701, standard_plan, 4.0, 10.0)
 }
 
 /// The nominal target positions of a plan without jitter.
@@ -437,29 +471,257 @@ fn sweep_of_every_case_type() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// Issue 43: `detectable` states the reversal variation this plan confirms in 80 % of
-/// tests; on 200 clean 5-target axes (3 or 5 runs), that change added along the axis is
-/// confirmed in 70–90 % of them (the same noise with and without it).
+/// Issue 43: `detectable` states, for every effect, the size this plan confirms in 80 %
+/// of tests. On 200 clean axes (5 targets, 3 or 5 runs; a periodic error needs a finer
+/// plan, so it is checked on 200 clean fine-step axes) an effect of the stated size,
+/// added with the same noise, is confirmed in 70–90 % of them.
 #[test]
 fn the_stated_detectable_size_is_confirmed_in_about_80_percent_of_tests() {
-    let confirmed: Vec<bool> = (0..200u64)
+    let seeds = 0..200u64;
+    let outcomes: Vec<Vec<(Effect, bool)>> = seeds
         .into_par_iter()
         .map(|s| {
-            let mut case = small_clean_case(900_000 + s);
-            let (_, clean) = run_case(&case);
-            let x = (clean.detectable.iter())
-                .find(|x| x.effect == Effect::ReversalVariation)
-                .expect("a detectable reversal variation on every plan of n ≥ 2");
-            assert_eq!(x.measure, "change_over_axis_um");
-            case.sim.model.reversal_end = Some(case.sim.model.reversal + x.size);
-            let (_, d) = run_case(&case);
-            d.has(Effect::ReversalVariation)
+            let small = small_clean_case(900_000 + s);
+            let fine = fine_clean_case(910_000 + s);
+            let (_, on_small) = run_case(&small);
+            let (_, on_fine) = run_case(&fine);
+            assert_eq!(on_small.detectable.len(), Effect::ALL.len());
+            (Effect::ALL.iter())
+                .map(|&e| {
+                    let (base, clean) = if e == Effect::Periodic {
+                        (&fine, &on_fine)
+                    } else {
+                        (&small, &on_small)
+                    };
+                    let x = (clean.detectable.iter())
+                        .find(|x| x.effect == e)
+                        .expect("every effect has a detectable size");
+                    let size = x
+                        .size
+                        .unwrap_or_else(|| panic!("{e:?} untestable: {}", x.advice));
+                    let mut case = Case {
+                        sim: base.sim.clone(),
+                        seed: base.seed,
+                        pitch: None,
+                        truth: 0.0,
+                        at: None,
+                    };
+                    let mut rng = Rng::new(base.seed, 4301);
+                    add_effect(&mut case, e, size, &x.assumed, &mut rng);
+                    let (_, d) = run_case(&case);
+                    (e, d.has(e))
+                })
+                .collect()
         })
         .collect();
-    let rate = confirmed.iter().filter(|&&c| c).count() as f64 / confirmed.len() as f64;
-    eprintln!(
-        "detectable reversal variation confirmed in {:.1} %",
-        rate * 100.0
-    );
-    assert!((0.70..=0.90).contains(&rate), "{:.1} %", rate * 100.0);
+    let mut failures = Vec::new();
+    for &e in Effect::ALL {
+        let hits = (outcomes.iter().flatten())
+            .filter(|(f, c)| *f == e && *c)
+            .count();
+        let rate = hits as f64 / outcomes.len() as f64;
+        eprintln!(
+            "detectable {}: confirmed in {:.1} %",
+            e.name(),
+            rate * 100.0
+        );
+        if !(0.70..=0.90).contains(&rate) && !DETECTABLE_OPEN.contains(&e) {
+            failures.push(format!("{}: {:.1} %", e.name(), rate * 100.0));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join(", "));
 }
+
+/// Adds effect `e` of the stated `size` (in its `measure`) with the shape `assumed` to the
+/// case's model, the sign and placement drawn from `rng`.
+fn add_effect(
+    case: &mut Case,
+    e: Effect,
+    size: f64,
+    assumed: &std::collections::BTreeMap<String, f64>,
+    rng: &mut Rng,
+) {
+    let hours = test_hours(&case.sim, case.seed);
+    let (start, end, _) = spacing_of(&case.sim.plan);
+    let runs = case.sim.plan.runs;
+    let signed = size * sign(rng);
+    let m = &mut case.sim.model;
+    match e {
+        Effect::Drift => m.drift_per_h = signed / hours,
+        Effect::ThermalGrowth => {
+            m.thermal_origin = start;
+            m.thermal_growth_ppm_per_h = signed / ((end - start) / 1000.0) / hours;
+        }
+        Effect::WarmUp => {
+            let tau_min = assumed
+                .get("time_constant_min")
+                .copied()
+                .unwrap_or(hours * 60.0 / 4.0);
+            m.warm_up = signed;
+            m.warm_up_tau_min = tau_min;
+        }
+        Effect::RunOffset => m.run_offsets = offsets_beyond_a_line(runs, size, rng),
+        Effect::Periodic => m.periodic.push(PeriodicTerm {
+            pitch: assumed["period_mm"],
+            amplitude: size,
+            phase_deg: rng.range(0.0, 360.0),
+        }),
+        Effect::ReversalVariation => m.reversal_end = Some(m.reversal + signed),
+        Effect::Outlier => {
+            let targets = spacing_of(&case.sim.plan).2;
+            m.outliers.push(Outlier {
+                run: 1 + (rng.uniform() * runs as f64) as u32,
+                direction: if rng.uniform() < 0.5 {
+                    Direction::Up
+                } else {
+                    Direction::Down
+                },
+                target: 1 + (rng.uniform() * targets as f64) as usize,
+                size: signed,
+            })
+        }
+        Effect::ScatterVariation => {
+            // σ log-linear along the axis (21 knots), its ratio either way.
+            let ratio = if rng.uniform() < 0.5 {
+                size
+            } else {
+                1.0 / size
+            };
+            let sigma = m.scatter;
+            m.scatter_knots = (0..=20)
+                .map(|k| {
+                    let f = k as f64 / 20.0;
+                    [start + f * (end - start), sigma * ratio.powf(f)]
+                })
+                .collect();
+        }
+    }
+}
+
+/// Each combination of two effects (issue 43): on a clean standard axis (a fine-step axis
+/// when one of them is the periodic error), both effects added at 1.5 times the size this
+/// plan confirms (`detectable`: a test then finds each alone in about 99 % of tests; a
+/// ratio to the power 1.5). Named right: both named; other: any other finding. Pairs the
+/// diagnosis does not separate yet are printed and listed in `OPEN_PAIRS`.
+#[test]
+fn sweep_of_each_pair_of_effects() {
+    let pairs: Vec<(Effect, Effect)> = (Effect::ALL.iter().enumerate())
+        .flat_map(|(i, &a)| Effect::ALL[i + 1..].iter().map(move |&b| (a, b)))
+        .collect();
+    let only = std::env::var("SWEEP_ONLY").unwrap_or_default();
+    let per_seed: Vec<Vec<Option<(bool, bool, String)>>> = (0..SWEEP)
+        .into_par_iter()
+        .map(|s| {
+            let standard = standard_clean_case(920_000 + s);
+            let fine = fine_clean_case(930_000 + s);
+            let (_, on_standard) = run_case(&standard);
+            let (_, on_fine) = run_case(&fine);
+            (pairs.iter())
+                .map(|&(a, b)| {
+                    let name = format!("{} + {}", a.name(), b.name());
+                    if !name.contains(only.as_str()) {
+                        return None;
+                    }
+                    let periodic = a == Effect::Periodic || b == Effect::Periodic;
+                    let (base, clean) = if periodic {
+                        (&fine, &on_fine)
+                    } else {
+                        (&standard, &on_standard)
+                    };
+                    // Read as the clean case was (without time stamps for a third of the
+                    // seeds: `run_case`).
+                    let mut case = Case {
+                        sim: base.sim.clone(),
+                        seed: base.seed,
+                        pitch: None,
+                        truth: 0.0,
+                        at: None,
+                    };
+                    let mut rng = Rng::new(base.seed, 4401);
+                    for e in [a, b] {
+                        let x = (clean.detectable.iter()).find(|x| x.effect == e).unwrap();
+                        // A plan that cannot test one of them leaves the seed out.
+                        let size = x.size?;
+                        let size = if e == Effect::ScatterVariation {
+                            size.powf(1.5)
+                        } else {
+                            1.5 * size
+                        };
+                        add_effect(&mut case, e, size, &x.assumed, &mut rng);
+                    }
+                    let (_, d) = run_case(&case);
+                    let right = d.has(a) && d.has(b);
+                    let other = d
+                        .findings
+                        .iter()
+                        .any(|f| f.effect() != a && f.effect() != b);
+                    Some((right, other, d.effects_label()))
+                })
+                .collect()
+        })
+        .collect();
+    let mut table = vec![format!(
+        "{:<40} {:>6} {:>14} {:>16}",
+        "pair", "seeds", "named right %", "other findings %"
+    )];
+    let mut failures = Vec::new();
+    for (k, &(a, b)) in pairs.iter().enumerate() {
+        let name = format!("{} + {}", a.name(), b.name());
+        if !name.contains(only.as_str()) {
+            continue;
+        }
+        let results: Vec<&(bool, bool, String)> =
+            (per_seed.iter()).filter_map(|r| r[k].as_ref()).collect();
+        let right = pct(results.iter().filter(|r| r.0).count(), results.len());
+        let other = pct(results.iter().filter(|r| r.1).count(), results.len());
+        table.push(format!(
+            "{name:<40} {:>6} {right:>14.1} {other:>16.1}",
+            results.len()
+        ));
+        let open = OPEN_PAIRS.contains(&(a, b));
+        let held = right >= 96.0 && other <= 2.0;
+        if !held && !open {
+            let wrong: Vec<&str> = (results.iter())
+                .filter(|r| !r.0 || r.1)
+                .map(|r| r.2.as_str())
+                .take(10)
+                .collect();
+            failures.push(format!(
+                "{name}: right {right:.1} %, other {other:.1} %: {wrong:?}"
+            ));
+        }
+    }
+    eprintln!("{}", table.join("\n"));
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Pairs measured and printed but not yet held to the rates (issue 43 open; README): the
+/// time effects together (a drift beside a thermal growth is read as a growth about
+/// another origin, beside a warm-up or run offsets as one of them), and every pair with an
+/// effect whose stated size is still too small (`DETECTABLE_OPEN`).
+const OPEN_PAIRS: &[(Effect, Effect)] = {
+    use Effect::*;
+    &[
+        (Drift, WarmUp),
+        (Drift, ThermalGrowth),
+        (Drift, RunOffset),
+        (Drift, Periodic),
+        (Drift, ScatterVariation),
+        (WarmUp, ThermalGrowth),
+        (WarmUp, RunOffset),
+        (WarmUp, Periodic),
+        (WarmUp, ScatterVariation),
+        (ThermalGrowth, RunOffset),
+        (ThermalGrowth, Periodic),
+        (ThermalGrowth, ScatterVariation),
+        (RunOffset, Periodic),
+        (RunOffset, ReversalVariation),
+        (RunOffset, Outlier),
+        (RunOffset, ScatterVariation),
+        (Periodic, ReversalVariation),
+        (Periodic, Outlier),
+        (Periodic, ScatterVariation),
+        (ReversalVariation, ScatterVariation),
+        (Outlier, ScatterVariation),
+    ]
+};

@@ -36,6 +36,9 @@
 //! zero shift cannot reach) — and the change of the Bayesian information criterion
 //! against a linear drift and against free run offsets.
 
+mod power;
+pub(crate) use power::detectable;
+
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
@@ -558,6 +561,8 @@ pub(crate) struct WarmTest {
     pub full: TimeFit,
     /// The estimate, with only the linear terms found beside it (when found).
     pub estimate: Option<WarmEstimate>,
+    /// The warm-up this plan confirms in [`crate::diagnose::options::POWER`] of tests.
+    pub smallest: Option<power::Smallest>,
 }
 
 /// Searches for a warm-up beyond the linear trend; `fits` are the full model (thermal,
@@ -589,6 +594,7 @@ pub(crate) fn search(
         None => (full0.sigma2(), full0.df, "scatter"),
     };
     let f = prof.sup.map(|g| g / ms);
+    let smallest = power::smallest(prep, active, scale, (ms, df), prof.path[0], alpha);
     let p_column = [0, 1].map(|c| davies(f[c], df, prof.path[c]));
     Some(WarmTest {
         tau: prof.tau,
@@ -605,6 +611,7 @@ pub(crate) fn search(
         smooth,
         full,
         estimate: None,
+        smallest,
     })
 }
 

@@ -1,0 +1,82 @@
+//! What a plan can confirm of a warm-up (issue 43): the level a uniform warm-up with a time
+//! constant of a quarter of the test must reach for its test to find it in
+//! [`POWER`] of tests.
+
+use super::{WarmTest, davies, time_key, to_reported};
+use crate::diagnose::detectable::{Detectable, plan_words, span_words, with_unit};
+use crate::diagnose::effects::Effect;
+use crate::diagnose::finding::Units;
+use crate::diagnose::maths::stats::{bisect_increasing, noncentral_f_upper};
+use crate::diagnose::options::POWER;
+use crate::diagnose::prep::Prep;
+use crate::diagnose::time_fit::{Terms, fit, warm_shape};
+
+/// A uniform warm-up approaching `level` with time constant `tau` (time units), found in
+/// [`POWER`] of tests.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Smallest {
+    pub tau: f64,
+    pub level: f64,
+}
+
+/// What this plan confirms: a uniform warm-up with a time constant of a quarter of the
+/// test whose column alone, beyond the linear trend, reaches the Davies bound's critical
+/// value at `alpha`/2 (the uniform column's share of the level) in [`POWER`] of tests.
+/// Its noncentrality is level² times the column's energy beyond the trend over the
+/// reference mean square `reference.0`; that reference (the time model without a
+/// warm-up) grows by what of the curve the run effects do not take, level² times the
+/// column's energy beyond them over its df, which the power accounts for. None when no
+/// level reaches the power (a curve this fast is all run offsets).
+pub(super) fn smallest(
+    prep: &Prep,
+    active: &[bool],
+    scale: &[f64],
+    reference: (f64, f64),
+    path: f64,
+    alpha: f64,
+) -> Option<Smallest> {
+    let (ms, df) = reference;
+    let tau = prep.t_span / 4.0;
+    let shape: Vec<f64> = (0..prep.rows.len())
+        .map(|k| warm_shape(prep.clocks.warm[k], tau))
+        .collect();
+    let energy_beyond = |runs: bool| {
+        let terms = Terms {
+            thermal: true,
+            runs,
+            drift: true,
+            warm: None,
+        };
+        fit(prep, &shape, active, scale, terms).rss
+    };
+    let (energy, left) = (energy_beyond(false), energy_beyond(true));
+    let critical = bisect_increasing(|u| -davies(u, df, path), -alpha / 2.0, 1e300);
+    // The level² in units of the reference mean square.
+    let power =
+        |a2: f64| noncentral_f_upper(critical * (1.0 + a2 * left / df), 1.0, df, a2 * energy);
+    let a2 = bisect_increasing(power, POWER, 1e6 / energy.max(1e-300));
+    let level = (a2 * ms).sqrt();
+    (level.is_finite() && level > 0.0).then_some(Smallest { tau, level })
+}
+
+/// What this plan confirms: [`smallest`], or why the plan cannot test a warm-up.
+pub(crate) fn detectable(p: &Prep, u: Units, warm: Option<&WarmTest>) -> Detectable {
+    let measure = format!("amplitude_{}", u.dev());
+    let Some(s) = warm.and_then(|w| w.smallest) else {
+        return Detectable::untestable(
+            Effect::WarmUp,
+            measure,
+            "a warm-up needs at least two runs and readings left beyond the time model",
+        );
+    };
+    let advice = format!(
+        "{} over {} a warm-up under {} (reached with a time constant of a quarter of the test) may go unconfirmed",
+        plan_words(p.m, p.n),
+        span_words(p),
+        with_unit(s.level, u)
+    );
+    Detectable::sized(Effect::WarmUp, measure, s.level, advice).assuming(
+        format!("time_constant_{}", time_key(u)),
+        to_reported(u, s.tau),
+    )
+}
