@@ -499,13 +499,7 @@ fn the_stated_detectable_size_is_confirmed_in_about_80_percent_of_tests() {
                     let size = x
                         .size
                         .unwrap_or_else(|| panic!("{e:?} untestable: {}", x.advice));
-                    let mut case = Case {
-                        sim: base.sim.clone(),
-                        seed: base.seed,
-                        pitch: None,
-                        truth: 0.0,
-                        at: None,
-                    };
+                    let mut case = clean_copy(base);
                     let mut rng = Rng::new(base.seed, 4301);
                     add_effect(&mut case, e, size, &x.assumed, &mut rng);
                     let (_, d) = run_case(&case);
@@ -530,6 +524,18 @@ fn the_stated_detectable_size_is_confirmed_in_about_80_percent_of_tests() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join(", "));
+}
+
+/// A copy of the clean case `base` to add effects to, read as `base` was (without time
+/// stamps for a third of the seeds: `run_case`).
+fn clean_copy(base: &Case) -> Case {
+    Case {
+        sim: base.sim.clone(),
+        seed: base.seed,
+        pitch: None,
+        truth: 0.0,
+        at: None,
+    }
 }
 
 /// Adds effect `e` of the stated `size` (in its `measure`) with the shape `assumed` to the
@@ -628,15 +634,7 @@ fn sweep_of_each_pair_of_effects() {
                     } else {
                         (&standard, &on_standard)
                     };
-                    // Read as the clean case was (without time stamps for a third of the
-                    // seeds: `run_case`).
-                    let mut case = Case {
-                        sim: base.sim.clone(),
-                        seed: base.seed,
-                        pitch: None,
-                        truth: 0.0,
-                        at: None,
-                    };
+                    let mut case = clean_copy(base);
                     let mut rng = Rng::new(base.seed, 4401);
                     for e in [a, b] {
                         let x = (clean.detectable.iter()).find(|x| x.effect == e).unwrap();
