@@ -106,7 +106,9 @@ impl Analysis<'_> {
                 Effect::WarmUp => warm_up::detectable(p, u, tt.warm.as_ref()),
                 Effect::ThermalGrowth => thermal_growth::detectable(p, u, tt.thermal.as_ref()),
                 Effect::RunOffset => {
-                    run_offset::detectable(p, u, tt.runs.as_ref(), tt.sigma2, tt.full.rows.len())
+                    let rows = tt.full.rows.len();
+                    let warm_curve = tt.warm.is_some();
+                    run_offset::detectable(p, u, tt.runs.as_ref(), tt.sigma2, rows, warm_curve)
                 }
                 Effect::Periodic => periodic::detectable(p, u, &self.periodic),
                 Effect::ReversalVariation => {
@@ -200,14 +202,14 @@ fn time_and_scatter(
         active = mask(&hits);
         tt = time::tests(prep, x, &active, &scale, ALPHA);
     }
-    let mut sc = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2);
+    let mut sc = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2, tt.df);
     if let Some(s) = sc.as_ref().filter(|s| s.p < ALPHA) {
         scale = s.rel_scale.clone();
         let at = scatter_variation::outlier_scale(prep, s, &tt.full, x);
         hits = outlier::detect(prep, x, &at, tt.warm_tau(ALPHA), ALPHA);
         active = mask(&hits);
         tt = time::tests(prep, x, &active, &scale, ALPHA);
-        if let Some(s2) = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2) {
+        if let Some(s2) = scatter_variation::test(prep, &tt.full.residuals, tt.sigma2, tt.df) {
             sc = Some(s2);
         }
     }

@@ -17,6 +17,7 @@ use super::prep::{Clocks, Prep};
 use super::shape::Shape;
 use super::shaped::{self, ShapeScore};
 use super::validate::{self, Score};
+use crate::axis_model::rng::Rng;
 use serde::Serialize;
 use serde::ser::Serializer;
 
@@ -36,6 +37,14 @@ pub enum Scheme {
 }
 
 impl Scheme {
+    /// The measure of a score this scheme compares (RMS or log density).
+    fn measure(self, s: &Score) -> f64 {
+        match self {
+            Scheme::KFoldDensity => s.nlpd,
+            _ => s.rms,
+        }
+    }
+
     /// The scheme in words, for the text and the report.
     pub fn describe(self) -> &'static str {
         match self {
@@ -189,8 +198,12 @@ impl Unconfirmed {
         } else {
             "not scored".to_string()
         };
+        let shaped = matches!(self.finding.effect().rule().term(), Term::Shaped(_));
         let compared = match self.null {
-            Unrelated::SimulatedTests => "19 tests simulated without it, each in its best shape",
+            Unrelated::SimulatedTests if shaped => {
+                "19 tests simulated without it, each in its best shape"
+            }
+            Unrelated::SimulatedTests => "19 tests simulated without it",
             _ => "19 unrelated terms of the same size",
         };
         format!(
@@ -290,19 +303,6 @@ impl Judge<'_> {
     ) -> (Score, Vec<Score>) {
         let (p, x) = (&self.a.basis.prep, &self.a.basis.x);
         match unrelated {
-            Unrelated::TargetOrders => {
-                let orders = confirm::target_orders(&p.positions, self.seed);
-                let left_out: Vec<bool> = (self.outlier.iter())
-                    .map(|&o| o && terms.outliers)
-                    .collect();
-                let rows = validate::Rows {
-                    scored: &self.outlier,
-                    left_out: &left_out,
-                };
-                let mut all = validate::scores(p, x, &self.fold, rows, terms, &orders);
-                let s = all.remove(0);
-                (s, all)
-            }
             Unrelated::TimeOrders => {
                 let others = confirm::row_orders(p.rows.len(), self.seed)
                     .iter()
@@ -314,21 +314,9 @@ impl Judge<'_> {
                     .collect();
                 (self.score(terms), others)
             }
-            Unrelated::RunOrders => {
-                let cells: Vec<usize> = p.rows.iter().map(|r| p.cell(r)).collect();
-                let others = confirm::run_orders(&cells, &p.clocks.run, self.seed)
-                    .into_iter()
-                    .map(|run| {
-                        let q = p.with_clocks(Clocks {
-                            run,
-                            ..p.clocks.clone()
-                        });
-                        validate::score(&q, x, &self.fold, &self.outlier, terms)
-                    })
-                    .collect();
-                (self.score(terms), others)
+            Unrelated::SimulatedTests | Unrelated::TargetOrders => {
+                unreachable!("judged by `simulated_threshold`, `shaped` or `judge_periodic`")
             }
-            Unrelated::SimulatedTests => unreachable!("a shaped term is judged by `shaped`"),
             Unrelated::OrdinaryReadings => {
                 let others = confirm::ordinary_draws(&self.outlier, self.seed)
                     .iter()
@@ -343,6 +331,28 @@ impl Judge<'_> {
                 (self.score(terms), others)
             }
         }
+    }
+
+    /// The largest gain of `terms` over `kept` on [`confirm::UNRELATED`] tests simulated
+    /// from the model without the term, with this test's plan, folds and scored readings:
+    /// the scatter alone, of one σ. The gains are ratios, and every fit is linear in the
+    /// readings with the cell means free, so neither the σ nor the kept terms' values
+    /// change them ([`shaped`]; a kept warm-up is profiled on each as on the readings).
+    /// For run offsets and a scatter line, whose unrelated orders keep much of the real
+    /// order: runs dealt at random within a cell of 3 runs leave each reading in its own
+    /// run one time in three, and on 5 targets a random order is a line's real order, or
+    /// its reverse, about one time in 60.
+    fn simulated_threshold(&self, scheme: Scheme, kept: ModelTerms, terms: ModelTerms) -> f64 {
+        let p = &self.a.basis.prep;
+        let mut rng = Rng::new(self.seed, 0x51AD);
+        (0..confirm::UNRELATED)
+            .map(|_| {
+                let sim: Vec<f64> = (0..p.rows.len()).map(|_| rng.normal()).collect();
+                let without = validate::score(p, &sim, &self.fold, &self.outlier, kept);
+                let with = validate::score(p, &sim, &self.fold, &self.outlier, terms);
+                gain_pct(scheme, scheme.measure(&without), scheme.measure(&with))
+            })
+            .fold(f64::NAN, f64::max)
     }
 
     /// The shaped term `set` over the `kept` terms: the shape with the smallest held-out
@@ -459,15 +469,23 @@ pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection
         };
         let mut terms = kept;
         set(&mut terms);
-        let (s, others) = judge.judge(effect.rule().unrelated(), kept, terms);
-        let measure = |s: &Score| if by_density { s.nlpd } else { s.rms };
         let scheme = if by_density {
             Scheme::KFoldDensity
         } else {
             Scheme::KFoldRms
         };
-        let others: Vec<f64> = others.iter().map(measure).collect();
-        let threshold = largest_gain(scheme, measure(&current), &others);
+        let measure = |s: &Score| scheme.measure(s);
+        let (s, threshold) = match effect.rule().unrelated() {
+            Unrelated::SimulatedTests => {
+                let threshold = judge.simulated_threshold(scheme, kept, terms);
+                (judge.score(terms), threshold)
+            }
+            unrelated => {
+                let (s, others) = judge.judge(unrelated, kept, terms);
+                let others: Vec<f64> = others.iter().map(measure).collect();
+                (s, largest_gain(scheme, measure(&current), &others))
+            }
+        };
         let gain = TermGain::new(effect, scheme, measure(&current), measure(&s), threshold);
         if gain.kept {
             (kept, current) = (terms, s);

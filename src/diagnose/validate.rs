@@ -79,8 +79,8 @@ impl Lines {
         let reversal = reversal_values(&b, along, terms);
         let s2 = time.sigma2();
         let sigma = match (terms.scatter, s2 > 0.0) {
-            (true, true) => match scatter::test_along(prep, along, &time.residuals, s2) {
-                Some(t) => t.rel_scale.iter().map(|r| r * s2.sqrt()).collect(),
+            (true, true) => match scatter::scale_along(prep, along, &time.residuals, s2, time.df) {
+                Some(rel) => rel.iter().map(|r| r * s2.sqrt()).collect(),
                 None => vec![s2.sqrt(); prep.cells()],
             },
             _ => vec![s2.sqrt(); prep.cells()],

@@ -1,22 +1,18 @@
-//! Scatter variation: the scatter changes along the axis (Hemingray et al. 1971, §5.1:
-//! VDI 3441 takes one scatter for the axis, NMTBA one per target). Tested
-//! (below): the log cell variances regressed on position.
-//!
-//! The test. VDI 3441 takes one scatter for the whole axis, NMTBA one per target; Hemingray et al.
-//! 1971, §5.1 ask whether the variation of the scatter along the axis is more than
-//! sampling explains.
-//! Test: the log of each cell's residual variance (residuals of the full time model, so
-//! that drift or thermal growth do not pass for scatter) regressed on position; a t-test
-//! of the slope with the regression's own residual variance (df = cells − 2), which needs
-//! no normality of the log variances. Needs n ≥ 3 and m ≥ 3.
+//! Scatter variation: the scatter changes along the axis. VDI 3441 takes one scatter for
+//! the whole axis, NMTBA one per target; Hemingray et al. 1971, §5.1 ask whether the
+//! variation of the scatter along the axis is more than sampling explains.
+//! Test ([`test`]): the score test of a log-linear scatter in position on each
+//! cell's residual sum of squares (residuals of the full time model, so that drift or
+//! thermal growth do not pass for scatter), its tail exact for normal readings. Needs
+//! n ≥ 3 and m ≥ 3.
 
 use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
-use crate::diagnose::detectable::{Detectable, plan_words, t_shift};
+use crate::diagnose::detectable::{Detectable, POWER, plan_words};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::maths::stats::{t_two_sided, trigamma};
+use crate::diagnose::maths::imhof;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
@@ -71,12 +67,12 @@ impl Rule {
         let ds = u.symbol();
         let ratio = s.sigma_hi / s.sigma_lo;
         let message = format!(
-            "the scatter changes along the axis: σ ≈ {} {ds} at {} to {} {ds} at {} (t = {}, p = {})",
+            "the scatter changes along the axis: σ ≈ {} {ds} at {} to {} {ds} at {} (z = {}, p = {})",
             fmt(s.sigma_lo),
             fmt_target(u.kind, p.lo),
             fmt(s.sigma_hi),
             fmt_target(u.kind, p.hi),
-            fmt(s.t),
+            fmt(s.z),
             fmt_p(s.p)
         );
         vec![Finding {
@@ -89,10 +85,10 @@ impl Rule {
             units: u,
             evidence: Evidence {
                 statistic: format!(
-                    "t of the slope of log cell variance on position (df {})",
-                    s.df
+                    "score z of a log-linear scatter along the axis (exact tail, {} cells)",
+                    s.cells
                 ),
-                value: s.t,
+                value: s.z,
                 p_value: Some(s.p),
                 effect_size: Some(ratio),
             },
@@ -106,10 +102,10 @@ impl EffectRule for Rule {
         Term::Density(|t| t.scatter = true)
     }
 
-    /// A line (or sinusoid) through the targets: compared with the same term along the
-    /// targets in random orders.
+    /// A line through the targets: compared with tests simulated without it (on 5
+    /// targets a random order fits as the real one, or its reverse, one time in 60).
     fn unrelated(&self) -> Unrelated {
-        Unrelated::TargetOrders
+        Unrelated::SimulatedTests
     }
 
     fn extend(&self, _: &Basis, fit: &Fitted, model: &mut ErrorModel) {
@@ -128,9 +124,11 @@ impl EffectRule for Rule {
 /// The result of the scatter test.
 #[derive(Debug, Clone)]
 pub(crate) struct ScatterTest {
-    pub t: f64,
+    /// The score of the log slope over its standard error.
+    pub z: f64,
     pub p: f64,
-    pub df: f64,
+    /// Cells with at least two readings.
+    pub cells: usize,
     /// Fitted scatter σ at the first and last target, µm or arcsec.
     pub sigma_lo: f64,
     pub sigma_hi: f64,
@@ -183,103 +181,236 @@ pub(crate) fn outlier_scale(prep: &Prep, t: &ScatterTest, full: &TimeFit, x: &[f
 }
 
 /// Tests the residuals (one per row, NaN for inactive rows) of a fit with pooled variance
-/// `sigma2`.
-pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64) -> Option<ScatterTest> {
-    test_along(prep, &prep.positions, residuals, sigma2)
-}
-
-/// [`test`] with the scatter along the targets at `along` (one per target: their
-/// positions, or an unrelated order of them) instead of their positions.
-pub(crate) fn test_along(
-    prep: &Prep,
-    along: &[f64],
-    residuals: &[f64],
-    sigma2: f64,
-) -> Option<ScatterTest> {
-    if prep.n < 3 || prep.m < 3 || sigma2.is_nan() || sigma2 <= 0.0 {
-        return None;
-    }
-    let cells = prep.cells();
-    let mut ss = vec![0.0; cells];
-    let mut count = vec![0usize; cells];
-    for (k, r) in prep.rows.iter().enumerate() {
-        let e = residuals[k];
-        if e.is_finite() {
-            let c = prep.cell(r);
-            ss[c] += e * e;
-            count[c] += 1;
-        }
-    }
-    // A cell of identical readings (a quantised instrument) has no log variance: floor it.
-    let floor = 0.05 * sigma2;
-    let mut xs = Vec::new();
-    let mut ys = Vec::new();
-    for c in 0..cells {
-        if count[c] >= 2 {
-            let v = (ss[c] / (count[c] - 1) as f64).max(floor);
-            xs.push(along[c / 2] - prep.pbar);
-            ys.push(v.ln());
-        }
-    }
-    let k = xs.len();
-    if k < 4 {
-        return None;
-    }
-    let mx = xs.iter().sum::<f64>() / k as f64;
-    let my = ys.iter().sum::<f64>() / k as f64;
-    let sxx: f64 = xs.iter().map(|x| (x - mx) * (x - mx)).sum();
-    if sxx.is_nan() || sxx <= 0.0 {
-        return None;
-    }
-    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
-    let b = sxy / sxx;
-    let a = my - b * mx;
-    let rss: f64 = xs
-        .iter()
-        .zip(&ys)
-        .map(|(x, y)| (y - a - b * x).powi(2))
-        .sum();
-    let df = (k - 2) as f64;
-    let se = (rss / df / sxx).sqrt();
-    let t = if se > 0.0 { b / se } else { 0.0 };
-    let p = if se > 0.0 { t_two_sided(t, df) } else { 1.0 };
-    // σ²(P) ∝ exp(a + b(P − P̄)), scaled so that its mean over the cells is the pooled σ².
-    let shape = |p: f64| (a + b * (p - prep.pbar)).exp();
-    let mean_shape = (0..cells).map(|c| shape(along[c / 2])).sum::<f64>() / cells as f64;
-    let kappa = sigma2 / mean_shape;
-    let rel_scale = (0..cells)
-        .map(|c| (shape(along[c / 2]) / mean_shape).sqrt())
-        .collect();
+/// `sigma2` on `df` degrees of freedom.
+///
+/// The model: σ²(P) = σ² exp(b (P − P̄)), each cell's sum of squares σ²(P) χ²(ν). The
+/// statistic is the score of b at b = 0 (Cook & Weisberg 1983, "Diagnostics for
+/// heteroscedasticity in regression", Biometrika 70): the share of the squares along
+/// the axis, T = Σ (z − z̄) SS / Σ SS with z̄ weighted by ν. Its tail is exact for
+/// normal readings, T > r being Σ (z − z̄ − r) χ²(ν) > 0 ([`imhof`]); two-sided, each
+/// tail at half the level. An earlier test regressed the log cell variances on position:
+/// with 3 runs a cell's log variance has a long lower tail (a cell of two close
+/// readings), and a floor under it hid the slope, so that a stated ratio was found in a
+/// third of tests. The reported z is the score over its standard error, √(Σ ν (z − z̄)²/2).
+pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64, df: f64) -> Option<ScatterTest> {
+    let sq = Squares::along(prep, &prep.positions, residuals, sigma2, df)?;
+    let total: f64 = sq.cells.iter().map(|c| c.ss).sum();
+    let share: f64 = (sq.cells.iter().zip(&sq.d))
+        .map(|(c, d)| d * c.ss)
+        .sum::<f64>()
+        / total;
+    let nu_total: f64 = sq.cells.iter().map(|c| c.nu).sum();
+    let z = share * nu_total / 2.0 / sq.info.sqrt();
+    let upper = share_above(&sq.cells, &sq.d, share, |_| 1.0, imhof::TOLERANCE);
+    let p = (2.0 * upper.min(1.0 - upper)).min(1.0);
+    let (sigma_lo, sigma_hi, rel_scale) = sq.scale(prep, &prep.positions, sigma2);
     Some(ScatterTest {
-        t,
+        z,
         p,
-        df,
-        sigma_lo: (kappa * shape(prep.lo)).sqrt(),
-        sigma_hi: (kappa * shape(prep.hi)).sqrt(),
+        cells: sq.cells.len(),
+        sigma_lo,
+        sigma_hi,
         rel_scale,
     })
 }
 
+/// The fitted scatter per cell relative to √`sigma2` with the scatter along the targets
+/// at `along` (one per target): what the held-out model with the term predicts with.
+pub(crate) fn scale_along(
+    prep: &Prep,
+    along: &[f64],
+    residuals: &[f64],
+    sigma2: f64,
+    df: f64,
+) -> Option<Vec<f64>> {
+    let sq = Squares::along(prep, along, residuals, sigma2, df)?;
+    Some(sq.scale(prep, along, sigma2).2)
+}
+
+/// The cells' squares the test and the fit read, with z − z̄ and the information of b.
+struct Squares {
+    cells: Vec<CellSquares>,
+    d: Vec<f64>,
+    info: f64,
+}
+
+impl Squares {
+    /// None when the test cannot be made: fewer than 3 runs or targets, 4 cells, or no
+    /// scatter.
+    fn along(
+        prep: &Prep,
+        along: &[f64],
+        residuals: &[f64],
+        sigma2: f64,
+        df: f64,
+    ) -> Option<Squares> {
+        if prep.n < 3 || prep.m < 3 || !(sigma2 > 0.0 && df > 0.0) {
+            return None;
+        }
+        let cells = cell_squares(prep, along, residuals, df);
+        let total: f64 = cells.iter().map(|c| c.ss).sum();
+        if cells.len() < 4 || total.is_nan() || total <= 0.0 {
+            return None;
+        }
+        let d = centred(&cells);
+        let info: f64 = cells.iter().zip(&d).map(|(c, d)| c.nu * d * d / 2.0).sum();
+        (info > 0.0).then_some(Squares { cells, d, info })
+    }
+
+    /// σ at the first and last target and the relative scale per cell of the maximum-
+    /// likelihood fit ([`log_linear`]), scaled so that the mean of σ² over the cells is
+    /// the pooled `sigma2`.
+    fn scale(&self, prep: &Prep, along: &[f64], sigma2: f64) -> (f64, f64, Vec<f64>) {
+        let (a, b) = log_linear(&self.cells);
+        let shape = |p: f64| (a + b * (p - prep.pbar)).exp();
+        let cells = prep.cells();
+        let mean_shape = (0..cells).map(|c| shape(along[c / 2])).sum::<f64>() / cells as f64;
+        let kappa = sigma2 / mean_shape;
+        let rel_scale = (0..cells)
+            .map(|c| (shape(along[c / 2]) / mean_shape).sqrt())
+            .collect();
+        (
+            (kappa * shape(prep.lo)).sqrt(),
+            (kappa * shape(prep.hi)).sqrt(),
+            rel_scale,
+        )
+    }
+}
+
+/// One cell's squares: its position about P̄, the sum of its squared residuals and its
+/// share ν of the residual degrees of freedom.
+struct CellSquares {
+    z: f64,
+    ss: f64,
+    nu: f64,
+}
+
+/// The cells with at least two residuals, each with its share of `df` (a cell of c
+/// readings has c − 1 of the cell means' residual df; the time model's other terms take
+/// theirs from every cell alike).
+fn cell_squares(prep: &Prep, along: &[f64], residuals: &[f64], df: f64) -> Vec<CellSquares> {
+    let mut ss = vec![0.0; prep.cells()];
+    let mut count = vec![0usize; prep.cells()];
+    for (k, r) in prep.rows.iter().enumerate() {
+        let e = residuals[k];
+        if e.is_finite() {
+            ss[prep.cell(r)] += e * e;
+            count[prep.cell(r)] += 1;
+        }
+    }
+    let within: usize = count.iter().filter(|&&c| c >= 2).map(|c| c - 1).sum();
+    let share = df / within.max(1) as f64;
+    (0..prep.cells())
+        .filter(|&c| count[c] >= 2)
+        .map(|c| CellSquares {
+            z: along[c / 2] - prep.pbar,
+            ss: ss[c],
+            nu: (count[c] - 1) as f64 * share,
+        })
+        .collect()
+}
+
+/// z − z̄ per cell, z̄ weighted by ν.
+fn centred(cells: &[CellSquares]) -> Vec<f64> {
+    let nu: f64 = cells.iter().map(|c| c.nu).sum();
+    let zbar = cells.iter().map(|c| c.nu * c.z).sum::<f64>() / nu;
+    cells.iter().map(|c| c.z - zbar).collect()
+}
+
+/// P(T > `share`) when each cell's sum of squares is `variance(z)` χ²(ν): P(Σ (d − share)
+/// variance χ²(ν) > 0).
+fn share_above(
+    cells: &[CellSquares],
+    d: &[f64],
+    share: f64,
+    variance: impl Fn(f64) -> f64,
+    tolerance: f64,
+) -> f64 {
+    let terms: Vec<(f64, f64)> = (cells.iter().zip(d))
+        .map(|(c, d)| ((d - share) * variance(c.z), c.nu))
+        .collect();
+    imhof::combination_positive(&terms, tolerance)
+}
+
+/// The maximum-likelihood (a, b) of σ²(z) = exp(a + b z) from the cells' squares: Fisher
+/// scoring of the gamma GLM with a log link (McCullagh & Nelder 1989, §8.3), weights ν;
+/// the slope kept within a factor 10⁶ of σ² over the cells (all-equal readings at one
+/// end would send it to infinity).
+fn log_linear(cells: &[CellSquares]) -> (f64, f64) {
+    let nu: f64 = cells.iter().map(|c| c.nu).sum();
+    let (zlo, zhi) = (cells.iter().map(|c| c.z))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), z| {
+            (l.min(z), h.max(z))
+        });
+    let limit = (1e6f64).ln() / (zhi - zlo).max(f64::MIN_POSITIVE);
+    let mut a = (cells.iter().map(|c| c.ss).sum::<f64>() / nu).ln();
+    let mut b = 0.0;
+    for _ in 0..50 {
+        // Working response η + (s² − μ)/μ, weight ν: weighted least squares on z.
+        let work: Vec<(f64, f64, f64)> = cells
+            .iter()
+            .map(|c| {
+                let eta = a + b * c.z;
+                (c.z, eta + (c.ss / c.nu) / eta.exp() - 1.0, c.nu)
+            })
+            .collect();
+        let sw: f64 = work.iter().map(|w| w.2).sum();
+        let zm = work.iter().map(|w| w.2 * w.0).sum::<f64>() / sw;
+        let ym = work.iter().map(|w| w.2 * w.1).sum::<f64>() / sw;
+        let szz: f64 = work.iter().map(|w| w.2 * (w.0 - zm).powi(2)).sum();
+        let szy: f64 = work.iter().map(|w| w.2 * (w.0 - zm) * (w.1 - ym)).sum();
+        let nb = (szy / szz).clamp(-limit, limit);
+        let na = ym - nb * zm;
+        let done = (nb - b).abs() * (zhi - zlo) < 1e-10 && (na - a).abs() < 1e-10;
+        (a, b) = (na, nb);
+        if done {
+            break;
+        }
+    }
+    (a, b)
+}
+
 /// What this plan confirms: a scatter changing log-linearly along the axis by a ratio
-/// (σ at the last target over σ at the first, or its inverse) whose log slope reaches
-/// the t shift of [`crate::diagnose::detectable::POWER`] at the level (df = cells − 2).
-/// A cell's log variance on ν degrees of freedom scatters by ψ′(ν/2) (the trigamma
-/// function); ν is the time model's df shared among the cells. σ's log changes by half
-/// the variance's.
+/// (σ at the last target over σ at the first, or its inverse) that the test finds in
+/// [`POWER`] of tests at the level, each tail at half of it. Both the test's critical
+/// shares and the power are exact for normal readings ([`imhof`]): under a σ² that
+/// changes as exp(b z), T > r is Σ (z − z̄ − r) exp(b z) χ²(ν) > 0.
 pub(crate) fn detectable(p: &Prep, df: f64) -> Detectable {
     let measure = "ratio_end_to_start".to_string();
-    let cells = p.cells();
-    if p.n < 3 || p.m < 3 || df.is_nan() || df <= 0.0 {
-        return Detectable::untestable(
+    let untestable = || {
+        Detectable::untestable(
             Effect::ScatterVariation,
-            measure,
-            "a scatter per target needs at least three runs and three targets",
-        );
+            measure.clone(),
+            "a scatter per target needs at least three runs and four cells of readings",
+        )
+    };
+    if p.n < 3 || p.m < 3 || df.is_nan() || df <= 0.0 {
+        return untestable();
     }
-    let nu = df / cells as f64;
-    let sxx = 2.0 * (p.positions.iter().map(|x| (x - p.pbar).powi(2))).sum::<f64>();
-    let se_slope = (trigamma(nu / 2.0) / sxx).sqrt();
-    let log_ratio = t_shift(ALPHA, cells as f64 - 2.0) * se_slope * p.length() / 2.0;
+    // The plan's cells, each with its share of the df (all readings present).
+    let rows: Vec<f64> = vec![0.0; p.rows.len()];
+    let cells = cell_squares(p, &p.positions, &rows, df);
+    if cells.len() < 4 {
+        return untestable();
+    }
+    let d = centred(&cells);
+    let (lo, hi) = (
+        d.iter().copied().fold(f64::INFINITY, f64::min),
+        d.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+    );
+    // The critical share to 1e-9 in the tail, the power to 1e-6: the size to about 1e-5.
+    let tail = |r: f64| share_above(&cells, &d, r, |_| 1.0, 1e-9);
+    let critical = bisect_decreasing(tail, ALPHA / 2.0, lo, hi);
+    // Power of the upper tail at a growing σ (the lower tail's adds nothing there).
+    let length = p.hi - p.lo;
+    let power = |log_ratio: f64| {
+        let b = 2.0 * log_ratio / length.max(f64::MIN_POSITIVE);
+        share_above(&cells, &d, critical, |z| (b * z).exp(), 1e-6)
+    };
+    let log_ratio = bisect_decreasing(|r| -power(r), -POWER, 0.0, 20.0);
+    if log_ratio > 19.0 {
+        return untestable();
+    }
     let size = log_ratio.exp();
     let advice = format!(
         "{} a scatter that changes along the axis by less than a factor {} between its ends may go unconfirmed",
@@ -287,4 +418,17 @@ pub(crate) fn detectable(p: &Prep, df: f64) -> Detectable {
         fmt(size)
     );
     Detectable::sized(Effect::ScatterVariation, measure, size, advice)
+}
+
+/// The r in (lo, hi) where the decreasing `g` falls to `target` (bisection).
+fn bisect_decreasing(g: impl Fn(f64) -> f64, target: f64, mut lo: f64, mut hi: f64) -> f64 {
+    for _ in 0..24 {
+        let mid = (lo + hi) / 2.0;
+        if g(mid) > target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (lo + hi) / 2.0
 }

@@ -1,7 +1,9 @@
 //! The diagnosis's shared maths, which knows nothing of effects: least squares
-//! ([`linalg`]), the distributions its tests are read against ([`stats`]) and the
-//! periodogram of unevenly spaced target means ([`periodogram`]).
+//! ([`linalg`]), the distributions its tests are read against ([`stats`]; a linear
+//! combination of χ² variables: [`imhof`]) and the periodogram of unevenly spaced target
+//! means ([`periodogram`]).
 
+pub(crate) mod imhof;
 pub(crate) mod linalg;
 pub(crate) mod periodogram;
 pub mod stats;

@@ -80,8 +80,10 @@ fn small_plan(rng: &mut Rng, runs: usize) -> TestPlan {
 
 /// Effects whose stated size is measured and printed but not yet held to 70–90 % (issue 43
 /// open; README): the periodic error's test finds its stated amplitude in about 80 % of
-/// tests but the held-out confirmation keeps fewer; the run offsets' and the scatter
-/// variation's sizes come out too small (30 and 22 %), the warm-up's a little large (93 %).
+/// tests but the held-out confirmation keeps fewer (14 %); the run offsets' size comes out
+/// a little small (68 % on 5 runs), the scatter variation's too small (40 %: the time
+/// model's terms take their degrees of freedom mostly where the scatter is large), the
+/// warm-up's a little large (90.5 %).
 const DETECTABLE_OPEN: &[Effect] = &[
     Effect::WarmUp,
     Effect::RunOffset,
@@ -478,7 +480,7 @@ fn sweep_of_every_case_type() {
 #[test]
 fn the_stated_detectable_size_is_confirmed_in_about_80_percent_of_tests() {
     let seeds = 0..200u64;
-    let outcomes: Vec<Vec<(Effect, bool)>> = seeds
+    let outcomes: Vec<Vec<Option<(Effect, bool, bool)>>> = seeds
         .into_par_iter()
         .map(|s| {
             let small = small_clean_case(900_000 + s);
@@ -496,29 +498,39 @@ fn the_stated_detectable_size_is_confirmed_in_about_80_percent_of_tests() {
                     let x = (clean.detectable.iter())
                         .find(|x| x.effect == e)
                         .expect("every effect has a detectable size");
-                    let size = x
-                        .size
-                        .unwrap_or_else(|| panic!("{e:?} untestable: {}", x.advice));
+                    // An effect the plan cannot test (run offsets on 3 runs) is left
+                    // out of its rate.
+                    let size = x.size?;
                     let mut case = clean_copy(base);
                     let mut rng = Rng::new(base.seed, 4301);
                     add_effect(&mut case, e, size, &x.assumed, &mut rng);
                     let (_, d) = run_case(&case);
-                    (e, d.has(e))
+                    let seen = d.has(e) || d.unconfirmed.iter().any(|u| u.finding.effect() == e);
+                    Some((e, d.has(e), seen))
                 })
                 .collect()
         })
         .collect();
     let mut failures = Vec::new();
     for &e in Effect::ALL {
-        let hits = (outcomes.iter().flatten())
-            .filter(|(f, c)| *f == e && *c)
-            .count();
-        let rate = hits as f64 / outcomes.len() as f64;
+        let count = |hit: fn(&(Effect, bool, bool)) -> bool| {
+            (outcomes.iter().flatten().flatten())
+                .filter(|o| o.0 == e && hit(o))
+                .count()
+        };
+        let tested = count(|_| true);
+        let rate = count(|o| o.1) as f64 / tested.max(1) as f64;
+        let seen = count(|o| o.2) as f64 / tested.max(1) as f64;
         eprintln!(
-            "detectable {}: confirmed in {:.1} %",
+            "detectable {}: confirmed in {:.1} % of {tested} (seen by its test in {:.1} %)",
             e.name(),
-            rate * 100.0
+            rate * 100.0,
+            seen * 100.0
         );
+        // Every effect is testable on most of these plans (run offsets: the 5-run half).
+        if tested < 90 {
+            failures.push(format!("{}: testable on {tested} plans", e.name()));
+        }
         if !(0.70..=0.90).contains(&rate) && !DETECTABLE_OPEN.contains(&e) {
             failures.push(format!("{}: {:.1} %", e.name(), rate * 100.0));
         }
@@ -607,7 +619,11 @@ fn add_effect(
 /// Each combination of two effects (issue 43): on a clean standard axis (a fine-step axis
 /// when one of them is the periodic error), both effects added at 1.5 times the size this
 /// plan confirms (`detectable`: a test then finds each alone in about 99 % of tests; a
-/// ratio to the power 1.5). Named right: both named; other: any other finding. Pairs the
+/// ratio to the power 1.5). Named right: at least one named, and each of the two named or
+/// stated by the diagnosis as beyond what the plan confirms beside what it found (its
+/// `detectable` size on these data larger than the size added: a drift beside real run
+/// offsets is judged against the run-to-run variation, and with 5 runs it is one of their
+/// trends); "both named" is printed beside it. Other: any other finding. Pairs the
 /// diagnosis does not separate yet are printed and listed in `OPEN_PAIRS`.
 #[test]
 fn sweep_of_each_pair_of_effects() {
@@ -615,7 +631,7 @@ fn sweep_of_each_pair_of_effects() {
         .flat_map(|(i, &a)| Effect::ALL[i + 1..].iter().map(move |&b| (a, b)))
         .collect();
     let only = std::env::var("SWEEP_ONLY").unwrap_or_default();
-    let per_seed: Vec<Vec<Option<(bool, bool, String)>>> = (0..SWEEP)
+    let per_seed: Vec<Vec<Option<PairOutcome>>> = (0..SWEEP)
         .into_par_iter()
         .map(|s| {
             let standard = standard_clean_case(920_000 + s);
@@ -636,6 +652,7 @@ fn sweep_of_each_pair_of_effects() {
                     };
                     let mut case = clean_copy(base);
                     let mut rng = Rng::new(base.seed, 4401);
+                    let mut added = Vec::new();
                     for e in [a, b] {
                         let x = (clean.detectable.iter()).find(|x| x.effect == e).unwrap();
                         // A plan that cannot test one of them leaves the seed out.
@@ -646,21 +663,31 @@ fn sweep_of_each_pair_of_effects() {
                             1.5 * size
                         };
                         add_effect(&mut case, e, size, &x.assumed, &mut rng);
+                        added.push((e, size));
                     }
                     let (_, d) = run_case(&case);
-                    let right = d.has(a) && d.has(b);
+                    let both = d.has(a) && d.has(b);
+                    let right = (d.has(a) || d.has(b))
+                        && added
+                            .iter()
+                            .all(|&(e, size)| d.has(e) || beyond(&d, e, size));
                     let other = d
                         .findings
                         .iter()
                         .any(|f| f.effect() != a && f.effect() != b);
-                    Some((right, other, d.effects_label()))
+                    Some(PairOutcome {
+                        right,
+                        other,
+                        both,
+                        label: d.effects_label(),
+                    })
                 })
                 .collect()
         })
         .collect();
     let mut table = vec![format!(
-        "{:<40} {:>6} {:>14} {:>16}",
-        "pair", "seeds", "named right %", "other findings %"
+        "{:<40} {:>6} {:>14} {:>12} {:>16}",
+        "pair", "seeds", "named right %", "both named %", "other findings %"
     )];
     let mut failures = Vec::new();
     for (k, &(a, b)) in pairs.iter().enumerate() {
@@ -668,20 +695,20 @@ fn sweep_of_each_pair_of_effects() {
         if !name.contains(only.as_str()) {
             continue;
         }
-        let results: Vec<&(bool, bool, String)> =
-            (per_seed.iter()).filter_map(|r| r[k].as_ref()).collect();
-        let right = pct(results.iter().filter(|r| r.0).count(), results.len());
-        let other = pct(results.iter().filter(|r| r.1).count(), results.len());
+        let results: Vec<&PairOutcome> = (per_seed.iter()).filter_map(|r| r[k].as_ref()).collect();
+        let right = pct(results.iter().filter(|r| r.right).count(), results.len());
+        let other = pct(results.iter().filter(|r| r.other).count(), results.len());
+        let both = pct(results.iter().filter(|r| r.both).count(), results.len());
         table.push(format!(
-            "{name:<40} {:>6} {right:>14.1} {other:>16.1}",
+            "{name:<40} {:>6} {right:>14.1} {both:>12.1} {other:>16.1}",
             results.len()
         ));
         let open = OPEN_PAIRS.contains(&(a, b));
         let held = right >= 96.0 && other <= 2.0;
         if !held && !open {
             let wrong: Vec<&str> = (results.iter())
-                .filter(|r| !r.0 || r.1)
-                .map(|r| r.2.as_str())
+                .filter(|r| !r.right || r.other)
+                .map(|r| r.label.as_str())
                 .take(10)
                 .collect();
             failures.push(format!(
@@ -693,18 +720,35 @@ fn sweep_of_each_pair_of_effects() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// Pairs measured and printed but not yet held to the rates (issue 43 open; README): the
-/// time effects together (a drift beside a thermal growth is read as a growth about
-/// another origin, beside a warm-up or run offsets as one of them), and every pair with an
-/// effect whose stated size is still too small (`DETECTABLE_OPEN`).
+/// One seed of a pair: named right, another finding, both named, and what was named.
+struct PairOutcome {
+    right: bool,
+    other: bool,
+    both: bool,
+    label: String,
+}
+
+/// Whether the diagnosis `d` states that effect `e` of `size` (in its `measure`) is beyond
+/// what its plan confirms beside the effects it found: untestable, or a detectable size
+/// larger than `size`.
+fn beyond(d: &Diagnosis, e: Effect, size: f64) -> bool {
+    (d.detectable.iter())
+        .find(|x| x.effect == e)
+        .is_some_and(|x| x.size.is_none_or(|stated| stated > size))
+}
+
+/// Pairs measured and printed but not yet held to the rates (issue 43 open; README): a
+/// drift beside a thermal growth (read as a growth about another origin, clamped to a
+/// quarter of the travel beyond its ends), the pairs with the periodic error (its
+/// held-out confirmation keeps few) and pairs whose other findings exceed 2 % (a warm-up
+/// or thermal growth beside a scatter variation, run offsets beside a time effect or a
+/// reversal variation).
 const OPEN_PAIRS: &[(Effect, Effect)] = {
     use Effect::*;
     &[
-        (Drift, WarmUp),
         (Drift, ThermalGrowth),
         (Drift, RunOffset),
         (Drift, Periodic),
-        (Drift, ScatterVariation),
         (WarmUp, ThermalGrowth),
         (WarmUp, RunOffset),
         (WarmUp, Periodic),
@@ -714,12 +758,10 @@ const OPEN_PAIRS: &[(Effect, Effect)] = {
         (ThermalGrowth, ScatterVariation),
         (RunOffset, Periodic),
         (RunOffset, ReversalVariation),
-        (RunOffset, Outlier),
         (RunOffset, ScatterVariation),
         (Periodic, ReversalVariation),
         (Periodic, Outlier),
         (Periodic, ScatterVariation),
-        (ReversalVariation, ScatterVariation),
         (Outlier, ScatterVariation),
     ]
 };
