@@ -188,9 +188,10 @@ pub(crate) fn offsets(prep: &Prep, trend: &TimeFit) -> Vec<f64> {
 /// noncentrality, spread over the n − 2 directions a line leaves of the run means. The
 /// warm-up curve the test always fits beside the line (`warm_curve`) takes two of them:
 /// its time constant is chosen to fit the data best, so that it takes the curve's and its
-/// tangent's direction (as in the warm-up's own power). With one (the test's df1 of the
-/// n − 2) the stated RMS was found in 30 % of simulated tests. With three runs the
-/// curve takes all a line leaves, and with four nothing is left: untestable.
+/// tangent's direction (as in the warm-up's own power), from the offsets and from the
+/// scatter alike. With one (the test's df1 of the n − 2) the stated RMS was found in
+/// 30 % of simulated tests. With three runs the curve takes all a line leaves, and with
+/// four nothing is left: untestable.
 pub(crate) fn detectable(
     p: &Prep,
     u: Units,
@@ -218,8 +219,11 @@ pub(crate) fn detectable(
             ),
         );
     }
-    let critical = f_upper_quantile(ALPHA, r.df1, r.df2);
-    let lambda = noncentrality_for_power(critical, r.df1, r.df2, POWER);
+    // The curve's time constant is fitted to the data, so its tangent takes one of the
+    // df1 directions from the scatter as well: the numerator is about χ²(df1 − 1) over
+    // df1, an F(df1 − 1, df2) at df1/(df1 − 1) times the critical value.
+    let critical = f_upper_quantile(ALPHA, r.df1, r.df2) * r.df1 / left;
+    let lambda = noncentrality_for_power(critical, left, r.df2, POWER);
     let share = left / (p.n as f64 - 2.0);
     let size = (lambda * sigma2 / (rows as f64 * share)).sqrt();
     let advice = format!(
