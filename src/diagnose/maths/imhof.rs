@@ -7,9 +7,9 @@
 //!
 //! A ratio of such sums (the scatter test's share of the squares along the axis) has its
 //! exact tail from it: P(Σ aⱼ Xⱼ / Σ Xⱼ > r) = P(Σ (aⱼ − r) Xⱼ > 0). The integral is
-//! taken in s = ln u, where the integrand sin θ / ρ is smooth and bounded by 1, from
-//! u = 1e-9 (below which it adds under 1e-9 times Σ hⱼ |λⱼ|) to Imhof's truncation point
-//! for an error under the tolerance asked (his eq. 3.3).
+//! taken in s = ln u, where the integrand sin θ / ρ is smooth and bounded by 1, from a
+//! small u₀ (below which it is θ′(0) u₀ to within the tolerance) to Imhof's truncation
+//! point for an error under the tolerance asked (his eq. 3.3).
 
 use std::f64::consts::PI;
 
@@ -43,7 +43,13 @@ pub fn combination_positive(terms: &[(f64, f64)], tolerance: f64) -> f64 {
         }
         theta.sin() * (-ln_rho).exp()
     };
-    let integral = adaptive(&g, (1e-9f64).ln(), upper.ln(), tolerance / 4.0);
+    // Near 0 the integrand (in u) is θ′(0) + O(u²) with θ′(0) = ½ Σ hⱼ λⱼ, and its u²
+    // term is at most about (½ Σ hⱼ)³ / 6: up to u₀ the head is θ′(0) u₀ within a
+    // quarter of the tolerance.
+    let half_df: f64 = terms.iter().map(|t| 0.5 * t.1).sum();
+    let slope: f64 = terms.iter().map(|t| 0.5 * t.1 * t.0).sum();
+    let u0 = ((tolerance / 4.0).cbrt() / half_df.max(1.0)).min(upper / 2.0);
+    let integral = slope * u0 + adaptive(&g, u0.ln(), upper.ln(), tolerance / 4.0);
     (0.5 + integral / PI).clamp(0.0, 1.0)
 }
 
