@@ -7,9 +7,11 @@
 //! Each effect's size comes from the power of its own test (in its file, beside the
 //! test): the noncentrality at which the test at its level rejects in 80 % of tests
 //! ([`noncentrality_for_power`]), turned into the effect's size by the standard error of
-//! its estimate on this plan. The held-out confirmation that follows rarely refuses an
-//! effect that clear: the sweep checks, for every effect, that an effect of the stated
-//! size is confirmed in 70–90 % of simulated tests.
+//! its estimate on this plan (the scatter variation's from the exact distribution of its
+//! statistic). The held-out confirmation that follows rarely refuses an effect that
+//! clear, but for the periodic term's: the sweep checks, for every effect, that an effect
+//! of the stated size is confirmed in 70–90 % of simulated tests, and prints those not
+//! yet there.
 //!
 //! [`noncentrality_for_power`]: super::maths::stats::noncentrality_for_power
 

@@ -247,22 +247,6 @@ pub fn bisect_increasing(g: impl Fn(f64) -> f64, target: f64, limit: f64) -> f64
     0.5 * (lo + hi)
 }
 
-/// The trigamma function ψ′(x), x > 0: the variance of the log of a χ²(2x) variable
-/// (used for the scatter of log variances). Recurrence up to x ≥ 12, then the asymptotic
-/// series (Abramowitz and Stegun 6.4.12).
-pub fn trigamma(x: f64) -> f64 {
-    if x.is_nan() || x <= 0.0 {
-        return f64::NAN;
-    }
-    let (mut x, mut acc) = (x, 0.0);
-    while x < 12.0 {
-        acc += 1.0 / (x * x);
-        x += 1.0;
-    }
-    let x2 = 1.0 / (x * x);
-    acc + 1.0 / x + x2 / 2.0 + x2 / x * (1.0 / 6.0 - x2 * (1.0 / 30.0 - x2 / 42.0))
-}
-
 /// Upper tail P(X ≥ x) of the χ² distribution with `k` degrees of freedom.
 pub fn chi2_upper(x: f64, k: f64) -> f64 {
     if x.is_nan() || k <= 0.0 {
@@ -331,20 +315,11 @@ mod tests {
     }
 
     #[test]
-    fn f_quantile_and_trigamma() {
+    fn f_quantile() {
         // F(1, 10) at 5 %: 4.9646 (= t(10)² at 2.5 % each side, 2.2281²).
         assert!(close(f_upper_quantile(0.05, 1.0, 10.0), 4.9646, 1e-4));
         let f = f_upper_quantile(1e-6, 3.0, 12.0);
         assert!(close(f_upper(f, 3.0, 12.0), 1e-6, 1e-6));
-        // ψ′(1) = π²/6, ψ′(1/2) = π²/2, ψ′(x + 1) = ψ′(x) − 1/x².
-        let pi2 = std::f64::consts::PI.powi(2);
-        assert!(close(trigamma(1.0), pi2 / 6.0, 1e-10));
-        assert!(close(trigamma(0.5), pi2 / 2.0, 1e-10));
-        assert!(close(
-            trigamma(7.5),
-            trigamma(6.5) - 1.0 / 6.5f64.powi(2),
-            1e-12
-        ));
     }
 
     #[test]
