@@ -13,6 +13,7 @@ use crate::diagnose::detectable::{Detectable, POWER, plan_words};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::imhof;
+use crate::diagnose::maths::stats::root_decreasing;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
@@ -424,45 +425,4 @@ pub(crate) fn detectable(p: &Prep, df: f64) -> Detectable {
         fmt(size)
     );
     Detectable::sized(Effect::ScatterVariation, measure, size, advice)
-}
-
-/// The r in [lo, hi] where the decreasing `g` falls to `target` (to within `tolerance` in
-/// g): regula falsi with the Illinois modification (Dowell & Jarratt 1971), which keeps
-/// the bracket and converges in a handful of steps where bisection took 24 (each step
-/// here an Imhof integral); hi when `g` stays above `target`.
-fn root_decreasing(
-    g: impl Fn(f64) -> f64,
-    target: f64,
-    (mut lo, mut hi): (f64, f64),
-    tolerance: f64,
-) -> f64 {
-    let (mut glo, mut ghi) = (g(lo) - target, g(hi) - target);
-    if ghi.is_nan() || ghi >= 0.0 {
-        return hi;
-    }
-    if glo.is_nan() || glo <= 0.0 {
-        return lo;
-    }
-    let mut side = 0;
-    for _ in 0..60 {
-        let r = (lo * ghi - hi * glo) / (ghi - glo);
-        let gr = g(r) - target;
-        if gr.abs() < tolerance || hi - lo < 1e-9 * hi.abs().max(1e-9) {
-            return r;
-        }
-        if gr > 0.0 {
-            (lo, glo) = (r, gr);
-            if side == 1 {
-                ghi /= 2.0;
-            }
-            side = 1;
-        } else {
-            (hi, ghi) = (r, gr);
-            if side == -1 {
-                glo /= 2.0;
-            }
-            side = -1;
-        }
-    }
-    (lo + hi) / 2.0
 }

@@ -247,6 +247,47 @@ pub fn bisect_increasing(g: impl Fn(f64) -> f64, target: f64, limit: f64) -> f64
     0.5 * (lo + hi)
 }
 
+/// The r in [lo, hi] where the decreasing `g` falls to `target` (to within `tolerance` in
+/// g): regula falsi with the Illinois modification (Dowell & Jarratt 1971), which keeps
+/// the bracket and converges in a handful of steps where bisection took 24 (each step
+/// of the scatter's detectable an Imhof integral); hi when `g` stays above `target`.
+pub fn root_decreasing(
+    g: impl Fn(f64) -> f64,
+    target: f64,
+    (mut lo, mut hi): (f64, f64),
+    tolerance: f64,
+) -> f64 {
+    let (mut glo, mut ghi) = (g(lo) - target, g(hi) - target);
+    if ghi.is_nan() || ghi >= 0.0 {
+        return hi;
+    }
+    if glo.is_nan() || glo <= 0.0 {
+        return lo;
+    }
+    let mut side = 0;
+    for _ in 0..60 {
+        let r = (lo * ghi - hi * glo) / (ghi - glo);
+        let gr = g(r) - target;
+        if gr.abs() < tolerance || hi - lo < 1e-9 * hi.abs().max(1e-9) {
+            return r;
+        }
+        if gr > 0.0 {
+            (lo, glo) = (r, gr);
+            if side == 1 {
+                ghi /= 2.0;
+            }
+            side = 1;
+        } else {
+            (hi, ghi) = (r, gr);
+            if side == -1 {
+                glo /= 2.0;
+            }
+            side = -1;
+        }
+    }
+    (lo + hi) / 2.0
+}
+
 /// Upper tail P(X ≥ x) of the χ² distribution with `k` degrees of freedom.
 pub fn chi2_upper(x: f64, k: f64) -> f64 {
     if x.is_nan() || k <= 0.0 {
@@ -320,6 +361,16 @@ mod tests {
         assert!(close(f_upper_quantile(0.05, 1.0, 10.0), 4.9646, 1e-4));
         let f = f_upper_quantile(1e-6, 3.0, 12.0);
         assert!(close(f_upper(f, 3.0, 12.0), 1e-6, 1e-6));
+    }
+
+    /// 1 − x² falls to 0.75 at x = 0.5; a function that stays above the target gives hi,
+    /// one already below it lo.
+    #[test]
+    fn root_of_a_decreasing_function() {
+        let r = root_decreasing(|x| 1.0 - x * x, 0.75, (0.0, 1.0), 1e-12);
+        assert!(close(r, 0.5, 1e-9), "{r}");
+        assert_eq!(root_decreasing(|_| 2.0, 0.75, (0.0, 1.0), 1e-12), 1.0);
+        assert_eq!(root_decreasing(|_| 0.0, 0.75, (0.0, 1.0), 1e-12), 0.0);
     }
 
     #[test]
