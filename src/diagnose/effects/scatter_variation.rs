@@ -263,7 +263,7 @@ impl Squares {
     /// the pooled `sigma2`.
     fn scale(&self, prep: &Prep, along: &[f64], sigma2: f64) -> (f64, f64, Vec<f64>) {
         let (a, b) = log_linear(&self.cells);
-        let shape = |p: f64| (a + b * (p - prep.pbar)).exp();
+        let shape = |p: f64| libm::exp(a + b * (p - prep.pbar));
         let cells = prep.cells();
         let mean_shape = (0..cells).map(|c| shape(along[c / 2])).sum::<f64>() / cells as f64;
         let kappa = sigma2 / mean_shape;
@@ -343,8 +343,8 @@ fn log_linear(cells: &[CellSquares]) -> (f64, f64) {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), z| {
             (l.min(z), h.max(z))
         });
-    let limit = (1e6f64).ln() / (zhi - zlo).max(f64::MIN_POSITIVE);
-    let mut a = (cells.iter().map(|c| c.ss).sum::<f64>() / nu).ln();
+    let limit = libm::log(1e6) / (zhi - zlo).max(f64::MIN_POSITIVE);
+    let mut a = libm::log(cells.iter().map(|c| c.ss).sum::<f64>() / nu);
     let mut b = 0.0;
     for _ in 0..50 {
         // Working response η + (s² − μ)/μ, weight ν: weighted least squares on z.
@@ -352,7 +352,7 @@ fn log_linear(cells: &[CellSquares]) -> (f64, f64) {
             .iter()
             .map(|c| {
                 let eta = a + b * c.z;
-                (c.z, eta + (c.ss / c.nu) / eta.exp() - 1.0, c.nu)
+                (c.z, eta + (c.ss / c.nu) / libm::exp(eta) - 1.0, c.nu)
             })
             .collect();
         let sw: f64 = work.iter().map(|w| w.2).sum();
@@ -403,8 +403,8 @@ pub(crate) fn detectable(p: &Prep, df: f64) -> Detectable {
     // 1e-4.
     let tail = |r: f64| share_above(&cells, &d, r, |_| 1.0, 1e-9);
     let critical = root_decreasing(
-        |r| tail(r).max(1e-300).ln(),
-        (ALPHA / 2.0).ln(),
+        |r| libm::log(tail(r).max(1e-300)),
+        libm::log(ALPHA / 2.0),
         (lo, hi),
         1e-6,
     );
@@ -412,13 +412,13 @@ pub(crate) fn detectable(p: &Prep, df: f64) -> Detectable {
     let length = p.hi - p.lo;
     let power = |log_ratio: f64| {
         let b = 2.0 * log_ratio / length.max(f64::MIN_POSITIVE);
-        share_above(&cells, &d, critical, |z| (b * z).exp(), 1e-5)
+        share_above(&cells, &d, critical, |z| libm::exp(b * z), 1e-5)
     };
     let log_ratio = root_decreasing(|r| -power(r), -POWER, (0.0, 20.0), 1e-4);
     if log_ratio > 19.0 {
         return untestable();
     }
-    let size = log_ratio.exp();
+    let size = libm::exp(log_ratio);
     let advice = format!(
         "{} a scatter that changes along the axis by less than a factor {} between its ends may go unconfirmed",
         plan_words(p.m, p.n),
