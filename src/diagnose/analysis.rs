@@ -115,7 +115,7 @@ impl Analysis<'_> {
                     reversal_variation::detectable(p, u, self.reversal.as_ref())
                 }
                 Effect::Outlier => outlier::detectable(p, u, tt.sigma2, tt.df),
-                Effect::ScatterVariation => scatter_variation::detectable(p, tt.df),
+                Effect::ScatterVariation => scatter_variation::detectable(p, &tt.full),
             })
             .collect()
     }

@@ -10,8 +10,8 @@
 //! `between_targets_rms`), `gain_pct` (held-out RMS of the readings),
 //! `gain_between_targets_pct` (leave-targets-out, when a periodic term was judged),
 //! `term_gains` (each judged term: `effect`, `scheme`, `without`, `with`, `gain_pct`,
-//! `threshold_pct`, `kept`, `null`: what the gain was compared with — `target_orders`,
-//! `time_orders`, `ordinary_readings` or `simulated_tests` (`run_orders` before issue 43); `shape` and
+//! `threshold_pct`, `kept`, `null`: what the gain was compared with — `time_orders`,
+//! `ordinary_readings` or `simulated_tests` (`run_orders` and `target_orders` before issue 43); `shape` and
 //! `shapes` for a term along the axis: `line`, `curve` or `per_target`, each with its
 //! `parameters` and `heldout_rms`), `validation`, `checks`, `model_check` (`verdict`:
 //! `explained`, `effects_found`, `not_explained` or `not_checked`; `checks`; `outside`, each

@@ -8,6 +8,7 @@
 use super::analysis::Analysis;
 use super::confirm::{self, Unrelated};
 use super::effects::Finding;
+use super::effects::periodic;
 use super::effects::warm_up as warm;
 use super::effects::{Effect, Term};
 use super::finding::{Evidence, Keyed, fmt};
@@ -314,7 +315,7 @@ impl Judge<'_> {
                     .collect();
                 (self.score(terms), others)
             }
-            Unrelated::SimulatedTests | Unrelated::TargetOrders => {
+            Unrelated::SimulatedTests => {
                 unreachable!("judged by `simulated_threshold`, `shaped` or `judge_periodic`")
             }
             Unrelated::OrdinaryReadings => {
@@ -535,9 +536,32 @@ pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection
     }
 }
 
-/// The periodic term, judged on the leave-targets-out errors of the target means against
-/// the same sinusoid along the targets in random orders: the RMS without and with it, and
-/// the term when it earns its place.
+/// The largest leave-targets-out gain of a sinusoid of `period` on [`confirm::UNRELATED`]
+/// sets of target means simulated from the base model (`without`: the smooth trend and
+/// the scatter of the means), weighted as the real ones.
+fn simulated_between_targets(
+    positions: &[f64],
+    without: &periodic::MeansModel,
+    period: f64,
+    seed: u64,
+) -> f64 {
+    let mut rng = Rng::new(seed, 0x9E71);
+    let weights = without.weights();
+    (0..confirm::UNRELATED)
+        .map(|_| {
+            let y: Vec<f64> = (without.trend.iter().zip(&without.sd))
+                .map(|(t, s)| t + s * rng.normal())
+                .collect();
+            let (b, e) = validate::between_targets(positions, &y, period, &weights).rms();
+            gain_pct(Scheme::LeaveTargetsOut, b, e)
+        })
+        .fold(f64::NAN, f64::max)
+}
+
+/// The periodic term, judged on the leave-targets-out errors of the target means (each
+/// weighted by the inverse variance of its mean) against the same sinusoid on target
+/// means simulated without it: the RMS without and with it, and the term when it earns
+/// its place.
 fn judge_periodic(
     a: &Analysis,
     seed: u64,
@@ -548,15 +572,11 @@ fn judge_periodic(
         return ((None, None), None);
     };
     let positions = &a.basis.prep.positions;
-    let orders = confirm::target_orders(positions, seed);
-    let errors = validate::between_targets(positions, &a.basis.means, peak.period, &orders);
+    let without = &a.periodic.without;
+    let errors =
+        validate::between_targets(positions, &a.basis.means, peak.period, &without.weights());
     let (bb, be) = errors.rms();
-    let others: Vec<f64> = errors
-        .unrelated
-        .iter()
-        .map(|u| validate::rms_of(u))
-        .collect();
-    let threshold = largest_gain(Scheme::LeaveTargetsOut, bb, &others);
+    let threshold = simulated_between_targets(positions, without, peak.period, seed);
     let gain = TermGain::new(Effect::Periodic, Scheme::LeaveTargetsOut, bb, be, threshold);
     let kept = gain.kept;
     term_gains.push(gain);

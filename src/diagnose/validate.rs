@@ -269,15 +269,13 @@ fn fold_loss(
     loss
 }
 
-/// Leave-targets-out errors of the target means: each predicted target's squared error
-/// without and with the periodic term (and with the unrelated terms), and how many
-/// targets each prediction was fitted on.
+/// Leave-targets-out errors of the target means: each predicted target's weighted squared
+/// error without and with the periodic term, and how many targets each prediction was
+/// fitted on.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub(crate) struct BetweenTargets {
     pub base: Vec<f64>,
     pub extended: Vec<f64>,
-    /// Per unrelated order of the targets: the squared errors with the sinusoid along it.
-    pub unrelated: Vec<Vec<f64>>,
     /// Targets each prediction is fitted on (all but the block).
     pub train: usize,
 }
@@ -295,8 +293,9 @@ pub(crate) fn rms_of(squares: &[f64]) -> f64 {
 }
 
 /// Leave-targets-out errors of the target means `y` at `positions`, base and extended
-/// with a sinusoid of `period`, and with that sinusoid along each order of the targets in
-/// `unrelated` (one position per target: the same term, unrelated to the data). Each
+/// with a sinusoid of `period`, each squared error times the target's `weights` (the
+/// inverse variance of its mean scaled to average 1, so that a target whose mean scatters
+/// more counts less, as in the periodogram's weighted fit; empty: equal weights). Each
 /// inner target is predicted from the targets outside a block of about a quarter period
 /// around it (h-block cross-validation, Burman, Chow and Nolan 1994): with one target
 /// left out a dense plan interpolates a long period almost as well without the term, and
@@ -308,7 +307,7 @@ pub(crate) fn between_targets(
     positions: &[f64],
     y: &[f64],
     period: f64,
-    unrelated: &[Vec<f64>],
+    weights: &[f64],
 ) -> BetweenTargets {
     let m = positions.len();
     if !(8..=3000).contains(&m) {
@@ -319,32 +318,25 @@ pub(crate) fn between_targets(
     let f = 1.0 / period;
     let mut out = BetweenTargets {
         train: m - 1 - 2 * h,
-        unrelated: vec![Vec::new(); unrelated.len()],
         ..BetweenTargets::default()
     };
+    let weight = |i: usize| weights.get(i).copied().unwrap_or(1.0);
     for i in 1 + h..m - 1 - h {
         let others: Vec<usize> = (0..m).filter(|&k| k.abs_diff(i) > h).collect();
         let p: Vec<f64> = others.iter().map(|&k| positions[k]).collect();
         let v: Vec<f64> = others.iter().map(|&k| y[k]).collect();
         let knots: Vec<[f64; 2]> = p.iter().zip(&v).map(|(a, b)| [*a, *b]).collect();
         out.base
-            .push((y[i] - interpolate(&knots, positions[i])).powi(2));
+            .push(weight(i) * (y[i] - interpolate(&knots, positions[i])).powi(2));
         let trend = Trend::new(&p, None);
-        let scanner = trend.scanner(&v);
-        let predict = |at: &[f64]| {
-            let wave_at: Vec<f64> = others.iter().map(|&k| at[k]).collect();
-            let peak = scanner.peak_at(&wave_at, f);
-            let phase = peak.phase_deg.to_radians();
-            let wave = |x: f64| peak.amplitude * (TAU * f * x + phase).sin();
-            let rest: Vec<[f64; 2]> = (p.iter().zip(&v).zip(&wave_at))
-                .map(|((a, b), w)| [*a, b - wave(*w)])
-                .collect();
-            (y[i] - interpolate(&rest, positions[i]) - wave(at[i])).powi(2)
-        };
-        out.extended.push(predict(positions));
-        for (u, at) in out.unrelated.iter_mut().zip(unrelated) {
-            u.push(predict(at));
-        }
+        let peak = trend.scanner(&v).peak_at(&p, f);
+        let phase = peak.phase_deg.to_radians();
+        let wave = |x: f64| peak.amplitude * (TAU * f * x + phase).sin();
+        let rest: Vec<[f64; 2]> = (p.iter().zip(&v))
+            .map(|(a, b)| [*a, b - wave(*a)])
+            .collect();
+        let e = y[i] - interpolate(&rest, positions[i]) - wave(positions[i]);
+        out.extended.push(weight(i) * e * e);
     }
     out
 }

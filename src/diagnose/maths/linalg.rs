@@ -149,6 +149,12 @@ impl LeastSquares {
     pub fn leverage(&self, row: usize) -> f64 {
         self.q.iter().map(|qk| qk[row] * qk[row]).sum()
     }
+
+    /// Row `row` of the orthonormal basis of the kept columns (one value per column):
+    /// the hat matrix is the sum of their outer products.
+    pub fn basis_row(&self, row: usize) -> Vec<f64> {
+        self.q.iter().map(|qk| qk[row]).collect()
+    }
 }
 
 /// The smooth (cubic, or lower with few targets) least-squares trend of `y`.

@@ -79,11 +79,8 @@ fn small_plan(rng: &mut Rng, runs: usize) -> TestPlan {
 }
 
 /// Effects whose stated size is measured and printed but not yet held to 70–90 % (issue 43
-/// open; README): the periodic error's test finds its stated amplitude in about 80 % of
-/// tests but the held-out confirmation keeps fewer (14 %); the scatter variation's size
-/// comes out too small (40 %: the time model's terms take their degrees of freedom mostly
-/// where the scatter is large), the warm-up's a little large (90.5 %).
-const DETECTABLE_OPEN: &[Effect] = &[Effect::WarmUp, Effect::Periodic, Effect::ScatterVariation];
+/// open; README): the warm-up's comes out a little large (90.5 %).
+const DETECTABLE_OPEN: &[Effect] = &[Effect::WarmUp];
 
 /// Clean data on a plan drawn by `plan` (rng stream `stream`), σ 0.3–1.2, a realistic
 /// error with a bow and a scale error up to `bow` µm and `ppm`.
@@ -733,29 +730,22 @@ fn beyond(d: &Diagnosis, e: Effect, size: f64) -> bool {
 
 /// Pairs measured and printed but not yet held to the rates (issue 43 open; README): a
 /// drift beside a thermal growth (read as a growth about another origin, clamped to a
-/// quarter of the travel beyond its ends), the pairs with the periodic error (its
-/// held-out confirmation keeps few) and pairs whose other findings exceed 2 % (a warm-up
-/// or thermal growth beside a scatter variation, run offsets beside a time effect or a
-/// reversal variation).
+/// quarter of the travel beyond its ends), a periodic error beside run offsets (read as
+/// a warm-up, 91 %) or a scatter variation (94.5 %), and pairs whose other findings
+/// exceed 2 % (a warm-up or thermal growth beside a scatter variation, run offsets beside
+/// a time effect or a reversal variation).
 const OPEN_PAIRS: &[(Effect, Effect)] = {
     use Effect::*;
     &[
         (Drift, ThermalGrowth),
         (Drift, RunOffset),
-        (Drift, Periodic),
         (WarmUp, ThermalGrowth),
         (WarmUp, RunOffset),
-        (WarmUp, Periodic),
         (WarmUp, ScatterVariation),
         (ThermalGrowth, RunOffset),
-        (ThermalGrowth, Periodic),
         (ThermalGrowth, ScatterVariation),
         (RunOffset, Periodic),
         (RunOffset, ReversalVariation),
-        (RunOffset, ScatterVariation),
-        (Periodic, ReversalVariation),
-        (Periodic, Outlier),
         (Periodic, ScatterVariation),
-        (Outlier, ScatterVariation),
     ]
 };
