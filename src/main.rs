@@ -53,6 +53,10 @@ enum Command {
         /// Lead-screw or encoder pitch (mm or deg), tested as a candidate period.
         #[arg(long, allow_negative_numbers = true, value_parser = cli::parse_pitch)]
         pitch: Option<f64>,
+        /// Where a thermal growth holds still (mm or deg: the lead screw's fixed bearing or
+        /// the scale's fixing point); tells a drift from a growth about another origin.
+        #[arg(long, allow_negative_numbers = true, value_parser = cli::parse_position)]
+        thermal_origin: Option<f64>,
         /// Tests simulated from the fitted base model for the model check.
         #[arg(long, default_value_t = 200)]
         simulations: usize,
@@ -167,6 +171,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             sheet,
             standard,
             pitch,
+            thermal_origin,
             simulations,
             seed,
             write_model,
@@ -174,6 +179,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
         } => {
             let options = axcheck::diagnose::Options {
                 pitch,
+                thermal_origin,
                 simulations,
                 seed,
                 standard,

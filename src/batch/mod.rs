@@ -528,6 +528,7 @@ fn judge_stage(
 fn diagnose_stage(axis: &AxisSpec, data: &AxisData) -> crate::diagnose::Diagnosis {
     let options = crate::diagnose::Options {
         pitch: axis.raw.pitch,
+        thermal_origin: axis.raw.thermal_origin,
         standard: axis.standard,
         ..crate::diagnose::Options::default()
     };

@@ -193,6 +193,7 @@ fn validated_axis(
     })?;
     check_travels(&raw, base, index)?;
     check_pitch(&raw, base, index)?;
+    check_thermal_origin(&raw, base, index)?;
     check_compensation(&raw, base, index)?;
     check_plan(&raw, base, index)?;
     check_tolerances(&mut raw, base, index)?;
@@ -277,6 +278,17 @@ fn check_pitch(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), L
         Some(p) if !(p > 0.0 && p.is_finite()) => Err(Located::new(
             index.value(&format!("{base}.pitch")),
             format!("{base}.pitch: expected a pitch > 0"),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// A thermal origin is a finite position.
+fn check_thermal_origin(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    match raw.thermal_origin {
+        Some(p) if !p.is_finite() => Err(Located::new(
+            index.value(&format!("{base}.thermal_origin")),
+            format!("{base}.thermal_origin: expected a position (mm or deg)"),
         )),
         _ => Ok(()),
     }

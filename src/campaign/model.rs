@@ -180,6 +180,10 @@ pub struct AxisRaw {
     /// Lead-screw or encoder pitch, mm or deg.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pitch: Option<f64>,
+    /// Where a thermal growth of the axis holds still (the lead screw's fixed bearing),
+    /// mm or deg: the diagnosis then tells a drift from a growth about another origin.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal_origin: Option<f64>,
     /// GOST 27843 only: S from ranges, formula (6).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub s_from_ranges: bool,

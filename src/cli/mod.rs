@@ -135,6 +135,16 @@ pub fn capped_jobs(requested: usize) -> usize {
     threads
 }
 
+/// `--thermal-origin`: a finite position (mm or deg), negative ones included.
+pub fn parse_position(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(p) if p.is_finite() => Ok(p),
+        _ => Err(format!(
+            "`{text}` is not a position; a position is a number (mm, or deg for a rotary axis), such as 0 or -120"
+        )),
+    }
+}
+
 /// `--pitch` and `--scale-pitch`: a positive, finite length (mm or deg). Negative values
 /// reach this parser (`allow_negative_numbers`), so that `--pitch -5` is refused for its
 /// sign instead of as an unknown argument.

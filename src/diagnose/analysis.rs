@@ -15,7 +15,7 @@ use super::effects::reversal_variation::{self, ReversalTest};
 use super::effects::scatter_variation::{self, ScatterTest};
 use super::effects::{Effect, Finding, drift, run_offset, thermal_growth, warm_up};
 use super::finding::Units;
-use super::options::ALPHA;
+use super::options::{ALPHA, Options};
 use super::prep::{Prep, TimeUnit};
 use super::time::{self, TimeTests};
 use crate::measurement::AxisData;
@@ -33,8 +33,12 @@ pub(crate) struct Analysis<'a> {
 
 impl<'a> Analysis<'a> {
     /// Runs the tests; notes on what could not be assessed go to `notes`.
-    pub fn run(data: &'a AxisData, pitch: Option<f64>, notes: &mut Vec<String>) -> Analysis<'a> {
-        let prep = Prep::new(data);
+    pub fn run(data: &'a AxisData, options: &Options, notes: &mut Vec<String>) -> Analysis<'a> {
+        let pitch = options.pitch;
+        let prep = Prep {
+            thermal_origin: options.thermal_origin,
+            ..Prep::new(data)
+        };
         notes.extend(opening_notes(prep.time_unit, prep.n));
         let x: Vec<f64> = prep.rows.iter().map(|r| r.x).collect();
         let (hits, active, tt, sc, scale) = time_and_scatter(&prep, &x);

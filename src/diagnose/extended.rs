@@ -38,7 +38,7 @@ impl Fitted {
             let p0 = p.pbar - beta / gamma;
             let o = if kept.drift {
                 let margin = 0.25 * p.length();
-                p0.clamp(p.lo - margin, p.hi + margin)
+                (p.thermal_origin).unwrap_or(p0.clamp(p.lo - margin, p.hi + margin))
             } else {
                 p0
             };

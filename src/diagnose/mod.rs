@@ -146,7 +146,7 @@ pub const VALIDATION: &str = "k-fold cross-validation over readings (10 folds, s
 /// kept effects removed.
 pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let mut notes = Vec::new();
-    let a = Analysis::run(data, options.pitch, &mut notes);
+    let a = Analysis::run(data, options, &mut notes);
     let mut seen = a.findings();
     seen.sort_by_key(Finding::effect);
     let selection = select::select(&a, &seen, options.seed);

@@ -17,6 +17,11 @@ pub struct Options {
     /// Declared lead-screw or encoder pitch (mm or deg): tested as a prior candidate
     /// period, and named in the advice when the plan cannot resolve it.
     pub pitch: Option<f64>,
+    /// Where a thermal growth of the axis holds still (mm or deg; the lead screw's fixed
+    /// bearing, or the scale's fixing point), when known: a drift and a growth about
+    /// another origin fit the same readings, and only a declared origin tells them apart
+    /// (without it the origin is fitted, within a quarter of the travel beyond its ends).
+    pub thermal_origin: Option<f64>,
     /// Monte-Carlo tests simulated from the fitted base model for the model checks.
     pub simulations: usize,
     /// Seed of the simulations and the cross-validation folds.
@@ -29,6 +34,7 @@ impl Default for Options {
     fn default() -> Options {
         Options {
             pitch: None,
+            thermal_origin: None,
             simulations: 200,
             seed: 0,
             standard: StandardId::Iso230_2,

@@ -72,6 +72,8 @@ pub(crate) struct Prep {
     pub t_span: f64,
     /// What each time term reads per row.
     pub clocks: Clocks,
+    /// The declared thermal origin ([`super::Options::thermal_origin`]).
+    pub thermal_origin: Option<f64>,
 }
 
 /// What each time term of the model reads per row: the readings' times and runs, or, for
@@ -168,6 +170,7 @@ impl Prep {
             t0,
             t_span: (tmax - tmin).max(0.0),
             clocks,
+            thermal_origin: None,
         }
     }
 

@@ -398,6 +398,14 @@ fn campaign_axis_errors_in_the_users_words() {
             "c.yaml:5:62: machines[0].axes[0].tolerances.A: expected a number, got the text `abc`",
         ),
         (
+            format!("{{{base}, thermal_origin: far}}"),
+            "c.yaml:5:62: machines[0].axes[0].thermal_origin: expected a number, got the text `far`",
+        ),
+        (
+            format!("{{{base}, thermal_origin: .inf}}"),
+            "c.yaml:5:62: machines[0].axes[0].thermal_origin: expected a position (mm or deg)",
+        ),
+        (
             format!("{{{base}, s_from_ranges: maybe}}"),
             "c.yaml:5:61: machines[0].axes[0].s_from_ranges: expected true or false, got the text `maybe`",
         ),

@@ -30,6 +30,7 @@ const SIMS: usize = 60;
 fn options(seed: u64, pitch: Option<f64>) -> Options {
     Options {
         pitch,
+        thermal_origin: None,
         simulations: SIMS,
         seed,
         standard: StandardId::Iso230_2,
@@ -587,6 +588,11 @@ fn without_times(mut data: AxisData) -> AxisData {
 const NO_TIME_STAMPS: &str = "read without time stamps";
 
 fn run_case(case: &Case) -> (AxisData, Diagnosis) {
+    run_case_declaring(case, None)
+}
+
+/// [`run_case`], the thermal origin declared (`thermal_origin`).
+fn run_case_declaring(case: &Case, thermal_origin: Option<f64>) -> (AxisData, Diagnosis) {
     let data = case.sim.run(case.seed);
     // Clean cases with seed ≡ 2 (mod 3) are read as files without time stamps, and so are
     // the cases that say so.
@@ -596,7 +602,11 @@ fn run_case(case: &Case) -> (AxisData, Diagnosis) {
     } else {
         data
     };
-    let d = diagnose::diagnose(&data, &options(case.seed ^ 0x5EED, case.pitch));
+    let options = Options {
+        thermal_origin,
+        ..options(case.seed ^ 0x5EED, case.pitch)
+    };
+    let d = diagnose::diagnose(&data, &options);
     (data, d)
 }
 
@@ -1534,4 +1544,41 @@ fn text_as_rotary(text: &str) -> String {
     let (head, rest) = text.split_once('\n').unwrap();
     let head = head.replace("_mm", "_deg").replace("_um", "_arcsec");
     format!("{head}\n{rest}")
+}
+
+/// A declared thermal origin (`--thermal-origin`, an axis's `thermal_origin:`): the GOST
+/// worked example's thermal growth, fitted to hold still at −131.2 mm (within a quarter
+/// of the travel before its start), is reported about the declared 0 mm with its label;
+/// the growth itself, a coefficient of position × time, is the same.
+#[test]
+fn a_declared_thermal_origin_is_where_the_growth_holds_still() {
+    let file = "tests/data/gost27843_example.csv";
+    let thermal = |extra: &[&str]| {
+        let mut args = vec!["diagnose", file, "--json"];
+        args.extend(extra);
+        let (code, json, err) = crate::common::axcheck(&args);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+        let mut found = v["findings"].as_array().unwrap().iter();
+        found
+            .find(|f| f["effect"] == "thermal_growth")
+            .cloned()
+            .expect("the example's thermal growth")
+    };
+    let fitted = thermal(&[]);
+    let declared = thermal(&["--thermal-origin", "0"]);
+    let origin = |f: &serde_json::Value| f["params"]["origin_mm"].as_f64().unwrap();
+    assert!((origin(&fitted) + 131.18).abs() < 0.01, "{fitted}");
+    assert_eq!(origin(&declared), 0.0);
+    assert_eq!(fitted["labels"], serde_json::json!({}));
+    assert_eq!(
+        declared["labels"],
+        serde_json::json!({"origin": "declared"})
+    );
+    let growth = |f: &serde_json::Value| f["params"]["growth_um_per_m_per_run"].clone();
+    assert_eq!(growth(&fitted), growth(&declared));
+    assert!(
+        (declared["message"].as_str().unwrap()).contains("zero at 0 mm, the declared origin"),
+        "{declared}"
+    );
 }

@@ -139,7 +139,8 @@ impl EffectRule for Rule {
 
 /// The test: the trend model's β (with γ), against `reference` (the scatter or, when the
 /// run offsets are real, the run-to-run variation: mean square, degrees of freedom,
-/// name); with a thermal growth found, at its origin.
+/// name); at the declared thermal origin, or with a thermal growth found at its fitted
+/// origin.
 pub(crate) fn test(
     prep: &Prep,
     trend: &TimeFit,
@@ -149,14 +150,21 @@ pub(crate) fn test(
     let bc = trend.drift_col.filter(|&c| trend.ls.kept[c])?;
     let (err_ms, err_df, against) = reference;
     let tc = trend.thermal_col.filter(|&c| trend.ls.kept[c]);
-    let (estimate, var, origin) = match (thermal_found, tc) {
-        (true, Some(gc)) if trend.gamma != 0.0 => {
-            // The position where the time effect vanishes; a screw's fixed end lies at
-            // (or near) the measured travel, so within a quarter of the travel beyond its
-            // ends the effect is all thermal growth.
+    // The origin: declared, or where the time effect vanishes when a growth is found (a
+    // screw's fixed end lies at or near the measured travel, so within a quarter of the
+    // travel beyond its ends the effect is all thermal growth). A declared origin holds
+    // still under a growth found or not: the drift is what moves it.
+    let origin = match (prep.thermal_origin, thermal_found, tc) {
+        (Some(o), _, Some(_)) => Some(o),
+        (None, true, Some(_)) if trend.gamma != 0.0 => {
             let p0 = prep.pbar - trend.beta / trend.gamma;
             let margin = 0.25 * prep.length();
-            let o = p0.clamp(prep.lo - margin, prep.hi + margin);
+            Some(p0.clamp(prep.lo - margin, prep.hi + margin))
+        }
+        _ => None,
+    };
+    let (estimate, var, origin) = match (origin, tc) {
+        (Some(o), Some(gc)) => {
             let a = o - prep.pbar;
             let est = trend.beta + trend.gamma * a;
             let cov = &trend.ls.cov;

@@ -27,6 +27,9 @@ pub struct ThermalGrowth {
     pub growth_se_ppm: f64,
     /// The position where the growth is zero, mm or deg.
     pub origin: f64,
+    /// Whether `origin` was declared ([`crate::diagnose::Options::thermal_origin`]), not
+    /// fitted.
+    pub origin_declared: bool,
     /// Over the measured travel and the test, deviation unit.
     pub over_travel_and_test: f64,
 }
@@ -55,6 +58,15 @@ impl Fields for ThermalGrowth {
         ]
     }
 
+    /// `origin: declared` when the origin was given, not fitted.
+    fn labels(&self) -> Vec<(&'static str, &'static str)> {
+        if self.origin_declared {
+            vec![("origin", "declared")]
+        } else {
+            Vec::new()
+        }
+    }
+
     /// ISO 230-2 3.1 (temperatures of the positioning system, NDE) and 3.3 (warm-up).
     fn advice(&self, u: Units) -> String {
         format!(
@@ -81,15 +93,21 @@ impl Rule {
         };
         let u = a.units;
         let ppm = t.estimate / a.prep.ppm_factor();
+        let declared = a.prep.thermal_origin.filter(|_| drift_origin.is_some());
         let origin = drift_origin.unwrap_or(a.prep.pbar);
         let over = t.estimate * a.length() * a.prep.t_span;
         let message = format!(
-            "an error proportional to position grows with time: {} ppm per {} ({} {} over the measured travel and the test), zero at {} (t = {}, p = {})",
+            "an error proportional to position grows with time: {} ppm per {} ({} {} over the measured travel and the test), zero at {}{} (t = {}, p = {})",
             fmt(ppm),
             u.per(),
             fmt(over),
             u.symbol(),
             fmt_target(u.kind, origin),
+            if declared.is_some() {
+                ", the declared origin"
+            } else {
+                ""
+            },
             fmt(t.t),
             fmt_p(t.p)
         );
@@ -98,6 +116,7 @@ impl Rule {
                 growth_ppm: ppm,
                 growth_se_ppm: t.se / a.prep.ppm_factor(),
                 origin,
+                origin_declared: declared.is_some(),
                 over_travel_and_test: over,
             }
             .into(),

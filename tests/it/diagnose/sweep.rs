@@ -614,8 +614,11 @@ fn add_effect(
 /// stated by the diagnosis as beyond what the plan confirms beside what it found (its
 /// `detectable` size on these data larger than the size added: a drift beside real run
 /// offsets is judged against the run-to-run variation, and with 5 runs it is one of their
-/// trends); "both named" is printed beside it. Other: any other finding. Pairs the
-/// diagnosis does not separate yet are printed and listed in `OPEN_PAIRS`.
+/// trends); "both named" is printed beside it. Other: any other finding. With a thermal
+/// growth the diagnosis is told where it holds still (`thermal_origin`, the start of the
+/// travel as the simulator has it): a drift and a growth about another origin fit the
+/// same readings. Pairs the diagnosis does not separate yet are printed and listed in
+/// `OPEN_PAIRS`.
 #[test]
 fn sweep_of_each_pair_of_effects() {
     let pairs: Vec<(Effect, Effect)> = (Effect::ALL.iter().enumerate())
@@ -656,7 +659,11 @@ fn sweep_of_each_pair_of_effects() {
                         add_effect(&mut case, e, size, &x.assumed, &mut rng);
                         added.push((e, size));
                     }
-                    let (_, d) = run_case(&case);
+                    // The growth's origin declared, as the campaign's `thermal_origin`:
+                    // without it a drift beside it is a growth about another origin.
+                    let thermal = [a, b].contains(&Effect::ThermalGrowth);
+                    let origin = thermal.then_some(case.sim.model.thermal_origin);
+                    let (_, d) = run_case_declaring(&case, origin);
                     let both = d.has(a) && d.has(b);
                     let right = (d.has(a) || d.has(b))
                         && added
@@ -696,7 +703,7 @@ fn sweep_of_each_pair_of_effects() {
         ));
         let open = OPEN_PAIRS.contains(&(a, b));
         let held = right >= 96.0 && other <= 2.0;
-        if !held && !open {
+        if !held && (!open || std::env::var("SWEEP_SHOW").is_ok()) {
             let wrong: Vec<&str> = (results.iter())
                 .filter(|r| !r.right || r.other)
                 .map(|r| r.label.as_str())
@@ -729,21 +736,18 @@ fn beyond(d: &Diagnosis, e: Effect, size: f64) -> bool {
 }
 
 /// Pairs measured and printed but not yet held to the rates (issue 43 open; README): a
-/// drift beside a thermal growth (read as a growth about another origin, clamped to a
-/// quarter of the travel beyond its ends), a periodic error beside run offsets (read as
-/// a warm-up, 91 %) or a scatter variation (94.5 %), and pairs whose other findings
-/// exceed 2 % (a warm-up or thermal growth beside a scatter variation, run offsets beside
-/// a time effect or a reversal variation).
+/// periodic error beside run offsets (read as a warm-up, 91 %) or a scatter variation
+/// (94.5 %), and pairs whose other findings exceed 2 % (a warm-up beside a thermal growth,
+/// 10.5 %, or a scatter variation; run offsets beside a time effect or a reversal
+/// variation). `SWEEP_SHOW=1` prints their seeds named wrong too.
 const OPEN_PAIRS: &[(Effect, Effect)] = {
     use Effect::*;
     &[
-        (Drift, ThermalGrowth),
         (Drift, RunOffset),
         (WarmUp, ThermalGrowth),
         (WarmUp, RunOffset),
         (WarmUp, ScatterVariation),
         (ThermalGrowth, RunOffset),
-        (ThermalGrowth, ScatterVariation),
         (RunOffset, Periodic),
         (RunOffset, ReversalVariation),
         (Periodic, ScatterVariation),

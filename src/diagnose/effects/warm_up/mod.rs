@@ -36,7 +36,10 @@
 //! zero shift cannot reach) — and the change of the Bayesian information criterion
 //! against a linear drift and against free run offsets.
 
+mod beside;
 mod power;
+
+pub(crate) use beside::linear_tests;
 pub(crate) use power::detectable;
 
 use super::{Finding, Rule as EffectRule, Term, Unrelated};
@@ -51,9 +54,7 @@ use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
 use crate::diagnose::prep::TimeUnit;
 use crate::diagnose::time_fit::warm_shape;
-use crate::diagnose::time_fit::{
-    CellDemean, CoefTest, DriftTest, Terms, TimeFit, fit, warm_columns,
-};
+use crate::diagnose::time_fit::{CellDemean, Terms, TimeFit, fit, warm_columns};
 use crate::units::AxisKind;
 use std::f64::consts::PI;
 
@@ -672,95 +673,6 @@ fn profiled(
     let tau = profile(prep, &base, scale, true)?.tau;
     let warm = Some(tau);
     Some(fit(prep, values, active, scale, Terms { warm, ..terms }))
-}
-
-/// Drift and thermal growth beside a warm-up, and the fit of the warm-up with the linear
-/// terms found.
-pub(crate) struct Beside {
-    pub thermal: Option<CoefTest>,
-    pub drift: Option<DriftTest>,
-    pub kept: Option<TimeFit>,
-}
-
-/// A linear term beside a warm-up: the fall of the residual sum of squares when it joins,
-/// τ profiled again with and without it (a τ chosen with the term's help would flatter
-/// it), as a t test of the term's coefficient `estimate`.
-fn beside_test(
-    without: &TimeFit,
-    with: &TimeFit,
-    estimate: f64,
-    reference: (f64, f64),
-) -> CoefTest {
-    let (ms, df) = reference;
-    let f = (without.rss - with.rss).max(0.0) / ms;
-    let t = f.sqrt() * estimate.signum();
-    CoefTest {
-        estimate,
-        se: if f > 0.0 {
-            estimate.abs() / f.sqrt()
-        } else {
-            f64::INFINITY
-        },
-        t,
-        p: f_upper(f, 1.0, df),
-        df,
-    }
-}
-
-/// Thermal growth (against the pure scatter `pure`) and drift (against `drift_ref`, as
-/// [`crate::diagnose::time::drift_reference`] gives it) beside a warm-up found, and the warm-up's
-/// fit with the linear terms found: thermal growth with a drift beside it, the drift with
-/// the thermal growth when found.
-pub(crate) fn linear_tests(
-    prep: &Prep,
-    values: &[f64],
-    active: &[bool],
-    scale: &[f64],
-    pure: (f64, f64),
-    drift_ref: (f64, f64, &'static str),
-    alpha: f64,
-) -> Beside {
-    let prof = |thermal: bool, drift: bool| {
-        let terms = Terms {
-            thermal,
-            drift,
-            ..Terms::default()
-        };
-        profiled(prep, values, active, scale, terms)
-    };
-    let (Some(drift_only), Some(both)) = (prof(false, true), prof(true, true)) else {
-        return Beside {
-            thermal: None,
-            drift: None,
-            kept: None,
-        };
-    };
-    let thermal = both
-        .thermal_col
-        .filter(|&c| both.ls.kept[c])
-        .map(|_| beside_test(&drift_only, &both, both.gamma, pure));
-    let thermal_found = thermal.as_ref().is_some_and(|t| t.p < alpha);
-    let with_drift = if thermal_found { both } else { drift_only };
-    let without = prof(thermal_found, false);
-    let (ms, df, against) = drift_ref;
-    let drift = without.as_ref().and_then(|w| {
-        let c = with_drift.drift_col.filter(|&c| with_drift.ls.kept[c])?;
-        Some(DriftTest {
-            test: beside_test(w, &with_drift, with_drift.ls.coef[c], (ms, df)),
-            origin: None,
-            against,
-        })
-    });
-    let drift_found = drift.as_ref().is_some_and(|d| d.test.p < alpha);
-    Beside {
-        thermal,
-        drift,
-        kept: if drift_found {
-            Some(with_drift)
-        } else {
-            without
-        },
-    }
 }
 
 #[cfg(test)]
