@@ -3,6 +3,7 @@
 //! tests in time (`time.rs`) and the warm-up search (`warm.rs`) both read it.
 
 use super::maths::linalg::{LeastSquares, least_squares};
+use super::maths::stats::t_two_sided;
 use super::prep::Prep;
 
 /// Which time terms a fit has.
@@ -54,6 +55,17 @@ pub(crate) struct TimeFit {
 }
 
 impl TimeFit {
+    /// The drift at `origin` when both the drift and the thermal columns are kept:
+    /// β + γ (origin − P̄) and its variance in units of the mean square (from (XᵀX)⁻¹).
+    pub fn drift_at(&self, prep: &Prep, origin: f64) -> Option<(f64, f64)> {
+        let kept = |c: &usize| self.ls.kept[*c];
+        let (bc, gc) = (self.drift_col.filter(kept)?, self.thermal_col.filter(kept)?);
+        let a = origin - prep.pbar;
+        let cov = &self.ls.cov;
+        let var = cov[bc][bc] + a * a * cov[gc][gc] + 2.0 * a * cov[bc][gc];
+        Some((self.beta + self.gamma * a, var))
+    }
+
     /// The time effect (without the cell intercept) at a row.
     pub fn effect(&self, prep: &Prep, k: usize) -> f64 {
         let (r, c) = (&prep.rows[k], &prep.clocks);
@@ -280,6 +292,27 @@ pub(crate) struct CoefTest {
     pub t: f64,
     pub p: f64,
     pub df: f64,
+}
+
+impl CoefTest {
+    /// The two-sided t test of `estimate` with variance `var` (in units of the reference
+    /// mean square `ms`) on `df` degrees of freedom; t = 0, p = 1 for a zero estimate.
+    pub fn of(estimate: f64, var: f64, (ms, df): (f64, f64)) -> CoefTest {
+        let se = (ms * var).sqrt();
+        let (t, p) = if estimate == 0.0 {
+            (0.0, 1.0)
+        } else {
+            let t = estimate / se;
+            (t, t_two_sided(t, df))
+        };
+        CoefTest {
+            estimate,
+            se,
+            t,
+            p,
+            df,
+        }
+    }
 }
 
 /// Drift, after thermal growth.

@@ -10,7 +10,6 @@ use crate::diagnose::basis::Basis;
 use crate::diagnose::detectable::{Detectable, plan_words, span_words, t_shift, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
 use crate::diagnose::fitted::Fitted;
-use crate::diagnose::maths::stats::t_two_sided;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
@@ -163,31 +162,12 @@ pub(crate) fn test(
         }
         _ => None,
     };
-    let (estimate, var, origin) = match (origin, tc) {
-        (Some(o), Some(gc)) => {
-            let a = o - prep.pbar;
-            let est = trend.beta + trend.gamma * a;
-            let cov = &trend.ls.cov;
-            let v = cov[bc][bc] + a * a * cov[gc][gc] + 2.0 * a * cov[bc][gc];
-            (est, v, Some(o))
-        }
-        _ => (trend.beta, trend.ls.cov[bc][bc], None),
-    };
-    let se = (err_ms * var).sqrt();
-    let (t, p) = if estimate == 0.0 {
-        (0.0, 1.0)
-    } else {
-        let t = estimate / se;
-        (t, t_two_sided(t, err_df))
+    let (estimate, var, origin) = match origin.and_then(|o| trend.drift_at(prep, o)) {
+        Some((estimate, var)) => (estimate, var, origin),
+        None => (trend.beta, trend.ls.cov[bc][bc], None),
     };
     Some(DriftTest {
-        test: CoefTest {
-            estimate,
-            se,
-            t,
-            p,
-            df: err_df,
-        },
+        test: CoefTest::of(estimate, var, (err_ms, err_df)),
         origin,
         against,
     })

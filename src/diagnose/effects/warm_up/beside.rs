@@ -3,7 +3,7 @@
 //! with and without it; the drift at a declared thermal origin by its Wald t.
 
 use super::profiled;
-use crate::diagnose::maths::stats::{f_upper, t_two_sided};
+use crate::diagnose::maths::stats::f_upper;
 use crate::diagnose::prep::Prep;
 use crate::diagnose::time_fit::{CoefTest, DriftTest, Terms, TimeFit};
 
@@ -40,40 +40,6 @@ fn beside_test(
     }
 }
 
-/// The drift at the declared thermal `origin` beside the warm-up, from the fit with both
-/// linear terms: β + γ (origin − P̄), its t against `reference` (as
-/// [`crate::diagnose::effects::drift::test`] has it without a warm-up).
-fn drift_at_origin(
-    prep: &Prep,
-    both: &TimeFit,
-    origin: f64,
-    reference: (f64, f64),
-) -> Option<(CoefTest, f64)> {
-    let kept = |c: &usize| both.ls.kept[*c];
-    let (bc, gc) = (both.drift_col.filter(kept)?, both.thermal_col.filter(kept)?);
-    let (ms, df) = reference;
-    let a = origin - prep.pbar;
-    let estimate = both.beta + both.gamma * a;
-    let cov = &both.ls.cov;
-    let se = (ms * (cov[bc][bc] + a * a * cov[gc][gc] + 2.0 * a * cov[bc][gc])).sqrt();
-    let t = if estimate == 0.0 { 0.0 } else { estimate / se };
-    let p = if estimate == 0.0 {
-        1.0
-    } else {
-        t_two_sided(t, df)
-    };
-    Some((
-        CoefTest {
-            estimate,
-            se,
-            t,
-            p,
-            df,
-        },
-        origin,
-    ))
-}
-
 /// Thermal growth (against the pure scatter `pure`) and drift (against `drift_ref`, as
 /// [`crate::diagnose::time::drift_reference`] gives it) beside a warm-up found, and the warm-up's
 /// fit with the linear terms found: thermal growth with a drift beside it, the drift with
@@ -108,13 +74,16 @@ pub(crate) fn linear_tests(
         .map(|_| beside_test(&drift_only, &both, both.gamma, pure));
     let thermal_found = thermal.as_ref().is_some_and(|t| t.p < alpha);
     let (ms, df, against) = drift_ref;
-    let declared = (prep.thermal_origin)
-        .and_then(|o| drift_at_origin(prep, &both, o, (ms, df)))
-        .map(|(test, o)| DriftTest {
-            test,
+    // At a declared origin: β + γ (origin − P̄) from the fit with both linear terms, as
+    // `drift::test` has it without a warm-up.
+    let declared = (prep.thermal_origin).and_then(|o| {
+        let (estimate, var) = both.drift_at(prep, o)?;
+        Some(DriftTest {
+            test: CoefTest::of(estimate, var, (ms, df)),
             origin: Some(o),
             against,
-        });
+        })
+    });
     let with_drift = if thermal_found { both } else { drift_only };
     let without = prof(thermal_found, false);
     let drift = declared.or_else(|| {
