@@ -437,10 +437,10 @@ pub(crate) fn detectable(p: &Prep, fit: &TimeFit) -> Detectable {
             Effect::ScatterVariation,
             measure,
             &format!(
-                "{} no scatter changing along the axis by up to a factor {} is found in {} % of tests (the time model's drift, thermal growth and run offsets take their degrees of freedom mostly from the readings that scatter most; more runs are needed)",
+                "{} no scatter changing along the axis by up to a factor {} is found in {} % of tests (the time model's drift, thermal growth and run offsets take their degrees of freedom mostly from the readings that scatter most; more runs or targets are needed)",
                 plan_words(p.m, p.n),
-                fmt(LARGEST_RATIO),
-                fmt(100.0 * POWER)
+                LARGEST_RATIO,
+                (100.0 * POWER).round()
             ),
         );
     }
