@@ -538,21 +538,21 @@ pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection
 
 /// The largest leave-targets-out gain of a sinusoid of `period` on [`confirm::UNRELATED`]
 /// sets of target means simulated from the base model (`without`: the smooth trend and
-/// the scatter of the means), weighted as the real ones.
+/// the scatter of the means), with the real ones' `weights`.
 fn simulated_between_targets(
     positions: &[f64],
     without: &periodic::MeansModel,
+    weights: &[f64],
     period: f64,
     seed: u64,
 ) -> f64 {
     let mut rng = Rng::new(seed, 0x9E71);
-    let weights = without.weights();
     (0..confirm::UNRELATED)
         .map(|_| {
             let y: Vec<f64> = (without.trend.iter().zip(&without.sd))
                 .map(|(t, s)| t + s * rng.normal())
                 .collect();
-            let (b, e) = validate::between_targets(positions, &y, period, &weights).rms();
+            let (b, e) = validate::between_targets(positions, &y, period, weights).rms();
             gain_pct(Scheme::LeaveTargetsOut, b, e)
         })
         .fold(f64::NAN, f64::max)
@@ -573,10 +573,10 @@ fn judge_periodic(
     };
     let positions = &a.basis.prep.positions;
     let without = &a.periodic.without;
-    let errors =
-        validate::between_targets(positions, &a.basis.means, peak.period, &without.weights());
+    let weights = without.weights();
+    let errors = validate::between_targets(positions, &a.basis.means, peak.period, &weights);
     let (bb, be) = errors.rms();
-    let threshold = simulated_between_targets(positions, without, peak.period, seed);
+    let threshold = simulated_between_targets(positions, without, &weights, peak.period, seed);
     let gain = TermGain::new(Effect::Periodic, Scheme::LeaveTargetsOut, bb, be, threshold);
     let kept = gain.kept;
     term_gains.push(gain);
