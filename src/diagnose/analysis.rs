@@ -128,7 +128,7 @@ impl Analysis<'_> {
     pub fn findings(&self) -> Vec<Finding> {
         let (b, t) = (&self.basis, &self.time);
         [
-            drift::Rule.find(b, t.drift.as_ref()),
+            drift::Rule.find(b, t.drift.as_ref(), unresolved_warm_up(t)),
             warm_up::Rule.find(b, t.warm.as_ref()),
             thermal_growth::Rule.find(
                 b,
@@ -143,6 +143,13 @@ impl Analysis<'_> {
         ]
         .concat()
     }
+}
+
+/// The level of the smallest warm-up this plan confirms, when the warm-up is tested and
+/// not found: a smaller one shows only as its trend.
+fn unresolved_warm_up(tt: &TimeTests) -> Option<f64> {
+    let w = tt.warm.as_ref().filter(|w| w.p >= ALPHA)?;
+    w.smallest.map(|s| s.level)
 }
 
 /// Whether the tests find a drift, a thermal growth or a warm-up.

@@ -1001,6 +1001,33 @@ fn drift_data() -> (Case, AxisData, Diagnosis) {
     (case, data, d)
 }
 
+/// A drift found where no warm-up is: the finding says what warm-up would read as it,
+/// the size the plan's `detectable` states for a warm-up (issue 43).
+#[test]
+fn a_drift_names_the_warm_up_this_plan_cannot_tell_from_it() {
+    let (_, _, d) = drift_data();
+    let json = json_of(&d);
+    let warm = (json["detectable"].as_array().unwrap().iter())
+        .find(|x| x["effect"] == "warm_up")
+        .unwrap();
+    let advice = warm["advice"].as_str().unwrap();
+    let under = advice
+        .split("a warm-up under ")
+        .nth(1)
+        .and_then(|rest| rest.split(" (reached").next())
+        .unwrap();
+    assert!(under.ends_with(" µm"), "{advice}");
+    let drift = &json["findings"][0];
+    assert_eq!(drift["effect"], "drift");
+    let message = drift["message"].as_str().unwrap();
+    assert!(
+        message.ends_with(&format!(
+            "; a warm-up approaching a level under {under}, which this plan cannot tell from a drift, would read so"
+        )),
+        "{message}"
+    );
+}
+
 #[test]
 fn json_has_the_stable_fields_and_is_deterministic() {
     let (case, data, d) = drift_data();

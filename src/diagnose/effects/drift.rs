@@ -64,15 +64,29 @@ pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
-    pub(crate) fn find(&self, a: &Basis, drift: Option<&DriftTest>) -> Vec<Finding> {
+    /// `warm_up_under`: the smallest warm-up this plan confirms, when none was found: a
+    /// warm-up under it shows only its trend, as this drift (Hemingray et al. 1971, §5.4:
+    /// a machine warming up drifts until it settles).
+    pub(crate) fn find(
+        &self,
+        a: &Basis,
+        drift: Option<&DriftTest>,
+        warm_up_under: Option<f64>,
+    ) -> Vec<Finding> {
         let Some(d) = drift.filter(|d| d.test.p < ALPHA) else {
             return Vec::new();
         };
         let u = a.units;
         let rate = d.test.estimate;
         let total = rate * a.prep.t_span;
+        let warm_up = warm_up_under.map_or(String::new(), |level| {
+            format!(
+                "; a warm-up approaching a level under {}, which this plan cannot tell from a drift, would read so",
+                with_unit(level, u)
+            )
+        });
         let message = format!(
-            "the deviations drift by {} {ds} per {} uniformly along the axis ({} {ds} over the test; t = {}, p = {}, against the {}){}",
+            "the deviations drift by {} {ds} per {} uniformly along the axis ({} {ds} over the test; t = {}, p = {}, against the {}){}{warm_up}",
             fmt(rate),
             u.per(),
             fmt(total),

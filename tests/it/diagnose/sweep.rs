@@ -78,9 +78,8 @@ fn small_plan(rng: &mut Rng, runs: usize) -> TestPlan {
     plan
 }
 
-/// Effects whose stated size is measured and printed but not yet held to 70–90 % (issue 43
-/// open; README): the warm-up's comes out a little large (90.5 %).
-const DETECTABLE_OPEN: &[Effect] = &[Effect::WarmUp];
+/// Effects whose stated size is measured and printed but not yet held to 70–90 %: none.
+const DETECTABLE_OPEN: &[Effect] = &[];
 
 /// Clean data on a plan drawn by `plan` (rng stream `stream`), σ 0.3–1.2, a realistic
 /// error with a bow and a scale error up to `bow` µm and `ppm`.
@@ -612,9 +611,11 @@ fn add_effect(
 /// plan confirms (`detectable`: a test then finds each alone in about 99 % of tests; a
 /// ratio to the power 1.5). Named right: at least one named, and each of the two named or
 /// stated by the diagnosis as beyond what the plan confirms beside what it found (its
-/// `detectable` size on these data larger than the size added: a drift beside real run
-/// offsets is judged against the run-to-run variation, and with 5 runs it is one of their
-/// trends); "both named" is printed beside it. Other: any other finding. With a thermal
+/// size added under [`RELIABLE`] times its `detectable` size on these data: a drift beside
+/// real run offsets is judged against the run-to-run variation, and with 5 runs it is one
+/// of their trends); "both named" is printed beside it. Other: any other finding, but a
+/// drift where a warm-up so stated was added (its trend, which the drift finding says a
+/// warm-up under that size would show). With a thermal
 /// growth the diagnosis is told where it holds still (`thermal_origin`, the start of the
 /// travel as the simulator has it): a drift and a growth about another origin fit the
 /// same readings. Pairs the diagnosis does not separate yet are printed and listed in
@@ -669,15 +670,29 @@ fn sweep_of_each_pair_of_effects() {
                         && added
                             .iter()
                             .all(|&(e, size)| d.has(e) || beyond(&d, e, size));
-                    let other = d
-                        .findings
+                    // A warm-up this plan cannot confirm shows as its trend: the drift
+                    // finding says so, and names the added warm-up.
+                    let warm_trend = added
                         .iter()
-                        .any(|f| f.effect() != a && f.effect() != b);
+                        .any(|&(e, size)| e == Effect::WarmUp && !d.has(e) && beyond(&d, e, size));
+                    let other = d.findings.iter().any(|f| {
+                        let e = f.effect();
+                        e != a && e != b && !(e == Effect::Drift && warm_trend)
+                    });
+                    // The seed and what was left unconfirmed, for `SWEEP_SHOW`.
+                    let unconfirmed: Vec<&str> = (d.unconfirmed.iter())
+                        .map(|u| u.finding.effect().name())
+                        .collect();
+                    let label = format!(
+                        "{}: {} (unconfirmed {unconfirmed:?})",
+                        base.seed,
+                        d.effects_label()
+                    );
                     Some(PairOutcome {
                         right,
                         other,
                         both,
-                        label: d.effects_label(),
+                        label,
                     })
                 })
                 .collect()
@@ -726,30 +741,46 @@ struct PairOutcome {
     label: String,
 }
 
+/// The multiple of the stated size (the size found in 80 % of tests) at which a test finds
+/// an effect in the 96 % these sweeps require: a shift of z(α/2) + z(0.96) = 3.29 + 1.75
+/// standard errors against z(α/2) + z(0.80) = 3.29 + 0.84 at α = 0.001, about 1.2.
+const RELIABLE: f64 = 1.2;
+
 /// Whether the diagnosis `d` states that effect `e` of `size` (in its `measure`) is beyond
-/// what its plan confirms beside the effects it found: untestable, or a detectable size
-/// larger than `size`.
+/// what its plan confirms reliably beside the effects it found: untestable, or `size`
+/// under [`RELIABLE`] times the detectable size on these data (for the scatter's ratio, to
+/// that power). At 1.5 times the clean axis's detectable size a pair's effect is beyond
+/// only where the other effect raised it by a quarter or more.
 fn beyond(d: &Diagnosis, e: Effect, size: f64) -> bool {
     (d.detectable.iter())
         .find(|x| x.effect == e)
-        .is_some_and(|x| x.size.is_none_or(|stated| stated > size))
+        .is_some_and(|x| {
+            x.size.is_none_or(|stated| {
+                let reliable = if e == Effect::ScatterVariation {
+                    stated.powf(RELIABLE)
+                } else {
+                    RELIABLE * stated
+                };
+                reliable > size
+            })
+        })
 }
 
 /// Pairs measured and printed but not yet held to the rates (issue 43 open; README): a
-/// periodic error beside run offsets (read as a warm-up, 91 %) or a scatter variation
-/// (94.5 %), and pairs whose other findings exceed 2 % (a warm-up beside a thermal growth,
-/// 10.5 %, or a scatter variation; run offsets beside a time effect or a reversal
-/// variation). `SWEEP_SHOW=1` prints their seeds named wrong too.
+/// periodic error beside run offsets (91 %: at 1.5 times its stated size the sinusoid
+/// loses its place between the targets in about 5 % of fine-step plans, with or without
+/// the offsets), and pairs whose other findings exceed 2 %: a warm-up beside a thermal
+/// growth (a drift besides, 10 %) or run offsets (7 %), and run offsets beside a drift, a
+/// thermal growth or a reversal variation (2.5–3 %: a warm-up read in them).
+/// `SWEEP_SHOW=1` prints their seeds named wrong too.
 const OPEN_PAIRS: &[(Effect, Effect)] = {
     use Effect::*;
     &[
         (Drift, RunOffset),
         (WarmUp, ThermalGrowth),
         (WarmUp, RunOffset),
-        (WarmUp, ScatterVariation),
         (ThermalGrowth, RunOffset),
         (RunOffset, Periodic),
         (RunOffset, ReversalVariation),
-        (Periodic, ScatterVariation),
     ]
 };
