@@ -16,7 +16,9 @@
 //! its linear part in time (drift, 1 degree of freedom) and what a straight line leaves
 //! (run offsets), each tested against the pure scatter. The run offsets are tested beyond
 //! the best warm-up curve as well, found or not: what a smooth curve in time explains is
-//! no zero shift.
+//! no zero shift. A curve at the longest time constant searched is barely bent, one more
+//! trend of the run means: it is no warm-up when free run offsets explain the readings
+//! better by BIC and are not found beyond it.
 //! When the run offsets are real, a drift is judged against the run-to-run variation
 //! instead (random run effects: only a trend larger than the zero shifts is a drift).
 //! A warm-up, found by [`super::effects::warm_up::search`], joins the smooth part: the run offsets are

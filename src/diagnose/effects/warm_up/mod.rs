@@ -542,7 +542,8 @@ pub(crate) struct WarmTest {
     /// the linear trend, and Davies' p of each.
     pub f: [f64; 2],
     pub p_column: [f64; 2],
-    /// The decision's p-value: twice the smaller (each column at α/2).
+    /// The decision's p-value: twice the smaller (each column at α/2); 1 for a barely
+    /// bent curve that free run offsets explain better ([`search`]).
     pub p: f64,
     /// The reference mean square (scaled units) and its degrees of freedom.
     pub ms: f64,
@@ -597,18 +598,31 @@ pub(crate) fn search(
     let f = prof.sup.map(|g| g / ms);
     let smallest = power::smallest(prep, active, scale, (ms, df), prof.path[0], alpha);
     let p_column = [0, 1].map(|c| davies(f[c], df, prof.path[c]));
+    // A curve at the longest time constant searched is barely bent: one more trend of the
+    // run means, which free run offsets make as well. When their model explains the
+    // readings better by the Schwarz criterion (BIC, its parameters counted) and they
+    // are not found beyond the curve, the curve is taken for no warm-up.
+    let delta_bic_runs = bic(&smooth, 1) - bic(full0, 0);
+    let barely_bent = tau_range(prep).is_some_and(|(_, hi)| prof.tau >= hi / 1.01);
+    let offsets_rival =
+        barely_bent && runs_beyond.as_ref().is_none_or(|t| t.p >= alpha) && delta_bic_runs > 0.0;
+    let p = if offsets_rival {
+        1.0
+    } else {
+        (2.0 * p_column[0].min(p_column[1])).min(1.0)
+    };
     Some(WarmTest {
         tau: prof.tau,
         f,
         p_column,
-        p: (2.0 * p_column[0].min(p_column[1])).min(1.0),
+        p,
         ms,
         df,
         against,
         runs_beyond,
         within_runs: f_test(full0, &full),
         delta_bic_drift: bic(&smooth, 1) - bic(trend0, 0),
-        delta_bic_runs: bic(&smooth, 1) - bic(full0, 0),
+        delta_bic_runs,
         smooth,
         full,
         estimate: None,
