@@ -100,6 +100,20 @@ pub enum Bound {
     Longest,
 }
 
+impl Bound {
+    /// The end of the range searched that `tau` lies at (within 1 %), if any.
+    fn of(prep: &Prep, tau: f64) -> Option<Bound> {
+        let (lo, hi) = tau_range(prep)?;
+        if tau <= lo * 1.01 {
+            Some(Bound::Shortest)
+        } else if tau >= hi / 1.01 {
+            Some(Bound::Longest)
+        } else {
+            None
+        }
+    }
+}
+
 /// The time unit of a warm-up's times in keys: `min`, or `run` without time stamps.
 fn time_key(u: Units) -> &'static str {
     match u.time {
@@ -208,15 +222,7 @@ impl WarmUp {
             delta_bic_vs_drift: w.delta_bic_drift,
             delta_bic_vs_run_offsets: w.delta_bic_runs,
             tested_against: w.against,
-            at_bound: tau_range(&a.prep).and_then(|(lo, hi)| {
-                if e.tau <= lo * 1.01 {
-                    Some(Bound::Shortest)
-                } else if e.tau >= hi / 1.01 {
-                    Some(Bound::Longest)
-                } else {
-                    None
-                }
-            }),
+            at_bound: Bound::of(&a.prep, e.tau),
         }
     }
 
@@ -603,7 +609,7 @@ pub(crate) fn search(
     // readings better by the Schwarz criterion (BIC, its parameters counted) and they
     // are not found beyond the curve, the curve is taken for no warm-up.
     let delta_bic_runs = bic(&smooth, 1) - bic(full0, 0);
-    let barely_bent = tau_range(prep).is_some_and(|(_, hi)| prof.tau >= hi / 1.01);
+    let barely_bent = Bound::of(prep, prof.tau) == Some(Bound::Longest);
     let offsets_rival =
         barely_bent && runs_beyond.as_ref().is_none_or(|t| t.p >= alpha) && delta_bic_runs > 0.0;
     let p = if offsets_rival {
