@@ -93,7 +93,8 @@ impl Rule {
         };
         let u = a.units;
         let ppm = t.estimate / a.prep.ppm_factor();
-        let declared = a.prep.thermal_origin.filter(|_| drift_origin.is_some());
+        // The drift is read at the declared origin whenever one is given (`drift::test`).
+        let declared = a.prep.thermal_origin.is_some() && drift_origin.is_some();
         let origin = drift_origin.unwrap_or(a.prep.pbar);
         let over = t.estimate * a.length() * a.prep.t_span;
         let message = format!(
@@ -103,7 +104,7 @@ impl Rule {
             fmt(over),
             u.symbol(),
             fmt_target(u.kind, origin),
-            if declared.is_some() {
+            if declared {
                 ", the declared origin"
             } else {
                 ""
@@ -116,7 +117,7 @@ impl Rule {
                 growth_ppm: ppm,
                 growth_se_ppm: t.se / a.prep.ppm_factor(),
                 origin,
-                origin_declared: declared.is_some(),
+                origin_declared: declared,
                 over_travel_and_test: over,
             }
             .into(),
