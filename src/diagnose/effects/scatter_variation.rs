@@ -138,10 +138,17 @@ pub(crate) struct ScatterTest {
 }
 
 /// The scatter per cell relative to √`sigma2` for the outlier test once a scatter variation
-/// is found: the larger of the fitted log-linear scale and each target's own robust scale
-/// (1.4826 × the median |residual| of its readings in both directions, which one outlier
-/// does not inflate), so that a scatter that changes in a step, which a log-linear fit
-/// smooths over, does not make outliers of the readings where it is large.
+/// is found: the larger of the fitted log-linear scale and each target's own scale, so
+/// that a scatter that changes in a step, which a log-linear fit smooths over, does not
+/// make outliers of the readings where it is large.
+///
+/// A target's own scale is the root mean square of its readings but the largest (in both
+/// directions, each direction's mean taken out): for that reading, the one an outlier
+/// test of the target looks at, it is the scatter of the others, which the reading itself
+/// does not inflate, as the externally studentised residual has it. It rests on a dozen
+/// readings; a median of them (as before) rests on fewer in effect and came out low one
+/// time in five where the scatter is large, just where its largest reading then looks
+/// extreme. Its neighbours' readings with its own steady it.
 ///
 /// Every reading counts, those a first pass took for outliers too (its residual from the
 /// fit `full` of the others): with the scatter not yet modelled, that pass takes the
@@ -156,24 +163,24 @@ pub(crate) fn outlier_scale(prep: &Prep, t: &ScatterTest, full: &TimeFit, x: &[f
         }
     }
     let sigma = full.sigma2().sqrt();
-    let robust = |v: &mut Vec<f64>| {
+    // Each target's readings lose two degrees of freedom to their two cell means.
+    let but_largest = |v: &mut Vec<f64>, targets: usize| {
         v.sort_by(f64::total_cmp);
-        if v.len() >= 4 && sigma > 0.0 {
-            1.4826 * crate::diagnose::maths::stats::quantile_sorted(v, 0.5) / sigma
+        let df = v.len() as f64 - 1.0 - 2.0 * targets as f64;
+        if df >= 3.0 && sigma > 0.0 {
+            let ss: f64 = v[..v.len() - 1].iter().map(|e| e * e).sum();
+            (ss / df).sqrt() / sigma
         } else {
             0.0
         }
     };
-    // A target's own median rests on a dozen readings and comes out low by chance now and
-    // then, just where its largest reading then looks extreme: its neighbours' readings
-    // with its own steady it.
     let own: Vec<f64> = (0..prep.m)
-        .map(|i| robust(&mut by_target[i].clone()))
+        .map(|i| but_largest(&mut by_target[i].clone(), 1))
         .collect();
     let near: Vec<f64> = (0..prep.m)
         .map(|i| {
             let (a, b) = (i.saturating_sub(1), (i + 1).min(prep.m - 1));
-            robust(&mut by_target[a..=b].concat())
+            but_largest(&mut by_target[a..=b].concat(), b - a + 1)
         })
         .collect();
     (0..prep.cells())

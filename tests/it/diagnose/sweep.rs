@@ -362,7 +362,7 @@ fn types() -> Vec<Type> {
             make: scatter_step_case,
             hidden: &[ScatterVariation],
             right: scatter_right,
-            open: true,
+            open: false,
         },
     ]
 }
