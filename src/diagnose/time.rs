@@ -73,6 +73,7 @@ pub(crate) fn tests(
         runs: true,
         drift: true,
         warm: None,
+        thermal_about: None,
     };
     let full = fit(prep, values, active, scale, all);
     let no_runs = Terms { runs: false, ..all };
@@ -157,6 +158,7 @@ fn found_smooth(out: &TimeTests, alpha: f64) -> Terms {
         runs: false,
         drift: thermal || found(out.drift.as_ref().map(|d| d.test.p)),
         warm: out.warm_tau(alpha),
+        thermal_about: None,
     }
 }
 

@@ -15,6 +15,9 @@ pub(crate) struct Terms {
     /// A warm-up with this time constant (time units): two columns, uniform and in
     /// proportion to position, after all the others.
     pub warm: Option<f64>,
+    /// The thermal growth about this origin instead of about P̄: γ·(P − O)·t, which holds
+    /// the time effect still at O (a declared origin without a drift beside it).
+    pub thermal_about: Option<f64>,
 }
 
 /// The share of a warm-up reached `dt` after the start of the test: 1 − exp(−dt/τ).
@@ -168,8 +171,11 @@ pub(crate) fn fit(
     let ls = least_squares(&cols, &dm.apply(&y));
     let cells_used = count.iter().filter(|&&c| c > 0).count();
     let df = rows.len() as f64 - cells_used as f64 - ls.rank as f64;
-    let beta = drift_col.map_or(0.0, |c| ls.coef[c]);
     let gamma = thermal_col.map_or(0.0, |c| ls.coef[c]);
+    // A growth about O is one about P̄ plus the uniform trend γ (P̄ − O) (the drift's and
+    // the growth's clocks are the same time about its mean).
+    let about = terms.thermal_about.map_or(0.0, |o| gamma * (prep.pbar - o));
+    let beta = drift_col.map_or(0.0, |c| ls.coef[c]) + about;
     let (warm_a, warm_g) = warm_col.map_or((0.0, 0.0), |c| (ls.coef[c], ls.coef[c + 1]));
     let mut alpha = Vec::new();
     if terms.runs {
@@ -233,9 +239,10 @@ impl Regressors {
         let c = &prep.clocks;
         if terms.thermal {
             r.thermal_col = Some(r.raw.len());
+            let origin = terms.thermal_about.unwrap_or(prep.pbar);
             r.raw.push(
                 rows.iter()
-                    .map(|&k| (prep.positions[prep.rows[k].i] - prep.pbar) * c.thermal[k])
+                    .map(|&k| (prep.positions[prep.rows[k].i] - origin) * c.thermal[k])
                     .collect(),
             );
         }

@@ -51,6 +51,7 @@ pub(crate) fn fit_time(prep: &Prep, x: &[f64], train: &[bool], terms: ModelTerms
         runs: terms.runs,
         drift: terms.drift || terms.thermal,
         warm: None,
+        thermal_about: None,
     };
     if let (true, Some(tau)) = (terms.warm, terms.warm_tau) {
         time_terms.warm = Some(tau);

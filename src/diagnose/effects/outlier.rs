@@ -189,6 +189,7 @@ pub(crate) fn detect(
         runs: true,
         drift: true,
         warm,
+        thermal_about: None,
     };
     while hits.len() < cap {
         let f = fit(prep, values, &active, scale, terms);

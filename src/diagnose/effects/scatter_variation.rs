@@ -551,6 +551,7 @@ mod tests {
             runs: true,
             drift: true,
             warm: None,
+            thermal_about: None,
         };
         let f = fit(&p, &zeros, &all, &ones, terms);
         let c = &p.clocks;

@@ -769,13 +769,10 @@ fn beyond(d: &Diagnosis, e: Effect, size: f64) -> bool {
 /// Pairs measured and printed but not yet held to the rates (issue 43 open; README): a
 /// periodic error beside run offsets (91 %: at 1.5 times its stated size the sinusoid
 /// loses its place between the targets in about 5 % of fine-step plans, with or without
-/// the offsets), and a warm-up beside a thermal growth (a drift besides, 10 % other
-/// findings) or run offsets (7 %). `SWEEP_SHOW=1` prints their seeds named wrong too.
+/// the offsets), and a warm-up beside run offsets (7 % other findings: a warm-up the run
+/// offsets hide leaves its curve within the runs, read as a drift or as a reversal that
+/// varies). `SWEEP_SHOW=1` prints their seeds named wrong too.
 const OPEN_PAIRS: &[(Effect, Effect)] = {
     use Effect::*;
-    &[
-        (WarmUp, ThermalGrowth),
-        (WarmUp, RunOffset),
-        (RunOffset, Periodic),
-    ]
+    &[(WarmUp, RunOffset), (RunOffset, Periodic)]
 };

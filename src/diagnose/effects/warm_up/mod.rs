@@ -590,6 +590,7 @@ pub(crate) fn search(
         runs,
         drift: true,
         warm: Some(prof.tau),
+        thermal_about: None,
     };
     let smooth = fit(prep, values, active, scale, terms(false));
     let full = fit(prep, values, active, scale, terms(true));

@@ -54,6 +54,7 @@ pub(super) fn smallest(
             runs,
             drift: true,
             warm: None,
+            thermal_about: None,
         };
         fit(prep, &shape, active, scale, terms).rss
     };
