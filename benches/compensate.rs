@@ -8,6 +8,7 @@ use axcheck::compensate::controllers::Reading;
 use axcheck::compensate::{Active, Settings, apply, apply_change, controllers, held_table};
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use axcheck::verify;
 use std::hint::black_box;
 use std::time::Instant;

@@ -7,6 +7,7 @@
 use axcheck::diagnose::{Options, diagnose};
 use axcheck::measurement::AxisData;
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use std::hint::black_box;
 use std::time::Instant;
 

@@ -3,6 +3,7 @@
 //! (a 1 m axis per clause 4.3.2 at 100 mm spacing) and one of 200 targets × 5 runs.
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use std::hint::black_box;
 use std::time::Instant;
 

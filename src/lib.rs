@@ -16,32 +16,26 @@
 //! [`lock`] and [`safe_text`] (input text made safe for each output); [`simulate`] writes simulation files and synthetic fleets.
 
 pub mod atomic;
-pub mod axis_model;
 pub mod batch;
 pub mod campaign;
-pub mod compensate;
-pub mod crosscheck;
-pub mod diagnose;
-pub mod evaluate;
 pub mod export;
 pub mod files;
 pub mod history;
 pub mod judge;
 pub mod lock;
 pub mod measurement;
-pub mod nde;
 pub mod panics;
 pub mod plan;
 #[cfg(feature = "pdf")]
 pub mod report;
-pub mod rules;
 pub mod safe_text;
 #[cfg(all(feature = "pdf", feature = "parquet"))]
 pub mod session;
 pub mod simulate;
-pub mod suggest;
 pub mod trend;
-pub mod uncertainty;
-pub mod units;
-pub mod verify;
 pub mod yaml;
+
+pub use axcheck_core::{
+    axis_model, compensate, crosscheck, diagnose, evaluate, nde, rules, suggest, uncertainty,
+    units, verify,
+};

@@ -4,6 +4,7 @@ mod cli;
 
 use anyhow::{Context, Result};
 use axcheck::evaluate::StandardId;
+use axcheck::simulate::SimulationFile as _;
 use clap::{Parser, Subcommand};
 use cli::print;
 use std::path::PathBuf;

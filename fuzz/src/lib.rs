@@ -17,6 +17,7 @@ use axcheck::judge::{self, Limits, Spec};
 use axcheck::measurement::{self, AxisData};
 use axcheck::nde;
 use axcheck::rules::{self, PlanContext};
+use axcheck::simulate::SimulationFile as _;
 use axcheck::units::{AxisKind, Travel};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

@@ -6,7 +6,7 @@
 use super::text::{left, right, width};
 use anyhow::{Result, bail};
 use axcheck::diagnose::cross::{OutOfTest, out_of_test};
-use axcheck::diagnose::{Diagnosis, Options};
+use axcheck::diagnose::{Diagnosis, DiagnosisJson, Options};
 use axcheck::measurement::{self, AxisData, ReadOptions};
 use axcheck::simulate::Simulation;
 use axcheck::units::fmt_fixed;
@@ -102,13 +102,16 @@ fn to_json(
     diagnoses: &[Diagnosis],
     predicted: &[Vec<OutOfTest>],
 ) -> serde_json::Result<String> {
+    fn json(d: &Diagnosis) -> DiagnosisJson<'_> {
+        d.json(axcheck::simulate::model_text)
+    }
     if let ([(name, _)], [d]) = (tests, diagnoses) {
-        return super::json_with_file(d, name);
+        return super::json_with_file(&json(d), name);
     }
     #[derive(serde::Serialize)]
     struct Test<'a> {
         #[serde(flatten)]
-        diagnosis: &'a Diagnosis,
+        diagnosis: DiagnosisJson<'a>,
         file: &'a str,
         out_of_test: &'a [OutOfTest],
     }
@@ -118,7 +121,7 @@ fn to_json(
     }
     let tests = (tests.iter().zip(diagnoses).zip(predicted))
         .map(|(((name, _), diagnosis), p)| Test {
-            diagnosis,
+            diagnosis: json(diagnosis),
             file: name,
             out_of_test: p,
         })

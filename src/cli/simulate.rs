@@ -3,6 +3,7 @@
 use anyhow::{Context, Result, bail};
 use axcheck::measurement::csv;
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use std::path::{Path, PathBuf};
 
 /// What `simulate` is asked for.

@@ -12,12 +12,13 @@ use super::{ExportError, Exporter, OutputFile};
 use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
 use crate::compensate::Compensation;
-use crate::diagnose::Diagnosis;
+use crate::diagnose::DiagnosisJson;
 use crate::diagnose::cross::OutOfTest;
 use crate::evaluate::json::{ParameterSet, ParameterValues, TargetIndices};
 use crate::judge::{Check, Judgement, Verdict};
 use crate::nde::NdeCorrection;
 use crate::rules::Finding;
+use crate::simulate::model_text;
 use crate::uncertainty::{BudgetLine, Uncertainty};
 use crate::units::{AxisKind, Travel};
 use serde::Serialize;
@@ -62,7 +63,7 @@ pub struct TestJson<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     compensation: Option<CompensationJson<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    diagnosis: Option<&'a Diagnosis>,
+    diagnosis: Option<DiagnosisJson<'a>>,
     /// This test predicted by the models of the axis's other tests (several data files).
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     out_of_test: &'a [OutOfTest],
@@ -274,7 +275,7 @@ pub fn test_json(t: &AxisTest) -> TestJson<'_> {
             .map(UncertaintyJson::new),
         large_uncertainty: t.large_uncertainty(),
         compensation: None,
-        diagnosis: ev.and_then(|e| e.diagnosis.as_deref()),
+        diagnosis: (ev.and_then(|e| e.diagnosis.as_deref())).map(|d| d.json(model_text)),
         out_of_test: ev.map_or(&[][..], |e| &e.out_of_test),
         other_tool: ev.and_then(|e| e.other_tool.as_deref()),
         error: t.error(),

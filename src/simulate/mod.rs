@@ -14,9 +14,25 @@ pub use crate::axis_model::{
 /// A simulation file that cannot be used: `file:line:column: message`.
 pub type SimulationError = crate::yaml::YamlError;
 
-impl Simulation {
+/// A simulation as a file: read from and written to YAML with the axis kind's units (the
+/// core's [`Simulation`] knows no YAML).
+pub trait SimulationFile: Sized {
     /// Parses and checks a simulation file; `file` names it in errors.
-    pub fn from_yaml(text: &str, file: &str) -> Result<Simulation, SimulationError> {
+    fn from_yaml(text: &str, file: &str) -> Result<Self, SimulationError>;
+    /// The simulation file text, keys spelled with the kind's units.
+    fn to_yaml(&self) -> String;
+    /// [`Simulation::validate`] with the keys spelled as the written file spells them
+    /// (`plan.targets_mm`), for a model made in code before it is written.
+    fn validate_as_written(&self) -> Result<(), String>;
+}
+
+/// The text of a simulation file, for [`crate::diagnose::Diagnosis::json`].
+pub fn model_text(sim: &Simulation) -> String {
+    sim.to_yaml()
+}
+
+impl SimulationFile for Simulation {
+    fn from_yaml(text: &str, file: &str) -> Result<Simulation, SimulationError> {
         let (value, index) = crate::yaml::parse(text, file)?;
         let fail = |located: crate::yaml::Located| located.in_file(file);
         let kind = yaml::kind(&value, &index).map_err(fail)?;
@@ -29,16 +45,13 @@ impl Simulation {
         Ok(sim)
     }
 
-    /// The simulation file text, keys spelled with the kind's units.
-    pub fn to_yaml(&self) -> String {
+    fn to_yaml(&self) -> String {
         let value = serde_norway::to_value(self).expect("a simulation serialises");
         let value = yaml::externalize(value, self.kind);
         serde_norway::to_string(&value).expect("a YAML value serialises")
     }
 
-    /// [`Simulation::validate`] with the keys spelled as the written file spells them
-    /// (`plan.targets_mm`), for a model made in code before it is written.
-    pub fn validate_as_written(&self) -> Result<(), String> {
+    fn validate_as_written(&self) -> Result<(), String> {
         self.validate().map_err(|m| yaml::respell(&m, self.kind).0)
     }
 }

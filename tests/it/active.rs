@@ -8,6 +8,7 @@ use axcheck::campaign::Campaign;
 use axcheck::compensate::{self, Mode, Settings};
 use axcheck::measurement::csv;
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use axcheck::verify::{Key, Verdict};
 use serde_json::Value;
 use std::path::Path;

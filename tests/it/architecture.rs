@@ -25,8 +25,12 @@ const LAYERS: &[&[&str]] = &[
 const MAX_FUNCTION_LINES: usize = 100;
 const MAX_FILE_LINES: usize = 800;
 
-fn sources() -> Vec<(PathBuf, String)> {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+/// The source folders of the workspace's crates, the top first (README "Layout").
+const CRATES: &[&str] = &["src", "crates/axcheck-core/src"];
+
+/// The `.rs` files under `dir` (relative to the workspace), each with its path in the crate.
+fn sources_of(dir: &str) -> Vec<(PathBuf, String)> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join(dir);
     let mut files: Vec<(PathBuf, String)> = walkdir::WalkDir::new(&src)
         .into_iter()
         .filter_map(Result::ok)
@@ -38,6 +42,18 @@ fn sources() -> Vec<(PathBuf, String)> {
         .collect();
     files.sort();
     files
+}
+
+/// Every crate's files: its source folder, and each file with its path in the crate.
+fn sources() -> Vec<(&'static str, PathBuf, String)> {
+    CRATES
+        .iter()
+        .flat_map(|dir| {
+            sources_of(dir)
+                .into_iter()
+                .map(move |(path, text)| (*dir, path, text))
+        })
+        .collect()
 }
 
 /// The code of a file without its unit tests.
@@ -100,14 +116,14 @@ fn stages_only_look_down() {
         .flat_map(|(k, names)| names.iter().map(move |n| (*n, k)))
         .collect();
     let mut wrong = Vec::new();
-    for (path, text) in sources() {
+    for (dir, path, text) in sources() {
         let from = top_module(&path);
         if matches!(from.as_str(), "main" | "lib" | "cli") {
             continue;
         }
         let Some(&here) = layer.get(from.as_str()) else {
             panic!(
-                "src/{}: module `{from}` is in no layer of LAYERS",
+                "{dir}/{}: module `{from}` is in no layer of LAYERS",
                 path.display()
             );
         };
@@ -117,7 +133,7 @@ fn stages_only_look_down() {
             }
             match layer.get(to.as_str()) {
                 Some(&there) if there < here => {}
-                _ => wrong.push(format!("src/{} ({from}) uses {to}", path.display())),
+                _ => wrong.push(format!("{dir}/{} ({from}) uses {to}", path.display())),
             }
         }
     }
@@ -166,16 +182,16 @@ fn function_lengths(code: &str) -> Vec<(usize, String, usize)> {
 #[test]
 fn functions_and_files_stay_small() {
     let mut long = Vec::new();
-    for (path, text) in sources() {
+    for (dir, path, text) in sources() {
         let code = code(&text);
         let lines = code.lines().count();
         if lines > MAX_FILE_LINES {
-            long.push(format!("src/{}: {lines} lines of code", path.display()));
+            long.push(format!("{dir}/{}: {lines} lines of code", path.display()));
         }
         for (line, name, length) in function_lengths(code) {
             if length > MAX_FUNCTION_LINES {
                 long.push(format!(
-                    "src/{}:{line} fn {name}: {length} lines",
+                    "{dir}/{}:{line} fn {name}: {length} lines",
                     path.display()
                 ));
             }
@@ -188,7 +204,7 @@ fn functions_and_files_stay_small() {
 fn sources_are_cited_by_title() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut files: Vec<PathBuf> = vec![root.join("README.md")];
-    for dir in ["src", "templates", "tests"] {
+    for dir in ["src", "crates", "templates", "tests"] {
         files.extend(
             walkdir::WalkDir::new(root.join(dir))
                 .into_iter()
@@ -412,18 +428,30 @@ fn circles(edges: &BTreeMap<PathBuf, Vec<PathBuf>>) -> Vec<Vec<PathBuf>> {
     s.found
 }
 
-/// No circle anywhere in the graph of files: a file that uses another is never used back,
-/// directly or around, also inside a folder.
+/// No circle anywhere in the graph of files of a crate: a file that uses another is never
+/// used back, directly or around, also inside a folder (between crates the compiler
+/// allows none).
 #[test]
 fn no_circle_of_files() {
-    let sources = sources();
+    let mut found = Vec::new();
+    for dir in CRATES {
+        for c in circles(&file_graph(&sources_of(dir))) {
+            let names: Vec<String> = c.iter().map(|p| format!("{dir}/{}", p.display())).collect();
+            found.push(names.join(" ↔ "));
+        }
+    }
+    assert!(found.is_empty(), "circles of files:\n{}", found.join("\n"));
+}
+
+/// The files of one crate as nodes, an arrow from each to the files it names.
+fn file_graph(sources: &[(PathBuf, String)]) -> BTreeMap<PathBuf, Vec<PathBuf>> {
     let files: BTreeMap<Vec<String>, PathBuf> = sources
         .iter()
         .filter(|(path, _)| path != Path::new("main.rs"))
         .map(|(path, _)| (module_of(path), path.clone()))
         .collect();
     let mut edges: BTreeMap<PathBuf, Vec<PathBuf>> = BTreeMap::new();
-    for (path, text) in &sources {
+    for (path, text) in sources {
         let here = module_of(path);
         let mut to: Vec<PathBuf> = named_paths(code(text))
             .iter()
@@ -434,14 +462,7 @@ fn no_circle_of_files() {
         to.dedup();
         edges.insert(path.clone(), to);
     }
-    let found: Vec<String> = circles(&edges)
-        .iter()
-        .map(|c| {
-            let names: Vec<String> = c.iter().map(|p| format!("src/{}", p.display())).collect();
-            names.join(" ↔ ")
-        })
-        .collect();
-    assert!(found.is_empty(), "circles of files:\n{}", found.join("\n"));
+    edges
 }
 
 #[test]

@@ -1,5 +1,6 @@
 //! Every kind of bad measurement file gets an error naming the file, line and what to change.
 use axcheck::measurement;
+use axcheck::simulate::SimulationFile as _;
 use proptest::prelude::*;
 
 fn error(text: &str) -> String {

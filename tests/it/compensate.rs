@@ -5,6 +5,7 @@ use crate::common::{axcheck, scratch};
 use axcheck::compensate::{self, Table};
 use axcheck::evaluate::{self, StandardId};
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use axcheck::units::AxisKind;
 
 /// A scale error of 15 ppm, a slow sine (period 600 mm, 3 µm) and a reversal of 5 µm over

@@ -7,6 +7,7 @@ use axcheck::compensate::{self, Active, Settings, Table};
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::measurement::{AxisData, RawReading};
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use axcheck::units::{AxisKind, Direction};
 use proptest::prelude::*;
 

@@ -12,6 +12,7 @@ use axcheck::diagnose::effects::outlier::Outlier as FoundOutlier;
 use axcheck::diagnose::{self, Diagnosis, Effect, Options};
 use axcheck::evaluate::StandardId;
 use axcheck::measurement::AxisData;
+use axcheck::simulate::SimulationFile as _;
 use axcheck::simulate::rng::Rng;
 use axcheck::simulate::{
     Cycle, ErrorModel, Outlier, PeriodicTerm, Simulation, TargetSpacing, TestPlan,
@@ -625,7 +626,7 @@ fn param(d: &Diagnosis, effect: Effect, key: &str) -> f64 {
 
 /// The stable JSON of a diagnosis.
 fn json_of(d: &Diagnosis) -> serde_json::Value {
-    serde_json::to_value(d).expect("a diagnosis serialises")
+    serde_json::to_value(d.json(axcheck::simulate::model_text)).expect("a diagnosis serialises")
 }
 
 fn rel_err(got: f64, want: f64) -> f64 {

@@ -1,6 +1,7 @@
 //! The simulator reproduces its own parameters, and its files read back exactly.
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::measurement::{self, csv};
+use axcheck::simulate::SimulationFile as _;
 use axcheck::simulate::rng::Rng;
 use axcheck::simulate::{ErrorModel, Simulation, TargetSpacing, TestPlan};
 use axcheck::units::{AxisKind, Direction};

@@ -8,6 +8,7 @@ use crate::common::{axcheck, scratch};
 use axcheck::compensate::{self, Active, Settings, Table};
 use axcheck::evaluate::StandardId;
 use axcheck::simulate::Simulation;
+use axcheck::simulate::SimulationFile as _;
 use axcheck::verify::{self, Key, Verdict, Verification};
 
 /// 1 000 mm measured at 21 jittered targets, five runs: 20 ppm of scale error, a 4 µm sine

@@ -620,7 +620,7 @@ mod tests {
         let file = Fanuc.write(&table, &[]).unwrap();
         assert_eq!(
             file,
-            include_str!("../../../../tests/data/compensation/fanuc-linear.txt")
+            include_str!("../../../../../../tests/data/compensation/fanuc-linear.txt")
         );
     }
 
@@ -666,7 +666,7 @@ mod tests {
         let file = Fanuc.write(&table, &[]).unwrap();
         assert_eq!(
             file,
-            include_str!("../../../../tests/data/compensation/fanuc-rotary-modulo.txt")
+            include_str!("../../../../../../tests/data/compensation/fanuc-rotary-modulo.txt")
         );
     }
 

@@ -292,7 +292,7 @@ mod tests {
         assert_eq!(table.positions, [-100.0, -75.0, -50.0, -25.0, 0.0]);
         assert_eq!(
             TwinCat.write(&table, &[]).unwrap(),
-            include_str!("../../../../tests/data/compensation/twincat-linear.lis")
+            include_str!("../../../../../../tests/data/compensation/twincat-linear.lis")
         );
     }
 
@@ -316,7 +316,7 @@ mod tests {
         assert_eq!(table.modulo_deg, Some(360.0));
         assert_eq!(
             TwinCat.write(&table, &[]).unwrap(),
-            include_str!("../../../../tests/data/compensation/twincat-rotary-modulo.lis")
+            include_str!("../../../../../../tests/data/compensation/twincat-rotary-modulo.lis")
         );
     }
 

@@ -363,11 +363,11 @@ mod tests {
         for (controller, golden) in [
             (
                 &LinuxCnc::TYPE_0,
-                include_str!("../../../tests/data/compensation/linuxcnc-linear.txt"),
+                include_str!("../../../../../tests/data/compensation/linuxcnc-linear.txt"),
             ),
             (
                 &LinuxCnc::TYPE_1,
-                include_str!("../../../tests/data/compensation/linuxcnc-linear-type1.txt"),
+                include_str!("../../../../../tests/data/compensation/linuxcnc-linear-type1.txt"),
             ),
         ] {
             assert_eq!(controller.write(&table, &notes).unwrap(), golden);
@@ -386,7 +386,7 @@ mod tests {
         let table = held_table(&LinuxCnc::TYPE_0, &rotary, &Settings::default()).unwrap();
         assert_eq!(
             LinuxCnc::TYPE_0.write(&table, &[]).unwrap(),
-            include_str!("../../../tests/data/compensation/linuxcnc-rotary.txt")
+            include_str!("../../../../../tests/data/compensation/linuxcnc-rotary.txt")
         );
     }
 

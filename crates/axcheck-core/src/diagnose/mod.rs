@@ -39,6 +39,7 @@ mod extended;
 mod finding;
 mod fitted;
 mod json;
+pub use json::{DiagnosisJson, ModelText};
 mod model;
 mod model_terms;
 mod options;

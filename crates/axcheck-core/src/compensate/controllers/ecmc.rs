@@ -333,7 +333,7 @@ mod tests {
         assert_eq!(table.up, table.down);
         assert_eq!(
             Ecmc::CURRENT.write(&table, &[]).unwrap(),
-            include_str!("../../../tests/data/compensation/ecmc-linear.lut")
+            include_str!("../../../../../tests/data/compensation/ecmc-linear.lut")
         );
     }
 
@@ -347,7 +347,7 @@ mod tests {
         assert_eq!(table.modulo_deg, Some(360.0));
         assert_eq!(
             Ecmc::CURRENT.write(&table, &[]).unwrap(),
-            include_str!("../../../tests/data/compensation/ecmc-rotary-modulo.lut")
+            include_str!("../../../../../tests/data/compensation/ecmc-rotary-modulo.lut")
         );
     }
 

@@ -434,7 +434,7 @@ mod tests {
         let table = held_table(&Heidenhain, &data, &settings).unwrap();
         assert_eq!(
             Heidenhain.write(&table, &[]).unwrap(),
-            include_str!("../../../tests/data/compensation/heidenhain-linear.com")
+            include_str!("../../../../../tests/data/compensation/heidenhain-linear.com")
         );
     }
 
@@ -455,7 +455,7 @@ mod tests {
         let table = held_table(&Heidenhain, &data, &settings).unwrap();
         assert_eq!(
             Heidenhain.write(&table, &[]).unwrap(),
-            include_str!("../../../tests/data/compensation/heidenhain-rotary.com")
+            include_str!("../../../../../tests/data/compensation/heidenhain-rotary.com")
         );
     }
 

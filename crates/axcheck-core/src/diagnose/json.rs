@@ -19,16 +19,23 @@
 //! `size` found in 80 % of tests with this plan, null when the plan cannot test it,
 //! `measure` with its unit, `assumed` (the period or time constant the size assumes,
 //! keyed with units), `more_targets` and `size_with_more_targets`, `advice`), `corrected`, `residuals`,
-//! `base_model` and `extended_model` (simulation files as YAML text), `notes`.
+//! `base_model` and `extended_model` (simulation files as YAML text, which the caller
+//! writes: the core writes no YAML), `notes`.
 //! Numbers that do not apply are `null`.
 
 use super::checks::{ModelCheck, describe};
 use super::finding::keyed;
 use super::{Corrected, Diagnosis, Finding, ModelFit, Residuals, TermGain, Unconfirmed};
+use crate::axis_model::Simulation;
 use serde::{Serialize, Serializer};
 
+/// Writes a simulation file's text: the caller's (the simulation files' own writer), since
+/// the core writes no YAML.
+pub type ModelText = fn(&Simulation) -> String;
+
+/// The JSON of a diagnosis ([`Diagnosis::json`]).
 #[derive(Serialize)]
-struct DiagnosisJson<'a> {
+pub struct DiagnosisJson<'a> {
     unit: &'static str,
     position_unit: &'static str,
     time_unit: &'static str,
@@ -108,8 +115,10 @@ impl Serialize for Corrected {
     }
 }
 
-impl Serialize for Diagnosis {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+impl Diagnosis {
+    /// The stable JSON of this diagnosis, its base and extended models as simulation files
+    /// written by `model_text`.
+    pub fn json(&self, model_text: ModelText) -> DiagnosisJson<'_> {
         DiagnosisJson {
             unit: self.kind.deviation_unit(),
             position_unit: self.kind.position_unit(),
@@ -128,10 +137,9 @@ impl Serialize for Diagnosis {
             detectable: &self.detectable,
             corrected: &self.corrected,
             residuals: &self.residuals,
-            base_model: self.base_model.to_yaml(),
-            extended_model: self.extended_model.to_yaml(),
+            base_model: model_text(&self.base_model),
+            extended_model: model_text(&self.extended_model),
             notes: &self.notes,
         }
-        .serialize(s)
     }
 }

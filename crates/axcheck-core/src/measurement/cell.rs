@@ -8,7 +8,7 @@ use std::borrow::Cow;
 
 /// What one field holds.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) enum Value<'a> {
+pub enum Value<'a> {
     /// Text as written (trimmed when read as a number or a name): a CSV field, borrowed
     /// from its line unless it had quotes, or a sheet's text cell.
     Text(Cow<'a, str>),
@@ -23,7 +23,7 @@ pub(crate) enum Value<'a> {
 
 impl Value<'_> {
     /// The field as a column name: trimmed, lower case.
-    pub(crate) fn name(&self) -> String {
+    pub fn name(&self) -> String {
         match self {
             Value::Text(t) => t.trim().to_ascii_lowercase(),
             Value::Number(x) => crate::units::fmt_position(*x),
@@ -33,7 +33,7 @@ impl Value<'_> {
     }
 
     /// The field as shown in messages.
-    pub(crate) fn shown(&self) -> String {
+    pub fn shown(&self) -> String {
         match self {
             Value::Text(t) => t.trim().to_string(),
             other => other.name(),
@@ -41,7 +41,7 @@ impl Value<'_> {
     }
 
     /// True for an empty cell or blank text.
-    pub(crate) fn is_blank(&self) -> bool {
+    pub fn is_blank(&self) -> bool {
         match self {
             Value::Text(t) => t.trim().is_empty(),
             Value::Empty => true,
@@ -53,7 +53,7 @@ impl Value<'_> {
 /// One field with its 1-based column: the character column of a CSV line, the column of
 /// a sheet (A = 1).
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Field<'a> {
+pub struct Field<'a> {
     pub column: usize,
     pub value: Value<'a>,
 }
@@ -61,14 +61,14 @@ pub(crate) struct Field<'a> {
 /// Where a table comes from: the file (and sheet) errors name, and whether text numbers
 /// may use a decimal comma.
 #[derive(Debug, Clone)]
-pub(crate) struct Place {
+pub struct Place {
     pub file: String,
     pub sheet: Option<String>,
     pub decimal_comma: bool,
 }
 
 impl Place {
-    pub(crate) fn text(file: &str, decimal_comma: bool) -> Place {
+    pub fn text(file: &str, decimal_comma: bool) -> Place {
         Place {
             file: file.to_string(),
             sheet: None,
@@ -78,7 +78,7 @@ impl Place {
 
     /// A sheet: its text cells hold numbers with a decimal point only (`1,234` could be a
     /// thousands separator).
-    pub(crate) fn sheet(file: &str, sheet: &str) -> Place {
+    pub fn sheet(file: &str, sheet: &str) -> Place {
         Place {
             file: file.to_string(),
             sheet: Some(sheet.to_string()),
@@ -93,37 +93,32 @@ impl Place {
         }
     }
 
-    pub(crate) fn whole(&self) -> Location {
+    pub fn whole(&self) -> Location {
         self.located(Location::file(&self.file))
     }
 
-    pub(crate) fn line(&self, number: usize) -> Location {
+    pub fn line(&self, number: usize) -> Location {
         self.located(Location::line(&self.file, number))
     }
 
-    pub(crate) fn at(&self, number: usize, column: usize) -> Location {
+    pub fn at(&self, number: usize, column: usize) -> Location {
         self.located(Location::at(&self.file, number, column))
     }
 
     /// `line 7` in a text file, `row 7` in a sheet.
-    pub(crate) fn line_word(&self, number: usize) -> String {
+    pub fn line_word(&self, number: usize) -> String {
         match self.sheet {
             Some(_) => format!("row {number}"),
             None => format!("line {number}"),
         }
     }
 
-    pub(crate) fn error(&self, number: usize, column: usize, kind: ReadErrorKind) -> ReadError {
+    pub fn error(&self, number: usize, column: usize, kind: ReadErrorKind) -> ReadError {
         ReadError::new(self.at(number, column), kind)
     }
 
     /// The number in `field` of row `number`, or an error naming its `column`.
-    pub(crate) fn number(
-        &self,
-        number: usize,
-        field: &Field,
-        column: &str,
-    ) -> Result<f64, ReadError> {
+    pub fn number(&self, number: usize, field: &Field, column: &str) -> Result<f64, ReadError> {
         let column = || column.to_string();
         let kind = match &field.value {
             Value::Number(x) if x.is_finite() => return Ok(*x),

@@ -3,7 +3,7 @@
 /// Parses a number as written in measurement files: `.` or (with `decimal_comma`) `,`
 /// as decimal mark, a Unicode minus accepted; rejects NaN and infinities. The text is
 /// parsed as it is first, and copied only when that fails (nearly every number is plain).
-pub(crate) fn parse_number(text: &str, decimal_comma: bool) -> Result<f64, NumberError> {
+pub fn parse_number(text: &str, decimal_comma: bool) -> Result<f64, NumberError> {
     if let Some(x) = plain_decimal(text.trim_ascii()) {
         return Ok(x);
     }
@@ -62,7 +62,7 @@ fn plain_decimal(t: &str) -> Option<f64> {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum NumberError {
+pub enum NumberError {
     NotANumber,
     NonFinite,
 }

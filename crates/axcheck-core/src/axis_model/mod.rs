@@ -23,7 +23,8 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Simulation {
-    #[serde(deserialize_with = "crate::yaml::keyword")]
+    /// Read as text by the simulation file's loader first (`simulate::yaml`), whose error
+    /// for anything else names the kinds.
     pub kind: AxisKind,
     #[serde(default)]
     pub seed: u64,

@@ -267,7 +267,7 @@ mod tests {
         assert_eq!(table.positions, [0.0, 25.0, 50.0, 75.0, 100.0]);
         assert_eq!(
             Siemens840d.write(&table, &[]).unwrap(),
-            include_str!("../../../../tests/data/compensation/siemens-840d-linear.ini")
+            include_str!("../../../../../../tests/data/compensation/siemens-840d-linear.ini")
         );
     }
 
@@ -283,7 +283,9 @@ mod tests {
         assert_eq!(table.modulo_deg, Some(360.0));
         assert_eq!(
             Siemens840d.write(&table, &[]).unwrap(),
-            include_str!("../../../../tests/data/compensation/siemens-840d-rotary-modulo.ini")
+            include_str!(
+                "../../../../../../tests/data/compensation/siemens-840d-rotary-modulo.ini"
+            )
         );
     }
 

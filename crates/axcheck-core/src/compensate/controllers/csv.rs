@@ -153,7 +153,7 @@ mod tests {
         let table = held_table(&Csv, &data, &settings).unwrap();
         assert_eq!(
             Csv.write(&table, &[]).unwrap(),
-            include_str!("../../../tests/data/compensation/csv-linear.csv")
+            include_str!("../../../../../tests/data/compensation/csv-linear.csv")
         );
         let rotary = axis(AxisKind::Rotary, &[0.0, 90.0], 2, |_, _| 1.0);
         let table = held_table(&Csv, &rotary, &Settings::default()).unwrap();

@@ -1,0 +1,23 @@
+//! axcheck's core: the pure computation in the middle of the pipeline, in its order —
+//! the readings of a test ([`measurement`], as the readers build them), the plan's rules
+//! ([`rules`]), the standards' evaluation ([`evaluate`], with the NDE correction in
+//! [`nde`] and other tools' results checked in [`crosscheck`]), the uncertainty
+//! ([`uncertainty`]), the diagnosis against the error model ([`diagnose`],
+//! [`axis_model`]), compensation tables ([`compensate`]) and their verification
+//! ([`verify`]). Units and names are in [`units`] and [`suggest`].
+//!
+//! Nothing here opens a file, parses YAML or draws a page: readers, campaigns, outputs and
+//! the command line build on this crate.
+
+pub mod axis_model;
+pub mod compensate;
+pub mod crosscheck;
+pub mod diagnose;
+pub mod evaluate;
+pub mod measurement;
+pub mod nde;
+pub mod rules;
+pub mod suggest;
+pub mod uncertainty;
+pub mod units;
+pub mod verify;
