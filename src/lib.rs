@@ -10,7 +10,7 @@
 //! controllers' tables (→ [`verify`] compares a re-measurement with the prediction) →
 //! `history` keeps every run and [`trend`] follows each axis across them → `export` and
 //! `report` write the outputs. `session` runs one campaign in that order; [`batch`] runs
-//! the stages of every axis in parallel. Below them: [`axis_model`] (the axis's error
+//! the stages of every axis in parallel, and [`results`] is what they give. Below them: [`axis_model`] (the axis's error
 //! model, test plan and a simulated test), [`nde`] (the temperature correction),
 //! [`files`] (all reading of user files, rooted), [`yaml`], [`units`], [`atomic`],
 //! [`lock`] and [`safe_text`] (input text made safe for each output); [`simulate`] writes simulation files and synthetic fleets.
@@ -28,6 +28,7 @@ pub mod panics;
 pub mod plan;
 #[cfg(feature = "pdf")]
 pub mod report;
+pub mod results;
 pub mod safe_text;
 #[cfg(all(feature = "pdf", feature = "parquet"))]
 pub mod session;

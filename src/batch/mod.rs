@@ -4,14 +4,13 @@
 //! verifies a table is compared with its prediction ([`compensation`]).
 
 pub mod compensation;
-mod outcome;
 
-pub use outcome::{AxisTest, CampaignResult, Evaluated, Outcome};
+use crate::results::{AxisTest, CampaignResult, Evaluated, Outcome};
 
 use crate::campaign::{AxisSpec, Campaign, MachineInfo, SensorKind};
 use crate::diagnose::cross::{OutOfTest, out_of_test};
-use crate::evaluate::gost27843::{Gost27843, SMethod};
-use crate::evaluate::{Evaluation, Standard, StandardId};
+use crate::evaluate::Evaluation;
+use crate::evaluate::gost27843::SMethod;
 use crate::judge::{self, Decision, DecisionRule, Judgement, Limits, Spec, Verdict};
 use crate::measurement::{self, AxisData, Recognised};
 use crate::nde::{self, NdeCorrection};
@@ -469,14 +468,11 @@ fn read_stage(
 
 /// The parameters by the axis's standard (GOST 27843 with S from ranges when asked).
 fn evaluate_stage(axis: &AxisSpec, data: &AxisData) -> Evaluation {
-    if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
-        Gost27843 {
-            s_method: SMethod::Ranges,
-        }
-        .evaluate(data)
-    } else {
-        crate::evaluate::evaluate(data, axis.standard)
-    }
+    let s_method = match axis.raw.s_from_ranges {
+        true => SMethod::Ranges,
+        false => SMethod::Formula5,
+    };
+    crate::evaluate::evaluate_by(data, axis.standard, s_method)
 }
 
 /// The decision rule: the axis's, else its spec's, else the campaign's, else simple.

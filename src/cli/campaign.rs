@@ -1,10 +1,11 @@
 //! `axcheck run` and `axcheck check`: a whole campaign.
 
 use anyhow::{Result, anyhow};
-use axcheck::batch::{self, AxisTest, CampaignResult};
+use axcheck::batch;
 use axcheck::campaign::Campaign;
 use axcheck::history::AxisTrends;
 use axcheck::judge::Verdict;
+use axcheck::results::{AxisTest, CampaignResult};
 use axcheck::session;
 use axcheck::units::fmt_fixed;
 use std::io::IsTerminal;

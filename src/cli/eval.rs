@@ -2,8 +2,8 @@
 
 use super::text::{left, right};
 use anyhow::{Result, bail};
-use axcheck::evaluate::gost27843::{Gost27843, SMethod};
-use axcheck::evaluate::{Evaluation, Standard, StandardId};
+use axcheck::evaluate::gost27843::SMethod;
+use axcheck::evaluate::{Evaluation, StandardId};
 use axcheck::measurement::{self, AxisData, Recognised};
 use axcheck::nde::{self, NdeCorrection};
 use axcheck::units::{AxisKind, Direction, fmt_fixed, fmt_position};
@@ -70,13 +70,11 @@ pub fn run(args: &Args) -> Result<String> {
         tolerance: None,
         decision_rule: None,
     };
-    let evaluation = match args.s_from_ranges {
-        true => Gost27843 {
-            s_method: SMethod::Ranges,
-        }
-        .evaluate(&data),
-        false => axcheck::evaluate::evaluate(&data, args.standard),
+    let s_method = match args.s_from_ranges {
+        true => SMethod::Ranges,
+        false => SMethod::Formula5,
     };
+    let evaluation = axcheck::evaluate::evaluate_by(&data, args.standard, s_method);
     let name = args.file.display().to_string();
     let other = (recognised.reported.as_ref()).map(|r| axcheck::crosscheck::compare(r, &data));
     Ok(match args.json {

@@ -4,8 +4,8 @@
 //! and each verification's verdict.
 
 use super::text::MAX_PROBLEM_LINES;
-use axcheck::batch::{AxisTest, CampaignResult};
 use axcheck::compensate::{Compensation, Mode};
+use axcheck::results::{AxisTest, CampaignResult};
 
 /// Warnings that concern the state a table builds on, shown on the console once for all
 /// the tests they concern (the others, from the diagnosis, are in the reports and

@@ -3,7 +3,7 @@
 
 use super::paths::test_stems;
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::CampaignResult;
+use crate::results::CampaignResult;
 use std::path::PathBuf;
 
 pub struct Compensation;

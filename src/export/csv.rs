@@ -3,7 +3,7 @@
 
 use super::table::{Cell, columns, rows};
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::CampaignResult;
+use crate::results::CampaignResult;
 
 pub struct Csv;
 

@@ -9,7 +9,6 @@
 //! the same bytes.
 
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
 use crate::compensate::Compensation;
 use crate::diagnose::DiagnosisJson;
@@ -17,6 +16,7 @@ use crate::diagnose::cross::OutOfTest;
 use crate::evaluate::json::{ParameterSet, ParameterValues, TargetIndices};
 use crate::judge::{Check, Judgement, Verdict};
 use crate::nde::NdeCorrection;
+use crate::results::{AxisTest, CampaignResult};
 use crate::rules::Finding;
 use crate::simulate::model_text;
 use crate::uncertainty::{BudgetLine, Uncertainty};

@@ -10,8 +10,8 @@
 //! passed, while the job stays green as the gate allows.
 
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::{AxisTest, CampaignResult};
 use crate::judge::Verdict;
+use crate::results::{AxisTest, CampaignResult};
 use std::fmt::Write;
 
 pub struct Junit;

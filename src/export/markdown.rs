@@ -2,8 +2,8 @@
 //! CI job summaries.
 
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::Role;
+use crate::results::{AxisTest, CampaignResult};
 use crate::rules::Severity;
 use crate::units::fmt_fixed;
 use std::fmt::Write;

@@ -18,7 +18,7 @@ pub mod table;
 mod workers;
 pub mod xlsx;
 
-use crate::batch::CampaignResult;
+use crate::results::CampaignResult;
 use std::path::{Path, PathBuf};
 
 /// An output that could not be produced or written.

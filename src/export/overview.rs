@@ -5,10 +5,10 @@
 //! compensation and the history say. Numbers are kept as numbers (for sorting) with the
 //! text the reports print beside them (2 decimals, as the PDF summary).
 
-use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::Role;
 use crate::history::AxisTrends;
 use crate::judge::Verdict;
+use crate::results::{AxisTest, CampaignResult};
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 use serde::Serialize;
 use std::collections::BTreeMap;

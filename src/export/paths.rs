@@ -1,7 +1,7 @@
 //! Where each test's own outputs go (its report, its compensation table): one folder per
 //! machine, one file per axis test, names safe on every file system.
 
-use crate::batch::CampaignResult;
+use crate::results::CampaignResult;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;
 

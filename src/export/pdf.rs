@@ -1,9 +1,9 @@
 //! `summary.pdf` and `reports/<machine>/<axis>.pdf`, typeset in parallel.
 
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::CampaignResult;
 use crate::history::AxisTrends;
 use crate::report::{self, Reports};
+use crate::results::CampaignResult;
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -56,7 +56,7 @@ impl Exporter for Pdf {
 /// One document to typeset.
 enum Job<'a> {
     Summary,
-    Axis(&'a crate::batch::AxisTest, PathBuf),
+    Axis(&'a crate::results::AxisTest, PathBuf),
 }
 
 /// Typesets every job with `workers` threads of its own, each taking the next job as soon as

@@ -1,8 +1,8 @@
 //! The summary table shared by the CSV, parquet and Markdown outputs: one row per axis
 //! test, a fixed set of columns.
 
-use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::catalogue;
+use crate::results::{AxisTest, CampaignResult};
 
 /// A cell of the table.
 #[derive(Debug, Clone, PartialEq)]

@@ -14,9 +14,9 @@
 use super::overview::{self, HEADLINES};
 use super::table::{self, Cell};
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::CampaignResult;
 use crate::history::AxisTrends;
 use crate::judge::Verdict;
+use crate::results::CampaignResult;
 use crate::units::AxisKind;
 use rust_xlsxwriter::{
     Color, DocProperties, ExcelDateTime, Format, Workbook, Worksheet, XlsxError,
@@ -242,7 +242,11 @@ fn write_headers(sheet: &mut Worksheet, headers: &[&str]) -> Result<(), XlsxErro
 }
 
 /// Machine, axis and test number in the first three columns.
-fn write_test(sheet: &mut Worksheet, r: u32, t: &crate::batch::AxisTest) -> Result<(), XlsxError> {
+fn write_test(
+    sheet: &mut Worksheet,
+    r: u32,
+    t: &crate::results::AxisTest,
+) -> Result<(), XlsxError> {
     write_text(sheet, r, 0, &t.machine.id)?;
     write_text(sheet, r, 1, &t.axis)?;
     write_number(sheet, r, 2, t.test as f64)

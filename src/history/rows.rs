@@ -2,8 +2,8 @@
 
 use super::record::Text;
 use super::{HistoryError, Record, SCHEMA_VERSION};
-use crate::batch::{AxisTest, CampaignResult};
 use crate::campaign::CampaignInfo;
+use crate::results::{AxisTest, CampaignResult};
 use chrono::NaiveDate;
 
 /// The run's date (`campaign.date`), which a history needs, checked with the history file

@@ -15,8 +15,8 @@ pub mod charts;
 pub mod data;
 pub mod typeset;
 
-use crate::batch::{AxisTest, CampaignResult};
 use crate::history::AxisTrends;
+use crate::results::{AxisTest, CampaignResult};
 use crate::trend::{Series, Trend};
 use chart_kit::{labels, scene::Scene};
 use charts::{

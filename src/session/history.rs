@@ -1,8 +1,8 @@
 //! The run appended to its inspection history, and the trends of its axes fitted over the
 //! whole history (the reports show each axis over it, this run included).
 
-use crate::batch::CampaignResult;
 use crate::history::{AxisTrends, HistoryError};
+use crate::results::CampaignResult;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Instant;

@@ -12,10 +12,11 @@ pub use history::{AppendError, Appended};
 pub use locks::lock_folders;
 pub use output_dir::{OutputDirError, check_output_dir};
 
-use crate::batch::{self, AxisTest, CampaignResult};
+use crate::batch;
 use crate::campaign::Campaign;
 use crate::export;
 use crate::history::AxisTrends;
+use crate::results::{AxisTest, CampaignResult};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 

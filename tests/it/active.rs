@@ -3,10 +3,10 @@
 //! its line, and the example plant's tables and verifications.
 
 use crate::common::{axcheck, run_campaign, scratch};
-use axcheck::batch::{AxisTest, CampaignResult};
 use axcheck::campaign::Campaign;
 use axcheck::compensate::{self, Mode, Settings};
 use axcheck::measurement::csv;
+use axcheck::results::{AxisTest, CampaignResult};
 use axcheck::simulate::Simulation;
 use axcheck::simulate::SimulationFile as _;
 use axcheck::verify::{Key, Verdict};

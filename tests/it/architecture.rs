@@ -15,6 +15,7 @@ const LAYERS: &[&[&str]] = &[
     &["rules", "judge", "diagnose", "trend"],
     &["compensate", "plan"],
     &["campaign", "verify"],
+    &["results"],
     &["batch"],
     &["history"],
     &["report"],

@@ -49,7 +49,7 @@ pub fn scratch(name: &str) -> PathBuf {
 
 /// The campaign at `path` evaluated as `run` evaluates it (compensation tables and
 /// verifications, readings kept), with or without the diagnosis, on two workers.
-pub fn run_campaign(path: &std::path::Path, diagnose: bool) -> axcheck::batch::CampaignResult {
+pub fn run_campaign(path: &std::path::Path, diagnose: bool) -> axcheck::results::CampaignResult {
     let campaign = axcheck::campaign::Campaign::load(path).unwrap();
     let options = axcheck::batch::Options {
         jobs: 2,

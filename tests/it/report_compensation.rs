@@ -3,9 +3,9 @@
 //! report's data (its Serialize view) rather than from the PDF.
 
 use crate::common::{axcheck, scratch};
-use axcheck::batch::CampaignResult;
 use axcheck::report::charts::compensation as compensation_chart;
 use axcheck::report::{Reports, data};
+use axcheck::results::CampaignResult;
 use serde_json::Value;
 use std::fmt::Write;
 use std::path::Path;

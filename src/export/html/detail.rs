@@ -4,9 +4,9 @@
 //! its report and table, and its charts (ISO 230-2 Fig. 2a and 2b, and its history).
 
 use super::scene::SceneData;
-use crate::batch::AxisTest;
 use crate::history::AxisTrends;
 use crate::judge::Outcome;
+use crate::results::AxisTest;
 use crate::units::fmt_fixed;
 use serde::Serialize;
 

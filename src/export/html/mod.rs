@@ -18,9 +18,9 @@ mod scene;
 
 use super::overview;
 use super::{ExportError, Exporter, OutputFile};
-use crate::batch::CampaignResult;
 use crate::history::AxisTrends;
 use crate::judge::Verdict;
+use crate::results::CampaignResult;
 use base64::Engine;
 use serde::Serialize;
 use std::io::Write;
@@ -101,7 +101,7 @@ fn details(
         .map(|((t, report), table)| (t, report, table))
         .collect();
     let encode = |block: &[(
-        &crate::batch::AxisTest,
+        &crate::results::AxisTest,
         std::path::PathBuf,
         Option<std::path::PathBuf>,
     )]| {

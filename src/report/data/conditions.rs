@@ -2,9 +2,9 @@
 //! order, and the temperature sensors.
 
 use crate::axis_model::Cycle;
-use crate::batch::AxisTest;
 use crate::campaign::{Air, Conditions, Instrument, Nde, SensorKind, TemperatureSensor};
 use crate::nde::NdeCorrection;
+use crate::results::AxisTest;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 use serde::Serialize;
 

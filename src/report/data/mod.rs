@@ -22,8 +22,8 @@ pub use summary::{Summary, summary};
 pub use uncertainty::decision_bars;
 
 use super::charts::{AxisChart, DirectionSeries, Span};
-use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::{Approach, DirectionResult, Evaluation, StandardId};
+use crate::results::{AxisTest, CampaignResult};
 use crate::units::{AxisKind, Direction, fmt_fixed, fmt_position};
 use serde::Serialize;
 

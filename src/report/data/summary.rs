@@ -2,9 +2,9 @@
 //! attention first), the errors and the noncompliant test plans.
 
 use super::{CampaignHeader, generator, num, pos, short_label, short_name, symbol_of};
-use crate::batch::{AxisTest, CampaignResult};
 use crate::evaluate::Role;
 use crate::judge::Verdict;
+use crate::results::{AxisTest, CampaignResult};
 use crate::units::fmt_fixed;
 use serde::Serialize;
 

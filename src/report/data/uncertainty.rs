@@ -3,8 +3,8 @@
 //! and U with k = 2, and what was assumed.
 
 use super::{num, symbol_of};
-use crate::batch::AxisTest;
 use crate::report::charts::check::CheckBar;
+use crate::results::AxisTest;
 use crate::uncertainty::{BudgetLine, Uncertainty};
 use crate::units::fmt_fixed;
 use serde::Serialize;

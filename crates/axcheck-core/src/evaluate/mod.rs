@@ -135,6 +135,20 @@ pub fn evaluate(data: &AxisData, standard: StandardId) -> Evaluation {
     standard.evaluator().evaluate(data)
 }
 
+/// The parameters by `standard`, S of GOST 27843 by `s_method` (formula (5), or (6) from
+/// the ranges; the other standards have one way): the one choice of evaluator that `eval`
+/// and a campaign's axes share.
+pub fn evaluate_by(
+    data: &AxisData,
+    standard: StandardId,
+    s_method: gost27843::SMethod,
+) -> Evaluation {
+    match standard {
+        StandardId::Gost27843 => gost27843::Gost27843 { s_method }.evaluate(data),
+        _ => evaluate(data, standard),
+    }
+}
+
 /// A parameter's value for one axis test, with its definition from the [`catalogue`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Parameter {
