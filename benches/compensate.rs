@@ -4,7 +4,7 @@
 //! active table (the incremental table and its prediction), for every controller; then of a
 //! verification (the re-measurement against the prediction, every effect tried). One axis
 //! like the fleet's: 21 targets × 5 runs over 1 m, the table on a 20 mm grid (51 points).
-use axcheck::compensate::controllers::Reading;
+use axcheck::compensate::controllers::ReadAs;
 use axcheck::compensate::{Active, Settings, apply, apply_change, controllers, held_table};
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::simulate::Simulation;
@@ -40,7 +40,7 @@ fn main() {
         active: Some(Active::default()),
         ..Default::default()
     };
-    let reading = Reading {
+    let reading = ReadAs {
         kind: data.kind,
         axis: None,
     };

@@ -9,7 +9,7 @@ use crate::evaluate::{Evaluation, StandardId};
 use crate::judge::{DecisionRule, Judgement, Verdict};
 use crate::measurement::{AxisData, Recognised};
 use crate::nde::NdeCorrection;
-use crate::rules::{Finding, Severity};
+use crate::rules::{Severity, Violation};
 use crate::safe_text::one_line;
 use crate::uncertainty::Uncertainty;
 use crate::units::AxisKind;
@@ -67,7 +67,7 @@ pub struct Evaluated {
     pub evaluation: Evaluation,
     /// The judgement against the limits (absent when they could not apply: `error`).
     pub judgement: Option<Judgement>,
-    pub findings: Vec<Finding>,
+    pub findings: Vec<Violation>,
     pub nde: Option<NdeCorrection>,
     /// The compensation table of the machine's controller and the parameters predicted.
     pub compensation: Option<Box<crate::compensate::Compensation>>,
@@ -157,7 +157,7 @@ impl AxisTest {
     }
 
     /// The test-plan findings (none when the file was not read).
-    pub fn findings(&self) -> &[Finding] {
+    pub fn findings(&self) -> &[Violation] {
         self.evaluated().map_or(&[], |e| &e.findings)
     }
 
@@ -173,7 +173,7 @@ impl AxisTest {
     }
 
     /// The test-plan rules of severity error the test breaks (they make it noncompliant).
-    pub fn broken_rules(&self) -> impl Iterator<Item = &Finding> {
+    pub fn broken_rules(&self) -> impl Iterator<Item = &Violation> {
         (self.findings().iter()).filter(|f| f.severity == Severity::Error)
     }
 

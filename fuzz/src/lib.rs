@@ -286,7 +286,7 @@ pub fn spec(data: &[u8]) {
 /// read again; then it is the active table of a compensation of a fixed test of its kind
 /// (the incremental table and its prediction).
 pub fn controllers(data: &[u8]) {
-    use axcheck::compensate::controllers::{CONTROLLERS, Reading};
+    use axcheck::compensate::controllers::{CONTROLLERS, ReadAs};
     use axcheck::compensate::{self, Active, Settings};
     let Ok(text) = std::str::from_utf8(data) else {
         return; // every table file is read as UTF-8 text
@@ -294,7 +294,7 @@ pub fn controllers(data: &[u8]) {
     let (linear, rotary) = fixtures();
     for controller in CONTROLLERS {
         for (kind, axis) in [(AxisKind::Linear, linear), (AxisKind::Rotary, rotary)] {
-            let reading = Reading { kind, axis: None };
+            let reading = ReadAs { kind, axis: None };
             let Ok(table) = controller.read(text, reading) else {
                 continue;
             };

@@ -6,11 +6,11 @@
 use super::{AxisTest, Files};
 use crate::campaign::AxisSpec;
 use crate::campaign::model::{ActiveRaw, ActiveStated, CompensationRaw};
-use crate::compensate::controllers::{Controller, Reading};
-use crate::compensate::{self, Active, Place, Settings, Table};
+use crate::compensate::controllers::{Controller, ReadAs};
+use crate::compensate::{self, Active, Settings, Table, TableSlot};
 use crate::measurement::AxisData;
 use crate::units::AxisKind;
-use crate::verify::{self, Other, Verdict, Verification};
+use crate::verify::{self, Effectiveness, Other, Verification};
 
 /// What a re-measurement is compared with: the measurement before, and the corrections
 /// active then and loaded since, as the controller adds them.
@@ -33,7 +33,7 @@ pub fn settings(
     files: &Files,
 ) -> Result<Settings, String> {
     let raw = axis.raw.compensation.clone().unwrap_or_default();
-    let place = Place {
+    let place = TableSlot {
         axis: raw.axis.clone(),
         measuring_system: raw.measuring_system,
         number: None,
@@ -75,7 +75,7 @@ fn active(
     kind: AxisKind,
     controller: &dyn Controller,
     files: &Files,
-    place: &Place,
+    place: &TableSlot,
     key: &str,
 ) -> Result<Active, String> {
     let ActiveRaw::Stated(s) = raw else {
@@ -98,7 +98,7 @@ fn read_table(
     kind: AxisKind,
     controller: &dyn Controller,
     files: &Files,
-    place: &Place,
+    place: &TableSlot,
     key: &str,
 ) -> Result<Table, String> {
     let path = files
@@ -107,7 +107,7 @@ fn read_table(
     let text = files
         .read_to_string(&path)
         .map_err(|e| format!("{}: cannot read the table: {e}", path.display()))?;
-    let reading = Reading {
+    let reading = ReadAs {
         kind,
         axis: place.axis.as_deref(),
     };
@@ -253,7 +253,7 @@ pub fn verify_all(tests: &mut [(AxisTest, Case)]) {
 fn withhold(c: &mut compensate::Compensation, v: &Verification) {
     let failed = matches!(
         v.verdict,
-        Verdict::NotEffective | Verdict::MadeWorse | Verdict::TableMismatch
+        Effectiveness::NotEffective | Effectiveness::MadeWorse | Effectiveness::TableMismatch
     );
     if v.findings.is_empty() && !failed || c.outcome.is_err() {
         return;

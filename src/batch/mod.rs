@@ -14,7 +14,7 @@ use crate::evaluate::gost27843::SMethod;
 use crate::judge::{self, Decision, DecisionRule, Judgement, Limits, Spec, Verdict};
 use crate::measurement::{self, AxisData, Recognised};
 use crate::nde::{self, NdeCorrection};
-use crate::rules::{self, Finding, PlanContext, Severity};
+use crate::rules::{self, PlanContext, Severity, Violation};
 use crate::uncertainty::{Distribution, InstrumentKind, Setup, Uncertainty};
 use crate::units::AxisKind;
 use rayon::prelude::*;
@@ -490,7 +490,7 @@ fn decision_rule(
 /// What a test is judged on.
 struct Judged<'a> {
     evaluation: &'a Evaluation,
-    findings: &'a [Finding],
+    findings: &'a [Violation],
     uncertainty: Option<&'a Uncertainty>,
     rule: DecisionRule,
 }

@@ -419,7 +419,7 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
 }
 
 /// `Outputs in out (36 files) after 0.50 s: summary.md, …`.
-fn outputs_line(plan: &session::Plan, outcome: &session::Outcome, start: Instant) -> String {
+fn outputs_line(plan: &session::Plan, outcome: &session::RunOutcome, start: Instant) -> String {
     let tables = outcome
         .result
         .tests

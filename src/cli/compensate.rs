@@ -58,7 +58,7 @@ impl TableArgs {
         controller: &dyn Controller,
         kind: AxisKind,
     ) -> Result<compensate::Settings> {
-        let place = compensate::Place {
+        let place = compensate::TableSlot {
             axis: self.axis,
             measuring_system: self.measuring_system,
             number: None,
@@ -120,7 +120,7 @@ pub fn read_table(
     let text = axcheck::files::read_to_string(path)
         .with_context(|| format!("cannot read the table {}", path.display()))?;
     controller
-        .read(&text, controllers::Reading { kind, axis })
+        .read(&text, controllers::ReadAs { kind, axis })
         .map_err(|e| {
             anyhow!(
                 "{}: {e} (read as a {} table)",

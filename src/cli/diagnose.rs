@@ -15,7 +15,7 @@ use std::path::PathBuf;
 
 /// What `axcheck diagnose` prints, and the extended model of a single file (for
 /// `--write-model`).
-pub struct Outcome {
+pub struct DiagnoseOutput {
     pub text: String,
     pub extended_model: Option<Simulation>,
 }
@@ -29,7 +29,7 @@ pub fn run(
     options: &Options,
     json: bool,
     write_model: bool,
-) -> Result<Outcome> {
+) -> Result<DiagnoseOutput> {
     if write_model && files.len() > 1 {
         bail!(
             "--write-model writes the extended model of one test: give one file ({} given)",
@@ -56,7 +56,7 @@ pub fn run(
         parts.join("\n")
     };
     let extended_model = (diagnoses.len() == 1).then(|| diagnoses[0].extended_model.clone());
-    Ok(Outcome {
+    Ok(DiagnoseOutput {
         text,
         extended_model,
     })

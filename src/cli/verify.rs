@@ -9,7 +9,7 @@ use axcheck::compensate::Active;
 use axcheck::evaluate::StandardId;
 use axcheck::measurement;
 use axcheck::units::{AxisKind, fmt_fixed, fmt_position};
-use axcheck::verify::{self, Other, Verdict, Verification};
+use axcheck::verify::{self, Effectiveness, Other, Verification};
 use std::fmt::Write;
 use std::path::PathBuf;
 
@@ -88,7 +88,7 @@ pub fn run(args: &Args) -> Result<(String, bool)> {
         standard: args.standard,
     };
     let v = verify::verify(&input)?;
-    let effective = v.verdict == Verdict::Effective;
+    let effective = v.verdict == Effectiveness::Effective;
     let text = if args.json {
         let name = args.after.display().to_string();
         super::json_with_file(&v.json(), &name)?

@@ -17,7 +17,7 @@ use crate::evaluate::json::{ParameterSet, ParameterValues, TargetIndices};
 use crate::judge::{Check, Judgement, Verdict};
 use crate::nde::NdeCorrection;
 use crate::results::{AxisTest, CampaignResult};
-use crate::rules::Finding;
+use crate::rules::Violation;
 use crate::simulate::model_text;
 use crate::uncertainty::{BudgetLine, Uncertainty};
 use crate::units::{AxisKind, Travel};
@@ -52,7 +52,7 @@ pub struct TestJson<'a> {
     evaluation: Option<Evaluated<'a>>,
     #[serde(flatten)]
     judgement: Option<Judged<'a>>,
-    rules: &'a [Finding],
+    rules: &'a [Violation],
     nde: Option<&'a NdeCorrection>,
     #[serde(skip_serializing_if = "Option::is_none")]
     uncertainty: Option<UncertaintyJson<'a>>,

@@ -41,7 +41,7 @@ impl DecisionRule {
 /// What one check proves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
-pub enum Outcome {
+pub enum Conformance {
     Pass,
     Fail,
     /// Within the uncertainty zone around the limit: neither proven (ISO 14253-1).
@@ -60,14 +60,14 @@ pub struct Decision<'a> {
 impl Decision<'_> {
     /// The outcome of |value| against `limit` with expanded uncertainty `u`; a rounding
     /// tolerance of 1e-12 keeps a value printed equal to the bound on its side.
-    pub fn outcome(&self, value: f64, limit: f64, u: f64) -> Outcome {
+    pub fn outcome(&self, value: f64, limit: f64, u: f64) -> Conformance {
         let v = value.abs();
         match self.rule {
-            DecisionRule::Simple if v <= limit + 1e-12 => Outcome::Pass,
-            DecisionRule::Simple => Outcome::Fail,
-            DecisionRule::Iso14253_1 if v <= limit - u + 1e-12 => Outcome::Pass,
-            DecisionRule::Iso14253_1 if v > limit + u + 1e-12 => Outcome::Fail,
-            DecisionRule::Iso14253_1 => Outcome::Inconclusive,
+            DecisionRule::Simple if v <= limit + 1e-12 => Conformance::Pass,
+            DecisionRule::Simple => Conformance::Fail,
+            DecisionRule::Iso14253_1 if v <= limit - u + 1e-12 => Conformance::Pass,
+            DecisionRule::Iso14253_1 if v > limit + u + 1e-12 => Conformance::Fail,
+            DecisionRule::Iso14253_1 => Conformance::Inconclusive,
         }
     }
 }
@@ -185,7 +185,7 @@ pub struct Check {
     /// The expanded uncertainty the rule used (k = 2), when it used one.
     #[serde(rename = "U", skip_serializing_if = "Option::is_none")]
     pub expanded_uncertainty: Option<f64>,
-    pub outcome: Outcome,
+    pub outcome: Conformance,
 }
 
 impl Check {
@@ -269,14 +269,16 @@ impl Judgement {
 
     /// The checks whose nonconformance is proven.
     pub fn failed(&self) -> impl Iterator<Item = &Check> {
-        self.checks.iter().filter(|c| c.outcome == Outcome::Fail)
+        self.checks
+            .iter()
+            .filter(|c| c.outcome == Conformance::Fail)
     }
 
     /// The checks inside the uncertainty zone (ISO 14253-1).
     pub fn inconclusive(&self) -> impl Iterator<Item = &Check> {
         self.checks
             .iter()
-            .filter(|c| c.outcome == Outcome::Inconclusive)
+            .filter(|c| c.outcome == Conformance::Inconclusive)
     }
 
     /// The check using the largest share of its tolerance.
@@ -367,7 +369,7 @@ pub fn judge(evaluation: &Evaluation, limits: Limits, decision: &Decision) -> Ju
                 value: p.value,
                 limit,
                 margin: limit - p.value.abs(),
-                pass: outcome == Outcome::Pass,
+                pass: outcome == Conformance::Pass,
                 source,
                 expanded_uncertainty: expanded,
                 outcome,
@@ -462,7 +464,7 @@ impl std::fmt::Display for Verdict {
 mod tests {
     use super::*;
 
-    fn outcome(rule: DecisionRule, value: f64, limit: f64, u: f64) -> Outcome {
+    fn outcome(rule: DecisionRule, value: f64, limit: f64, u: f64) -> Conformance {
         Decision {
             rule,
             expanded: None,
@@ -474,8 +476,8 @@ mod tests {
     /// limit − U, 9.5 is limit + U.
     #[test]
     fn decision_rule_boundaries() {
+        use Conformance::{Fail, Inconclusive, Pass};
         use DecisionRule::{Iso14253_1 as Iso, Simple};
-        use Outcome::{Fail, Inconclusive, Pass};
         let cases = [
             (6.5, Pass, Pass),
             (6.5 + 1e-9, Pass, Inconclusive),
@@ -510,9 +512,9 @@ mod tests {
             source: LimitSource::Spec,
             expanded_uncertainty: None,
             outcome: if value.abs() <= limit {
-                Outcome::Pass
+                Conformance::Pass
             } else {
-                Outcome::Fail
+                Conformance::Fail
             },
         }
     }

@@ -10,7 +10,7 @@
 //! `run` (approach index j, 1-based); optional `time_s` and `temp_<name>_c`. Separators
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
 
-use super::cell::{Place, Value};
+use super::cell::{Origin, Value};
 use super::error::{ReadError, ReadErrorKind};
 use super::table::{Row, TableReader, mixed_units, read_text};
 use super::{AxisData, MAX_READINGS, MAX_TEMPERATURES, RawReading};
@@ -161,7 +161,7 @@ pub(crate) struct LongTable {
 }
 
 impl TableReader for LongTable {
-    fn from_header(header: &Row, place: &Place) -> Result<LongTable, ReadError> {
+    fn from_header(header: &Row, place: &Origin) -> Result<LongTable, ReadError> {
         let fields = classify_header(header, place)?;
         let header_err = |kind| ReadError::new(place.line(header.number), kind);
         let one = |pred: &dyn Fn(&Column) -> bool, what: &str, expected: &str| {
@@ -218,7 +218,7 @@ impl TableReader for LongTable {
         })
     }
 
-    fn add(&mut self, row: &Row, place: &Place) -> Result<(), ReadError> {
+    fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError> {
         if self.raw.len() >= MAX_READINGS {
             return Err(ReadError::new(
                 place.line(row.number),
@@ -232,7 +232,7 @@ impl TableReader for LongTable {
         Ok(())
     }
 
-    fn finish(self, place: &Place) -> Result<(AxisData, Vec<String>), ReadError> {
+    fn finish(self, place: &Origin) -> Result<(AxisData, Vec<String>), ReadError> {
         let mut notes = Vec::new();
         if self.is_actual {
             notes.push(format!(
@@ -250,7 +250,7 @@ impl TableReader for LongTable {
 
 impl LongTable {
     /// One data row as a reading.
-    fn reading(&self, row: &Row, place: &Place) -> Result<RawReading, ReadError> {
+    fn reading(&self, row: &Row, place: &Origin) -> Result<RawReading, ReadError> {
         let number = row.number;
         let fields = &row.fields;
         if fields.len() != self.columns.len() {
@@ -346,7 +346,7 @@ impl Header {
 }
 
 /// Classifies every header field; a column named twice is an error.
-fn classify_header(header: &Row, place: &Place) -> Result<Header, ReadError> {
+fn classify_header(header: &Row, place: &Origin) -> Result<Header, ReadError> {
     let mut temps = Vec::new();
     let mut columns = Vec::new();
     let mut names: Vec<String> = Vec::new();

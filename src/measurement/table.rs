@@ -4,7 +4,7 @@
 //! a locale's text), each with its place for errors (`file:line:column`, or the sheet and
 //! cell).
 
-use super::cell::{Field, Place, Value};
+use super::cell::{Field, Origin, Value};
 use super::error::{Location, ReadError, ReadErrorKind};
 use super::{AxisData, Lines};
 use crate::units::AxisKind;
@@ -20,11 +20,11 @@ pub(crate) struct Row<'a> {
 
 pub(crate) trait TableReader: Sized {
     /// The layout's columns from the header row, or why the header is wrong.
-    fn from_header(header: &Row, place: &Place) -> Result<Self, ReadError>;
+    fn from_header(header: &Row, place: &Origin) -> Result<Self, ReadError>;
     /// One data row.
-    fn add(&mut self, row: &Row, place: &Place) -> Result<(), ReadError>;
+    fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError>;
     /// The validated test and what was assumed in reading it.
-    fn finish(self, place: &Place) -> Result<(AxisData, Vec<String>), ReadError>;
+    fn finish(self, place: &Origin) -> Result<(AxisData, Vec<String>), ReadError>;
 }
 
 /// Which table a header row announces.
@@ -64,7 +64,7 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
         }
     };
     let sep = super::fields::detect_separator(&header);
-    let place = Place::text(file, sep != ',');
+    let place = Origin::text(file, sep != ',');
     let header_row = text_row(&header, sep, header_line, Vec::new());
     let mut table = T::from_header(&header_row, &place)?;
     let width = header_row.fields.len();
@@ -185,7 +185,7 @@ mod tests {
 
     #[test]
     fn numbers_from_text_and_cells() {
-        let place = Place::sheet("b.xlsx", "S");
+        let place = Origin::sheet("b.xlsx", "S");
         let field = |value| Field { column: 3, value };
         assert_eq!(place.number(7, &field(Value::Number(1.5)), "x"), Ok(1.5));
         assert_eq!(

@@ -16,7 +16,7 @@
 //! simulator and the key=value layout list their readings. The diagnosis's drift and
 //! warm-up checks rely on it; the notes say so.
 
-use super::cell::Place;
+use super::cell::Origin;
 use super::error::{ReadError, ReadErrorKind};
 use super::table::{Row, TableReader, mixed_units, read_text};
 use super::{AxisData, MAX_READINGS, RawReading, fmt_target};
@@ -133,7 +133,7 @@ pub(crate) struct WideTable {
 }
 
 impl TableReader for WideTable {
-    fn from_header(header: &Row, place: &Place) -> Result<WideTable, ReadError> {
+    fn from_header(header: &Row, place: &Origin) -> Result<WideTable, ReadError> {
         let at = |k: usize, kind| place.error(header.number, header.fields[k].column, kind);
         let names: Vec<String> = header.fields.iter().map(|f| f.value.name()).collect();
         let kind = match names[0].as_str() {
@@ -186,7 +186,7 @@ impl TableReader for WideTable {
         })
     }
 
-    fn add(&mut self, row: &Row, place: &Place) -> Result<(), ReadError> {
+    fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError> {
         let readings = (self.rows.len() + 1) * self.columns.len();
         if readings > MAX_READINGS {
             let kind = ReadErrorKind::TooManyReadings {
@@ -220,7 +220,7 @@ impl TableReader for WideTable {
         Ok(())
     }
 
-    fn finish(mut self, place: &Place) -> Result<(AxisData, Vec<String>), ReadError> {
+    fn finish(mut self, place: &Origin) -> Result<(AxisData, Vec<String>), ReadError> {
         let ascending = self
             .rows
             .windows(2)

@@ -16,7 +16,7 @@
 //! For the same reason `.xls` (Excel 97–2003) and `.ods` books are refused with a clear
 //! message: calamine reads those only whole, into dense ranges.
 
-use super::cell::{Field, Place, Value};
+use super::cell::{Field, Origin, Value};
 use super::csv::LongTable;
 use super::error::{ReadError, ReadErrorKind};
 use super::layout::table_kind;
@@ -59,7 +59,7 @@ pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<Read
     let mut book = calamine(|| Xlsx::new(Cursor::new(bytes))).map_err(whole)?;
     let names = calamine(|| Ok::<_, String>(book.sheet_names())).map_err(whole)?;
     let (name, mut notes) = choose_sheet(&names, sheet).map_err(whole)?;
-    let place = Place::sheet(file, &name);
+    let place = Origin::sheet(file, &name);
     let mut cells = calamine(|| book.worksheet_cells_reader(&name))
         .map_err(|kind| ReadError::new(place.whole(), kind))?;
     let mut sheet_reader = SheetReader::new(place.clone());
@@ -249,7 +249,7 @@ struct Found {
 
 /// A sheet being read row by row: looking for the header, then feeding the table.
 struct SheetReader {
-    place: Place,
+    place: Origin,
     table: Option<Found>,
     /// Rows above the header that held something.
     skipped: Vec<usize>,
@@ -258,7 +258,7 @@ struct SheetReader {
 }
 
 impl SheetReader {
-    fn new(place: Place) -> SheetReader {
+    fn new(place: Origin) -> SheetReader {
         SheetReader {
             place,
             table: None,

@@ -13,7 +13,7 @@ pub mod targets;
 use crate::axis_model::{Cycle, TestPlan};
 use crate::evaluate::StandardId;
 use crate::measurement::{AxisData, RawReading};
-use crate::rules::{self, Finding, PlanContext};
+use crate::rules::{self, PlanContext, Violation};
 use crate::units::{AxisKind, Direction, Travel, fmt_position};
 
 /// The axis a plan is for.
@@ -73,7 +73,7 @@ pub struct Plan {
     pub motion: Motion,
     /// The seed the offsets were drawn from; `None` for targets given.
     pub seed: Option<u64>,
-    pub findings: Vec<Finding>,
+    pub findings: Vec<Violation>,
 }
 
 /// Why no plan can be made.
@@ -269,7 +269,7 @@ fn check_motion(m: &Motion) -> Result<(), PlanError> {
 /// What the test-plan rules find in the plan, as they will in its measurement: its targets
 /// read `runs` times each way, the declared travels, each declared period in turn (the
 /// rules on the measured values left out).
-fn findings(plan: &Plan) -> Result<Vec<Finding>, PlanError> {
+fn findings(plan: &Plan) -> Result<Vec<Violation>, PlanError> {
     let data = readings(plan)?;
     let ctx = |pitch| PlanContext {
         kind: plan.axis.kind,

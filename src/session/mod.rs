@@ -47,7 +47,7 @@ pub trait Observer: Sync {
 }
 
 /// What a run did.
-pub struct Outcome {
+pub struct RunOutcome {
     pub result: CampaignResult,
     /// Every output file written.
     pub written: Vec<PathBuf>,
@@ -83,7 +83,7 @@ pub fn run(
     campaign: &Campaign,
     plan: &Plan,
     observer: &dyn Observer,
-) -> Result<Outcome, SessionError> {
+) -> Result<RunOutcome, SessionError> {
     let out = plan.out;
     check_output_dir(campaign, out)?;
     if let Some(history) = plan.history.as_deref() {
@@ -125,7 +125,7 @@ pub fn run(
             out: out.to_path_buf(),
             source,
         })?;
-    Ok(Outcome {
+    Ok(RunOutcome {
         result,
         written,
         appended,

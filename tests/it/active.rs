@@ -9,7 +9,7 @@ use axcheck::measurement::csv;
 use axcheck::results::{AxisTest, CampaignResult};
 use axcheck::simulate::Simulation;
 use axcheck::simulate::SimulationFile as _;
-use axcheck::verify::{Key, Verdict};
+use axcheck::verify::{Effectiveness, Key};
 use serde_json::Value;
 use std::path::Path;
 
@@ -263,7 +263,7 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         .unwrap()
         .as_ref()
         .unwrap();
-    assert_eq!(x.verdict, Verdict::Effective);
+    assert_eq!(x.verdict, Effectiveness::Effective);
     assert!(x.findings.is_empty());
     let y_test = test(&result, "MILL-3", "Y");
     let y = y_test
@@ -274,7 +274,7 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         .unwrap()
         .as_ref()
         .unwrap();
-    assert_eq!(y.verdict, Verdict::MadeWorse);
+    assert_eq!(y.verdict, Effectiveness::MadeWorse);
     assert_eq!(
         y.findings.iter().map(|f| f.effect).collect::<Vec<_>>(),
         [Key::SignInverted]

@@ -2,7 +2,7 @@
 //! one: measured with a known table active, the table written with `--active` is the one
 //! written from the same axis measured with nothing active.
 
-use axcheck::compensate::controllers::{CONTROLLERS, Controller, Reading, Refused, Spacing};
+use axcheck::compensate::controllers::{CONTROLLERS, Controller, ReadAs, Refused, Spacing};
 use axcheck::compensate::{self, Active, Settings, Table};
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::measurement::{AxisData, RawReading};
@@ -150,7 +150,7 @@ fn round_trip(controller: &dyn Controller, a: &RandomAxis) -> Result<bool, TestC
         .map_err(|e| {
             TestCaseError::fail(format!("{}: a held table refused: {e}", controller.name()))
         })?;
-    let reading = Reading {
+    let reading = ReadAs {
         kind: a.kind,
         axis: None,
     };
@@ -231,7 +231,7 @@ fn grid_settings(controller: &dyn Controller) -> Settings {
     };
     Settings {
         interval: (controller.format().spacing == Spacing::Equidistant).then_some(50.0),
-        place: compensate::Place {
+        place: compensate::TableSlot {
             axis: Some(axis.into()),
             ..Default::default()
         },
@@ -267,7 +267,7 @@ fn a_table_built_on_the_active_one_is_the_table_measured_without_it() {
         let settings = grid_settings(*controller);
         let known = compensate::held_table(*controller, &other, &settings).unwrap();
         let file = controller.write(&known, &[]).unwrap();
-        let reading = Reading {
+        let reading = ReadAs {
             kind: AxisKind::Linear,
             axis: Some("X1"),
         };
@@ -304,7 +304,7 @@ fn a_table_built_on_the_active_one_is_the_table_measured_without_it() {
 /// `name`'s reading of `text` for a linear axis (`axis`: the axis to pick).
 fn read(name: &str, text: &str, axis: Option<&str>) -> Result<Table, String> {
     let controller = compensate::controllers::find(name).unwrap();
-    let reading = Reading {
+    let reading = ReadAs {
         kind: AxisKind::Linear,
         axis,
     };
@@ -591,7 +591,7 @@ fn fanuc_reads_its_sheet_at_its_numbers() {
     let settings = Settings {
         interval: Some(100.0),
         reference: Some(0.0),
-        place: compensate::Place {
+        place: compensate::TableSlot {
             number: Some(101),
             ..Default::default()
         },

@@ -213,7 +213,7 @@ fn write_table(dir: &Path, file: &str, kind: AxisKind, file_type: u8) -> Table {
         "{text}"
     );
     let controller = axcheck::compensate::controllers::find("linuxcnc").unwrap();
-    let reading = axcheck::compensate::controllers::Reading { kind, axis: None };
+    let reading = axcheck::compensate::controllers::ReadAs { kind, axis: None };
     let back = controller.read(&text, reading).unwrap();
     let values = |t: &Table| [t.positions.clone(), t.up.clone(), t.down.clone()].concat();
     for (b, t) in values(&back).iter().zip(values(&table)) {

@@ -9,7 +9,7 @@ use axcheck::compensate::{self, Active, Settings, Table};
 use axcheck::evaluate::StandardId;
 use axcheck::simulate::Simulation;
 use axcheck::simulate::SimulationFile as _;
-use axcheck::verify::{self, Key, Verdict, Verification};
+use axcheck::verify::{self, Effectiveness, Key, Verification};
 
 /// 1 000 mm measured at 21 jittered targets, five runs: 20 ppm of scale error, a 4 µm sine
 /// of 300 mm, 5 µm of reversal, 0.4 µm of scatter.
@@ -120,7 +120,7 @@ fn each_way_a_table_can_act_is_named_in_95_percent_of_50_seeds() {
                 let v = verified(*seed, case);
                 let keys: Vec<Key> = v.findings.iter().map(|f| f.effect).collect();
                 match expected {
-                    None => v.verdict == Verdict::Effective && keys.is_empty(),
+                    None => v.verdict == Effectiveness::Effective && keys.is_empty(),
                     Some(k) => keys == [k],
                 }
             })
@@ -136,7 +136,7 @@ fn each_way_a_table_can_act_is_named_in_95_percent_of_50_seeds() {
 #[test]
 fn the_verdict_follows_what_the_table_did_to_e() {
     let v = verified(7, Case::Opposite);
-    assert_eq!(v.verdict, Verdict::MadeWorse);
+    assert_eq!(v.verdict, Effectiveness::MadeWorse);
     assert!(v.e.achieved > v.e.before + v.e.uncertainty, "{:?}", v.e);
     assert_eq!(v.findings[0].params["factor"], -1.0);
     assert!(
@@ -146,10 +146,10 @@ fn the_verdict_follows_what_the_table_did_to_e() {
         "{}",
         v.findings[0].evidence
     );
-    assert_eq!(verified(7, Case::Scaled).verdict, Verdict::MadeWorse);
+    assert_eq!(verified(7, Case::Scaled).verdict, Effectiveness::MadeWorse);
     assert_eq!(verified(7, Case::Scaled).findings[0].params["factor"], 10.0);
     let not = verified(7, Case::NotActive);
-    assert_eq!(not.verdict, Verdict::NotEffective);
+    assert_eq!(not.verdict, Effectiveness::NotEffective);
     assert!((not.e.achieved - not.e.before).abs() <= not.e.uncertainty);
     let shifted = verified(7, Case::Shifted);
     assert!((shifted.findings[0].params["shift"] - INTERVAL).abs() < 1e-9);
@@ -288,7 +288,7 @@ fn a_table_loaded_on_the_other_axis_is_named() {
             .evidence
             .starts_with("the table that acted is axis Y's, not this axis's")
     );
-    assert_ne!(v.verdict, Verdict::Effective);
+    assert_ne!(v.verdict, Effectiveness::Effective);
 }
 
 /// The table acted `shift` mm further along: at P it added what it holds for P − shift.
@@ -426,7 +426,7 @@ fn backlash_not_loaded_and_backlash_relative_are_named_in_95_percent_of_50_seeds
     for (controller, case, acted, expected) in cases {
         let right = count(1..=50, |seed| {
             let v = verified_on(controller, INTERVAL, seed, &acted);
-            let effective = v.verdict == Verdict::Effective;
+            let effective = v.verdict == Effectiveness::Effective;
             found(&v) == expected && effective == expected.is_none()
         });
         report.push(format!("{controller} {case}: {right} of 50"));
@@ -464,7 +464,7 @@ fn the_backlash_findings_give_their_evidence() {
         "{}",
         f.evidence
     );
-    assert_ne!(v.verdict, Verdict::Effective);
+    assert_ne!(v.verdict, Effectiveness::Effective);
     let v = verified_on("heidenhain", INTERVAL, 7, &|t| {
         backlash_read_relative(t, 1.0)
     });
@@ -496,7 +496,7 @@ fn the_backlash_effects_are_tried_only_on_their_controllers() {
         "{:?}",
         v.findings
     );
-    assert_ne!(v.verdict, Verdict::Effective);
+    assert_ne!(v.verdict, Effectiveness::Effective);
 }
 
 /// The example campaign's MILL-3 from the command line: X's re-measurement verified against
@@ -774,7 +774,7 @@ fn a_table_re_measured_at_other_targets_is_effective_despite_an_unresolved_pitch
         };
         let v = verify::verify(&input).unwrap();
         assert!(!v.notes.is_empty(), "the targets differ");
-        v.verdict == Verdict::Effective && v.findings.is_empty()
+        v.verdict == Effectiveness::Effective && v.findings.is_empty()
     });
     eprintln!("effective in {right} of 40");
     assert!(right >= 38, "effective in {right} of 40");

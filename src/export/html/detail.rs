@@ -5,7 +5,7 @@
 
 use super::scene::SceneData;
 use crate::history::AxisTrends;
-use crate::judge::Outcome;
+use crate::judge::Conformance;
 use crate::results::AxisTest;
 use crate::units::fmt_fixed;
 use serde::Serialize;
@@ -22,7 +22,7 @@ pub struct Detail<'a> {
     pub parameters: Vec<ParameterRow>,
     /// Parameters without a value here (those needing repeated runs, with n = 1).
     pub not_applicable: Vec<&'static str>,
-    pub rules: &'a [crate::rules::Finding],
+    pub rules: &'a [crate::rules::Violation],
     pub diagnosis: Vec<DiagnosisFinding>,
     pub compensation: Option<CompensationDetail>,
     /// The verification of the table this test re-measures, in one line.
@@ -45,7 +45,7 @@ pub struct ParameterRow {
     #[serde(rename = "U")]
     pub u: Option<String>,
     pub limit: Option<String>,
-    pub outcome: Option<Outcome>,
+    pub outcome: Option<Conformance>,
 }
 
 #[derive(Debug, Serialize)]

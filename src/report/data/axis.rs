@@ -7,11 +7,11 @@ use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
 use super::uncertainty::{UncertaintySection, uncertainty_section};
 use super::{AXIS_NAME, CampaignHeader, generator, num, opt, pos, s_symbol, short_name, symbol_of};
 use crate::evaluate::{DirectionResult, Evaluation, StandardId};
-use crate::judge::{Outcome, Verdict};
+use crate::judge::{Conformance, Verdict};
 use crate::measurement::FileInfo;
 use crate::report::data::diagnosis::{DiagnosisSection, diagnosis_section};
 use crate::results::{AxisTest, CampaignResult};
-use crate::rules::Finding;
+use crate::rules::Violation;
 use crate::units::{Travel, fmt_position};
 use serde::Serialize;
 
@@ -35,7 +35,7 @@ pub struct AxisReport<'a> {
     n: usize,
     targets: Vec<TargetRow>,
     notes: &'a [String],
-    findings: &'a [Finding],
+    findings: &'a [Violation],
     has_charts: bool,
     diagnosis: Option<DiagnosisSection<'a>>,
     uncertainty: Option<UncertaintySection<'a>>,
@@ -333,9 +333,9 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
                 limit: check.map_or("–".into(), |c| num(c.limit)),
                 margin: check.map_or("–".into(), |c| num(c.margin)),
                 status: check.map_or("", |c| match c.outcome {
-                    Outcome::Pass => "pass",
-                    Outcome::Fail => "fail",
-                    Outcome::Inconclusive => "inconclusive",
+                    Conformance::Pass => "pass",
+                    Conformance::Fail => "fail",
+                    Conformance::Inconclusive => "inconclusive",
                 }),
                 at,
             }

@@ -21,7 +21,7 @@ pub(crate) mod testing;
 pub mod warnings;
 
 pub use active::{Active, Mode};
-pub use table::{Interpolation, Place, Table, apply, apply_change, linear};
+pub use table::{Interpolation, Table, TableSlot, apply, apply_change, linear};
 pub use warnings::Warning;
 
 use crate::diagnose::Diagnosis;
@@ -45,7 +45,7 @@ pub struct Settings {
     pub pitch: Option<f64>,
     /// Where the table goes on the controller (`--axis`, `--measuring-system`,
     /// `compensation.axis` in campaigns): what is given here, else the active table's.
-    pub place: Place,
+    pub place: TableSlot,
     /// The compensation active during the test; `None`: not stated (a warning says so).
     pub active: Option<Active>,
     /// The test conditions' text on compensation (ISO 230-2 3.2), to check against `active`.
@@ -87,9 +87,9 @@ fn held_on(
 }
 
 /// The place given, completed by the active table's.
-fn place(given: &Place, base: Option<&Table>) -> Place {
+fn place(given: &TableSlot, base: Option<&Table>) -> TableSlot {
     let active = base.map(|t| t.place.clone()).unwrap_or_default();
-    Place {
+    TableSlot {
         axis: given.axis.clone().or(active.axis),
         measuring_system: given.measuring_system.or(active.measuring_system),
         number: given.number.or(active.number),

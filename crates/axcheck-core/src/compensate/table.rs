@@ -31,7 +31,7 @@ pub struct Table {
     /// Where the table sits on the controller: its axis name and the controller's own
     /// numbering, for formats that name them.
     #[serde(skip)]
-    pub place: Place,
+    pub place: TableSlot,
     /// How the controller applies the table between its points.
     pub interpolation: Interpolation,
 }
@@ -40,7 +40,7 @@ pub struct Table {
 /// names it; each format reads the part it has, and a table built on an active one keeps
 /// its place.
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct Place {
+pub struct TableSlot {
     /// The axis's name on the controller (HEIDENHAIN's column `X`, Siemens' machine axis
     /// `X1`, TwinCAT's logical number `2` as given); `None`: the file carries a placeholder
     /// the control cannot load, to replace.

@@ -1,5 +1,5 @@
 //! One cell of a measurement table and where it is: the text or number it holds
-//! ([`Value`]), its column ([`Field`]), and the file (and sheet) errors name ([`Place`]),
+//! ([`Value`]), its column ([`Field`]), and the file (and sheet) errors name ([`Origin`]),
 //! which also reads a cell as a number.
 
 use super::error::{Location, ReadError, ReadErrorKind};
@@ -61,15 +61,15 @@ pub struct Field<'a> {
 /// Where a table comes from: the file (and sheet) errors name, and whether text numbers
 /// may use a decimal comma.
 #[derive(Debug, Clone)]
-pub struct Place {
+pub struct Origin {
     pub file: String,
     pub sheet: Option<String>,
     pub decimal_comma: bool,
 }
 
-impl Place {
-    pub fn text(file: &str, decimal_comma: bool) -> Place {
-        Place {
+impl Origin {
+    pub fn text(file: &str, decimal_comma: bool) -> Origin {
+        Origin {
             file: file.to_string(),
             sheet: None,
             decimal_comma,
@@ -78,8 +78,8 @@ impl Place {
 
     /// A sheet: its text cells hold numbers with a decimal point only (`1,234` could be a
     /// thousands separator).
-    pub fn sheet(file: &str, sheet: &str) -> Place {
-        Place {
+    pub fn sheet(file: &str, sheet: &str) -> Origin {
+        Origin {
             file: file.to_string(),
             sheet: Some(sheet.to_string()),
             decimal_comma: false,

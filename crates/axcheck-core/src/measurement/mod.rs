@@ -9,7 +9,7 @@ pub mod error;
 pub mod number;
 pub mod reported;
 
-use cell::Place;
+use cell::Origin;
 pub use error::{Location, ReadError, ReadErrorKind};
 pub use number::parse_number;
 
@@ -85,7 +85,7 @@ pub struct AxisData {
 
 /// A target beyond [`MAX_TARGET`] refused at its line, for every reader (they all build
 /// their data here).
-fn check_target(r: &RawReading, kind: AxisKind, place: &Place) -> Result<(), ReadError> {
+fn check_target(r: &RawReading, kind: AxisKind, place: &Origin) -> Result<(), ReadError> {
     if r.target.abs() <= MAX_TARGET {
         return Ok(());
     }
@@ -114,7 +114,7 @@ impl AxisData {
         temperature_names: Vec<String>,
         file: &str,
     ) -> Result<AxisData, ReadError> {
-        let place = Place::text(file, false);
+        let place = Origin::text(file, false);
         AxisData::from_raw_in(kind, raw, temperature_names, &place)
     }
 
@@ -123,7 +123,7 @@ impl AxisData {
         kind: AxisKind,
         mut raw: Vec<RawReading>,
         temperature_names: Vec<String>,
-        place: &Place,
+        place: &Origin,
     ) -> Result<AxisData, ReadError> {
         if raw.is_empty() {
             return Err(ReadError::new(place.whole(), ReadErrorKind::NoReadings));
@@ -278,7 +278,7 @@ impl Cells {
         targets: &[f64],
         run_labels: &[u32],
         kind: AxisKind,
-        place: &Place,
+        place: &Origin,
     ) -> Result<Cells, ReadError> {
         let target_index = |t: f64| {
             targets
@@ -317,7 +317,7 @@ impl Cells {
         targets: &[f64],
         run_labels: &[u32],
         kind: AxisKind,
-        place: &Place,
+        place: &Origin,
     ) -> Result<(), ReadError> {
         let n = run_labels.len();
         for (i, &target) in targets.iter().enumerate() {

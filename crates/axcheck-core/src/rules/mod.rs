@@ -54,9 +54,9 @@ impl Severity {
     }
 }
 
-/// A broken rule.
+/// A broken rule (a violation of the test plan the standard sets).
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Finding {
+pub struct Violation {
     pub id: &'static str,
     pub clause: &'static str,
     pub severity: Severity,
@@ -104,8 +104,8 @@ pub struct Rule {
 
 impl Rule {
     /// The finding for `plan`, if the rule is broken.
-    fn apply(&self, plan: &Plan) -> Option<Finding> {
-        (self.check)(plan).map(|message| Finding {
+    fn apply(&self, plan: &Plan) -> Option<Violation> {
+        (self.check)(plan).map(|message| Violation {
             id: self.id,
             clause: self.clause,
             severity: self.severity,
@@ -140,7 +140,7 @@ pub const RULES: &[Rule] = &[
 ];
 
 /// Checks the plan of one test.
-pub fn check(ctx: &PlanContext, data: &AxisData) -> Vec<Finding> {
+pub fn check(ctx: &PlanContext, data: &AxisData) -> Vec<Violation> {
     let plan = Plan::new(ctx, data);
     RULES.iter().filter_map(|rule| rule.apply(&plan)).collect()
 }

@@ -4,8 +4,8 @@
 
 use super::compare::Row;
 use super::effects::{Candidate, Context, EFFECTS, Key, chi2, fitted_factor};
-use super::verdict::{Systematic, Verdict};
-use super::{ALPHA, Finding};
+use super::verdict::{Effectiveness, Systematic};
+use super::{ALPHA, Cause};
 use crate::diagnose::stats::chi2_upper;
 use crate::units::fmt_fixed;
 use std::collections::BTreeMap;
@@ -40,7 +40,7 @@ impl Test {
 /// The effect that explains the change when the table as named does not: the best
 /// candidate, an earlier effect kept unless a later one is better by [`PREFERENCE`], and
 /// only if it explains the change far better (a quarter of the χ² or less).
-pub fn effect(ctx: &Context, test: &Test) -> Option<Finding> {
+pub fn effect(ctx: &Context, test: &Test) -> Option<Cause> {
     if !test.rejected() {
         return None;
     }
@@ -59,7 +59,7 @@ pub fn effect(ctx: &Context, test: &Test) -> Option<Finding> {
     params.insert("chi2", c);
     params.insert("chi2_as_loaded", test.chi2);
     params.insert("fitted_factor", factor);
-    Some(Finding {
+    Some(Cause {
         effect: candidate.key,
         evidence: format!(
             "{}: the change measured from before to after follows it (χ² = {} on {} degrees of freedom) far better than the table as loaded (χ² = {}; the change is {} × the table's, fitted)",
@@ -76,8 +76,13 @@ pub fn effect(ctx: &Context, test: &Test) -> Option<Finding> {
 /// `table_mismatch` when the verdict is one and no effect explains it, or the table as
 /// named is rejected with nothing to explain it: what the data show, per target (χ²) and
 /// on E (both ways).
-pub fn mismatch(rows: &[Row], test: &Test, e: &Systematic, verdict: Verdict) -> Option<Finding> {
-    if verdict != Verdict::TableMismatch && !test.rejected() {
+pub fn mismatch(
+    rows: &[Row],
+    test: &Test,
+    e: &Systematic,
+    verdict: Effectiveness,
+) -> Option<Cause> {
+    if verdict != Effectiveness::TableMismatch && !test.rejected() {
         return None;
     }
     let factor = fitted_factor(rows);
@@ -116,7 +121,7 @@ pub fn mismatch(rows: &[Row], test: &Test, e: &Systematic, verdict: Verdict) -> 
         ("e_achieved", e.achieved),
         ("e_uncertainty", e.uncertainty),
     ]);
-    Some(Finding {
+    Some(Cause {
         effect: Key::TableMismatch,
         evidence: format!(
             "the table on the machine is not the one named (another axis's, an older or a newer file), or the machine changed between the two measurements: {per_target}, and no effect of the vocabulary explains it; {on_e}; the change is {} × the named table's, fitted",

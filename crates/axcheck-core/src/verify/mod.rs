@@ -20,7 +20,7 @@ pub mod verdict;
 
 pub use compare::Row;
 pub use effects::{Key, Other};
-pub use verdict::{Systematic, Verdict};
+pub use verdict::{Effectiveness, Systematic};
 
 use crate::compensate::controllers::Controller;
 use crate::compensate::{Table, apply_change};
@@ -70,7 +70,7 @@ pub enum VerifyError {
 
 /// What went wrong, with the evidence.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Finding {
+pub struct Cause {
     pub effect: Key,
     pub evidence: String,
     pub params: BTreeMap<&'static str, f64>,
@@ -79,12 +79,12 @@ pub struct Finding {
 /// A verification: the verdict, the findings and the comparison behind them.
 #[derive(Debug, Clone)]
 pub struct Verification {
-    pub verdict: Verdict,
+    pub verdict: Effectiveness,
     pub e: Systematic,
     pub before: Evaluation,
     pub predicted: Evaluation,
     pub achieved: Evaluation,
-    pub findings: Vec<Finding>,
+    pub findings: Vec<Cause>,
     pub per_target: Vec<Row>,
     /// The constant offset between the two measurements (after − predicted), which no
     /// parameter sees.
@@ -201,12 +201,12 @@ fn notes(before: &AxisData, after: &AxisData) -> Vec<String> {
 /// each set of parameters as `{parameters: {KEY: value}}`.
 #[derive(Serialize)]
 pub struct Json<'a> {
-    pub verdict: Verdict,
+    pub verdict: Effectiveness,
     pub e: &'a Systematic,
     pub before: ParameterSet<'a>,
     pub predicted: ParameterSet<'a>,
     pub achieved: ParameterSet<'a>,
-    pub findings: &'a [Finding],
+    pub findings: &'a [Cause],
     pub offset: f64,
     pub chi2: f64,
     pub dof: usize,

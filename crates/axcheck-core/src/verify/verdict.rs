@@ -57,7 +57,7 @@ use serde::Serialize;
 /// The verdict on a compensation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
-pub enum Verdict {
+pub enum Effectiveness {
     /// E achieved within the prediction's uncertainty of the E predicted, and the change
     /// per target follows the table named.
     Effective,
@@ -72,15 +72,17 @@ pub enum Verdict {
     TableMismatch,
 }
 
-impl Verdict {
+impl Effectiveness {
     /// The verdict and what it means, for the console and the report.
     pub fn words(self) -> &'static str {
         match self {
-            Verdict::Effective => "effective: E achieved within the prediction's uncertainty",
-            Verdict::PartlyEffective => "partly effective: E reduced, but not to the prediction",
-            Verdict::NotEffective => "not effective: E not changed beyond the uncertainty",
-            Verdict::MadeWorse => "made worse: E grown beyond the uncertainty",
-            Verdict::TableMismatch => {
+            Effectiveness::Effective => "effective: E achieved within the prediction's uncertainty",
+            Effectiveness::PartlyEffective => {
+                "partly effective: E reduced, but not to the prediction"
+            }
+            Effectiveness::NotEffective => "not effective: E not changed beyond the uncertainty",
+            Effectiveness::MadeWorse => "made worse: E grown beyond the uncertainty",
+            Effectiveness::TableMismatch => {
                 "table mismatch: the re-measurement does not follow the table named; the table on the machine is not that one"
             }
         }
@@ -88,11 +90,11 @@ impl Verdict {
 
     pub fn name(self) -> &'static str {
         match self {
-            Verdict::Effective => "effective",
-            Verdict::PartlyEffective => "partly_effective",
-            Verdict::NotEffective => "not_effective",
-            Verdict::MadeWorse => "made_worse",
-            Verdict::TableMismatch => "table_mismatch",
+            Effectiveness::Effective => "effective",
+            Effectiveness::PartlyEffective => "partly_effective",
+            Effectiveness::NotEffective => "not_effective",
+            Effectiveness::MadeWorse => "made_worse",
+            Effectiveness::TableMismatch => "table_mismatch",
         }
     }
 }
@@ -129,31 +131,31 @@ pub struct Evidence<'a> {
 }
 
 /// The verdict (see the module's order).
-pub fn judge(evidence: &Evidence) -> Verdict {
+pub fn judge(evidence: &Evidence) -> Effectiveness {
     let e = evidence.e;
     let by_e = on_e(e);
     if e.far_better() {
-        return Verdict::TableMismatch;
+        return Effectiveness::TableMismatch;
     }
-    if evidence.rejected && (!evidence.explained || by_e == Verdict::Effective) {
+    if evidence.rejected && (!evidence.explained || by_e == Effectiveness::Effective) {
         return match by_e {
-            Verdict::MadeWorse => Verdict::MadeWorse,
-            _ => Verdict::TableMismatch,
+            Effectiveness::MadeWorse => Effectiveness::MadeWorse,
+            _ => Effectiveness::TableMismatch,
         };
     }
     by_e
 }
 
 /// The verdict from E before, predicted and achieved, one-sided.
-fn on_e(e: &Systematic) -> Verdict {
+fn on_e(e: &Systematic) -> Effectiveness {
     if e.achieved <= e.predicted + e.uncertainty {
-        Verdict::Effective
+        Effectiveness::Effective
     } else if e.achieved > e.before + e.uncertainty {
-        Verdict::MadeWorse
+        Effectiveness::MadeWorse
     } else if e.achieved < e.before - e.uncertainty {
-        Verdict::PartlyEffective
+        Effectiveness::PartlyEffective
     } else {
-        Verdict::NotEffective
+        Effectiveness::NotEffective
     }
 }
 
@@ -205,7 +207,7 @@ mod tests {
         }
     }
 
-    fn verdict(e: &Systematic, rejected: bool, explained: bool) -> Verdict {
+    fn verdict(e: &Systematic, rejected: bool, explained: bool) -> Effectiveness {
         judge(&Evidence {
             e,
             rejected,
@@ -226,7 +228,7 @@ mod tests {
         for (rejected, explained) in [(true, false), (true, true), (false, false)] {
             assert_eq!(
                 verdict(&x_as_y, rejected, explained),
-                Verdict::TableMismatch
+                Effectiveness::TableMismatch
             );
         }
     }
@@ -236,9 +238,18 @@ mod tests {
     #[test]
     fn a_rejected_table_is_never_effective() {
         let as_predicted = e(20.0, 1.0, 2.5);
-        assert_eq!(verdict(&as_predicted, false, false), Verdict::Effective);
-        assert_eq!(verdict(&as_predicted, true, false), Verdict::TableMismatch);
-        assert_eq!(verdict(&as_predicted, true, true), Verdict::TableMismatch);
+        assert_eq!(
+            verdict(&as_predicted, false, false),
+            Effectiveness::Effective
+        );
+        assert_eq!(
+            verdict(&as_predicted, true, false),
+            Effectiveness::TableMismatch
+        );
+        assert_eq!(
+            verdict(&as_predicted, true, true),
+            Effectiveness::TableMismatch
+        );
     }
 
     /// Rejected and unexplained: a mismatch unless E grew (made worse says more); an effect
@@ -247,28 +258,31 @@ mod tests {
     fn the_chi2_decides_when_nothing_explains() {
         assert_eq!(
             verdict(&e(20.0, 1.0, 30.0), true, false),
-            Verdict::MadeWorse
+            Effectiveness::MadeWorse
         );
         assert_eq!(
             verdict(&e(20.0, 1.0, 10.0), true, false),
-            Verdict::TableMismatch
+            Effectiveness::TableMismatch
         );
         assert_eq!(
             verdict(&e(20.0, 1.0, 19.0), true, false),
-            Verdict::TableMismatch
+            Effectiveness::TableMismatch
         );
         assert_eq!(
             verdict(&e(20.0, 1.0, 10.0), true, true),
-            Verdict::PartlyEffective
+            Effectiveness::PartlyEffective
         );
         assert_eq!(
             verdict(&e(20.0, 1.0, 19.0), true, true),
-            Verdict::NotEffective
+            Effectiveness::NotEffective
         );
-        assert_eq!(verdict(&e(20.0, 1.0, 30.0), true, true), Verdict::MadeWorse);
+        assert_eq!(
+            verdict(&e(20.0, 1.0, 30.0), true, true),
+            Effectiveness::MadeWorse
+        );
         assert_eq!(
             verdict(&e(20.0, 1.0, 10.0), false, false),
-            Verdict::PartlyEffective
+            Effectiveness::PartlyEffective
         );
     }
 

@@ -74,7 +74,7 @@ impl fmt::Display for Unreadable {
 /// What the axis knows when its table file is read: the file holds no axis kind (mm or
 /// degrees) and may hold several axes.
 #[derive(Debug, Clone, Copy)]
-pub struct Reading<'a> {
+pub struct ReadAs<'a> {
     pub kind: AxisKind,
     /// The axis's name on the controller, to pick its table from a file of several.
     pub axis: Option<&'a str>,
@@ -186,7 +186,7 @@ pub trait Controller: Sync {
     /// correction added in each direction (the correction convention of [`Table`], the
     /// format's sign undone), its place; what the controller would refuse, or read
     /// otherwise than the file seems to say, is refused with its line and field.
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable>;
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable>;
     /// What to fill in before the control can load the file, when the format names the
     /// axis and `table.place` does not give it: the placeholder written instead (one the
     /// control cannot load, never a valid axis) and what replaces it. `None`: nothing.

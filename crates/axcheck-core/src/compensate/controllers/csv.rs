@@ -8,7 +8,7 @@
 //! be the axis's; `position_mm,correction_um` (one column) is read as the same correction in
 //! both directions; the positions must increase.
 
-use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use super::controller::{Controller, Directions, Format, ReadAs, Refused, Spacing, Unreadable};
 use super::reading::{self, Points, numbered};
 use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
@@ -55,7 +55,7 @@ impl Controller for Csv {
         Ok(out)
     }
 
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
         let kind = reading.kind;
         let mut rows = numbered(text).filter(|(_, l)| {
             let t = l.trim();

@@ -52,7 +52,7 @@
 //! and commas are refused too, as that loader refuses them. A rotary table over exactly 0…360°
 //! is read as one revolution (the range is set by its own command).
 
-use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use super::controller::{Controller, Directions, Format, ReadAs, Refused, Spacing, Unreadable};
 use super::reading::{self, Points};
 use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
@@ -107,7 +107,7 @@ impl Controller for Ecmc {
         }
     }
 
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
         let mut points = Points::empty(reading.kind);
         let per_unit = reading.kind.deviation_units_per_position_unit();
         let mut lines = Vec::new();

@@ -69,10 +69,10 @@
 //! (a decimal comma too: it is not known how the control reads it), positions that do not
 //! increase, more than 256 rows.
 
-use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use super::controller::{Controller, Directions, Format, ReadAs, Refused, Spacing, Unreadable};
 use super::reading::{self, Points, numbered};
 use crate::compensate::grid::REVOLUTION_DEG;
-use crate::compensate::{Place, Table};
+use crate::compensate::{Table, TableSlot};
 use crate::units::{AxisKind, fmt_fixed};
 
 pub struct Heidenhain;
@@ -192,7 +192,7 @@ impl Controller for Heidenhain {
         Ok(table)
     }
 
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
         read(text, reading)
     }
 
@@ -333,7 +333,7 @@ fn begin_line(line: &str, at: usize) -> Result<f64, Unreadable> {
 }
 
 /// The table of a `.COM` file.
-fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
+fn read(text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
     let mut lines = numbered(text).filter(|(_, l)| !l.trim().is_empty());
     let (at, begin) = lines
         .next()
@@ -404,9 +404,9 @@ fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
     reading::increasing(&points.positions, &rows, "AXISPOS")?;
     let modulo = reading::one_revolution(reading.kind, &points.positions);
     let key = columns.names[axis].0.clone();
-    let place = Place {
+    let place = TableSlot {
         axis: (key != AXIS_KEY && key != OLD_AXIS_KEY).then_some(key),
-        ..Place::default()
+        ..TableSlot::default()
     };
     Ok(points.table(None, modulo, place, Default::default()))
 }

@@ -49,7 +49,7 @@
 //! 256 points.
 
 use super::controller::{
-    Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable,
+    Backlash, Controller, Directions, Format, ReadAs, Refused, Spacing, Unreadable,
 };
 use super::reading::{self, Points, numbered};
 use crate::compensate::table::Table;
@@ -184,7 +184,7 @@ impl Controller for LinuxCnc {
         Backlash::UnusedWithTable
     }
 
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
         let (rows, lines) = loaded_rows(text)?;
         if rows.len() > MAX_POINTS {
             return Err(Unreadable::at(
@@ -390,8 +390,8 @@ mod tests {
         );
     }
 
-    fn reading(kind: AxisKind) -> Reading<'static> {
-        Reading { kind, axis: None }
+    fn reading(kind: AxisKind) -> ReadAs<'static> {
+        ReadAs { kind, axis: None }
     }
 
     /// The type note decides where the sizes would not: `0 0.001 0.002` is trims of 1 and

@@ -3,7 +3,7 @@
 //! put together in the correction convention of [`Table`].
 
 use super::controller::Unreadable;
-use crate::compensate::{Interpolation, Place, Table};
+use crate::compensate::{Interpolation, Table, TableSlot};
 use crate::units::AxisKind;
 
 /// The lines of `text`, numbered from 1, without their line ends (`\n` or `\r\n`).
@@ -101,7 +101,7 @@ impl Points {
         self,
         reference: Option<f64>,
         modulo: bool,
-        place: Place,
+        place: TableSlot,
         interpolation: Interpolation,
     ) -> Table {
         Table {

@@ -63,7 +63,7 @@ mod limits;
 mod read;
 
 use super::controller::{
-    Backlash, Controller, Directions, Format, Reading, Refused, Spacing, Unreadable,
+    Backlash, Controller, Directions, Format, ReadAs, Refused, Spacing, Unreadable,
 };
 use crate::compensate::table::wrap;
 use crate::compensate::table::{Interpolation, Table};
@@ -113,7 +113,7 @@ impl Controller for Fanuc {
     }
 
     /// The set-up sheet axcheck writes (the control holds no positions, the sheet does).
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
         read::read(text, reading)
     }
 

@@ -1,4 +1,4 @@
-//! Reading a FANUC set-up sheet back: the axis line (the grid in the measurement's
+//! ReadAs a FANUC set-up sheet back: the axis line (the grid in the measurement's
 //! coordinates, which the control does not know), the parameters 3605#0 and 3620–3627, and
 //! the pitch error data from the punch block between `%` lines (`N10000+number P value`,
 //! a space between allowed). The corrections are rebuilt as the control applies them: 0 at
@@ -7,12 +7,12 @@
 //! to 0 and number 0 repeat the last one. A set-up sheet whose numbers were moved (an
 //! offset added to 3620, 3621, 3622, 3626 and every number) is read at its numbers.
 
-use super::super::controller::{Reading, Unreadable};
+use super::super::controller::{ReadAs, Unreadable};
 use super::super::reading::{self, Points, numbered};
 use super::limits::{
     DETECTION_ARCSEC, DETECTION_UM, MAX_VALUE, MIN_VALUE, PER_POSITION_UNIT, PUNCH_BASE,
 };
-use crate::compensate::{Interpolation, Place, Table};
+use crate::compensate::{Interpolation, Table, TableSlot};
 use crate::units::AxisKind;
 use std::collections::BTreeMap;
 
@@ -33,7 +33,7 @@ struct Grid {
     modulo: bool,
 }
 
-pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
+pub fn read(text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
     let sheet = Sheet::parse(text)?;
     let grid = sheet.grid(reading.kind)?;
     let parameter = |n: &str| sheet.parameter(n);
@@ -89,9 +89,9 @@ pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
         down: down.iter().map(|q| *q as f64 * quantum).collect(),
         positions: grid.positions,
     };
-    let place = Place {
+    let place = TableSlot {
         number: Some(first as usize),
-        ..Place::default()
+        ..TableSlot::default()
     };
     Ok(points.table(
         Some(grid.reference),

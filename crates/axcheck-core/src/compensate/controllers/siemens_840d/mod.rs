@@ -56,7 +56,7 @@
 
 mod read;
 
-use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use super::controller::{Controller, Directions, Format, ReadAs, Refused, Spacing, Unreadable};
 use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 
@@ -106,7 +106,7 @@ impl Controller for Siemens840d {
 
     /// The table as the NC holds it: the mean correction in both directions (MD32450 is
     /// machine data, not in the file: the active backlash is stated beside the file).
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
         read::read(text, reading)
     }
 

@@ -1,4 +1,4 @@
-//! Reading `%_N_AX_EEC_INI` as the NC runs it: a part program of assignments, the last one
+//! ReadAs `%_N_AX_EEC_INI` as the NC runs it: a part program of assignments, the last one
 //! to a variable standing. Comments after `;`, block numbers (`N10`), the `%` line,
 //! `CHANDATA(n)` and the end (`M17`, `M30`, `M2`) are skipped; names are read in any case.
 //! A file may hold several axes and both measuring systems: the axis is the one named
@@ -6,10 +6,10 @@
 //! = 0 … (MAX − MIN)/STEP; values beyond MAX are not used by the NC (an archive holds all
 //! of MD38000's points) and are not read.
 
-use super::super::controller::{Reading, Unreadable};
+use super::super::controller::{ReadAs, Unreadable};
 use super::super::reading::{self, Points, numbered};
 use crate::compensate::grid::REVOLUTION_DEG;
-use crate::compensate::{Interpolation, Place, Table};
+use crate::compensate::{Interpolation, Table, TableSlot};
 use std::collections::BTreeMap;
 
 /// One axis's table variables, each with the line that set it last.
@@ -26,7 +26,7 @@ struct Variables {
 type Tables = BTreeMap<(u8, String), Variables>;
 
 /// The table of the axis `reading` names (or the file's only one).
-pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
+pub fn read(text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
     let tables = assignments(text)?;
     let ((system, axis), vars) = choose(&tables, reading.axis)?;
     let line_of = |v: Option<(f64, usize)>, name: &str| {
@@ -59,7 +59,7 @@ pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
         points.down.push(correction);
     }
     let modulo = modulo(vars.modulo, min, max)?;
-    let place = Place {
+    let place = TableSlot {
         // A file still holding the placeholder names no axis: the next one written says so.
         axis: (axis != super::super::AXIS_PLACEHOLDER).then(|| axis.clone()),
         measuring_system: Some(*system),

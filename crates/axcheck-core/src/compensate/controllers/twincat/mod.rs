@@ -58,7 +58,7 @@
 mod limits;
 mod read;
 
-use super::controller::{Controller, Directions, Format, Reading, Refused, Spacing, Unreadable};
+use super::controller::{Controller, Directions, Format, ReadAs, Refused, Spacing, Unreadable};
 use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
 use limits::*;
@@ -248,7 +248,7 @@ impl Controller for TwinCat {
         Ok(table)
     }
 
-    fn read(&self, text: &str, reading: Reading) -> Result<Table, Unreadable> {
+    fn read(&self, text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
         read::read(text, reading)
     }
 

@@ -1,4 +1,4 @@
-//! Reading a `kw.ssfk.*` list as the ISG list parser documents it (Beckhoff Infosys, TF5200
+//! ReadAs a `kw.ssfk.*` list as the ISG list parser documents it (Beckhoff Infosys, TF5200
 //! list syntax): `key value` per line, anything after the value and a blank a comment,
 //! whole-line comments starting with `#`, blank lines, blanks inside `[ ]` allowed; keys in
 //! any order; `End` (which axcheck writes, and no Beckhoff example shows) ends the list.
@@ -8,10 +8,10 @@
 //! both directions [unconfirmed: no Beckhoff page says which key it uses]; a `.neg` that
 //! differs is refused rather than guessed. Other `kopf.*` and `kw.ssfk.*` keys are not used.
 
-use super::super::controller::{Reading, Unreadable};
+use super::super::controller::{ReadAs, Unreadable};
 use super::super::reading::{self, Points, numbered};
 use super::limits::{MAX_POINTS, STEPS_PER_POSITION_UNIT, value_step};
-use crate::compensate::{Interpolation, Place, Table};
+use crate::compensate::{Interpolation, Table, TableSlot};
 use crate::units::AxisKind;
 use std::collections::BTreeMap;
 
@@ -34,7 +34,7 @@ struct List {
     setpoint: BTreeMap<usize, (i64, usize)>,
 }
 
-pub fn read(text: &str, reading: Reading) -> Result<Table, Unreadable> {
+pub fn read(text: &str, reading: ReadAs) -> Result<Table, Unreadable> {
     let list = List::parse(text)?;
     list.table(reading.kind)
 }
@@ -139,10 +139,10 @@ impl List {
             down: correction(&down),
             positions,
         };
-        let place = Place {
+        let place = TableSlot {
             // 0, which the CNC does not allow, is the placeholder of an unnamed axis.
             number: self.axis_number.map(|(n, _)| n).filter(|&n| n > 0),
-            ..Place::default()
+            ..TableSlot::default()
         };
         Ok(points.table(None, modulo, place, Interpolation::Linear))
     }
