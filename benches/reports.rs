@@ -12,7 +12,6 @@ fn main() {
     let result = batch::run(
         &campaign,
         batch::Options {
-            jobs: 1,
             diagnose: true,
             drop_data: false,
             compensate: true,

@@ -31,11 +31,10 @@ type Tested = (
     Option<Result<Box<compensation::VerifyCase>, String>>,
 );
 
-/// Options of a batch run.
+/// Options of a batch run. The axes are evaluated in the caller's rayon pool (the
+/// command's one pool, sized by `--jobs`).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Options {
-    /// Worker threads (0: all cores).
-    pub jobs: usize,
     /// Run the model check and diagnosis of every axis test.
     pub diagnose: bool,
     /// The CI gate: drop each test's readings, per-target statistics and U budgets once
@@ -88,13 +87,7 @@ pub fn run(
             })
             .collect()
     };
-    let mut tested = match rayon::ThreadPoolBuilder::new()
-        .num_threads(options.jobs)
-        .build()
-    {
-        Ok(pool) => pool.install(evaluate_all),
-        Err(_) => evaluate_all(),
-    };
+    let mut tested = evaluate_all();
     compensation::verify_all(&mut tested);
     let tests = tested.into_iter().map(|(t, _)| t).collect();
     CampaignResult {

@@ -325,7 +325,6 @@ impl Progress {
 pub fn run_command(args: &RunArgs) -> Result<u8> {
     let options = RunOptions {
         out: &args.out,
-        jobs: args.jobs,
         no_pdf: args.no_pdf,
         no_html: args.no_html,
         no_diagnose: args.no_diagnose,
@@ -341,13 +340,12 @@ pub fn run_command(args: &RunArgs) -> Result<u8> {
 /// `axcheck check`: the exit status.
 pub fn check_command(args: &CheckArgs) -> Result<u8> {
     let progress = Progress::of(args.progress);
-    check(&args.campaign, args.jobs, args.diagnose, progress)
+    check(&args.campaign, args.diagnose, progress)
 }
 
 /// Options of `axcheck run`.
 pub struct RunOptions<'a> {
     pub out: &'a Path,
-    pub jobs: usize,
     /// Write no PDFs (also `campaign.output.pdf: false`).
     pub no_pdf: bool,
     /// Write no summary.html (also `campaign.output.html: false`).
@@ -373,7 +371,6 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let output = &campaign.info.output;
     let plan = session::Plan {
         out: options.out,
-        jobs: options.jobs,
         pdf: !options.no_pdf && output.pdf,
         html: !options.no_html && output.html,
         diagnose: output.diagnose && !options.no_diagnose,
@@ -500,9 +497,8 @@ fn flagged_lines(trends: &AxisTrends) -> String {
 }
 
 /// `axcheck check`: the CI gate; writes nothing.
-pub fn check(path: &Path, jobs: usize, diagnose: bool, progress: Progress) -> Result<u8> {
+pub fn check(path: &Path, diagnose: bool, progress: Progress) -> Result<u8> {
     let options = batch::Options {
-        jobs,
         diagnose,
         drop_data: true,
         compensate: false,

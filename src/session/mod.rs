@@ -23,7 +23,6 @@ use std::sync::Arc;
 /// What one run does.
 pub struct Plan<'a> {
     pub out: &'a Path,
-    pub jobs: usize,
     /// The axis reports and the summary PDF.
     pub pdf: bool,
     /// `summary.html`.
@@ -106,7 +105,6 @@ pub fn run(
         false => None,
     };
     let options = batch::Options {
-        jobs: plan.jobs,
         diagnose: plan.diagnose,
         drop_data: false,
         compensate: true,

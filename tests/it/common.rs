@@ -52,7 +52,6 @@ pub fn scratch(name: &str) -> PathBuf {
 pub fn run_campaign(path: &std::path::Path, diagnose: bool) -> axcheck::results::CampaignResult {
     let campaign = axcheck::campaign::Campaign::load(path).unwrap();
     let options = axcheck::batch::Options {
-        jobs: 2,
         diagnose,
         drop_data: false,
         compensate: true,
