@@ -31,7 +31,8 @@ pub(crate) struct TimeFit {
     pub ls: LeastSquares,
     /// Row indices (into `Prep::rows`) in fit order.
     pub rows: Vec<usize>,
-    /// Drift rate β per time unit (0 when absent or collinear).
+    /// Drift rate β per time unit (0 when absent or collinear; with `thermal_about` it
+    /// holds the growth's uniform part γ (P̄ − O), so that [`TimeFit::effect`] stays whole).
     pub beta: f64,
     /// Thermal coefficient γ: deviation per position unit per time unit (about P̄).
     pub gamma: f64,

@@ -1,6 +1,7 @@
 //! The linear time terms beside a warm-up found: a thermal growth (against the pure
 //! scatter) and a drift (against the drift's reference), each tested with τ profiled again
-//! with and without it; the drift at a declared thermal origin by its Wald t.
+//! with and without it; at a declared thermal origin the drift is the trend there, tested
+//! against the growth held still at the origin.
 
 use super::profiled;
 use crate::diagnose::maths::stats::f_upper;
