@@ -13,7 +13,7 @@
 use axcheck::campaign::Campaign;
 use axcheck::evaluate::gost27843::{Gost27843, SMethod};
 use axcheck::evaluate::{self, Standard, StandardId};
-use axcheck::judge::{self, Limits, Spec};
+use axcheck::judge::{self, Spec};
 use axcheck::measurement::{self, AxisData};
 use axcheck::nde;
 use axcheck::rules::{self, PlanContext};
@@ -111,7 +111,7 @@ pub fn evaluate(data: &[u8]) {
         let _ = serde_json::to_vec(&e.json());
         let (first, last) = axis.measurement_travel();
         for (_, spec) in builtin_specs() {
-            let limits = Limits::new(Some(spec), &BTreeMap::new(), axis.kind, last - first);
+            let limits = judge::limits(Some(spec), &BTreeMap::new(), axis.kind, last - first);
             if let Ok(limits) = limits {
                 let j = judge::judge(&e, limits, &judge::Decision::default());
                 let _ = j.worst();
@@ -202,7 +202,7 @@ pub fn campaign(data: &[u8]) {
             .and_then(|name| builtin_specs().iter().find(|(n, _)| *n == name))
             .map(|(_, s)| s);
         let (first, last) = data.measurement_travel();
-        if let Ok(limits) = Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
+        if let Ok(limits) = judge::limits(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
             let _ = judge::judge(&e, limits, &judge::Decision::default());
         }
     }
@@ -231,16 +231,16 @@ pub fn model(data: &[u8]) {
 /// The plan file (`axcheck plan -o`): a plan that loads is written again and loads to the
 /// same plan, and every control's part program and the laser's lists are written for it.
 fn plan_file(text: &str) {
-    use axcheck::plan::{Plan, laser, programs};
-    let Ok(plan) = Plan::from_yaml(text, "fuzz-plan.yaml") else {
+    use axcheck::plan::{self, laser, programs};
+    let Ok(plan) = plan::file::from_yaml(text, "fuzz-plan.yaml") else {
         return;
     };
-    let again = Plan::from_yaml(&plan.to_yaml(), "again.yaml");
+    let again = plan::file::from_yaml(&plan::file::to_yaml(&plan), "again.yaml");
     assert_eq!(
         again.as_ref().ok(),
         Some(&plan),
         "{again:?}\n{}",
-        plan.to_yaml()
+        plan::file::to_yaml(&plan)
     );
     let axis = match plan.axis.kind {
         AxisKind::Linear => "X",
@@ -274,7 +274,7 @@ pub fn spec(data: &[u8]) {
     for (data, e) in [(linear, &evaluations().0), (rotary, &evaluations().1)] {
         for travel in [0.0, 1.0, 360.0, 999.9, 1000.0, 1e6, f64::INFINITY] {
             let _ = spec.band(data.kind, travel);
-            if let Ok(limits) = Limits::new(Some(&spec), &BTreeMap::new(), data.kind, travel) {
+            if let Ok(limits) = judge::limits(Some(&spec), &BTreeMap::new(), data.kind, travel) {
                 let _ = judge::judge(e, limits, &judge::Decision::default()).worst();
             }
         }

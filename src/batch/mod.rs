@@ -11,7 +11,7 @@ use crate::campaign::{AxisSpec, Campaign, MachineInfo, SensorKind};
 use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::Evaluation;
 use crate::evaluate::gost27843::SMethod;
-use crate::judge::{self, Decision, DecisionRule, Judgement, Limits, Spec, Verdict};
+use crate::judge::{self, Decision, DecisionRule, Judgement, Spec, Verdict};
 use crate::measurement::{self, AxisData, Recognised};
 use crate::nde::{self, NdeCorrection};
 use crate::rules::{self, PlanContext, Severity, Violation};
@@ -496,7 +496,7 @@ fn judge_stage(
     judged: &Judged,
 ) -> (Verdict, Option<String>, Option<Judgement>) {
     let (first, last) = data.measurement_travel();
-    match Limits::new(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
+    match judge::limits(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
         Err(e) => (Verdict::Error, Some(e), None),
         Ok(limits) => {
             let decision = Decision {
@@ -613,7 +613,7 @@ fn planned(raw: &crate::campaign::model::PlanRaw, kind: AxisKind, files: &Files)
     let read = || -> Result<(Vec<f64>, usize), String> {
         let path = files.resolve(&raw.file)?;
         let text = files.read_to_string(&path).map_err(|e| e.to_string())?;
-        let plan = crate::plan::Plan::from_yaml(&text, &raw.file).map_err(|e| e.to_string())?;
+        let plan = crate::plan::file::from_yaml(&text, &raw.file).map_err(|e| e.to_string())?;
         if plan.axis.kind != kind {
             return Err(format!(
                 "it plans a {} axis, this one is {kind}",

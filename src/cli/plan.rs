@@ -7,7 +7,7 @@ use axcheck::axis_model::Cycle;
 use axcheck::campaign::Campaign;
 use axcheck::evaluate::StandardId;
 use axcheck::plan::programs::{Coordinates, GcodeSystem};
-use axcheck::plan::{self, Axis, Motion, Plan, laser, programs};
+use axcheck::plan::{self, Axis, Motion, Plan, file, laser, programs};
 use axcheck::units::{AxisKind, Travel, fmt_fixed};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -176,13 +176,13 @@ pub fn run(args: &Args) -> Result<String> {
             None => text.push_str(&program),
         }
         if let Some(path) = &args.save_plan {
-            written(path, &plan.to_yaml(), &mut text, "plan")?;
+            written(path, &file::to_yaml(&plan), &mut text, "plan")?;
         }
     } else if let Some(path) = &args.out {
-        written(path, &plan.to_yaml(), &mut text, "plan")?;
+        written(path, &file::to_yaml(&plan), &mut text, "plan")?;
     } else {
         text.push('\n');
-        text.push_str(&plan.to_yaml());
+        text.push_str(&file::to_yaml(&plan));
     }
     if let Some(path) = &args.readings_csv {
         written(
@@ -251,7 +251,7 @@ fn make(args: &Args) -> Result<Made> {
     if let Some(path) = &args.from {
         let text = axcheck::files::read_to_string(path)
             .with_context(|| format!("cannot read the plan {}", path.display()))?;
-        let mut plan = Plan::from_yaml(&text, &path.display().to_string())?;
+        let mut plan = file::from_yaml(&text, &path.display().to_string())?;
         if args.continuous {
             plan.axis.continuous = true;
             plan::measurement_travel(&plan.axis, plan.motion.overrun)?;

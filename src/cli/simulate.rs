@@ -88,7 +88,7 @@ pub fn run(
     if let Some(path) = plan {
         let text = axcheck::files::read_to_string(path)
             .with_context(|| format!("cannot read the plan {}", path.display()))?;
-        let plan = axcheck::plan::Plan::from_yaml(&text, &path.display().to_string())?;
+        let plan = axcheck::plan::file::from_yaml(&text, &path.display().to_string())?;
         if plan.axis.kind != sim.kind {
             bail!(
                 "{} is a plan for a {} axis, {} a model of a {} one",

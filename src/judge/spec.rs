@@ -1,6 +1,7 @@
 //! Acceptance specs (`specs/*.yaml`): limits per parameter in bands of measurement travel.
 
-use crate::evaluate::{ParamKey, catalogue};
+use super::{LimitSource, Limits, Tolerances};
+use crate::evaluate::catalogue;
 use crate::units::AxisKind;
 use crate::yaml::{self, Located, LocationIndex, YamlError, deserialize_at};
 use serde::{Deserialize, Serialize};
@@ -11,10 +12,6 @@ pub const BUILTIN_SPECS: &[(&str, &str)] = &[
     ("general", include_str!("../../specs/general.yaml")),
     ("precision", include_str!("../../specs/precision.yaml")),
 ];
-
-/// Limits per parameter, µm (linear) or arcsec (rotary), as checked: keyed by the
-/// parameter, walked in the order of the written keys ([`ParamKey`]'s order).
-pub type Tolerances = BTreeMap<ParamKey, f64>;
 
 /// One band of a spec: limits for axes whose measurement travel is up to `up_to`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -175,10 +172,60 @@ pub fn check_tolerances<'a>(
     Ok(tolerances)
 }
 
+/// Where the spec lacks a band for the test and what to do: `specs/house.yaml:3: spec
+/// `house` has no linear band for a measurement travel of 1200 mm (its last ends at 1000
+/// mm): add one …`.
+fn no_band(spec: &Spec, kind: AxisKind, travel: f64) -> String {
+    let unit = kind.position_unit();
+    let bands = match kind {
+        AxisKind::Linear => &spec.linear,
+        AxisKind::Rotary => &spec.rotary,
+    };
+    let last = match bands.last().and_then(|b| b.up_to) {
+        Some(u) => format!(" (its last ends at {u} {unit})"),
+        None => format!(" (it has no `{kind}` bands)"),
+    };
+    format!(
+        "{}: spec `{}` has no {kind} band for a measurement travel of {travel} {unit}{last}: add a `{kind}` band with `up_to` of at least {travel} (or none) to the spec, or give the axis its own `tolerances`",
+        spec.origin.at(kind),
+        spec.name
+    )
+}
+
+/// The limits of a test of `kind` over `travel`: the spec's band (if any) overridden by
+/// the axis's own tolerances.
+pub fn limits(
+    spec: Option<&Spec>,
+    overrides: &Tolerances,
+    kind: AxisKind,
+    travel: f64,
+) -> Result<Limits, String> {
+    let mut limits = Limits::default();
+    if let Some(spec) = spec {
+        let band = spec
+            .band(kind, travel)
+            .ok_or_else(|| no_band(spec, kind, travel))?;
+        let range = match band.up_to {
+            Some(u) => format!("≤ {u} {}", kind.position_unit()),
+            None => "all travels".to_string(),
+        };
+        limits.spec = Some(format!("{} ({kind} {range})", spec.name));
+        for (k, v) in &band.tolerances {
+            limits.values.insert(*k, (*v, LimitSource::Spec));
+        }
+    }
+    for (k, v) in overrides {
+        limits.values.insert(*k, (*v, LimitSource::Axis));
+    }
+    limits.example = spec.is_some_and(|s| s.example)
+        && (limits.values.values()).any(|(_, s)| *s == LimitSource::Spec);
+    Ok(limits)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::judge::{LimitSource, Limits};
+    use crate::evaluate::ParamKey;
 
     #[test]
     fn builtin_specs_parse_and_say_they_are_examples() {
@@ -200,12 +247,12 @@ mod tests {
         )
         .unwrap();
         let over = Tolerances::from([(ParamKey::R, 4.0)]);
-        let l = Limits::new(Some(&spec), &over, AxisKind::Linear, 1000.0).unwrap();
+        let l = limits(Some(&spec), &over, AxisKind::Linear, 1000.0).unwrap();
         assert_eq!(l.values[&ParamKey::A], (10.0, LimitSource::Spec));
         assert_eq!(l.values[&ParamKey::R], (4.0, LimitSource::Axis));
-        let l = Limits::new(Some(&spec), &BTreeMap::new(), AxisKind::Linear, 1000.5).unwrap();
+        let l = limits(Some(&spec), &BTreeMap::new(), AxisKind::Linear, 1000.5).unwrap();
         assert_eq!(l.values[&ParamKey::A].0, 20.0);
-        assert!(Limits::new(Some(&spec), &BTreeMap::new(), AxisKind::Rotary, 90.0).is_err());
+        assert!(limits(Some(&spec), &BTreeMap::new(), AxisKind::Rotary, 90.0).is_err());
         let e = Spec::from_yaml(
             "name: t\nlinear:\n  - {up_to_mm: 1000, tolerances: {AA: 1}}\n",
             "t.yaml",
@@ -215,5 +262,24 @@ mod tests {
             e.to_string(),
             "t.yaml:3:35: linear[0].tolerances: unknown parameter `AA` (did you mean `A`?)"
         );
+    }
+
+    /// Issue 42: an example spec's limits say so wherever the spec is described; an axis's
+    /// own limits alone do not.
+    #[test]
+    fn example_limits_are_labelled() {
+        let spec = Spec::from_yaml(BUILTIN_SPECS[0].1, "general").unwrap();
+        assert!(spec.example, "specs/general.yaml carries example: true");
+        let example = limits(Some(&spec), &Tolerances::new(), AxisKind::Linear, 500.0).unwrap();
+        assert!(example.example);
+        assert_eq!(
+            example.describe_labelled(),
+            "general (linear ≤ 1000 mm) — example limits, not from a standard"
+        );
+        assert_eq!(example.describe(), "general (linear ≤ 1000 mm)");
+        let own = Tolerances::from([(ParamKey::A, 5.0)]);
+        let axis_only = limits(None, &own, AxisKind::Linear, 500.0).unwrap();
+        assert!(!axis_only.example);
+        assert_eq!(axis_only.describe_labelled(), "axis tolerances");
     }
 }

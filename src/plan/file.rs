@@ -43,87 +43,88 @@ pub struct PlanFile {
     pub feed: f64,
 }
 
-impl Plan {
-    /// The plan's file: a comment head, then the keys.
-    pub fn to_yaml(&self) -> String {
-        let file = PlanFile {
-            kind: self.axis.kind,
-            standard: short_name(self.axis.standard).to_string(),
-            axis_travel: self.axis.travel,
-            continuous: self.axis.continuous,
-            measurement_travel: self.measurement_travel,
-            pitch: self.axis.pitch,
-            scale_pitch: self.axis.scale_pitch,
-            seed: self.seed,
-            targets: self.targets.clone(),
-            runs: self.runs,
-            cycle: self.motion.cycle,
-            overrun: self.motion.overrun,
-            dwell_s: self.motion.dwell_s,
-            feed: self.motion.feed,
-        };
-        let (pos, per_min) = match self.axis.kind {
-            AxisKind::Linear => ("mm", "mm/min"),
-            AxisKind::Rotary => ("deg", "deg/min"),
-        };
-        let head = format!(
-            "# Test plan written by axcheck: {} targets in {pos} ({}), {} runs, {} cycle.\n\
-             # Positions, overrun and travels in {pos}; feed in {per_min}; dwell in s.\n",
-            self.targets.len(),
-            self.axis.standard.title(),
-            self.runs,
-            self.motion.cycle.name()
-        );
-        let body = serde_norway::to_string(&file).expect("a plan serialises");
-        head + &body
-    }
+/// The plan's file: a comment head, then the keys.
+pub fn to_yaml(plan: &Plan) -> String {
+    let file = PlanFile {
+        kind: plan.axis.kind,
+        standard: short_name(plan.axis.standard).to_string(),
+        axis_travel: plan.axis.travel,
+        continuous: plan.axis.continuous,
+        measurement_travel: plan.measurement_travel,
+        pitch: plan.axis.pitch,
+        scale_pitch: plan.axis.scale_pitch,
+        seed: plan.seed,
+        targets: plan.targets.clone(),
+        runs: plan.runs,
+        cycle: plan.motion.cycle,
+        overrun: plan.motion.overrun,
+        dwell_s: plan.motion.dwell_s,
+        feed: plan.motion.feed,
+    };
+    let (pos, per_min) = match plan.axis.kind {
+        AxisKind::Linear => ("mm", "mm/min"),
+        AxisKind::Rotary => ("deg", "deg/min"),
+    };
+    let head = format!(
+        "# Test plan written by axcheck: {} targets in {pos} ({}), {} runs, {} cycle.\n\
+         # Positions, overrun and travels in {pos}; feed in {per_min}; dwell in s.\n",
+        plan.targets.len(),
+        plan.axis.standard.title(),
+        plan.runs,
+        plan.motion.cycle.name()
+    );
+    let body = serde_norway::to_string(&file).expect("a plan serialises");
+    head + &body
+}
 
-    /// The plan in `text`, its targets checked by the rules again; `file` names it in
-    /// errors, which give line and column.
-    pub fn from_yaml(text: &str, file: &str) -> Result<Plan, YamlError> {
-        let (value, index) = crate::yaml::parse(text, file)?;
-        let raw: PlanFile = crate::yaml::deserialize_at(&value, "", &index)
-            .map_err(|located| located.in_file(file))?;
-        let at = |key: &str| index.value(key);
-        let fail = |key: &str, message: String| {
-            Located::new(at(key), format!("{key}: {message}")).in_file(file)
-        };
-        let standard = StandardId::parse(&raw.standard).ok_or_else(|| {
-            fail(
-                "standard",
-                format!("unknown standard `{}`; expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba", raw.standard),
-            )
-        })?;
-        let axis = Axis {
-            kind: raw.kind,
-            standard,
-            travel: raw.axis_travel,
-            continuous: raw.continuous,
-            measurement_travel: Some(raw.measurement_travel),
-            pitch: raw.pitch,
-            scale_pitch: raw.scale_pitch,
-        };
-        let motion = Motion {
-            runs: Some(raw.runs),
-            cycle: raw.cycle,
-            overrun: raw.overrun,
-            dwell_s: raw.dwell_s,
-            feed: raw.feed,
-        };
-        let key = |e: &PlanError| match e {
-            PlanError::Travel(_) => "measurement_travel",
-            PlanError::Targets(_) => "targets",
-            PlanError::Motion(_) => "runs",
-        };
-        let plan = super::with_targets(&axis, &motion, raw.targets)
-            .and_then(|mut plan| {
-                super::measurement_travel(&axis, motion.overrun)?;
-                plan.seed = raw.seed;
-                Ok(plan)
-            })
-            .map_err(|e| fail(key(&e), e.to_string()))?;
-        Ok(plan)
-    }
+/// The plan in `text`, its targets checked by the rules again; `file` names it in
+/// errors, which give line and column.
+pub fn from_yaml(text: &str, file: &str) -> Result<Plan, YamlError> {
+    let (value, index) = crate::yaml::parse(text, file)?;
+    let raw: PlanFile =
+        crate::yaml::deserialize_at(&value, "", &index).map_err(|located| located.in_file(file))?;
+    let at = |key: &str| index.value(key);
+    let fail = |key: &str, message: String| {
+        Located::new(at(key), format!("{key}: {message}")).in_file(file)
+    };
+    let standard = StandardId::parse(&raw.standard).ok_or_else(|| {
+        fail(
+            "standard",
+            format!(
+                "unknown standard `{}`; expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba",
+                raw.standard
+            ),
+        )
+    })?;
+    let axis = Axis {
+        kind: raw.kind,
+        standard,
+        travel: raw.axis_travel,
+        continuous: raw.continuous,
+        measurement_travel: Some(raw.measurement_travel),
+        pitch: raw.pitch,
+        scale_pitch: raw.scale_pitch,
+    };
+    let motion = Motion {
+        runs: Some(raw.runs),
+        cycle: raw.cycle,
+        overrun: raw.overrun,
+        dwell_s: raw.dwell_s,
+        feed: raw.feed,
+    };
+    let key = |e: &PlanError| match e {
+        PlanError::Travel(_) => "measurement_travel",
+        PlanError::Targets(_) => "targets",
+        PlanError::Motion(_) => "runs",
+    };
+    let plan = super::with_targets(&axis, &motion, raw.targets)
+        .and_then(|mut plan| {
+            super::measurement_travel(&axis, motion.overrun)?;
+            plan.seed = raw.seed;
+            Ok(plan)
+        })
+        .map_err(|e| fail(key(&e), e.to_string()))?;
+    Ok(plan)
 }
 
 /// The standard's name as `--standard` takes it.

@@ -196,7 +196,7 @@ fn a_campaign_names_what_its_measurement_changed_from_its_plan() {
     ]);
     assert_eq!(code, 0, "{err}");
     // The same test with target 3 left out and target 5 typed 0.5 mm further.
-    let plan = axcheck::plan::Plan::from_yaml(
+    let plan = axcheck::plan::file::from_yaml(
         &std::fs::read_to_string(dir.join("x-plan.yaml")).unwrap(),
         "x-plan.yaml",
     )

@@ -2,9 +2,11 @@
 //! the readings of a test ([`measurement`], as the readers build them), the plan's rules
 //! ([`rules`]), the standards' evaluation ([`evaluate`], with the NDE correction in
 //! [`nde`] and other tools' results checked in [`crosscheck`]), the uncertainty
-//! ([`uncertainty`]), the diagnosis against the error model ([`diagnose`],
-//! [`axis_model`]), compensation tables ([`compensate`]) and their verification
-//! ([`verify`]). Units and names are in [`units`] and [`suggest`].
+//! ([`uncertainty`]), the verdict against the limits ([`judge`], ISO 14253-1), the
+//! diagnosis against the error model ([`diagnose`], [`axis_model`]), compensation tables
+//! ([`compensate`]) and their verification ([`verify`]), and each axis's trend across
+//! inspections ([`trend`]). Before the measurement, [`plan`] gives the targets, the part
+//! programs and the laser's target list. Units and names are in [`units`] and [`suggest`].
 //!
 //! Nothing here opens a file, parses YAML or draws a page: readers, campaigns, outputs and
 //! the command line build on this crate.
@@ -14,10 +16,13 @@ pub mod compensate;
 pub mod crosscheck;
 pub mod diagnose;
 pub mod evaluate;
+pub mod judge;
 pub mod measurement;
 pub mod nde;
+pub mod plan;
 pub mod rules;
 pub mod suggest;
+pub mod trend;
 pub mod uncertainty;
 pub mod units;
 pub mod verify;
