@@ -15,27 +15,17 @@
 //! [`files`] (all reading of user files, rooted), [`yaml`], [`units`], [`atomic`],
 //! [`lock`] and [`safe_text`] (input text made safe for each output); [`simulate`] writes simulation files and synthetic fleets.
 
-pub mod atomic;
-pub mod batch;
-pub mod campaign;
 pub mod export;
-pub mod files;
 pub mod history;
-pub mod judge;
-pub mod lock;
-pub mod measurement;
-pub mod panics;
-pub mod plan;
 #[cfg(feature = "pdf")]
 pub mod report;
-pub mod results;
-pub mod safe_text;
 #[cfg(all(feature = "pdf", feature = "parquet"))]
 pub mod session;
-pub mod simulate;
-pub mod trend;
-pub mod yaml;
 
+pub use axcheck_campaign::{
+    atomic, batch, campaign, files, judge, lock, measurement, panics, plan, results, safe_text,
+    simulate, trend, yaml,
+};
 pub use axcheck_core::{
     axis_model, compensate, crosscheck, diagnose, evaluate, nde, rules, suggest, uncertainty,
     units, verify,

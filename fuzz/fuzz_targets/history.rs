@@ -1,6 +1,6 @@
 #![no_main]
 //! Fuzz target `history`: bytes read as a history file (Parquet, through polars, whose
-//! panics on damaged files `axcheck::panics` contains). What it can still find: an abort,
+//! panics on damaged files `axcheck_campaign::panics` contains). What it can still find: an abort,
 //! an allocation without bound (`-rss_limit_mb`), a hang, or a panic outside the reader.
 //! Built with the `history` feature, which brings in polars:
 //! `cargo fuzz run history --features history`.
@@ -8,13 +8,13 @@ use libfuzzer_sys::fuzz_target;
 use std::path::Path;
 
 // The quiet hook lets contained panics be; any other panic still aborts the fuzzer.
-fuzz_target!(init: axcheck::panics::install_quiet_hook(), |data: &[u8]| {
+fuzz_target!(init: axcheck_campaign::panics::install_quiet_hook(), |data: &[u8]| {
     let path = Path::new("fuzz.parquet");
     if let Ok(records) = axcheck::history::read_bytes(data, path) {
         // Rows that read are regrouped and fitted, as `trend` does.
-        let options = axcheck::trend::fit::Options { horizon_years: 2.0 };
+        let options = axcheck_core::trend::fit::Options { horizon_years: 2.0 };
         for series in axcheck::history::series(&records) {
-            let _ = axcheck::trend::fit::fit(&series, &options);
+            let _ = axcheck_core::trend::fit::fit(&series, &options);
         }
     }
 });

@@ -10,15 +10,15 @@
 //!
 //! Uses only the library without its default features (no Typst, no polars).
 
-use axcheck::campaign::Campaign;
-use axcheck::evaluate::gost27843::{Gost27843, SMethod};
-use axcheck::evaluate::{self, Standard, StandardId};
-use axcheck::judge::{self, Spec};
-use axcheck::measurement::{self, AxisData};
-use axcheck::nde;
-use axcheck::rules::{self, PlanContext};
-use axcheck::simulate::SimulationFile as _;
-use axcheck::units::{AxisKind, Travel};
+use axcheck_campaign::campaign::Campaign;
+use axcheck_campaign::judge::{self, Spec};
+use axcheck_campaign::measurement::{self, AxisData};
+use axcheck_campaign::simulate::SimulationFile as _;
+use axcheck_core::evaluate::gost27843::{Gost27843, SMethod};
+use axcheck_core::evaluate::{self, Standard, StandardId};
+use axcheck_core::nde;
+use axcheck_core::rules::{self, PlanContext};
+use axcheck_core::units::{AxisKind, Travel};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -45,7 +45,7 @@ pub fn ecmc_app(data: &[u8]) {
         };
         check_data(&test.data);
         if let Some(reported) = &test.recognised.reported {
-            let compared = axcheck::crosscheck::compare(reported, &test.data);
+            let compared = axcheck_core::crosscheck::compare(reported, &test.data);
             let _ = serde_json::to_vec(&compared);
         }
     }
@@ -177,17 +177,18 @@ pub fn campaign(data: &[u8]) {
     };
     for (_, entry) in campaign.axes() {
         let Ok(axis) = &entry.spec else { continue };
-        let _ = axis
-            .data
-            .resolve(&axcheck::files::Root::campaign(&campaign.dir, false));
+        let _ = axis.data.resolve(&axcheck_campaign::files::Root::campaign(
+            &campaign.dir,
+            false,
+        ));
         let data = match axis.raw.kind {
             AxisKind::Linear => &fixtures().0,
             AxisKind::Rotary => &fixtures().1,
         };
         // The campaign's NDE settings applied as `run` applies them (clause 3.1).
-        let (data, _) = axcheck::batch::apply_nde(axis, data.clone());
+        let (data, _) = axcheck_campaign::batch::apply_nde(axis, data.clone());
         let data = &data;
-        let _ = rules::check(&axcheck::batch::plan_context(axis), data);
+        let _ = rules::check(&axcheck_campaign::batch::plan_context(axis), data);
         let e = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
             Gost27843 {
                 s_method: SMethod::Ranges,
@@ -216,10 +217,10 @@ pub fn model(data: &[u8]) {
         return;
     };
     plan_file(text);
-    let Ok(sim) = axcheck::simulate::Simulation::from_yaml(text, "fuzz-model.yaml") else {
+    let Ok(sim) = axcheck_campaign::simulate::Simulation::from_yaml(text, "fuzz-model.yaml") else {
         return;
     };
-    let again = axcheck::simulate::Simulation::from_yaml(&sim.to_yaml(), "again.yaml");
+    let again = axcheck_campaign::simulate::Simulation::from_yaml(&sim.to_yaml(), "again.yaml");
     assert!(again.is_ok(), "{again:?}\n{}", sim.to_yaml());
     let axis = sim.run(sim.seed);
     let csv = measurement::csv::write(&axis, &[]);
@@ -231,7 +232,7 @@ pub fn model(data: &[u8]) {
 /// The plan file (`axcheck plan -o`): a plan that loads is written again and loads to the
 /// same plan, and every control's part program and the laser's lists are written for it.
 fn plan_file(text: &str) {
-    use axcheck::plan::{self, laser, programs};
+    use axcheck_campaign::plan::{self, laser, programs};
     let Ok(plan) = plan::file::from_yaml(text, "fuzz-plan.yaml") else {
         return;
     };
@@ -286,8 +287,8 @@ pub fn spec(data: &[u8]) {
 /// read again; then it is the active table of a compensation of a fixed test of its kind
 /// (the incremental table and its prediction).
 pub fn controllers(data: &[u8]) {
-    use axcheck::compensate::controllers::{CONTROLLERS, ReadAs};
-    use axcheck::compensate::{self, Active, Settings};
+    use axcheck_core::compensate::controllers::{CONTROLLERS, ReadAs};
+    use axcheck_core::compensate::{self, Active, Settings};
     let Ok(text) = std::str::from_utf8(data) else {
         return; // every table file is read as UTF-8 text
     };

@@ -27,7 +27,31 @@ const MAX_FUNCTION_LINES: usize = 100;
 const MAX_FILE_LINES: usize = 800;
 
 /// The source folders of the workspace's crates, the top first (README "Layout").
-const CRATES: &[&str] = &["src", "crates/axcheck-core/src"];
+const CRATES: &[&str] = &[
+    "src",
+    "crates/axcheck-campaign/src",
+    "crates/axcheck-core/src",
+];
+
+/// What each lower crate must build without (README "Layout"): the core opens no file,
+/// parses no YAML and reads no workbook; neither draws a page nor writes Parquet.
+const FORBIDDEN: &[(&str, &[&str])] = &[
+    (
+        "crates/axcheck-core",
+        &[
+            "typst",
+            "polars",
+            "calamine",
+            "serde_norway",
+            "walkdir",
+            "zip",
+        ],
+    ),
+    (
+        "crates/axcheck-campaign",
+        &["typst", "polars", "plotters", "rust_xlsxwriter"],
+    ),
+];
 
 /// The `.rs` files under `dir` (relative to the workspace), each with its path in the crate.
 fn sources_of(dir: &str) -> Vec<(PathBuf, String)> {
@@ -503,4 +527,35 @@ fn use_trees_are_expanded() {
     .into_iter()
     .collect();
     assert_eq!(circles(&edges).len(), 1);
+}
+
+/// The lower crates' manifests name none of the dependencies their layer forbids, and
+/// name only crates below them in the workspace (the compiler holds the rest: a crate
+/// cannot import one it does not depend on).
+#[test]
+fn lower_crates_depend_on_no_heavy_or_higher_crate() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut wrong = Vec::new();
+    for (dir, forbidden) in FORBIDDEN {
+        let manifest = std::fs::read_to_string(root.join(dir).join("Cargo.toml")).unwrap();
+        let deps: Vec<String> = manifest
+            .lines()
+            .skip_while(|l| !l.starts_with("[dependencies]"))
+            .skip(1)
+            .take_while(|l| !l.starts_with("[dev-dependencies]"))
+            .filter_map(|l| l.split_once('=').map(|(k, _)| k.trim().replace('-', "_")))
+            .filter(|k| !k.starts_with('#') && !k.starts_with('['))
+            .collect();
+        for dep in &deps {
+            if forbidden.iter().any(|f| dep.starts_with(f)) || dep == "axcheck" {
+                wrong.push(format!("{dir} depends on {dep}"));
+            }
+        }
+        if *dir == "crates/axcheck-core" && deps.iter().any(|d| d == "axcheck_campaign") {
+            wrong.push(format!(
+                "{dir} depends on axcheck-campaign, a crate above it"
+            ));
+        }
+    }
+    assert!(wrong.is_empty(), "{wrong:#?}");
 }

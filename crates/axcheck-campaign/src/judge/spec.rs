@@ -9,8 +9,11 @@ use std::collections::BTreeMap;
 
 /// The specs that ship inside the binary (`specs/*.yaml` of the source tree).
 pub const BUILTIN_SPECS: &[(&str, &str)] = &[
-    ("general", include_str!("../../specs/general.yaml")),
-    ("precision", include_str!("../../specs/precision.yaml")),
+    ("general", include_str!("../../../../specs/general.yaml")),
+    (
+        "precision",
+        include_str!("../../../../specs/precision.yaml"),
+    ),
 ];
 
 /// One band of a spec: limits for axes whose measurement travel is up to `up_to`.

@@ -132,7 +132,7 @@ pub(super) fn line_of(bytes: &[u8], needle: &str) -> usize {
 }
 
 pub(super) fn table2() -> AxisData {
-    let text = include_str!("../../../tests/data/iso230-2_table2.csv");
+    let text = include_str!("../../../../../tests/data/iso230-2_table2.csv");
     csv::parse(text.as_bytes(), "iso230-2_table2.csv").unwrap()
 }
 

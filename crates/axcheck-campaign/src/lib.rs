@@ -1,0 +1,32 @@
+//! axcheck's campaigns: everything between the user's files and the core's stages, in the
+//! pipeline's order — [`files`] (every user file read beneath its campaign's root, no
+//! link out), [`campaign`] (the campaign file loaded, validated and its data files
+//! resolved), [`judge`] (acceptance specs read, limits taken from one), [`plan`] (the
+//! plan file) and [`measurement`] (the readers, one file per layout) → [`batch`] runs
+//! every axis through the core's stages in parallel → [`results`], the result model that
+//! exporters, reports and the history read. Beside them: [`simulate`] (simulation files
+//! and synthetic fleets), [`trend`]'s tables, [`yaml`] (located YAML errors), [`atomic`]
+//! and [`lock`] (outputs written whole, one run per folder), [`safe_text`] and [`panics`].
+//!
+//! It draws no page and writes no Parquet; the core's modules are named here as
+//! `crate::evaluate` and the like through the private imports below.
+
+pub mod atomic;
+pub mod batch;
+pub mod campaign;
+pub mod files;
+pub mod judge;
+pub mod lock;
+pub mod measurement;
+pub mod panics;
+pub mod plan;
+pub mod results;
+pub mod safe_text;
+pub mod simulate;
+pub mod trend;
+pub mod yaml;
+
+use axcheck_core::{
+    axis_model, compensate, crosscheck, diagnose, evaluate, nde, rules, suggest, uncertainty,
+    units, verify,
+};
