@@ -77,7 +77,7 @@ fn main() {
     let csv = controllers::find("csv").expect("csv");
     let table = held_table(csv, &data, &settings).expect("held");
     let after = apply(&table, &sim.run(2));
-    let input = verify::Input {
+    let input = verify::VerifyInput {
         before: &data,
         after: &after,
         old: None,

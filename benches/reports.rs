@@ -11,7 +11,7 @@ fn main() {
         Campaign::load(Path::new("example-campaign/campaign.yaml")).expect("example campaign");
     let result = batch::run(
         &campaign,
-        batch::Options {
+        batch::BatchOptions {
             diagnose: true,
             drop_data: false,
             compensate: true,

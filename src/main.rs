@@ -28,7 +28,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Evaluate one measurement file: the axis parameters and the per-target table.
-    Eval(cli::eval::Args),
+    Eval(cli::eval::EvalArgs),
     /// Evaluate a whole campaign and write its outputs (exit 0: all pass, 1: any axis
     /// fails, is noncompliant or has an error, 2: the campaign cannot be read).
     Run(cli::campaign::RunArgs),
@@ -75,23 +75,23 @@ enum Command {
     /// (`run --history DIR`): slope per year (Theil–Sen), the date it reaches its limit,
     /// and the series that will cross within the horizon or are worsening.
     #[cfg(feature = "parquet")]
-    Trend(cli::trend::Args),
+    Trend(cli::trend::TrendArgs),
     /// The controller's compensation table for a measured axis (the correction it adds:
     /// minus the mean deviation at each point and direction) and the parameters predicted
     /// with it. Without --out the table goes to standard output.
-    Compensate(cli::compensate::Args),
+    Compensate(cli::compensate::CompensateArgs),
     /// The test plan of an axis before the laser is set up: the targets the standard asks
     /// for, checked by the test-plan rules; with --program the part program that runs it,
     /// and the target list for the laser software.
-    Plan(Box<cli::plan::Args>),
+    Plan(Box<cli::plan::PlanArgs>),
     /// Compare the re-measurement after a table was loaded with the prediction from the
     /// measurement before and the table: effective, partly effective, not effective or
     /// made worse, and what went wrong (exit 0: effective, 1: not, 2: an input cannot be
     /// read).
-    Verify(cli::verify::Args),
+    Verify(cli::verify::VerifyArgs),
     /// Simulate a positioning test from an error model and a test plan (YAML), or with
     /// --fleet a whole synthetic campaign for benchmarks.
-    Simulate(cli::simulate::Args),
+    Simulate(cli::simulate::SimulateArgs),
 }
 
 /// mimalloc's `mi_option_purge_delay` (mimalloc.h, v3: the 16th option).

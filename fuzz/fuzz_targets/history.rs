@@ -12,7 +12,7 @@ fuzz_target!(init: axcheck_campaign::panics::install_quiet_hook(), |data: &[u8]|
     let path = Path::new("fuzz.parquet");
     if let Ok(records) = axcheck::history::read_bytes(data, path) {
         // Rows that read are regrouped and fitted, as `trend` does.
-        let options = axcheck_core::trend::fit::Options { horizon_years: 2.0 };
+        let options = axcheck_core::trend::fit::TrendOptions { horizon_years: 2.0 };
         for series in axcheck::history::series(&records) {
             let _ = axcheck_core::trend::fit::fit(&series, &options);
         }

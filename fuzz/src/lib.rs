@@ -186,9 +186,12 @@ pub fn campaign(data: &[u8]) {
             AxisKind::Rotary => &fixtures().1,
         };
         // The campaign's NDE settings applied as `run` applies them (clause 3.1).
-        let (data, _) = axcheck_campaign::batch::apply_nde(axis, data.clone());
+        let (data, _) = axcheck_campaign::campaign::stages::nde::apply(axis, data.clone());
         let data = &data;
-        let _ = rules::check(&axcheck_campaign::batch::plan_context(axis), data);
+        let _ = rules::check(
+            &axcheck_campaign::campaign::stages::rules::context(axis),
+            data,
+        );
         let e = if axis.standard == StandardId::Gost27843 && axis.raw.s_from_ranges {
             Gost27843 {
                 s_method: SMethod::Ranges,

@@ -1,7 +1,6 @@
 //! `axcheck run` and `axcheck check`: a whole campaign.
 
 use anyhow::{Result, anyhow};
-use axcheck::batch;
 use axcheck::campaign::Campaign;
 use axcheck::history::AxisTrends;
 use axcheck::judge::Verdict;
@@ -109,18 +108,6 @@ impl session::Observer for Console {
     fn test_done(&self, test: &AxisTest) {
         self.report(test);
     }
-}
-
-/// Evaluates a campaign, reporting progress on stderr.
-pub fn evaluate_with(
-    campaign: &Campaign,
-    options: batch::Options,
-    progress: Progress,
-) -> CampaignResult {
-    let console = Console::new(campaign, progress);
-    let result = batch::run(campaign, options, &|t| console.report(t));
-    console.finish();
-    result
 }
 
 use super::text::MAX_PROBLEM_LINES;
@@ -323,66 +310,58 @@ impl Progress {
 
 /// `axcheck run`: the exit status.
 pub fn run_command(args: &RunArgs) -> Result<u8> {
-    let options = RunOptions {
-        out: &args.out,
-        no_pdf: args.no_pdf,
-        no_html: args.no_html,
-        no_diagnose: args.no_diagnose,
-        templates: args.templates.as_deref(),
-        progress: Progress::of(args.progress),
-        history: args.history.as_deref(),
-        horizon_years: args.horizon_years,
-        wait: args.wait,
-    };
-    run(&args.campaign, &options)
-}
-
-/// `axcheck check`: the exit status.
-pub fn check_command(args: &CheckArgs) -> Result<u8> {
-    let progress = Progress::of(args.progress);
-    check(&args.campaign, args.diagnose, progress)
-}
-
-/// Options of `axcheck run`.
-pub struct RunOptions<'a> {
-    pub out: &'a Path,
-    /// Write no PDFs (also `campaign.output.pdf: false`).
-    pub no_pdf: bool,
-    /// Write no summary.html (also `campaign.output.html: false`).
-    pub no_html: bool,
-    /// A customised copy of `templates/`.
-    pub templates: Option<&'a Path>,
-    /// Skip the model check and diagnosis (also `campaign.output.diagnose: false`).
-    pub no_diagnose: bool,
-    pub progress: Progress,
-    /// Folder of the inspection history to append to (overrides `campaign.history`).
-    pub history: Option<&'a Path>,
-    /// Trend horizon in years (`--horizon`; overrides `campaign.trend_horizon_years`).
-    pub horizon_years: Option<f64>,
-    /// Wait for another run that holds the output or history folder (`--wait`).
-    pub wait: bool,
-}
-
-/// `axcheck run`.
-pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     let start = Instant::now();
-    let campaign = Campaign::load(path)?;
-    let history = (options.history.map(Path::to_path_buf)).or_else(|| campaign.history.clone());
-    let output = &campaign.info.output;
-    let plan = session::Plan {
-        out: options.out,
-        pdf: !options.no_pdf && output.pdf,
-        html: !options.no_html && output.html,
-        diagnose: output.diagnose && !options.no_diagnose,
-        templates: options.templates,
-        history,
-        horizon: trend_options(options.horizon_years, &campaign)?,
-        wait: options.wait,
-    };
-    let console = Console::new(&campaign, options.progress);
-    let outcome = session::run(&campaign, &plan, &console);
+    let campaign = Campaign::load(&args.campaign)?;
+    let options = run_options(args, &campaign)?;
+    let console = Console::new(&campaign, Progress::of(args.progress));
+    let outcome = session::run(&campaign, &options, &console);
     console.finish();
-    let outcome = outcome?;
+    print_run(&options, outcome?, start)
+}
+
+/// `axcheck check`: the CI gate; writes nothing.
+pub fn check_command(args: &CheckArgs) -> Result<u8> {
+    let campaign = Campaign::load(&args.campaign)?;
+    let options = session::RunOptions {
+        diagnose: args.diagnose,
+        ..session::RunOptions::default()
+    };
+    let console = Console::new(&campaign, Progress::of(args.progress));
+    let outcome = session::run(&campaign, &options, &console);
+    console.finish();
+    let result = outcome?.result;
+    print_check(&result);
+    let code = exit_code(&result);
+    // The process ends with the gate: freeing a fleet's campaign and results one block at
+    // a time cost the gate 6 % of its wall time on 10 000 axes, on one thread after the
+    // workers are done, and the system takes the memory back at once anyway.
+    std::mem::forget((campaign, result));
+    Ok(code)
+}
+
+/// `run`'s flags over the campaign's own settings: `--no-pdf`, `--no-html` and
+/// `--no-diagnose` turn off what `campaign.output` turns on; `--history` and `--horizon`
+/// override `campaign.history` and `campaign.trend_horizon_years`.
+fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session::RunOptions<'a>> {
+    let output = &campaign.info.output;
+    Ok(session::RunOptions {
+        out: Some(&args.out),
+        pdf: !args.no_pdf && output.pdf,
+        html: !args.no_html && output.html,
+        diagnose: output.diagnose && !args.no_diagnose,
+        templates: args.templates.as_deref(),
+        history: (args.history.clone()).or_else(|| campaign.history.clone()),
+        horizon: trend_options(args.horizon_years, campaign)?,
+        wait: args.wait,
+    })
+}
+
+/// What `run` prints after its outputs are written; the exit status.
+fn print_run(
+    options: &session::RunOptions,
+    outcome: session::RunOutcome,
+    start: Instant,
+) -> Result<u8> {
     let result = &outcome.result;
     super::say(&counts_line(result));
     for line in result.caveats() {
@@ -397,11 +376,11 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     for line in super::tables::lines(result) {
         super::say(&line);
     }
-    super::say(&outputs_line(&plan, &outcome, start));
+    super::say(&outputs_line(options, &outcome, start));
     match outcome.appended {
-        Some(Ok(appended)) => super::say(&appended_line(&appended, plan.history.as_deref())),
+        Some(Ok(appended)) => super::say(&appended_line(&appended, options.history.as_deref())),
         Some(Err(e)) => {
-            let dir = plan.history.clone().unwrap_or_default();
+            let dir = options.history.clone().unwrap_or_default();
             return Err(anyhow::Error::new(e).context(format!(
                 "the outputs are written, but the run is not in the history {}",
                 dir.display()
@@ -415,8 +394,26 @@ pub fn run(path: &Path, options: &RunOptions) -> Result<u8> {
     Ok(exit_code(result))
 }
 
+/// What `check` prints: the counts, the caveats, the problems and the warnings.
+fn print_check(result: &CampaignResult) {
+    super::say(&counts_line(result));
+    for line in result.caveats() {
+        super::say(&line);
+    }
+    for line in problems(result, "`axcheck run` lists them all in summary.md") {
+        super::say(&line);
+    }
+    if let Some(line) = warnings_line(result, "`axcheck run` lists them in summary.md") {
+        super::say(&line);
+    }
+}
+
 /// `Outputs in out (36 files) after 0.50 s: summary.md, …`.
-fn outputs_line(plan: &session::Plan, outcome: &session::RunOutcome, start: Instant) -> String {
+fn outputs_line(
+    plan: &session::RunOptions,
+    outcome: &session::RunOutcome,
+    start: Instant,
+) -> String {
     let tables = outcome
         .result
         .tests
@@ -424,7 +421,7 @@ fn outputs_line(plan: &session::Plan, outcome: &session::RunOutcome, start: Inst
         .any(|t| t.evaluated().is_some_and(|e| e.compensation.is_some()));
     format!(
         "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.xlsx, summary.parquet, results.json, junit.xml{}{}{}",
-        plan.out.display(),
+        plan.out.unwrap_or(Path::new("")).display(),
         outcome.written.len(),
         start.elapsed().as_secs_f64(),
         if plan.html { ", summary.html" } else { "" },
@@ -459,13 +456,15 @@ fn appended_line(a: &session::Appended, dir: Option<&Path>) -> String {
 fn trend_options(
     horizon_years: Option<f64>,
     campaign: &Campaign,
-) -> Result<axcheck::trend::fit::Options> {
-    use axcheck::trend::fit::Options;
+) -> Result<axcheck::trend::fit::TrendOptions> {
+    use axcheck::trend::fit::TrendOptions;
     match (horizon_years, campaign.info.trend_horizon_years) {
-        (Some(years), _) => Options::with_horizon(years).map_err(|e| anyhow!("--horizon: {e}")),
+        (Some(years), _) => {
+            TrendOptions::with_horizon(years).map_err(|e| anyhow!("--horizon: {e}"))
+        }
         // Checked when the campaign was loaded.
-        (None, Some(years)) => Ok(Options::with_horizon(years).unwrap_or_default()),
-        (None, None) => Ok(Options::default()),
+        (None, Some(years)) => Ok(TrendOptions::with_horizon(years).unwrap_or_default()),
+        (None, None) => Ok(TrendOptions::default()),
     }
 }
 
@@ -494,31 +493,4 @@ fn flagged_lines(trends: &AxisTrends) -> String {
         );
     }
     text
-}
-
-/// `axcheck check`: the CI gate; writes nothing.
-pub fn check(path: &Path, diagnose: bool, progress: Progress) -> Result<u8> {
-    let options = batch::Options {
-        diagnose,
-        drop_data: true,
-        compensate: false,
-    };
-    let campaign = Campaign::load(path)?;
-    let result = evaluate_with(&campaign, options, progress);
-    super::say(&counts_line(&result));
-    for line in result.caveats() {
-        super::say(&line);
-    }
-    for line in problems(&result, "`axcheck run` lists them all in summary.md") {
-        super::say(&line);
-    }
-    if let Some(line) = warnings_line(&result, "`axcheck run` lists them in summary.md") {
-        super::say(&line);
-    }
-    let code = exit_code(&result);
-    // The process ends with the gate: freeing a fleet's campaign and results one block at
-    // a time cost the gate 6 % of its wall time on 10 000 axes, on one thread after the
-    // workers are done, and the system takes the memory back at once anyway.
-    std::mem::forget((campaign, result));
-    Ok(code)
 }

@@ -142,7 +142,7 @@ pub fn controller(name: &str) -> Result<&'static dyn Controller> {
 
 /// `axcheck compensate`'s arguments.
 #[derive(clap::Args)]
-pub struct Args {
+pub struct CompensateArgs {
     /// Measurement file (any layout `eval` reads).
     file: std::path::PathBuf,
     #[command(flatten)]
@@ -171,7 +171,7 @@ pub struct Args {
 }
 
 /// `axcheck compensate`: reads the file, writes the table; the text to print.
-pub fn command(args: Args) -> Result<String> {
+pub fn command(args: CompensateArgs) -> Result<String> {
     let controller =
         controllers::with_comp_file_type(controller(&args.controller)?, args.comp_file_type)
             .map_err(|e| anyhow!("--comp-file-type: {e}"))?;
@@ -192,7 +192,7 @@ pub fn command(args: Args) -> Result<String> {
 
 /// On an ecmc ISO 230 app file, `--reference 1` to `5` without `--ecmc-reference` may be
 /// meant as the file's reference (`--reference N` was that option's name): say what it is.
-fn reference_note(layout: &axcheck::measurement::Layout, args: &Args) -> Option<String> {
+fn reference_note(layout: &axcheck::measurement::Layout, args: &CompensateArgs) -> Option<String> {
     use axcheck::measurement::Layout;
     let at = args.table.reference?;
     let ecmc = matches!(layout, Layout::EcmcAppReport | Layout::EcmcAppCsv);
@@ -336,7 +336,7 @@ fn summary(measured: &Evaluation, predicted: &Evaluation, data: &AxisData) -> St
         right(&format!("predicted ({unit})"), 17)
     );
     for m in &measured.parameters {
-        let after = predicted.parameter(m.key()).map_or(f64::NAN, |q| q.value);
+        let after = predicted.parameter(m.def.key).map_or(f64::NAN, |q| q.value);
         let _ = writeln!(
             text,
             "{}  {}  {}",

@@ -13,7 +13,7 @@ use std::fmt::Write;
 /// reference point).
 #[derive(clap::Args)]
 #[command(mut_arg(super::ECMC_REFERENCE, |a| a.visible_alias(super::REFERENCE_ALIAS)))]
-pub struct Args {
+pub struct EvalArgs {
     /// Measurement file (long or wide CSV, XLSX workbook, ecmc key=value or report, ecmc
     /// ISO 230 app report or CSV, Renishaw .rtl/.rta; the layout is recognised from the
     /// content).
@@ -58,7 +58,7 @@ struct Applied {
 
 /// `axcheck eval`: the parameters of one file, what it was read as, and the results of
 /// the tool that wrote it beside them; the text to print.
-pub fn run(args: &Args) -> Result<String> {
+pub fn run(args: &EvalArgs) -> Result<String> {
     if args.s_from_ranges && args.standard != StandardId::Gost27843 {
         bail!("--s-from-ranges applies to --standard gost27843 only");
     }
@@ -102,7 +102,7 @@ pub fn run(args: &Args) -> Result<String> {
 
 /// The readings corrected to 20 °C when `--nde` asks (linear axes only), with what was
 /// applied; else the readings as read.
-fn correct(args: &Args, data: AxisData) -> Result<(AxisData, Option<NdeCorrection>)> {
+fn correct(args: &EvalArgs, data: AxisData) -> Result<(AxisData, Option<NdeCorrection>)> {
     let Some(alpha) = args.nde else {
         return Ok((data, None));
     };

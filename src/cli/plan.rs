@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 
 /// What `plan` is asked for.
 #[derive(Debug, clap::Args)]
-pub struct Args {
+pub struct PlanArgs {
     /// The axis's kind: linear or rotary (with --travel).
     #[arg(long, value_parser = parse_kind)]
     kind: Option<AxisKind>,
@@ -145,7 +145,7 @@ fn parse_pair(text: &str, what: &str) -> Result<Vec<f64>> {
 }
 
 /// Runs `plan`: writes what was asked and returns the console's text.
-pub fn run(args: &Args) -> Result<String> {
+pub fn run(args: &PlanArgs) -> Result<String> {
     let made = make(args)?;
     let plan = made.plan;
     let mut text = table(&plan);
@@ -208,7 +208,7 @@ fn written(path: &Path, body: &str, text: &mut String, what: &str) -> Result<()>
 
 /// The program's name: given, else the output file's stem (letters, digits and _ in upper
 /// case), else ISO230 and the axis.
-fn program_name(args: &Args, address: &str) -> String {
+fn program_name(args: &PlanArgs, address: &str) -> String {
     let from_file = args
         .out
         .as_deref()
@@ -228,7 +228,7 @@ fn program_name(args: &Args, address: &str) -> String {
 
 /// The lathe's G-code system when the machine is a lathe (`--lathe`, or a campaign
 /// machine's type); `--gcode-system` only with one.
-fn lathe_of(args: &Args, campaign_lathe: bool) -> Result<Option<GcodeSystem>> {
+fn lathe_of(args: &PlanArgs, campaign_lathe: bool) -> Result<Option<GcodeSystem>> {
     let lathe = args.lathe || campaign_lathe;
     if args.gcode_system.is_some() && !lathe {
         bail!(
@@ -247,7 +247,7 @@ struct Made {
 }
 
 /// The plan asked for, and the axis address for a program.
-fn make(args: &Args) -> Result<Made> {
+fn make(args: &PlanArgs) -> Result<Made> {
     if let Some(path) = &args.from {
         let text = axcheck::files::read_to_string(path)
             .with_context(|| format!("cannot read the plan {}", path.display()))?;
@@ -305,7 +305,7 @@ fn check_target_count(axis: &Axis, motion: &Motion) -> Result<()> {
 }
 
 /// The axis from --kind, --travel, --measurement-travel, --standard, --pitch.
-fn standalone_axis(args: &Args) -> Result<Axis> {
+fn standalone_axis(args: &PlanArgs) -> Result<Axis> {
     let kind = args.kind.ok_or_else(|| {
         anyhow!("give --kind linear|rotary and --travel, or --campaign FILE --machine M --axis A")
     })?;
@@ -332,7 +332,7 @@ fn travel_of(v: &[f64]) -> Result<Travel> {
     }
 }
 
-fn measurement_of(args: &Args) -> Result<Option<[f64; 2]>> {
+fn measurement_of(args: &PlanArgs) -> Result<Option<[f64; 2]>> {
     let Some(text) = &args.measurement_travel else {
         return Ok(None);
     };
@@ -343,7 +343,7 @@ fn measurement_of(args: &Args) -> Result<Option<[f64; 2]>> {
 }
 
 /// The motion from the arguments over `base`.
-fn motion(args: &Args, base: &Motion) -> Motion {
+fn motion(args: &PlanArgs, base: &Motion) -> Motion {
     Motion {
         runs: args.runs.or(base.runs),
         cycle: args.cycle.unwrap_or(base.cycle),
@@ -366,7 +366,7 @@ fn is_lathe(machine_type: Option<&str>) -> bool {
 
 /// The axis `--axis` of machine `--machine` in the campaign, its conditions as the motion's
 /// defaults.
-fn from_campaign(path: &Path, args: &Args) -> Result<CampaignAxis> {
+fn from_campaign(path: &Path, args: &PlanArgs) -> Result<CampaignAxis> {
     let (machine, name) = match (&args.machine, &args.axis) {
         (Some(m), Some(a)) => (m, a),
         _ => bail!("--campaign needs --machine M and --axis A"),

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 /// What `simulate` is asked for.
 #[derive(Debug, clap::Args)]
-pub struct Args {
+pub struct SimulateArgs {
     /// Simulation file: kind, seed, model terms and plan.
     #[arg(required_unless_present = "fleet")]
     model: Option<PathBuf>,
@@ -43,7 +43,7 @@ pub struct Args {
 }
 
 /// Runs `simulate`: writes the fleet or the file, or returns the CSV to print.
-pub fn command(args: &Args) -> Result<Option<String>> {
+pub fn command(args: &SimulateArgs) -> Result<Option<String>> {
     if let (Some(axes), Some(dir)) = (args.fleet, &args.output) {
         fleet(axes, args.seed.unwrap_or(1), dir)?;
         return Ok(None);
@@ -51,7 +51,7 @@ pub fn command(args: &Args) -> Result<Option<String>> {
     let Some(model) = &args.model else {
         bail!("give a simulation file, or --fleet N --out DIR");
     };
-    let active = Active {
+    let active = ActiveRequest {
         table: args.active.as_deref(),
         backlash: args.active_backlash,
         controller: args.controller.as_deref(),
@@ -68,7 +68,7 @@ pub fn command(args: &Args) -> Result<Option<String>> {
 
 /// The compensation active on the simulated machine (`--active`, `--active-backlash`,
 /// `--controller`).
-pub struct Active<'a> {
+pub struct ActiveRequest<'a> {
     pub table: Option<&'a Path>,
     pub backlash: Option<f64>,
     pub controller: Option<&'a str>,
@@ -79,7 +79,7 @@ pub struct Active<'a> {
 pub fn run(
     model: &Path,
     seed: Option<u64>,
-    active: &Active,
+    active: &ActiveRequest,
     plan: Option<&Path>,
 ) -> Result<String> {
     let text = axcheck::files::read_to_string(model)

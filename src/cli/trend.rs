@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 
 /// What `trend` was asked for.
 #[derive(Debug, clap::Args)]
-pub struct Args {
+pub struct TrendArgs {
     /// The history folder (`run --history DIR`).
     dir: PathBuf,
     /// Print JSON (a stable interface): `axes: [{machine, axis, parameter, …}]`.
@@ -31,8 +31,8 @@ pub struct Args {
 const SHOWN: usize = 20;
 
 /// Reads the history, fits every series and returns what to print.
-pub fn run(request: &Args) -> Result<String> {
-    let options = trend::fit::Options::with_horizon(request.horizon_years)
+pub fn run(request: &TrendArgs) -> Result<String> {
+    let options = trend::fit::TrendOptions::with_horizon(request.horizon_years)
         .map_err(|e| anyhow!("--horizon: {e}"))?;
     // The series only, built file by file: the history is never held whole.
     let mut builder = history::SeriesBuilder::default();
@@ -73,7 +73,7 @@ pub fn run(request: &Args) -> Result<String> {
 }
 
 /// `OUT/trends.csv` and `OUT/trends.pdf`.
-fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &Args) -> Result<()> {
+fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &TrendArgs) -> Result<()> {
     let _lock = axcheck::session::lock_folders(out, None, false, &|m| {
         super::tell(&format!("axcheck: {m}"))
     })?;
@@ -91,7 +91,7 @@ fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &Args) -> Res
 }
 
 /// The inspections read, the flagged series with their reasons, and where the table went.
-fn summary(dates: &[chrono::NaiveDate], pairs: &[(&Series, &Trend)], r: &Args) -> String {
+fn summary(dates: &[chrono::NaiveDate], pairs: &[(&Series, &Trend)], r: &TrendArgs) -> String {
     let flagged: Vec<_> = pairs.iter().filter(|(_, t)| t.flagged).collect();
     let mut text = format!(
         "{}: {} inspection dates ({} to {}), {} series; {} flagged (horizon {} years)\n",

@@ -15,7 +15,7 @@ use std::path::PathBuf;
 
 /// What `verify` compares.
 #[derive(Debug, clap::Args)]
-pub struct Args {
+pub struct VerifyArgs {
     /// The measurement before the table was loaded.
     before: PathBuf,
     /// The re-measurement with the table active.
@@ -53,7 +53,7 @@ pub struct Args {
 }
 
 /// Runs the verification; the text or JSON to print and whether the table was effective.
-pub fn run(args: &Args) -> Result<(String, bool)> {
+pub fn run(args: &VerifyArgs) -> Result<(String, bool)> {
     let controller = controller(&args.controller)?;
     let before = measurement::read_file(&args.before, None)?.data;
     let after = measurement::read_file(&args.after, None)?.data;
@@ -78,7 +78,7 @@ pub fn run(args: &Args) -> Result<(String, bool)> {
         .ok_or_else(|| anyhow!("{}: an empty table", args.table.display()))?;
     let others = others(&args.other, controller, kind)?;
     let old = old.total(rule, kind);
-    let input = verify::Input {
+    let input = verify::VerifyInput {
         before: &before,
         after: &after,
         old: old.as_ref(),

@@ -6,7 +6,7 @@ use super::{ExportError, Exporter, OutputFile};
 use crate::results::CampaignResult;
 use std::path::PathBuf;
 
-pub struct Compensation;
+pub struct CompensationExporter;
 
 /// Where each test's table goes (None: no controller, or it refused the table).
 pub fn table_paths(result: &CampaignResult) -> Vec<Option<PathBuf>> {
@@ -24,7 +24,7 @@ pub fn table_paths(result: &CampaignResult) -> Vec<Option<PathBuf>> {
         .collect()
 }
 
-impl Exporter for Compensation {
+impl Exporter for CompensationExporter {
     fn name(&self) -> &'static str {
         "compensation"
     }

@@ -5,9 +5,9 @@ use super::table::{Cell, columns, rows};
 use super::{ExportError, Exporter, OutputFile};
 use crate::results::CampaignResult;
 
-pub struct Csv;
+pub struct CsvExporter;
 
-impl Exporter for Csv {
+impl Exporter for CsvExporter {
     fn name(&self) -> &'static str {
         "csv"
     }

@@ -24,7 +24,7 @@ use crate::units::{AxisKind, Travel};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-pub struct Json;
+pub struct JsonExporter;
 
 /// The JSON of one test.
 #[derive(Serialize)]
@@ -183,7 +183,7 @@ struct CompensationJson<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     file: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    refused: Option<&'a str>,
+    refused: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     predicted: Option<ParameterSet<'a>>,
     /// What the active state leaves unsure (`active_compensation_unknown`, …) and why the
@@ -191,15 +191,15 @@ struct CompensationJson<'a> {
     warnings: &'a [crate::compensate::Warning],
     /// This test as the re-measurement of the table it verifies.
     #[serde(skip_serializing_if = "Option::is_none")]
-    verification: Option<VerificationJson<'a>>,
+    verification: Option<VerificationOutcome<'a>>,
 }
 
 /// A verification, or why it could not be made.
 #[derive(Serialize)]
 #[serde(untagged)]
-enum VerificationJson<'a> {
-    Done(crate::verify::Json<'a>),
-    Failed { error: &'a str },
+enum VerificationOutcome<'a> {
+    Done(crate::verify::VerificationJson<'a>),
+    Failed { error: String },
 }
 
 impl<'a> CompensationJson<'a> {
@@ -213,7 +213,7 @@ impl<'a> CompensationJson<'a> {
             mode: c.mode,
             active_file: c.active_file.as_deref(),
             file: file.map(|p| p.to_string_lossy().replace('\\', "/")),
-            refused: c.outcome.as_ref().err().map(String::as_str),
+            refused: c.outcome.as_ref().err().map(ToString::to_string),
             predicted: c
                 .outcome
                 .as_ref()
@@ -224,8 +224,10 @@ impl<'a> CompensationJson<'a> {
                 .evaluated()
                 .and_then(|e| e.verification.as_deref())
                 .map(|v| match v {
-                    Ok(v) => VerificationJson::Done(v.json()),
-                    Err(e) => VerificationJson::Failed { error: e },
+                    Ok(v) => VerificationOutcome::Done(v.json()),
+                    Err(e) => VerificationOutcome::Failed {
+                        error: e.to_string(),
+                    },
                 }),
         }
     }
@@ -372,7 +374,7 @@ pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Erro
     Ok(out)
 }
 
-impl Exporter for Json {
+impl Exporter for JsonExporter {
     fn name(&self) -> &'static str {
         "json"
     }

@@ -14,7 +14,7 @@ use crate::judge::Verdict;
 use crate::results::{AxisTest, CampaignResult};
 use std::fmt::Write;
 
-pub struct Junit;
+pub struct JunitExporter;
 
 /// What JUnit says of a test no limit was applied to.
 const NOT_JUDGED_MESSAGE: &str =
@@ -26,7 +26,7 @@ pub fn escape(s: &str) -> String {
     crate::safe_text::xml_text(s)
 }
 
-impl Exporter for Junit {
+impl Exporter for JunitExporter {
     fn name(&self) -> &'static str {
         "junit"
     }

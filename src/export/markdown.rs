@@ -8,7 +8,7 @@ use crate::rules::Severity;
 use crate::units::fmt_fixed;
 use std::fmt::Write;
 
-pub struct Markdown;
+pub struct MarkdownExporter;
 
 /// Text from input made safe for a table cell or a line: no HTML, no Markdown syntax, no
 /// hidden characters.
@@ -16,7 +16,7 @@ fn cell(s: &str) -> String {
     crate::safe_text::markdown_text(s)
 }
 
-impl Exporter for Markdown {
+impl Exporter for MarkdownExporter {
     fn name(&self) -> &'static str {
         "markdown"
     }
@@ -104,7 +104,11 @@ fn row(t: &AxisTest) -> String {
 /// The verdict in bold, flagged when its U is large (over half a limit or over the
 /// value): `**pass** (U large: A)`.
 fn verdict_cell(t: &AxisTest) -> String {
-    let large: Vec<String> = t.large_uncertainty().into_iter().map(|l| l.key).collect();
+    let large: Vec<String> = t
+        .large_uncertainty()
+        .into_iter()
+        .map(|l| l.key.to_string())
+        .collect();
     match large.is_empty() {
         true => format!("**{}**", t.verdict()),
         false => format!("**{}** (U large: {})", t.verdict(), cell(&large.join(", "))),

@@ -88,13 +88,13 @@ pub trait Exporter: Sync {
 /// The table and data outputs every `run` writes.
 pub fn table_exporters() -> Vec<Box<dyn Exporter>> {
     vec![
-        Box::new(json::Json),
-        Box::new(csv::Csv),
+        Box::new(json::JsonExporter),
+        Box::new(csv::CsvExporter),
         #[cfg(feature = "parquet")]
-        Box::new(parquet::Parquet),
-        Box::new(markdown::Markdown),
-        Box::new(junit::Junit),
-        Box::new(compensation::Compensation),
+        Box::new(parquet::ParquetExporter),
+        Box::new(markdown::MarkdownExporter),
+        Box::new(junit::JunitExporter),
+        Box::new(compensation::CompensationExporter),
     ]
 }
 

@@ -5,7 +5,7 @@
 //! compensation and the history say. Numbers are kept as numbers (for sorting) with the
 //! text the reports print beside them (2 decimals, as the PDF summary).
 
-use crate::evaluate::Role;
+use crate::evaluate::{ParamKey, Role};
 use crate::history::AxisTrends;
 use crate::judge::Verdict;
 use crate::results::{AxisTest, CampaignResult};
@@ -165,7 +165,7 @@ fn headlines(t: &AxisTest) -> BTreeMap<&'static str, Headline> {
     let Some(e) = t.evaluated().map(|e| &e.evaluation) else {
         return BTreeMap::new();
     };
-    let u_of = |key: &str| {
+    let u_of = |key: ParamKey| {
         t.evaluated()
             .and_then(|e| e.uncertainty.as_ref())
             .and_then(|u| u.expanded_of(key))
@@ -173,7 +173,7 @@ fn headlines(t: &AxisTest) -> BTreeMap<&'static str, Headline> {
     (HEADLINES.iter())
         .filter_map(|&(column, role)| {
             let p = e.headline(role)?;
-            let u = u_of(p.key());
+            let u = u_of(p.def.key);
             Some((
                 column,
                 Headline {
@@ -192,11 +192,11 @@ fn headlines(t: &AxisTest) -> BTreeMap<&'static str, Headline> {
 fn worst(t: &AxisTest) -> Option<Worst> {
     let c = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
     let symbol = (t.evaluated().map(|e| &e.evaluation))
-        .and_then(|e| e.parameter(&c.key))
-        .map_or(c.key.clone(), |p| p.symbol().to_string());
+        .and_then(|e| e.parameter(c.key))
+        .map_or(c.key.to_string(), |p| p.symbol().to_string());
     Some(Worst {
         text: format!("{symbol} {}", fmt_fixed(c.ratio(), 2)),
-        key: c.key.clone(),
+        key: c.key.to_string(),
         symbol,
         ratio: c.ratio(),
     })

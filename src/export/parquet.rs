@@ -6,9 +6,9 @@ use super::{ExportError, Exporter, OutputFile};
 use crate::results::CampaignResult;
 use polars::prelude::*;
 
-pub struct Parquet;
+pub struct ParquetExporter;
 
-impl Exporter for Parquet {
+impl Exporter for ParquetExporter {
     fn name(&self) -> &'static str {
         "parquet"
     }

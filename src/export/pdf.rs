@@ -7,7 +7,7 @@ use crate::results::CampaignResult;
 use std::path::PathBuf;
 use std::sync::Arc;
 
-pub struct Pdf {
+pub struct PdfExporter {
     pub reports: Reports,
     /// The trends of the run's axes over the inspection history, when the run keeps one:
     /// each axis report gets its history section, the summary the flagged series.
@@ -17,7 +17,7 @@ pub struct Pdf {
 /// Reports typeset between two evictions of Typst's caches.
 const REPORTS_PER_EVICTION: usize = 32;
 
-impl Exporter for Pdf {
+impl Exporter for PdfExporter {
     fn name(&self) -> &'static str {
         "pdf"
     }

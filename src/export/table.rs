@@ -1,7 +1,7 @@
 //! The summary table shared by the CSV, parquet and Markdown outputs: one row per axis
 //! test, a fixed set of columns.
 
-use crate::evaluate::catalogue;
+use crate::evaluate::{ParamKey, catalogue};
 use crate::results::{AxisTest, CampaignResult};
 
 /// A cell of the table.
@@ -114,14 +114,16 @@ fn row(t: &AxisTest) -> Vec<Cell> {
         Cell::text(t.verdict().name()),
     ];
     for p in catalogue::summary_keys() {
-        cells.push(Cell::opt_number(e.and_then(|e| e.value(p))));
+        cells.push(Cell::opt_number(
+            e.and_then(|e| e.value(ParamKey::parse(p)?)),
+        ));
     }
-    cells.push(Cell::opt_text(worst.map(|c| c.key.clone())));
+    cells.push(Cell::opt_text(worst.map(|c| c.key.to_string())));
     cells.push(Cell::opt_number(worst.map(|c| c.ratio())));
     let failed: Vec<String> = ev
         .and_then(|e| e.judgement.as_ref())
         .into_iter()
-        .flat_map(|j| j.failed().map(|c| c.key.clone()))
+        .flat_map(|j| j.failed().map(|c| c.key.to_string()))
         .collect();
     cells.push(Cell::text(failed.join(" ")));
     let rules: Vec<&str> = t.findings().iter().map(|f| f.id).collect();

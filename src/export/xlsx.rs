@@ -23,12 +23,12 @@ use rust_xlsxwriter::{
 };
 use std::sync::Arc;
 
-pub struct Xlsx {
+pub struct XlsxExporter {
     /// The trends of the run's axes, when the run keeps a history.
     pub trends: Option<Arc<AxisTrends>>,
 }
 
-impl Exporter for Xlsx {
+impl Exporter for XlsxExporter {
     fn name(&self) -> &'static str {
         "xlsx"
     }

@@ -12,13 +12,13 @@ pub type AxisKey = (String, Option<String>, String);
 /// Every series of the run's axes with its trend, by axis.
 #[derive(Debug, Default)]
 pub struct AxisTrends {
-    pub options: trend::Options,
+    pub options: trend::TrendOptions,
     by_axis: BTreeMap<AxisKey, Vec<(Series, Trend)>>,
 }
 
 impl AxisTrends {
     /// The series in `history` of the axes that have rows in `run`, fitted with `options`.
-    pub fn of_run(history: &[Record], run: &[Record], options: trend::Options) -> AxisTrends {
+    pub fn of_run(history: &[Record], run: &[Record], options: trend::TrendOptions) -> AxisTrends {
         let wanted: BTreeSet<AxisKey> = run.iter().map(key).collect();
         let mut builder = super::SeriesBuilder::default();
         builder.add(history.iter().filter(|r| wanted.contains(&key(r))).cloned());
@@ -31,7 +31,7 @@ impl AxisTrends {
     pub fn of_history(
         dir: &std::path::Path,
         run: &[Record],
-        options: trend::Options,
+        options: trend::TrendOptions,
     ) -> Result<AxisTrends, super::HistoryError> {
         let wanted: BTreeSet<AxisKey> = run.iter().map(key).collect();
         let mut builder = super::SeriesBuilder::default();
@@ -42,7 +42,7 @@ impl AxisTrends {
     }
 
     /// The series fitted, by axis.
-    fn fitted(series: Vec<Series>, options: trend::Options) -> AxisTrends {
+    fn fitted(series: Vec<Series>, options: trend::TrendOptions) -> AxisTrends {
         let fitted: Vec<(Series, Trend)> = series
             .into_par_iter()
             .map(|s| {

@@ -1,6 +1,6 @@
 //! A run's results as history rows: one per evaluated parameter of each axis test.
 
-use super::record::Text;
+use super::record::SharedText;
 use super::{HistoryError, Record, SCHEMA_VERSION};
 use crate::campaign::CampaignInfo;
 use crate::results::{AxisTest, CampaignResult};
@@ -56,7 +56,7 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
         .map(|d| d.effects_label())
         .unwrap_or_default();
     // One copy of each text for the test's rows.
-    let text = |s: &str| -> Text { s.into() };
+    let text = |s: &str| -> SharedText { s.into() };
     let (campaign, machine, axis) = (text(campaign), text(&t.machine.id), text(&t.axis));
     let serial = t.machine.serial.as_deref().map(text);
     let (kind_text, standard_key) = (text(&kind.to_string()), text(standard.key()));
@@ -93,7 +93,7 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
                 uncertainty: t
                     .evaluated()
                     .and_then(|e| e.uncertainty.as_ref())
-                    .and_then(|u| u.expanded_of(key)),
+                    .and_then(|u| u.expanded_of(p.def.key)),
                 effects: effects.clone(),
             }
         })

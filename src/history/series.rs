@@ -1,13 +1,13 @@
 //! History rows regrouped as trend series: one per machine, serial, axis and parameter.
 
 use super::Record;
-use super::record::Text;
-use crate::trend::{Point, Series};
+use super::record::SharedText;
+use crate::trend::{Inspection, Series};
 use chrono::NaiveDate;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Machine id, serial, axis, parameter: a series (a new serial number starts a new one).
-type Key = (Text, Option<Text>, Text, Text);
+type Key = (SharedText, Option<SharedText>, SharedText, SharedText);
 
 /// What a point needs of one row: the rows of one inspection date are averaged over the
 /// axis's first test, in the order of their campaigns' names. Texts are numbers into the
@@ -39,12 +39,12 @@ pub struct SeriesBuilder {
 /// Texts by number (few distinct ones: the campaigns, the units).
 #[derive(Default)]
 struct Interned {
-    numbers: BTreeMap<Text, u32>,
-    texts: Vec<Text>,
+    numbers: BTreeMap<SharedText, u32>,
+    texts: Vec<SharedText>,
 }
 
 impl Interned {
-    fn number(&mut self, text: Text) -> u32 {
+    fn number(&mut self, text: SharedText) -> u32 {
         if let Some(&k) = self.numbers.get(&text) {
             return k;
         }
@@ -133,7 +133,7 @@ fn series_of(rows: &[Row], key: Key, campaigns: &Interned, units: &Interned) -> 
             .unwrap_or_default(),
         limit: latest.and_then(|rows| rows.iter().find_map(|r| r.limit)),
         points: (inspections.iter())
-            .map(|(date, rows)| Point {
+            .map(|(date, rows)| Inspection {
                 date: *date,
                 value: rows.iter().map(|r| r.value).sum::<f64>() / rows.len() as f64,
             })

@@ -1,7 +1,7 @@
 //! The history's Parquet files: written atomically through polars, one per campaign run,
 //! and read back with their schema checked.
 
-use super::record::Text;
+use super::record::SharedText;
 use super::{HistoryError, Record, SCHEMA_VERSION};
 use chrono::{Datelike, NaiveDate};
 use polars::prelude::*;
@@ -282,11 +282,11 @@ impl Columns<'_> {
         }
     }
 
-    /// A text column, each distinct value held once (see [`Text`]).
-    fn strings(&self, name: &'static str) -> Result<Vec<Option<Text>>, HistoryError> {
+    /// A text column, each distinct value held once (see [`SharedText`]).
+    fn strings(&self, name: &'static str) -> Result<Vec<Option<SharedText>>, HistoryError> {
         let column = self.column(name, DataType::String, "text (string)")?;
         let ca = column.str().map_err(|e| self.polars(e))?;
-        let mut seen: std::collections::HashMap<&str, Text> = Default::default();
+        let mut seen: std::collections::HashMap<&str, SharedText> = Default::default();
         let texts = ca
             .iter()
             .map(|value| value.map(|s| seen.entry(s).or_insert_with(|| s.into()).clone()));

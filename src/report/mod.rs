@@ -411,8 +411,8 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
                 parameter: t
                     .evaluated()
                     .map(|e| &e.evaluation)
-                    .and_then(|e| e.parameter(&worst.key))
-                    .map_or(worst.key.clone(), |p| p.symbol().to_string()),
+                    .and_then(|e| e.parameter(worst.key))
+                    .map_or(worst.key.to_string(), |p| p.symbol().to_string()),
                 ratio: worst.ratio(),
                 verdict: t.verdict(),
             })

@@ -40,7 +40,7 @@ pub enum AppendError {
 pub(super) fn append(
     result: &CampaignResult,
     dir: &Path,
-    horizon: crate::trend::fit::Options,
+    horizon: crate::trend::fit::TrendOptions,
 ) -> Result<Appended, AppendError> {
     let start = Instant::now();
     let records = crate::history::records(result).map_err(AppendError::Records)?;

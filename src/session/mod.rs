@@ -20,9 +20,13 @@ use crate::results::{AxisTest, CampaignResult};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-/// What one run does.
-pub struct Plan<'a> {
-    pub out: &'a Path,
+/// What one run of a campaign does: the one options type of `run` and `check`, built by
+/// the command line from its flags and the campaign's own `output` settings.
+#[derive(Debug, Clone, Default)]
+pub struct RunOptions<'a> {
+    /// The output folder; `None`: the CI gate (`check`), which writes nothing, keeps no
+    /// history and drops each test's readings once it is judged.
+    pub out: Option<&'a Path>,
     /// The axis reports and the summary PDF.
     pub pdf: bool,
     /// `summary.html`.
@@ -33,7 +37,7 @@ pub struct Plan<'a> {
     pub templates: Option<&'a Path>,
     /// The inspection history to append to.
     pub history: Option<PathBuf>,
-    pub horizon: crate::trend::fit::Options,
+    pub horizon: crate::trend::fit::TrendOptions,
     /// Wait for another run that holds the output or history folder.
     pub wait: bool,
 }
@@ -77,13 +81,42 @@ pub enum SessionError {
     },
 }
 
-/// Runs `campaign` by `plan`.
+/// Runs `campaign` as `options` say: the CI gate, or a run that writes its outputs.
 pub fn run(
     campaign: &Campaign,
-    plan: &Plan,
+    options: &RunOptions,
     observer: &dyn Observer,
 ) -> Result<RunOutcome, SessionError> {
-    let out = plan.out;
+    match options.out {
+        None => Ok(gate(campaign, options, observer)),
+        Some(out) => write_run(campaign, options, out, observer),
+    }
+}
+
+/// The CI gate: every axis evaluated and judged, nothing written. Without compensation
+/// tables (the gate writes none) and with U only where ISO 14253-1 decides.
+fn gate(campaign: &Campaign, options: &RunOptions, observer: &dyn Observer) -> RunOutcome {
+    let batch_options = batch::BatchOptions {
+        diagnose: options.diagnose,
+        drop_data: true,
+        compensate: false,
+    };
+    let result = batch::run(campaign, batch_options, &|t| observer.test_done(t));
+    RunOutcome {
+        result,
+        written: Vec::new(),
+        appended: None,
+        trends: None,
+    }
+}
+
+/// A run that writes its outputs to `out`.
+fn write_run(
+    campaign: &Campaign,
+    plan: &RunOptions,
+    out: &Path,
+    observer: &dyn Observer,
+) -> Result<RunOutcome, SessionError> {
     check_output_dir(campaign, out)?;
     if let Some(history) = plan.history.as_deref() {
         // Before the evaluation: a history needs the run's date and a file name the file
@@ -104,7 +137,7 @@ pub fn run(
         true => Some(crate::report::Reports::new(plan.templates)?),
         false => None,
     };
-    let options = batch::Options {
+    let options = batch::BatchOptions {
         diagnose: plan.diagnose,
         drop_data: false,
         compensate: true,
@@ -133,22 +166,22 @@ pub fn run(
 
 /// The run's exporters: the tables, the workbook, then the page and the PDFs when asked.
 fn exporters(
-    plan: &Plan,
+    plan: &RunOptions,
     reports: Option<crate::report::Reports>,
     trends: Option<&Arc<AxisTrends>>,
 ) -> Vec<Box<dyn export::Exporter>> {
     let mut exporters = export::table_exporters();
-    exporters.push(Box::new(export::xlsx::Xlsx {
+    exporters.push(Box::new(export::xlsx::XlsxExporter {
         trends: trends.cloned(),
     }));
     if plan.html {
-        exporters.push(Box::new(export::html::Html {
+        exporters.push(Box::new(export::html::HtmlExporter {
             reports: reports.is_some(),
             trends: trends.cloned(),
         }));
     }
     if let Some(reports) = reports {
-        exporters.push(Box::new(export::pdf::Pdf {
+        exporters.push(Box::new(export::pdf::PdfExporter {
             reports,
             trends: trends.cloned(),
         }));

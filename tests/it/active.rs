@@ -203,6 +203,8 @@ fn the_stated_state_is_checked_where_it_is_written() {
         .unwrap();
         let campaign = Campaign::load(&path).unwrap();
         let error = campaign.machines[0].axes[0].spec.as_ref().unwrap_err();
+        assert_eq!(error.line, 6, "{error}");
+        let error = error.to_string();
         assert!(error.contains(message), "{compensation}: {error}");
         assert!(error.contains(":6:"), "{error}");
     }
@@ -289,7 +291,9 @@ fn the_example_plant_builds_on_its_active_tables_and_verifies_two() {
         .as_ref()
         .unwrap_err();
     assert!(
-        refused.contains("found it made_worse (sign_inverted)"),
+        refused
+            .reason
+            .contains("found it made_worse (sign_inverted)"),
         "{refused}"
     );
 }

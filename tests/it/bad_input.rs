@@ -345,7 +345,7 @@ fn axis_error(entry: &str) -> String {
     let campaign = axcheck::campaign::Campaign::parse(&text, std::path::Path::new("c.yaml"))
         .unwrap_or_else(|e| panic!("{entry}: {e}"));
     let (_, axis) = campaign.axes().next().unwrap();
-    axis.spec.clone().expect_err(entry)
+    axis.spec.clone().expect_err(entry).to_string()
 }
 
 /// Axis values of the wrong shape: each says what was expected and what the file has,
@@ -509,7 +509,7 @@ fn campaign_machine_errors_in_the_users_words() {
         axcheck::campaign::Campaign::parse(text, std::path::Path::new("c.yaml")).unwrap();
     let (_, axis) = campaign.axes().next().unwrap();
     assert_eq!(
-        axis.spec.as_ref().unwrap_err(),
+        axis.spec.as_ref().unwrap_err().to_string(),
         "c.yaml:3:19: machines[0].axes: expected a list of axes, got the number 5"
     );
 }

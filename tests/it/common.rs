@@ -51,7 +51,7 @@ pub fn scratch(name: &str) -> PathBuf {
 /// verifications, readings kept), with or without the diagnosis, on two workers.
 pub fn run_campaign(path: &std::path::Path, diagnose: bool) -> axcheck::results::CampaignResult {
     let campaign = axcheck::campaign::Campaign::load(path).unwrap();
-    let options = axcheck::batch::Options {
+    let options = axcheck::batch::BatchOptions {
         diagnose,
         drop_data: false,
         compensate: true,

@@ -3,6 +3,7 @@
 
 use crate::common::{axcheck, scratch};
 use axcheck::compensate::{self, Table};
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::{self, StandardId};
 use axcheck::simulate::Simulation;
 use axcheck::simulate::SimulationFile as _;
@@ -42,7 +43,7 @@ fn read_back(text: &str) -> Table {
 fn the_table_read_back_cancels_a_known_error_as_predicted() {
     let data = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(3);
     let measured = evaluate::evaluate(&data, StandardId::Iso230_2);
-    let e = measured.parameter("E").unwrap().value;
+    let e = measured.parameter(ParamKey::E).unwrap().value;
     assert!(e > 10.0, "the error is there to cancel: E = {e}");
     for interval in [None, Some(50.0)] {
         let settings = compensate::Settings {
@@ -61,7 +62,7 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
         let file = csv.write(&table, &[]).unwrap();
         let back = read_back(&file);
         let after = evaluate::evaluate(&compensate::apply(&back, &data), StandardId::Iso230_2);
-        let e_after = after.parameter("E").unwrap().value;
+        let e_after = after.parameter(ParamKey::E).unwrap().value;
         assert!(e_after < e / 4.0, "{interval:?}: E {e} -> {e_after}");
         // The prediction is what the file does (to its 4 decimals).
         let diagnosis = axcheck::diagnose::diagnose(&data, &Default::default());
@@ -69,7 +70,7 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
             compensate::compensation(csv, &data, StandardId::Iso230_2, &settings, &diagnosis);
         let predicted = compensation.outcome.unwrap().predicted;
         for p in &after.parameters {
-            let q = predicted.parameter(p.key()).unwrap().value;
+            let q = predicted.parameter(p.def.key).unwrap().value;
             assert!(
                 (p.value - q).abs() < 1e-3,
                 "{interval:?} {}: {} vs {q}",
@@ -78,7 +79,7 @@ fn the_table_read_back_cancels_a_known_error_as_predicted() {
             );
         }
         // The repeatability is the floor: a table leaves R as it was.
-        let r = |e: &evaluate::Evaluation| e.parameter("R_up").unwrap().value;
+        let r = |e: &evaluate::Evaluation| e.parameter(ParamKey::RUp).unwrap().value;
         assert!((r(&after) - r(&measured)).abs() < 1e-9);
     }
 }

@@ -4,6 +4,7 @@
 
 use axcheck::compensate::controllers::{CONTROLLERS, Controller, ReadAs, Refused, Spacing};
 use axcheck::compensate::{self, Active, Settings, Table};
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::measurement::{AxisData, RawReading};
 use axcheck::simulate::Simulation;
@@ -259,7 +260,7 @@ fn a_table_built_on_the_active_one_is_the_table_measured_without_it() {
     let plain = Simulation::from_yaml(AXIS, "axis.yaml").unwrap().run(11);
     let other = Simulation::from_yaml(ACTIVE, "active.yaml").unwrap().run(5);
     let e_plain = evaluate(&plain, StandardId::Iso230_2)
-        .parameter("E")
+        .parameter(ParamKey::E)
         .unwrap()
         .value;
     assert!(e_plain > 30.0, "E = {e_plain}");
@@ -294,7 +295,7 @@ fn a_table_built_on_the_active_one_is_the_table_measured_without_it() {
         );
         let after = compensate::apply_change(&built, Some(&total), &with_active);
         let e_after = evaluate(&after, StandardId::Iso230_2)
-            .parameter("E")
+            .parameter(ParamKey::E)
             .unwrap()
             .value;
         assert!(e_after < e_plain / 4.0, "{name}: E {e_plain} -> {e_after}");

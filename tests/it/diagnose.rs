@@ -15,7 +15,7 @@ use axcheck::measurement::AxisData;
 use axcheck::simulate::SimulationFile as _;
 use axcheck::simulate::rng::Rng;
 use axcheck::simulate::{
-    Cycle, ErrorModel, Outlier, PeriodicTerm, Simulation, TargetSpacing, TestPlan,
+    Cycle, ErrorModel, PeriodicTerm, PlantedOutlier, Simulation, TargetSpacing, TestPlan,
 };
 use axcheck::units::{AxisKind, Direction};
 use rayon::prelude::*;
@@ -364,7 +364,7 @@ fn outlier_case(seed: u64) -> Case {
         Direction::Down
     };
     let target = 1 + (rng.uniform() * count as f64) as usize;
-    model.outliers = vec![Outlier {
+    model.outliers = vec![PlantedOutlier {
         run,
         direction,
         target,

@@ -1,6 +1,7 @@
 //! GOST 27843-88: the worked example of the appendix (restored data, see tests/data).
 
 use crate::common::{assert_close, load};
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::gost27843::{Gost27843, SMethod};
 use axcheck::evaluate::{Standard, StandardId, evaluate};
 
@@ -19,11 +20,19 @@ fn axis_parameters() {
         ("B_max", 4.480, 4.48),
         ("B_mean", -1.529, -1.53), // printed 1.53 without its sign
     ] {
-        let got = e.value(key).unwrap_or_else(|| panic!("{key} missing"));
+        let got = e
+            .value(ParamKey::parse(key).unwrap())
+            .unwrap_or_else(|| panic!("{key} missing"));
         assert_close(&format!("{key} exact"), got, exact, 0.001);
         assert_close(&format!("{key} printed"), got, printed, 0.03);
     }
-    let at = |key: &str| e.parameter(key).unwrap().at_target.unwrap() + 1;
+    let at = |key: &str| {
+        e.parameter(ParamKey::parse(key).unwrap())
+            .unwrap()
+            .at_target
+            .unwrap()
+            + 1
+    };
     assert_eq!(at("R_max"), 11);
     assert_eq!(at("R_up"), 10);
     assert_eq!(at("R_down"), 10);
@@ -35,8 +44,8 @@ fn axis_parameters() {
         .map(|t| t.up.repeatability.unwrap() + t.down.repeatability.unwrap())
         .sum::<f64>()
         / 22.0;
-    assert_close("R̄", e.value("R_mean").unwrap(), r_mean, 1e-12);
-    assert!(e.value("E").is_none(), "E is ISO's, not GOST's");
+    assert_close("R̄", e.value(ParamKey::RMean).unwrap(), r_mean, 1e-12);
+    assert!(e.value(ParamKey::E).is_none(), "E is ISO's, not GOST's");
 }
 
 /// Printed rows (↑, ↓) per position: 3S, X̄ + 3S, X̄ − 3S.

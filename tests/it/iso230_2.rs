@@ -1,6 +1,7 @@
 //! ISO 230-2:1997 Table 2 (GB/T 17421.2-2000): the worked example.
 
 use crate::common::{assert_close, load};
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::units::Direction::{Down, Up};
 
@@ -27,7 +28,9 @@ fn axis_parameters_equal_exact_arithmetic_and_the_print() {
         assert_eq!(e.n, 5);
         assert_eq!(e.targets.len(), 11);
         for &(key, exact, printed) in AXIS {
-            let got = e.value(key).unwrap_or_else(|| panic!("{key} missing"));
+            let got = e
+                .value(ParamKey::parse(key).unwrap())
+                .unwrap_or_else(|| panic!("{key} missing"));
             assert_close(&format!("{key} exact"), got, exact, 0.001);
             // The printed Table 2 lists R_10↓ = 2.3 where its own data give 4 × 0.682 =
             // 2.73, so its R↓ (2.5 at i = 11) is 0.23 off: an erratum of the print.
@@ -42,7 +45,13 @@ fn axis_parameters_equal_exact_arithmetic_and_the_print() {
 #[test]
 fn target_of_each_maximum() {
     let e = evaluate(&load("iso230-2_table2.csv"), StandardId::Iso230_2);
-    let at = |key: &str| e.parameter(key).unwrap().at_target.unwrap() + 1;
+    let at = |key: &str| {
+        e.parameter(ParamKey::parse(key).unwrap())
+            .unwrap()
+            .at_target
+            .unwrap()
+            + 1
+    };
     assert_eq!(at("R"), 9, "printed: R at i = 9");
     assert_eq!(at("R_up"), 10, "printed: R↑ at i = 10");
     assert_eq!(at("B"), 2, "printed: B at i = 2");
@@ -57,7 +66,12 @@ fn target_of_each_maximum() {
 fn spans_as_printed() {
     // Table 2 prints A = 0.0040 − (−0.0055), E↑ = −0.0004 − (−0.0043), M = 0.0015 − (−0.0025).
     let e = evaluate(&load("iso230-2_table2.csv"), StandardId::Iso230_2);
-    let span = |k: &str| e.parameter(k).unwrap().span.unwrap();
+    let span = |k: &str| {
+        e.parameter(ParamKey::parse(k).unwrap())
+            .unwrap()
+            .span
+            .unwrap()
+    };
     for (key, hi, lo) in [
         ("A", 4.0, -5.5),
         ("A_up", 0.5, -5.5),

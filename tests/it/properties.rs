@@ -1,4 +1,5 @@
 //! Invariants of the ISO 230-2 and GOST 27843 parameters on random data.
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::{Evaluation, StandardId, evaluate};
 use axcheck::measurement::{AxisData, RawReading};
 use axcheck::units::{AxisKind, Direction};
@@ -87,7 +88,7 @@ proptest! {
         let a = iso(&t, |_, d, j, v| (d, j, v));
         let b = iso(&t, |_, d, j, v| (d, j, v + c));
         for key in SHAPE.iter().chain(&["B", "B_mean"]) {
-            prop_assert!(close(a.value(key).unwrap(), b.value(key).unwrap()), "{key}");
+            prop_assert!(close(a.value(ParamKey::parse(key).unwrap()).unwrap(), b.value(ParamKey::parse(key).unwrap()).unwrap()), "{key}");
         }
     }
 
@@ -96,9 +97,9 @@ proptest! {
         let a = iso(&t, |_, d, j, v| (d, j, v));
         let b = iso(&t, |_, d, j, v| (d, j, k * v));
         for key in SHAPE.iter().chain(&["B"]) {
-            prop_assert!(close(b.value(key).unwrap(), k.abs() * a.value(key).unwrap()), "{key}");
+            prop_assert!(close(b.value(ParamKey::parse(key).unwrap()).unwrap(), k.abs() * a.value(ParamKey::parse(key).unwrap()).unwrap()), "{key}");
         }
-        prop_assert!(close(b.value("B_mean").unwrap(), k * a.value("B_mean").unwrap()));
+        prop_assert!(close(b.value(ParamKey::BMean).unwrap(), k * a.value(ParamKey::BMean).unwrap()));
     }
 
     #[test]
@@ -111,7 +112,7 @@ proptest! {
             (d, (j + shift) % n, v)
         });
         for p in &a.parameters {
-            prop_assert!(close(p.value, b.value(p.key()).unwrap()), "{}", p.key());
+            prop_assert!(close(p.value, b.value(p.def.key).unwrap()), "{}", p.key());
         }
     }
 
@@ -120,19 +121,19 @@ proptest! {
         let a = iso(&t, |_, d, j, v| (d, j, v));
         let b = iso(&t, |_, d, j, v| (d.opposite(), j, v));
         for (x, y) in [("A_up", "A_down"), ("E_up", "E_down"), ("R_up", "R_down")] {
-            prop_assert!(close(a.value(x).unwrap(), b.value(y).unwrap()), "{x}");
-            prop_assert!(close(a.value(y).unwrap(), b.value(x).unwrap()), "{y}");
+            prop_assert!(close(a.value(ParamKey::parse(x).unwrap()).unwrap(), b.value(ParamKey::parse(y).unwrap()).unwrap()), "{x}");
+            prop_assert!(close(a.value(ParamKey::parse(y).unwrap()).unwrap(), b.value(ParamKey::parse(x).unwrap()).unwrap()), "{y}");
         }
         for key in ["A", "E", "M", "R", "B"] {
-            prop_assert!(close(a.value(key).unwrap(), b.value(key).unwrap()), "{key}");
+            prop_assert!(close(a.value(ParamKey::parse(key).unwrap()).unwrap(), b.value(ParamKey::parse(key).unwrap()).unwrap()), "{key}");
         }
-        prop_assert!(close(a.value("B_mean").unwrap(), -b.value("B_mean").unwrap()));
+        prop_assert!(close(a.value(ParamKey::BMean).unwrap(), -b.value(ParamKey::BMean).unwrap()));
     }
 
     #[test]
     fn orderings_between_parameters(t in test_strategy()) {
         let e = iso(&t, |_, d, j, v| (d, j, v));
-        let v = |k: &str| e.value(k).unwrap();
+        let v = |k: &str| e.value(ParamKey::parse(k).unwrap()).unwrap();
         prop_assert!(v("A") >= v("A_up").max(v("A_down")));
         prop_assert!(v("A_up").min(v("A_down")) >= 0.0);
         prop_assert!(v("E") >= v("E_up").max(v("E_down")));
@@ -140,7 +141,7 @@ proptest! {
         prop_assert!(v("R") >= v("R_up").max(v("R_down")));
         prop_assert!(v("B") >= v("B_mean").abs() - 1e-12);
         let g = evaluate(&build(&t, |_, d, j, v| (d, j, v)), StandardId::Gost27843);
-        let w = |k: &str| g.value(k).unwrap();
+        let w = |k: &str| g.value(ParamKey::parse(k).unwrap()).unwrap();
         prop_assert!(w("A") >= w("A_up").max(w("A_down")));
         prop_assert!(w("R_max") >= w("R_up").max(w("R_down")));
         prop_assert!(w("B_max") >= w("B_mean").abs() - 1e-12);

@@ -1,4 +1,5 @@
 //! The simulator reproduces its own parameters, and its files read back exactly.
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::measurement::{self, csv};
 use axcheck::simulate::SimulationFile as _;
@@ -49,7 +50,8 @@ fn recovers_reversal_and_scatter_within_statistical_bounds() {
         let e = evaluate(&data, StandardId::Iso230_2);
         let (m, n) = (data.target_count() as f64, data.runs() as f64);
         // B̄: mean of m differences of two means of n → variance 2σ²/(n m).
-        let zb = (e.value("B_mean").unwrap() - reversal) / (scatter * (2.0 / (n * m)).sqrt());
+        let zb =
+            (e.value(ParamKey::BMean).unwrap() - reversal) / (scatter * (2.0 / (n * m)).sqrt());
         // Pooled S over 2m cells with n − 1 degrees of freedom each.
         let pooled = (e
             .targets
@@ -68,7 +70,7 @@ fn recovers_reversal_and_scatter_within_statistical_bounds() {
         within_2 += usize::from(zb.abs() < 2.0) + usize::from(zs.abs() < 2.0);
         // The scale error shows as the slope of X̄i: E grows with it.
         let slope_um = scale * 1.19;
-        assert!(e.value("E").unwrap() >= slope_um.abs() - 2.0 * scatter - reversal.abs());
+        assert!(e.value(ParamKey::E).unwrap() >= slope_um.abs() - 2.0 * scatter - reversal.abs());
     }
     let k = seeds as f64;
     assert!((zb_sum / k).abs() < 0.6, "B̄ biased: mean z {}", zb_sum / k);
@@ -136,5 +138,5 @@ fn example_model_files_parse() {
         vec![0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0]
     );
     let e = evaluate(&d, StandardId::Iso230_2);
-    assert!((e.value("B_mean").unwrap() - 6.0).abs() < 1.5);
+    assert!((e.value(ParamKey::BMean).unwrap() - 6.0).abs() < 1.5);
 }

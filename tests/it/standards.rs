@@ -1,6 +1,7 @@
 //! VDI 3441, NMTBA, and what applies when n = 1 (ISO 230-2 clause 5.2).
 
 use crate::common::assert_close;
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::measurement::{AxisData, RawReading};
 use axcheck::units::{AxisKind, Direction};
@@ -44,13 +45,13 @@ fn vdi3441_reproduces_the_papers_figure_2() {
         ],
     );
     let e = evaluate(&data, StandardId::Vdi3441);
-    assert_close("X̄max", e.value("X_max").unwrap(), 5.3, 1e-9);
-    assert_close("X̄min", e.value("X_min").unwrap(), -0.2, 1e-9);
-    assert_close("Ā", e.value("A_mean").unwrap(), 2.55, 1e-9);
-    assert_close("T", e.value("T").unwrap(), 11.3, 1e-9);
-    assert_close("Rp", e.value("R_p").unwrap(), 5.8, 1e-9);
-    assert_close("G_o", e.value("G_upper").unwrap(), 2.55 + 5.65, 1e-9);
-    assert_close("G_u", e.value("G_lower").unwrap(), 2.55 - 5.65, 1e-9);
+    assert_close("X̄max", e.value(ParamKey::XMax).unwrap(), 5.3, 1e-9);
+    assert_close("X̄min", e.value(ParamKey::XMin).unwrap(), -0.2, 1e-9);
+    assert_close("Ā", e.value(ParamKey::AMean).unwrap(), 2.55, 1e-9);
+    assert_close("T", e.value(ParamKey::T).unwrap(), 11.3, 1e-9);
+    assert_close("Rp", e.value(ParamKey::Rp).unwrap(), 5.8, 1e-9);
+    assert_close("G_o", e.value(ParamKey::GUpper).unwrap(), 2.55 + 5.65, 1e-9);
+    assert_close("G_u", e.value(ParamKey::GLower).unwrap(), 2.55 - 5.65, 1e-9);
     assert_close("σ_i", e.targets[0].up.s.unwrap(), w / 2.33, 1e-12);
 }
 
@@ -65,18 +66,28 @@ fn nmtba_zero_line_accuracy_and_lost_motion() {
     );
     let e = evaluate(&data, StandardId::Nmtba);
     let sigma_b = (8.0f64 / 3.0).sqrt();
-    assert_close("zero", e.value("zero").unwrap(), 0.5, 1e-12);
-    assert_close("A_b", e.value("A").unwrap(), 0.5 + 3.0 * sigma_b, 1e-12);
+    assert_close("zero", e.value(ParamKey::Zero).unwrap(), 0.5, 1e-12);
+    assert_close(
+        "A_b",
+        e.value(ParamKey::A).unwrap(),
+        0.5 + 3.0 * sigma_b,
+        1e-12,
+    );
     assert_close(
         "A_u↑",
-        e.value("A_up").unwrap(),
+        e.value(ParamKey::AUp).unwrap(),
         1.0 + 3.0 * 2f64.sqrt(),
         1e-12,
     );
-    assert_close("A_u↓", e.value("A_down").unwrap(), 3.0 * 2f64.sqrt(), 1e-12);
-    assert_close("L_max", e.value("L_max").unwrap(), 2.0, 1e-12);
-    assert_eq!(e.parameter("L_max").unwrap().at_target, Some(0));
-    assert_close("L̄", e.value("L_mean").unwrap(), 1.0, 1e-12);
+    assert_close(
+        "A_u↓",
+        e.value(ParamKey::ADown).unwrap(),
+        3.0 * 2f64.sqrt(),
+        1e-12,
+    );
+    assert_close("L_max", e.value(ParamKey::LMax).unwrap(), 2.0, 1e-12);
+    assert_eq!(e.parameter(ParamKey::LMax).unwrap().at_target, Some(0));
+    assert_close("L̄", e.value(ParamKey::LMean).unwrap(), 1.0, 1e-12);
 }
 
 fn n_equals_one() -> AxisData {
@@ -97,14 +108,14 @@ fn n_equals_one_keeps_only_clause_5_2_parameters() {
         let e = evaluate(&data, standard);
         let keys: Vec<&str> = e.parameters.iter().map(|p| p.key()).collect();
         assert_eq!(keys, vec!["E", "E_up", "E_down", "M", "B", "B_mean"]);
-        assert_close("E", e.value("E").unwrap(), 7.0, 1e-12);
-        assert_close("E↑", e.value("E_up").unwrap(), 7.0, 1e-12);
-        assert_close("E↓", e.value("E_down").unwrap(), 2.5, 1e-12);
-        assert_close("M", e.value("M").unwrap(), 2.25 - (-2.0), 1e-12);
-        assert_close("B", e.value("B").unwrap(), 3.5, 1e-12);
+        assert_close("E", e.value(ParamKey::E).unwrap(), 7.0, 1e-12);
+        assert_close("E↑", e.value(ParamKey::EUp).unwrap(), 7.0, 1e-12);
+        assert_close("E↓", e.value(ParamKey::EDown).unwrap(), 2.5, 1e-12);
+        assert_close("M", e.value(ParamKey::M).unwrap(), 2.25 - (-2.0), 1e-12);
+        assert_close("B", e.value(ParamKey::B).unwrap(), 3.5, 1e-12);
         assert_close(
             "B̄",
-            e.value("B_mean").unwrap(),
+            e.value(ParamKey::BMean).unwrap(),
             (3.0 + 3.5 - 2.0) / 3.0,
             1e-12,
         );
@@ -124,9 +135,9 @@ fn n_equals_one_keeps_only_clause_5_2_parameters() {
     let keys: Vec<&str> = gost.parameters.iter().map(|p| p.key()).collect();
     assert_eq!(keys, vec!["B_max", "B_mean"]);
     let vdi = evaluate(&data, StandardId::Vdi3441);
-    assert!(vdi.value("T").is_none() && vdi.value("A_mean").is_some());
+    assert!(vdi.value(ParamKey::T).is_none() && vdi.value(ParamKey::AMean).is_some());
     let nmtba = evaluate(&data, StandardId::Nmtba);
-    assert!(nmtba.value("A").is_none() && nmtba.value("L_max").is_some());
+    assert!(nmtba.value(ParamKey::A).is_none() && nmtba.value(ParamKey::LMax).is_some());
 }
 
 #[test]

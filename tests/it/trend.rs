@@ -6,7 +6,7 @@ use axcheck::evaluate::{ParamKey, StandardId, evaluate};
 use axcheck::judge::{BUILTIN_SPECS, Spec};
 use axcheck::simulate::rng::Rng;
 use axcheck::simulate::{Cycle, ErrorModel, PeriodicTerm, Simulation, TestPlan};
-use axcheck::trend::{Options, Point, Series, Trend, fit};
+use axcheck::trend::{Inspection, Series, Trend, TrendOptions, fit};
 use axcheck::units::AxisKind;
 use chrono::{Days, NaiveDate};
 use std::collections::BTreeMap;
@@ -95,7 +95,7 @@ fn series() -> Vec<Series> {
         .tolerances
         .clone();
     limits.insert(ParamKey::BMean, B_LIMIT);
-    let mut by_key: BTreeMap<(usize, &'static str), Vec<Point>> = BTreeMap::new();
+    let mut by_key: BTreeMap<(usize, &'static str), Vec<Inspection>> = BTreeMap::new();
     for axis in 0..AXES {
         for k in 0..INSPECTIONS {
             let date = inspection_date(k);
@@ -105,7 +105,7 @@ fn series() -> Vec<Series> {
                 by_key
                     .entry((axis, p.key()))
                     .or_default()
-                    .push(Point { date, value });
+                    .push(Inspection { date, value });
             }
         }
     }
@@ -142,7 +142,7 @@ fn true_crossing() -> NaiveDate {
 /// 28…155 days early, and 2 of about 13 700 stable series were flagged.
 #[test]
 fn the_wearing_axis_is_found_and_nothing_else_is_flagged() {
-    let options = Options::default();
+    let options = TrendOptions::default();
     let fits: Vec<(Series, Trend)> = series()
         .into_iter()
         .map(|s| {

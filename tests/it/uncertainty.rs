@@ -3,6 +3,7 @@
 //! rotary axis in arcseconds.
 
 use crate::common::{assert_close, load};
+use axcheck::evaluate::ParamKey;
 use axcheck::evaluate::{StandardId, evaluate};
 use axcheck::measurement::{AxisData, RawReading};
 use axcheck::uncertainty::{self, Budget, InstrumentKind, Setup, Uncertainty};
@@ -133,18 +134,27 @@ fn u_grows_with_the_measured_length_of_ranges_only() {
     };
     let (short, mid, long) = (at(500.0), at(1000.0), at(2000.0));
     for key in ["A", "A_up", "A_down", "E", "E_up", "E_down", "M"] {
-        let u = |x: &Uncertainty| x.expanded_of(key).unwrap();
+        let u = |x: &Uncertainty| x.expanded_of(ParamKey::parse(key).unwrap()).unwrap();
         assert!(u(&short) < u(&mid) && u(&mid) < u(&long), "{key}");
         // The length is the distance between the targets of the two terms: E spans
         // targets 2 (max 3.5 + 0.75) and 4 (min −2 − 0.75), half the travel.
-        let length = |x: &Uncertainty| x.parameter(key).unwrap().length;
+        let length = |x: &Uncertainty| x.parameter(ParamKey::parse(key).unwrap()).unwrap().length;
         assert_close(key, length(&long), 2.0 * length(&mid), 1e-9);
     }
-    assert_close("E length", mid.parameter("E").unwrap().length, 500.0, 1e-9);
+    assert_close(
+        "E length",
+        mid.parameter(ParamKey::E).unwrap().length,
+        500.0,
+        1e-9,
+    );
     for key in ["R", "R_up", "R_down", "B", "B_mean"] {
-        let u = |x: &Uncertainty| x.expanded_of(key).unwrap();
+        let u = |x: &Uncertainty| x.expanded_of(ParamKey::parse(key).unwrap()).unwrap();
         assert_close(key, u(&short), u(&long), 1e-12);
-        assert_eq!(mid.parameter(key).unwrap().length, 0.0, "{key}");
+        assert_eq!(
+            mid.parameter(ParamKey::parse(key).unwrap()).unwrap().length,
+            0.0,
+            "{key}"
+        );
     }
 }
 
@@ -203,13 +213,28 @@ fn iso_table_2_budget_checked_by_hand() {
     assert_close("u_c", b.combined, 7.250_334, 2e-6);
     assert_close("U", b.expanded, 14.500_667, 4e-6);
 
-    let length = |k: &str| u.parameter(k).unwrap().length;
+    let length = |k: &str| u.parameter(ParamKey::parse(k).unwrap()).unwrap().length;
     assert_close("E length", length("E"), 1059.227, 1e-9);
     assert_close("A length", length("A"), 1054.628, 1e-9);
-    check(u.parameter("E").unwrap(), "mean_of_n", 0.304_631, None);
-    check(u.parameter("A").unwrap(), "s_of_n", 0.577_157, None);
-    check(u.parameter("R_up").unwrap(), "s_of_n", 1.083_661, None);
-    check(u.parameter("B").unwrap(), "mean_of_n", 0.195_959, None);
+    check(
+        u.parameter(ParamKey::E).unwrap(),
+        "mean_of_n",
+        0.304_631,
+        None,
+    );
+    check(u.parameter(ParamKey::A).unwrap(), "s_of_n", 0.577_157, None);
+    check(
+        u.parameter(ParamKey::RUp).unwrap(),
+        "s_of_n",
+        1.083_661,
+        None,
+    );
+    check(
+        u.parameter(ParamKey::B).unwrap(),
+        "mean_of_n",
+        0.195_959,
+        None,
+    );
     for (key, want) in [
         ("E", 8.827_085),
         ("A", 8.871_999),
@@ -224,7 +249,12 @@ fn iso_table_2_budget_checked_by_hand() {
         ("B", 0.393_241),
         ("B_mean", 0.192_384),
     ] {
-        assert_close(key, u.expanded_of(key).unwrap(), want, 4e-6);
+        assert_close(
+            key,
+            u.expanded_of(ParamKey::parse(key).unwrap()).unwrap(),
+            want,
+            4e-6,
+        );
     }
     assert_eq!(u.expanded.len(), 12);
     assert!(u.notes.is_empty(), "{:?}", u.notes);
@@ -247,7 +277,7 @@ fn rotary_budget_in_arcseconds() {
     assert_close("u_c", b.combined, 0.578_071, 1e-6);
     assert_close("U", b.expanded, 1.156_143, 1e-6);
     // E (over its own angle) carries the same instrument part plus its means' scatter.
-    let e_budget = u.parameter("E").unwrap();
+    let e_budget = u.parameter(ParamKey::E).unwrap();
     check(e_budget, "calibration", 0.577_350, None);
     assert!(e_budget.line("mean_of_n").is_some());
     assert!(u.notes.is_empty(), "{:?}", u.notes);
@@ -268,12 +298,16 @@ fn gost_parameters_use_its_coverage_factor() {
     for key in [
         "A", "A_up", "A_down", "R_max", "R_up", "R_down", "R_mean", "B_max", "B_mean",
     ] {
-        assert!(u.expanded_of(key).is_some_and(|x| x > 0.0), "{key}");
+        assert!(
+            u.expanded_of(ParamKey::parse(key).unwrap())
+                .is_some_and(|x| x > 0.0),
+            "{key}"
+        );
     }
     // A repeatability 6S: the resolution enters six-fold, u(S) six-fold.
-    let r = u.parameter("R_up").unwrap();
+    let r = u.parameter(ParamKey::RUp).unwrap();
     assert_eq!(r.line("resolution").unwrap().sensitivity, 6.0);
-    let at = e.parameter("R_up").unwrap().at_target.unwrap();
+    let at = e.parameter(ParamKey::RUp).unwrap().at_target.unwrap();
     let s = e.targets[at].up.s.unwrap();
     check(r, "s_of_n", 6.0 * uncertainty::extent::u_of_s(s, 5), None);
     assert!(u.notes.iter().any(|n| n.contains("not recorded")));
@@ -284,10 +318,16 @@ fn levels_take_no_uncertainty_and_n_1_has_no_statistics() {
     let e = evaluate(&load("iso230-2_table2.csv"), StandardId::Vdi3441);
     let u = uncertainty::evaluate(&Setup::default(), &e);
     for key in ["X_max", "X_min", "A_mean", "G_upper", "G_lower"] {
-        assert!(u.expanded_of(key).is_none(), "{key}");
+        assert!(
+            u.expanded_of(ParamKey::parse(key).unwrap()).is_none(),
+            "{key}"
+        );
     }
     for key in ["T", "R_p", "sigma_mean"] {
-        assert!(u.expanded_of(key).is_some(), "{key}");
+        assert!(
+            u.expanded_of(ParamKey::parse(key).unwrap()).is_some(),
+            "{key}"
+        );
     }
     let single = axis(AxisKind::Linear, &[0.0, 500.0, 1000.0], |i, _, _| i as f64);
     let single = AxisData::from_raw(

@@ -276,7 +276,7 @@ fn one_run_per_direction_has_a_statistical_uncertainty() {
         let sd = (reversals.iter().map(|b| (b - mean).powi(2)).sum::<f64>() / (m - 1.0)).sqrt();
         let s_hat = sd / 2f64.sqrt();
         let u = e.uncertainty.as_ref().unwrap();
-        let u_b = u.expanded_of("B").unwrap();
+        let u_b = u.expanded_of(axcheck::evaluate::ParamKey::B).unwrap();
         assert!(
             u_b >= 2.0 * 2f64.sqrt() * s_hat - 1e-9,
             "U(B) = {u_b}, ŝ = {s_hat}"

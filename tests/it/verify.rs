@@ -79,7 +79,7 @@ fn verified_on(
         Some(t) => compensate::apply(&t, &again),
         None => again,
     };
-    let input = verify::Input {
+    let input = verify::VerifyInput {
         before: &before,
         after: &after,
         old: None,
@@ -271,7 +271,7 @@ fn a_table_loaded_on_the_other_axis_is_named() {
         axis: "Y".into(),
         new: y_table,
     }];
-    let input = verify::Input {
+    let input = verify::VerifyInput {
         before: &before,
         after: &after,
         old: None,
@@ -344,7 +344,7 @@ fn one_interval_of_118_mm_is_named_118_mm() {
         let before = sim.run(seed);
         let table = compensate::held_table(controller, &before, &settings).unwrap();
         let after = compensate::apply(&shifted(&table, 118.0), &sim.run(seed + 1000));
-        let input = verify::Input {
+        let input = verify::VerifyInput {
             before: &before,
             after: &after,
             old: None,
@@ -763,7 +763,7 @@ fn a_table_re_measured_at_other_targets_is_effective_despite_an_unresolved_pitch
         let before = sim.run(seed);
         let table = compensate::held_table(controller, &before, &settings).unwrap();
         let after = compensate::apply(&table, &sim.run(seed + 1000));
-        let input = verify::Input {
+        let input = verify::VerifyInput {
             before: &before,
             after: &after,
             old: None,

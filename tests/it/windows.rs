@@ -295,7 +295,7 @@ fn trend_and_simulate_stop_at_a_held_folder() {
 fn campaign_paths_stay_inside_with_either_separator() {
     let dir = scratch("win-campaign-paths");
     let root = axcheck::files::Root::campaign(&dir, false);
-    let refused = |p: &str| root.resolve(p).expect_err(p);
+    let refused = |p: &str| root.resolve(p).expect_err(p).to_string();
     assert_eq!(root.resolve("data/x.csv").unwrap(), dir.join("data/x.csv"));
     for out in ["../x.csv", "data/../../x.csv"] {
         assert!(

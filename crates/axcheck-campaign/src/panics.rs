@@ -15,17 +15,25 @@ thread_local! {
 }
 
 /// Runs `f`; a panic inside it becomes `Err` with the panic's message.
-pub fn contained<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+pub fn contained<T>(f: impl FnOnce() -> T) -> Result<T, Panicked> {
     let outer = CONTAINED.with(|c| c.replace(true));
     let result = panic::catch_unwind(AssertUnwindSafe(f));
     CONTAINED.with(|c| c.set(outer));
-    result.map_err(|payload| {
-        payload
+    result.map_err(|payload| Panicked {
+        message: payload
             .downcast_ref::<&str>()
             .map(|s| s.to_string())
             .or_else(|| payload.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "a panic without a message".to_string())
+            .unwrap_or_else(|| "a panic without a message".to_string()),
     })
+}
+
+/// A panic [`contained`]: a library's own check that failed on a damaged file.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct Panicked {
+    /// The panic's message, as the library wrote it.
+    pub message: String,
 }
 
 /// Keeps the default panic report for every panic except those [`contained`] turns into
@@ -51,15 +59,21 @@ mod tests {
         install_quiet_hook();
         assert_eq!(contained(|| 7), Ok(7));
         let e = contained(|| -> u8 { panic!("footer length {} out of range", 12) });
-        assert_eq!(e, Err("footer length 12 out of range".to_string()));
+        assert_eq!(
+            e.map_err(|p| p.message),
+            Err("footer length 12 out of range".to_string())
+        );
         let e = contained(|| -> u8 { std::panic::panic_any(3_u8) });
-        assert_eq!(e, Err("a panic without a message".to_string()));
+        assert_eq!(
+            e.map_err(|p| p.message),
+            Err("a panic without a message".to_string())
+        );
         // Nested: the outer call is still contained after the inner one ends.
         let e = contained(|| {
             let _ = contained(|| panic!("inner"));
             panic!("outer")
         });
-        assert_eq!(e, Err::<(), _>("outer".to_string()));
+        assert_eq!(e.map_err(|p| p.message), Err::<(), _>("outer".to_string()));
         assert!(!CONTAINED.with(Cell::get));
     }
 }

@@ -16,6 +16,39 @@ use crate::units::AxisKind;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
+/// Why a table the campaign states for a test (active during it, or verified by it), or
+/// the measurement before a verified table, cannot be used: the test's compensation is
+/// refused and its verification not made, with this reason.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum StatedTableError {
+    /// The campaign's folder rules refuse the path (`compensation.active: …`).
+    #[error("compensation.{key}: {refused}")]
+    Path {
+        key: &'static str,
+        refused: crate::files::PathRefused,
+    },
+    #[error("{}: cannot read the table: {reason}", path.display())]
+    Unreadable {
+        path: std::path::PathBuf,
+        reason: String,
+    },
+    /// The file is no table of the controller's format.
+    #[error("{}: {reason} (read as a {controller} table for compensation.{key})", path.display())]
+    NotATable {
+        path: std::path::PathBuf,
+        reason: String,
+        controller: &'static str,
+        key: &'static str,
+    },
+    /// The measurement before the table was loaded cannot be read.
+    #[error(transparent)]
+    Before(Box<crate::measurement::ReadError>),
+    #[error("the verified table is empty")]
+    Empty,
+    #[error("verification: {0}")]
+    Verification(#[from] crate::verify::VerifyError),
+}
+
 /// The result of one test of one axis: one row of the summary.
 #[derive(Debug, Clone)]
 pub struct AxisTest {
@@ -73,7 +106,7 @@ pub struct Evaluated {
     pub compensation: Option<Box<crate::compensate::Compensation>>,
     /// The re-measurement compared with the prediction of the table it verifies, or why
     /// it cannot be.
-    pub verification: Option<Box<Result<crate::verify::Verification, String>>>,
+    pub verification: Option<Box<Result<crate::verify::Verification, StatedTableError>>>,
     /// The measurement uncertainty of the parameters (GUM budget, U with k = 2).
     pub uncertainty: Option<Uncertainty>,
     /// Model check and diagnosis, when the run asked for it.

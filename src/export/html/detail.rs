@@ -4,6 +4,7 @@
 //! its report and table, and its charts (ISO 230-2 Fig. 2a and 2b, and its history).
 
 use super::scene::SceneData;
+use crate::evaluate::ParamKey;
 use crate::history::AxisTrends;
 use crate::judge::Conformance;
 use crate::results::AxisTest;
@@ -112,7 +113,7 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
                 controller: c.controller,
                 mode: c.mode,
                 active_file: c.active_file.clone(),
-                refused: c.outcome.as_ref().err().cloned(),
+                refused: c.outcome.as_ref().err().map(ToString::to_string),
                 warnings: c.warnings.iter().map(|w| w.message.clone()).collect(),
             }),
         verification: ev.and_then(|e| e.verification.as_deref()).map(|v| match v {
@@ -130,11 +131,11 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
     let Some(e) = t.evaluated().map(|e| &e.evaluation) else {
         return Vec::new();
     };
-    let check = |key: &str| {
+    let check = |key: ParamKey| {
         (t.evaluated().and_then(|e| e.judgement.as_ref()))
             .and_then(|j| j.checks.iter().find(|c| c.key == key))
     };
-    let u_of = |key: &str| {
+    let u_of = |key: ParamKey| {
         t.evaluated()
             .and_then(|e| e.uncertainty.as_ref())
             .and_then(|u| u.expanded_of(key))
@@ -145,9 +146,9 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
             name: p.name(),
             clause: p.clause(),
             value: fmt_fixed(p.value, 2),
-            u: u_of(p.key()).map(|u| fmt_fixed(u, 2)),
-            limit: check(p.key()).map(|c| fmt_fixed(c.limit, 2)),
-            outcome: check(p.key()).map(|c| c.outcome),
+            u: u_of(p.def.key).map(|u| fmt_fixed(u, 2)),
+            limit: check(p.def.key).map(|c| fmt_fixed(c.limit, 2)),
+            outcome: check(p.def.key).map(|c| c.outcome),
         })
         .collect()
 }

@@ -33,7 +33,7 @@ const PAGE: &str = include_str!("page.html");
 const STYLE: &str = include_str!("page.css");
 const SCRIPT: &str = include_str!("page.js");
 
-pub struct Html {
+pub struct HtmlExporter {
     /// Whether the run writes the axis reports (`reports/…pdf`), which the page links to.
     pub reports: bool,
     /// The trends of the run's axes, when the run keeps a history.
@@ -54,7 +54,7 @@ struct Page<'a> {
     rows: Vec<overview::Row<'a>>,
 }
 
-impl Exporter for Html {
+impl Exporter for HtmlExporter {
     fn name(&self) -> &'static str {
         "html"
     }

@@ -4,7 +4,7 @@
 //! [`crate::report::typeset::drawing`]), the texts as labels set by the template (see [`crate::report::chart_kit::labels`]);
 //! [`Scene::svg`] writes the whole chart as SVG for templates that show it as an image.
 //!
-//! Runs of like shapes are kept as one [`Shape`] with an outline per element: a chart of
+//! Runs of like shapes are kept as one [`SceneShape`] with an outline per element: a chart of
 //! 11 targets × 5 runs draws about 250 markers, ticks and segments, and the PDF pays per
 //! path (a graphics state and a path object each). Only opaque paint is merged, fills
 //! without a stroke and strokes without dashes: there, painting the outlines together
@@ -56,14 +56,14 @@ pub enum Outline {
 
 /// Outlines painted alike.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Shape {
+pub struct SceneShape {
     pub paint: Paint,
     /// 1 for opaque paint.
     pub opacity: f64,
     pub outlines: Vec<Outline>,
 }
 
-impl Shape {
+impl SceneShape {
     /// Whether more outlines painted like this one may join it (see the module docs).
     /// Rectangles stay apart: PDF viewers snap a lone rectangle's edges to whole pixels
     /// (bars and bands print crisp), which they do not do for a path of several.
@@ -82,7 +82,7 @@ impl Shape {
 pub struct Drawing {
     pub width: u32,
     pub height: u32,
-    pub shapes: Vec<Shape>,
+    pub shapes: Vec<SceneShape>,
 }
 
 impl Drawing {
@@ -97,7 +97,7 @@ impl Drawing {
             last.outlines.push(outline);
             return;
         }
-        self.shapes.push(Shape {
+        self.shapes.push(SceneShape {
             paint,
             opacity,
             outlines: vec![outline],
@@ -176,7 +176,7 @@ impl Drawing {
             };
             let opacity = r.f64()?;
             let outlines = (0..r.len()?).map(|_| r.outline()).collect::<Option<_>>()?;
-            shapes.push(Shape {
+            shapes.push(SceneShape {
                 paint,
                 opacity,
                 outlines,
@@ -386,7 +386,7 @@ fn svg_open(drawing: &Drawing) -> String {
     )
 }
 
-fn push_shapes(out: &mut String, shapes: &[Shape]) {
+fn push_shapes(out: &mut String, shapes: &[SceneShape]) {
     for shape in shapes {
         out.push_str("<path");
         match &shape.paint {
@@ -416,7 +416,7 @@ fn push_shapes(out: &mut String, shapes: &[Shape]) {
     }
 }
 
-impl Shape {
+impl SceneShape {
     /// The outlines as one SVG path's `d`, as [`Scene::svg`] writes them.
     pub fn path_data(&self) -> String {
         let mut out = String::new();
@@ -520,7 +520,7 @@ impl Scene {
 }
 
 #[cfg(test)]
-fn push_element(out: &mut String, shape: &Shape, outline: &Outline) {
+fn push_element(out: &mut String, shape: &SceneShape, outline: &Outline) {
     let (fill, stroke, width, dash) = match &shape.paint {
         Paint::Fill(c) => (c.hex(), "none".to_string(), 1, String::new()),
         Paint::Stroke {

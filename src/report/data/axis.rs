@@ -235,7 +235,7 @@ impl VerdictText {
                     .and_then(|e| e.judgement.as_ref())
                     .into_iter()
                     .flat_map(|j| j.failed())
-                    .map(|c| symbol_of(t, &c.key))
+                    .map(|c| symbol_of(t, c.key.as_str()))
                     .collect();
                 format!("Over the limit: {}.", failed.join(", "))
             }
@@ -254,7 +254,7 @@ impl VerdictText {
                     .map(|c| {
                         format!(
                             "{} = {} ± {} {unit} against {} {unit}",
-                            symbol_of(t, &c.key),
+                            symbol_of(t, c.key.as_str()),
                             num(c.value),
                             num(c.expanded_uncertainty.unwrap_or(0.0)),
                             num(c.limit)
@@ -311,7 +311,7 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
             let check = t
                 .evaluated()
                 .and_then(|e| e.judgement.as_ref())
-                .and_then(|j| j.checks.iter().find(|c| c.key == p.key()));
+                .and_then(|j| j.checks.iter().find(|c| c.key == p.def.key));
             let at = if let Some(i) = p.at_target {
                 format!("at i = {} ({})", i + 1, pos(e.kind, e.targets[i].position))
             } else if let Some((hi, lo)) = p.span {
@@ -328,7 +328,7 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
                 value: num(p.value),
                 u: t.evaluated()
                     .and_then(|e| e.uncertainty.as_ref())
-                    .and_then(|u| u.expanded_of(p.key()))
+                    .and_then(|u| u.expanded_of(p.def.key))
                     .map_or("–".into(), |u| format!("±{}", num(u))),
                 limit: check.map_or("–".into(), |c| num(c.limit)),
                 margin: check.map_or("–".into(), |c| num(c.margin)),

@@ -10,6 +10,7 @@ use crate::compensate::{Compensated, Compensation, Interpolation, Mode, Table};
 use crate::evaluate::Evaluation;
 use crate::report::charts::compensation::CompensationChart;
 use crate::report::charts::verification::VerificationChart;
+use crate::results::StatedTableError;
 use crate::units::{AxisKind, Direction};
 use crate::verify::Verification;
 use serde::Serialize;
@@ -40,7 +41,7 @@ pub struct CompensationSection<'a> {
 #[derive(Serialize)]
 struct VerificationSection<'a> {
     /// Why it could not be made: shown instead of the rest.
-    error: Option<&'a str>,
+    error: Option<String>,
     /// `effective`, … and its words.
     verdict: &'static str,
     verdict_words: &'static str,
@@ -74,7 +75,7 @@ struct PredictedRow {
 pub(super) fn compensation_section<'a>(
     c: &'a Compensation,
     measured: &Evaluation,
-    verification: Option<&'a Result<Verification, String>>,
+    verification: Option<&'a Result<Verification, StatedTableError>>,
 ) -> CompensationSection<'a> {
     let unit = measured.kind.deviation_symbol();
     let (state, other): (Vec<_>, Vec<_>) = c
@@ -86,12 +87,9 @@ pub(super) fn compensation_section<'a>(
     let warnings = other.iter().map(message).collect();
     let (refusal, facts, parameters, floor) = match &c.outcome {
         Err(refusal) => {
-            // The reason without the `controller: ` the outcome starts with.
-            let reason = refusal
-                .strip_prefix(c.controller)
-                .and_then(|r| r.strip_prefix(": "));
+            // The reason without the controller the outcome names.
             (
-                Some(keys_in_words(reason.unwrap_or(refusal), verification)),
+                Some(keys_in_words(&refusal.reason, verification)),
                 Vec::new(),
                 Vec::new(),
                 String::new(),
@@ -124,7 +122,10 @@ pub(super) fn compensation_section<'a>(
 
 /// A refusal with the verification's verdict and findings (`made_worse (sign_inverted)`,
 /// as the console names them) in words.
-fn keys_in_words(refusal: &str, verification: Option<&Result<Verification, String>>) -> String {
+fn keys_in_words(
+    refusal: &str,
+    verification: Option<&Result<Verification, StatedTableError>>,
+) -> String {
     let Some(Ok(v)) = verification else {
         return refusal.to_string();
     };
@@ -136,14 +137,14 @@ fn keys_in_words(refusal: &str, verification: Option<&Result<Verification, Strin
 
 /// The verification's verdict, E at each stage and what went wrong.
 fn verification_section(
-    v: &Result<Verification, String>,
+    v: &Result<Verification, StatedTableError>,
     kind: AxisKind,
 ) -> VerificationSection<'_> {
     let v = match v {
         Ok(v) => v,
         Err(e) => {
             return VerificationSection {
-                error: Some(e),
+                error: Some(e.to_string()),
                 verdict: "",
                 verdict_words: "",
                 facts: Vec::new(),
@@ -296,7 +297,7 @@ fn predicted_rows(measured: &Evaluation, predicted: &Evaluation) -> Vec<Predicte
             name: p.name(),
             unit,
             measured: num(p.value),
-            predicted: predicted.value(p.key()).map_or("–".into(), num),
+            predicted: predicted.value(p.def.key).map_or("–".into(), num),
         })
         .collect()
 }
@@ -353,7 +354,7 @@ pub fn verification_chart(v: &Verification, kind: AxisKind) -> VerificationChart
         AxisKind::Linear => ("mm", "µm"),
         AxisKind::Rotary => ("°", "arcsec"),
     };
-    let of = |d: Direction, f: fn(&crate::verify::Row) -> f64| -> Vec<f64> {
+    let of = |d: Direction, f: fn(&crate::verify::ComparedTarget) -> f64| -> Vec<f64> {
         v.per_target
             .iter()
             .filter(|r| r.direction == d)

@@ -2,7 +2,7 @@
 //! order, and the temperature sensors.
 
 use crate::axis_model::Cycle;
-use crate::campaign::{Air, Conditions, Instrument, Nde, SensorKind, TemperatureSensor};
+use crate::campaign::{Air, Conditions, InstrumentEntry, Nde, SensorKind, TemperatureSensor};
 use crate::nde::NdeCorrection;
 use crate::results::AxisTest;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
@@ -103,7 +103,7 @@ fn read_as(r: &crate::measurement::Recognised) -> String {
 
 /// The instrument's name with its serial number, and where it stood. An instrument block
 /// always gives a name line, even when empty (then it is left out as blank).
-fn instrument(i: &Instrument) -> (Option<String>, Option<String>) {
+fn instrument(i: &InstrumentEntry) -> (Option<String>, Option<String>) {
     let mut name = i.name.clone().unwrap_or_default();
     if let Some(s) = &i.serial {
         name = format!("{name}, s/n {s}");

@@ -234,12 +234,12 @@ pub fn diagnosis_charts(
     d: &Diagnosis,
 ) -> (
     Vec<crate::report::charts::check::CheckBar>,
-    crate::report::charts::diagnosis::Residuals,
-    crate::report::charts::diagnosis::Residuals,
+    crate::report::charts::diagnosis::ResidualsChart,
+    crate::report::charts::diagnosis::ResidualsChart,
     crate::report::charts::diagnosis::Periodogram,
 ) {
     use crate::report::charts::check::CheckBar;
-    use crate::report::charts::diagnosis::{Periodogram, Residuals};
+    use crate::report::charts::diagnosis::{Periodogram, ResidualsChart};
     let (pos_unit, dev_unit) = match d.kind {
         AxisKind::Linear => ("mm", "µm"),
         AxisKind::Rotary => ("°", "arcsec"),
@@ -267,7 +267,7 @@ pub fn diagnosis_charts(
             / n)
             .sqrt()
     };
-    let in_time = Residuals {
+    let in_time = ResidualsChart {
         x: readings
             .iter()
             .map(|r| {
@@ -297,10 +297,10 @@ pub fn diagnosis_charts(
             .as_ref()
             .map(|t| time_panels(d, t, timed)),
     };
-    let along = Residuals {
+    let along = ResidualsChart {
         x: readings.iter().map(|r| r.position).collect(),
         x_label: format!("Target position Pi / {pos_unit}"),
-        ..Residuals {
+        ..ResidualsChart {
             x: Vec::new(),
             y: in_time.y.clone(),
             up: in_time.up.clone(),

@@ -22,7 +22,7 @@ pub use summary::{Summary, summary};
 pub use uncertainty::decision_bars;
 
 use super::charts::{AxisChart, DirectionSeries, Span};
-use crate::evaluate::{Approach, DirectionResult, Evaluation, StandardId};
+use crate::evaluate::{Approach, DirectionResult, Evaluation, ParamKey, StandardId};
 use crate::results::{AxisTest, CampaignResult};
 use crate::units::{AxisKind, Direction, fmt_fixed, fmt_position};
 use serde::Serialize;
@@ -59,7 +59,7 @@ fn s_symbol(standard: Option<StandardId>) -> &'static str {
 fn symbol_of(t: &AxisTest, key: &str) -> String {
     t.evaluated()
         .map(|e| &e.evaluation)
-        .and_then(|e| e.parameter(key))
+        .and_then(|e| e.parameter(ParamKey::parse(key)?))
         .map_or(key.to_string(), |p| p.symbol().to_string())
 }
 

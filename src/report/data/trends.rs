@@ -154,7 +154,7 @@ pub fn chart(series: &Series, trend: &Trend, horizon_years: f64) -> TrendChart {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trend::{Options, Point, fit};
+    use crate::trend::{Inspection, TrendOptions, fit};
 
     fn date(y: i32, m: u32, d: u32) -> NaiveDate {
         NaiveDate::from_ymd_opt(y, m, d).unwrap()
@@ -170,7 +170,7 @@ mod tests {
             unit: "um".into(),
             limit: Some(4.0),
             points: (0..5)
-                .map(|k| Point {
+                .map(|k| Inspection {
                     date: date(2021 + k, 1, 1),
                     value: -1.0 - 0.5 * k as f64,
                 })
@@ -189,7 +189,7 @@ mod tests {
     #[test]
     fn a_falling_signed_parameter_meets_minus_its_limit() {
         let s = falling();
-        let t = fit(&s, &Options::default());
+        let t = fit(&s, &TrendOptions::default());
         let c = chart(&s, &t, 2.0);
         assert_eq!(c.limit, Some(-4.0));
         assert_eq!(c.points.len(), 5);

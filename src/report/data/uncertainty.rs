@@ -87,7 +87,7 @@ pub fn decision_bars(t: &AxisTest) -> Vec<CheckBar> {
     j.checks
         .iter()
         .filter_map(|c| {
-            let expanded = u.expanded_of(&c.key)?;
+            let expanded = u.expanded_of(c.key)?;
             // The values as the results table prints them (2 decimals), and the zone's ends
             // from those, so that chart and table agree to the last digit.
             let (value, limit, zone) = (
@@ -96,7 +96,7 @@ pub fn decision_bars(t: &AxisTest) -> Vec<CheckBar> {
                 table_round(expanded),
             );
             Some(CheckBar {
-                label: symbol_of(t, &c.key),
+                label: symbol_of(t, c.key.as_str()),
                 measured: value,
                 low: limit - zone,
                 high: limit + zone,

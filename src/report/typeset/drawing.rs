@@ -11,7 +11,7 @@
 
 use crate::report::chart_kit::labels::{ChartLabels, Label};
 use crate::report::chart_kit::scene::{Colour, Drawing, Outline, Paint};
-use crate::report::typeset::text_lines::{self, Paragraph, Settings};
+use crate::report::typeset::text_lines::{self, Paragraph, ParagraphSettings};
 use typst::diag::{At, SourceResult};
 use typst::engine::Engine;
 use typst::foundations::{Bytes, Content, NativeElement, Packed, Resolve, StyleChain, Styles};
@@ -97,7 +97,7 @@ fn layout(
         k: scale.get(),
         size: frame.size(),
         locator: locator.split(),
-        settings: Settings::default(),
+        settings: ParagraphSettings::default(),
         span: elem.span(),
     };
     for label in &labels.labels {
@@ -112,7 +112,7 @@ struct Placement<'a> {
     k: f64,
     size: Size,
     locator: SplitLocator<'a>,
-    settings: Settings,
+    settings: ParagraphSettings,
     span: Span,
 }
 
@@ -219,7 +219,7 @@ fn point((x, y): (i32, i32)) -> Point {
 /// Filled circles of one radius (a series' markers) as the dots of a line of no length with
 /// round caps as wide as the circles: a few bytes each in the page instead of four curves.
 /// `None` for other shapes and for one circle alone (PDF writers drop a path of no extent).
-fn dots(shape: &crate::report::chart_kit::scene::Shape) -> Option<Shape> {
+fn dots(shape: &crate::report::chart_kit::scene::SceneShape) -> Option<Shape> {
     let Paint::Fill(colour) = shape.paint else {
         return None;
     };

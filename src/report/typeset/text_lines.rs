@@ -167,7 +167,7 @@ fn layout_columns(
     let mut frames = Vec::new();
     let mut right = Abs::zero();
     let mut height = Abs::zero();
-    let mut settings = Settings::default();
+    let mut settings = ParagraphSettings::default();
     for dict in &elem.columns {
         let column = Column::of(dict).at(span)?;
         let lines: Vec<&str> = column.lines.iter().map(Str::as_str).collect();
@@ -294,9 +294,9 @@ pub struct Paragraph<'a> {
 /// The settings of one element's paragraphs, made once per style that sets some apart
 /// (a column's or a label's): reading a style chain is most of a short paragraph's cost.
 #[derive(Default)]
-pub struct Settings(Vec<(Styles, Option<Setting>)>);
+pub struct ParagraphSettings(Vec<(Styles, Option<Setting>)>);
 
-impl Settings {
+impl ParagraphSettings {
     /// The setting of `base` (the same for every call) with `local` on top.
     pub fn of(&mut self, engine: &Engine, base: StyleChain, local: &Styles) -> Option<&Setting> {
         let i = match self.0.iter().position(|(style, _)| style == local) {

@@ -577,7 +577,7 @@ fn add_effect(
         Effect::ReversalVariation => m.reversal_end = Some(m.reversal + signed),
         Effect::Outlier => {
             let targets = spacing_of(&case.sim.plan).2;
-            m.outliers.push(Outlier {
+            m.outliers.push(PlantedOutlier {
                 run: 1 + (rng.uniform() * runs as f64) as u32,
                 direction: if rng.uniform() < 0.5 {
                     Direction::Up

@@ -9,6 +9,7 @@ use crate::campaign::model::{ActiveRaw, ActiveStated, CompensationRaw};
 use crate::compensate::controllers::{Controller, ReadAs};
 use crate::compensate::{self, Active, Settings, Table, TableSlot};
 use crate::measurement::AxisData;
+use crate::results::StatedTableError;
 use crate::units::AxisKind;
 use crate::verify::{self, Effectiveness, Other, Verification};
 
@@ -31,7 +32,7 @@ pub fn settings(
     axis: &AxisSpec,
     controller: &dyn Controller,
     files: &Files,
-) -> Result<Settings, String> {
+) -> Result<Settings, StatedTableError> {
     let raw = axis.raw.compensation.clone().unwrap_or_default();
     let place = TableSlot {
         axis: raw.axis.clone(),
@@ -76,8 +77,8 @@ fn active(
     controller: &dyn Controller,
     files: &Files,
     place: &TableSlot,
-    key: &str,
-) -> Result<Active, String> {
+    key: &'static str,
+) -> Result<Active, StatedTableError> {
     let ActiveRaw::Stated(s) = raw else {
         return Ok(Active::default());
     };
@@ -99,25 +100,30 @@ fn read_table(
     controller: &dyn Controller,
     files: &Files,
     place: &TableSlot,
-    key: &str,
-) -> Result<Table, String> {
+    key: &'static str,
+) -> Result<Table, StatedTableError> {
     let path = files
         .resolve(file)
-        .map_err(|e| format!("compensation.{key}: {e}"))?;
-    let text = files
-        .read_to_string(&path)
-        .map_err(|e| format!("{}: cannot read the table: {e}", path.display()))?;
+        .map_err(|refused| StatedTableError::Path { key, refused })?;
+    let text = match files.read_to_string(&path) {
+        Ok(text) => text,
+        Err(e) => {
+            let reason = e.to_string();
+            return Err(StatedTableError::Unreadable { path, reason });
+        }
+    };
     let reading = ReadAs {
         kind,
         axis: place.axis.as_deref(),
     };
-    controller.read(&text, reading).map_err(|e| {
-        format!(
-            "{}: {e} (read as a {} table for compensation.{key})",
-            path.display(),
-            controller.name()
-        )
-    })
+    controller
+        .read(&text, reading)
+        .map_err(|e| StatedTableError::NotATable {
+            path,
+            reason: e.to_string(),
+            controller: controller.name(),
+            key,
+        })
 }
 
 /// What the re-measurement of `axis` is compared with, when it `verifies` a table: the
@@ -128,7 +134,7 @@ pub fn verify_case(
     controller: &dyn Controller,
     files: &Files,
     settings: &Settings,
-) -> Option<Result<VerifyCase, String>> {
+) -> Option<Result<VerifyCase, StatedTableError>> {
     let raw: &CompensationRaw = axis.raw.compensation.as_ref()?;
     let v = raw.verifies.as_ref()?;
     Some(case(axis, v, controller, files, settings))
@@ -140,14 +146,17 @@ fn case(
     controller: &dyn Controller,
     files: &Files,
     settings: &Settings,
-) -> Result<VerifyCase, String> {
+) -> Result<VerifyCase, StatedTableError> {
     let kind = axis.raw.kind;
     let path = files
         .resolve(&v.before)
-        .map_err(|e| format!("compensation.verifies.before: {e}"))?;
+        .map_err(|refused| StatedTableError::Path {
+            key: "verifies.before",
+            refused,
+        })?;
     let read = crate::measurement::read_file_within(&path, &Default::default(), Some(files))
-        .map_err(|e| e.to_string())?;
-    let (before, _) = super::apply_nde(axis, read.data);
+        .map_err(|e| StatedTableError::Before(Box::new(e)))?;
+    let (before, _) = crate::campaign::stages::nde::apply(axis, read.data);
     let before_active = match &v.active {
         Some(a) => active(
             a,
@@ -193,9 +202,7 @@ fn case(
         );
     }
     let rule = controller.backlash();
-    let new = loaded
-        .total(rule, kind)
-        .ok_or("the verified table is empty")?;
+    let new = loaded.total(rule, kind).ok_or(StatedTableError::Empty)?;
     Ok(VerifyCase {
         before,
         old: before_active.total(rule, kind),
@@ -206,7 +213,7 @@ fn case(
 }
 
 /// What a re-measurement that verifies a table is compared with, or why it cannot be.
-pub type Case = Option<Result<Box<VerifyCase>, String>>;
+pub type Case = Option<Result<Box<VerifyCase>, StatedTableError>>;
 
 /// Each test with a verification case compared, the tables loaded on the other axes of
 /// its machine tried as `wrong_axis`.
@@ -264,10 +271,12 @@ fn withhold(c: &mut compensate::Compensation, v: &Verification) {
     } else {
         format!("{} ({})", v.verdict.name(), found.join(", "))
     };
-    c.outcome = Err(format!(
-        "{}: the verification of the table active during this test found it {what}: it did not act as stated, so a table built on it would be wrong; correct how it was loaded and measure again",
-        c.controller
-    ));
+    c.outcome = Err(compensate::NoTable {
+        controller: c.controller,
+        reason: format!(
+            "the verification of the table active during this test found it {what}: it did not act as stated, so a table built on it would be wrong; correct how it was loaded and measure again"
+        ),
+    });
 }
 
 /// The verification of one case.
@@ -276,8 +285,8 @@ fn compare(
     after: &AxisData,
     others: &[Other],
     standard: crate::evaluate::StandardId,
-) -> Result<Verification, String> {
-    let input = verify::Input {
+) -> Result<Verification, StatedTableError> {
+    let input = verify::VerifyInput {
         before: &case.before,
         after,
         old: case.old.as_ref(),
@@ -286,7 +295,7 @@ fn compare(
         controller: crate::compensate::controllers::find(case.controller),
         standard,
     };
-    let mut v = verify::verify(&input).map_err(|e| format!("verification: {e}"))?;
+    let mut v = verify::verify(&input)?;
     v.notes.extend(case.notes.iter().cloned());
     Ok(v)
 }
@@ -333,7 +342,10 @@ pub fn of_test(
     data: &AxisData,
     files: &Files,
     diagnosis: &crate::diagnose::Diagnosis,
-) -> (compensate::Compensation, Option<Result<VerifyCase, String>>) {
+) -> (
+    compensate::Compensation,
+    Option<Result<VerifyCase, StatedTableError>>,
+) {
     match settings(axis, controller, files) {
         Ok(s) => (
             compensate::compensation(controller, data, axis.standard, &s, diagnosis),
@@ -345,7 +357,7 @@ pub fn of_test(
                 .compensation
                 .as_ref()
                 .is_some_and(|c| c.verifies.is_some());
-            let refused = compensate::Compensation::refused(controller, &e);
+            let refused = compensate::Compensation::refused(controller, &e.to_string());
             (refused, verifies.then_some(Err(e)))
         }
     }

@@ -7,16 +7,14 @@ pub mod compensation;
 
 use crate::results::{AxisTest, CampaignResult, Evaluated, Outcome};
 
-use crate::campaign::{AxisSpec, Campaign, MachineInfo, SensorKind};
+use crate::campaign::stages;
+use crate::campaign::{AxisSpec, Campaign, MachineInfo};
 use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::Evaluation;
-use crate::evaluate::gost27843::SMethod;
 use crate::judge::{self, Decision, DecisionRule, Judgement, Spec, Verdict};
 use crate::measurement::{self, AxisData, Recognised};
-use crate::nde::{self, NdeCorrection};
-use crate::rules::{self, PlanContext, Severity, Violation};
-use crate::uncertainty::{Distribution, InstrumentKind, Setup, Uncertainty};
-use crate::units::AxisKind;
+use crate::rules::{self, Severity, Violation};
+use crate::uncertainty::Uncertainty;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Component, Path};
@@ -26,15 +24,12 @@ use std::sync::Arc;
 pub type Files = crate::files::Root;
 
 /// A test's result and, when it verifies a table, what it is compared with.
-type Tested = (
-    AxisTest,
-    Option<Result<Box<compensation::VerifyCase>, String>>,
-);
+type Tested = (AxisTest, compensation::Case);
 
 /// Options of a batch run. The axes are evaluated in the caller's rayon pool (the
 /// command's one pool, sized by `--jobs`).
 #[derive(Debug, Clone, Copy, Default)]
-pub struct Options {
+pub struct BatchOptions {
     /// Run the model check and diagnosis of every axis test.
     pub diagnose: bool,
     /// The CI gate: drop each test's readings, per-target statistics and U budgets once
@@ -50,7 +45,7 @@ pub struct Options {
 /// Evaluates every axis of `campaign`; `progress` is called once per finished test.
 pub fn run(
     campaign: &Campaign,
-    options: Options,
+    options: BatchOptions,
     progress: &(dyn Fn(&AxisTest) + Sync),
 ) -> CampaignResult {
     // The folder every file read for the campaign must be opened in, resolved once.
@@ -208,7 +203,7 @@ fn run_axis(
     entry: &crate::campaign::AxisEntry,
     specs: &BTreeMap<String, Result<Arc<Spec>, String>>,
     files: &Files,
-    options: Options,
+    options: BatchOptions,
 ) -> Vec<Tested> {
     let slot = Slot {
         machine: machine.clone(),
@@ -221,7 +216,7 @@ fn run_axis(
     };
     let axis = match &entry.spec {
         Ok(axis) => Arc::clone(axis),
-        Err(message) => return vec![(slot.error(message.clone()), None)],
+        Err(message) => return vec![(slot.error(message.to_string()), None)],
     };
     let slot = Slot {
         spec: Some(axis.clone()),
@@ -229,7 +224,7 @@ fn run_axis(
             .raw
             .plan
             .as_ref()
-            .map(|p| Arc::new(planned(p, axis.raw.kind, files))),
+            .map(|p| Arc::new(stages::rules::planned(p, axis.raw.kind, files))),
         ..slot
     };
     let paths = match axis.data.resolve(files) {
@@ -343,7 +338,7 @@ fn run_test(
     campaign: &crate::campaign::CampaignInfo,
     path: &Path,
     files: &Files,
-    options: Options,
+    options: BatchOptions,
 ) -> Tested {
     let (data, recognised) = match read_stage(&slot, axis, path, files) {
         Ok(read) => read,
@@ -358,17 +353,17 @@ fn run_test(
     let from_file = completed.as_ref().map_or(Vec::new(), |(_, t)| t.clone());
     let spec_arc = completed.map(|(s, _)| s);
     let axis: &AxisSpec = spec_arc.as_deref().unwrap_or(axis);
-    let (data, nde) = apply_nde(axis, data);
+    let (data, nde) = stages::nde::apply(axis, data);
     let unstated = unstated_conditions(axis, &slot.machine, campaign, &recognised, &data);
-    let mut context = plan_context(axis);
+    let mut context = stages::rules::context(axis);
     context.planned = slot.planned.clone();
     context.unstated = Some(unstated.clone());
     let findings = rules::check(&context, &data);
-    let evaluation = evaluate_stage(axis, &data);
-    let rule = decision_rule(axis, spec, campaign.decision_rule);
+    let evaluation = stages::evaluate::evaluate(axis, &data);
+    let rule = stages::judge::decision_rule(axis, spec, campaign.decision_rule);
     // The gate computes what it prints: U only where the decision rule judges with it.
     let uncertainty = (!options.drop_data || rule == DecisionRule::Iso14253_1).then(|| {
-        let setup = uncertainty_setup(axis, &data, nde.as_ref());
+        let setup = stages::uncertainty::setup(axis, &data, nde.as_ref());
         crate::uncertainty::evaluate(&setup, &evaluation)
     });
     let judged = Judged {
@@ -378,7 +373,7 @@ fn run_test(
         rule,
     };
     let (verdict, error, judgement) = judge_stage(axis, spec, &data, &judged);
-    let diagnosis_of = || diagnose_stage(axis, &data);
+    let diagnosis_of = || crate::diagnose::diagnose(&data, &stages::diagnose::options(axis));
     let diagnosis = options.diagnose.then(diagnosis_of);
     let controller = (slot.machine.controller.as_deref()).filter(|_| options.compensate);
     let (compensation, verify_case) = compensation::for_test(
@@ -427,7 +422,7 @@ fn unstated_conditions(
     let known = crate::campaign::clause7_1::Known {
         machine,
         dated: campaign.date.is_some() || file_date,
-        material_per_reading: has_material_temperatures(data),
+        material_per_reading: stages::nde::has_material_temperatures(data),
         air_per_reading: data.temperature_names.iter().any(air),
     };
     crate::campaign::clause7_1::unstated(axis, &known)
@@ -459,27 +454,6 @@ fn read_stage(
     Ok((data, recognised))
 }
 
-/// The parameters by the axis's standard (GOST 27843 with S from ranges when asked).
-fn evaluate_stage(axis: &AxisSpec, data: &AxisData) -> Evaluation {
-    let s_method = match axis.raw.s_from_ranges {
-        true => SMethod::Ranges,
-        false => SMethod::Formula5,
-    };
-    crate::evaluate::evaluate_by(data, axis.standard, s_method)
-}
-
-/// The decision rule: the axis's, else its spec's, else the campaign's, else simple.
-fn decision_rule(
-    axis: &AxisSpec,
-    spec: Option<&Spec>,
-    campaign_rule: Option<DecisionRule>,
-) -> DecisionRule {
-    (axis.raw.decision_rule)
-        .or(spec.and_then(|s| s.decision_rule))
-        .or(campaign_rule)
-        .unwrap_or_default()
-}
-
 /// What a test is judged on.
 struct Judged<'a> {
     evaluation: &'a Evaluation,
@@ -497,7 +471,7 @@ fn judge_stage(
 ) -> (Verdict, Option<String>, Option<Judgement>) {
     let (first, last) = data.measurement_travel();
     match judge::limits(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
-        Err(e) => (Verdict::Error, Some(e), None),
+        Err(e) => (Verdict::Error, Some(e.to_string()), None),
         Ok(limits) => {
             let decision = Decision {
                 rule: judged.rule,
@@ -510,156 +484,6 @@ fn judge_stage(
                 .any(|f| f.severity == Severity::Error);
             (judgement.verdict(plan_broken), None, Some(judgement))
         }
-    }
-}
-
-/// The model check and diagnosis of the test.
-fn diagnose_stage(axis: &AxisSpec, data: &AxisData) -> crate::diagnose::Diagnosis {
-    let options = crate::diagnose::Options {
-        pitch: axis.raw.pitch,
-        thermal_origin: axis.raw.thermal_origin,
-        standard: axis.standard,
-        ..crate::diagnose::Options::default()
-    };
-    crate::diagnose::diagnose(data, &options)
-}
-
-/// What the uncertainty budget knows of a test from the campaign (clause 7.1 block): the
-/// instrument (its `kind`, else guessed from its name, else the axis kind's usual one),
-/// the air temperature's change, the material sensors' readings, the expansion
-/// coefficient and whether the deviations are corrected to 20 °C (NDE, clause 3.1).
-fn uncertainty_setup(axis: &AxisSpec, data: &AxisData, nde: Option<&NdeCorrection>) -> Setup {
-    let c = &axis.raw.conditions;
-    let kind = c.instrument.as_ref().and_then(|i| {
-        i.kind
-            .or_else(|| i.name.as_deref().and_then(InstrumentKind::from_name))
-    });
-    let mut setup = kind.map_or_else(|| Setup::for_axis(axis.raw.kind), Setup::for_instrument);
-    if let Some(i) = &c.instrument {
-        stated_instrument(&mut setup, i);
-    }
-    if let (Some(air), Some(a)) = (setup.air.as_mut(), c.air.as_ref())
-        && let (Some(start), Some(end)) = (a.temperature_start_c, a.temperature_end_c)
-    {
-        air.temperature_change_c = end - start;
-    }
-    let material: Vec<(f64, f64)> = c
-        .temperature_sensors
-        .iter()
-        .filter(|s| s.kind == SensorKind::Material)
-        .filter_map(|s| Some((s.start_c?, s.end_c?)))
-        .collect();
-    setup.thermal.set_from_sensors(&material);
-    if let Some(alpha) = c.nde.as_ref().and_then(|n| n.coefficient_um_per_m_c) {
-        setup.thermal.coefficient_um_per_m_c = alpha;
-    }
-    setup.thermal.nde_corrected = nde.is_some() || c.nde.as_ref().is_some_and(|n| n.corrected);
-    if let Some(n) = nde {
-        setup.thermal.mean_c = Some(n.mean_temperature_c);
-        // Corrected reading by reading: the change during the test is corrected too.
-        if has_material_temperatures(data) {
-            setup.thermal.change_c = 0.0;
-        }
-    }
-    setup
-}
-
-/// What the campaign states of the instrument over its kind's defaults: its accuracy (a
-/// specification's limits, or a certificate's U with its k), resolution, dead path and
-/// beam walk.
-fn stated_instrument(setup: &mut Setup, i: &crate::campaign::Instrument) {
-    let ins = &mut setup.instrument;
-    if i.accuracy_fixed.is_some() || i.accuracy_ppm.is_some() {
-        ins.calibration_fixed = i.accuracy_fixed.unwrap_or(0.0);
-        ins.calibration_ppm = i.accuracy_ppm.unwrap_or(0.0);
-    }
-    if let Some(k) = i.accuracy_k {
-        ins.calibration_distribution = Distribution::Normal { k };
-    }
-    if let Some(r) = i.resolution {
-        ins.resolution = r;
-    }
-    if let Some(d) = i.dead_path_mm {
-        setup.dead_path_mm = d;
-    }
-    if let Some(w) = i.beam_walk_mm {
-        setup.misalignment_offset_mm = w;
-    }
-}
-
-/// Whether the file gives a material temperature per reading (`temp_<name>_c` columns
-/// other than the air's), as the NDE correction reads them.
-fn has_material_temperatures(data: &AxisData) -> bool {
-    data.temperature_names
-        .iter()
-        .any(|n| !n.to_ascii_lowercase().contains("air"))
-}
-
-/// What the test-plan rules need to know of an axis from the campaign.
-pub fn plan_context(axis: &AxisSpec) -> PlanContext {
-    PlanContext {
-        kind: axis.raw.kind,
-        standard: axis.standard,
-        axis_travel: axis.raw.travel,
-        measurement_travel: axis.raw.measurement_travel,
-        pitch: axis.raw.pitch,
-        planned: None,
-        unstated: None,
-    }
-}
-
-/// The planned test `raw` names, read as the rules compare it (or why it cannot be read).
-fn planned(raw: &crate::campaign::model::PlanRaw, kind: AxisKind, files: &Files) -> rules::Planned {
-    let read = || -> Result<(Vec<f64>, usize), String> {
-        let path = files.resolve(&raw.file)?;
-        let text = files.read_to_string(&path).map_err(|e| e.to_string())?;
-        let plan = crate::plan::file::from_yaml(&text, &raw.file).map_err(|e| e.to_string())?;
-        if plan.axis.kind != kind {
-            return Err(format!(
-                "it plans a {} axis, this one is {kind}",
-                plan.axis.kind
-            ));
-        }
-        Ok((plan.targets, plan.runs))
-    };
-    rules::Planned {
-        file: raw.file.clone(),
-        read: read(),
-        tolerance: raw.tolerance.unwrap_or(0.01),
-    }
-}
-
-/// Applies the NDE correction when the campaign gives the coefficient and temperatures
-/// and the data are not already corrected (clause 3.1).
-pub fn apply_nde(axis: &AxisSpec, data: AxisData) -> (AxisData, Option<NdeCorrection>) {
-    let Some(nde) = &axis.raw.conditions.nde else {
-        return (data, None);
-    };
-    let Some(alpha) = nde.coefficient_um_per_m_c else {
-        return (data, None);
-    };
-    if nde.corrected {
-        return (data, None);
-    }
-    let temperature = if has_material_temperatures(&data) {
-        Some(nde::Temperature::PerReading)
-    } else {
-        let readings: Vec<f64> = axis
-            .raw
-            .conditions
-            .temperature_sensors
-            .iter()
-            .filter(|s| s.kind == SensorKind::Material)
-            .flat_map(|s| [s.start_c, s.end_c])
-            .flatten()
-            .collect();
-        (!readings.is_empty()).then(|| {
-            nde::Temperature::Constant(readings.iter().sum::<f64>() / readings.len() as f64)
-        })
-    };
-    match temperature.and_then(|t| nde::correct(&data, alpha, t)) {
-        Some((corrected, info)) => (corrected, Some(info)),
-        None => (data, None),
     }
 }
 

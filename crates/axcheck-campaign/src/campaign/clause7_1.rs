@@ -23,7 +23,7 @@
 //! was used.
 
 use super::AxisSpec;
-use super::model::{Conditions, Instrument, MachineInfo, SensorKind};
+use super::model::{Conditions, InstrumentEntry, MachineInfo, SensorKind};
 use crate::uncertainty::InstrumentKind;
 use crate::units::AxisKind;
 
@@ -119,7 +119,7 @@ fn air_span(c: &Conditions) -> bool {
 /// Whether the instrument measures through air, so that air pressure and humidity set its
 /// wavelength (a laser or angular interferometer; the axis kind's usual one when the
 /// campaign names none).
-fn through_air(instrument: Option<&Instrument>, kind: AxisKind) -> bool {
+fn through_air(instrument: Option<&InstrumentEntry>, kind: AxisKind) -> bool {
     let named = instrument
         .and_then(|i| (i.kind).or_else(|| i.name.as_deref().and_then(InstrumentKind::from_name)));
     let usual = match kind {

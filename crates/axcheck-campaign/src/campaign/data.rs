@@ -4,7 +4,7 @@
 //! of that folder with `..` is refused unless the campaign sets `allow_outside_paths:
 //! true`: a campaign copied between machines should not silently read other files.
 
-use crate::files::Root;
+use crate::files::{PathRefused, Root};
 use crate::yaml::describe;
 use std::path::PathBuf;
 
@@ -96,23 +96,44 @@ impl DataSource {
 
     /// The files, resolved in the campaign's folder `root` and sorted (a glob's matches by
     /// path).
-    pub fn resolve(&self, root: &Root) -> Result<Vec<PathBuf>, String> {
+    pub fn resolve(&self, root: &Root) -> Result<Vec<PathBuf>, DataFilesError> {
         match self {
-            DataSource::Book { file, .. } => root.written(file).map(|p| vec![p]),
-            DataSource::Files(files) => files.iter().map(|f| root.resolve(f)).collect(),
+            DataSource::Book { file, .. } => Ok(vec![root.written(file)?]),
+            DataSource::Files(files) => Ok(files
+                .iter()
+                .map(|f| root.resolve(f))
+                .collect::<Result<_, _>>()?),
             DataSource::Glob { dir, glob } => glob_files(root, dir, glob),
         }
     }
 }
 
+/// Why a test's data files cannot be found.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DataFilesError {
+    #[error(transparent)]
+    Refused(#[from] PathRefused),
+    #[error("data folder {} does not exist", .0.display())]
+    NoFolder(PathBuf),
+    #[error("bad glob `{glob}`: {reason}")]
+    BadGlob { glob: String, reason: String },
+    #[error("cannot list {}: {reason}", folder.display())]
+    CannotList { folder: PathBuf, reason: String },
+    #[error("no file in {} matches `{glob}`", folder.display())]
+    NoMatch { folder: PathBuf, glob: String },
+}
+
 /// Every file under `root/dir` whose path relative to it matches `glob`, sorted.
-fn glob_files(root: &Root, dir: &str, glob: &str) -> Result<Vec<PathBuf>, String> {
+fn glob_files(root: &Root, dir: &str, glob: &str) -> Result<Vec<PathBuf>, DataFilesError> {
     let folder = root.resolve(dir)?;
     if !folder.is_dir() {
-        return Err(format!("data folder {} does not exist", folder.display()));
+        return Err(DataFilesError::NoFolder(folder));
     }
     let matcher = globset::Glob::new(glob)
-        .map_err(|e| format!("bad glob `{glob}`: {e}"))?
+        .map_err(|e| DataFilesError::BadGlob {
+            glob: glob.to_string(),
+            reason: e.to_string(),
+        })?
         .compile_matcher();
     let hidden_ok = glob.starts_with('.');
     let mut found = Vec::new();
@@ -122,7 +143,10 @@ fn glob_files(root: &Root, dir: &str, glob: &str) -> Result<Vec<PathBuf>, String
         .follow_links(false)
         .sort_by_file_name()
     {
-        let entry = entry.map_err(|e| format!("cannot list {}: {e}", folder.display()))?;
+        let entry = entry.map_err(|e| DataFilesError::CannotList {
+            folder: folder.clone(),
+            reason: e.to_string(),
+        })?;
         if !crate::files::may_match(&entry) {
             continue;
         }
@@ -135,7 +159,10 @@ fn glob_files(root: &Root, dir: &str, glob: &str) -> Result<Vec<PathBuf>, String
         }
     }
     if found.is_empty() {
-        return Err(format!("no file in {} matches `{glob}`", folder.display()));
+        return Err(DataFilesError::NoMatch {
+            folder,
+            glob: glob.to_string(),
+        });
     }
     found.sort();
     root.check_found(&found)?;
@@ -188,7 +215,7 @@ fn from_map(map: &serde_norway::Mapping) -> Result<DataSource, BadData> {
         None => None,
         Some(text) => Some(
             crate::measurement::Source::parse(&text)
-                .map_err(|message| BadData::value(".reference", message))?,
+                .map_err(|unknown| BadData::value(".reference", unknown.to_string()))?,
         ),
     };
     match (dir, glob, file, sheet, reference) {

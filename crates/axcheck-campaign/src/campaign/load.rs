@@ -7,7 +7,7 @@ use super::{
 };
 use crate::evaluate::StandardId;
 use crate::units::{AxisKind, Travel};
-use crate::yaml::{self, Located, LocationIndex, deserialize_at};
+use crate::yaml::{self, Located, LocationIndex, YamlError, deserialize_at};
 use serde_norway::Value;
 use std::sync::Arc;
 
@@ -23,7 +23,7 @@ pub(super) fn machine(
 ) -> Machine {
     let info = match deserialize_at::<MachineInfo>(value, base, index) {
         Ok(info) => info,
-        Err(e) => return broken_machine(value, base, e.in_file(file).to_string()),
+        Err(e) => return broken_machine(value, base, e.in_file(file)),
     };
     if let Some(name) = &info.controller
         && crate::compensate::controllers::find(name).is_none()
@@ -33,7 +33,7 @@ pub(super) fn machine(
         let path = format!("{base}.controller");
         let message = format!("{path}: unknown controller `{name}`{hint}");
         let located = Located::new(index.value(&path), message);
-        return broken_machine(value, base, located.in_file(file).to_string());
+        return broken_machine(value, base, located.in_file(file));
     }
     let axes = match value.get("axes") {
         Some(Value::Sequence(items)) => items
@@ -55,8 +55,7 @@ pub(super) fn machine(
                     yaml::describe(other)
                 ),
             )
-            .in_file(file)
-            .to_string()),
+            .in_file(file)),
         }],
     };
     Machine { info, axes }
@@ -88,15 +87,13 @@ fn comp_file_type_fits(
     });
     let message = format!("{path}: LinuxCNC's COMP_FILE_TYPE, but the machine {has}");
     AxisEntry {
-        spec: Err(Located::new(index.key(&path), message)
-            .in_file(file)
-            .to_string()),
+        spec: Err(Located::new(index.key(&path), message).in_file(file)),
         ..entry
     }
 }
 
 /// A machine that cannot be read: each of its axes reports why (or one entry if none).
-fn broken_machine(value: &Value, base: &str, message: String) -> Machine {
+fn broken_machine(value: &Value, base: &str, error: YamlError) -> Machine {
     let id = value
         .get("id")
         .and_then(|v| v.as_str())
@@ -121,7 +118,7 @@ fn broken_machine(value: &Value, base: &str, message: String) -> Machine {
             .into_iter()
             .map(|name| AxisEntry {
                 name,
-                spec: Err(message.clone()),
+                spec: Err(error.clone()),
             })
             .collect(),
     }
@@ -165,7 +162,7 @@ fn axis(
     });
     AxisEntry {
         name: axis_name(value, a),
-        spec: spec.map(Arc::new).map_err(|e| e.in_file(file).to_string()),
+        spec: spec.map(Arc::new).map_err(|e| e.in_file(file)),
     }
 }
 

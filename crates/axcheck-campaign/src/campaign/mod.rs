@@ -9,9 +9,10 @@ pub mod data;
 mod file_info;
 mod load;
 pub mod model;
+pub mod stages;
 
 pub use model::{
-    Air, AxisRaw, CampaignInfo, Conditions, Instrument, MachineInfo, Nde, OutputOptions,
+    Air, AxisRaw, CampaignInfo, Conditions, InstrumentEntry, MachineInfo, Nde, OutputOptions,
     SensorKind, TemperatureSensor, Unjudged,
 };
 
@@ -62,7 +63,7 @@ pub struct AxisEntry {
     /// Axis name (or `axis N` when even the name could not be read).
     pub name: String,
     /// Shared: each test of the axis holds it (a fleet's gate copied it for each).
-    pub spec: Result<Arc<AxisSpec>, String>,
+    pub spec: Result<Arc<AxisSpec>, crate::yaml::YamlError>,
 }
 
 /// A validated axis.
@@ -283,7 +284,7 @@ fn check_horizon(info: &CampaignInfo, index: &LocationIndex) -> Result<(), Locat
     let Some(years) = info.trend_horizon_years else {
         return Ok(());
     };
-    crate::trend::fit::Options::with_horizon(years)
+    crate::trend::fit::TrendOptions::with_horizon(years)
         .map(|_| ())
         .map_err(|e| {
             let at = index.value("campaign.trend_horizon_years");
@@ -314,7 +315,7 @@ fn history_dir(
     crate::files::Root::campaign(dir, info.allow_outside_paths)
         .resolve(history)
         .map(Some)
-        .map_err(located)
+        .map_err(|refused| located(refused.to_string()))
 }
 
 /// The standard named at `path`.
@@ -393,12 +394,12 @@ machines:
         );
         let c = parse(&text).unwrap();
         let axes: Vec<&AxisEntry> = c.axes().map(|(_, a)| a).collect();
-        let e = axes[0].spec.as_ref().unwrap_err();
+        let e = axes[0].spec.as_ref().unwrap_err().to_string();
         assert!(e.starts_with("plant/campaign.yaml:12:9: machines[0].axes[0].tolerance: unknown key `tolerance` (did you mean `tolerances`?)"), "{e}");
         assert!(axes[1].spec.is_ok() && axes[2].spec.is_ok());
         let text = GOOD.replace("kind: rotary", "kind: rotory");
         let c = parse(&text).unwrap();
-        let e = c.machines[0].axes[2].spec.as_ref().unwrap_err();
+        let e = c.machines[0].axes[2].spec.as_ref().unwrap_err().to_string();
         assert_eq!(
             e,
             "plant/campaign.yaml:18:15: machines[0].axes[2].kind: unknown kind `rotory` (did you mean `rotary`?); expected linear or rotary"
@@ -462,7 +463,7 @@ machines:
         let c = parse(&text).unwrap();
         assert_eq!(c.machines[0].axes.len(), 3);
         for a in &c.machines[0].axes {
-            let e = a.spec.as_ref().unwrap_err();
+            let e = a.spec.as_ref().unwrap_err().to_string();
             assert!(
                 e.contains("4:5") && e.contains("did you mean `model`"),
                 "{e}"

@@ -351,7 +351,7 @@ impl<'de> Deserialize<'de> for ActiveRaw {
 pub struct Conditions {
     /// Measuring instrument and its position (4.3.1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub instrument: Option<Instrument>,
+    pub instrument: Option<InstrumentEntry>,
     /// Test equipment: maker, model and serial of laser head, optics, sensors.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub equipment: Vec<String>,
@@ -405,7 +405,7 @@ pub struct Conditions {
 
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Instrument {
+pub struct InstrumentEntry {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
     /// What kind of instrument (it sets the uncertainty budget's defaults); guessed from

@@ -16,8 +16,8 @@ mod root;
 #[cfg(windows)]
 pub mod windows;
 
-pub use real::{Outside, real_path};
-pub use root::{Root, may_match};
+pub use real::{OutsidePath, real_path};
+pub use root::{PathRefused, Root, may_match};
 
 use std::fs::{File, Metadata};
 use std::io::Read;

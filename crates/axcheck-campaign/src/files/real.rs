@@ -18,7 +18,7 @@ pub(super) fn folder(base: &Path) -> &Path {
 
 /// A path whose real path leaves its folder.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Outside {
+pub struct OutsidePath {
     /// The path as written (relative to the folder).
     pub path: PathBuf,
     /// The link on the way that leads out, when it is not the path itself.
@@ -31,7 +31,7 @@ pub struct Outside {
     pub folder: &'static str,
 }
 
-impl std::fmt::Display for Outside {
+impl std::fmt::Display for OutsidePath {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let (path, real, root) = (
             self.path.display(),
@@ -60,7 +60,7 @@ pub fn check_real(
     root: Option<&Path>,
     relative: &Path,
     folder_name: &'static str,
-) -> Result<(), Box<Outside>> {
+) -> Result<(), Box<OutsidePath>> {
     let base = folder(base);
     // Most paths are plain: no link on the way, no `..`; then they stay inside, whatever
     // the folder's real path (nothing is resolved or copied for them).
@@ -90,7 +90,7 @@ pub fn check_real(
             && !link_real.starts_with(&root)
         {
             let through = (prefix.as_path() != relative).then_some(prefix);
-            return Err(Box::new(Outside {
+            return Err(Box::new(OutsidePath {
                 path: relative.to_path_buf(),
                 through,
                 real: link_real,
@@ -99,7 +99,7 @@ pub fn check_real(
             }));
         }
     }
-    Err(Box::new(Outside {
+    Err(Box::new(OutsidePath {
         path: relative.to_path_buf(),
         through: None,
         real,
@@ -167,7 +167,9 @@ mod tests {
         relative: &str,
         allow_outside: bool,
     ) -> Result<std::path::PathBuf, String> {
-        Root::campaign(base, allow_outside).resolve(relative)
+        Root::campaign(base, allow_outside)
+            .resolve(relative)
+            .map_err(|refused| refused.to_string())
     }
 
     #[test]

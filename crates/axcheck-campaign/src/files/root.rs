@@ -12,7 +12,7 @@
 //!   decide only what it refuses.
 
 use super::beneath::Handle;
-use super::real::{Outside, check_real, folder, real_path};
+use super::real::{OutsidePath, check_real, folder, real_path};
 use super::{FileError, Opened};
 use std::fs::File;
 use std::path::{Component, Path, PathBuf};
@@ -20,6 +20,23 @@ use std::sync::Arc;
 
 /// What to tell the user when a campaign path leads outside.
 const CAMPAIGN_HINT: &str = "set campaign.allow_outside_paths: true to allow it";
+
+/// A path a campaign names that its folder's rules refuse.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PathRefused {
+    #[error("path `{}` contains a NUL byte", .0.escape_debug())]
+    Nul(String),
+    #[error("path `{0}` is absolute; paths in a campaign are relative to its folder ({hint})", hint = CAMPAIGN_HINT)]
+    Absolute(String),
+    /// Windows: `C:data\x.csv` is relative to drive C's current folder, not this one.
+    #[error("path `{0}` names a drive; paths in a campaign are relative to its folder ({hint})", hint = CAMPAIGN_HINT)]
+    Drive(String),
+    #[error("path `{0}` leaves the campaign's folder; {hint}", hint = CAMPAIGN_HINT)]
+    Leaves(String),
+    /// Followed through its links, the path leaves the folder's real path.
+    #[error("{0}; {hint}", hint = CAMPAIGN_HINT)]
+    Outside(Box<OutsidePath>),
+}
 
 /// A folder and its rules.
 #[derive(Debug, Clone)]
@@ -74,36 +91,29 @@ impl Root {
 
     /// `dir/relative` under the written rule and, unless outside paths are allowed, the
     /// real-path rule (the rule for data files, specs, tables and the history).
-    pub fn resolve(&self, relative: &str) -> Result<PathBuf, String> {
+    pub fn resolve(&self, relative: &str) -> Result<PathBuf, PathRefused> {
         let path = self.written(relative)?;
         if !self.allow_outside {
             self.check(Path::new(relative))
-                .map_err(|outside| format!("{outside}; {CAMPAIGN_HINT}"))?;
+                .map_err(PathRefused::Outside)?;
         }
         Ok(path)
     }
 
     /// `dir/relative` under the written rule only: absolute paths and paths that leave the
     /// folder are refused unless outside paths are allowed.
-    pub fn written(&self, relative: &str) -> Result<PathBuf, String> {
+    pub fn written(&self, relative: &str) -> Result<PathBuf, PathRefused> {
         if relative.contains('\0') {
-            return Err(format!(
-                "path `{}` contains a NUL byte",
-                relative.escape_debug()
-            ));
+            return Err(PathRefused::Nul(relative.to_string()));
         }
         let rel = Path::new(relative);
         if !self.allow_outside {
             if rel.is_absolute() || rel.has_root() {
-                return Err(format!(
-                    "path `{relative}` is absolute; paths in a campaign are relative to its folder ({CAMPAIGN_HINT})"
-                ));
+                return Err(PathRefused::Absolute(relative.to_string()));
             }
             // Windows: `C:data\x.csv` is relative to drive C's current folder, not this one.
             if let Some(Component::Prefix(_)) = rel.components().next() {
-                return Err(format!(
-                    "path `{relative}` names a drive; paths in a campaign are relative to its folder ({CAMPAIGN_HINT})"
-                ));
+                return Err(PathRefused::Drive(relative.to_string()));
             }
             let mut depth: i64 = 0;
             for c in rel.components() {
@@ -113,9 +123,7 @@ impl Root {
                     _ => {}
                 }
                 if depth < 0 {
-                    return Err(format!(
-                        "path `{relative}` leaves the campaign's folder; {CAMPAIGN_HINT}"
-                    ));
+                    return Err(PathRefused::Leaves(relative.to_string()));
                 }
             }
         }
@@ -124,7 +132,7 @@ impl Root {
 
     /// The real-path rule for `relative` (a path inside the folder as written).
     /// Boxed: the message's four paths are large (144 bytes on Windows).
-    pub fn check(&self, relative: &Path) -> Result<(), Box<Outside>> {
+    pub fn check(&self, relative: &Path) -> Result<(), Box<OutsidePath>> {
         // A path beneath the folder with no link on its way stays inside: one system call.
         if self.handle.as_ref().is_some_and(|h| h.plain(relative)) {
             return Ok(());
@@ -134,14 +142,13 @@ impl Root {
 
     /// The real-path rule for each file a walk found under the folder (unless outside
     /// paths are allowed).
-    pub fn check_found(&self, found: &[PathBuf]) -> Result<(), String> {
+    pub fn check_found(&self, found: &[PathBuf]) -> Result<(), PathRefused> {
         if self.allow_outside {
             return Ok(());
         }
         for path in found {
             let relative = path.strip_prefix(&self.dir).unwrap_or(path);
-            self.check(relative)
-                .map_err(|outside| format!("{outside}; {CAMPAIGN_HINT}"))?;
+            self.check(relative).map_err(PathRefused::Outside)?;
         }
         Ok(())
     }
@@ -202,16 +209,23 @@ mod tests {
         assert!(
             root.written("/etc/passwd")
                 .unwrap_err()
+                .to_string()
                 .contains("absolute")
         );
         assert!(
             root.written("../x.csv")
                 .unwrap_err()
+                .to_string()
                 .contains("leaves the campaign's folder")
         );
         assert!(root.written("a/../../x").is_err());
         assert!(root.written("a/../b").is_ok());
-        assert!(root.written("x\0y").unwrap_err().contains("NUL"));
+        assert!(
+            root.written("x\0y")
+                .unwrap_err()
+                .to_string()
+                .contains("NUL")
+        );
         let open = Root::campaign(Path::new("camp"), true);
         assert_eq!(
             open.written("/data/x.csv").unwrap(),

@@ -6,4 +6,4 @@
 pub use axcheck_core::judge::*;
 
 mod spec;
-pub use spec::{BUILTIN_SPECS, Band, Spec, check_tolerances, limits};
+pub use spec::{BUILTIN_SPECS, Band, NoBand, Spec, check_tolerances, limits};

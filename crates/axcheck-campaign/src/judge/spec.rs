@@ -175,24 +175,47 @@ pub fn check_tolerances<'a>(
     Ok(tolerances)
 }
 
-/// Where the spec lacks a band for the test and what to do: `specs/house.yaml:3: spec
+/// A spec without a band for the test's measurement travel: `specs/house.yaml:3: spec
 /// `house` has no linear band for a measurement travel of 1200 mm (its last ends at 1000
 /// mm): add one …`.
-fn no_band(spec: &Spec, kind: AxisKind, travel: f64) -> String {
-    let unit = kind.position_unit();
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error(
+    "{at}: spec `{spec}` has no {kind} band for a measurement travel of {travel} {unit}{last}: add a `{kind}` band with `up_to` of at least {travel} (or none) to the spec, or give the axis its own `tolerances`",
+    unit = kind.position_unit(),
+    last = last_band(*kind, *last_up_to)
+)]
+pub struct NoBand {
+    /// Where the spec's bands of this kind are written (`specs/house.yaml:3`).
+    pub at: String,
+    pub spec: String,
+    pub kind: AxisKind,
+    /// The test's measurement travel, mm or deg.
+    pub travel: f64,
+    /// Where the spec's last band of this kind ends; `None`: it has none, or its last
+    /// has no end.
+    pub last_up_to: Option<f64>,
+}
+
+/// ` (its last ends at 1000 mm)`, or ` (it has no `linear` bands)`.
+fn last_band(kind: AxisKind, last_up_to: Option<f64>) -> String {
+    match last_up_to {
+        Some(u) => format!(" (its last ends at {u} {})", kind.position_unit()),
+        None => format!(" (it has no `{kind}` bands)"),
+    }
+}
+
+fn no_band(spec: &Spec, kind: AxisKind, travel: f64) -> NoBand {
     let bands = match kind {
         AxisKind::Linear => &spec.linear,
         AxisKind::Rotary => &spec.rotary,
     };
-    let last = match bands.last().and_then(|b| b.up_to) {
-        Some(u) => format!(" (its last ends at {u} {unit})"),
-        None => format!(" (it has no `{kind}` bands)"),
-    };
-    format!(
-        "{}: spec `{}` has no {kind} band for a measurement travel of {travel} {unit}{last}: add a `{kind}` band with `up_to` of at least {travel} (or none) to the spec, or give the axis its own `tolerances`",
-        spec.origin.at(kind),
-        spec.name
-    )
+    NoBand {
+        at: spec.origin.at(kind),
+        spec: spec.name.clone(),
+        kind,
+        travel,
+        last_up_to: bands.last().and_then(|b| b.up_to),
+    }
 }
 
 /// The limits of a test of `kind` over `travel`: the spec's band (if any) overridden by
@@ -202,7 +225,7 @@ pub fn limits(
     overrides: &Tolerances,
     kind: AxisKind,
     travel: f64,
-) -> Result<Limits, String> {
+) -> Result<Limits, NoBand> {
     let mut limits = Limits::default();
     if let Some(spec) = spec {
         let band = spec

@@ -18,7 +18,7 @@
 //! written with a leading dot (`.00742`, from `bc`).
 
 use super::ecmc_app::error;
-use super::reported::{Family, Quantity, Reported, ToolResults};
+use super::reported::{Family, Reported, ReportedQuantity, ToolResults};
 use super::{AxisData, Lines, RawReading, ReadError};
 use crate::units::{AxisKind, Direction};
 use std::io::BufRead;
@@ -31,19 +31,19 @@ const TOOL: &str = "ecmc ISO 230-2 scripts (2021)";
 
 /// The results the scripts print, and the quantity each names (by the report's own
 /// words: `R_fwd = Forward unidirectional positioning repeatability of an axis`).
-const RESULTS: &[(&str, Quantity)] = &[
-    ("B", Quantity::Parameter("B")),
-    ("B_avg", Quantity::Parameter("B_mean")),
-    ("R_fwd", Quantity::Parameter("R_up")),
-    ("R_bwd", Quantity::Parameter("R_down")),
-    ("R", Quantity::Parameter("R")),
-    ("E_fwd", Quantity::Parameter("E_up")),
-    ("E_bwd", Quantity::Parameter("E_down")),
-    ("E", Quantity::Parameter("E")),
-    ("M", Quantity::Parameter("M")),
-    ("A_fwd", Quantity::Parameter("A_up")),
-    ("A_bwd", Quantity::Parameter("A_down")),
-    ("A", Quantity::Parameter("A")),
+const RESULTS: &[(&str, ReportedQuantity)] = &[
+    ("B", ReportedQuantity::Parameter("B")),
+    ("B_avg", ReportedQuantity::Parameter("B_mean")),
+    ("R_fwd", ReportedQuantity::Parameter("R_up")),
+    ("R_bwd", ReportedQuantity::Parameter("R_down")),
+    ("R", ReportedQuantity::Parameter("R")),
+    ("E_fwd", ReportedQuantity::Parameter("E_up")),
+    ("E_bwd", ReportedQuantity::Parameter("E_down")),
+    ("E", ReportedQuantity::Parameter("E")),
+    ("M", ReportedQuantity::Parameter("M")),
+    ("A_fwd", ReportedQuantity::Parameter("A_up")),
+    ("A_bwd", ReportedQuantity::Parameter("A_down")),
+    ("A", ReportedQuantity::Parameter("A")),
 ];
 
 /// Whether `head` starts as such a report.

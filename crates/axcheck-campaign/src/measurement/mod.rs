@@ -17,7 +17,7 @@ pub mod wide;
 pub mod xlsx;
 
 pub use axcheck_core::measurement::*;
-pub use ecmc_app::Source;
+pub use ecmc_app::{Source, UnknownSource};
 pub use info::FileInfo;
 pub use layout::{Layout, ReadTest, Recognised};
 pub use table::TableKind;

@@ -7,8 +7,8 @@ mod yaml;
 
 // The model's names, where the simulator's users found them before it had its own module.
 pub use crate::axis_model::{
-    Cycle, ErrorModel, Outlier, PeriodicTerm, Simulation, Step, TargetSpacing, TestPlan, Visit,
-    model, plan, rng,
+    Cycle, ErrorModel, InvalidSimulation, PeriodicTerm, PlantedOutlier, Simulation, Step,
+    TargetSpacing, TestPlan, Visit, model, plan, rng,
 };
 
 /// A simulation file that cannot be used: `file:line:column: message`.
@@ -23,7 +23,7 @@ pub trait SimulationFile: Sized {
     fn to_yaml(&self) -> String;
     /// [`Simulation::validate`] with the keys spelled as the written file spells them
     /// (`plan.targets_mm`), for a model made in code before it is written.
-    fn validate_as_written(&self) -> Result<(), String>;
+    fn validate_as_written(&self) -> Result<(), InvalidSimulation>;
 }
 
 /// The text of a simulation file, for [`crate::diagnose::Diagnosis::json`].
@@ -41,7 +41,7 @@ impl SimulationFile for Simulation {
         let sim: Simulation =
             crate::yaml::deserialize_spelled(&value, "", &index, &spell).map_err(fail)?;
         sim.validate()
-            .map_err(|message| fail(yaml::locate(&message, kind, &index)))?;
+            .map_err(|invalid| fail(yaml::locate(&invalid.0, kind, &index)))?;
         Ok(sim)
     }
 
@@ -51,8 +51,9 @@ impl SimulationFile for Simulation {
         serde_norway::to_string(&value).expect("a YAML value serialises")
     }
 
-    fn validate_as_written(&self) -> Result<(), String> {
-        self.validate().map_err(|m| yaml::respell(&m, self.kind).0)
+    fn validate_as_written(&self) -> Result<(), InvalidSimulation> {
+        self.validate()
+            .map_err(|invalid| InvalidSimulation(yaml::respell(&invalid.0, self.kind).0))
     }
 }
 

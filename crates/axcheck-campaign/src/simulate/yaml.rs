@@ -96,7 +96,7 @@ const PERIODIC: &[Key] = &[
     plain("phase_deg"),
 ];
 
-/// An entry of `model.outliers` ([`crate::axis_model::Outlier`]).
+/// An entry of `model.outliers` ([`crate::axis_model::PlantedOutlier`]).
 const OUTLIER: &[Key] = &[
     plain("run"),
     plain("direction"),
@@ -383,7 +383,7 @@ fn rename(value: Value, ctx: Ctx, kind: AxisKind) -> Value {
 mod tests {
     use super::*;
     use crate::axis_model::{
-        ErrorModel, Outlier, PeriodicTerm, Simulation, TargetSpacing, TestPlan,
+        ErrorModel, PeriodicTerm, PlantedOutlier, Simulation, TargetSpacing, TestPlan,
     };
     use crate::yaml::field_names;
 
@@ -402,7 +402,7 @@ mod tests {
             Ctx::Top => field_names::<Simulation>(),
             Ctx::Model => field_names::<ErrorModel>(),
             Ctx::Periodic => field_names::<PeriodicTerm>(),
-            Ctx::Outlier => field_names::<Outlier>(),
+            Ctx::Outlier => field_names::<PlantedOutlier>(),
             Ctx::Plan => field_names::<TestPlan>(),
             Ctx::Spacing => field_names::<TargetSpacing>(),
         }

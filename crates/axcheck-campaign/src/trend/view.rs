@@ -1,6 +1,6 @@
 //! The trends as `trend --json` and as CSV: one entry (row) per series, in the order given.
 
-use super::{Point, Series, Trend};
+use super::{Inspection, Series, Trend};
 use crate::evaluate::catalogue::CATALOGUE;
 use chrono::NaiveDate;
 use serde::Serialize;
@@ -18,7 +18,7 @@ pub struct AxisTrend<'a> {
     pub symbol: Option<&'static str>,
     pub unit: &'a str,
     pub limit: Option<f64>,
-    pub points: &'a [Point],
+    pub points: &'a [Inspection],
     pub slope_per_year: Option<f64>,
     pub slope_se: Option<f64>,
     pub forecast_date: Option<NaiveDate>,
@@ -151,7 +151,7 @@ fn quote(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trend::{Options, fit};
+    use crate::trend::{TrendOptions, fit};
 
     fn example() -> Series {
         let date = |y| NaiveDate::from_ymd_opt(y, 1, 1).unwrap();
@@ -163,11 +163,11 @@ mod tests {
             unit: "um".into(),
             limit: Some(2.0),
             points: vec![
-                Point {
+                Inspection {
                     date: date(2023),
                     value: 1.0,
                 },
-                Point {
+                Inspection {
                     date: date(2024),
                     value: 2.5,
                 },
@@ -178,7 +178,7 @@ mod tests {
     #[test]
     fn json_has_the_issues_keys() {
         let series = example();
-        let trend = fit(&series, &Options::default());
+        let trend = fit(&series, &TrendOptions::default());
         let value: serde_json::Value = serde_json::from_str(&json([(&series, &trend)])).unwrap();
         let axis = &value["axes"][0];
         let keys: Vec<&str> = axis
@@ -215,7 +215,7 @@ mod tests {
     #[test]
     fn csv_has_one_row_per_series() {
         let series = example();
-        let trend = fit(&series, &Options::default());
+        let trend = fit(&series, &TrendOptions::default());
         let text = csv([(&series, &trend)]);
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines[0], CSV_COLUMNS.join(","));

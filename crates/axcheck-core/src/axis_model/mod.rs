@@ -11,7 +11,7 @@ pub mod model;
 pub mod plan;
 pub mod rng;
 
-pub use model::{ErrorModel, Outlier, PeriodicTerm};
+pub use model::{ErrorModel, PeriodicTerm, PlantedOutlier};
 pub use plan::{Cycle, Step, TargetSpacing, TestPlan, Visit};
 
 use crate::measurement::{AxisData, RawReading};
@@ -35,18 +35,28 @@ pub struct Simulation {
     pub plan: TestPlan,
 }
 
+/// A value of a simulation that cannot be simulated: the key as the file writes it
+/// (`model.scatter`, `plan.targets.jitter`) and what is wrong with it, in one message
+/// that the simulation files' reader places at the key's line.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct InvalidSimulation(pub String);
+
 /// Decimals kept in simulated deviations (as the CSV writer writes them).
 const DECIMALS: i32 = 4;
 
 impl Simulation {
-    pub fn validate(&self) -> Result<(), String> {
-        self.plan.validate()?;
+    /// Checks values a simulation cannot use: the plan's first, then the model's.
+    pub fn validate(&self) -> Result<(), InvalidSimulation> {
+        self.plan.validate().map_err(InvalidSimulation)?;
         let m = match (&self.plan.target_list, &self.plan.targets) {
             (Some(l), _) => l.len(),
             (None, Some(t)) => t.count,
             _ => 0,
         };
-        self.model.validate(self.plan.runs, m)
+        self.model
+            .validate(self.plan.runs, m)
+            .map_err(InvalidSimulation)
     }
 
     /// Runs the simulation with `seed` (the file's seed unless overridden).

@@ -29,7 +29,7 @@ pub struct PeriodicTerm {
 /// One reading made an outlier on purpose.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Outlier {
+pub struct PlantedOutlier {
     /// Run j, 1-based.
     pub run: u32,
     pub direction: Direction,
@@ -116,7 +116,7 @@ pub struct ErrorModel {
     #[serde(alias = "scatter_knots_um", alias = "scatter_knots_arcsec")]
     pub scatter_knots: Vec<[f64; 2]>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub outliers: Vec<Outlier>,
+    pub outliers: Vec<PlantedOutlier>,
     /// Probability that a reading is an outlier.
     #[serde(skip_serializing_if = "is_zero")]
     pub outlier_rate: f64,
@@ -220,7 +220,7 @@ impl ErrorModel {
     }
 
     /// Checks values a simulation cannot use.
-    pub fn validate(&self, runs: usize, targets: usize) -> Result<(), String> {
+    pub(crate) fn validate(&self, runs: usize, targets: usize) -> Result<(), String> {
         let nonneg = [
             ("scatter", self.scatter),
             ("scatter_end", self.scatter_end.unwrap_or(0.0)),

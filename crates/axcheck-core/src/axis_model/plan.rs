@@ -135,7 +135,7 @@ pub struct Visit {
 
 impl TestPlan {
     /// Checks a plan before use.
-    pub fn validate(&self) -> Result<(), String> {
+    pub(crate) fn validate(&self) -> Result<(), String> {
         if self.runs == 0 {
             return Err("plan.runs must be at least 1".into());
         }

@@ -133,6 +133,15 @@ pub struct Compensated {
     pub predicted: Evaluation,
 }
 
+/// Why no table is written: the controller cannot hold it, its active table cannot be
+/// read, or the table it would be built on did not act as stated (`controller: reason`).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{controller}: {reason}")]
+pub struct NoTable {
+    pub controller: &'static str,
+    pub reason: String,
+}
+
 /// A test's compensation by its machine's controller.
 #[derive(Debug, Clone)]
 pub struct Compensation {
@@ -143,8 +152,8 @@ pub struct Compensation {
     pub mode: Mode,
     /// The active table's file, as named.
     pub active_file: Option<String>,
-    /// The table, or why the controller cannot hold it (`controller: reason`).
-    pub outcome: Result<Compensated, String>,
+    /// The table, or why the controller cannot hold it.
+    pub outcome: Result<Compensated, NoTable>,
     /// What the active state leaves unsure, and why the table may not achieve the
     /// prediction on the machine.
     pub warnings: Vec<Warning>,
@@ -161,7 +170,10 @@ impl Compensation {
             extension: controller.extension(),
             mode: Mode::Absolute,
             active_file: None,
-            outcome: Err(format!("{}: {reason}", controller.name())),
+            outcome: Err(NoTable {
+                controller: controller.name(),
+                reason: reason.to_string(),
+            }),
             warnings: Vec::new(),
             loading: Vec::new(),
         }
@@ -206,7 +218,10 @@ pub fn compensation(
                 file,
             })
         })
-        .map_err(|e| format!("{}: {e}", controller.name()));
+        .map_err(|e| NoTable {
+            controller: controller.name(),
+            reason: e.to_string(),
+        });
     if let Ok(c) = &outcome {
         warnings.extend(controller.unnamed_axis(&c.table).map(|message| Warning {
             key: "axis_placeholder",

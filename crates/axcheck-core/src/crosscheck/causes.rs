@@ -15,8 +15,8 @@
 //!   variance cut to 0.00001 mm² before the root (`bc`'s `scale=5`);
 //! - a standard deviation divided by n instead of n − 1 (ISO 230-2 2.16 divides by n − 1).
 
-use crate::evaluate::Evaluation;
-use crate::measurement::reported::{Family, Quantity};
+use crate::evaluate::{Evaluation, ParamKey};
+use crate::measurement::reported::{Family, ReportedQuantity};
 
 /// One target's statistics, as the formulas use them (µm or arcsec).
 struct Target {
@@ -79,7 +79,7 @@ const ALTERNATIVES: &[Alternative] = &[
         by: Some(Family::EcmcScripts),
         replaces: "R",
         cause: LARGER_R,
-        value: |c| Some(c.e.value("R_up")?.max(c.e.value("R_down")?)),
+        value: |c| Some(c.e.value(ParamKey::RUp)?.max(c.e.value(ParamKey::RDown)?)),
     },
     Alternative {
         by: None,
@@ -109,13 +109,13 @@ const ALTERNATIVES: &[Alternative] = &[
         by: Some(Family::EcmcScripts),
         replaces: "B_mean",
         cause: SWAPPED_B,
-        value: |c| Some(-c.e.value("B_mean")?),
+        value: |c| Some(-c.e.value(ParamKey::BMean)?),
     },
     Alternative {
         by: Some(Family::EcmcApp),
         replaces: "E",
         cause: M_PLUS_B,
-        value: |c| Some(c.e.value("M")? + mean_of(c.targets, |t| t.reversal.abs())?),
+        value: |c| Some(c.e.value(ParamKey::M)? + mean_of(c.targets, |t| t.reversal.abs())?),
     },
     Alternative {
         by: Some(Family::EcmcApp),
@@ -265,7 +265,7 @@ fn mean_of<T>(items: &[T], f: impl Fn(&T) -> f64) -> Option<f64> {
 /// What is compared: the tool, its value `theirs` for `quantity`, the roundings.
 pub struct Printed {
     pub family: Family,
-    pub quantity: Quantity,
+    pub quantity: ReportedQuantity,
     pub theirs: f64,
     pub rounding: f64,
 }
@@ -280,16 +280,18 @@ pub fn explain(printed: &Printed, e: &Evaluation) -> Option<String> {
         rounding,
     } = *printed;
     let key = match quantity {
-        Quantity::Parameter(key) => key,
-        Quantity::LargerOf(..) => "R_uni",
-        Quantity::NotIso(_) => return None,
+        ReportedQuantity::Parameter(key) => key,
+        ReportedQuantity::LargerOf(..) => "R_uni",
+        ReportedQuantity::NotIso(_) => return None,
     };
     let close = |x: f64| (x - theirs).abs() <= rounding * (1.0 + 1e-6);
     let swapped =
         (DIRECTED.iter()).find_map(|&(a, b)| (key == a).then_some(b).or((key == b).then_some(a)));
     if let Some(other) = swapped
         && family == Family::EcmcScripts
-        && e.value(other).is_some_and(close)
+        && ParamKey::parse(other)
+            .and_then(|k| e.value(k))
+            .is_some_and(close)
     {
         return Some(SWAPPED.to_string());
     }

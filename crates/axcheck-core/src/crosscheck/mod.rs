@@ -14,9 +14,9 @@
 
 pub mod causes;
 
-use crate::evaluate::{Evaluation, StandardId, evaluate};
+use crate::evaluate::{Evaluation, ParamKey, StandardId, evaluate};
 use crate::measurement::AxisData;
-use crate::measurement::reported::{Family, Quantity, Reported, ToolResults};
+use crate::measurement::reported::{Family, Reported, ReportedQuantity, ToolResults};
 use serde::Serialize;
 
 /// The comparison of one file's other-tool results with axcheck's.
@@ -95,7 +95,7 @@ pub fn compare(tool: &ToolResults, data: &AxisData) -> OtherTool {
     };
     for r in &tool.values {
         match r.quantity {
-            Quantity::NotIso(what) => out.not_compared.push(NotCompared {
+            ReportedQuantity::NotIso(what) => out.not_compared.push(NotCompared {
                 label: r.label.clone(),
                 printed: format!("{} {}", r.text, r.unit).trim_end().to_string(),
                 what,
@@ -119,16 +119,16 @@ pub fn compare(tool: &ToolResults, data: &AxisData) -> OtherTool {
 
 /// The most a quantity moves when each of n readings moves by up to `h`: a mean by h, a
 /// standard deviation by h·√(n/(n − 1)), a parameter by the sum of its parts' bounds.
-pub fn propagated(quantity: Quantity, h: f64, n: usize) -> f64 {
+pub fn propagated(quantity: ReportedQuantity, h: f64, n: usize) -> f64 {
     let n = n as f64;
     let s = match n > 1.0 {
         true => h * (n / (n - 1.0)).sqrt(),
         false => 0.0,
     };
     let key = match quantity {
-        Quantity::Parameter(key) => key,
-        Quantity::LargerOf(..) => "R_up",
-        Quantity::NotIso(_) => return 0.0,
+        ReportedQuantity::Parameter(key) => key,
+        ReportedQuantity::LargerOf(..) => "R_up",
+        ReportedQuantity::NotIso(_) => return 0.0,
     };
     match key {
         // Ranges and differences of two means.
@@ -144,14 +144,17 @@ pub fn propagated(quantity: Quantity, h: f64, n: usize) -> f64 {
 }
 
 /// axcheck's value of a quantity, and its name.
-fn ours(e: &Evaluation, quantity: Quantity) -> Option<(String, f64)> {
+fn ours(e: &Evaluation, quantity: ReportedQuantity) -> Option<(String, f64)> {
     match quantity {
-        Quantity::Parameter(key) => Some((key.to_string(), e.value(key)?)),
-        Quantity::LargerOf(a, b) => {
-            let name = format!("max({a}, {b})");
-            Some((name, e.value(a)?.max(e.value(b)?)))
+        ReportedQuantity::Parameter(key) => {
+            Some((key.to_string(), e.value(ParamKey::parse(key)?)?))
         }
-        Quantity::NotIso(_) => None,
+        ReportedQuantity::LargerOf(a, b) => {
+            let name = format!("max({a}, {b})");
+            let value = |k: &str| e.value(ParamKey::parse(k)?);
+            Some((name, value(a)?.max(value(b)?)))
+        }
+        ReportedQuantity::NotIso(_) => None,
     }
 }
 

@@ -73,7 +73,7 @@ pub(crate) fn corrected(
                     .parameters
                     .iter()
                     .filter_map(|m| {
-                        ev.value(m.key()).map(|c| CorrectedParameter {
+                        ev.value(m.def.key).map(|c| CorrectedParameter {
                             key: m.key().to_string(),
                             measured: m.value,
                             corrected: c,

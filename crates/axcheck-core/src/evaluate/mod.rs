@@ -287,8 +287,8 @@ pub struct Evaluation {
 
 impl Evaluation {
     /// The parameter with `key`, if it applies.
-    pub fn parameter(&self, key: &str) -> Option<&Parameter> {
-        self.parameters.iter().find(|p| p.key() == key)
+    pub fn parameter(&self, key: ParamKey) -> Option<&Parameter> {
+        self.parameters.iter().find(|p| p.def.key == key)
     }
 
     /// The parameter filling `role` in this standard, if it applies.
@@ -303,7 +303,7 @@ impl Evaluation {
     }
 
     /// The value of parameter `key`, if it applies.
-    pub fn value(&self, key: &str) -> Option<f64> {
+    pub fn value(&self, key: ParamKey) -> Option<f64> {
         self.parameter(key).map(|p| p.value)
     }
 

@@ -34,7 +34,7 @@ pub fn d_factor(n: usize) -> Option<f64> {
 
 /// The axis figures of VDI 3441 from the extreme means and the mean σ.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Summary {
+pub struct Vdi3441Figures {
     /// Ā = (X̄max + X̄min)/2.
     pub mean_deviation: f64,
     /// Ā + ((X̄max − X̄min)/2 + 3σ).
@@ -48,10 +48,10 @@ pub struct Summary {
 }
 
 /// VDI 3441's formulas (Hemingray et al. 1971, Fig. 2).
-pub fn summary(x_max: f64, x_min: f64, sigma_mean: f64) -> Summary {
+pub fn summary(x_max: f64, x_min: f64, sigma_mean: f64) -> Vdi3441Figures {
     let a = (x_max + x_min) / 2.0;
     let half = (x_max - x_min) / 2.0 + 3.0 * sigma_mean;
-    Summary {
+    Vdi3441Figures {
         mean_deviation: a,
         upper_limit: a + half,
         lower_limit: a - half,

@@ -128,7 +128,7 @@ impl Limits {
 /// One parameter against its limit.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Check {
-    pub key: String,
+    pub key: ParamKey,
     pub value: f64,
     pub limit: f64,
     /// limit − |value|: negative when over the limit.
@@ -250,7 +250,7 @@ impl Judgement {
 /// stands as the decision rule made it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LargeUncertainty {
-    pub key: String,
+    pub key: ParamKey,
     pub value: f64,
     #[serde(rename = "U")]
     pub expanded: f64,
@@ -284,11 +284,11 @@ impl Judgement {
     pub fn large_uncertainty(&self, expanded: &BTreeMap<String, f64>) -> Vec<LargeUncertainty> {
         (self.checks.iter())
             .filter_map(|c| {
-                let u = *expanded.get(&c.key)?;
+                let u = *expanded.get(c.key.as_str())?;
                 let over_half_limit = u > c.limit / 2.0;
                 let over_value = u > c.value.abs();
-                (over_half_limit || over_value).then(|| LargeUncertainty {
-                    key: c.key.clone(),
+                (over_half_limit || over_value).then_some(LargeUncertainty {
+                    key: c.key,
                     value: c.value,
                     expanded: u,
                     limit: c.limit,
@@ -319,7 +319,7 @@ pub fn judge(evaluation: &Evaluation, limits: Limits, decision: &Decision) -> Ju
             };
             let outcome = decision.outcome(p.value, limit, expanded.unwrap_or(0.0));
             checks.push(Check {
-                key: p.key().to_string(),
+                key: p.def.key,
                 value: p.value,
                 limit,
                 margin: limit - p.value.abs(),
@@ -332,7 +332,7 @@ pub fn judge(evaluation: &Evaluation, limits: Limits, decision: &Decision) -> Ju
     }
     // Alphabetically by key, as `ParamKey` orders.
     for key in limits.values.keys() {
-        if evaluation.parameter(key.as_str()).is_none() {
+        if evaluation.parameter(*key).is_none() {
             not_applicable.push(key.to_string());
         }
     }
@@ -458,7 +458,7 @@ mod tests {
 
     fn check(key: &str, value: f64, limit: f64) -> Check {
         Check {
-            key: key.to_string(),
+            key: ParamKey::parse(key).unwrap(),
             value,
             limit,
             margin: limit - value.abs(),

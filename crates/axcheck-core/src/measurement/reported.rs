@@ -36,7 +36,7 @@ pub struct ToolResults {
 pub struct Reported {
     /// The tool's label (`Bidirectional repeatability`).
     pub label: String,
-    pub quantity: Quantity,
+    pub quantity: ReportedQuantity,
     /// As printed (`0.00362`).
     pub text: String,
     pub value: f64,
@@ -65,7 +65,7 @@ impl Reported {
 /// The ISO 230-2 quantity a tool's label names.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", content = "of", rename_all = "snake_case")]
-pub enum Quantity {
+pub enum ReportedQuantity {
     /// A parameter of the catalogue, by key (`A`, `R`, `B_mean`).
     Parameter(&'static str),
     /// The larger of two parameters (a tool's "unidirectional repeatability").

@@ -85,9 +85,23 @@ pub struct PlanContext {
 pub struct Planned {
     /// The plan file as the campaign names it.
     pub file: String,
-    pub read: Result<(Vec<f64>, usize), String>,
+    pub read: Result<(Vec<f64>, usize), PlanUnread>,
     /// How far a measured target may lie from its planned position, mm or deg.
     pub tolerance: f64,
+}
+
+/// Why a planned test cannot be compared.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PlanUnread {
+    /// The file cannot be had or read as a plan: the reason as the file layer gives it
+    /// (a path refused, a file missing, a key at a line).
+    #[error("{0}")]
+    File(String),
+    #[error("it plans a {planned} axis, this one is {measured}")]
+    Kind {
+        planned: AxisKind,
+        measured: AxisKind,
+    },
 }
 
 /// A test-plan rule: what it is called and enforces, and its check.

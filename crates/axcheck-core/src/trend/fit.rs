@@ -2,7 +2,7 @@
 //! its limit, and whether people should look at it.
 
 use super::sen;
-use super::{Point, Series};
+use super::{Inspection, Series};
 use crate::evaluate::catalogue::{CATALOGUE, Quantity};
 #[cfg(test)]
 use chrono::Datelike;
@@ -20,29 +20,36 @@ pub const MATERIAL_SHARE: f64 = 0.10;
 
 /// How far ahead a forecast raises a flag.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Options {
+pub struct TrendOptions {
     /// Years after the latest inspection (default 2). "Now" is the date of the latest
     /// inspection, not the clock: the trend of a history does not change with the day it
     /// is read.
     pub horizon_years: f64,
 }
 
-impl Default for Options {
+impl Default for TrendOptions {
     fn default() -> Self {
-        Options { horizon_years: 2.0 }
+        TrendOptions { horizon_years: 2.0 }
     }
 }
 
-impl Options {
-    /// A horizon of `years`, which must be a number of years > 0 (the message says so).
-    pub fn with_horizon(years: f64) -> Result<Options, String> {
+impl TrendOptions {
+    /// A horizon of `years`, which must be a number of years > 0.
+    pub fn with_horizon(years: f64) -> Result<TrendOptions, HorizonError> {
         match years > 0.0 && years.is_finite() {
-            true => Ok(Options {
+            true => Ok(TrendOptions {
                 horizon_years: years,
             }),
-            false => Err(format!("expected a number of years > 0, got {years}")),
+            false => Err(HorizonError { years }),
         }
     }
+}
+
+/// A trend horizon that is no number of years > 0.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[error("expected a number of years > 0, got {years}")]
+pub struct HorizonError {
+    pub years: f64,
 }
 
 /// A series' trend. Time t is in years from `origin` (days / 365.25).
@@ -101,8 +108,8 @@ impl Trend {
 /// series' limit, and the flag. Values are compared with the limit by magnitude (|B̄| for
 /// signed parameters), so a series heads towards its limit when its slope has the sign
 /// of its fitted value at the latest inspection.
-pub fn fit(series: &Series, options: &Options) -> Trend {
-    let mut points: Vec<&Point> = series
+pub fn fit(series: &Series, options: &TrendOptions) -> Trend {
+    let mut points: Vec<&Inspection> = series
         .points
         .iter()
         .filter(|p| p.value.is_finite())
@@ -153,7 +160,7 @@ pub fn fit(series: &Series, options: &Options) -> Trend {
 /// +1 when the parameter's magnitude grows with the value, −1 when it grows as the value
 /// falls (a negative signed mean): the sign of the line at the latest inspection, else of
 /// the latest value, else of the slope.
-fn worse_direction(trend: &Trend, points: &[&Point]) -> f64 {
+fn worse_direction(trend: &Trend, points: &[&Inspection]) -> f64 {
     let level = trend
         .value_at(trend.latest)
         .or_else(|| points.last().map(|p| p.value))
@@ -171,13 +178,13 @@ fn worse_direction(trend: &Trend, points: &[&Point]) -> f64 {
 fn judge_limit(
     trend: &mut Trend,
     series: &Series,
-    points: &[&Point],
+    points: &[&Inspection],
     limit: f64,
-    options: &Options,
+    options: &TrendOptions,
     reasons: &mut Vec<String>,
 ) {
     let unit = unit_for_people(&series.unit);
-    let over = |p: &&Point| p.value.abs() > limit;
+    let over = |p: &&Inspection| p.value.abs() > limit;
     if points.last().is_some_and(over) {
         let run = points.iter().rev().take_while(|p| over(p)).count();
         let since = points[points.len() - run].date;
@@ -236,8 +243,8 @@ fn judge_limit(
 fn worsening(
     trend: &Trend,
     series: &Series,
-    points: &[&Point],
-    options: &Options,
+    points: &[&Inspection],
+    options: &TrendOptions,
 ) -> Option<String> {
     let (lo, hi) = trend.slope_interval?;
     let level_only = CATALOGUE
@@ -286,7 +293,7 @@ mod tests {
             limit,
             points: points
                 .iter()
-                .map(|&(date, value)| Point { date, value })
+                .map(|&(date, value)| Inspection { date, value })
                 .collect(),
         }
     }
@@ -312,7 +319,7 @@ mod tests {
     fn a_clean_line_is_exact_to_the_day() {
         let t = fit(
             &series("A", Some(10.0), &clean_line(1.0)),
-            &Options::default(),
+            &TrendOptions::default(),
         );
         assert!((t.slope_per_year.unwrap() - 1.461).abs() < 1e-12);
         assert!(t.slope_se.unwrap() < 1e-12);
@@ -331,7 +338,7 @@ mod tests {
         // than 10 % of the limit, so nothing flags it.
         let near = fit(
             &series("A", Some(10.0), &clean_line(1.0)),
-            &Options { horizon_years: 0.5 },
+            &TrendOptions { horizon_years: 0.5 },
         );
         assert!(!near.flagged);
     }
@@ -343,7 +350,7 @@ mod tests {
     fn one_odd_inspection_does_not_move_the_slope() {
         let mut points = clean_line(1.0);
         points[4].1 += 10.0;
-        let t = fit(&series("A", None, &points), &Options::default());
+        let t = fit(&series("A", None, &points), &TrendOptions::default());
         assert!((t.slope_per_year.unwrap() - 1.461).abs() < 1e-12);
         let years: Vec<f64> = points.iter().map(|p| t.years(p.0)).collect();
         let (tm, ym) = (
@@ -367,7 +374,7 @@ mod tests {
     fn a_stable_series_is_not_flagged() {
         let values = [5.0, 5.3, 4.8, 5.1, 4.9, 5.2];
         let points: Vec<_> = (2020..=2025).map(|y| date(y, 1, 1)).zip(values).collect();
-        let t = fit(&series("E", Some(10.0), &points), &Options::default());
+        let t = fit(&series("E", Some(10.0), &points), &TrendOptions::default());
         assert!((t.slope_per_year.unwrap() - 0.1 * 365.25 / 1096.0).abs() < 1e-12);
         assert!((t.intercept.unwrap() - 5.0).abs() < 1e-12);
         let (lo, hi) = t.slope_interval.unwrap();
@@ -380,14 +387,14 @@ mod tests {
     fn one_inspection_has_no_slope_two_have_no_error() {
         let one = fit(
             &series("B", Some(8.0), &[(date(2024, 5, 1), 3.0)]),
-            &Options::default(),
+            &TrendOptions::default(),
         );
         assert_eq!(one.slope_per_year, None);
         assert!(one.fitted.is_empty() && one.forecast_date.is_none() && !one.flagged);
         // 3.0 → 4.0 µm over 2024-05-01 … 2025-05-01 (365 days): 365.25/365 µm/year;
         // the line reaches 8 µm at 5 · 365 = 1825 days, 2029-04-30: beyond 2 years.
         let points = [(date(2024, 5, 1), 3.0), (date(2025, 5, 1), 4.0)];
-        let two = fit(&series("B", Some(8.0), &points), &Options::default());
+        let two = fit(&series("B", Some(8.0), &points), &TrendOptions::default());
         assert!((two.slope_per_year.unwrap() - 365.25 / 365.0).abs() < 1e-12);
         assert_eq!(two.slope_se, None);
         assert_eq!(two.forecast_date, Some(date(2029, 4, 30)));
@@ -395,7 +402,7 @@ mod tests {
         // Over the limit with one inspection: flagged without a slope.
         let over = fit(
             &series("B", Some(2.0), &[(date(2024, 5, 1), 3.0)]),
-            &Options::default(),
+            &TrendOptions::default(),
         );
         assert_eq!(
             over.reason.as_deref(),
@@ -408,7 +415,7 @@ mod tests {
     fn a_series_over_its_limit_says_since_when() {
         let values = [8.0, 9.0, 10.5, 11.0];
         let points: Vec<_> = (2021..=2024).map(|y| date(y, 6, 1)).zip(values).collect();
-        let t = fit(&series("A", Some(10.0), &points), &Options::default());
+        let t = fit(&series("A", Some(10.0), &points), &TrendOptions::default());
         assert_eq!(t.over_limit_since, Some(date(2023, 6, 1)));
         assert_eq!(t.forecast_date, Some(date(2023, 6, 1)));
         assert!(t.flagged);
@@ -422,7 +429,7 @@ mod tests {
     fn a_decreasing_series_has_no_forecast() {
         let values = [9.0, 8.0, 7.0, 6.0, 5.0];
         let points: Vec<_> = yearly_2021().into_iter().zip(values).collect();
-        let t = fit(&series("A", Some(10.0), &points), &Options::default());
+        let t = fit(&series("A", Some(10.0), &points), &TrendOptions::default());
         assert!(t.slope_per_year.unwrap() < -0.99);
         assert_eq!(t.forecast_date, None);
         assert!(!t.flagged);
@@ -434,9 +441,15 @@ mod tests {
     #[test]
     fn a_signed_mean_compares_its_magnitude() {
         let points = clean_line(-1.0);
-        let over = fit(&series("B_mean", Some(8.0), &points), &Options::default());
+        let over = fit(
+            &series("B_mean", Some(8.0), &points),
+            &TrendOptions::default(),
+        );
         assert_eq!(over.over_limit_since, Some(date(2025, 1, 1)));
-        let t = fit(&series("B_mean", Some(9.0), &points), &Options::default());
+        let t = fit(
+            &series("B_mean", Some(9.0), &points),
+            &TrendOptions::default(),
+        );
         assert!((t.slope_per_year.unwrap() + 1.461).abs() < 1e-12);
         assert_eq!(t.forecast_date, Some(date(2025, 2, 9)));
         assert!(t.reason.unwrap().contains("worsening significantly: -1.46"));
@@ -459,7 +472,7 @@ mod tests {
         ];
         let values = [1.0, 1.4, 2.0, 3.1, 3.9, 5.2];
         let points: Vec<_> = dates.into_iter().zip(values).collect();
-        let t = fit(&series("E", None, &points), &Options::default());
+        let t = fit(&series("E", None, &points), &TrendOptions::default());
         assert!((t.slope_per_year.unwrap() - 0.982_198_493_78).abs() < 1e-9);
         let (lo, hi) = t.slope_interval.unwrap();
         assert!((lo - 0.775_634_015_02).abs() < 1e-9 && (hi - 1.125_464_802_56).abs() < 1e-9);
@@ -467,7 +480,7 @@ mod tests {
         // All on one date: no slope at all.
         let same: Vec<_> = values.iter().map(|&v| (date(2020, 1, 1), v)).collect();
         assert_eq!(
-            fit(&series("E", None, &same), &Options::default()).slope_per_year,
+            fit(&series("E", None, &same), &TrendOptions::default()).slope_per_year,
             None
         );
     }
@@ -477,7 +490,7 @@ mod tests {
     fn the_band_widens_away_from_the_median_date() {
         let values = [5.0, 5.3, 4.8, 5.1, 4.9, 5.2];
         let points: Vec<_> = (2020..=2025).map(|y| date(y, 1, 1)).zip(values).collect();
-        let t = fit(&series("E", Some(10.0), &points), &Options::default());
+        let t = fit(&series("E", Some(10.0), &points), &TrendOptions::default());
         let width = |d| {
             let (a, b) = t.band_at(d).unwrap();
             b - a

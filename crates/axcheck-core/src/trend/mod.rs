@@ -6,14 +6,14 @@
 pub mod fit;
 pub mod sen;
 
-pub use fit::{Options, Trend, fit};
+pub use fit::{HorizonError, Trend, TrendOptions, fit};
 
 use chrono::NaiveDate;
 use serde::Serialize;
 
 /// One inspection's value of the parameter.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Point {
+pub struct Inspection {
     pub date: NaiveDate,
     /// Deviation unit (µm or arcsec), as evaluated.
     pub value: f64,
@@ -33,5 +33,5 @@ pub struct Series {
     pub unit: String,
     /// The limit at the latest inspection, when one applied.
     pub limit: Option<f64>,
-    pub points: Vec<Point>,
+    pub points: Vec<Inspection>,
 }

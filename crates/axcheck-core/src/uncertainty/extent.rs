@@ -34,7 +34,7 @@ use crate::units::Direction;
 
 /// What sort of difference a parameter is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Shape {
+pub enum ExtentShape {
     /// `max − min` of two terms at two targets: length-dependent errors act over the
     /// distance between them.
     Range,
@@ -47,7 +47,7 @@ pub enum Shape {
 /// A parameter's extent and its statistical uncertainty.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Extent {
-    pub shape: Shape,
+    pub shape: ExtentShape,
     /// Distance between the two targets of a range, mm or deg; 0 at one position.
     pub length: f64,
     /// How one reading's error enters the parameter: 1, or 2k for a repeatability 2kS.
@@ -63,7 +63,7 @@ impl Extent {
     /// budget of the full measurement travel.
     pub fn range(length: f64) -> Extent {
         Extent {
-            shape: Shape::Range,
+            shape: ExtentShape::Range,
             length,
             reading_gain: 1.0,
             means_u: None,
@@ -258,7 +258,7 @@ fn range(e: &Evaluation, p: &Parameter, term: Term, single: Option<f64>) -> Exte
     };
     let (top, bottom) = (&top[a], &bottom[b]);
     Extent {
-        shape: Shape::Range,
+        shape: ExtentShape::Range,
         length: (top.position - bottom.position).abs(),
         reading_gain: 1.0,
         means_u: quadrature(top.means_u, bottom.means_u),
@@ -268,7 +268,7 @@ fn range(e: &Evaluation, p: &Parameter, term: Term, single: Option<f64>) -> Exte
 
 fn scatter_only(reading_gain: f64) -> Extent {
     Extent {
-        shape: Shape::Scatter,
+        shape: ExtentShape::Scatter,
         length: 0.0,
         reading_gain,
         means_u: None,
@@ -321,7 +321,7 @@ fn mean_repeatability(e: &Evaluation) -> Extent {
 /// statistical part. `single`: for n = 1, the estimated scatter of one reading.
 fn reversal(e: &Evaluation, targets: Option<&[TargetResult]>, single: Option<f64>) -> Extent {
     let mut extent = Extent {
-        shape: Shape::Reversal,
+        shape: ExtentShape::Reversal,
         length: 0.0,
         reading_gain: 1.0,
         means_u: None,

@@ -16,7 +16,7 @@ pub mod setup;
 pub use budget::{Budget, BudgetLine, Distribution, Input};
 pub use setup::{AirCompensation, Instrument, InstrumentKind, Setup, Thermal};
 
-use crate::evaluate::Evaluation;
+use crate::evaluate::{Evaluation, ParamKey};
 use contributors::Context;
 use extent::Extent;
 use serde::Serialize;
@@ -55,15 +55,15 @@ pub struct Uncertainty {
 
 impl Uncertainty {
     /// U of parameter `key`, deviation unit.
-    pub fn expanded_of(&self, key: &str) -> Option<f64> {
-        self.expanded.get(key).copied()
+    pub fn expanded_of(&self, key: ParamKey) -> Option<f64> {
+        self.expanded.get(key.as_str()).copied()
     }
 
     /// The budget of parameter `key`.
-    pub fn parameter(&self, key: &str) -> Option<&Budget> {
+    pub fn parameter(&self, key: ParamKey) -> Option<&Budget> {
         self.parameters
             .iter()
-            .find(|p| p.key == key)
+            .find(|p| p.key == key.as_str())
             .map(|p| &p.budget)
     }
 }

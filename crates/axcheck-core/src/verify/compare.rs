@@ -18,7 +18,7 @@ use serde::Serialize;
 
 /// One target and direction of the re-measurement.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Row {
+pub struct ComparedTarget {
     /// Target position, mm or deg.
     pub position: f64,
     pub direction: Direction,
@@ -39,7 +39,7 @@ pub struct Row {
     pub u: f64,
 }
 
-impl Row {
+impl ComparedTarget {
     /// The change measured: achieved − before.
     pub fn change(&self) -> f64 {
         self.achieved - self.before
@@ -76,7 +76,7 @@ pub fn rows(
     old: Option<&Table>,
     new: &Table,
     s: (f64, f64),
-) -> Vec<Row> {
+) -> Vec<ComparedTarget> {
     let u = u_means(before, after, s);
     let rough = interpolation::roughness(before, s.0);
     let mut rows = Vec::with_capacity(2 * after.target_count());
@@ -86,7 +86,7 @@ pub fn rows(
             let before_mean = linear(&before.targets, &b, p);
             let u_interpolation = interpolation::u(&before.targets, &b, p, rough);
             let applied = new.correction(p, d) - old.map_or(0.0, |t| t.correction(p, d));
-            rows.push(Row {
+            rows.push(ComparedTarget {
                 position: p,
                 direction: d,
                 before: before_mean,

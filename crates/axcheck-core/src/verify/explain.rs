@@ -2,8 +2,8 @@
 //! that explains the change measured when the table as named does not, or, when none
 //! does, `table_mismatch` with what the data show.
 
-use super::compare::Row;
-use super::effects::{Candidate, Context, EFFECTS, Key, chi2, fitted_factor};
+use super::compare::ComparedTarget;
+use super::effects::{Candidate, EFFECTS, EffectContext, Key, chi2, fitted_factor};
 use super::verdict::{Effectiveness, Systematic};
 use super::{ALPHA, Cause};
 use crate::diagnose::stats::chi2_upper;
@@ -24,7 +24,7 @@ pub struct Test {
 }
 
 impl Test {
-    pub fn of(rows: &[Row], change: &[f64]) -> Test {
+    pub fn of(rows: &[ComparedTarget], change: &[f64]) -> Test {
         let chi2 = chi2(rows, change);
         let dof = rows.len().saturating_sub(1);
         let p = chi2_upper(chi2, dof as f64);
@@ -40,7 +40,7 @@ impl Test {
 /// The effect that explains the change when the table as named does not: the best
 /// candidate, an earlier effect kept unless a later one is better by [`PREFERENCE`], and
 /// only if it explains the change far better (a quarter of the χ² or less).
-pub fn effect(ctx: &Context, test: &Test) -> Option<Cause> {
+pub fn effect(ctx: &EffectContext, test: &Test) -> Option<Cause> {
     if !test.rejected() {
         return None;
     }
@@ -77,7 +77,7 @@ pub fn effect(ctx: &Context, test: &Test) -> Option<Cause> {
 /// named is rejected with nothing to explain it: what the data show, per target (χ²) and
 /// on E (both ways).
 pub fn mismatch(
-    rows: &[Row],
+    rows: &[ComparedTarget],
     test: &Test,
     e: &Systematic,
     verdict: Effectiveness,

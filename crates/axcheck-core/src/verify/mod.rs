@@ -18,7 +18,7 @@ pub mod explain;
 pub mod interpolation;
 pub mod verdict;
 
-pub use compare::Row;
+pub use compare::ComparedTarget;
 pub use effects::{Key, Other};
 pub use verdict::{Effectiveness, Systematic};
 
@@ -28,16 +28,16 @@ use crate::evaluate::json::ParameterSet;
 use crate::evaluate::{self, Evaluation, StandardId};
 use crate::measurement::AxisData;
 use crate::units::{AxisKind, fmt_fixed};
-use effects::Context;
+use effects::EffectContext;
 use serde::Serialize;
 use std::collections::BTreeMap;
-use verdict::{Evidence, e_uncertainty, judge, systematic};
+use verdict::{VerdictBasis, e_uncertainty, judge, systematic};
 
 /// Below this probability the table as loaded does not explain the change measured.
 pub const ALPHA: f64 = 0.001;
 
 /// What a verification compares.
-pub struct Input<'a> {
+pub struct VerifyInput<'a> {
     /// The measurement before the table was loaded.
     pub before: &'a AxisData,
     /// The re-measurement with the table active.
@@ -85,7 +85,7 @@ pub struct Verification {
     pub predicted: Evaluation,
     pub achieved: Evaluation,
     pub findings: Vec<Cause>,
-    pub per_target: Vec<Row>,
+    pub per_target: Vec<ComparedTarget>,
     /// The constant offset between the two measurements (after − predicted), which no
     /// parameter sees.
     pub offset: f64,
@@ -117,7 +117,7 @@ impl Verification {
 }
 
 /// Compares the re-measurement with the prediction.
-pub fn verify(input: &Input) -> Result<Verification, VerifyError> {
+pub fn verify(input: &VerifyInput) -> Result<Verification, VerifyError> {
     let (before, after) = (input.before, input.after);
     if before.kind != after.kind {
         return Err(VerifyError::Kind(before.kind, after.kind));
@@ -140,7 +140,7 @@ pub fn verify(input: &Input) -> Result<Verification, VerifyError> {
         achieved: systematic(&achieved),
         uncertainty: e_uncertainty(&rows),
     };
-    let ctx = Context {
+    let ctx = EffectContext {
         rows: &rows,
         old: input.old,
         new: input.new,
@@ -149,7 +149,7 @@ pub fn verify(input: &Input) -> Result<Verification, VerifyError> {
     };
     let test = explain::Test::of(&rows, &ctx.applied());
     let found = explain::effect(&ctx, &test);
-    let verdict = judge(&Evidence {
+    let verdict = judge(&VerdictBasis {
         e: &e,
         rejected: test.rejected(),
         explained: found.is_some(),
@@ -200,7 +200,7 @@ fn notes(before: &AxisData, after: &AxisData) -> Vec<String> {
 /// The JSON view: `{verdict, e, before, predicted, achieved, findings, per_target, …}`,
 /// each set of parameters as `{parameters: {KEY: value}}`.
 #[derive(Serialize)]
-pub struct Json<'a> {
+pub struct VerificationJson<'a> {
     pub verdict: Effectiveness,
     pub e: &'a Systematic,
     pub before: ParameterSet<'a>,
@@ -210,14 +210,14 @@ pub struct Json<'a> {
     pub offset: f64,
     pub chi2: f64,
     pub dof: usize,
-    pub per_target: &'a [Row],
+    pub per_target: &'a [ComparedTarget],
     pub notes: &'a [String],
 }
 
 impl Verification {
-    pub fn json(&self) -> Json<'_> {
+    pub fn json(&self) -> VerificationJson<'_> {
         let params = ParameterSet::of;
-        Json {
+        VerificationJson {
             verdict: self.verdict,
             e: &self.e,
             before: params(&self.before),

@@ -49,7 +49,7 @@
 //! for the offset: a machine that warmed, wore or was adjusted in between is rejected too,
 //! and the finding says so.
 
-use super::compare::Row;
+use super::compare::ComparedTarget;
 use crate::evaluate::Evaluation;
 use crate::evaluate::stats::normal_cdf;
 use serde::Serialize;
@@ -122,7 +122,7 @@ impl Systematic {
 }
 
 /// What the verdict is decided on.
-pub struct Evidence<'a> {
+pub struct VerdictBasis<'a> {
     pub e: &'a Systematic,
     /// χ² rejects the table as named.
     pub rejected: bool,
@@ -131,7 +131,7 @@ pub struct Evidence<'a> {
 }
 
 /// The verdict (see the module's order).
-pub fn judge(evidence: &Evidence) -> Effectiveness {
+pub fn judge(evidence: &VerdictBasis) -> Effectiveness {
     let e = evidence.e;
     let by_e = on_e(e);
     if e.far_better() {
@@ -173,7 +173,7 @@ pub fn systematic(e: &Evaluation) -> f64 {
 /// from the largest standard uncertainty of the rows: where the targets differ it holds
 /// the interpolation's, E predicted being of the targets before and E achieved of those
 /// after, each sampling the axis's error at its own positions.
-pub fn e_uncertainty(rows: &[Row]) -> f64 {
+pub fn e_uncertainty(rows: &[ComparedTarget]) -> f64 {
     let u = rows.iter().map(|r| r.u).fold(0.0, f64::max);
     let tail = 0.025 / rows.len().max(1) as f64;
     2.0 * normal_quantile(1.0 - tail) * u
@@ -208,7 +208,7 @@ mod tests {
     }
 
     fn verdict(e: &Systematic, rejected: bool, explained: bool) -> Effectiveness {
-        judge(&Evidence {
+        judge(&VerdictBasis {
             e,
             rejected,
             explained,

@@ -27,5 +27,5 @@ mod time;
 
 pub use crate::report::chart_kit::Style;
 pub use periodogram::{Periodogram, periodogram};
-pub use residuals::{Residuals, residuals};
+pub use residuals::{ResidualsChart, residuals};
 pub use time::TimePanels;

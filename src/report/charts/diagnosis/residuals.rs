@@ -17,12 +17,12 @@ use crate::report::chart_kit::{
 use plotters::prelude::*;
 use std::collections::HashSet;
 
-/// Residuals of the fitted base model (reading minus model), in µm or arcsec.
+/// ResidualsChart of the fitted base model (reading minus model), in µm or arcsec.
 ///
 /// `x`, `y` and `up` are read in step; the shortest decides how many readings there are.
 /// Readings with a non-finite `x` or `y` are skipped.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct Residuals {
+pub struct ResidualsChart {
     /// time in s, or run order index, or position — per reading
     pub x: Vec<f64>,
     /// residual per reading
@@ -47,7 +47,7 @@ pub struct Residuals {
 /// in grey print), the ±2σ band of the base model as a light grey band about zero, the fitted
 /// effect as a solid black line over the points, and the zero line. The y axis is symmetric
 /// about zero. The legend sits in a band above the plot. Designed for 900 × 360 px.
-pub fn residuals(r: &Residuals, style: &Style) -> Scene {
+pub fn residuals(r: &ResidualsChart, style: &Style) -> Scene {
     if let Some(t) = r.time.as_ref() {
         return time::time_chart(&r.x_label, &r.y_label, t, style);
     }
@@ -189,13 +189,13 @@ mod tests {
     };
 
     // The chart as SVG with an element per outline, as plotters wrote it.
-    fn residuals(r: &Residuals, style: &Style) -> String {
+    fn residuals(r: &ResidualsChart, style: &Style) -> String {
         super::residuals(r, style).element_svg()
     }
 
     /// An ISO 230-2 test: 11 targets × 2 directions × `runs` runs over 8 min a run, residuals
     /// N(0, 0.4 µm) plus a drift of 2 µm over 40 min.
-    fn iso_residuals(runs: usize) -> Residuals {
+    fn iso_residuals(runs: usize) -> ResidualsChart {
         let mut rng = Lcg(7);
         let (mut x, mut y, mut up) = (Vec::new(), Vec::new(), Vec::new());
         for run in 0..runs {
@@ -208,7 +208,7 @@ mod tests {
                 }
             }
         }
-        Residuals {
+        ResidualsChart {
             x,
             y,
             up,
@@ -271,7 +271,7 @@ mod tests {
         assert!((45..=56).contains(&downs), "{downs} ↓ markers");
         assert!(!svg.contains("fill=\"#B44E4E\""));
         // Only ↑ readings: no ↓ legend entry and no triangles.
-        let only_up = Residuals {
+        let only_up = ResidualsChart {
             up: vec![true; r.x.len()],
             ..r.clone()
         };
@@ -300,7 +300,7 @@ mod tests {
 
     #[test]
     fn residuals_without_band_or_fit_have_no_such_entries() {
-        let r = Residuals {
+        let r = ResidualsChart {
             band: None,
             fit: None,
             ..iso_residuals(2)
@@ -312,7 +312,7 @@ mod tests {
         assert!(!svg.contains("fill=\"#E8E8E8\""));
         // A band of zero, a negative or non-finite band, and a fit of one point count as none.
         for band in [Some(0.0), Some(f64::NAN), Some(f64::INFINITY)] {
-            let r = Residuals {
+            let r = ResidualsChart {
                 band,
                 fit: Some(vec![(1.0, 1.0)]),
                 ..iso_residuals(1)
@@ -321,7 +321,7 @@ mod tests {
             assert!(!texts(&svg).iter().any(|t| t.contains('σ')), "{band:?}");
             assert!(!has_text(&svg, "fitted effect"));
         }
-        let r = Residuals {
+        let r = ResidualsChart {
             band: Some(-0.5),
             ..iso_residuals(1)
         };
@@ -333,7 +333,7 @@ mod tests {
 
     #[test]
     fn residuals_truncate_mismatched_lengths_and_skip_non_finite() {
-        let r = Residuals {
+        let r = ResidualsChart {
             x: vec![0.0, 1.0, 2.0, 3.0, 4.0],
             y: vec![0.5, f64::NAN, -0.5],
             up: vec![true, true, false, true],
@@ -349,7 +349,7 @@ mod tests {
         assert_eq!(circles_in(&svg, "#1F3A6E"), 2);
         assert_eq!(polylines_in(&svg, "#B44E4E"), 2);
         // Nothing usable: a message.
-        let none = Residuals {
+        let none = ResidualsChart {
             up: Vec::new(),
             ..r
         };
@@ -360,7 +360,7 @@ mod tests {
 
     #[test]
     fn fit_is_clipped_to_the_plot_and_broken_at_gaps() {
-        let r = Residuals {
+        let r = ResidualsChart {
             fit: Some(vec![
                 (-100.0, -50.0),
                 (20.0, 0.0),
@@ -415,7 +415,7 @@ mod tests {
 
     #[test]
     fn unicode_and_markup_survive_escaped() {
-        let r = Residuals {
+        let r = ResidualsChart {
             x_label: "Target position Pi / °".to_string(),
             y_label: "Residual / ″ <arcsec> & \"x\"".to_string(),
             ..iso_residuals(2)
@@ -431,14 +431,14 @@ mod tests {
     fn degenerate_inputs_do_not_panic() {
         let styles = degenerate_styles(style(360));
         let base = iso_residuals(1);
-        let res = |x: Vec<f64>, y: Vec<f64>| Residuals {
+        let res = |x: Vec<f64>, y: Vec<f64>| ResidualsChart {
             up: (0..x.len()).map(|i| i % 2 == 0).collect(),
             x,
             y,
             ..base.clone()
         };
         let residual_cases = vec![
-            Residuals::default(),
+            ResidualsChart::default(),
             res(vec![1.0], vec![0.3]),
             res(vec![2.0; 5], vec![0.7; 5]),
             res(vec![0.0, 1.0], vec![0.0, 0.0]),
@@ -446,18 +446,18 @@ mod tests {
             res(vec![-1e300, 1e300], vec![1e300, -1e300]),
             res(vec![0.0, 1.0], vec![f64::MAX, 0.0]),
             res(vec![f64::NAN, f64::INFINITY], vec![1.0, 2.0]),
-            Residuals {
+            ResidualsChart {
                 fit: Some(vec![(f64::NAN, f64::NAN); 3]),
                 band: Some(1e300),
                 x_label: String::new(),
                 y_label: "   ".to_string(),
                 ..base.clone()
             },
-            Residuals {
+            ResidualsChart {
                 fit: Some(Vec::new()),
                 ..base.clone()
             },
-            Residuals {
+            ResidualsChart {
                 time: Some(TimePanels {
                     means: vec![(f64::INFINITY, 1e300, true), (0.0, -1e300, false)],
                     curve: vec![(f64::NAN, 0.0), (0.0, f64::MAX)],
@@ -467,7 +467,7 @@ mod tests {
                 }),
                 ..base.clone()
             },
-            Residuals {
+            ResidualsChart {
                 time: Some(TimePanels::default()),
                 ..base.clone()
             },

@@ -276,15 +276,15 @@ fn clamp(p: Px, f: &Frame) -> (i32, i32) {
 
 #[cfg(test)]
 mod tests {
-    use super::super::residuals::Residuals;
+    use super::super::residuals::ResidualsChart;
     use super::*;
     use crate::report::chart_kit::svg_probe::{assert_well_formed, texts};
 
-    fn panels() -> (Residuals, TimePanels) {
-        let r = Residuals {
+    fn panels() -> (ResidualsChart, TimePanels) {
+        let r = ResidualsChart {
             x_label: "Time since the start of the test / min".into(),
             y_label: "Residual of the base model / µm".into(),
-            ..Residuals::default()
+            ..ResidualsChart::default()
         };
         // Five runs of a drift of 1 µm per 10 min about its mean, ↑ and ↓ 4 min apart.
         let mut means = Vec::new();

@@ -48,9 +48,14 @@ pub enum Source {
     Readback,
 }
 
+/// A `--reference` that names no reference of the app's files.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("expected a reference number 1 to 5, `rbv` (the readback) or `selected`, got `{0}`")]
+pub struct UnknownSource(pub String);
+
 impl Source {
     /// `1` … `5` for a reference, `rbv` or `readback` for the readback, `selected`.
-    pub fn parse(text: &str) -> Result<Source, String> {
+    pub fn parse(text: &str) -> Result<Source, UnknownSource> {
         let t = text.trim().to_ascii_lowercase();
         match t.as_str() {
             "selected" => return Ok(Source::Selected),
@@ -59,10 +64,7 @@ impl Source {
         }
         match t.parse::<u8>() {
             Ok(n @ 1..=5) => Ok(Source::Reference(n)),
-            _ => Err(format!(
-                "expected a reference number 1 to 5, `rbv` (the readback) or `selected`, got `{}`",
-                text.trim()
-            )),
+            _ => Err(UnknownSource(text.trim().to_string())),
         }
     }
 
@@ -251,7 +253,12 @@ mod tests {
     fn sources_and_times() {
         assert_eq!(Source::parse(" 2 "), Ok(Source::Reference(2)));
         assert_eq!(Source::parse("RBV"), Ok(Source::Readback));
-        assert!(Source::parse("6").unwrap_err().contains("1 to 5"));
+        assert!(
+            Source::parse("6")
+                .unwrap_err()
+                .to_string()
+                .contains("1 to 5")
+        );
         let a = timestamp("2026-03-19 10:01:56").unwrap();
         let b = timestamp("2026-03-19T10:02:00.250000").unwrap();
         assert_eq!(seconds_between(a, b), 4.25);

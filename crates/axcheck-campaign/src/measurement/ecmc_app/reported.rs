@@ -3,38 +3,44 @@
 //! "BiDir Accuracy = A", "Uni Repeat = max(R^+, R^-)", …). [`crate::crosscheck`] sets
 //! them beside axcheck's.
 
-use crate::measurement::reported::{Family, Quantity, Reported, ToolResults};
+use crate::measurement::reported::{Family, Reported, ReportedQuantity, ToolResults};
 
 /// Status labels, the quantity each names, in the report's order.
-const LABELS: &[(&str, Quantity)] = &[
-    ("Bidirectional accuracy", Quantity::Parameter("A")),
+const LABELS: &[(&str, ReportedQuantity)] = &[
+    ("Bidirectional accuracy", ReportedQuantity::Parameter("A")),
     (
         "Bidirectional systematic deviation",
-        Quantity::Parameter("E"),
+        ReportedQuantity::Parameter("E"),
     ),
     (
         "Range of mean bidirectional positional deviation",
-        Quantity::Parameter("M"),
+        ReportedQuantity::Parameter("M"),
     ),
-    ("Bidirectional repeatability", Quantity::Parameter("R")),
+    (
+        "Bidirectional repeatability",
+        ReportedQuantity::Parameter("R"),
+    ),
     (
         "Unidirectional repeatability",
-        Quantity::LargerOf("R_up", "R_down"),
+        ReportedQuantity::LargerOf("R_up", "R_down"),
     ),
-    ("Mean reversal value", Quantity::Parameter("B_mean")),
-    ("Maximum reversal value", Quantity::Parameter("B")),
-    ("Mean bias", Quantity::NotIso("the mean of every deviation")),
+    ("Mean reversal value", ReportedQuantity::Parameter("B_mean")),
+    ("Maximum reversal value", ReportedQuantity::Parameter("B")),
+    (
+        "Mean bias",
+        ReportedQuantity::NotIso("the mean of every deviation"),
+    ),
     (
         "Linearity residual",
-        Quantity::NotIso("the largest residual of a straight line fitted to the points"),
+        ReportedQuantity::NotIso("the largest residual of a straight line fitted to the points"),
     ),
     (
         "Linear fit slope",
-        Quantity::NotIso("the slope of that straight line"),
+        ReportedQuantity::NotIso("the slope of that straight line"),
     ),
     (
         "Linear fit intercept",
-        Quantity::NotIso("the intercept of that straight line"),
+        ReportedQuantity::NotIso("the intercept of that straight line"),
     ),
 ];
 

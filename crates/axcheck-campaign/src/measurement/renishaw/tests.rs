@@ -1,8 +1,9 @@
 //! Constructed `.rtl` and `.rta` files (no real file is public; these follow the layout the
 //! module documents) read to exactly the same test as the same readings in the long CSV.
 // The whole file is test code: the attribute below marks it so for tests/it/architecture.rs.
-#[cfg(test)]
 use super::*;
+#[cfg(test)]
+use crate::evaluate::ParamKey;
 use crate::evaluate::{StandardId, evaluate};
 use crate::measurement::csv;
 use crate::units::Direction;
@@ -178,7 +179,7 @@ fn linear_rtl_with_crlf_windows_1252_and_environment_equals_the_long_csv() {
     assert_same_test(&test.data, &csv);
     assert!(!test.rotary);
     let e = evaluate(&test.data, StandardId::Iso230_2);
-    assert!((e.value("A").unwrap() - 9.586).abs() < 0.001);
+    assert!((e.value(ParamKey::A).unwrap() - 9.586).abs() < 0.001);
 
     let u = &test.user_text;
     assert_eq!(u.machine.as_deref(), Some("Mühle 3"));

@@ -43,20 +43,26 @@ pub fn names() -> Vec<&'static str> {
 pub fn with_comp_file_type(
     controller: &'static dyn Controller,
     file_type: Option<u8>,
-) -> Result<&'static dyn Controller, String> {
+) -> Result<&'static dyn Controller, CompFileTypeError> {
     let Some(n) = file_type else {
         return Ok(controller);
     };
     if controller.name() != linuxcnc::LinuxCnc::TYPE_0.name() {
-        return Err(format!(
-            "the comp file type is LinuxCNC's COMP_FILE_TYPE, not a setting of {}",
-            controller.name()
-        ));
+        return Err(CompFileTypeError::NotLinuxCnc {
+            controller: controller.name(),
+        });
     }
     match linuxcnc::LinuxCnc::of_type(n) {
         Some(c) => Ok(c),
-        None => Err(format!(
-            "LinuxCNC's COMP_FILE_TYPE is 0 (actual positions) or 1 (trims), not {n}"
-        )),
+        None => Err(CompFileTypeError::Unknown(n)),
     }
+}
+
+/// Why a comp file type cannot be written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+pub enum CompFileTypeError {
+    #[error("the comp file type is LinuxCNC's COMP_FILE_TYPE, not a setting of {controller}")]
+    NotLinuxCnc { controller: &'static str },
+    #[error("LinuxCNC's COMP_FILE_TYPE is 0 (actual positions) or 1 (trims), not {0}")]
+    Unknown(u8),
 }

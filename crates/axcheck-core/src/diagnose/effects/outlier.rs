@@ -11,7 +11,7 @@
 //! could be the odd one.
 
 use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
-use crate::axis_model::{ErrorModel, Outlier as SimulatedOutlier};
+use crate::axis_model::{ErrorModel, PlantedOutlier};
 use crate::diagnose::basis::Basis;
 use crate::diagnose::detectable::{Detectable, plan_words, t_shift, with_unit};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
@@ -134,7 +134,7 @@ impl EffectRule for Rule {
             .iter()
             .map(|&(row, size)| {
                 let r = &a.prep.rows[row];
-                SimulatedOutlier {
+                PlantedOutlier {
                     run: r.run as u32 + 1,
                     direction: direction(r.d),
                     target: r.i + 1,

@@ -39,7 +39,7 @@ use super::{
 };
 use crate::units::AxisKind;
 
-pub struct Fanuc;
+pub struct FanucProgram;
 
 /// The comment's text as FANUC takes it: upper case, letters, digits and `. , = _ -` (a
 /// semicolon a comma, any other character a space).
@@ -84,7 +84,7 @@ fn setup(job: &Job) -> String {
     words.join(" ")
 }
 
-impl Dialect for Fanuc {
+impl Dialect for FanucProgram {
     fn name(&self) -> &'static str {
         "fanuc"
     }

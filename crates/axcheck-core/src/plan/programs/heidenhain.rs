@@ -29,7 +29,7 @@
 
 use super::{Block, Dialect, Job, ProgramError, move_note, number, one_letter, word_value};
 
-pub struct Heidenhain;
+pub struct HeidenhainProgram;
 
 /// `+10.000` or `-5.000`.
 fn signed(x: f64) -> String {
@@ -41,7 +41,7 @@ fn signed(x: f64) -> String {
     }
 }
 
-impl Dialect for Heidenhain {
+impl Dialect for HeidenhainProgram {
     fn name(&self) -> &'static str {
         "heidenhain"
     }

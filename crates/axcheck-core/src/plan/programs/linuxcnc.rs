@@ -37,9 +37,9 @@ use super::{
     Block, Dialect, Job, ProgramError, g_move, is_first, number, one_letter, plain_word, word_value,
 };
 
-pub struct LinuxCnc;
+pub struct LinuxCncProgram;
 
-impl Dialect for LinuxCnc {
+impl Dialect for LinuxCncProgram {
     fn name(&self) -> &'static str {
         "linuxcnc"
     }

@@ -573,11 +573,11 @@ pub fn is_incremental(block: &Block) -> bool {
 
 /// Every control, by name.
 pub const DIALECTS: &[&dyn Dialect] = &[
-    &fanuc::Fanuc,
-    &siemens_840d::Siemens840d,
-    &heidenhain::Heidenhain,
-    &linuxcnc::LinuxCnc,
-    &twincat::TwinCat,
+    &fanuc::FanucProgram,
+    &siemens_840d::Siemens840dProgram,
+    &heidenhain::HeidenhainProgram,
+    &linuxcnc::LinuxCncProgram,
+    &twincat::TwinCatProgram,
 ];
 
 /// The control called `name`.

@@ -35,9 +35,9 @@
 
 use super::{Block, Dialect, Job, ProgramError, g_move, identifier, named_word, number};
 
-pub struct Siemens840d;
+pub struct Siemens840dProgram;
 
-impl Dialect for Siemens840d {
+impl Dialect for Siemens840dProgram {
     fn name(&self) -> &'static str {
         "siemens-840d"
     }

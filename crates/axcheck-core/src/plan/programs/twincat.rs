@@ -41,7 +41,7 @@
 
 use super::{Block, Dialect, Job, ProgramError, g_move, named_word, number};
 
-pub struct TwinCat;
+pub struct TwinCatProgram;
 
 /// A name of the ISG's reserved first letters, then letters or digits.
 fn isg_name(name: &str) -> Result<(), ProgramError> {
@@ -58,7 +58,7 @@ fn isg_name(name: &str) -> Result<(), ProgramError> {
     }
 }
 
-impl Dialect for TwinCat {
+impl Dialect for TwinCatProgram {
     fn name(&self) -> &'static str {
         "twincat"
     }

@@ -10,7 +10,7 @@
 
 use super::{Context, Contributor};
 use crate::uncertainty::budget::Input;
-use crate::uncertainty::extent::Shape;
+use crate::uncertainty::extent::ExtentShape;
 
 pub struct Calibration;
 
@@ -20,7 +20,7 @@ impl Contributor for Calibration {
     }
 
     fn input(&self, ctx: &Context) -> Option<Input> {
-        if ctx.extent.shape != Shape::Range {
+        if ctx.extent.shape != ExtentShape::Range {
             return None;
         }
         let i = &ctx.setup.instrument;
@@ -72,7 +72,7 @@ mod tests {
     #[test]
     fn not_at_one_position() {
         let mut extent = Extent::range(0.0);
-        extent.shape = Shape::Reversal;
+        extent.shape = ExtentShape::Reversal;
         let setup = Setup::for_instrument(InstrumentKind::LinearEncoder);
         assert!(line_for(&Calibration, &setup, &extent).is_none());
     }

@@ -25,7 +25,7 @@ mod temperature_change;
 mod uncorrected_expansion;
 
 use super::budget::{BudgetLine, Input};
-use super::extent::{Extent, Shape};
+use super::extent::{Extent, ExtentShape};
 use super::setup::Setup;
 use crate::units::AxisKind;
 
@@ -70,7 +70,7 @@ impl Context<'_> {
 
     /// A range on a linear axis: where length-proportional errors act.
     pub fn linear_range(&self) -> bool {
-        self.kind == AxisKind::Linear && self.extent.shape == Shape::Range
+        self.kind == AxisKind::Linear && self.extent.shape == ExtentShape::Range
     }
 
     /// `um` or `arcsec`.

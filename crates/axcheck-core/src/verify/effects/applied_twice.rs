@@ -2,16 +2,16 @@
 //! it already contained, a table loaded in two places (a table and a backlash or a second
 //! measuring system), or an incremental table added to itself.
 
-use super::{Candidate, Context, Effect, Key};
+use super::{Candidate, EffectContext, Key, VerifyEffect};
 
 pub struct AppliedTwice;
 
-impl Effect for AppliedTwice {
+impl VerifyEffect for AppliedTwice {
     fn key(&self) -> Key {
         Key::AppliedTwice
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         vec![Candidate {
             key: Key::AppliedTwice,
             change: ctx.applied().iter().map(|c| 2.0 * c).collect(),

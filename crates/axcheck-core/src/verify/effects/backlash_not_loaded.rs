@@ -18,18 +18,18 @@
 //! MD32450: SINUMERIK 840D sl / 828D Machine data and parameters, List Manual 08/2013
 //! (6FC5397-8EP40-0BA0), MD32450 BACKLASH, as cited by the `siemens-840d` controller.
 
-use super::{Candidate, Context, Effect, Key, chi2_of, mean_reversal};
+use super::{Candidate, EffectContext, Key, VerifyEffect, chi2_of, mean_reversal};
 use crate::compensate::controllers::Backlash;
 use crate::units::{Direction, fmt_fixed};
 
 pub struct BacklashNotLoaded;
 
-impl Effect for BacklashNotLoaded {
+impl VerifyEffect for BacklashNotLoaded {
     fn key(&self) -> Key {
         Key::BacklashNotLoaded
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         if ctx.controller.map(|c| c.backlash()) != Some(Backlash::Stated) {
             return Vec::new();
         }
@@ -62,11 +62,11 @@ impl Effect for BacklashNotLoaded {
 }
 
 /// What the data show: each direction follows the table, the reversal is as before.
-fn evidence(ctx: &Context, change: &[f64], named: f64, acting: f64) -> String {
+fn evidence(ctx: &EffectContext, change: &[f64], named: f64, acting: f64) -> String {
     let unit = ctx.new.kind.deviation_symbol();
     let (up, n_up) = chi2_of(ctx.rows, change, Direction::Up);
     let (down, n_down) = chi2_of(ctx.rows, change, Direction::Down);
-    let b = |f: fn(&super::Row) -> f64| fmt_fixed(mean_reversal(ctx.rows, f), 2);
+    let b = |f: fn(&super::ComparedTarget) -> f64| fmt_fixed(mean_reversal(ctx.rows, f), 2);
     format!(
         "the table acted but its backlash parameter was not loaded (SINUMERIK MD32450 still holds {} {unit}, not the {} {unit} named): each direction's change follows the table (χ²↑ = {} on {} targets, χ²↓ = {} on {}, each with its own offset), and the mean reversal B̄ is {} {unit} after, {} before, {} predicted",
         fmt_fixed(acting, 2),

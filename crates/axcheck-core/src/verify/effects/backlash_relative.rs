@@ -18,7 +18,7 @@
 //! scatter), the ↓ ones do not, and follow the ↑ column combined with the ↓ one. Tried only
 //! on `heidenhain`, whose table has such a column.
 
-use super::{Candidate, Context, Effect, Key, chi2_of};
+use super::{Candidate, EffectContext, Key, VerifyEffect, chi2_of};
 use crate::compensate::Table;
 use crate::compensate::controllers::Controller;
 use crate::compensate::controllers::heidenhain::Heidenhain;
@@ -26,12 +26,12 @@ use crate::units::{Direction, fmt_fixed};
 
 pub struct BacklashRelative;
 
-impl Effect for BacklashRelative {
+impl VerifyEffect for BacklashRelative {
     fn key(&self) -> Key {
         Key::BacklashRelative
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         if ctx.controller.map(|c| c.name()) != Some(Heidenhain.name()) {
             return Vec::new();
         }
@@ -67,7 +67,7 @@ fn relative(table: &Table, sign: f64) -> Table {
 }
 
 /// What the data show: ↑ follows the table named, ↓ the combined columns.
-fn evidence(ctx: &Context, change: &[f64], sign: f64) -> String {
+fn evidence(ctx: &EffectContext, change: &[f64], sign: f64) -> String {
     let applied = ctx.applied();
     let (up, n_up) = chi2_of(ctx.rows, &applied, Direction::Up);
     let (down, n_down) = chi2_of(ctx.rows, &applied, Direction::Down);

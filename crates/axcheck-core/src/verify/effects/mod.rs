@@ -18,7 +18,7 @@ pub mod scale;
 pub mod sign_inverted;
 pub mod wrong_axis;
 
-use super::compare::{Row, weighted_mean};
+use super::compare::{ComparedTarget, weighted_mean};
 use crate::compensate::Table;
 use crate::compensate::controllers::Controller;
 use crate::units::Direction;
@@ -67,8 +67,8 @@ pub struct Other {
 }
 
 /// What the effects see: the rows, the tables and the machine's other axes.
-pub struct Context<'a> {
-    pub rows: &'a [Row],
+pub struct EffectContext<'a> {
+    pub rows: &'a [ComparedTarget],
     /// The correction active before (None: nothing).
     pub old: Option<&'a Table>,
     /// The correction loaded since.
@@ -79,7 +79,7 @@ pub struct Context<'a> {
     pub controller: Option<&'a dyn Controller>,
 }
 
-impl Context<'_> {
+impl EffectContext<'_> {
     /// The change at each row if `new` acted at positions shifted by `shift` and `old`
     /// were replaced: new(P − shift) − old(P).
     pub fn change_with(&self, new: &Table, shift: f64) -> Vec<f64> {
@@ -137,15 +137,15 @@ pub struct Candidate {
 }
 
 /// One effect of the vocabulary.
-pub trait Effect: Sync {
+pub trait VerifyEffect: Sync {
     fn key(&self) -> Key;
     /// Its candidates for this verification.
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate>;
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate>;
 }
 
 /// Every effect, in the order in which they are preferred when two explain the change
 /// alike (the simpler mistake first).
-pub const EFFECTS: &[&dyn Effect] = &[
+pub const EFFECTS: &[&dyn VerifyEffect] = &[
     &not_active::NotActive,
     &sign_inverted::SignInverted,
     &applied_twice::AppliedTwice,
@@ -158,7 +158,7 @@ pub const EFFECTS: &[&dyn Effect] = &[
 
 /// The χ² of the measured change against `change`, a constant offset fitted: Σ ((Δx −
 /// change − offset)/u)².
-pub fn chi2(rows: &[Row], change: &[f64]) -> f64 {
+pub fn chi2(rows: &[ComparedTarget], change: &[f64]) -> f64 {
     let residual = |k: usize| rows[k].change() - change[k];
     let offset = weighted_mean((0..rows.len()).map(|k| (residual(k), rows[k].u)));
     (0..rows.len())
@@ -168,8 +168,8 @@ pub fn chi2(rows: &[Row], change: &[f64]) -> f64 {
 
 /// The χ² of the rows of one direction against `change` (as [`chi2`], its own offset),
 /// and their number.
-pub fn chi2_of(rows: &[Row], change: &[f64], direction: Direction) -> (f64, usize) {
-    let (r, c): (Vec<Row>, Vec<f64>) = rows
+pub fn chi2_of(rows: &[ComparedTarget], change: &[f64], direction: Direction) -> (f64, usize) {
+    let (r, c): (Vec<ComparedTarget>, Vec<f64>) = rows
         .iter()
         .zip(change)
         .filter(|(r, _)| r.direction == direction)
@@ -180,7 +180,7 @@ pub fn chi2_of(rows: &[Row], change: &[f64], direction: Direction) -> (f64, usiz
 
 /// The mean reversal B̄ = mean of x̄↑ − x̄↓ over the targets (ISO 230-2 2.14) of
 /// `value` (before, predicted or achieved) in the rows.
-pub fn mean_reversal(rows: &[Row], value: impl Fn(&Row) -> f64) -> f64 {
+pub fn mean_reversal(rows: &[ComparedTarget], value: impl Fn(&ComparedTarget) -> f64) -> f64 {
     let mean = |d: Direction| {
         let v: Vec<f64> = rows
             .iter()
@@ -194,10 +194,10 @@ pub fn mean_reversal(rows: &[Row], value: impl Fn(&Row) -> f64) -> f64 {
 
 /// The factor f that best scales the predicted change to the measured one (least
 /// squares, offset free): 1 when the table acted as loaded.
-pub fn fitted_factor(rows: &[Row]) -> f64 {
+pub fn fitted_factor(rows: &[ComparedTarget]) -> f64 {
     let weights: Vec<f64> = rows.iter().map(|r| 1.0 / (r.u * r.u)).collect();
     let total: f64 = weights.iter().sum();
-    let centred = |f: &dyn Fn(&Row) -> f64| {
+    let centred = |f: &dyn Fn(&ComparedTarget) -> f64| {
         let mean = rows
             .iter()
             .zip(&weights)

@@ -2,16 +2,16 @@
 //! (Siemens MD32700, ecmc's enable, FANUC's power cycle, LinuxCNC's `COMP_FILE` in the
 //! wrong joint section): the re-measurement shows no change at all.
 
-use super::{Candidate, Context, Effect, Key};
+use super::{Candidate, EffectContext, Key, VerifyEffect};
 
 pub struct NotActive;
 
-impl Effect for NotActive {
+impl VerifyEffect for NotActive {
     fn key(&self) -> Key {
         Key::NotActive
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         vec![Candidate {
             key: Key::NotActive,
             change: vec![0.0; ctx.rows.len()],

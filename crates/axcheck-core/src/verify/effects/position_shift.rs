@@ -13,7 +13,7 @@
 //! within the fit's 95 % interval (χ² less than 3.84 above the least, the 95 % point of χ²
 //! with one degree of freedom), else as fitted.
 
-use super::{Candidate, Context, Effect, Key, chi2};
+use super::{Candidate, EffectContext, Key, VerifyEffect, chi2};
 use crate::units::fmt_position;
 
 pub struct PositionShift;
@@ -26,12 +26,12 @@ const REACH_INTERVALS: f64 = 3.0;
 /// point of χ² with one degree of freedom.
 const ROUND_WITHIN: f64 = 3.841;
 
-impl Effect for PositionShift {
+impl VerifyEffect for PositionShift {
     fn key(&self) -> Key {
         Key::PositionShift
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         let h = ctx.interval();
         if h <= 0.0 {
             return Vec::new();

@@ -3,19 +3,19 @@
 //! those of units, not a free fit: a free factor near 1 is the scatter or the machine
 //! changing, not a mistake.
 
-use super::{Candidate, Context, Effect, Key};
+use super::{Candidate, EffectContext, Key, VerifyEffect};
 
 pub struct Scale;
 
 /// The factors tried: units mistaken by powers of ten, inch for mm, and their inverses.
 const FACTORS: [f64; 8] = [10.0, 100.0, 1000.0, 25.4, 0.1, 0.01, 0.001, 1.0 / 25.4];
 
-impl Effect for Scale {
+impl VerifyEffect for Scale {
     fn key(&self) -> Key {
         Key::Scale
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         let applied = ctx.applied();
         FACTORS
             .iter()

@@ -2,16 +2,16 @@
 //! another subtracts: ecmc before and after 10.0.0, LinuxCNC's documentation against its
 //! code, an unconfirmed FANUC sign), so the error doubled instead of vanishing.
 
-use super::{Candidate, Context, Effect, Key};
+use super::{Candidate, EffectContext, Key, VerifyEffect};
 
 pub struct SignInverted;
 
-impl Effect for SignInverted {
+impl VerifyEffect for SignInverted {
     fn key(&self) -> Key {
         Key::SignInverted
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         vec![Candidate {
             key: Key::SignInverted,
             change: ctx.applied().iter().map(|c| -c).collect(),

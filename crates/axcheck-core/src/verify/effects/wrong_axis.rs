@@ -4,16 +4,16 @@
 //! tables loaded for the machine's other axes (in a campaign, those their `verifies`
 //! names; on the command line, `--other`).
 
-use super::{Candidate, Context, Effect, Key};
+use super::{Candidate, EffectContext, Key, VerifyEffect};
 
 pub struct WrongAxis;
 
-impl Effect for WrongAxis {
+impl VerifyEffect for WrongAxis {
     fn key(&self) -> Key {
         Key::WrongAxis
     }
 
-    fn candidates(&self, ctx: &Context) -> Vec<Candidate> {
+    fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         ctx.others
             .iter()
             .filter(|o| o.new.kind == ctx.new.kind)

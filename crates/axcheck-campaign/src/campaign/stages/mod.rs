@@ -1,0 +1,12 @@
+//! Each stage's configuration taken from the campaign, one file per stage, in the
+//! pipeline's order: the plan rules' context ([`rules`]), the NDE correction ([`nde`]),
+//! the evaluation ([`evaluate`]), the uncertainty's set-up ([`uncertainty`]), the decision
+//! rule ([`judge`]) and the diagnosis's options ([`diagnose`]). The stages themselves are
+//! the core's and know nothing of campaigns; the batch calls these adapters.
+
+pub mod diagnose;
+pub mod evaluate;
+pub mod judge;
+pub mod nde;
+pub mod rules;
+pub mod uncertainty;

@@ -1,0 +1,47 @@
+//! What the test-plan rules know of an axis from the campaign: its kind, standard and
+//! travels, its pitch, and the planned test it names (`plan:`), read beneath the
+//! campaign's folder.
+
+use crate::campaign::AxisSpec;
+use crate::files::Root;
+use crate::rules::{self, PlanContext};
+use crate::units::AxisKind;
+
+/// What the test-plan rules need to know of an axis from the campaign.
+pub fn context(axis: &AxisSpec) -> PlanContext {
+    PlanContext {
+        kind: axis.raw.kind,
+        standard: axis.standard,
+        axis_travel: axis.raw.travel,
+        measurement_travel: axis.raw.measurement_travel,
+        pitch: axis.raw.pitch,
+        planned: None,
+        unstated: None,
+    }
+}
+
+/// The planned test `raw` names, read as the rules compare it (or why it cannot be read).
+pub fn planned(
+    raw: &crate::campaign::model::PlanRaw,
+    kind: AxisKind,
+    files: &Root,
+) -> rules::Planned {
+    let unread = |e: &dyn std::fmt::Display| rules::PlanUnread::File(e.to_string());
+    let read = || -> Result<(Vec<f64>, usize), rules::PlanUnread> {
+        let path = files.resolve(&raw.file).map_err(|e| unread(&e))?;
+        let text = files.read_to_string(&path).map_err(|e| unread(&e))?;
+        let plan = crate::plan::file::from_yaml(&text, &raw.file).map_err(|e| unread(&e))?;
+        if plan.axis.kind != kind {
+            return Err(rules::PlanUnread::Kind {
+                planned: plan.axis.kind,
+                measured: kind,
+            });
+        }
+        Ok((plan.targets, plan.runs))
+    };
+    rules::Planned {
+        file: raw.file.clone(),
+        read: read(),
+        tolerance: raw.tolerance.unwrap_or(0.01),
+    }
+}
