@@ -10,10 +10,17 @@
 //! controllers' tables (→ [`verify`] compares a re-measurement with the prediction) →
 //! `history` keeps every run and [`trend`] follows each axis across them → `export` and
 //! `report` write the outputs. `session` runs one campaign in that order; [`batch`] runs
-//! the stages of every axis in parallel, and [`results`] is what they give. Below them: [`axis_model`] (the axis's error
-//! model, test plan and a simulated test), [`nde`] (the temperature correction),
+//! the stages of every axis in parallel, and [`results`] is what they give.
+//!
+//! The stages are crates of one workspace, each depending only on those below it
+//! (README "Layout"): `axcheck-core` (the pure computation), `axcheck-campaign` (the
+//! user's files to the result model), `axcheck-charts` (the charts as data) and this
+//! package (history, reports, exporters, session, command line), which re-exports the
+//! lower crates' modules under their names. Below the stages: [`axis_model`] (the axis's
+//! error model, test plan and a simulated test), [`nde`] (the temperature correction),
 //! [`files`] (all reading of user files, rooted), [`yaml`], [`units`], [`atomic`],
-//! [`lock`] and [`safe_text`] (input text made safe for each output); [`simulate`] writes simulation files and synthetic fleets.
+//! [`lock`] and [`safe_text`] (input text made safe for each output); [`simulate`] writes
+//! simulation files and synthetic fleets.
 
 pub mod export;
 pub mod history;

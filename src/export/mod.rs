@@ -3,7 +3,6 @@
 
 pub mod compensation;
 pub mod csv;
-#[cfg(feature = "pdf")]
 pub mod html;
 pub mod json;
 pub mod junit;

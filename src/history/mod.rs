@@ -8,6 +8,7 @@
 //! complete file or none, and temporary files never match `*.parquet`.
 
 mod axes;
+mod charts;
 #[cfg(feature = "parquet")]
 mod footer;
 #[cfg(feature = "parquet")]
@@ -19,6 +20,7 @@ mod series;
 mod store;
 
 pub use axes::{AxisKey, AxisTrends};
+pub use charts::{History, HistoryChart, history_of};
 pub use record::{Record, SCHEMA_VERSION};
 pub use rows::{records, run_date};
 pub use series::{SeriesBuilder, series};

@@ -7,17 +7,16 @@
 //! document uses the same virtual paths, so Typst's global file-id table does not grow
 //! with the number of reports.
 
-// The rooms: typesetting (Typst's world, text shaped directly, lines of text, drawings),
-// the chart kit (a canvas, scenes and their labels, shared plotting helpers), one file
-// per chart, and the data each document reads.
-pub mod chart_kit;
-pub mod charts;
-pub mod data;
+// The rooms: typesetting (Typst's world, text shaped directly, lines of text, drawings)
+// here; the chart kit (a canvas, scenes and their labels, shared plotting helpers), one
+// file per chart, and the data each document reads in `axcheck-charts`, below.
 pub mod typeset;
+pub use axcheck_charts::{chart_kit, charts, data, figures::iso_charts};
 
-use crate::history::AxisTrends;
+use crate::history::{AxisTrends, history_of};
 use crate::results::{AxisTest, CampaignResult};
 use crate::trend::{Series, Trend};
+use axcheck_charts::figures::{CHART_HEIGHT_PX, CHART_WIDTH_PX, TREND_STYLE};
 use chart_kit::{labels, scene::Scene};
 use charts::{
     check as check_chart, compensation as compensation_chart, diagnosis as diagnosis_charts,
@@ -107,51 +106,6 @@ impl Files {
     }
 }
 
-/// The figures of ISO 230-2 Fig. 2a (bidirectional) and Fig. 2b (unidirectional) of an
-/// evaluation, as the axis report shows them (`summary.html` draws the same scenes).
-pub fn iso_charts(e: &crate::evaluate::Evaluation) -> [Scene; 2] {
-    let (chart, up, down) = data::axis_chart(e);
-    let style = |height_px| charts::Style {
-        width_px: CHART_WIDTH_PX,
-        height_px,
-    };
-    [
-        charts::bidirectional(&chart, &style(CHART_HEIGHT_PX)),
-        charts::unidirectional(&chart, &up, &down, &style(UNIDIRECTIONAL_HEIGHT_PX)),
-    ]
-}
-
-/// A test's history over the inspections: the report's section and its charts.
-pub struct History {
-    pub section: data::trends::HistorySection,
-    pub charts: Vec<HistoryChart>,
-}
-
-/// One parameter's history chart.
-pub struct HistoryChart {
-    /// The chart's file name in the report.
-    pub name: String,
-    /// The parameter charted, as the chart labels it.
-    pub label: String,
-    pub scene: Scene,
-}
-
-/// A test's history (when the run keeps one and the test has a series in it).
-pub fn history(test: &AxisTest, trends: Option<&AxisTrends>) -> Option<History> {
-    let trends = trends?;
-    let m = &test.machine;
-    let pairs = trends.axis(&m.id, m.serial.as_deref(), &test.axis);
-    let (section, charts) = data::trends::history_section(pairs, trends.options.horizon_years)?;
-    let charts = (charts.into_iter())
-        .map(|(name, chart)| HistoryChart {
-            label: chart.value_label.clone(),
-            scene: trend_chart::trend(&chart, &TREND_STYLE),
-            name,
-        })
-        .collect();
-    Some(History { section, charts })
-}
-
 /// The template `name` of the folder `root`: its real path inside the folder, and the file
 /// opened inside it (a link swapped after the check is refused).
 fn read_template(root: &crate::files::Root, name: &str) -> Result<String, ReportError> {
@@ -179,16 +133,6 @@ pub struct Rendered {
 pub struct Reports {
     typesetter: Typesetter,
 }
-
-/// Chart sizes in pixels, shown about 16 cm wide (the chart module's design size).
-const CHART_WIDTH_PX: u32 = 900;
-const CHART_HEIGHT_PX: u32 = 420;
-const UNIDIRECTIONAL_HEIGHT_PX: u32 = 600;
-/// A trend chart, three to a row: about 5.7 cm wide at the charts' scale.
-const TREND_STYLE: trend_chart::Style = trend_chart::Style {
-    width_px: 320,
-    height_px: 210,
-};
 
 impl Reports {
     /// With the built-in templates, or those in `dir` (a customised copy of `templates/`):
@@ -277,7 +221,7 @@ impl Reports {
         let document = test.label();
         let mut report = data::axis_report(result, test);
         let mut history_charts = Vec::new();
-        if let Some(history) = history(test, trends) {
+        if let Some(history) = history_of(test, trends) {
             report = report.with_history(history.section);
             history_charts = history.charts;
         }

@@ -16,6 +16,10 @@ const LAYERS: &[&[&str]] = &[
     &["compensate", "plan"],
     &["campaign", "verify"],
     &["results"],
+    &["chart_kit"],
+    &["charts"],
+    &["data"],
+    &["figures"],
     &["batch"],
     &["history"],
     &["report"],
@@ -29,6 +33,7 @@ const MAX_FILE_LINES: usize = 800;
 /// The source folders of the workspace's crates, the top first (README "Layout").
 const CRATES: &[&str] = &[
     "src",
+    "crates/axcheck-charts/src",
     "crates/axcheck-campaign/src",
     "crates/axcheck-core/src",
 ];
@@ -50,6 +55,10 @@ const FORBIDDEN: &[(&str, &[&str])] = &[
     (
         "crates/axcheck-campaign",
         &["typst", "polars", "plotters", "rust_xlsxwriter"],
+    ),
+    (
+        "crates/axcheck-charts",
+        &["typst", "polars", "calamine", "rust_xlsxwriter"],
     ),
 ];
 

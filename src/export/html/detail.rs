@@ -157,7 +157,7 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
 fn charts(t: &AxisTest, trends: Option<&AxisTrends>) -> Vec<Chart> {
     let mut charts = Vec::new();
     if let Some(e) = t.evaluated().map(|e| &e.evaluation) {
-        let [bidirectional, unidirectional] = crate::report::iso_charts(e);
+        let [bidirectional, unidirectional] = axcheck_charts::figures::iso_charts(e);
         charts.push(Chart {
             group: "iso",
             title: "Bidirectional positional deviations (ISO 230-2 Fig. 2a)".into(),
@@ -169,7 +169,7 @@ fn charts(t: &AxisTest, trends: Option<&AxisTrends>) -> Vec<Chart> {
             scene: SceneData::of(&unidirectional),
         });
     }
-    if let Some(history) = crate::report::history(t, trends) {
+    if let Some(history) = crate::history::history_of(t, trends) {
         for chart in history.charts {
             charts.push(Chart {
                 group: "history",

@@ -44,7 +44,7 @@ pub struct HtmlExporter {
 #[derive(Serialize)]
 struct Page<'a> {
     generator: String,
-    campaign: crate::report::data::CampaignHeader<'a>,
+    campaign: axcheck_charts::data::CampaignHeader<'a>,
     /// Tests per verdict, in the order of attention (fail first); inconclusive only when
     /// a test was judged by ISO 14253-1, not judged only when a test had no limit.
     counts: Vec<(Verdict, usize)>,
@@ -63,7 +63,7 @@ impl Exporter for HtmlExporter {
         let trends = self.trends.as_deref();
         let page = Page {
             generator: format!("axcheck {}", env!("CARGO_PKG_VERSION")),
-            campaign: crate::report::data::CampaignHeader::new(result),
+            campaign: axcheck_charts::data::CampaignHeader::new(result),
             counts: counts(result),
             history: trends.is_some(),
             block: BLOCK,

@@ -1,8 +1,8 @@
 //! A chart's scene as data for the page's script, which draws it as inline SVG: the same
-//! shapes and texts the PDF report draws (see [`crate::report::chart_kit::scene`]), never markup. The
+//! shapes and texts the PDF report draws (see [`axcheck_charts::chart_kit::scene`]), never markup. The
 //! script creates each element and sets each text as text, so a label can hold anything.
 
-use crate::report::chart_kit::scene::{Align, Paint, Scene};
+use axcheck_charts::chart_kit::scene::{Align, Paint, Scene};
 use serde::Serialize;
 
 /// A chart: its size in pixels, its shapes in drawing order, its texts.

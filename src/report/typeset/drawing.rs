@@ -9,9 +9,9 @@
 //! function is defined once in the shared library (see [`crate::report::typeset::world`]) and reads the
 //! chart through the document's `World`, so Typst's caches see it as data like any file.
 
-use crate::report::chart_kit::labels::{ChartLabels, Label};
-use crate::report::chart_kit::scene::{Colour, Drawing, Outline, Paint};
 use crate::report::typeset::text_lines::{self, Paragraph, ParagraphSettings};
+use axcheck_charts::chart_kit::labels::{ChartLabels, Label};
+use axcheck_charts::chart_kit::scene::{Colour, Drawing, Outline, Paint};
 use typst::diag::{At, SourceResult};
 use typst::engine::Engine;
 use typst::foundations::{Bytes, Content, NativeElement, Packed, Resolve, StyleChain, Styles};
@@ -219,7 +219,7 @@ fn point((x, y): (i32, i32)) -> Point {
 /// Filled circles of one radius (a series' markers) as the dots of a line of no length with
 /// round caps as wide as the circles: a few bytes each in the page instead of four curves.
 /// `None` for other shapes and for one circle alone (PDF writers drop a path of no extent).
-fn dots(shape: &crate::report::chart_kit::scene::SceneShape) -> Option<Shape> {
+fn dots(shape: &axcheck_charts::chart_kit::scene::SceneShape) -> Option<Shape> {
     let Paint::Fill(colour) = shape.paint else {
         return None;
     };

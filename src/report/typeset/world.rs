@@ -7,9 +7,9 @@
 //! `/data.json`, the charts' drawings and labels), all in memory: a template can read
 //! nothing from the disk, and report data reach it only as data.
 
-use crate::report::chart_kit::scene::Scene;
 use crate::report::typeset::drawing::chart_drawing;
 use crate::report::typeset::text_lines::{text_columns, text_lines, text_widths};
+use axcheck_charts::chart_kit::scene::Scene;
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 use typst::diag::{FileError, FileResult};
@@ -127,7 +127,7 @@ impl Picture {
         let scene = &self.scene;
         let made = self.bytes.get_or_init(|| match self.form {
             Form::Labels => {
-                serde_json::to_vec(&crate::report::chart_kit::labels::ChartLabels::of(scene))
+                serde_json::to_vec(&axcheck_charts::chart_kit::labels::ChartLabels::of(scene))
                     .map(Bytes::new)
                     .map_err(|e| FileError::Other(Some(e.to_string().into())))
             }

@@ -1,0 +1,414 @@
+//! The data of one axis test report (ISO 230-2 clause 7): header facts, verdict, the
+//! parameters with their limits, the per-target table of Table 2, the test-plan findings
+//! and the diagnosis.
+
+use super::compensation::{CompensationSection, compensation_section};
+use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
+use super::uncertainty::{UncertaintySection, uncertainty_section};
+use super::{AXIS_NAME, CampaignHeader, generator, num, opt, pos, s_symbol, short_name, symbol_of};
+use crate::data::diagnosis::{DiagnosisSection, diagnosis_section};
+use crate::evaluate::{DirectionResult, Evaluation, StandardId};
+use crate::judge::{Conformance, Verdict};
+use crate::measurement::FileInfo;
+use crate::results::{AxisTest, CampaignResult};
+use crate::rules::Violation;
+use crate::units::{Travel, fmt_position};
+use serde::Serialize;
+
+/// Everything `axis-report.typ` shows.
+#[derive(Serialize)]
+pub struct AxisReport<'a> {
+    campaign: CampaignHeader<'a>,
+    /// The campaign's name for headings and footers ([`super::campaign_short`]).
+    campaign_short: String,
+    title: String,
+    facts: Vec<Row>,
+    /// Names the facts shorten, in full.
+    full_names: Vec<Row>,
+    verdict: VerdictText,
+    unit: &'static str,
+    conditions: Vec<Row>,
+    sensors: Vec<SensorRow<'a>>,
+    parameters: Vec<ParameterRow>,
+    coverage: String,
+    s_symbol: &'static str,
+    n: usize,
+    targets: Vec<TargetRow>,
+    notes: &'a [String],
+    findings: &'a [Violation],
+    has_charts: bool,
+    diagnosis: Option<DiagnosisSection<'a>>,
+    uncertainty: Option<UncertaintySection<'a>>,
+    /// The table of the machine's controller (only when the machine names one).
+    compensation: Option<CompensationSection<'a>>,
+    /// The axis over the inspection history (only when the run keeps one).
+    history: Option<super::trends::HistorySection>,
+    /// The results the tool that wrote the file printed, beside axcheck's.
+    other_tool: Option<super::other_tool::OtherToolSection<'a>>,
+    generator: String,
+}
+
+impl AxisReport<'_> {
+    /// The report with the axis's history section.
+    pub fn with_history(mut self, history: super::trends::HistorySection) -> Self {
+        self.history = Some(history);
+        self
+    }
+}
+
+/// The data of one axis report.
+pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisReport<'a> {
+    let kind = t.kind();
+    let ev = t.evaluated();
+    let e = ev.map(|e| &e.evaluation);
+    let conditions = t.spec.as_ref().map(|s| &*s.raw.conditions);
+    AxisReport {
+        campaign: CampaignHeader::new(result),
+        campaign_short: super::campaign_short(result),
+        // Shortened: the facts below print the names whole.
+        title: format!(
+            "{} — axis {}",
+            short_name(&t.machine.id, super::SHORT_NAME),
+            short_name(&t.axis, AXIS_NAME)
+        ),
+        facts: facts(result, t),
+        full_names: full_names(t),
+        verdict: VerdictText::new(t),
+        unit: kind.map_or("", |k| k.deviation_symbol()),
+        conditions: match (conditions, kind) {
+            (Some(c), Some(k)) => condition_rows(c, k, t),
+            _ => Vec::new(),
+        },
+        sensors: conditions.map_or(Vec::new(), sensor_rows),
+        parameters: e.map_or(Vec::new(), |e| parameter_rows(t, e)),
+        coverage: e.map_or(String::new(), |e| fmt_position(e.coverage_factor)),
+        s_symbol: s_symbol(t.standard()),
+        n: e.map_or(0, |e| e.n),
+        targets: e.map_or(Vec::new(), target_rows),
+        notes: e.map_or(&[], |e| &e.notes),
+        findings: t.findings(),
+        has_charts: e.is_some(),
+        diagnosis: ev.and_then(|e| e.diagnosis.as_deref()).map(|d| {
+            let out_of_test = ev.map_or(&[][..], |e| &e.out_of_test);
+            diagnosis_section(d, out_of_test, |k| symbol_of(t, k))
+        }),
+        uncertainty: ev
+            .and_then(|e| e.uncertainty.as_ref())
+            .zip(kind)
+            .map(|(u, k)| uncertainty_section(t, u, k.deviation_symbol(), k.position_unit())),
+        compensation: ev
+            .and_then(|e| e.compensation.as_deref())
+            .zip(e)
+            .map(|(c, e)| compensation_section(c, e, ev.and_then(|e| e.verification.as_deref()))),
+        history: None,
+        other_tool: ev
+            .and_then(|e| e.other_tool.as_deref())
+            .map(super::other_tool::other_tool_section),
+        generator: generator(),
+    }
+}
+
+/// A name in the two-column facts: whole when short, else shortened with a pointer to
+/// [`full_names`] (a 10 000-character name in a half-width column filled nine pages).
+fn in_facts(name: &str, max: usize) -> String {
+    if name.chars().count() <= max {
+        name.to_string()
+    } else {
+        format!("{} (in full below)", short_name(name, max))
+    }
+}
+
+/// The machine's and the axis's names in full, across the text width, where the facts
+/// shorten them: each printed whole once.
+fn full_names(t: &AxisTest) -> Vec<Row> {
+    Row::present([
+        (
+            "Machine, in full",
+            (t.machine.id.chars().count() > super::SHORT_NAME).then(|| t.machine.id.clone()),
+        ),
+        (
+            "Axis, in full",
+            (t.axis.chars().count() > AXIS_NAME).then(|| t.axis.clone()),
+        ),
+    ])
+}
+
+/// The header facts: machine, axis, travels, file, standard, spec, date and inspector.
+fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
+    let m = &t.machine;
+    let kind = t.kind();
+    let travel = t
+        .spec
+        .as_ref()
+        .and_then(|s| s.raw.travel)
+        .zip(kind)
+        .map(|(tr, k)| match tr {
+            Travel::Length(l) => pos(k, l),
+            Travel::Range([a, b]) => format!("{} … {}", pos(k, a), pos(k, b)),
+        });
+    let measured = t.evaluated().and_then(|e| e.data.as_ref()).map(|d| {
+        let (a, b) = d.measurement_travel();
+        format!("{} … {}", pos(d.kind, a), pos(d.kind, b))
+    });
+    let axis = format!(
+        "{}{}",
+        in_facts(&t.axis, AXIS_NAME),
+        kind.map_or(String::new(), |k| format!(" ({k})"))
+    );
+    let test = (t.tests > 1).then(|| format!("{} of {} tests of this axis", t.test, t.tests));
+    // What the file says of itself fills what the campaign leaves out, marked as such.
+    let info = t.recognised().and_then(|r| r.info.as_ref());
+    let file = |f: fn(&FileInfo) -> &Option<String>| {
+        info.and_then(|i| f(i).as_ref())
+            .map(|v| format!("{v} (measurement file)"))
+    };
+    let differs = |f: fn(&FileInfo) -> &Option<String>, campaign: &str| {
+        info.and_then(|i| f(i).clone())
+            .filter(|v| v.trim() != campaign)
+    };
+    Row::present([
+        ("Machine", Some(in_facts(&m.id, super::SHORT_NAME))),
+        ("Machine in the file", differs(|i| &i.machine, &m.id)),
+        ("Model", m.model.clone()),
+        (
+            "Serial number",
+            m.serial.clone().or_else(|| file(|i| &i.serial)),
+        ),
+        ("Type", m.machine_type.clone()),
+        (
+            "Location",
+            m.location.clone().or_else(|| file(|i| &i.location)),
+        ),
+        ("Axis", Some(axis)),
+        ("Axis in the file", differs(|i| &i.axis, &t.axis)),
+        ("Axis travel", travel),
+        ("Measurement travel", measured),
+        ("Measurement file", t.file.clone()),
+        ("Test", test),
+        ("Standard", t.standard().map(|s| s.title().to_string())),
+        (
+            "Acceptance spec",
+            t.evaluated()
+                .and_then(|e| e.judgement.as_ref())
+                .map(|j| j.limits.describe_labelled()),
+        ),
+        (
+            "Test date",
+            result.info.date.clone().or_else(|| file(|i| &i.date)),
+        ),
+        (
+            "Inspector",
+            result
+                .info
+                .inspector
+                .clone()
+                .or_else(|| file(|i| &i.operator)),
+        ),
+    ])
+}
+
+/// The verdict in words.
+#[derive(Serialize)]
+struct VerdictText {
+    key: Verdict,
+    word: String,
+    detail: String,
+}
+
+impl VerdictText {
+    fn new(t: &AxisTest) -> VerdictText {
+        let detail = match t.verdict() {
+            Verdict::NotJudged => {
+                "Not judged: no tolerance applied, so nothing was compared with a limit; evaluated and checked against the test-plan rules only."
+                    .to_string()
+            }
+            Verdict::Pass => {
+                let n = t
+                    .evaluated()
+                    .and_then(|e| e.judgement.as_ref())
+                    .map_or(0, |j| j.checks.len());
+                format!("All {n} limited parameters are within tolerance.")
+            }
+            Verdict::Fail => {
+                let failed: Vec<String> = t
+                    .evaluated()
+                    .and_then(|e| e.judgement.as_ref())
+                    .into_iter()
+                    .flat_map(|j| j.failed())
+                    .map(|c| symbol_of(t, c.key.as_str()))
+                    .collect();
+                format!("Over the limit: {}.", failed.join(", "))
+            }
+            Verdict::Noncompliant => format!(
+                "The test does not follow the standard's plan ({}): its results cannot be used for acceptance.",
+                t.broken_rules()
+                    .map(|f| f.id)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            Verdict::Error => t.error().unwrap_or_default().to_string(),
+            Verdict::Inconclusive => {
+                let unit = t.kind().map_or("", |k| k.deviation_symbol());
+                let zone: Vec<String> = t
+                    .inconclusive()
+                    .map(|c| {
+                        format!(
+                            "{} = {} ± {} {unit} against {} {unit}",
+                            symbol_of(t, c.key.as_str()),
+                            num(c.value),
+                            num(c.expanded_uncertainty.unwrap_or(0.0)),
+                            num(c.limit)
+                        )
+                    })
+                    .collect();
+                format!(
+                    "Within the uncertainty of the measurement at the limit (ISO 14253-1: limit ± U): {}. Neither conformance nor nonconformance is proven.",
+                    zone.join("; ")
+                )
+            }
+        };
+        let unit = t.kind().map_or("", |k| k.deviation_symbol());
+        let large: Vec<String> = (t.large_uncertainty().iter())
+            .map(|l| l.text(2, unit))
+            .collect();
+        let detail = match large.is_empty() {
+            true => detail,
+            false => format!(
+                "{detail} The uncertainty is large for this verdict: {}.",
+                large.join("; ")
+            ),
+        };
+        VerdictText {
+            key: t.verdict(),
+            word: t.verdict().words().to_uppercase(),
+            detail,
+        }
+    }
+}
+
+/// A line of the results table.
+#[derive(Serialize)]
+struct ParameterRow {
+    symbol: &'static str,
+    name: &'static str,
+    clause: String,
+    value: String,
+    /// The expanded uncertainty U (k = 2) of the value, `±0.87`, or `–`.
+    u: String,
+    limit: String,
+    margin: String,
+    status: &'static str,
+    at: String,
+}
+
+/// The parameters of the standard with value, limit, margin and status, then the
+/// standard's parameters that do not apply with n = 1 (ISO 230-2 clause 5.2).
+fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
+    let mut rows: Vec<ParameterRow> = e
+        .parameters
+        .iter()
+        .map(|p| {
+            let check = t
+                .evaluated()
+                .and_then(|e| e.judgement.as_ref())
+                .and_then(|j| j.checks.iter().find(|c| c.key == p.def.key));
+            let at = if let Some(i) = p.at_target {
+                format!("at i = {} ({})", i + 1, pos(e.kind, e.targets[i].position))
+            } else if let Some((hi, lo)) = p.span {
+                format!("{} − ({})", num(hi), num(lo))
+            } else {
+                String::new()
+            };
+            ParameterRow {
+                symbol: p.symbol(),
+                name: p.name(),
+                clause: p
+                    .clause()
+                    .replace(" (GB/T 17421.2 amendment No. 1)", ", amd. 1"),
+                value: num(p.value),
+                u: t.evaluated()
+                    .and_then(|e| e.uncertainty.as_ref())
+                    .and_then(|u| u.expanded_of(p.def.key))
+                    .map_or("–".into(), |u| format!("±{}", num(u))),
+                limit: check.map_or("–".into(), |c| num(c.limit)),
+                margin: check.map_or("–".into(), |c| num(c.margin)),
+                status: check.map_or("", |c| match c.outcome {
+                    Conformance::Pass => "pass",
+                    Conformance::Fail => "fail",
+                    Conformance::Inconclusive => "inconclusive",
+                }),
+                at,
+            }
+        })
+        .collect();
+    rows.extend(e.not_applicable().map(|def| ParameterRow {
+        symbol: def.symbol,
+        name: def.name,
+        clause: match e.standard {
+            StandardId::Iso230_2 | StandardId::Gbt17421_2 => "ISO 230-2 5.2".to_string(),
+            _ => def.clause.to_string(),
+        },
+        value: "not applicable".into(),
+        u: "–".into(),
+        limit: "–".into(),
+        margin: "–".into(),
+        status: "n/a",
+        at: format!("n = {}", e.n),
+    }));
+    rows
+}
+
+/// A column of the per-target table (ISO 230-2 Table 2).
+#[derive(Serialize)]
+struct TargetRow {
+    i: String,
+    position: String,
+    up: DirectionColumn,
+    down: DirectionColumn,
+    b: String,
+    r: String,
+    mean: String,
+}
+
+/// One direction's readings and statistics at a target.
+#[derive(Serialize)]
+struct DirectionColumn {
+    x: Vec<String>,
+    mean: String,
+    s: String,
+    ks: String,
+    upper: String,
+    lower: String,
+    r: String,
+}
+
+impl DirectionColumn {
+    fn new(d: &DirectionResult, k: f64) -> DirectionColumn {
+        DirectionColumn {
+            x: d.deviations.iter().map(|&x| num(x)).collect(),
+            mean: num(d.mean),
+            s: opt(d.s),
+            ks: opt(d.s.map(|s| k * s)),
+            upper: opt(d.upper),
+            lower: opt(d.lower),
+            r: opt(d.repeatability),
+        }
+    }
+}
+
+fn target_rows(e: &Evaluation) -> Vec<TargetRow> {
+    let k = e.coverage_factor;
+    e.targets
+        .iter()
+        .enumerate()
+        .map(|(i, t)| TargetRow {
+            i: (i + 1).to_string(),
+            position: fmt_position(t.position).replace('-', "−"),
+            up: DirectionColumn::new(&t.up, k),
+            down: DirectionColumn::new(&t.down, k),
+            b: num(t.reversal),
+            r: opt(t.repeatability),
+            mean: num(t.mean),
+        })
+        .collect()
+}

@@ -1,0 +1,15 @@
+//! axcheck's charts as data, below the documents that show them: the chart kit
+//! ([`chart_kit`]: a canvas that records what plotters draws, the scene it makes, its
+//! labels), one file per chart ([`charts`]), and what each report reads ([`data`]). The PDF
+//! reports typeset these scenes with Typst, `summary.html` draws the same scenes in the
+//! browser: neither is needed to build them (no Typst, no polars here).
+
+pub mod chart_kit;
+pub mod charts;
+pub mod data;
+pub mod figures;
+
+use axcheck_campaign::{campaign, judge, measurement, results, trend};
+use axcheck_core::{
+    axis_model, compensate, crosscheck, diagnose, evaluate, nde, rules, uncertainty, units, verify,
+};
