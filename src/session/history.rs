@@ -56,7 +56,7 @@ pub(super) fn append(
         trends: None,
     };
     if appended.path.is_some() {
-        match AxisTrends::of_history(dir, &records, horizon) {
+        match crate::history::trends_of_history(dir, &records, horizon) {
             Ok(trends) => appended.trends = Some(Arc::new(trends)),
             Err(e) => appended.unread = Some(e),
         }

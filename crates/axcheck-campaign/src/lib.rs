@@ -15,6 +15,7 @@ pub mod atomic;
 pub mod batch;
 pub mod campaign;
 pub mod files;
+pub mod history;
 pub mod judge;
 pub mod lock;
 pub mod measurement;

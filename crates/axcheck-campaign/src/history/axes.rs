@@ -19,30 +19,19 @@ pub struct AxisTrends {
 impl AxisTrends {
     /// The series in `history` of the axes that have rows in `run`, fitted with `options`.
     pub fn of_run(history: &[Record], run: &[Record], options: trend::TrendOptions) -> AxisTrends {
-        let wanted: BTreeSet<AxisKey> = run.iter().map(key).collect();
+        let wanted: BTreeSet<AxisKey> = run.iter().map(axis_key).collect();
         let mut builder = super::SeriesBuilder::default();
-        builder.add(history.iter().filter(|r| wanted.contains(&key(r))).cloned());
+        builder.add(
+            history
+                .iter()
+                .filter(|r| wanted.contains(&axis_key(r)))
+                .cloned(),
+        );
         AxisTrends::fitted(builder.finish(), options)
     }
 
-    /// [`AxisTrends::of_run`] over the history in `dir`, read file by file: only the run's
-    /// axes' series are kept, never the whole history.
-    #[cfg(feature = "parquet")]
-    pub fn of_history(
-        dir: &std::path::Path,
-        run: &[Record],
-        options: trend::TrendOptions,
-    ) -> Result<AxisTrends, super::HistoryError> {
-        let wanted: BTreeSet<AxisKey> = run.iter().map(key).collect();
-        let mut builder = super::SeriesBuilder::default();
-        super::visit(dir, |rows| {
-            builder.add(rows.into_iter().filter(|r| wanted.contains(&key(r))));
-        })?;
-        Ok(AxisTrends::fitted(builder.finish(), options))
-    }
-
     /// The series fitted, by axis.
-    fn fitted(series: Vec<Series>, options: trend::TrendOptions) -> AxisTrends {
+    pub fn fitted(series: Vec<Series>, options: trend::TrendOptions) -> AxisTrends {
         let fitted: Vec<(Series, Trend)> = series
             .into_par_iter()
             .map(|s| {
@@ -86,7 +75,8 @@ impl AxisTrends {
     }
 }
 
-fn key(r: &Record) -> AxisKey {
+/// Whose series a record belongs to.
+pub fn axis_key(r: &Record) -> AxisKey {
     (
         r.machine.to_string(),
         r.serial.as_deref().map(str::to_string),
