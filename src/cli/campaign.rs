@@ -313,10 +313,8 @@ pub fn run_command(args: &RunArgs) -> Result<u8> {
     let start = Instant::now();
     let campaign = Campaign::load(&args.campaign)?;
     let options = run_options(args, &campaign)?;
-    let console = Console::new(&campaign, Progress::of(args.progress));
-    let outcome = session::run(&campaign, &options, &console);
-    console.finish();
-    print_run(&options, outcome?, start)
+    let outcome = run_with_console(&campaign, &options, args.progress)?;
+    print_run(&options, outcome, start)
 }
 
 /// `axcheck check`: the CI gate; writes nothing.
@@ -326,17 +324,30 @@ pub fn check_command(args: &CheckArgs) -> Result<u8> {
         diagnose: args.diagnose,
         ..session::RunOptions::default()
     };
-    let console = Console::new(&campaign, Progress::of(args.progress));
-    let outcome = session::run(&campaign, &options, &console);
-    console.finish();
-    let result = outcome?.result;
-    print_check(&result);
+    let result = run_with_console(&campaign, &options, args.progress)?.result;
+    print_summary(
+        &result,
+        "`axcheck run` lists them all in summary.md",
+        "`axcheck run` lists them in summary.md",
+    );
     let code = exit_code(&result);
     // The process ends with the gate: freeing a fleet's campaign and results one block at
     // a time cost the gate 6 % of its wall time on 10 000 axes, on one thread after the
     // workers are done, and the system takes the memory back at once anyway.
     std::mem::forget((campaign, result));
     Ok(code)
+}
+
+/// The session run with the console's progress on stderr (`--progress`: every test).
+fn run_with_console(
+    campaign: &Campaign,
+    options: &session::RunOptions,
+    every_test: bool,
+) -> Result<session::RunOutcome, session::SessionError> {
+    let console = Console::new(campaign, Progress::of(every_test));
+    let outcome = session::run(campaign, options, &console);
+    console.finish();
+    outcome
 }
 
 /// `run`'s flags over the campaign's own settings: `--no-pdf`, `--no-html` and
@@ -363,16 +374,7 @@ fn print_run(
     start: Instant,
 ) -> Result<u8> {
     let result = &outcome.result;
-    super::say(&counts_line(result));
-    for line in result.caveats() {
-        super::say(&line);
-    }
-    for line in problems(result, "all in summary.md") {
-        super::say(&line);
-    }
-    if let Some(line) = warnings_line(result, "all in summary.md") {
-        super::say(&line);
-    }
+    print_summary(result, "all in summary.md", "all in summary.md");
     for line in super::tables::lines(result) {
         super::say(&line);
     }
@@ -394,16 +396,18 @@ fn print_run(
     Ok(exit_code(result))
 }
 
-/// What `check` prints: the counts, the caveats, the problems and the warnings.
-fn print_check(result: &CampaignResult) {
+/// What `run` and `check` both print: the counts, the caveats, the problems and the
+/// warnings, each list cut with a pointer to where the rest is (`problems_rest`,
+/// `warnings_rest`).
+fn print_summary(result: &CampaignResult, problems_rest: &str, warnings_rest: &str) {
     super::say(&counts_line(result));
     for line in result.caveats() {
         super::say(&line);
     }
-    for line in problems(result, "`axcheck run` lists them all in summary.md") {
+    for line in problems(result, problems_rest) {
         super::say(&line);
     }
-    if let Some(line) = warnings_line(result, "`axcheck run` lists them in summary.md") {
+    if let Some(line) = warnings_line(result, warnings_rest) {
         super::say(&line);
     }
 }

@@ -191,9 +191,7 @@ fn headlines(t: &AxisTest) -> BTreeMap<&'static str, Headline> {
 
 fn worst(t: &AxisTest) -> Option<Worst> {
     let c = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
-    let symbol = (t.evaluated().map(|e| &e.evaluation))
-        .and_then(|e| e.parameter(c.key))
-        .map_or(c.key.to_string(), |p| p.symbol().to_string());
+    let symbol = axcheck_charts::data::symbol_of(t, c.key);
     Some(Worst {
         text: format!("{symbol} {}", fmt_fixed(c.ratio(), 2)),
         key: c.key.to_string(),

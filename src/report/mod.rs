@@ -352,11 +352,7 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
             Some(charts::RatioBar {
                 // Drawn as text by the chart, not read from the report's data.
                 label: crate::safe_text::visible(&t.label()).into_owned(),
-                parameter: t
-                    .evaluated()
-                    .map(|e| &e.evaluation)
-                    .and_then(|e| e.parameter(worst.key))
-                    .map_or(worst.key.to_string(), |p| p.symbol().to_string()),
+                parameter: data::symbol_of(t, worst.key),
                 ratio: worst.ratio(),
                 verdict: t.verdict(),
             })

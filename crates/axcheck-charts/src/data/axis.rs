@@ -7,7 +7,7 @@ use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
 use super::uncertainty::{UncertaintySection, uncertainty_section};
 use super::{AXIS_NAME, CampaignHeader, generator, num, opt, pos, s_symbol, short_name, symbol_of};
 use crate::data::diagnosis::{DiagnosisSection, diagnosis_section};
-use crate::evaluate::{DirectionResult, Evaluation, StandardId};
+use crate::evaluate::{DirectionResult, Evaluation, ParamKey, StandardId};
 use crate::judge::{Conformance, Verdict};
 use crate::measurement::FileInfo;
 use crate::results::{AxisTest, CampaignResult};
@@ -90,7 +90,9 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         has_charts: e.is_some(),
         diagnosis: ev.and_then(|e| e.diagnosis.as_deref()).map(|d| {
             let out_of_test = ev.map_or(&[][..], |e| &e.out_of_test);
-            diagnosis_section(d, out_of_test, |k| symbol_of(t, k))
+            diagnosis_section(d, out_of_test, |k| {
+                ParamKey::parse(k).map_or(k.to_string(), |key| symbol_of(t, key))
+            })
         }),
         uncertainty: ev
             .and_then(|e| e.uncertainty.as_ref())
@@ -235,7 +237,7 @@ impl VerdictText {
                     .and_then(|e| e.judgement.as_ref())
                     .into_iter()
                     .flat_map(|j| j.failed())
-                    .map(|c| symbol_of(t, c.key.as_str()))
+                    .map(|c| symbol_of(t, c.key))
                     .collect();
                 format!("Over the limit: {}.", failed.join(", "))
             }
@@ -254,7 +256,7 @@ impl VerdictText {
                     .map(|c| {
                         format!(
                             "{} = {} ± {} {unit} against {} {unit}",
-                            symbol_of(t, c.key.as_str()),
+                            symbol_of(t, c.key),
                             num(c.value),
                             num(c.expanded_uncertainty.unwrap_or(0.0)),
                             num(c.limit)

@@ -55,11 +55,11 @@ fn s_symbol(standard: Option<StandardId>) -> &'static str {
 }
 
 /// The symbol of parameter `key` in the test's standard (the key itself when it does not
-/// apply).
-fn symbol_of(t: &AxisTest, key: &str) -> String {
+/// apply): what the reports, the summary and the page label a limit's check with.
+pub fn symbol_of(t: &AxisTest, key: ParamKey) -> String {
     t.evaluated()
         .map(|e| &e.evaluation)
-        .and_then(|e| e.parameter(ParamKey::parse(key)?))
+        .and_then(|e| e.parameter(key))
         .map_or(key.to_string(), |p| p.symbol().to_string())
 }
 

@@ -138,11 +138,7 @@ fn row(t: &AxisTest) -> SummaryRow {
         .and_then(|e| e.judgement.as_ref())
         .and_then(|j| j.worst())
     {
-        Some(c) => format!(
-            "{} {}",
-            symbol_of(t, c.key.as_str()),
-            fmt_fixed(c.ratio(), 2)
-        ),
+        Some(c) => format!("{} {}", symbol_of(t, c.key), fmt_fixed(c.ratio(), 2)),
         None if t.no_tolerance() && e.is_some() => "no tolerance".to_string(),
         None => "–".to_string(),
     };

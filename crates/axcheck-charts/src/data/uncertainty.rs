@@ -96,7 +96,7 @@ pub fn decision_bars(t: &AxisTest) -> Vec<CheckBar> {
                 table_round(expanded),
             );
             Some(CheckBar {
-                label: symbol_of(t, c.key.as_str()),
+                label: symbol_of(t, c.key),
                 measured: value,
                 low: limit - zone,
                 high: limit + zone,
