@@ -3,11 +3,13 @@
 
 use super::text::{left, right};
 use anyhow::{Context, Result, anyhow};
+use axcheck::campaign::stages::compensate as stages;
 use axcheck::compensate::controllers::{self, Controller};
 use axcheck::compensate::{self, Mode, Table, Warning};
 use axcheck::evaluate::Evaluation;
 use axcheck::evaluate::StandardId;
 use axcheck::evaluate::json::ParameterSet;
+use axcheck::export::json::CompensationHead;
 use axcheck::measurement::AxisData;
 use axcheck::units::{AxisKind, fmt_fixed};
 use serde::Serialize;
@@ -82,7 +84,7 @@ impl TableArgs {
 }
 
 /// The active state given on the command line: `None` when neither `--active` nor
-/// `--active-backlash` says anything.
+/// `--active-backlash` says anything; `--active none` is a backlash without a table.
 pub fn active_state(
     table: Option<&str>,
     backlash: Option<f64>,
@@ -95,39 +97,31 @@ pub fn active_state(
     {
         return Err(anyhow!("--active-backlash: expected a number, got {b}"));
     }
-    let table = match table {
+    let file = match table {
         None if backlash.is_none() => return Ok(None),
         None | Some("none") => None,
-        Some(path) => Some((
-            path.to_string(),
-            read_table(Path::new(path), controller, kind, axis)?,
-        )),
+        Some(path) => Some(path),
     };
-    Ok(Some(compensate::Active {
-        file: table.as_ref().map(|(p, _)| p.clone()),
-        table: table.map(|(_, t)| t),
-        backlash,
-    }))
+    let active = stages::active_state(file, backlash, |path| {
+        let at = stages::TableFile::Given {
+            path: Path::new(path),
+            key: "--active",
+        };
+        stages::read_table(at, controller, kind, axis)
+    })?;
+    Ok(Some(active))
 }
 
-/// A table file as `controller` reads it, its errors naming the file.
+/// A table file given as the option `key`, read as `controller` reads it.
 pub fn read_table(
     path: &Path,
+    key: &'static str,
     controller: &dyn Controller,
     kind: AxisKind,
     axis: Option<&str>,
 ) -> Result<Table> {
-    let text = axcheck::files::read_to_string(path)
-        .with_context(|| format!("cannot read the table {}", path.display()))?;
-    controller
-        .read(&text, controllers::ReadAs { kind, axis })
-        .map_err(|e| {
-            anyhow!(
-                "{}: {e} (read as a {} table)",
-                path.display(),
-                controller.name()
-            )
-        })
+    let at = stages::TableFile::Given { path, key };
+    Ok(stages::read_table(at, controller, kind, axis)?)
 }
 
 /// The controller called `name`, or the error that lists the known ones.
@@ -216,12 +210,9 @@ pub struct Request<'a> {
 /// `--json`: the table, and the parameters as measured and predicted.
 #[derive(Serialize)]
 struct CompensationJson<'a> {
-    controller: &'a str,
-    /// `absolute` (the whole correction) or `incremental` (on the active table).
-    mode: Mode,
-    /// The active table's file, when one was given.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    active_file: Option<&'a str>,
+    /// The controller, `absolute` or `incremental`, the active table: as in `results.json`.
+    #[serde(flatten)]
+    head: CompensationHead<'a>,
     /// Deviation unit of the corrections and parameters: `um` or `arcsec`.
     unit: &'static str,
     table: &'a Table,
@@ -259,7 +250,7 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
         &request.settings,
         &diagnosis,
     );
-    let done = c.outcome.map_err(|refused| anyhow!(refused))?;
+    let done = c.outcome.as_ref().map_err(|refused| anyhow!(refused.clone()))?;
     if let Some(out) = request.out {
         axcheck::atomic::write(out, done.file.as_bytes())
             .with_context(|| format!("cannot write {}", out.display()))?;
@@ -267,9 +258,7 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     let measured = axcheck::evaluate::evaluate(data, request.standard);
     if request.json {
         let json = CompensationJson {
-            controller: controller.name(),
-            mode: c.mode,
-            active_file: c.active_file.as_deref(),
+            head: CompensationHead::of(&c),
             unit: data.kind.deviation_unit(),
             table: &done.table,
             measured: ParameterSet::of(&measured),
@@ -285,7 +274,7 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
             for w in &c.warnings {
                 super::tell(&format!("axcheck: warning: {}", w.message));
             }
-            done.file
+            done.file.clone()
         }
         Some(out) => {
             let mut text = format!(

@@ -2,6 +2,7 @@
 //! per year and the date it reaches its limit; the flagged series first.
 
 use anyhow::{Context, Result, anyhow};
+use axcheck::export::OutputFile;
 use axcheck::history;
 use axcheck::safe_text::one_line;
 use axcheck::trend::{self, Series, Trend};
@@ -72,22 +73,29 @@ pub fn run(request: &TrendArgs) -> Result<String> {
     Ok(summary(&dates, &pairs, request))
 }
 
-/// `OUT/trends.csv` and `OUT/trends.pdf`.
+/// `OUT/trends.csv` and `OUT/trends.pdf`, written as a campaign's outputs are.
 fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &TrendArgs) -> Result<()> {
     let _lock = axcheck::session::lock_folders(out, None, false, &|m| {
         super::tell(&format!("axcheck: {m}"))
     })?;
-    let path = out.join("trends.csv");
-    axcheck::atomic::write(&path, trend::view::csv(pairs.iter().copied()).as_bytes())
-        .with_context(|| format!("cannot write {}", path.display()))?;
+    let csv = trend::view::csv(pairs.iter().copied());
     let reports = axcheck::report::Reports::new(None)?;
     let history = request.dir.display().to_string();
     let pdf = reports
         .trends(&history, pairs, request.horizon_years, "trends.csv")
         .context("typesetting trends.pdf")?;
-    let path = out.join("trends.pdf");
-    axcheck::atomic::write(&path, &pdf.pdf)
-        .with_context(|| format!("cannot write {}", path.display()))
+    let files = [
+        OutputFile {
+            path: PathBuf::from("trends.csv"),
+            bytes: csv.into_bytes(),
+        },
+        OutputFile {
+            path: PathBuf::from("trends.pdf"),
+            bytes: pdf.pdf,
+        },
+    ];
+    axcheck::export::write_into(out, &files)?;
+    Ok(())
 }
 
 /// The inspections read, the flagged series with their reasons, and where the table went.

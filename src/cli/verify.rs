@@ -68,7 +68,7 @@ pub fn run(args: &VerifyArgs) -> Result<(String, bool)> {
     )?
     .unwrap_or_default();
     let loaded = Active {
-        table: Some(read_table(&args.table, controller, kind, axis)?),
+        table: Some(read_table(&args.table, "--table", controller, kind, axis)?),
         file: Some(args.table.display().to_string()),
         backlash: args.backlash.or(old.backlash),
     };
@@ -110,8 +110,9 @@ fn others(
             let (axis, file) = g
                 .split_once('=')
                 .ok_or_else(|| anyhow!("--other: expected AXIS=FILE, got `{g}`"))?;
-            let table = read_table(std::path::Path::new(file), controller, kind, Some(axis))
-                .or_else(|_| read_table(std::path::Path::new(file), controller, kind, None))?;
+            let path = std::path::Path::new(file);
+            let table = read_table(path, "--other", controller, kind, Some(axis))
+                .or_else(|_| read_table(path, "--other", controller, kind, None))?;
             Ok(Other {
                 axis: axis.to_string(),
                 new: table,

@@ -175,11 +175,8 @@ impl<'a> UncertaintyJson<'a> {
 /// the parameters predicted with it, and the verification of a re-measurement.
 #[derive(Serialize)]
 struct CompensationJson<'a> {
-    controller: &'static str,
-    /// `absolute` or `incremental` (the active table plus this measurement's correction).
-    mode: crate::compensate::Mode,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    active_file: Option<&'a str>,
+    #[serde(flatten)]
+    head: CompensationHead<'a>,
     #[serde(skip_serializing_if = "Option::is_none")]
     file: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -202,6 +199,28 @@ enum VerificationOutcome<'a> {
     Failed { error: String },
 }
 
+/// What every compensation's JSON begins with (`results.json` and `compensate --json`):
+/// the controller, whether the table builds on the active one, and the active table.
+#[derive(Serialize)]
+pub struct CompensationHead<'a> {
+    controller: &'static str,
+    /// `absolute` or `incremental` (the active table plus this measurement's correction).
+    mode: crate::compensate::Mode,
+    /// The active table's file, when one was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    active_file: Option<&'a str>,
+}
+
+impl<'a> CompensationHead<'a> {
+    pub fn of(c: &'a Compensation) -> CompensationHead<'a> {
+        CompensationHead {
+            controller: c.controller,
+            mode: c.mode,
+            active_file: c.active_file.as_deref(),
+        }
+    }
+}
+
 impl<'a> CompensationJson<'a> {
     fn new(
         t: &'a AxisTest,
@@ -209,9 +228,7 @@ impl<'a> CompensationJson<'a> {
         file: Option<&std::path::Path>,
     ) -> CompensationJson<'a> {
         CompensationJson {
-            controller: c.controller,
-            mode: c.mode,
-            active_file: c.active_file.as_deref(),
+            head: CompensationHead::of(c),
             file: file.map(|p| p.to_string_lossy().replace('\\', "/")),
             refused: c.outcome.as_ref().err().map(ToString::to_string),
             predicted: c

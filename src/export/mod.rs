@@ -111,15 +111,33 @@ pub fn write_all(
     exporters: &[Box<dyn Exporter>],
     dir: &Path,
 ) -> Result<Vec<PathBuf>, ExportError> {
-    let mut out = crate::atomic::OutputDir::open(dir)?;
+    let out = crate::atomic::OutputDir::open(dir)?;
     let mut files = Vec::new();
     for exporter in exporters {
         let produced = exporter.export(result)?;
         out.check(produced.iter().map(|f| f.path.as_path()))?;
         files.extend(produced);
     }
+    write_checked(out, &files, dir)
+}
+
+/// Writes `files` into `dir` as [`write_all`] writes a campaign's outputs (the folder's
+/// manifest, atomic files, a full disk reported): the one way an output folder is written,
+/// for `trend --out` too.
+pub fn write_into(dir: &Path, files: &[OutputFile]) -> Result<Vec<PathBuf>, ExportError> {
+    let out = crate::atomic::OutputDir::open(dir)?;
+    out.check(files.iter().map(|f| f.path.as_path()))?;
+    write_checked(out, files, dir)
+}
+
+/// Writes `files`, each path already checked in `out`.
+fn write_checked(
+    mut out: crate::atomic::OutputDir,
+    files: &[OutputFile],
+    dir: &Path,
+) -> Result<Vec<PathBuf>, ExportError> {
     out.prepare(files.iter().map(|f| f.path.as_path()))?;
-    let mut failed = write_files(&out, &files)?.into_iter();
+    let mut failed = write_files(&out, files)?.into_iter();
     let Some((path, first)) = failed.next() else {
         out.finish()?;
         return Ok(files.iter().map(|f| dir.join(&f.path)).collect());

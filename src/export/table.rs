@@ -1,7 +1,7 @@
 //! The summary table shared by the CSV, parquet and Markdown outputs: one row per axis
 //! test, a fixed set of columns.
 
-use crate::evaluate::{ParamKey, catalogue};
+use crate::evaluate::catalogue;
 use crate::results::{AxisTest, CampaignResult};
 
 /// A cell of the table.
@@ -115,7 +115,7 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     ];
     for p in catalogue::summary_keys() {
         cells.push(Cell::opt_number(
-            e.and_then(|e| e.value(ParamKey::parse(p)?)),
+            e.and_then(|e| e.value(*p)),
         ));
     }
     cells.push(Cell::opt_text(worst.map(|c| c.key.to_string())));

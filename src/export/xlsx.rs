@@ -117,7 +117,7 @@ fn csv_header(name: &str, kinds: &[AxisKind]) -> String {
     let deviation = || unit_note(kinds, "µm", "arcsec");
     match name {
         "travel" => format!("travel{}", unit_note(kinds, "mm", "deg")),
-        _ if crate::evaluate::catalogue::summary_keys().contains(&name) => {
+        _ if (crate::evaluate::catalogue::summary_keys().iter()).any(|k| k.as_str() == name) => {
             format!("{name}{}", deviation())
         }
         _ => name.to_string(),

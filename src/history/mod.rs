@@ -31,11 +31,5 @@ pub fn trends_of_history(
     run: &[Record],
     options: crate::trend::TrendOptions,
 ) -> Result<AxisTrends, HistoryError> {
-    use std::collections::BTreeSet;
-    let wanted: BTreeSet<AxisKey> = run.iter().map(axis_key).collect();
-    let mut builder = SeriesBuilder::default();
-    visit(dir, |rows| {
-        builder.add(rows.into_iter().filter(|r| wanted.contains(&axis_key(r))));
-    })?;
-    Ok(AxisTrends::fitted(builder.finish(), options))
+    AxisTrends::of_run(run, options, |add| visit(dir, add))
 }

@@ -16,38 +16,7 @@ use crate::units::AxisKind;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
-/// Why a table the campaign states for a test (active during it, or verified by it), or
-/// the measurement before a verified table, cannot be used: the test's compensation is
-/// refused and its verification not made, with this reason.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum StatedTableError {
-    /// The campaign's folder rules refuse the path (`compensation.active: …`).
-    #[error("compensation.{key}: {refused}")]
-    Path {
-        key: &'static str,
-        refused: crate::files::PathRefused,
-    },
-    #[error("{}: cannot read the table: {reason}", path.display())]
-    Unreadable {
-        path: std::path::PathBuf,
-        reason: String,
-    },
-    /// The file is no table of the controller's format.
-    #[error("{}: {reason} (read as a {controller} table for compensation.{key})", path.display())]
-    NotATable {
-        path: std::path::PathBuf,
-        reason: String,
-        controller: &'static str,
-        key: &'static str,
-    },
-    /// The measurement before the table was loaded cannot be read.
-    #[error(transparent)]
-    Before(Box<crate::measurement::ReadError>),
-    #[error("the verified table is empty")]
-    Empty,
-    #[error("verification: {0}")]
-    Verification(#[from] crate::verify::VerifyError),
-}
+pub use crate::campaign::stages::compensate::StatedTableError;
 
 /// The result of one test of one axis: one row of the summary.
 #[derive(Debug, Clone)]

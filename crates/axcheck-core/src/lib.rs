@@ -19,6 +19,7 @@ pub mod evaluate;
 pub mod judge;
 pub mod measurement;
 pub mod nde;
+pub mod param_key;
 pub mod plan;
 pub mod rules;
 pub mod suggest;

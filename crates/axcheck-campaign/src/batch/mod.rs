@@ -1,9 +1,9 @@
 //! Evaluating a whole campaign: every axis in parallel, each test of each axis read,
 //! corrected, rule-checked, evaluated and judged. A broken file or axis fails that axis
 //! with its message; the rest of the campaign completes. Then each re-measurement that
-//! verifies a table is compared with its prediction ([`compensation`]).
+//! verifies a table is compared with its prediction ([`verification`]).
 
-pub mod compensation;
+pub mod verification;
 
 use crate::results::{AxisTest, CampaignResult, Evaluated, Outcome};
 
@@ -24,7 +24,7 @@ use std::sync::Arc;
 pub type Files = crate::files::Root;
 
 /// A test's result and, when it verifies a table, what it is compared with.
-type Tested = (AxisTest, compensation::Case);
+type Tested = (AxisTest, stages::compensate::Case);
 
 /// Options of a batch run. The axes are evaluated in the caller's rayon pool (the
 /// command's one pool, sized by `--jobs`).
@@ -83,7 +83,7 @@ pub fn run(
             .collect()
     };
     let mut tested = evaluate_all();
-    compensation::verify_all(&mut tested);
+    verification::verify_all(&mut tested);
     let tests = tested.into_iter().map(|(t, _)| t).collect();
     CampaignResult {
         info: campaign.info.clone(),
@@ -376,7 +376,7 @@ fn run_test(
     let diagnosis_of = || crate::diagnose::diagnose(&data, &stages::diagnose::options(axis));
     let diagnosis = options.diagnose.then(diagnosis_of);
     let controller = (slot.machine.controller.as_deref()).filter(|_| options.compensate);
-    let (compensation, verify_case) = compensation::for_test(
+    let (compensation, verify_case) = stages::compensate::for_test(
         controller,
         axis,
         &data,

@@ -17,17 +17,18 @@ pub struct AxisTrends {
 }
 
 impl AxisTrends {
-    /// The series in `history` of the axes that have rows in `run`, fitted with `options`.
-    pub fn of_run(history: &[Record], run: &[Record], options: trend::TrendOptions) -> AxisTrends {
+    /// The series of the axes that have rows in `run`, fitted with `options`, from the
+    /// history's rows that `feed` passes in batches (file by file from the store, so that
+    /// only the run's axes are kept, never the whole history).
+    pub fn of_run<E>(
+        run: &[Record],
+        options: trend::TrendOptions,
+        feed: impl FnOnce(&mut dyn FnMut(Vec<Record>)) -> Result<(), E>,
+    ) -> Result<AxisTrends, E> {
         let wanted: BTreeSet<AxisKey> = run.iter().map(axis_key).collect();
         let mut builder = super::SeriesBuilder::default();
-        builder.add(
-            history
-                .iter()
-                .filter(|r| wanted.contains(&axis_key(r)))
-                .cloned(),
-        );
-        AxisTrends::fitted(builder.finish(), options)
+        feed(&mut |rows| builder.add(rows.into_iter().filter(|r| wanted.contains(&axis_key(r)))))?;
+        Ok(AxisTrends::fitted(builder.finish(), options))
     }
 
     /// The series fitted, by axis.

@@ -18,6 +18,7 @@
 //! written with a leading dot (`.00742`, from `bc`).
 
 use super::ecmc_app::error;
+use crate::evaluate::ParamKey;
 use super::reported::{Family, Reported, ReportedQuantity, ToolResults};
 use super::{AxisData, Lines, RawReading, ReadError};
 use crate::units::{AxisKind, Direction};
@@ -32,18 +33,18 @@ const TOOL: &str = "ecmc ISO 230-2 scripts (2021)";
 /// The results the scripts print, and the quantity each names (by the report's own
 /// words: `R_fwd = Forward unidirectional positioning repeatability of an axis`).
 const RESULTS: &[(&str, ReportedQuantity)] = &[
-    ("B", ReportedQuantity::Parameter("B")),
-    ("B_avg", ReportedQuantity::Parameter("B_mean")),
-    ("R_fwd", ReportedQuantity::Parameter("R_up")),
-    ("R_bwd", ReportedQuantity::Parameter("R_down")),
-    ("R", ReportedQuantity::Parameter("R")),
-    ("E_fwd", ReportedQuantity::Parameter("E_up")),
-    ("E_bwd", ReportedQuantity::Parameter("E_down")),
-    ("E", ReportedQuantity::Parameter("E")),
-    ("M", ReportedQuantity::Parameter("M")),
-    ("A_fwd", ReportedQuantity::Parameter("A_up")),
-    ("A_bwd", ReportedQuantity::Parameter("A_down")),
-    ("A", ReportedQuantity::Parameter("A")),
+    ("B", ReportedQuantity::Parameter(ParamKey::B)),
+    ("B_avg", ReportedQuantity::Parameter(ParamKey::BMean)),
+    ("R_fwd", ReportedQuantity::Parameter(ParamKey::RUp)),
+    ("R_bwd", ReportedQuantity::Parameter(ParamKey::RDown)),
+    ("R", ReportedQuantity::Parameter(ParamKey::R)),
+    ("E_fwd", ReportedQuantity::Parameter(ParamKey::EUp)),
+    ("E_bwd", ReportedQuantity::Parameter(ParamKey::EDown)),
+    ("E", ReportedQuantity::Parameter(ParamKey::E)),
+    ("M", ReportedQuantity::Parameter(ParamKey::M)),
+    ("A_fwd", ReportedQuantity::Parameter(ParamKey::AUp)),
+    ("A_bwd", ReportedQuantity::Parameter(ParamKey::ADown)),
+    ("A", ReportedQuantity::Parameter(ParamKey::A)),
 ];
 
 /// Whether `head` starts as such a report.

@@ -7,7 +7,7 @@ use super::conditions::{Row, SensorRow, condition_rows, sensor_rows};
 use super::uncertainty::{UncertaintySection, uncertainty_section};
 use super::{AXIS_NAME, CampaignHeader, generator, num, opt, pos, s_symbol, short_name, symbol_of};
 use crate::data::diagnosis::{DiagnosisSection, diagnosis_section};
-use crate::evaluate::{DirectionResult, Evaluation, ParamKey, StandardId};
+use crate::evaluate::{DirectionResult, Evaluation, StandardId};
 use crate::judge::{Conformance, Verdict};
 use crate::measurement::FileInfo;
 use crate::results::{AxisTest, CampaignResult};
@@ -90,9 +90,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         has_charts: e.is_some(),
         diagnosis: ev.and_then(|e| e.diagnosis.as_deref()).map(|d| {
             let out_of_test = ev.map_or(&[][..], |e| &e.out_of_test);
-            diagnosis_section(d, out_of_test, |k| {
-                ParamKey::parse(k).map_or(k.to_string(), |key| symbol_of(t, key))
-            })
+            diagnosis_section(d, out_of_test, |key| symbol_of(t, key))
         }),
         uncertainty: ev
             .and_then(|e| e.uncertainty.as_ref())

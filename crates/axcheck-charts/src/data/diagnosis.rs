@@ -6,6 +6,7 @@ use crate::data::{key_words, num};
 use crate::diagnose::cross::OutOfTest;
 use crate::diagnose::effects::periodic::Periodic;
 use crate::diagnose::{Diagnosis, Effect, Finding, TimeEffect, Unconfirmed};
+use crate::evaluate::ParamKey;
 use crate::units::{AxisKind, Direction, fmt_fixed};
 use serde::Serialize;
 
@@ -169,7 +170,7 @@ impl<'a> From<&'a Finding> for FindingLine<'a> {
 pub fn diagnosis_section<'a>(
     d: &'a Diagnosis,
     out_of_test: &[OutOfTest],
-    symbol: impl Fn(&str) -> String,
+    symbol: impl Fn(ParamKey) -> String,
 ) -> DiagnosisSection<'a> {
     let all = d
         .corrected
@@ -180,7 +181,7 @@ pub fn diagnosis_section<'a>(
         c.parameters
             .iter()
             .map(|p| CorrectedLine {
-                key: symbol(&p.key),
+                key: symbol(p.key),
                 measured: num(p.measured),
                 corrected: num(p.corrected),
             })

@@ -42,8 +42,8 @@ struct Context<'a> {
 struct Alternative {
     /// The tool known to use it (`None`: a slip any tool may make).
     by: Option<Family>,
-    /// The quantity it replaces: a parameter key, or `R_uni` for max(R↑, R↓).
-    replaces: &'static str,
+    /// The quantity it replaces: a parameter, or max(R↑, R↓) ([`R_UNI`]).
+    replaces: ReportedQuantity,
     cause: &'static str,
     value: fn(&Context) -> Option<f64>,
 }
@@ -62,70 +62,73 @@ const LAST_TARGET_S: &str = "the tool computes every target's s from the last ta
 const SWAPPED: &str = "the report has the two directions the other way round (the ecmc ISO 230-2 scripts of 2021 store the input's forward readings as backward): its value is axcheck's for the other direction";
 const SWAPPED_B: &str = "the report has the two directions the other way round (the ecmc ISO 230-2 scripts of 2021 store the input's forward readings as backward), which turns the sign of the reversal";
 
+/// The unidirectional repeatability a tool reports: the larger of R↑ and R↓.
+const R_UNI: ReportedQuantity = ReportedQuantity::LargerOf(ParamKey::RUp, ParamKey::RDown);
+
 const ALTERNATIVES: &[Alternative] = &[
     Alternative {
         by: Some(Family::EcmcApp),
-        replaces: "R",
+        replaces: ReportedQuantity::Parameter(ParamKey::R),
         cause: SQRT_R,
         value: |c| max_of(c.targets, sqrt_r),
     },
     Alternative {
         by: Some(Family::EcmcApp),
-        replaces: "R",
+        replaces: ReportedQuantity::Parameter(ParamKey::R),
         cause: BAND,
         value: |c| max_of(c.targets, |t| band(t).0 - band(t).1),
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "R",
+        replaces: ReportedQuantity::Parameter(ParamKey::R),
         cause: LARGER_R,
         value: |c| Some(c.e.value(ParamKey::RUp)?.max(c.e.value(ParamKey::RDown)?)),
     },
     Alternative {
         by: None,
-        replaces: "R",
+        replaces: ReportedQuantity::Parameter(ParamKey::R),
         cause: BY_N,
         value: |c| max_of(c.targets, |t| iso_r(t, c.population)),
     },
     Alternative {
         by: Some(Family::EcmcApp),
-        replaces: "R_uni",
+        replaces: R_UNI,
         cause: RANGE_R,
         value: |c| max_of(c.targets, |t| t.up_range.max(t.down_range)),
     },
     Alternative {
         by: None,
-        replaces: "R_uni",
+        replaces: R_UNI,
         cause: BY_N,
         value: |c| max_of(c.targets, |t| 4.0 * c.population * t.up_s.max(t.down_s)),
     },
     Alternative {
         by: Some(Family::EcmcApp),
-        replaces: "B_mean",
+        replaces: ReportedQuantity::Parameter(ParamKey::BMean),
         cause: ABS_B,
         value: |c| mean_of(c.targets, |t| t.reversal.abs()),
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "B_mean",
+        replaces: ReportedQuantity::Parameter(ParamKey::BMean),
         cause: SWAPPED_B,
         value: |c| Some(-c.e.value(ParamKey::BMean)?),
     },
     Alternative {
         by: Some(Family::EcmcApp),
-        replaces: "E",
+        replaces: ReportedQuantity::Parameter(ParamKey::E),
         cause: M_PLUS_B,
         value: |c| Some(c.e.value(ParamKey::M)? + mean_of(c.targets, |t| t.reversal.abs())?),
     },
     Alternative {
         by: Some(Family::EcmcApp),
-        replaces: "A",
+        replaces: ReportedQuantity::Parameter(ParamKey::A),
         cause: BAND_A,
         value: |c| Some(max_of(c.targets, |t| band(t).0)? - min_of(c.targets, |t| band(t).1)?),
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "E",
+        replaces: ReportedQuantity::Parameter(ParamKey::E),
         cause: LARGER_MIN_E,
         value: |c| {
             let (up, down) = (|t: &Target| t.up_mean, |t: &Target| t.down_mean);
@@ -135,7 +138,7 @@ const ALTERNATIVES: &[Alternative] = &[
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "R",
+        replaces: ReportedQuantity::Parameter(ParamKey::R),
         cause: LAST_TARGET_S,
         value: |c| {
             Some(
@@ -146,44 +149,48 @@ const ALTERNATIVES: &[Alternative] = &[
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "R_up",
+        replaces: ReportedQuantity::Parameter(ParamKey::RUp),
         cause: LAST_TARGET_S,
         value: |c| max_of(c.targets, |t| 4.0 * last_s(c, t.up_mean, true)),
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "R_down",
+        replaces: ReportedQuantity::Parameter(ParamKey::RDown),
         cause: LAST_TARGET_S,
         value: |c| max_of(c.targets, |t| 4.0 * last_s(c, t.down_mean, false)),
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "A_up",
+        replaces: ReportedQuantity::Parameter(ParamKey::AUp),
         cause: LAST_TARGET_S,
         value: |c| last_s_a(c, Some(true)),
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "A_down",
+        replaces: ReportedQuantity::Parameter(ParamKey::ADown),
         cause: LAST_TARGET_S,
         value: |c| last_s_a(c, Some(false)),
     },
     Alternative {
         by: Some(Family::EcmcScripts),
-        replaces: "A",
+        replaces: ReportedQuantity::Parameter(ParamKey::A),
         cause: LAST_TARGET_S,
         value: |c| last_s_a(c, None),
     },
     Alternative {
         by: None,
-        replaces: "A",
+        replaces: ReportedQuantity::Parameter(ParamKey::A),
         cause: BY_N,
         value: |c| by_n_a(c),
     },
 ];
 
 /// The keys whose value for the other direction explains a swapped report.
-const DIRECTED: &[(&str, &str)] = &[("R_up", "R_down"), ("E_up", "E_down"), ("A_up", "A_down")];
+const DIRECTED: &[(ParamKey, ParamKey)] = &[
+    (ParamKey::RUp, ParamKey::RDown),
+    (ParamKey::EUp, ParamKey::EDown),
+    (ParamKey::AUp, ParamKey::ADown),
+];
 
 /// R_i by ISO 230-2 2.17 with both s scaled by `k`.
 fn iso_r(t: &Target, k: f64) -> f64 {
@@ -279,19 +286,17 @@ pub fn explain(printed: &Printed, e: &Evaluation) -> Option<String> {
         theirs,
         rounding,
     } = *printed;
-    let key = match quantity {
-        ReportedQuantity::Parameter(key) => key,
-        ReportedQuantity::LargerOf(..) => "R_uni",
-        ReportedQuantity::NotIso(_) => return None,
-    };
+    if let ReportedQuantity::NotIso(_) = quantity {
+        return None;
+    }
     let close = |x: f64| (x - theirs).abs() <= rounding * (1.0 + 1e-6);
-    let swapped =
-        (DIRECTED.iter()).find_map(|&(a, b)| (key == a).then_some(b).or((key == b).then_some(a)));
+    let swapped = (DIRECTED.iter()).find_map(|&(a, b)| {
+        let is = |k| quantity == ReportedQuantity::Parameter(k);
+        is(a).then_some(b).or(is(b).then_some(a))
+    });
     if let Some(other) = swapped
         && family == Family::EcmcScripts
-        && ParamKey::parse(other)
-            .and_then(|k| e.value(k))
-            .is_some_and(close)
+        && e.value(other).is_some_and(close)
     {
         return Some(SWAPPED.to_string());
     }
@@ -303,7 +308,7 @@ pub fn explain(printed: &Printed, e: &Evaluation) -> Option<String> {
         e,
     };
     (ALTERNATIVES.iter())
-        .filter(|a| a.replaces == key && a.by.is_none_or(|by| by == family))
+        .filter(|a| a.replaces == quantity && a.by.is_none_or(|by| by == family))
         .find(|a| (a.value)(&context).is_some_and(close))
         .map(|a| a.cause.to_string())
 }

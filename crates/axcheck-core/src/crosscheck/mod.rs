@@ -127,18 +127,19 @@ pub fn propagated(quantity: ReportedQuantity, h: f64, n: usize) -> f64 {
     };
     let key = match quantity {
         ReportedQuantity::Parameter(key) => key,
-        ReportedQuantity::LargerOf(..) => "R_up",
+        ReportedQuantity::LargerOf(..) => ParamKey::RUp,
         ReportedQuantity::NotIso(_) => return 0.0,
     };
+    use ParamKey::*;
     match key {
         // Ranges and differences of two means.
-        "E" | "E_up" | "E_down" | "M" | "B" | "B_mean" => 2.0 * h,
+        E | EUp | EDown | M | B | BMean => 2.0 * h,
         // 4s at one target.
-        "R_up" | "R_down" => 4.0 * s,
+        RUp | RDown => 4.0 * s,
         // 2s↑ + 2s↓ + |B_i|.
-        "R" => 4.0 * s + 2.0 * h,
+        R => 4.0 * s + 2.0 * h,
         // (x̄ + 2s) at one target − (x̄ − 2s) at another.
-        "A" | "A_up" | "A_down" => 2.0 * h + 4.0 * s,
+        A | AUp | ADown => 2.0 * h + 4.0 * s,
         _ => 2.0 * h,
     }
 }
@@ -146,13 +147,10 @@ pub fn propagated(quantity: ReportedQuantity, h: f64, n: usize) -> f64 {
 /// axcheck's value of a quantity, and its name.
 fn ours(e: &Evaluation, quantity: ReportedQuantity) -> Option<(String, f64)> {
     match quantity {
-        ReportedQuantity::Parameter(key) => {
-            Some((key.to_string(), e.value(ParamKey::parse(key)?)?))
-        }
+        ReportedQuantity::Parameter(key) => Some((key.to_string(), e.value(key)?)),
         ReportedQuantity::LargerOf(a, b) => {
             let name = format!("max({a}, {b})");
-            let value = |k: &str| e.value(ParamKey::parse(k)?);
-            Some((name, value(a)?.max(value(b)?)))
+            Some((name, e.value(a)?.max(e.value(b)?)))
         }
         ReportedQuantity::NotIso(_) => None,
     }

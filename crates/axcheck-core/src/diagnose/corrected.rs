@@ -5,12 +5,12 @@
 use super::analysis::Analysis;
 use super::effects::Effect;
 use super::fitted::Fitted;
-use crate::evaluate::{StandardId, evaluate};
+use crate::evaluate::{ParamKey, StandardId, evaluate};
 
 /// One parameter as measured and with an effect removed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CorrectedParameter {
-    pub key: String,
+    pub key: ParamKey,
     pub measured: f64,
     pub corrected: f64,
 }
@@ -74,7 +74,7 @@ pub(crate) fn corrected(
                     .iter()
                     .filter_map(|m| {
                         ev.value(m.def.key).map(|c| CorrectedParameter {
-                            key: m.key().to_string(),
+                            key: m.def.key,
                             measured: m.value,
                             corrected: c,
                         })

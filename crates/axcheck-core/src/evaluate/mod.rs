@@ -9,13 +9,12 @@ pub mod catalogue;
 pub mod gost27843;
 pub mod iso230_2;
 pub mod json;
-pub mod key;
 pub mod nmtba;
 pub mod stats;
 pub mod vdi3441;
 
 pub use catalogue::{Approach, ParameterDef, Role};
-pub use key::ParamKey;
+pub use crate::param_key::ParamKey;
 
 use crate::measurement::AxisData;
 use crate::units::{AxisKind, Direction};

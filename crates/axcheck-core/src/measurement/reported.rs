@@ -1,6 +1,7 @@
 //! What another tool computed and printed in the file it wrote, kept as printed so that
 //! [`crate::crosscheck`] can set it beside axcheck's own evaluation of the same readings.
 
+use crate::param_key::ParamKey;
 use serde::Serialize;
 
 /// The tools whose results axcheck reads, for the formulas each is known to use.
@@ -66,10 +67,10 @@ impl Reported {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", content = "of", rename_all = "snake_case")]
 pub enum ReportedQuantity {
-    /// A parameter of the catalogue, by key (`A`, `R`, `B_mean`).
-    Parameter(&'static str),
+    /// A parameter of the catalogue (`A`, `R`, `B_mean`).
+    Parameter(ParamKey),
     /// The larger of two parameters (a tool's "unidirectional repeatability").
-    LargerOf(&'static str, &'static str),
+    LargerOf(ParamKey, ParamKey),
     /// Not an ISO 230-2 parameter: what it is.
     NotIso(&'static str),
 }

@@ -29,7 +29,7 @@ pub const K: f64 = 2.0;
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ParameterBudget {
     /// The parameter's key: `A`, `E_up`, `R_max` …
-    pub key: &'static str,
+    pub key: ParamKey,
     #[serde(flatten)]
     pub budget: Budget,
 }
@@ -63,7 +63,7 @@ impl Uncertainty {
     pub fn parameter(&self, key: ParamKey) -> Option<&Budget> {
         self.parameters
             .iter()
-            .find(|p| p.key == key.as_str())
+            .find(|p| p.key == key)
             .map(|p| &p.budget)
     }
 }
@@ -87,7 +87,7 @@ pub fn evaluate(setup: &Setup, evaluation: &Evaluation) -> Uncertainty {
         .filter_map(|p| {
             let extent = extent::of(evaluation, p)?;
             Some(ParameterBudget {
-                key: p.key(),
+                key: p.def.key,
                 budget: budget_of(&extent),
             })
         })

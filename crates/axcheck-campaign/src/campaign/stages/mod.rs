@@ -1,9 +1,11 @@
 //! Each stage's configuration taken from the campaign, one file per stage, in the
 //! pipeline's order: the plan rules' context ([`rules`]), the NDE correction ([`nde`]),
 //! the evaluation ([`evaluate`]), the uncertainty's set-up ([`uncertainty`]), the decision
-//! rule ([`judge`]) and the diagnosis's options ([`diagnose`]). The stages themselves are
+//! rule ([`judge`]), the diagnosis's options ([`diagnose`]) and the compensation's tables
+//! ([`compensate`]). The stages themselves are
 //! the core's and know nothing of campaigns; the batch calls these adapters.
 
+pub mod compensate;
 pub mod diagnose;
 pub mod evaluate;
 pub mod judge;

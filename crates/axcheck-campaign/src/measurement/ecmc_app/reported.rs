@@ -3,29 +3,30 @@
 //! "BiDir Accuracy = A", "Uni Repeat = max(R^+, R^-)", …). [`crate::crosscheck`] sets
 //! them beside axcheck's.
 
+use crate::evaluate::ParamKey;
 use crate::measurement::reported::{Family, Reported, ReportedQuantity, ToolResults};
 
 /// Status labels, the quantity each names, in the report's order.
 const LABELS: &[(&str, ReportedQuantity)] = &[
-    ("Bidirectional accuracy", ReportedQuantity::Parameter("A")),
+    ("Bidirectional accuracy", ReportedQuantity::Parameter(ParamKey::A)),
     (
         "Bidirectional systematic deviation",
-        ReportedQuantity::Parameter("E"),
+        ReportedQuantity::Parameter(ParamKey::E),
     ),
     (
         "Range of mean bidirectional positional deviation",
-        ReportedQuantity::Parameter("M"),
+        ReportedQuantity::Parameter(ParamKey::M),
     ),
     (
         "Bidirectional repeatability",
-        ReportedQuantity::Parameter("R"),
+        ReportedQuantity::Parameter(ParamKey::R),
     ),
     (
         "Unidirectional repeatability",
-        ReportedQuantity::LargerOf("R_up", "R_down"),
+        ReportedQuantity::LargerOf(ParamKey::RUp, ParamKey::RDown),
     ),
-    ("Mean reversal value", ReportedQuantity::Parameter("B_mean")),
-    ("Maximum reversal value", ReportedQuantity::Parameter("B")),
+    ("Mean reversal value", ReportedQuantity::Parameter(ParamKey::BMean)),
+    ("Maximum reversal value", ReportedQuantity::Parameter(ParamKey::B)),
     (
         "Mean bias",
         ReportedQuantity::NotIso("the mean of every deviation"),

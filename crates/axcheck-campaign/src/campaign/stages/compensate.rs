@@ -1,17 +1,108 @@
-//! A test's compensation as its campaign states it: the table active during the test and
-//! the one it verifies, read from the controller's files beside the data (the same path
-//! rules), and the verification of a re-measurement, each axis compared with the tables
-//! loaded on its machine's other axes.
+//! The compensation stage's configuration as the campaign states it: the table active
+//! during the test and the one it verifies, read from the controller's files beside the
+//! data (the same path rules), and what a re-measurement is compared with. The reading
+//! of a table file ([`read_table`]) and of an active state ([`active_state`]) is the one
+//! the commands' `--active`, `--table` and `--other` use too.
 
-use super::{AxisTest, Files};
 use crate::campaign::AxisSpec;
 use crate::campaign::model::{ActiveRaw, ActiveStated, CompensationRaw};
 use crate::compensate::controllers::{Controller, ReadAs};
 use crate::compensate::{self, Active, Settings, Table, TableSlot};
+use crate::files::Root as Files;
 use crate::measurement::AxisData;
-use crate::results::StatedTableError;
 use crate::units::AxisKind;
-use crate::verify::{self, Effectiveness, Other, Verification};
+use std::path::{Path, PathBuf};
+
+/// Why a table the campaign states for a test (active during it, or verified by it), or
+/// the measurement before a verified table, cannot be used: the test's compensation is
+/// refused and its verification not made, with this reason. The commands' table files
+/// fail with the same reasons, `key` naming their option.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum StatedTableError {
+    /// The campaign's folder rules refuse the path (`compensation.active: …`).
+    #[error("{key}: {refused}")]
+    Path {
+        key: &'static str,
+        refused: crate::files::PathRefused,
+    },
+    #[error("{}: cannot read the table: {reason}", path.display())]
+    Unreadable { path: PathBuf, reason: String },
+    /// The file is no table of the controller's format.
+    #[error("{}: {reason} (read as a {controller} table for {key})", path.display())]
+    NotATable {
+        path: PathBuf,
+        reason: String,
+        controller: &'static str,
+        key: &'static str,
+    },
+    /// The measurement before the table was loaded cannot be read.
+    #[error(transparent)]
+    Before(Box<crate::measurement::ReadError>),
+    #[error("the verified table is empty")]
+    Empty,
+    #[error("verification: {0}")]
+    Verification(#[from] crate::verify::VerifyError),
+}
+
+/// Where a table file is: a path the campaign names under `key` (read under its folder's
+/// rules), or a path given on the command line by the option `key` (read as given).
+#[derive(Debug, Clone, Copy)]
+pub enum TableFile<'a> {
+    Stated {
+        files: &'a Files,
+        file: &'a str,
+        key: &'static str,
+    },
+    Given { path: &'a Path, key: &'static str },
+}
+
+/// The table file `at` as `controller` reads it for an axis of `kind` (`axis`: its name
+/// on the control, to pick its table from a file of several).
+pub fn read_table(
+    at: TableFile,
+    controller: &dyn Controller,
+    kind: AxisKind,
+    axis: Option<&str>,
+) -> Result<Table, StatedTableError> {
+    let (path, text, key) = match at {
+        TableFile::Stated { files, file, key } => {
+            let path = files
+                .resolve(file)
+                .map_err(|refused| StatedTableError::Path { key, refused })?;
+            let text = files.read_to_string(&path);
+            (path, text, key)
+        }
+        TableFile::Given { path, key } => {
+            (path.to_path_buf(), crate::files::read_to_string(path), key)
+        }
+    };
+    let text = text.map_err(|e| StatedTableError::Unreadable {
+        path: path.clone(),
+        reason: e.to_string(),
+    })?;
+    controller
+        .read(&text, ReadAs { kind, axis })
+        .map_err(|e| StatedTableError::NotATable {
+            path,
+            reason: e.to_string(),
+            controller: controller.name(),
+            key,
+        })
+}
+
+/// The compensation active during a test: the table `file` (read by `read`) and the
+/// backlash parameter, each when stated.
+pub fn active_state<E>(
+    file: Option<&str>,
+    backlash: Option<f64>,
+    read: impl FnOnce(&str) -> Result<Table, E>,
+) -> Result<Active, E> {
+    Ok(Active {
+        table: file.map(read).transpose()?,
+        file: file.map(str::to_string),
+        backlash,
+    })
+}
 
 /// What a re-measurement is compared with: the measurement before, and the corrections
 /// active then and loaded since, as the controller adds them.
@@ -41,7 +132,7 @@ pub fn settings(
     };
     let kind = axis.raw.kind;
     let active = match (&raw.active, &raw.verifies) {
-        (Some(a), _) => Some(active(a, kind, controller, files, &place, "active")?),
+        (Some(a), _) => Some(active(a, kind, controller, files, &place, "compensation.active")?),
         // A re-measurement: the table it verifies was active.
         (None, Some(v)) => {
             let stated = ActiveStated {
@@ -55,7 +146,7 @@ pub fn settings(
                 controller,
                 files,
                 &place,
-                "verifies.table",
+                "compensation.verifies.table",
             )?)
         }
         (None, None) => None,
@@ -82,48 +173,11 @@ fn active(
     let ActiveRaw::Stated(s) = raw else {
         return Ok(Active::default());
     };
-    let table = match &s.file {
-        Some(file) => Some(read_table(file, kind, controller, files, place, key)?),
-        None => None,
-    };
-    Ok(Active {
-        table,
-        file: s.file.clone(),
-        backlash: s.backlash_um.or(s.backlash_arcsec),
+    let backlash = s.backlash_um.or(s.backlash_arcsec);
+    active_state(s.file.as_deref(), backlash, |file| {
+        let at = TableFile::Stated { files, file, key };
+        read_table(at, controller, kind, place.axis.as_deref())
     })
-}
-
-/// The table file `file` (relative to the campaign) as `controller` reads it.
-fn read_table(
-    file: &str,
-    kind: AxisKind,
-    controller: &dyn Controller,
-    files: &Files,
-    place: &TableSlot,
-    key: &'static str,
-) -> Result<Table, StatedTableError> {
-    let path = files
-        .resolve(file)
-        .map_err(|refused| StatedTableError::Path { key, refused })?;
-    let text = match files.read_to_string(&path) {
-        Ok(text) => text,
-        Err(e) => {
-            let reason = e.to_string();
-            return Err(StatedTableError::Unreadable { path, reason });
-        }
-    };
-    let reading = ReadAs {
-        kind,
-        axis: place.axis.as_deref(),
-    };
-    controller
-        .read(&text, reading)
-        .map_err(|e| StatedTableError::NotATable {
-            path,
-            reason: e.to_string(),
-            controller: controller.name(),
-            key,
-        })
 }
 
 /// What the re-measurement of `axis` is compared with, when it `verifies` a table: the
@@ -151,7 +205,7 @@ fn case(
     let path = files
         .resolve(&v.before)
         .map_err(|refused| StatedTableError::Path {
-            key: "verifies.before",
+            key: "compensation.verifies.before",
             refused,
         })?;
     let read = crate::measurement::read_file_within(&path, &Default::default(), Some(files))
@@ -164,7 +218,7 @@ fn case(
             controller,
             files,
             &settings.place,
-            "verifies.active",
+            "compensation.verifies.active",
         )?,
         None => Active::default(),
     };
@@ -179,14 +233,14 @@ fn case(
         settings.active.as_ref().and_then(|a| a.table.clone()),
     ) {
         (None, Some(table)) => table,
-        _ => read_table(
-            &v.table,
-            kind,
-            controller,
-            files,
-            &settings.place,
-            "verifies.table",
-        )?,
+        _ => {
+            let at = TableFile::Stated {
+                files,
+                file: &v.table,
+                key: "compensation.verifies.table",
+            };
+            read_table(at, controller, kind, settings.place.axis.as_deref())?
+        }
     };
     let mut notes = Vec::new();
     let mut loaded = Active {
@@ -214,91 +268,6 @@ fn case(
 
 /// What a re-measurement that verifies a table is compared with, or why it cannot be.
 pub type Case = Option<Result<Box<VerifyCase>, StatedTableError>>;
-
-/// Each test with a verification case compared, the tables loaded on the other axes of
-/// its machine tried as `wrong_axis`.
-pub fn verify_all(tests: &mut [(AxisTest, Case)]) {
-    let loaded: Vec<(String, String, Table)> = tests
-        .iter()
-        .filter_map(|(t, case)| {
-            let case = case.as_ref()?.as_ref().ok()?;
-            Some((t.machine.id.clone(), t.axis.clone(), case.new.clone()))
-        })
-        .collect();
-    for (t, case) in tests.iter_mut() {
-        let Some(case) = case.take() else {
-            continue;
-        };
-        let Some(spec) = t.spec.clone() else {
-            continue;
-        };
-        let (machine, axis) = (t.machine.id.clone(), t.axis.clone());
-        let Some(e) = t.evaluated_mut() else {
-            continue;
-        };
-        let Some(after) = e.data.as_ref() else {
-            continue;
-        };
-        let others: Vec<Other> = loaded
-            .iter()
-            .filter(|(m, a, _)| *m == machine && *a != axis)
-            .map(|(_, a, table)| Other {
-                axis: a.clone(),
-                new: table.clone(),
-            })
-            .collect();
-        let verification = case.and_then(|c| compare(&c, after, &others, spec.standard));
-        if let (Ok(v), Some(c)) = (&verification, e.compensation.as_mut()) {
-            withhold(c, v);
-        }
-        e.verification = Some(Box::new(verification));
-    }
-}
-
-/// A table built on a stated active table that the verification shows did not act as
-/// stated is wrong too: it is not written, and the refusal says why.
-fn withhold(c: &mut compensate::Compensation, v: &Verification) {
-    let failed = matches!(
-        v.verdict,
-        Effectiveness::NotEffective | Effectiveness::MadeWorse | Effectiveness::TableMismatch
-    );
-    if v.findings.is_empty() && !failed || c.outcome.is_err() {
-        return;
-    }
-    let found: Vec<&str> = v.findings.iter().map(|f| f.effect.name()).collect();
-    let what = if found.is_empty() {
-        v.verdict.name().to_string()
-    } else {
-        format!("{} ({})", v.verdict.name(), found.join(", "))
-    };
-    c.outcome = Err(compensate::NoTable {
-        controller: c.controller,
-        reason: format!(
-            "the verification of the table active during this test found it {what}: it did not act as stated, so a table built on it would be wrong; correct how it was loaded and measure again"
-        ),
-    });
-}
-
-/// The verification of one case.
-fn compare(
-    case: &VerifyCase,
-    after: &AxisData,
-    others: &[Other],
-    standard: crate::evaluate::StandardId,
-) -> Result<Verification, StatedTableError> {
-    let input = verify::VerifyInput {
-        before: &case.before,
-        after,
-        old: case.old.as_ref(),
-        new: &case.new,
-        others,
-        controller: crate::compensate::controllers::find(case.controller),
-        standard,
-    };
-    let mut v = verify::verify(&input)?;
-    v.notes.extend(case.notes.iter().cloned());
-    Ok(v)
-}
 
 /// The compensation of a test by its machine's `controller` (none: no table), with the
 /// warnings of its diagnosis (`diagnose` runs it when the run did not), and what its

@@ -5,7 +5,7 @@ use serde::{Serialize, Serializer};
 use std::cmp::Ordering;
 use std::fmt;
 
-/// A key of the [`super::catalogue`], as JSON, specs, tolerances and table columns write
+/// A key of the [`crate::evaluate::catalogue`], as JSON, specs, tolerances and table columns write
 /// it ([`ParamKey::as_str`]). One key may name a parameter of several standards (ISO
 /// 230-2's and NMTBA's `A`): the catalogue's entries say what it is in each.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
