@@ -250,7 +250,10 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
         &request.settings,
         &diagnosis,
     );
-    let done = c.outcome.as_ref().map_err(|refused| anyhow!(refused.clone()))?;
+    let done = c
+        .outcome
+        .as_ref()
+        .map_err(|refused| anyhow!(refused.clone()))?;
     if let Some(out) = request.out {
         axcheck::atomic::write(out, done.file.as_bytes())
             .with_context(|| format!("cannot write {}", out.display()))?;

@@ -6,10 +6,10 @@ use super::{ExportError, Exporter, OutputFile};
 use crate::results::CampaignResult;
 use std::path::PathBuf;
 
-pub struct CompensationExporter;
+pub(crate) struct CompensationExporter;
 
 /// Where each test's table goes (None: no controller, or it refused the table).
-pub fn table_paths(result: &CampaignResult) -> Vec<Option<PathBuf>> {
+pub(crate) fn table_paths(result: &CampaignResult) -> Vec<Option<PathBuf>> {
     result
         .tests
         .iter()

@@ -5,7 +5,7 @@ use super::table::{Cell, columns, rows};
 use super::{ExportError, Exporter, OutputFile};
 use crate::results::CampaignResult;
 
-pub struct CsvExporter;
+pub(crate) struct CsvExporter;
 
 impl Exporter for CsvExporter {
     fn name(&self) -> &'static str {

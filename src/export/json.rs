@@ -24,11 +24,11 @@ use crate::units::{AxisKind, Travel};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-pub struct JsonExporter;
+pub(crate) struct JsonExporter;
 
 /// The JSON of one test.
 #[derive(Serialize)]
-pub struct TestJson<'a> {
+pub(crate) struct TestJson<'a> {
     machine: &'a str,
     machine_info: &'a MachineInfo,
     axis: &'a str,
@@ -251,7 +251,7 @@ impl<'a> CompensationJson<'a> {
 }
 
 /// The JSON view of one test.
-pub fn test_json(t: &AxisTest) -> TestJson<'_> {
+pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
     let ev = t.evaluated();
     TestJson {
         machine: &t.machine.id,
@@ -352,7 +352,7 @@ fn shown(json: Vec<u8>) -> Vec<u8> {
 
 /// `results.json`, pretty-printed: the axes are serialised in parallel (1 000 axes are
 /// 48 MB, 0.8 s of one core) and set into the head as `to_vec_pretty` would place them.
-pub fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Error> {
+pub(crate) fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Error> {
     use rayon::prelude::*;
     let tables = super::compensation::table_paths(result);
     let axes: Vec<Vec<u8>> = result

@@ -14,7 +14,7 @@ use crate::judge::Verdict;
 use crate::results::{AxisTest, CampaignResult};
 use std::fmt::Write;
 
-pub struct JunitExporter;
+pub(crate) struct JunitExporter;
 
 /// What JUnit says of a test no limit was applied to.
 const NOT_JUDGED_MESSAGE: &str =

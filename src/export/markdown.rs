@@ -8,7 +8,7 @@ use crate::rules::Severity;
 use crate::units::fmt_fixed;
 use std::fmt::Write;
 
-pub struct MarkdownExporter;
+pub(crate) struct MarkdownExporter;
 
 /// Text from input made safe for a table cell or a line: no HTML, no Markdown syntax, no
 /// hidden characters.

@@ -85,7 +85,7 @@ pub trait Exporter: Sync {
 }
 
 /// The table and data outputs every `run` writes.
-pub fn table_exporters() -> Vec<Box<dyn Exporter>> {
+pub(crate) fn table_exporters() -> Vec<Box<dyn Exporter>> {
     vec![
         Box::new(json::JsonExporter),
         Box::new(csv::CsvExporter),

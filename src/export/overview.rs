@@ -14,7 +14,7 @@ use serde::Serialize;
 use std::collections::BTreeMap;
 
 /// The headline columns: their key and the role that fills them.
-pub const HEADLINES: [(&str, Role); 5] = [
+pub(crate) const HEADLINES: [(&str, Role); 5] = [
     ("A", Role::Accuracy),
     ("E", Role::Systematic),
     ("M", Role::MeanRange),
@@ -100,7 +100,7 @@ pub fn rows<'a>(result: &'a CampaignResult, trends: Option<&AxisTrends>) -> Vec<
 }
 
 /// `MACHINE|AXIS|TEST`.
-pub fn test_id(t: &AxisTest) -> String {
+pub(crate) fn test_id(t: &AxisTest) -> String {
     format!("{}|{}|{}", t.machine.id, t.axis, t.test)
 }
 
@@ -153,7 +153,7 @@ fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
 }
 
 /// `976.666 mm`, `360°`.
-pub fn travel_text(kind: AxisKind, x: f64) -> String {
+pub(crate) fn travel_text(kind: AxisKind, x: f64) -> String {
     match kind {
         AxisKind::Linear => format!("{} mm", fmt_position(x)),
         AxisKind::Rotary => format!("{}°", fmt_position(x)),

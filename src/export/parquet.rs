@@ -6,7 +6,7 @@ use super::{ExportError, Exporter, OutputFile};
 use crate::results::CampaignResult;
 use polars::prelude::*;
 
-pub struct ParquetExporter;
+pub(crate) struct ParquetExporter;
 
 impl Exporter for ParquetExporter {
     fn name(&self) -> &'static str {

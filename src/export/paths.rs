@@ -14,7 +14,7 @@ const NAME_BYTES: usize = 120;
 /// spaces, direction marks) becomes `_`; no leading dot and no trailing dot (Windows drops
 /// it); Windows' reserved device names get a trailing `_`; at most 64 characters and
 /// [`NAME_BYTES`] bytes, cut before a letter, never between it and its marks.
-pub fn safe_name(text: &str) -> String {
+pub(crate) fn safe_name(text: &str) -> String {
     use unicode_properties::{GeneralCategoryGroup as G, UnicodeGeneralCategory};
     let mut s = String::new();
     for (n, c) in text.chars().enumerate() {
@@ -59,7 +59,7 @@ fn reserved_on_windows(name: &str) -> bool {
 
 /// A path per test under `folder`, `MACHINE/AXIS.ext` (`AXIS-testK.ext` when an axis has
 /// several tests), unique even when names collide after sanitising.
-pub fn test_paths(result: &CampaignResult, folder: &str, ext: &str) -> Vec<PathBuf> {
+pub(crate) fn test_paths(result: &CampaignResult, folder: &str, ext: &str) -> Vec<PathBuf> {
     test_stems(result, folder)
         .into_iter()
         .map(|stem| PathBuf::from(format!("{}.{ext}", stem.display())))
@@ -67,7 +67,7 @@ pub fn test_paths(result: &CampaignResult, folder: &str, ext: &str) -> Vec<PathB
 }
 
 /// [`test_paths`] without the extension (each test's file may take its own).
-pub fn test_stems(result: &CampaignResult, folder: &str) -> Vec<PathBuf> {
+pub(crate) fn test_stems(result: &CampaignResult, folder: &str) -> Vec<PathBuf> {
     let mut used: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
     let mut machine_dirs: BTreeMap<String, String> = BTreeMap::new();
     let mut taken_dirs: BTreeSet<String> = BTreeSet::new();

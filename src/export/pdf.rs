@@ -7,7 +7,7 @@ use crate::results::CampaignResult;
 use std::path::PathBuf;
 use std::sync::Arc;
 
-pub struct PdfExporter {
+pub(crate) struct PdfExporter {
     pub reports: Reports,
     /// The trends of the run's axes over the inspection history, when the run keeps one:
     /// each axis report gets its history section, the summary the flagged series.

@@ -114,9 +114,7 @@ fn row(t: &AxisTest) -> Vec<Cell> {
         Cell::text(t.verdict().name()),
     ];
     for p in catalogue::summary_keys() {
-        cells.push(Cell::opt_number(
-            e.and_then(|e| e.value(*p)),
-        ));
+        cells.push(Cell::opt_number(e.and_then(|e| e.value(*p))));
     }
     cells.push(Cell::opt_text(worst.map(|c| c.key.to_string())));
     cells.push(Cell::opt_number(worst.map(|c| c.ratio())));

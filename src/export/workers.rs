@@ -10,7 +10,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 /// returned. `around` runs each thread's loop (called with it), e.g. inside a thread pool
 /// of its own, and may fail to (then its error is returned); a panic in a task is raised
 /// again here.
-pub fn map_in_order<T, R, E>(
+pub(crate) fn map_in_order<T, R, E>(
     items: &[T],
     threads: usize,
     around: impl Fn(&(dyn Fn() + Sync)) -> Result<(), E> + Sync,

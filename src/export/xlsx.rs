@@ -23,7 +23,7 @@ use rust_xlsxwriter::{
 };
 use std::sync::Arc;
 
-pub struct XlsxExporter {
+pub(crate) struct XlsxExporter {
     /// The trends of the run's axes, when the run keeps a history.
     pub trends: Option<Arc<AxisTrends>>,
 }

@@ -26,7 +26,7 @@ pub use store::{append, file_path, read, read_bytes, visit};
 /// The trends of the run's axes (`run`'s records) over the history in `dir`, read file by
 /// file: only the run's axes' series are kept, never the whole history.
 #[cfg(feature = "parquet")]
-pub fn trends_of_history(
+pub(crate) fn trends_of_history(
     dir: &std::path::Path,
     run: &[Record],
     options: crate::trend::TrendOptions,

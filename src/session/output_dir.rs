@@ -32,7 +32,7 @@ pub enum OutputDirError {
 }
 
 /// Refuses a history folder that is the output folder, lies inside it or holds it.
-pub fn check_history_dir(out: &Path, history: &Path) -> Result<(), OutputDirError> {
+pub(crate) fn check_history_dir(out: &Path, history: &Path) -> Result<(), OutputDirError> {
     let (Some(out_abs), Some(history_abs)) = (resolved(out), resolved(history)) else {
         return Ok(());
     };

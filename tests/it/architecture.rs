@@ -8,7 +8,14 @@ use std::path::{Path, PathBuf};
 /// The top-level modules from the bottom up: a module may use only modules of a lower
 /// layer (its own layer's modules are independent of each other).
 const LAYERS: &[&[&str]] = &[
-    &["units", "param_key", "suggest", "files", "panics", "safe_text"],
+    &[
+        "units",
+        "param_key",
+        "suggest",
+        "files",
+        "panics",
+        "safe_text",
+    ],
     &["measurement", "yaml", "lock", "atomic"],
     &["evaluate", "nde", "axis_model"],
     &["uncertainty", "crosscheck", "simulate"],

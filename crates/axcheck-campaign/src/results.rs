@@ -194,7 +194,7 @@ impl AxisTest {
 }
 
 /// Tests named one by one under a caveat before `… and N more`.
-pub const CAVEAT_TESTS: usize = 20;
+pub(crate) const CAVEAT_TESTS: usize = 20;
 
 /// A whole campaign's results.
 #[derive(Debug, Clone)]

@@ -12,7 +12,7 @@ use std::borrow::Cow;
 /// CSI), the bidirectional marks, embeddings, overrides and isolates of Unicode's UAX #9
 /// (U+061C, U+200E/F, U+202A–U+202E, U+2066–U+2069), and the line and paragraph
 /// separators U+2028/U+2029.
-pub fn is_hidden(c: char) -> bool {
+pub(crate) fn is_hidden(c: char) -> bool {
     matches!(c as u32,
         0x00..=0x08 | 0x0B..=0x1F | 0x7F..=0x9F | 0x061C | 0x200E | 0x200F
         | 0x2028 | 0x2029 | 0x202A..=0x202E | 0x2066..=0x2069)

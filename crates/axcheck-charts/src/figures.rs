@@ -9,7 +9,7 @@ use crate::evaluate::Evaluation;
 /// Chart sizes in pixels, shown about 16 cm wide (the chart module's design size).
 pub const CHART_WIDTH_PX: u32 = 900;
 pub const CHART_HEIGHT_PX: u32 = 420;
-pub const UNIDIRECTIONAL_HEIGHT_PX: u32 = 600;
+pub(crate) const UNIDIRECTIONAL_HEIGHT_PX: u32 = 600;
 /// A trend chart, three to a row: about 5.7 cm wide at the charts' scale.
 pub const TREND_STYLE: charts::trend::Style = charts::trend::Style {
     width_px: 320,

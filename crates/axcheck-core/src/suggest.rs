@@ -24,7 +24,7 @@ pub fn hint(word: &str, candidates: &[&str]) -> String {
 }
 
 /// Edit distance between two strings (characters, not bytes).
-pub fn levenshtein(a: &str, b: &str) -> usize {
+pub(crate) fn levenshtein(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
     let mut prev: Vec<usize> = (0..=b.len()).collect();
     let mut cur = vec![0; b.len() + 1];

@@ -50,14 +50,14 @@ pub struct ParameterRow {
 }
 
 #[derive(Debug, Serialize)]
-pub struct DiagnosisFinding {
+pub(crate) struct DiagnosisFinding {
     pub effect: &'static str,
     pub message: String,
     pub advice: String,
 }
 
 #[derive(Debug, Serialize)]
-pub struct CompensationDetail {
+pub(crate) struct CompensationDetail {
     pub controller: &'static str,
     /// `absolute` or `incremental`.
     pub mode: crate::compensate::Mode,

@@ -27,13 +27,13 @@ use std::io::Write;
 use std::sync::Arc;
 
 /// Tests per block of details.
-pub const BLOCK: usize = 32;
+pub(crate) const BLOCK: usize = 32;
 
 const PAGE: &str = include_str!("page.html");
 const STYLE: &str = include_str!("page.css");
 const SCRIPT: &str = include_str!("page.js");
 
-pub struct HtmlExporter {
+pub(crate) struct HtmlExporter {
     /// Whether the run writes the axis reports (`reports/…pdf`), which the page links to.
     pub reports: bool,
     /// The trends of the run's axes, when the run keeps a history.
@@ -142,7 +142,7 @@ fn io_error(e: std::io::Error) -> ExportError {
 /// separators U+2028/U+2029 as `\u` escapes (JSON has them only inside strings, where the
 /// escape means the same character); hidden characters of the strings as text
 /// ([`crate::safe_text::shown_json`]), so the page shows them.
-pub fn script_json(data: &impl Serialize) -> Result<String, ExportError> {
+pub(crate) fn script_json(data: &impl Serialize) -> Result<String, ExportError> {
     let json = crate::safe_text::shown_json(data).map_err(json_error)?;
     let json = String::from_utf8(json).map_err(|e| io_error(std::io::Error::other(e)))?;
     let mut out = String::with_capacity(json.len() + json.len() / 64);

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 /// A chart: its size in pixels, its shapes in drawing order, its texts.
 #[derive(Debug, Serialize)]
-pub struct SceneData {
+pub(crate) struct SceneData {
     pub width: u32,
     pub height: u32,
     pub shapes: Vec<ShapeData>,
@@ -17,7 +17,7 @@ pub struct SceneData {
 /// Outlines painted alike: `fill` or `stroke` (`#RRGGBB`), the stroke's width and dashes,
 /// the opacity when not 1, and the outlines as one SVG path.
 #[derive(Debug, Serialize)]
-pub struct ShapeData {
+pub(crate) struct ShapeData {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fill: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -34,7 +34,7 @@ pub struct ShapeData {
 /// One text: anchor point, `start`/`middle`/`end`, the baseline's offset in pixels, size
 /// in pixels, colour, bold, clockwise rotation in degrees about the anchor.
 #[derive(Debug, Serialize)]
-pub struct TextData {
+pub(crate) struct TextData {
     pub x: i32,
     pub y: i32,
     pub anchor: &'static str,

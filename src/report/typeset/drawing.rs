@@ -34,7 +34,7 @@ use typst_library::foundations::{elem, func};
 
 /// A chart drawn by axcheck (its shapes and labels), `width` wide.
 #[func]
-pub fn chart_drawing(
+pub(crate) fn chart_drawing(
     engine: &mut Engine,
     /// The chart: a path (`"/charts/NAME.drawing"`) or its bytes.
     source: Spanned<DataSource>,
@@ -48,7 +48,7 @@ pub fn chart_drawing(
 
 /// What the layout of a chart drawing needs.
 #[elem(name = "chart-drawing-data")]
-pub struct ChartDrawingElem {
+pub(crate) struct ChartDrawingElem {
     /// The drawing as bytes.
     #[required]
     pub drawing: Bytes,

@@ -29,7 +29,7 @@ use unicode_bidi::BidiClass;
 use unicode_script::{Script, UnicodeScript};
 
 /// The text style of a style chain, when plain lines in it can be shaped here.
-pub struct Setting {
+pub(crate) struct Setting {
     font: FontInstance,
     size: Abs,
     fill: Paint,

@@ -31,7 +31,7 @@ use typst_utils::Numeric;
 /// Strings as the lines of a paragraph in the current text style (`none` for an empty
 /// line): like `lines.join("\n")` set as text, faster. Show rules on text do not apply.
 #[func]
-pub fn text_lines(
+pub(crate) fn text_lines(
     span: Span,
     /// The lines.
     lines: Vec<Option<Str>>,
@@ -45,7 +45,7 @@ pub fn text_lines(
 /// it, or `none` for a string `text-lines` would leave to Typst (see `text-lines`):
 /// cheaper than `measure`, for a template that places columns itself.
 #[func(contextual)]
-pub fn text_widths(
+pub(crate) fn text_widths(
     engine: &mut Engine,
     context: Tracked<Context>,
     span: Span,
@@ -70,7 +70,7 @@ pub fn text_widths(
 
 /// What the layout of `text-lines` needs.
 #[elem(name = "text-lines-data")]
-pub struct TextLinesElem {
+pub(crate) struct TextLinesElem {
     /// The lines.
     #[required]
     pub lines: Vec<Str>,
@@ -100,7 +100,7 @@ fn layout_lines(
 /// `text-lines` per column at `x`, faster.
 /// A column's fields are read when it is laid out (and a wrong one reported there).
 #[func]
-pub fn text_columns(
+pub(crate) fn text_columns(
     span: Span,
     /// The columns.
     columns: Vec<Dict>,
@@ -111,7 +111,7 @@ pub fn text_columns(
 
 /// What the layout of `text-columns` needs.
 #[elem(name = "text-columns-data")]
-pub struct TextColumnsElem {
+pub(crate) struct TextColumnsElem {
     /// The columns.
     #[required]
     pub columns: Vec<Dict>,
@@ -285,7 +285,7 @@ fn join(run: &mut TextItem, space: u16, gap: Abs, next: TextItem) {
 }
 
 /// A paragraph to set: its lines, the region it is laid out in and where it comes from.
-pub struct Paragraph<'a> {
+pub(crate) struct Paragraph<'a> {
     pub lines: &'a [&'a str],
     pub region: Region,
     pub span: Span,
@@ -294,7 +294,7 @@ pub struct Paragraph<'a> {
 /// The settings of one element's paragraphs, made once per style that sets some apart
 /// (a column's or a label's): reading a style chain is most of a short paragraph's cost.
 #[derive(Default)]
-pub struct ParagraphSettings(Vec<(Styles, Option<Setting>)>);
+pub(crate) struct ParagraphSettings(Vec<(Styles, Option<Setting>)>);
 
 impl ParagraphSettings {
     /// The setting of `base` (the same for every call) with `local` on top.

@@ -20,7 +20,7 @@ use typst::utils::LazyHash;
 use typst::{Library, LibraryExt, World};
 
 /// The sans-serif face embedded for body text and charts.
-pub const SANS_FAMILY: &str = "Inter";
+pub(crate) const SANS_FAMILY: &str = "Inter";
 
 /// The embedded faces (templates/fonts/README.md): Inter, and for the letters it lacks
 /// (names of machines and axes, in any script) Noto Sans Hebrew and Arabic and Droid Sans
@@ -40,7 +40,7 @@ const EMBEDDED: [&[u8]; 9] = [
 ];
 
 /// Shared, read-only typesetting state.
-pub struct Typesetter {
+pub(crate) struct Typesetter {
     library: LazyHash<Library>,
     book: LazyHash<FontBook>,
     fonts: Vec<Font>,
@@ -77,26 +77,17 @@ impl Typesetter {
             sources,
         })
     }
-
-    /// Number of font faces loaded.
-    pub fn font_count(&self) -> usize {
-        self.fonts.len()
-    }
-
-    pub fn template(&self, name: &str) -> Option<&str> {
-        self.sources.get(&file_id(name)?).map(Source::text)
-    }
 }
 
 /// A virtual path's file id.
-pub fn file_id(path: &str) -> Option<FileId> {
+pub(crate) fn file_id(path: &str) -> Option<FileId> {
     VirtualPath::new(path)
         .ok()
         .map(|vpath| RootedPath::new(VirtualRoot::Project, vpath).intern())
 }
 
 /// One document: its main template and its data files.
-pub struct DocumentWorld<'a> {
+pub(crate) struct DocumentWorld<'a> {
     typesetter: &'a Typesetter,
     main: FileId,
     /// The document's data files, by id (the templates are the typesetter's).

@@ -273,12 +273,12 @@ fn run_axis(
 /// the nearest in the axis's file order. Every test predicted by every other grew with the
 /// square of the files: one axis of 1 500 files took 41 s, 5.3 GB and a 1.6 GB
 /// `results.json`; bounded, the work and the output grow with the files.
-pub const MAX_PREDICTORS: usize = 8;
+pub(crate) const MAX_PREDICTORS: usize = 8;
 
 /// The tests (0-based) that predict test `k` of `n`: every other one when there are at
 /// most [`MAX_PREDICTORS`] others, else the [`MAX_PREDICTORS`] nearest in order (half
 /// before and half after, shifted at the ends).
-pub fn predictors(k: usize, n: usize) -> impl Iterator<Item = usize> {
+pub(crate) fn predictors(k: usize, n: usize) -> impl Iterator<Item = usize> {
     let (start, end) = if n <= MAX_PREDICTORS + 1 {
         (0, n)
     } else {

@@ -10,7 +10,7 @@ use crate::verify::{self, Effectiveness, Other, Verification};
 
 /// Each test with a verification case compared, the tables loaded on the other axes of
 /// its machine tried as `wrong_axis`.
-pub fn verify_all(tests: &mut [(AxisTest, Case)]) {
+pub(crate) fn verify_all(tests: &mut [(AxisTest, Case)]) {
     let loaded: Vec<(String, String, Table)> = tests
         .iter()
         .filter_map(|(t, case)| {
@@ -92,4 +92,3 @@ fn compare(
     v.notes.extend(case.notes.iter().cloned());
     Ok(v)
 }
-

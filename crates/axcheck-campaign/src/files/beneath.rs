@@ -8,7 +8,7 @@
 
 /// An open handle on a folder (none on systems without `openat2`).
 #[derive(Debug)]
-pub struct Handle {
+pub(crate) struct Handle {
     #[cfg(target_os = "linux")]
     fd: std::os::fd::OwnedFd,
 }

@@ -67,7 +67,7 @@ impl From<FileError> for std::io::Error {
 }
 
 /// What a file that is not regular is, for messages (`None`: a regular file).
-pub fn special_kind(metadata: &Metadata) -> Option<&'static str> {
+pub(crate) fn special_kind(metadata: &Metadata) -> Option<&'static str> {
     let kind = metadata.file_type();
     if kind.is_file() {
         return None;
@@ -126,7 +126,7 @@ impl Opened {
 /// the path's real path before; this checks what the system actually opened, so a link
 /// changed in between (a race with whoever can write the folder) is caught before a byte
 /// is read.
-pub fn open_within(path: &Path, root: Option<&Path>) -> Result<Opened, FileError> {
+pub(crate) fn open_within(path: &Path, root: Option<&Path>) -> Result<Opened, FileError> {
     let opened = open_regular(path)?;
     if let Some(root) = root {
         let real = opened_real_path(&opened.file, path)?;
@@ -266,12 +266,12 @@ fn not_utf8(bytes: &[u8], at: usize) -> FileError {
 }
 
 /// The byte-order mark of UTF-8 text.
-pub const UTF8_BOM: &[u8] = b"\xEF\xBB\xBF";
+pub(crate) const UTF8_BOM: &[u8] = b"\xEF\xBB\xBF";
 
 /// Which UTF-16 the text starting with `head` is: by its byte-order mark, or without one
 /// by a NUL byte beside most of its first characters (Latin text as Notepad and Excel's
 /// "Unicode text" write it); UTF-8 text has no NUL byte.
-pub fn utf16_kind(head: &[u8]) -> Option<&'static str> {
+pub(crate) fn utf16_kind(head: &[u8]) -> Option<&'static str> {
     if head.starts_with(b"\xFF\xFE") {
         return Some("UTF-16 little-endian");
     }

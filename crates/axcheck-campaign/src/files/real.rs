@@ -55,7 +55,7 @@ impl std::fmt::Display for OutsidePath {
 /// create); one that cannot be resolved at all (a link loop) is left to the read, which
 /// fails on it without reading anything.
 /// `root`: the folder's real path when it is already known.
-pub fn check_real(
+pub(crate) fn check_real(
     base: &Path,
     root: Option<&Path>,
     relative: &Path,

@@ -27,7 +27,7 @@ fn lock_byte_at() -> OVERLAPPED {
 /// Locks the lock byte of `file` for this process: waits while another holds it when
 /// `wait`, else fails at once with [`ErrorKind::WouldBlock`]. The system releases it when
 /// the handle is closed, however the process ends.
-pub fn lock_byte(file: &File, wait: bool) -> Result<()> {
+pub(crate) fn lock_byte(file: &File, wait: bool) -> Result<()> {
     let mut flags = fs::LOCKFILE_EXCLUSIVE_LOCK;
     if !wait {
         flags |= fs::LOCKFILE_FAIL_IMMEDIATELY;
@@ -47,7 +47,7 @@ pub fn lock_byte(file: &File, wait: bool) -> Result<()> {
 }
 
 /// Releases the lock byte of `file` ([`lock_byte`]).
-pub fn unlock_byte(file: &File) -> Result<()> {
+pub(crate) fn unlock_byte(file: &File) -> Result<()> {
     let mut overlapped = lock_byte_at();
     // SAFETY: as in `lock_byte`.
     let ok = unsafe { fs::UnlockFileEx(file.as_raw_handle(), 0, 1, 0, &mut overlapped) };
@@ -60,7 +60,7 @@ pub fn unlock_byte(file: &File) -> Result<()> {
 
 /// The path of the file `file` opened, links and junctions resolved (`\\?\C:\…`, as
 /// `std::fs::canonicalize` gives it): what was opened, not what the path names now.
-pub fn final_path(file: &File) -> Result<PathBuf> {
+pub(crate) fn final_path(file: &File) -> Result<PathBuf> {
     let mut buffer = vec![0u16; 512];
     loop {
         // SAFETY: the buffer holds `len` units; the call writes at most that many.
@@ -86,7 +86,7 @@ pub fn final_path(file: &File) -> Result<PathBuf> {
 
 /// Whether `file` is a file on a disk, not a console, printer port, `NUL` or a pipe
 /// (Windows opens a device for the names `CON`, `NUL`, `COM1` … in any folder).
-pub fn on_disk(file: &File) -> bool {
+pub(crate) fn on_disk(file: &File) -> bool {
     // SAFETY: the handle is `file`'s, open for the call.
     unsafe { fs::GetFileType(file.as_raw_handle()) == fs::FILE_TYPE_DISK }
 }

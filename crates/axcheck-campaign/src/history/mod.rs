@@ -95,7 +95,7 @@ pub fn file_name(campaign: &str, date: chrono::NaiveDate) -> String {
 
 /// The longest history file name, in bytes: it is written as `.NAME.axcheck-tmp-PID`
 /// first (25 bytes more), and file systems take names of 255 bytes (ext4, XFS, Btrfs).
-pub const MAX_FILE_NAME_BYTES: usize = 230;
+pub(crate) const MAX_FILE_NAME_BYTES: usize = 230;
 
 /// `Plant 2 annual inspection` → `plant-2-annual-inspection`: lower-case letters and digits
 /// (any script), everything else a single `-`; `campaign` when nothing is left.

@@ -18,14 +18,14 @@
 //! written with a leading dot (`.00742`, from `bc`).
 
 use super::ecmc_app::error;
-use crate::evaluate::ParamKey;
 use super::reported::{Family, Reported, ReportedQuantity, ToolResults};
 use super::{AxisData, Lines, RawReading, ReadError};
+use crate::evaluate::ParamKey;
 use crate::units::{AxisKind, Direction};
 use std::io::BufRead;
 
 /// The report's first line.
-pub const TITLE: &str = "# ecmc motion system test report";
+pub(crate) const TITLE: &str = "# ecmc motion system test report";
 
 /// The scripts, as the comparison names them.
 const TOOL: &str = "ecmc ISO 230-2 scripts (2021)";

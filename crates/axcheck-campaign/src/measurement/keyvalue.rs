@@ -21,7 +21,7 @@ use std::collections::BTreeMap;
 use std::io::BufRead;
 
 /// True when `line` has the shape `NAME=…` or `NAME[…]=…`.
-pub fn looks_like_key_value(line: &[u8]) -> bool {
+pub(crate) fn looks_like_key_value(line: &[u8]) -> bool {
     let Some(eq) = line.iter().position(|&b| b == b'=') else {
         return false;
     };

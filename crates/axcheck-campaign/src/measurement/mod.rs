@@ -26,7 +26,7 @@ use std::io::BufRead;
 use std::path::Path;
 
 /// Largest workbook read: a positioning test's book is a few hundred kB.
-pub const MAX_BOOK_BYTES: usize = 16 << 20;
+pub(crate) const MAX_BOOK_BYTES: usize = 16 << 20;
 
 /// What to read of a file beyond its layout: the sheet of a workbook, the position source
 /// of an ecmc ISO 230 app file.
@@ -258,7 +258,7 @@ pub fn read_file_with(path: &Path, options: &ReadOptions) -> Result<ReadTest, Re
 
 /// [`read_file`] with `options`, refused unless the file opened lies inside the folder
 /// `files` ([`crate::files::Root`]; `None`: no folder rule).
-pub fn read_file_within(
+pub(crate) fn read_file_within(
     path: &Path,
     options: &ReadOptions,
     files: Option<&crate::files::Root>,

@@ -30,12 +30,12 @@ use std::io::Cursor;
 /// Most bytes a workbook may unpack to (its parts' sizes as its ZIP directory declares
 /// them, which the unpacking holds to): a test's book unpacks to a few MB, and calamine
 /// keeps some parts (the shared strings) whole in memory.
-pub const MAX_BOOK_UNPACKED: u64 = 128 << 20;
+pub(crate) const MAX_BOOK_UNPACKED: u64 = 128 << 20;
 /// Rows holding anything that may stand above the header (titles, dates, notes).
-pub const HEADER_SEARCH_ROWS: usize = 20;
+pub(crate) const HEADER_SEARCH_ROWS: usize = 20;
 /// Most cells a sheet may hold: a long table of [`MAX_READINGS`] readings with a time and
 /// a few temperatures, and then some.
-pub const MAX_SHEET_CELLS: usize = 10 * MAX_READINGS;
+pub(crate) const MAX_SHEET_CELLS: usize = 10 * MAX_READINGS;
 /// The last column and row a sheet can have (XFD1048576).
 const MAX_COLUMN: u32 = 16_384;
 const MAX_ROW: u32 = 1_048_576;

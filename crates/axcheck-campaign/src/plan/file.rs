@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 /// What the file holds.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct PlanFile {
+pub(crate) struct PlanFile {
     #[serde(deserialize_with = "crate::yaml::keyword")]
     pub kind: AxisKind,
     /// `iso230-2`, `gbt17421.2`, `gost27843`, `vdi3441` or `nmtba`.

@@ -12,7 +12,7 @@ pub use crate::axis_model::{
 };
 
 /// A simulation file that cannot be used: `file:line:column: message`.
-pub type SimulationError = crate::yaml::YamlError;
+pub(crate) type SimulationError = crate::yaml::YamlError;
 
 /// A simulation as a file: read from and written to YAML with the axis kind's units (the
 /// core's [`Simulation`] knows no YAML).

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 /// One series and its trend, with the keys of issue 16 (plus `serial` and `symbol`).
 #[derive(Debug, Serialize)]
-pub struct AxisTrend<'a> {
+pub(crate) struct AxisTrend<'a> {
     pub machine: &'a str,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub serial: Option<&'a str>,
@@ -84,7 +84,7 @@ pub fn write_json<'a>(
 }
 
 /// The CSV columns, in order.
-pub const CSV_COLUMNS: [&str; 16] = [
+pub(crate) const CSV_COLUMNS: [&str; 16] = [
     "machine",
     "serial",
     "axis",

@@ -56,7 +56,7 @@ impl Located {
 }
 
 /// A serde path as `a.b[0].c`.
-pub fn path_string(path: &serde_path_to_error::Path) -> String {
+pub(crate) fn path_string(path: &serde_path_to_error::Path) -> String {
     use serde_path_to_error::Segment;
     let mut out = String::new();
     for segment in path {
@@ -141,7 +141,7 @@ fn last_key(path: &str) -> &str {
 
 /// Deserializes `value` (found at `base` in the document) and turns a failure into a
 /// message in the user's words with the location of the offending key or value.
-pub fn deserialize_at<T: serde::de::DeserializeOwned>(
+pub(crate) fn deserialize_at<T: serde::de::DeserializeOwned>(
     value: &Value,
     base: &str,
     index: &LocationIndex,
@@ -152,7 +152,7 @@ pub fn deserialize_at<T: serde::de::DeserializeOwned>(
 /// [`deserialize_at`] for documents whose keys are spelled differently from the fields
 /// they fill: `spell(path, field)` names the field of the mapping at `path` as the file
 /// writes it (`pitch` as `pitch_mm`), for "missing key".
-pub fn deserialize_spelled<T: serde::de::DeserializeOwned>(
+pub(crate) fn deserialize_spelled<T: serde::de::DeserializeOwned>(
     value: &Value,
     base: &str,
     index: &LocationIndex,
@@ -221,7 +221,7 @@ const PIECES_PER_THREAD: usize = 4;
 /// [`parse`] for a document whose top-level `key` holds a long block list (a campaign's
 /// `machines:`): the list is parsed in pieces on the pool's threads when its text can be
 /// cut plainly ([`pieces`]), else whole; the value is the same either way.
-pub fn parse_long_list(
+pub(crate) fn parse_long_list(
     text: &str,
     file: &str,
     key: &str,

@@ -177,7 +177,7 @@ pub fn in_words(
 }
 
 /// A serde message about a key that is not text (`1: 2`, `[a]: 1`) in words.
-pub fn key_in_words(message: &str) -> String {
+pub(crate) fn key_in_words(message: &str) -> String {
     let unexpected = message
         .strip_prefix("invalid type: ")
         .and_then(|r| r.rsplit_once(", expected "))
@@ -237,7 +237,7 @@ pub fn not_a_name<T: DeserializeOwned>(value: &Value) -> String {
 /// The YAML parser's message in words: the location it repeats is dropped (the error
 /// names it), the construct it was reading is said with where it starts, and a key
 /// given twice is said so.
-pub fn syntax_in_words(message: &str) -> String {
+pub(crate) fn syntax_in_words(message: &str) -> String {
     let (path, message) = match message.split_once(": ") {
         Some((path, rest)) if !path.contains(' ') => (format!("{path}: "), rest),
         _ => (String::new(), message),
@@ -266,7 +266,7 @@ pub fn syntax_in_words(message: &str) -> String {
 
 /// The path of the key that serde_norway's "duplicate entry" error names
 /// (`machines[0].axes[0].tolerances.A`), if the error is one.
-pub fn duplicate_key(message: &str) -> Option<String> {
+pub(crate) fn duplicate_key(message: &str) -> Option<String> {
     let (path, rest) = match message.split_once(": ") {
         Some((path, rest)) if !path.contains(' ') => (path, rest),
         _ => ("", message),

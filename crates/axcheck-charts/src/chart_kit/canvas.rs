@@ -178,7 +178,7 @@ impl DrawingBackend for Canvas {
 }
 
 /// A polyline with a dash pattern (plotters draws only solid ones), drawn on a [`Canvas`].
-pub struct DashedLine {
+pub(crate) struct DashedLine {
     pub points: Vec<Point>,
     pub colour: Colour,
     pub width: u32,

@@ -78,7 +78,7 @@ impl Stroke {
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Marker {
+pub(crate) enum Marker {
     /// Filled circle of the given radius.
     Dot(u32),
     /// Open (white-filled) triangle with the given half size.
@@ -103,7 +103,7 @@ pub(crate) struct LegendItem {
 /// How a chart module measures text. The modules differ here and each keeps its own so
 /// its charts keep their layout.
 #[derive(Clone, Copy)]
-pub struct Conventions {
+pub(crate) struct Conventions {
     /// Superscript digits and minus (as in 10⁻³) measure 0.4 em; otherwise they count as the
     /// 0.7 em of other symbols.
     pub narrow_superscripts: bool,
@@ -534,7 +534,7 @@ pub(crate) const X_TICK_H: u32 = 26;
 pub(crate) const X_DESC_H: u32 = 24;
 
 /// One plot's frame: ranges, margins, the x description and who draws the x ticks.
-pub struct AxesSpec<'s> {
+pub(crate) struct AxesSpec<'s> {
     pub x: (f64, f64),
     pub y: (f64, f64),
     pub top: u32,

@@ -52,7 +52,7 @@ const MARK_READING: (Marker, RGBColor) = (Marker::Dot(2), RGBColor(0x8A, 0x8A, 0
 const MARK_TABLE_POINT: (Marker, RGBColor) = (Marker::Diamond(5), INK);
 
 /// A line through a direction's means with a marker at each.
-pub struct Means<'a> {
+pub(crate) struct Means<'a> {
     pub values: &'a [f64],
     pub stroke: Stroke,
     pub mark: (Marker, RGBColor),
@@ -61,7 +61,7 @@ pub struct Means<'a> {
 
 /// A chart of mean curves along the axis: what the compensation and the verification
 /// charts draw, each with its own curves.
-pub struct MeansChart<'a> {
+pub(crate) struct MeansChart<'a> {
     pub positions: &'a [f64],
     pub position_label: &'a str,
     pub deviation_label: &'a str,
@@ -174,7 +174,7 @@ pub fn compensation(chart: &CompensationChart, style: &Style) -> Scene {
 }
 
 /// A chart of mean curves, readings and table points.
-pub fn means_chart(chart: &MeansChart, style: &Style) -> Scene {
+pub(crate) fn means_chart(chart: &MeansChart, style: &Style) -> Scene {
     let xs = chart.positions.iter().chain(chart.table_points).copied();
     let Some(x) = padded_range(xs, 0.04) else {
         return message_chart(style, "No target positions to plot.");

@@ -17,7 +17,7 @@ use serde::Serialize;
 
 /// The compensation section, as the template reads it.
 #[derive(Serialize)]
-pub struct CompensationSection<'a> {
+pub(crate) struct CompensationSection<'a> {
     controller: &'static str,
     /// Why the controller cannot hold the table: shown instead of the rest.
     refusal: Option<String>,

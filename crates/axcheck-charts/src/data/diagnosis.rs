@@ -12,7 +12,7 @@ use serde::Serialize;
 
 /// The diagnosis section of an axis report, as the template reads it.
 #[derive(Serialize)]
-pub struct DiagnosisSection<'a> {
+pub(crate) struct DiagnosisSection<'a> {
     unit: &'static str,
     /// The model check's verdict in one sentence (findings and checks together).
     verdict: String,
@@ -167,7 +167,7 @@ impl<'a> From<&'a Finding> for FindingLine<'a> {
 
 /// The diagnosis section: findings with evidence, the held-out gain, parameters with the
 /// identified effects removed (beside the measured ones), notes.
-pub fn diagnosis_section<'a>(
+pub(crate) fn diagnosis_section<'a>(
     d: &'a Diagnosis,
     out_of_test: &[OutOfTest],
     symbol: impl Fn(ParamKey) -> String,

@@ -119,12 +119,12 @@ impl<'a> CampaignHeader<'a> {
 
 /// The campaign's name as the axis reports' headings and the footers show it: longer
 /// names shortened ([`short_name`]); the summary's title prints it whole.
-pub fn campaign_short(result: &CampaignResult) -> String {
+pub(crate) fn campaign_short(result: &CampaignResult) -> String {
     short_name(&result.info.name, 2 * SHORT_NAME)
 }
 
 /// A test's label (`MACHINE AXIS`) with each name shortened ([`short_name`]).
-pub fn short_label(t: &AxisTest) -> String {
+pub(crate) fn short_label(t: &AxisTest) -> String {
     let (m, a) = (
         short_name(&t.machine.id, SHORT_NAME),
         short_name(&t.axis, AXIS_NAME),
@@ -139,7 +139,7 @@ pub fn short_label(t: &AxisTest) -> String {
 /// A key of the JSON (`slope_um_per_m`, `systematic_per_target`) in words for a customer:
 /// underscores as spaces, and from the first unit on the unit in brackets with its first
 /// `per` as a slash (`slope (µm/m)`, `growth (µm/m per run)`).
-pub fn key_words(key: &str) -> String {
+pub(crate) fn key_words(key: &str) -> String {
     let words: Vec<&str> = key.split('_').collect();
     let unit = |w: &str| matches!(w, "um" | "arcsec" | "mm" | "deg" | "ppm" | "pct");
     let Some(i) = words.iter().skip(1).position(|w| unit(w)).map(|i| i + 1) else {

@@ -7,7 +7,7 @@ use crate::evaluate::{StandardId, catalogue};
 use serde::Serialize;
 
 #[derive(Serialize)]
-pub struct OtherToolSection<'a> {
+pub(crate) struct OtherToolSection<'a> {
     name: &'a str,
     state: Option<&'a str>,
     unit: &'static str,
@@ -30,7 +30,7 @@ struct Row<'a> {
 }
 
 /// The section of `tool`'s comparison.
-pub fn other_tool_section(tool: &OtherTool) -> OtherToolSection<'_> {
+pub(crate) fn other_tool_section(tool: &OtherTool) -> OtherToolSection<'_> {
     OtherToolSection {
         name: &tool.name,
         state: tool.state.as_deref(),

@@ -35,10 +35,10 @@ pub struct TrendRow {
 
 /// Forecasts further than this after the latest inspection are shown as "not within": a
 /// line that flat says the axis is stable, not when it will fail.
-pub const FAR_YEARS: u32 = 50;
+pub(crate) const FAR_YEARS: u32 = 50;
 
 /// The axis's series in the catalogue's parameter order (A, A↑, …), unknown keys last.
-pub fn in_parameter_order(pairs: &mut [(&Series, &Trend)]) {
+pub(crate) fn in_parameter_order(pairs: &mut [(&Series, &Trend)]) {
     let rank = |key: &str| {
         CATALOGUE
             .iter()
@@ -103,7 +103,7 @@ fn symbol(key: &str) -> String {
 }
 
 /// 2024-07-02 → 2024.5: the date's share of its year.
-pub fn decimal_year(date: NaiveDate) -> f64 {
+pub(crate) fn decimal_year(date: NaiveDate) -> f64 {
     let days = if date.leap_year() { 366.0 } else { 365.0 };
     date.year() as f64 + date.ordinal0() as f64 / days
 }
@@ -230,7 +230,7 @@ fn inspection_dates<'a>(series: impl Iterator<Item = &'a Series>) -> Vec<NaiveDa
 }
 
 /// The chart drawn for a row, by name.
-pub type NamedChart = (String, TrendChart);
+pub(crate) type NamedChart = (String, TrendChart);
 
 /// An axis report's history section: the axis's series over the history's inspections.
 #[derive(Debug, Serialize)]
@@ -244,7 +244,7 @@ pub struct HistorySection {
 }
 
 /// Most charts in an axis report's history section (three to a row).
-pub const AXIS_REPORT_CHARTS: usize = 6;
+pub(crate) const AXIS_REPORT_CHARTS: usize = 6;
 /// What an axis report charts when no parameter has a limit or a flag.
 const HEADLINE: [&str; 3] = ["E", "R", "B"];
 
@@ -402,7 +402,7 @@ impl AxisTrendRows {
 
 /// Most axes `trends.pdf` charts (one page each at most); the rest are counted and are in
 /// `trends.csv`. The flagged axes come first, so they are left out last.
-pub const TRENDS_PDF_AXES: usize = 200;
+pub(crate) const TRENDS_PDF_AXES: usize = 200;
 
 /// The document for `pairs` (series with their trends, any order): axes flagged first,
 /// then by machine, serial and axis; charts named `t-K`.

@@ -321,7 +321,7 @@ impl ErrorModel {
 }
 
 /// Linear interpolation through `knots` (positions increasing); constant beyond the ends.
-pub fn piecewise_linear(knots: &[[f64; 2]], x: f64) -> f64 {
+pub(crate) fn piecewise_linear(knots: &[[f64; 2]], x: f64) -> f64 {
     let last = knots.len().saturating_sub(1);
     match knots {
         [] => 0.0,
@@ -337,7 +337,7 @@ pub fn piecewise_linear(knots: &[[f64; 2]], x: f64) -> f64 {
 
 /// C¹ cubic Hermite interpolation through `knots` with finite-difference slopes;
 /// constant beyond the ends; 0 without knots.
-pub fn interpolate(knots: &[[f64; 2]], x: f64) -> f64 {
+pub(crate) fn interpolate(knots: &[[f64; 2]], x: f64) -> f64 {
     match knots {
         [] => 0.0,
         [only] => only[1],

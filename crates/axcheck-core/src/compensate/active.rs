@@ -104,7 +104,7 @@ pub fn refusal(controller: &dyn Controller, active: &Active, kind: AxisKind) -> 
 /// What the conditions' compensation text says (ISO 230-2 3.2): `Some(false)` for "none",
 /// "off", "inactive", …, `Some(true)` for a named compensation ("reversal and lead screw",
 /// "LEC active"), `None` when empty.
-pub fn says_active(text: &str) -> Option<bool> {
+pub(crate) fn says_active(text: &str) -> Option<bool> {
     let t = text.trim().to_lowercase();
     if t.is_empty() {
         return None;

@@ -98,7 +98,7 @@ fn one_table(table: &mut Table, backlash: bool) {
 /// Shifts both directions so the correction written at `reference` is zero (the ↑ one,
 /// or the mean on a one-table controller): homing there is unchanged. A constant changes
 /// no ISO 230-2 parameter.
-pub fn zero_at_reference(table: &mut Table, reference: f64, format: &Format) {
+pub(crate) fn zero_at_reference(table: &mut Table, reference: f64, format: &Format) {
     table.reference = reference;
     let up = table.correction(reference, Direction::Up);
     let down = table.correction(reference, Direction::Down);

@@ -9,7 +9,7 @@ use crate::measurement::AxisData;
 use crate::units::{AxisKind, fmt_fixed};
 
 /// One revolution of a rotary axis, deg.
-pub const REVOLUTION_DEG: f64 = 360.0;
+pub(crate) const REVOLUTION_DEG: f64 = 360.0;
 
 /// Tolerance on positions (mm or deg): far below any controller's position unit.
 const EPS: f64 = 1e-9;

@@ -43,7 +43,7 @@ pub fn at(p: f64, targets: &[f64], values: &[f64]) -> f64 {
 
 /// The hand-worked linear axis of the controllers' examples: targets 0, 30, 70, 100 mm,
 /// x̄↑ = 0, 3, −1, 2 µm and x̄↓ = x̄↑ + 2 µm.
-pub fn irregular_linear() -> AxisData {
+pub(crate) fn irregular_linear() -> AxisData {
     let targets = [0.0, 30.0, 70.0, 100.0];
     axis(AxisKind::Linear, &targets, 2, |p, direction| {
         let up = at(p, &targets, &[0.0, 3.0, -1.0, 2.0]);
@@ -57,7 +57,7 @@ pub fn irregular_linear() -> AxisData {
 
 /// The hand-worked linear axis of the TwinCAT and HEIDENHAIN examples: targets −100, −70,
 /// −55, −20, 0 mm, x̄↑ = 0, 3.0, 1.53, −2.0, 1.0 µm and x̄↓ = x̄↑ + 2.0 µm.
-pub fn negative_linear() -> AxisData {
+pub(crate) fn negative_linear() -> AxisData {
     let targets = [-100.0, -70.0, -55.0, -20.0, 0.0];
     let up = [0.0, 3.0, 1.53, -2.0, 1.0];
     axis(AxisKind::Linear, &targets, 2, |p, direction| {
@@ -73,7 +73,7 @@ pub fn negative_linear() -> AxisData {
 /// The hand-worked rotary axis of the TwinCAT and HEIDENHAIN examples: every 45° over
 /// 0…360°, x̄↑ = 1.0, 3.6, 7.3, −1.8, 2.0″ at 0, 90, 180, 270, 360° (0 at the odd
 /// multiples of 45°) and x̄↓ = x̄↑ − 1.44″.
-pub fn quarter_turns_rotary() -> AxisData {
+pub(crate) fn quarter_turns_rotary() -> AxisData {
     let targets: Vec<f64> = (0..=8).map(|k| k as f64 * 45.0).collect();
     axis(AxisKind::Rotary, &targets, 2, |p, direction| {
         let up = match p as i64 {
@@ -94,7 +94,7 @@ pub fn quarter_turns_rotary() -> AxisData {
 
 /// The hand-worked rotary axis of the Siemens and ecmc examples: targets 0, 90, 180, 270,
 /// 360°, x̄↑ = 0, 3.6, −7.2, 1.8, 3.6″ and x̄↓ = x̄↑ + 3.6″.
-pub fn whole_turn_rotary() -> AxisData {
+pub(crate) fn whole_turn_rotary() -> AxisData {
     let targets = [0.0, 90.0, 180.0, 270.0, 360.0];
     axis(AxisKind::Rotary, &targets, 2, |p, direction| {
         let up = at(p, &targets, &[0.0, 3.6, -7.2, 1.8, 3.6]);

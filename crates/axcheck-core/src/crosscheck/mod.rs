@@ -119,7 +119,7 @@ pub fn compare(tool: &ToolResults, data: &AxisData) -> OtherTool {
 
 /// The most a quantity moves when each of n readings moves by up to `h`: a mean by h, a
 /// standard deviation by h·√(n/(n − 1)), a parameter by the sum of its parts' bounds.
-pub fn propagated(quantity: ReportedQuantity, h: f64, n: usize) -> f64 {
+pub(crate) fn propagated(quantity: ReportedQuantity, h: f64, n: usize) -> f64 {
     let n = n as f64;
     let s = match n > 1.0 {
         true => h * (n / (n - 1.0)).sqrt(),

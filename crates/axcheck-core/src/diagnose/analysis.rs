@@ -22,7 +22,7 @@ use crate::measurement::AxisData;
 
 /// What the tests found out about one measurement: the shared part every effect reads
 /// and each effect's own test.
-pub(crate) struct Analysis<'a> {
+pub struct Analysis<'a> {
     pub basis: Basis<'a>,
     pub hits: Vec<Hit>,
     pub time: TimeTests,

@@ -9,7 +9,7 @@ use super::prep::Prep;
 use crate::measurement::AxisData;
 
 /// The shared part of the analysis of one measurement.
-pub(crate) struct Basis<'a> {
+pub struct Basis<'a> {
     pub data: &'a AxisData,
     pub prep: Prep,
     pub units: Units,

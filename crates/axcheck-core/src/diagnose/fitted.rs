@@ -7,7 +7,7 @@ use super::model::PlanGuess;
 use super::model_terms::Predictor;
 
 /// The extended model's terms as the simulator has them.
-pub(crate) struct Fitted {
+pub struct Fitted {
     pub pred: Predictor,
     pub guess: PlanGuess,
     /// Hours per time unit (1, or the guessed plan's duration of a run).

@@ -140,7 +140,7 @@ impl Diagnosis {
 }
 
 /// Validation used for `heldout_rms`.
-pub const VALIDATION: &str = "k-fold cross-validation over readings (10 folds, stratified by target and direction); periodic term: leave-targets-out on the target means (each inner target predicted without a block of about a quarter period around it)";
+pub(crate) const VALIDATION: &str = "k-fold cross-validation over readings (10 folds, stratified by target and direction); periodic term: leave-targets-out on the target means (each inner target predicted without a block of about a quarter period around it)";
 
 /// Diagnoses one measurement: the tests, each effect's findings, the terms kept by
 /// held-out prediction, the fitted models, the model checks and the parameters with the

@@ -10,7 +10,7 @@ use crate::axis_model::{Cycle, TestPlan};
 use crate::measurement::AxisData;
 
 /// A guessed plan with what was guessed.
-pub(crate) struct PlanGuess {
+pub struct PlanGuess {
     pub plan: TestPlan,
     pub notes: Vec<String>,
     /// Whether the targets survive the simulator's rounding to 0.001 as distinct values.

@@ -8,7 +8,7 @@ use super::time_fit::TimeFit;
 
 /// The terms of a model.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub(crate) struct ModelTerms {
+pub struct ModelTerms {
     pub drift: bool,
     pub warm: bool,
     /// The warm-up's time constant when it is given (an unrelated curve's, fitted on all
@@ -24,13 +24,13 @@ pub(crate) struct ModelTerms {
 }
 
 /// A model fitted to training rows: its time model and what it has at the targets.
-pub(crate) struct Predictor {
+pub struct Predictor {
     pub time: TimeFit,
     pub lines: Lines,
 }
 
 /// What a model has at each target and cell beside its time model.
-pub(crate) struct Lines {
+pub struct Lines {
     /// Bidirectional mean per target.
     pub mean: Vec<f64>,
     /// Reversal value per target as the model has it.

@@ -29,7 +29,7 @@ impl TimeUnit {
 
 /// One reading.
 #[derive(Debug, Clone)]
-pub(crate) struct Row {
+pub struct Row {
     /// Index in `AxisData::readings`.
     pub reading: usize,
     /// Target index i (0-based).
@@ -50,7 +50,7 @@ pub(crate) struct Row {
 
 /// A test prepared for the diagnosis.
 #[derive(Debug, Clone)]
-pub(crate) struct Prep {
+pub struct Prep {
     pub kind: AxisKind,
     /// Number of targets m.
     pub m: usize,
@@ -79,7 +79,7 @@ pub(crate) struct Prep {
 /// What each time term of the model reads per row: the readings' times and runs, or, for
 /// a term unrelated to the data ([`super::confirm`]), its own in a random order.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Clocks {
+pub struct Clocks {
     /// The drift column: time about the mean, t − t̄.
     pub drift: Vec<f64>,
     /// The time in the thermal column (P − P̄)·(t − t̄).

@@ -260,7 +260,7 @@ pub struct ModelFit {
 }
 
 /// The kept terms and the held-out errors of the base and the extended model.
-pub(crate) struct Selection {
+pub struct Selection {
     pub terms: ModelTerms,
     /// The kept effects, in the order of the vocabulary.
     pub effects: Vec<Effect>,

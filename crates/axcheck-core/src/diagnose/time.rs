@@ -36,7 +36,7 @@ use super::time_fit::{CoefTest, DriftTest, Terms, TimeFit, fit};
 
 /// The time tests on the active rows.
 #[derive(Debug, Clone)]
-pub(crate) struct TimeTests {
+pub struct TimeTests {
     /// Full model: thermal + run effects + drift, and the warm-up when found (the
     /// pure-error reference).
     pub full: TimeFit,

@@ -27,7 +27,7 @@ pub(crate) fn warm_shape(dt: f64, tau: f64) -> f64 {
 
 /// A fit of the time model with cell fixed effects.
 #[derive(Debug, Clone)]
-pub(crate) struct TimeFit {
+pub struct TimeFit {
     pub ls: LeastSquares,
     /// Row indices (into `Prep::rows`) in fit order.
     pub rows: Vec<usize>,
@@ -294,7 +294,7 @@ fn intercepts(
 
 /// A coefficient's test.
 #[derive(Debug, Clone)]
-pub(crate) struct CoefTest {
+pub struct CoefTest {
     pub estimate: f64,
     pub se: f64,
     pub t: f64,
@@ -325,7 +325,7 @@ impl CoefTest {
 
 /// Drift, after thermal growth.
 #[derive(Debug, Clone)]
-pub(crate) struct DriftTest {
+pub struct DriftTest {
     pub test: CoefTest,
     /// The thermal origin chosen when thermal growth is present: the drift is the time
     /// effect there.

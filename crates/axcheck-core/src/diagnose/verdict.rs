@@ -16,7 +16,7 @@ use serde::Serialize;
 
 /// The chance, in %, that at least one of the eight statistics falls outside its 95 %
 /// band on data the base model explains, were they independent: 1 − 0.95⁸.
-pub const CHANCE_ANY_OUTSIDE_PCT: f64 = 33.7;
+pub(crate) const CHANCE_ANY_OUTSIDE_PCT: f64 = 33.7;
 
 /// What the findings and the model checks say together.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

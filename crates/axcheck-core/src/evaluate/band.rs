@@ -96,7 +96,7 @@ pub fn spread(values: impl IntoIterator<Item = f64>) -> (f64, f64, f64) {
 }
 
 /// Largest unidirectional repeatability 2kS in direction `d`, with its target.
-pub fn max_repeatability_in(targets: &[TargetResult], d: Direction) -> Option<(usize, f64)> {
+pub(crate) fn max_repeatability_in(targets: &[TargetResult], d: Direction) -> Option<(usize, f64)> {
     let values: Option<Vec<f64>> = targets
         .iter()
         .map(|t| t.direction(d).repeatability)
@@ -105,19 +105,22 @@ pub fn max_repeatability_in(targets: &[TargetResult], d: Direction) -> Option<(u
 }
 
 /// Largest bidirectional repeatability Ri, with its target.
-pub fn max_repeatability(targets: &[TargetResult]) -> Option<(usize, f64)> {
+pub(crate) fn max_repeatability(targets: &[TargetResult]) -> Option<(usize, f64)> {
     let values: Option<Vec<f64>> = targets.iter().map(|t| t.repeatability).collect();
     argmax(values?)
 }
 
 /// Largest |Bi| with its target (ISO 2.13, GOST 1.16).
-pub fn max_reversal(targets: &[TargetResult]) -> (usize, f64) {
+pub(crate) fn max_reversal(targets: &[TargetResult]) -> (usize, f64) {
     argmax(targets.iter().map(|t| t.reversal.abs())).expect("an axis has at least one target")
 }
 
 /// The accuracy parameters `[A, A↑, A↓]` as `defs` defines them (ISO 2.22/2.23, GOST
 /// (10)): none when S does not apply (n = 1).
-pub fn accuracies(targets: &[TargetResult], defs: [&'static ParameterDef; 3]) -> Vec<Parameter> {
+pub(crate) fn accuracies(
+    targets: &[TargetResult],
+    defs: [&'static ParameterDef; 3],
+) -> Vec<Parameter> {
     let [both, up, down] = defs;
     [(both, &[Up, Down][..]), (up, &[Up]), (down, &[Down])]
         .into_iter()
@@ -143,6 +146,6 @@ pub fn repeatabilities(
 }
 
 /// Mean of Bi (ISO 2.14, GOST 1.15).
-pub fn mean_reversal(targets: &[TargetResult]) -> f64 {
+pub(crate) fn mean_reversal(targets: &[TargetResult]) -> f64 {
     targets.iter().map(|t| t.reversal).sum::<f64>() / targets.len() as f64
 }

@@ -735,8 +735,11 @@ fn keys_where(keep: impl Fn(&ParameterDef) -> bool) -> Vec<ParamKey> {
 
 /// Every key a tolerance limit may name, whatever the standard.
 pub fn limitable_keys() -> &'static [&'static str] {
-    static KEYS: LazyLock<Vec<&'static str>> =
-        LazyLock::new(|| (keys_where(ParameterDef::limitable).into_iter()).map(ParamKey::as_str).collect());
+    static KEYS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
+        (keys_where(ParameterDef::limitable).into_iter())
+            .map(ParamKey::as_str)
+            .collect()
+    });
     &KEYS
 }
 

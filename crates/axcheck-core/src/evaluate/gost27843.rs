@@ -32,7 +32,7 @@ pub enum SMethod {
 /// The range coefficient a_n of formula (6) for n = 2…10: 1/d2(n). The standard prints
 /// n = 5…10; n = 10 is printed as 0.3429, an erratum for 0.3249. n = 2…4 are 1/d2(n)
 /// from the same d2 table (1.128, 1.693, 2.059).
-pub fn a_n(n: usize) -> Option<f64> {
+pub(crate) fn a_n(n: usize) -> Option<f64> {
     match n {
         2 => Some(0.8865),
         3 => Some(0.5907),

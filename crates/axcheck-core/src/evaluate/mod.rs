@@ -13,8 +13,8 @@ pub mod nmtba;
 pub mod stats;
 pub mod vdi3441;
 
-pub use catalogue::{Approach, ParameterDef, Role};
 pub use crate::param_key::ParamKey;
+pub use catalogue::{Approach, ParameterDef, Role};
 
 use crate::measurement::AxisData;
 use crate::units::{AxisKind, Direction};

@@ -9,7 +9,7 @@ pub fn mean(values: &[f64]) -> f64 {
 
 /// Sample standard deviation with n − 1 (ISO 230-2 clause 2.15, GOST 27843 formula (5));
 /// `None` for fewer than two values.
-pub fn sample_sd(values: &[f64]) -> Option<f64> {
+pub(crate) fn sample_sd(values: &[f64]) -> Option<f64> {
     if values.len() < 2 {
         return None;
     }
@@ -33,7 +33,7 @@ pub fn range(values: &[f64]) -> Option<f64> {
 
 /// Index and value of the largest item; the first one on ties (the lowest target index,
 /// as the standards' worked examples report).
-pub fn argmax(values: impl IntoIterator<Item = f64>) -> Option<(usize, f64)> {
+pub(crate) fn argmax(values: impl IntoIterator<Item = f64>) -> Option<(usize, f64)> {
     let mut best: Option<(usize, f64)> = None;
     for (k, v) in values.into_iter().enumerate() {
         if best.is_none_or(|(_, b)| v > b) {
@@ -43,13 +43,8 @@ pub fn argmax(values: impl IntoIterator<Item = f64>) -> Option<(usize, f64)> {
     best
 }
 
-/// Index and value of the smallest item; the first on ties.
-pub fn argmin(values: impl IntoIterator<Item = f64>) -> Option<(usize, f64)> {
-    argmax(values.into_iter().map(|v| -v)).map(|(k, v)| (k, -v))
-}
-
 /// Standard normal cumulative distribution.
-pub fn normal_cdf(x: f64) -> f64 {
+pub(crate) fn normal_cdf(x: f64) -> f64 {
     0.5 * libm::erfc(-x / std::f64::consts::SQRT_2)
 }
 
@@ -121,7 +116,6 @@ mod tests {
         assert_eq!(sample_sd(&[1.0]), None);
         assert_eq!(range(&[1.0, -2.0, 3.0]), Some(5.0));
         assert_eq!(argmax([1.0, 3.0, 3.0, 2.0]), Some((1, 3.0)));
-        assert_eq!(argmin([1.0, -3.0, -3.0]), Some((1, -3.0)));
         assert!((normal_cdf(1.96) - 0.975).abs() < 1e-4);
     }
 }

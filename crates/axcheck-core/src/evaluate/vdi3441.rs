@@ -16,7 +16,7 @@ use crate::units::Direction;
 
 /// The correction factor d for N readings as printed in the paper (N = 2…8, 10, 12);
 /// other N use d2(N) of the same statistical table, computed.
-pub fn d_factor(n: usize) -> Option<f64> {
+pub(crate) fn d_factor(n: usize) -> Option<f64> {
     match n {
         0 | 1 => None,
         2 => Some(1.13),

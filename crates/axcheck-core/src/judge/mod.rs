@@ -13,7 +13,7 @@ use std::collections::BTreeMap;
 pub type Tolerances = BTreeMap<ParamKey, f64>;
 
 /// What the summary says of a test judged against no limit.
-pub const NO_TOLERANCE: &str = "no tolerance applied";
+pub(crate) const NO_TOLERANCE: &str = "no tolerance applied";
 
 /// What every line built on an example spec's limits says (`example: true`).
 pub const EXAMPLE_LIMITS: &str = "example limits, not from a standard";

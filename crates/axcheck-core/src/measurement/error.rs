@@ -52,7 +52,7 @@ impl Location {
 }
 
 /// A spreadsheet column's letters: 1 → `A`, 27 → `AA`.
-pub fn column_letters(column: usize) -> String {
+pub(crate) fn column_letters(column: usize) -> String {
     let mut letters = Vec::new();
     let mut c = column;
     while c > 0 {

@@ -25,7 +25,7 @@ pub const MAX_DEVIATION: f64 = 1e5;
 /// Largest plausible |target position| in mm or degrees (1 km, or 2 778 turns), the bound
 /// a plan's targets have too: a target of `1e300` is a corrupt value, and its squares and
 /// differences overflow every statistic.
-pub const MAX_TARGET: f64 = 1e6;
+pub(crate) const MAX_TARGET: f64 = 1e6;
 /// Most `temp_<name>_c` columns a CSV file may have: with [`MAX_READINGS`] this bounds
 /// the temperatures kept (64 × 100 000 × 8 bytes = 51 MB) whatever the file holds.
 pub const MAX_TEMPERATURES: usize = 64;

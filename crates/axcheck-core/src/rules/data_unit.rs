@@ -9,7 +9,7 @@ use crate::units::AxisKind;
 /// (3600) times too small. Every deviation exactly 0 is no measurement at all (a laser
 /// reads noise at 0.01 µm): an empty column filled with zeros, or the target written
 /// into the actual position's column; such a test would otherwise pass every limit.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "data-unit",
     clause: "ISO 230-2 2.5",
     severity: Severity::Warning,

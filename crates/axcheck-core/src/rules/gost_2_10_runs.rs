@@ -4,7 +4,7 @@ use super::{Plan, Rule, Severity};
 
 /// GOST 27843-88 2.10: every target is measured at least five times in each direction;
 /// the standard deviation S and with it the repeatability rest on these measurements.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "gost-2.10-runs",
     clause: "GOST 27843 2.10",
     severity: Severity::Error,

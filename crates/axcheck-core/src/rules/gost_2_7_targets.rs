@@ -5,7 +5,7 @@ use crate::units::AxisKind;
 
 /// GOST 27843-88 2.7: a linear axis has at least 11 target positions on any two metres
 /// of its travel; a travel up to 2 m has at least 11 in all.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "gost-2.7-targets",
     clause: "GOST 27843 2.7",
     severity: Severity::Error,

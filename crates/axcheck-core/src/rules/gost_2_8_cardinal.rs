@@ -5,7 +5,7 @@ use crate::units::AxisKind;
 
 /// GOST 27843-88 2.8: a rotary axis is measured at 0°, 90°, 180° and 270° among its
 /// target positions, in every turn of the travel.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "gost-2.8-cardinal",
     clause: "GOST 27843 2.8",
     severity: Severity::Error,

@@ -6,7 +6,7 @@ use crate::units::fmt_position;
 /// ISO 230-2:1997 2.2: the measurement travel is the part of the axis travel over which
 /// data are taken, from the first to the last target. Targets outside the declared one
 /// mean the declaration or the data are wrong.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-2.2-measurement-travel",
     clause: "ISO 230-2 2.2",
     severity: Severity::Error,

@@ -6,7 +6,7 @@ use crate::units::{AxisKind, Travel, fmt_position};
 /// ISO 230-2:1997 2.2: the measurement travel is chosen so that the first and last
 /// targets can be approached in both directions, which needs room beyond them in the
 /// axis travel. A rotary axis turning a full revolution has no ends.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-2.2-reversal-room",
     clause: "ISO 230-2 2.2",
     severity: Severity::Error,

@@ -9,7 +9,7 @@ use crate::units::Direction;
 /// in run order counts; under independent scatter a cell is increasing with probability
 /// 1/n!. The rule fires when the cells increasing (or decreasing) are too many for
 /// chance: a binomial tail below 0.001.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-3.3-thermal",
     clause: "ISO 230-2 3.3",
     severity: Severity::Warning,

@@ -5,7 +5,7 @@ use super::{Plan, Rule, Severity};
 /// ISO 230-2:1997 4.2: the offsets r of the target positions make periodic errors show.
 /// When every interval is a whole number of lead-screw or encoder pitches, the periodic
 /// error is sampled at one phase and hidden from the results.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.2-pitch-alias",
     clause: "ISO 230-2 4.2",
     severity: Severity::Warning,

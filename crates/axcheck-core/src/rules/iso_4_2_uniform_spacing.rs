@@ -5,7 +5,7 @@ use super::{EPS, Plan, Rule, Severity};
 /// ISO 230-2:1997 4.2: target positions are chosen as P_i = (i − 1)P + r, with r a
 /// different offset at each target, so that periodic errors (lead screw, scale pitch) are
 /// sampled at varying phases. Equal intervals may sample them at one phase only.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.2-uniform-spacing",
     clause: "ISO 230-2 4.2",
     severity: Severity::Warning,

@@ -5,7 +5,7 @@ use super::{IsoPlan, Plan, Rule, Severity};
 /// ISO 230-2:1997 4.3.2: every target of a linear axis up to 2000 mm is approached five
 /// times in each direction (n = 5); the estimator of the standard uncertainty, and with
 /// it the repeatability R, rests on these runs.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.2-runs",
     clause: "ISO 230-2 4.3.2",
     severity: Severity::Error,

@@ -6,7 +6,7 @@ use crate::units::fmt_position;
 /// ISO 230-2:1997 4.3.2: on a linear axis up to 2000 mm at least five target positions are
 /// chosen per metre of measurement travel, and at least five in all, so that the
 /// parameters describe the whole travel rather than a few points of it.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.2-targets",
     clause: "ISO 230-2 4.3.2",
     severity: Severity::Error,

@@ -5,7 +5,7 @@ use super::{IsoPlan, Plan, Rule, Severity};
 /// ISO 230-2:1997 4.3.3: over more than 2000 mm the full travel is measured with one
 /// approach per direction (n = 1), and a working range of up to 2000 mm may be tested by
 /// the plan of 4.3.2 (n = 5). Two to four runs follow neither plan.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.3-runs",
     clause: "ISO 230-2 4.3.3",
     severity: Severity::Error,

@@ -5,7 +5,7 @@ use crate::units::fmt_position;
 
 /// ISO 230-2:1997 4.3.3: a linear axis over 2000 mm is measured over its whole travel with
 /// a mean interval of at most 250 mm between target positions.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.3-spacing",
     clause: "ISO 230-2 4.3.3",
     severity: Severity::Error,

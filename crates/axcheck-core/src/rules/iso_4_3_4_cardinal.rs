@@ -4,7 +4,7 @@ use super::{IsoPlan, Plan, Rule, Severity};
 
 /// ISO 230-2:1997 4.3.4: the principal positions 0°, 90°, 180° and 270° are included
 /// among the targets of a rotary axis wherever they lie inside the measurement travel.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.4-cardinal",
     clause: "ISO 230-2 4.3.4",
     severity: Severity::Error,

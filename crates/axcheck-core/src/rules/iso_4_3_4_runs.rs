@@ -4,7 +4,7 @@ use super::{IsoPlan, Plan, Rule, Severity};
 
 /// ISO 230-2:1997 4.3.4 with 5.1: every target of a rotary axis up to 360° is approached
 /// five times in each direction, as on a linear axis.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.4-runs",
     clause: "ISO 230-2 4.3.4, 5.1",
     severity: Severity::Error,

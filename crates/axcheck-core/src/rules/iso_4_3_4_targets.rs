@@ -5,7 +5,7 @@ use crate::units::fmt_position;
 
 /// ISO 230-2:1997 4.3.4, Table 1: the least number of target positions on a rotary axis
 /// up to 360° grows with the travel: 3 up to 90°, 5 up to 180°, 8 beyond.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.4-targets",
     clause: "ISO 230-2 4.3.4, Table 1",
     severity: Severity::Error,

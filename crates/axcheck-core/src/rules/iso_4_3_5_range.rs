@@ -5,7 +5,7 @@ use crate::units::fmt_position;
 
 /// ISO 230-2:1997 4.3.5 covers rotary travels up to 1800° (five revolutions); a longer
 /// test still gives figures, but the normal working range should be tested as well.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.5-range",
     clause: "ISO 230-2 4.3.5",
     severity: Severity::Warning,

@@ -5,7 +5,7 @@ use super::{IsoPlan, Plan, Rule, Severity};
 /// ISO 230-2:1997 4.3.5: over more than 360° the travel is measured with one approach per
 /// direction (n = 1), or a range of up to 360° by the plan of 4.3.4 (n = 5). Two to four
 /// runs follow neither plan.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.5-runs",
     clause: "ISO 230-2 4.3.5",
     severity: Severity::Error,

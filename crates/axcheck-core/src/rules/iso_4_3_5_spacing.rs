@@ -5,7 +5,7 @@ use crate::units::fmt_position;
 
 /// ISO 230-2:1997 4.3.5: a rotary axis over more than 360° is measured with target
 /// positions at most 45° apart.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-4.3.5-spacing",
     clause: "ISO 230-2 4.3.5",
     severity: Severity::Error,

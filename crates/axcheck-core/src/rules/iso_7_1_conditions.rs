@@ -12,7 +12,7 @@ use super::{Plan, Rule, Severity};
 /// result stands, so the rule is a warning. The items and where a campaign states each:
 /// `crate::campaign::clause7_1`. The rule applies to a campaign's tests only (a planned
 /// test has no conditions yet).
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "iso-7.1-conditions",
     clause: "ISO 230-2 7.1",
     severity: Severity::Warning,

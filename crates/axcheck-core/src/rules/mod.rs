@@ -162,9 +162,9 @@ pub fn check(ctx: &PlanContext, data: &AxisData) -> Vec<Violation> {
 const EPS: f64 = 1e-9;
 
 /// Linear tests over at most this measured travel follow clause 4.3.2.
-pub const LINEAR_SHORT_MM: f64 = 2000.0;
+pub(crate) const LINEAR_SHORT_MM: f64 = 2000.0;
 /// Rotary tests over at most this measured travel follow clause 4.3.4.
-pub const ROTARY_SHORT_DEG: f64 = 360.0;
+pub(crate) const ROTARY_SHORT_DEG: f64 = 360.0;
 
 /// The ISO 230-2 clause whose plan a test follows, by axis kind and measured travel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -6,7 +6,7 @@ use crate::units::fmt_fixed;
 /// gives them. A target skipped, moved or added, or another number of runs, is a test
 /// other than the one planned (a typed position, a target the operator left out): each is
 /// named, so that it is corrected or accepted knowingly.
-pub const RULE: Rule = Rule {
+pub(crate) const RULE: Rule = Rule {
     id: "plan-targets",
     clause: "ISO 230-2 4.2",
     severity: Severity::Warning,

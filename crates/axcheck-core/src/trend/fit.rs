@@ -9,14 +9,14 @@ use chrono::Datelike;
 use chrono::{Days, NaiveDate};
 
 /// Days per year: dates become years as days / 365.25.
-pub const DAYS_PER_YEAR: f64 = 365.25;
+pub(crate) const DAYS_PER_YEAR: f64 = 365.25;
 /// The interval behind `slope_se` and the significance test: Sen's two-sided 95 %.
 pub const ALPHA: f64 = 0.05;
 /// The normal quantile z₀.₉₇₅ of that level: slope_se = half-width / z.
 pub const Z: f64 = 1.959_963_984_540_054;
 /// The share of the limit a significant worsening must surely add within the horizon to
 /// raise a flag (see `worsening`).
-pub const MATERIAL_SHARE: f64 = 0.10;
+pub(crate) const MATERIAL_SHARE: f64 = 0.10;
 
 /// How far ahead a forecast raises a flag.
 #[derive(Debug, Clone, Copy, PartialEq)]

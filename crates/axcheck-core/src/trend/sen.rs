@@ -16,7 +16,7 @@ const EXACT_UP_TO: usize = 50;
 
 /// The pairwise slopes b_ij = (y_j − y_i)/(t_j − t_i) for the pairs with distinct t,
 /// sorted ascending.
-pub fn pairwise_slopes(points: &[(f64, f64)]) -> Vec<f64> {
+pub(crate) fn pairwise_slopes(points: &[(f64, f64)]) -> Vec<f64> {
     let mut slopes = Vec::with_capacity(points.len() * points.len().saturating_sub(1) / 2);
     for (i, &(ti, yi)) in points.iter().enumerate() {
         for &(tj, yj) in &points[i + 1..] {
@@ -30,7 +30,7 @@ pub fn pairwise_slopes(points: &[(f64, f64)]) -> Vec<f64> {
 }
 
 /// The median of sorted values (None when empty).
-pub fn median_sorted(sorted: &[f64]) -> Option<f64> {
+pub(crate) fn median_sorted(sorted: &[f64]) -> Option<f64> {
     let n = sorted.len();
     match n {
         0 => None,
@@ -69,7 +69,7 @@ fn tie_groups(times: &[f64]) -> Vec<usize> {
 }
 
 /// Kendall's variance of S for n points with the given groups of tied dates.
-pub fn kendall_variance(n: usize, ties: &[usize]) -> f64 {
+pub(crate) fn kendall_variance(n: usize, ties: &[usize]) -> f64 {
     let term = |m: usize| {
         let m = m as f64;
         m * (m - 1.0) * (2.0 * m + 5.0)

@@ -73,7 +73,7 @@ impl Extent {
 }
 
 /// c4(n) = √(2/(n−1))·Γ(n/2)/Γ((n−1)/2): E[s] = c4·σ for n normal readings (n ≥ 2).
-pub fn c4(n: usize) -> f64 {
+pub(crate) fn c4(n: usize) -> f64 {
     let n = n as f64;
     (2.0 / (n - 1.0)).sqrt() * (libm::lgamma(n / 2.0) - libm::lgamma((n - 1.0) / 2.0)).exp()
 }
@@ -123,12 +123,12 @@ pub fn of(e: &Evaluation, p: &Parameter) -> Option<Extent> {
 }
 
 /// Fewest targets from which the scatter of one reading is estimated when n = 1.
-pub const SINGLE_READING_MIN_TARGETS: usize = 3;
+pub(crate) const SINGLE_READING_MIN_TARGETS: usize = 3;
 
 /// n = 1: the scatter of one reading estimated from the reversals' spread over the
 /// targets, ŝ = s(Bi)/√2 (see the module's doc); `None` when n ≥ 2 (each target has its
 /// own s) or fewer than [`SINGLE_READING_MIN_TARGETS`] targets.
-pub fn single_reading_s(e: &Evaluation) -> Option<f64> {
+pub(crate) fn single_reading_s(e: &Evaluation) -> Option<f64> {
     let m = e.targets.len();
     if e.n >= 2 || m < SINGLE_READING_MIN_TARGETS {
         return None;

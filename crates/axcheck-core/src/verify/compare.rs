@@ -48,7 +48,7 @@ impl ComparedTarget {
 
 /// The pooled standard deviation of a measurement's readings about their target means
 /// (ISO 230-2 2.15 pooled over targets and directions); `None` for n = 1.
-pub fn pooled_s(data: &AxisData) -> Option<f64> {
+pub(crate) fn pooled_s(data: &AxisData) -> Option<f64> {
     let mut sum = 0.0;
     let mut count = 0usize;
     for i in 0..data.target_count() {
@@ -106,7 +106,7 @@ pub fn rows(
 }
 
 /// The mean of values weighted by 1/u².
-pub fn weighted_mean(values: impl Iterator<Item = (f64, f64)>) -> f64 {
+pub(crate) fn weighted_mean(values: impl Iterator<Item = (f64, f64)>) -> f64 {
     let (mut sum, mut weights) = (0.0, 0.0);
     for (v, u) in values {
         let w = 1.0 / (u * u);

@@ -45,7 +45,7 @@ pub fn u(positions: &[f64], values: &[f64], x: f64, rough: f64) -> f64 {
 
 /// |cubic − linear| at `x` (see the module); beyond the ends the end slope over the
 /// distance; 0 with fewer than two positions (two: a line, exact but beyond its ends).
-pub fn curvature(positions: &[f64], values: &[f64], x: f64) -> f64 {
+pub(crate) fn curvature(positions: &[f64], values: &[f64], x: f64) -> f64 {
     let n = positions.len();
     if n < 2 {
         return 0.0;
@@ -70,7 +70,7 @@ pub fn curvature(positions: &[f64], values: &[f64], x: f64) -> f64 {
 
 /// The roughness of the means before (see the module), µm or arcsec; `s` their pooled
 /// scatter. 0 with fewer than five targets (no interior mean has two neighbours a side).
-pub fn roughness(before: &AxisData, s: f64) -> f64 {
+pub(crate) fn roughness(before: &AxisData, s: f64) -> f64 {
     let q = &before.targets;
     let u_mean2 = s * s / before.runs() as f64;
     let (mut sum, mut count) = (0.0, 0usize);

@@ -173,7 +173,7 @@ pub fn systematic(e: &Evaluation) -> f64 {
 /// from the largest standard uncertainty of the rows: where the targets differ it holds
 /// the interpolation's, E predicted being of the targets before and E achieved of those
 /// after, each sampling the axis's error at its own positions.
-pub fn e_uncertainty(rows: &[ComparedTarget]) -> f64 {
+pub(crate) fn e_uncertainty(rows: &[ComparedTarget]) -> f64 {
     let u = rows.iter().map(|r| r.u).fold(0.0, f64::max);
     let tail = 0.025 / rows.len().max(1) as f64;
     2.0 * normal_quantile(1.0 - tail) * u

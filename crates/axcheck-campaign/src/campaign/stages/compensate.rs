@@ -53,7 +53,10 @@ pub enum TableFile<'a> {
         file: &'a str,
         key: &'static str,
     },
-    Given { path: &'a Path, key: &'static str },
+    Given {
+        path: &'a Path,
+        key: &'static str,
+    },
 }
 
 /// The table file `at` as `controller` reads it for an axis of `kind` (`axis`: its name
@@ -132,7 +135,14 @@ pub fn settings(
     };
     let kind = axis.raw.kind;
     let active = match (&raw.active, &raw.verifies) {
-        (Some(a), _) => Some(active(a, kind, controller, files, &place, "compensation.active")?),
+        (Some(a), _) => Some(active(
+            a,
+            kind,
+            controller,
+            files,
+            &place,
+            "compensation.active",
+        )?),
         // A re-measurement: the table it verifies was active.
         (None, Some(v)) => {
             let stated = ActiveStated {
@@ -183,7 +193,7 @@ fn active(
 /// What the re-measurement of `axis` is compared with, when it `verifies` a table: the
 /// measurement before (corrected as this test is), the correction active then and the one
 /// loaded since.
-pub fn verify_case(
+pub(crate) fn verify_case(
     axis: &AxisSpec,
     controller: &dyn Controller,
     files: &Files,
@@ -272,7 +282,7 @@ pub type Case = Option<Result<Box<VerifyCase>, StatedTableError>>;
 /// The compensation of a test by its machine's `controller` (none: no table), with the
 /// warnings of its diagnosis (`diagnose` runs it when the run did not), and what its
 /// re-measurement is compared with when it verifies a table.
-pub fn for_test(
+pub(crate) fn for_test(
     controller: Option<&str>,
     axis: &AxisSpec,
     data: &AxisData,
@@ -305,7 +315,7 @@ pub fn for_test(
 /// The compensation of a test by `controller` as its axis states it, and what its
 /// re-measurement is compared with when it verifies a table. A table file that cannot be
 /// read leaves the compensation refused with the reason (the test is still judged).
-pub fn of_test(
+pub(crate) fn of_test(
     controller: &dyn Controller,
     axis: &AxisSpec,
     data: &AxisData,

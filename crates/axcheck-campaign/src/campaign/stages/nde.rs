@@ -41,7 +41,7 @@ pub fn apply(axis: &AxisSpec, data: AxisData) -> (AxisData, Option<NdeCorrection
 
 /// Whether the file gives a material temperature per reading (`temp_<name>_c` columns
 /// other than the air's), as the NDE correction reads them.
-pub fn has_material_temperatures(data: &AxisData) -> bool {
+pub(crate) fn has_material_temperatures(data: &AxisData) -> bool {
     data.temperature_names
         .iter()
         .any(|n| !n.to_ascii_lowercase().contains("air"))

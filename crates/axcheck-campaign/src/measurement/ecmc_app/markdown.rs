@@ -19,7 +19,7 @@ use crate::units::AxisKind;
 use std::io::BufRead;
 
 /// The report's first line.
-pub const TITLE: &str = "# ecmc ISO 230 Bidirectional Positioning Report";
+pub(crate) const TITLE: &str = "# ecmc ISO 230 Bidirectional Positioning Report";
 
 /// Whether `head` starts as the app's report (blank lines and a BOM before it allowed).
 pub fn looks_like(head: &[u8]) -> bool {

@@ -30,7 +30,7 @@ use chrono::NaiveDateTime;
 use serde::Serialize;
 
 /// The app's name, as the notes and comparisons give it.
-pub const APP: &str = "ecmc ISO 230 app";
+pub(crate) const APP: &str = "ecmc ISO 230 app";
 
 /// Micrometres per unit of the file (taken as mm).
 const UM_PER_UNIT: f64 = 1000.0;

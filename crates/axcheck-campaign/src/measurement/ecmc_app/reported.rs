@@ -8,7 +8,10 @@ use crate::measurement::reported::{Family, Reported, ReportedQuantity, ToolResul
 
 /// Status labels, the quantity each names, in the report's order.
 const LABELS: &[(&str, ReportedQuantity)] = &[
-    ("Bidirectional accuracy", ReportedQuantity::Parameter(ParamKey::A)),
+    (
+        "Bidirectional accuracy",
+        ReportedQuantity::Parameter(ParamKey::A),
+    ),
     (
         "Bidirectional systematic deviation",
         ReportedQuantity::Parameter(ParamKey::E),
@@ -25,8 +28,14 @@ const LABELS: &[(&str, ReportedQuantity)] = &[
         "Unidirectional repeatability",
         ReportedQuantity::LargerOf(ParamKey::RUp, ParamKey::RDown),
     ),
-    ("Mean reversal value", ReportedQuantity::Parameter(ParamKey::BMean)),
-    ("Maximum reversal value", ReportedQuantity::Parameter(ParamKey::B)),
+    (
+        "Mean reversal value",
+        ReportedQuantity::Parameter(ParamKey::BMean),
+    ),
+    (
+        "Maximum reversal value",
+        ReportedQuantity::Parameter(ParamKey::B),
+    ),
     (
         "Mean bias",
         ReportedQuantity::NotIso("the mean of every deviation"),

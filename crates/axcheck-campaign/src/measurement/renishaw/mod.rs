@@ -60,13 +60,13 @@ use super::{AxisData, MAX_READINGS};
 use crate::units::AxisKind;
 
 /// Largest file read: 100 000 readings at ~30 bytes a line is 3 MB.
-pub const MAX_FILE_BYTES: usize = 8 * 1024 * 1024;
+pub(crate) const MAX_FILE_BYTES: usize = 8 * 1024 * 1024;
 /// Most non-blank lines kept: the readings plus generous room for everything else.
 const MAX_LINES: usize = MAX_READINGS + 100_000;
 
 /// Arcseconds in one milliradian: 10⁻³ rad × (180/π) °/rad × 3600 ″/° (SI Brochure, 9th
 /// edition 2019, Table 8: 1° = (π/180) rad, 1″ = (1/60)′ = (1/3600)°).
-pub const ARCSEC_PER_MRAD: f64 = 180.0 * 3600.0 / std::f64::consts::PI / 1000.0;
+pub(crate) const ARCSEC_PER_MRAD: f64 = 180.0 * 3600.0 / std::f64::consts::PI / 1000.0;
 
 /// A positioning test read from a Renishaw `.rtl` or `.rta` file.
 #[derive(Debug, Clone, PartialEq)]

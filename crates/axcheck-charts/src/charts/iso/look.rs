@@ -12,18 +12,18 @@ use plotters::prelude::*;
 // ---------------------------------------------------------------------------------------------
 // Look
 
-pub const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
-pub const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
+pub(crate) const UP_LIGHT: RGBColor = RGBColor(0x5F, 0x7F, 0xB0);
+pub(crate) const DOWN_LIGHT: RGBColor = RGBColor(0xBE, 0x62, 0x62);
 
 /// Text size of the span labels, in SVG pixels (the `font-size` written into the SVG).
 pub(super) const SPAN_PX: f64 = 14.0;
 
 /// Dash patterns in pixels: on, off, on, off …
-pub const DASHED_THIN: &[f64] = &[6.0, 4.0];
+pub(crate) const DASHED_THIN: &[f64] = &[6.0, 4.0];
 const DASH_DOT: &[f64] = &[9.0, 3.5, 2.0, 3.5];
 
 /// How these charts measure text (see [`Conventions`]).
-pub const KIT: Conventions = Conventions {
+pub(crate) const KIT: Conventions = Conventions {
     narrow_superscripts: false,
 };
 
@@ -51,7 +51,7 @@ pub(super) fn x_range(positions: &[f64]) -> Option<(f64, f64)> {
 }
 
 /// The y range: every value and zero, padded by 8 %.
-pub fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+pub(crate) fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
     let (lo, hi) = extent(values.into_iter().chain([0.0]))?;
     let span = hi - lo;
     // Zero is inside, so only data that is all (practically) zero has no extent.
@@ -66,7 +66,7 @@ pub fn y_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
 // ---------------------------------------------------------------------------------------------
 // Drawing primitives (in backend pixels, on the root area)
 
-pub fn to_px(c: (i32, i32)) -> Px {
+pub(crate) fn to_px(c: (i32, i32)) -> Px {
     (c.0 as f64, c.1 as f64)
 }
 
@@ -74,7 +74,7 @@ pub fn to_px(c: (i32, i32)) -> Px {
 // Panels
 
 /// Builds one panel's chart with grid, ticks, frame and zero line.
-pub fn build_panel<'a>(
+pub(crate) fn build_panel<'a>(
     area: &'a Area,
     frame: &AxesSpec,
     y_label_w: u32,

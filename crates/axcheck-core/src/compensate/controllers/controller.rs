@@ -208,7 +208,7 @@ pub fn finite(table: &Table) -> Result<(), Refused> {
 
 /// Positions that stay strictly increasing when printed with `decimals` places (as the
 /// file gives them to the controller), else why the file cannot hold them.
-pub fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refused> {
+pub(crate) fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refused> {
     let scale = 10f64.powi(decimals as i32);
     let printed = |p: f64| (p * scale).round();
     match positions
@@ -229,7 +229,7 @@ pub fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refu
 /// control's axis names (SINUMERIK identifiers are letters, digits and `_`; HEIDENHAIN file
 /// names exclude them), so the control refuses the file instead of loading it onto an axis
 /// the name happens to mean (`AX1`, SINUMERIK's machine axis 1).
-pub const AXIS_PLACEHOLDER: &str = "<AXIS?>";
+pub(crate) const AXIS_PLACEHOLDER: &str = "<AXIS?>";
 
 /// The axis's name on the controller as the file can hold it (letters, digits and `_`: a
 /// blank, a bracket or a comma would break the file's syntax), or [`AXIS_PLACEHOLDER`]
@@ -250,6 +250,6 @@ pub fn axis_name(table: &Table) -> Result<&str, Refused> {
 }
 
 /// `notes` as comment lines starting with `mark`.
-pub fn commented(mark: &str, notes: &[String]) -> String {
+pub(crate) fn commented(mark: &str, notes: &[String]) -> String {
     notes.iter().map(|n| format!("{mark}{n}\n")).collect()
 }

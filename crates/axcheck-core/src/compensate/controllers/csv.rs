@@ -13,7 +13,7 @@ use super::reading::{self, Points, numbered};
 use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
-pub struct Csv;
+pub(crate) struct Csv;
 
 impl Controller for Csv {
     fn name(&self) -> &'static str {

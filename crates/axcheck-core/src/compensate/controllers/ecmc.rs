@@ -58,7 +58,7 @@ use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
 
 /// An ecmc lookup table for one family of versions: the sign the encoder applies it with.
-pub struct Ecmc {
+pub(crate) struct Ecmc {
     name: &'static str,
     /// The versions it is for, as the file's head says.
     versions: &'static str,

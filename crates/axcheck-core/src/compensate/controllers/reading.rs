@@ -15,7 +15,7 @@ pub fn numbered(text: &str) -> impl Iterator<Item = (usize, &str)> {
 
 /// Larger than any position or correction a table holds (mm, degrees or their 0.1 µm
 /// steps): a number beyond it is refused, so that converting units never overflows.
-pub const LARGEST: f64 = 1e12;
+pub(crate) const LARGEST: f64 = 1e12;
 
 /// A finite number as written in `field` at `line` (`1.5`, `-0.0020`, `+0.0025`, `1e-3`),
 /// at most [`LARGEST`] in size.
@@ -119,7 +119,7 @@ impl Points {
 
 /// Whether a rotary table of `positions` covers exactly one revolution, 0 to 360°: read as a
 /// modulo table (its two ends are one position).
-pub fn one_revolution(kind: AxisKind, positions: &[f64]) -> bool {
+pub(crate) fn one_revolution(kind: AxisKind, positions: &[f64]) -> bool {
     let revolution = crate::compensate::grid::REVOLUTION_DEG;
     kind == AxisKind::Rotary
         && positions.len() > 2
@@ -140,7 +140,7 @@ pub fn enough(count: usize, least: usize, what: &str) -> Result<(), Unreadable> 
 
 /// The length of the decimal number at the start of `t` (sign, digits, point, exponent),
 /// 0 when there is none.
-pub fn float_prefix(t: &str) -> usize {
+pub(crate) fn float_prefix(t: &str) -> usize {
     let b = t.as_bytes();
     let digits = |mut i: usize| {
         while i < b.len() && b[i].is_ascii_digit() {

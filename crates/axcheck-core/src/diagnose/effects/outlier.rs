@@ -71,7 +71,7 @@ fn direction(d: usize) -> Direction {
     }
 }
 
-pub(crate) struct Rule;
+pub struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -155,7 +155,7 @@ impl EffectRule for Rule {
 
 /// One outlier.
 #[derive(Debug, Clone)]
-pub(crate) struct Hit {
+pub struct Hit {
     /// Row index in `Prep::rows`.
     pub row: usize,
     pub t: f64,

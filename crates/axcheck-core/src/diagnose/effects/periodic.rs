@@ -83,7 +83,7 @@ impl Fields for Periodic {
     }
 }
 
-pub(crate) struct Rule;
+pub struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -180,7 +180,7 @@ const TRIALS_PER_RESOLUTION: f64 = 3.0;
 
 /// The outcome of the periodic search.
 #[derive(Debug, Clone)]
-pub(crate) struct Search {
+pub struct Search {
     pub resolution: Resolution,
     /// The highest peak (of the declared pitch when it was the one tested and found).
     pub peak: Option<Peak>,
@@ -205,7 +205,7 @@ pub(crate) struct Search {
 /// Target means as the base model has them: a smooth (cubic) trend and independent
 /// normal scatter of a standard deviation per target.
 #[derive(Debug, Clone, Default)]
-pub(crate) struct MeansModel {
+pub struct MeansModel {
     pub trend: Vec<f64>,
     pub sd: Vec<f64>,
 }
@@ -226,7 +226,7 @@ impl MeansModel {
 /// A periodic error of `amplitude` at `period` confirmed in about
 /// [`POWER`](crate::diagnose::options::POWER) of tests.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Smallest {
+pub struct Smallest {
     pub period: f64,
     pub amplitude: f64,
 }

@@ -128,7 +128,7 @@ impl Fields for ReversalVariation {
     }
 }
 
-pub(crate) struct Rule;
+pub struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -253,7 +253,7 @@ impl EffectRule for Rule {
 
 /// The result of the reversal tests.
 #[derive(Debug, Clone)]
-pub(crate) struct ReversalTest {
+pub struct ReversalTest {
     /// Slope of B along the axis (deviation per position unit).
     pub slope: f64,
     /// B of the line at the mean position of the targets used.

@@ -55,7 +55,7 @@ impl Fields for RunOffset {
     }
 }
 
-pub(crate) struct Rule;
+pub struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -130,7 +130,7 @@ impl EffectRule for Rule {
 
 /// Run offsets beyond the smooth model (a linear drift and a warm-up curve).
 #[derive(Debug, Clone)]
-pub(crate) struct RunTest {
+pub struct RunTest {
     pub f: f64,
     pub df1: f64,
     pub df2: f64,

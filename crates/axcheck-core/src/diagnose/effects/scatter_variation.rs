@@ -56,7 +56,7 @@ impl Fields for ScatterVariation {
     }
 }
 
-pub(crate) struct Rule;
+pub struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -124,7 +124,7 @@ impl EffectRule for Rule {
 
 /// The result of the scatter test.
 #[derive(Debug, Clone)]
-pub(crate) struct ScatterTest {
+pub struct ScatterTest {
     /// The score of the log slope over its standard error.
     pub z: f64,
     pub p: f64,

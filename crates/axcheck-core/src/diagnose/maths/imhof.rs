@@ -17,11 +17,11 @@
 use std::f64::consts::PI;
 
 /// The absolute error aimed at in a p-value.
-pub const TOLERANCE: f64 = 1e-10;
+pub(crate) const TOLERANCE: f64 = 1e-10;
 
 /// P(Σ λⱼ χ²(hⱼ) > 0) for the terms (λⱼ, hⱼ), hⱼ > 0 degrees of freedom (not necessarily
 /// whole), to an absolute error of about `tolerance`.
-pub fn combination_positive(terms: &[(f64, f64)], tolerance: f64) -> f64 {
+pub(crate) fn combination_positive(terms: &[(f64, f64)], tolerance: f64) -> f64 {
     let scale = terms.iter().map(|t| t.0.abs()).fold(0.0, f64::max);
     if !(scale > 0.0 && scale.is_finite()) {
         return f64::NAN;

@@ -47,7 +47,7 @@ fn axpy(alpha: f64, x: &[f64], y: &mut [f64]) {
 }
 
 /// Fits `y` on the columns `cols` (each of `y.len()` rows); no intercept is added.
-pub fn least_squares(cols: &[Vec<f64>], y: &[f64]) -> LeastSquares {
+pub(crate) fn least_squares(cols: &[Vec<f64>], y: &[f64]) -> LeastSquares {
     let p = cols.len();
     let mut q: Vec<Vec<f64>> = Vec::new();
     // r[k] holds column k of R (entries 0..=k) for the k-th kept column.

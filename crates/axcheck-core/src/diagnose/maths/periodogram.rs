@@ -18,7 +18,7 @@ const MAX_TARGETS: usize = 5000;
 
 /// The periods a plan can resolve.
 #[derive(Debug, Clone)]
-pub(crate) struct Resolution {
+pub struct Resolution {
     /// Typical (median) target spacing.
     pub spacing: f64,
     /// Length of the measured travel.
@@ -59,7 +59,7 @@ pub(crate) fn resolution(positions: &[f64]) -> Resolution {
 
 /// A fitted sinusoid.
 #[derive(Debug, Clone)]
-pub(crate) struct Peak {
+pub struct Peak {
     pub period: f64,
     /// Amplitude (half peak-to-peak).
     pub amplitude: f64,

@@ -23,7 +23,7 @@ fn ln_gamma(x: f64) -> f64 {
 }
 
 /// Regularised incomplete beta function I_x(a, b).
-pub fn beta_inc(a: f64, b: f64, x: f64) -> f64 {
+pub(crate) fn beta_inc(a: f64, b: f64, x: f64) -> f64 {
     if x.is_nan() || a.is_nan() || b.is_nan() {
         return f64::NAN;
     }
@@ -89,7 +89,7 @@ fn beta_cf(a: f64, b: f64, x: f64) -> f64 {
 
 /// Positions mapped linearly onto [−1, 1] from the first to the last (ascending), the
 /// well-conditioned variable of the polynomial trend fits.
-pub fn to_unit_interval(positions: &[f64]) -> Vec<f64> {
+pub(crate) fn to_unit_interval(positions: &[f64]) -> Vec<f64> {
     let (a, b) = (positions[0], positions[positions.len() - 1]);
     let half = ((b - a) / 2.0).max(f64::MIN_POSITIVE);
     positions
@@ -99,7 +99,7 @@ pub fn to_unit_interval(positions: &[f64]) -> Vec<f64> {
 }
 
 /// Regularised upper incomplete gamma function Q(a, x).
-pub fn gamma_q(a: f64, x: f64) -> f64 {
+pub(crate) fn gamma_q(a: f64, x: f64) -> f64 {
     if x.is_nan() || a.is_nan() {
         return f64::NAN;
     }
@@ -151,7 +151,7 @@ pub fn gamma_q(a: f64, x: f64) -> f64 {
 }
 
 /// Two-sided p-value of a Student t statistic with `df` degrees of freedom.
-pub fn t_two_sided(t: f64, df: f64) -> f64 {
+pub(crate) fn t_two_sided(t: f64, df: f64) -> f64 {
     if !t.is_finite() {
         return if t.is_nan() { f64::NAN } else { 0.0 };
     }
@@ -162,7 +162,7 @@ pub fn t_two_sided(t: f64, df: f64) -> f64 {
 }
 
 /// Upper tail P(F ≥ f) of the F distribution with (d1, d2) degrees of freedom.
-pub fn f_upper(f: f64, d1: f64, d2: f64) -> f64 {
+pub(crate) fn f_upper(f: f64, d1: f64, d2: f64) -> f64 {
     if f.is_nan() || d1 <= 0.0 || d2 <= 0.0 {
         return f64::NAN;
     }
@@ -176,7 +176,7 @@ pub fn f_upper(f: f64, d1: f64, d2: f64) -> f64 {
 }
 
 /// The f with P(F(d1, d2) ≥ f) = `p`, by bisection on [`f_upper`].
-pub fn f_upper_quantile(p: f64, d1: f64, d2: f64) -> f64 {
+pub(crate) fn f_upper_quantile(p: f64, d1: f64, d2: f64) -> f64 {
     if !(p > 0.0 && p < 1.0 && d1 > 0.0 && d2 > 0.0) {
         return f64::NAN;
     }
@@ -187,7 +187,7 @@ pub fn f_upper_quantile(p: f64, d1: f64, d2: f64) -> f64 {
 /// and noncentrality λ: the Poisson(λ/2) mixture of central F tails with d1 + 2j numerator
 /// degrees of freedom (Johnson, Kotz and Balakrishnan 1995, "Continuous Univariate
 /// Distributions" vol. 2, §30.3), summed over the weights that matter.
-pub fn noncentral_f_upper(f: f64, d1: f64, d2: f64, lambda: f64) -> f64 {
+pub(crate) fn noncentral_f_upper(f: f64, d1: f64, d2: f64, lambda: f64) -> f64 {
     if f.is_nan() || lambda.is_nan() || d1 <= 0.0 || d2 <= 0.0 || lambda < 0.0 {
         return f64::NAN;
     }
@@ -212,7 +212,7 @@ pub fn noncentral_f_upper(f: f64, d1: f64, d2: f64, lambda: f64) -> f64 {
 /// The noncentrality λ at which a test that rejects when F(d1, d2) ≥ `critical` does so
 /// with probability `power` (the power of an F test, or of a two-sided t test as F(1, d2),
 /// used to say what a plan can confirm): [`noncentral_f_upper`] solved for λ.
-pub fn noncentrality_for_power(critical: f64, d1: f64, d2: f64, power: f64) -> f64 {
+pub(crate) fn noncentrality_for_power(critical: f64, d1: f64, d2: f64, power: f64) -> f64 {
     if !(critical > 0.0 && d1 > 0.0 && d2 > 0.0 && power > 0.0 && power < 1.0) {
         return f64::NAN;
     }
@@ -227,7 +227,7 @@ pub fn noncentrality_for_power(critical: f64, d1: f64, d2: f64, power: f64) -> f
 
 /// The x in [0, `limit`] with `g(x)` = `target` for `g` increasing from below `target`
 /// at 0, to a relative 1e-9; NaN when `g` stays below `target` up to `limit`.
-pub fn bisect_increasing(g: impl Fn(f64) -> f64, target: f64, limit: f64) -> f64 {
+pub(crate) fn bisect_increasing(g: impl Fn(f64) -> f64, target: f64, limit: f64) -> f64 {
     let (mut lo, mut hi) = (0.0, 1.0);
     while g(hi) < target {
         if hi >= limit {
@@ -251,7 +251,7 @@ pub fn bisect_increasing(g: impl Fn(f64) -> f64, target: f64, limit: f64) -> f64
 /// g): regula falsi with the Illinois modification (Dowell & Jarratt 1971), which keeps
 /// the bracket and converges in a handful of steps where bisection took 24 (each step
 /// of the scatter's detectable an Imhof integral); hi when `g` stays above `target`.
-pub fn root_decreasing(
+pub(crate) fn root_decreasing(
     g: impl Fn(f64) -> f64,
     target: f64,
     (mut lo, mut hi): (f64, f64),
@@ -302,7 +302,7 @@ pub fn chi2_upper(x: f64, k: f64) -> f64 {
 /// The probability that the largest of `m` independent statistics, each with tail
 /// probability `p`, is at least as large: 1 − (1 − p)^m (Scargle 1982's false-alarm
 /// probability), computed without cancellation for small `p`.
-pub fn max_of(p: f64, m: f64) -> f64 {
+pub(crate) fn max_of(p: f64, m: f64) -> f64 {
     if p.is_nan() {
         f64::NAN
     } else if p >= 1.0 {
@@ -317,7 +317,7 @@ pub fn max_of(p: f64, m: f64) -> f64 {
 /// The q-quantile (0 ≤ q ≤ 1) of `values` by linear interpolation between order
 /// statistics (type 7); NaN for no values.
 #[cfg(test)]
-pub fn quantile(values: &[f64], q: f64) -> f64 {
+pub(crate) fn quantile(values: &[f64], q: f64) -> f64 {
     let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
     v.sort_by(f64::total_cmp);
     quantile_sorted(&v, q)
@@ -325,7 +325,7 @@ pub fn quantile(values: &[f64], q: f64) -> f64 {
 
 /// [`quantile`] of values that are all finite and sorted ascending (so that several
 /// quantiles of one sample need one sort).
-pub fn quantile_sorted(v: &[f64], q: f64) -> f64 {
+pub(crate) fn quantile_sorted(v: &[f64], q: f64) -> f64 {
     if v.is_empty() {
         return f64::NAN;
     }

@@ -39,7 +39,7 @@ use super::{
 };
 use crate::units::AxisKind;
 
-pub struct FanucProgram;
+pub(crate) struct FanucProgram;
 
 /// The comment's text as FANUC takes it: upper case, letters, digits and `. , = _ -` (a
 /// semicolon a comma, any other character a space).

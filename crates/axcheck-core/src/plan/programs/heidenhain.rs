@@ -29,7 +29,7 @@
 
 use super::{Block, Dialect, Job, ProgramError, move_note, number, one_letter, word_value};
 
-pub struct HeidenhainProgram;
+pub(crate) struct HeidenhainProgram;
 
 /// `+10.000` or `-5.000`.
 fn signed(x: f64) -> String {

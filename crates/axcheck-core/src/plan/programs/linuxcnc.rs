@@ -37,7 +37,7 @@ use super::{
     Block, Dialect, Job, ProgramError, g_move, is_first, number, one_letter, plain_word, word_value,
 };
 
-pub struct LinuxCncProgram;
+pub(crate) struct LinuxCncProgram;
 
 impl Dialect for LinuxCncProgram {
     fn name(&self) -> &'static str {

@@ -168,7 +168,7 @@ fn milli(x: f64) -> i64 {
 /// modulo one stand at the same position; without one, the first target's angle within
 /// one turn (a counting axis's readings are then whole turns from the targets, as the
 /// head says). `None` on any other axis.
-pub fn align_at(plan: &Plan) -> Option<f64> {
+pub(crate) fn align_at(plan: &Plan) -> Option<f64> {
     if plan.axis.kind != AxisKind::Rotary || !plan.axis.continuous {
         return None;
     }
@@ -394,7 +394,7 @@ pub trait Dialect: Sync {
 /// The program of `job` in `d`'s words: its frame, the description as comments, the
 /// set-up, the moves and dwells, the end; refused where the control cannot take the axis
 /// or the machine, or a move leaves the travel of an axis that is not continuous.
-pub fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, ProgramError> {
+pub(crate) fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, ProgramError> {
     d.address(job)?;
     let lathe = job
         .lathe
@@ -433,7 +433,7 @@ pub fn assemble<D: Dialect + ?Sized>(d: &D, job: &Job) -> Result<String, Program
 }
 
 /// The ends of a travel, mm or deg.
-pub fn travel_ends(travel: Travel) -> [f64; 2] {
+pub(crate) fn travel_ends(travel: Travel) -> [f64; 2] {
     match travel {
         Travel::Length(l) => [0.0, l],
         Travel::Range(r) => r,
@@ -442,7 +442,7 @@ pub fn travel_ends(travel: Travel) -> [f64; 2] {
 
 /// Every move of an axis that is not continuous lies inside its axis travel; else the
 /// first that leaves it is named, with the travel.
-pub fn check_travel(job: &Job) -> Result<(), ProgramError> {
+pub(crate) fn check_travel(job: &Job) -> Result<(), ProgramError> {
     if job.continuous_rotary() {
         return Ok(());
     }
@@ -482,7 +482,7 @@ pub fn first_position(plan: &Plan) -> f64 {
 }
 
 /// An angle within one turn, 0 to under 360° (to 0.001°, exactly).
-pub fn within_turn(deg: f64) -> f64 {
+pub(crate) fn within_turn(deg: f64) -> f64 {
     let milli = (deg * 1000.0).round() as i64;
     milli.rem_euclid(360_000) as f64 / 1000.0
 }
@@ -490,7 +490,7 @@ pub fn within_turn(deg: f64) -> f64 {
 /// What a move block programs: the value of its axis word and whether it is incremental.
 /// Absolute: the position (on a continuous rotary axis, within one turn); incremental (a
 /// rotary axis after its first move): the signed move.
-pub fn word_value(job: &Job, block: &Block) -> (f64, bool) {
+pub(crate) fn word_value(job: &Job, block: &Block) -> (f64, bool) {
     let Block::Move { position, by, .. } = block else {
         return (0.0, false);
     };
@@ -504,7 +504,7 @@ pub fn word_value(job: &Job, block: &Block) -> (f64, bool) {
 }
 
 /// The comment of a move: why, and its absolute position (unwrapped).
-pub fn move_note<D: Dialect + ?Sized>(d: &D, job: &Job, block: &Block) -> String {
+pub(crate) fn move_note<D: Dialect + ?Sized>(d: &D, job: &Job, block: &Block) -> String {
     let Block::Move { position, what, .. } = block else {
         return String::new();
     };
@@ -514,7 +514,7 @@ pub fn move_note<D: Dialect + ?Sized>(d: &D, job: &Job, block: &Block) -> String
 
 /// A G-code move block: `words(value, incremental)` (the block's words for the value of
 /// [`word_value`]), ` F…` with the first move, and the move's comment.
-pub fn g_move<D: Dialect + ?Sized>(
+pub(crate) fn g_move<D: Dialect + ?Sized>(
     d: &D,
     job: &Job,
     block: &Block,
@@ -533,13 +533,13 @@ pub fn g_move<D: Dialect + ?Sized>(
 }
 
 /// `X10.000`: the axis letter and the number.
-pub fn plain_word(axis: &str, value: f64) -> String {
+pub(crate) fn plain_word(axis: &str, value: f64) -> String {
     format!("{axis}{}", number(value))
 }
 
 /// `X10.000`, or for a name of more than one character `X1=10.000` (SINUMERIK, and ISG:
 /// "an equals sign must follow axis identifiers that contain more than one character").
-pub fn named_word(axis: &str, value: f64) -> String {
+pub(crate) fn named_word(axis: &str, value: f64) -> String {
     if axis.len() == 1 {
         plain_word(axis, value)
     } else {
@@ -549,7 +549,7 @@ pub fn named_word(axis: &str, value: f64) -> String {
 
 /// Whether the move is the program's first (the start, or on a continuous rotary axis
 /// the alignment before it).
-pub fn is_first(block: &Block) -> bool {
+pub(crate) fn is_first(block: &Block) -> bool {
     matches!(
         block,
         Block::Move {
@@ -561,7 +561,7 @@ pub fn is_first(block: &Block) -> bool {
 }
 
 /// Whether a move is written incrementally: on a rotary axis, all but the first.
-pub fn is_incremental(block: &Block) -> bool {
+pub(crate) fn is_incremental(block: &Block) -> bool {
     matches!(
         block,
         Block::Move {
@@ -591,7 +591,7 @@ pub fn names() -> Vec<&'static str> {
 }
 
 /// `name` is one letter of the axis words most controls take.
-pub fn one_letter(name: &str, control: &str) -> Result<(), ProgramError> {
+pub(crate) fn one_letter(name: &str, control: &str) -> Result<(), ProgramError> {
     let ok = name.len() == 1 && "XYZABCUVW".contains(name);
     if ok {
         Ok(())

@@ -35,7 +35,7 @@
 
 use super::{Block, Dialect, Job, ProgramError, g_move, identifier, named_word, number};
 
-pub struct Siemens840dProgram;
+pub(crate) struct Siemens840dProgram;
 
 impl Dialect for Siemens840dProgram {
     fn name(&self) -> &'static str {

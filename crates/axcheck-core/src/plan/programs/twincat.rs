@@ -41,7 +41,7 @@
 
 use super::{Block, Dialect, Job, ProgramError, g_move, named_word, number};
 
-pub struct TwinCatProgram;
+pub(crate) struct TwinCatProgram;
 
 /// A name of the ISG's reserved first letters, then letters or digits.
 fn isg_name(name: &str) -> Result<(), ProgramError> {

@@ -8,7 +8,7 @@
 use super::{Context, Contributor, edlen};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct AirHumidity;
+pub(crate) struct AirHumidity;
 
 impl Contributor for AirHumidity {
     fn name(&self) -> &'static str {

@@ -8,7 +8,7 @@
 use super::{Context, Contributor, edlen};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct AirPressure;
+pub(crate) struct AirPressure;
 
 impl Contributor for AirPressure {
     fn name(&self) -> &'static str {

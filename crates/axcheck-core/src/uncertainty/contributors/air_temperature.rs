@@ -9,7 +9,7 @@
 use super::{Context, Contributor, edlen};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct AirTemperature;
+pub(crate) struct AirTemperature;
 
 impl Contributor for AirTemperature {
     fn name(&self) -> &'static str {

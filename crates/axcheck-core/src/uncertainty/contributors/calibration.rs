@@ -12,7 +12,7 @@ use super::{Context, Contributor};
 use crate::uncertainty::budget::Input;
 use crate::uncertainty::extent::ExtentShape;
 
-pub struct Calibration;
+pub(crate) struct Calibration;
 
 impl Contributor for Calibration {
     fn name(&self) -> &'static str {

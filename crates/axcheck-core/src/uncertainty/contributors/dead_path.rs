@@ -15,7 +15,7 @@ use super::{Context, Contributor, edlen};
 use crate::uncertainty::budget::{Distribution, Input};
 use crate::units::AxisKind;
 
-pub struct DeadPath;
+pub(crate) struct DeadPath;
 
 impl Contributor for DeadPath {
     fn name(&self) -> &'static str {

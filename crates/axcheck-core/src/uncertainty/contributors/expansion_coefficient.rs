@@ -10,7 +10,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct ExpansionCoefficient;
+pub(crate) struct ExpansionCoefficient;
 
 impl Contributor for ExpansionCoefficient {
     fn name(&self) -> &'static str {

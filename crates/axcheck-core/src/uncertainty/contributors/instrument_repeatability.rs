@@ -10,7 +10,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct InstrumentRepeatability;
+pub(crate) struct InstrumentRepeatability;
 
 impl Contributor for InstrumentRepeatability {
     fn name(&self) -> &'static str {

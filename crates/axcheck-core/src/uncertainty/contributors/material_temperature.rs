@@ -10,7 +10,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct MaterialTemperature;
+pub(crate) struct MaterialTemperature;
 
 impl Contributor for MaterialTemperature {
     fn name(&self) -> &'static str {

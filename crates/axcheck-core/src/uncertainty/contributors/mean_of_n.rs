@@ -10,7 +10,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct MeanOfN;
+pub(crate) struct MeanOfN;
 
 impl Contributor for MeanOfN {
     fn name(&self) -> &'static str {

@@ -11,7 +11,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct Misalignment;
+pub(crate) struct Misalignment;
 
 impl Contributor for Misalignment {
     fn name(&self) -> &'static str {

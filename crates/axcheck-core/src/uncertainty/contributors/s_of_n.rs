@@ -11,7 +11,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct SOfN;
+pub(crate) struct SOfN;
 
 impl Contributor for SOfN {
     fn name(&self) -> &'static str {

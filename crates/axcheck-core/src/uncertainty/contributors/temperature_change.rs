@@ -13,7 +13,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct TemperatureChange;
+pub(crate) struct TemperatureChange;
 
 impl Contributor for TemperatureChange {
     fn name(&self) -> &'static str {

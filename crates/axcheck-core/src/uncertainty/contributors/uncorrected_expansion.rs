@@ -12,7 +12,7 @@
 use super::{Context, Contributor};
 use crate::uncertainty::budget::{Distribution, Input};
 
-pub struct UncorrectedExpansion;
+pub(crate) struct UncorrectedExpansion;
 
 impl Contributor for UncorrectedExpansion {
     fn name(&self) -> &'static str {

@@ -7,10 +7,6 @@ use super::{Candidate, EffectContext, Key, VerifyEffect};
 pub struct AppliedTwice;
 
 impl VerifyEffect for AppliedTwice {
-    fn key(&self) -> Key {
-        Key::AppliedTwice
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         vec![Candidate {
             key: Key::AppliedTwice,

@@ -25,10 +25,6 @@ use crate::units::{Direction, fmt_fixed};
 pub struct BacklashNotLoaded;
 
 impl VerifyEffect for BacklashNotLoaded {
-    fn key(&self) -> Key {
-        Key::BacklashNotLoaded
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         if ctx.controller.map(|c| c.backlash()) != Some(Backlash::Stated) {
             return Vec::new();

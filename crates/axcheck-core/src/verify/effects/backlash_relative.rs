@@ -27,10 +27,6 @@ use crate::units::{Direction, fmt_fixed};
 pub struct BacklashRelative;
 
 impl VerifyEffect for BacklashRelative {
-    fn key(&self) -> Key {
-        Key::BacklashRelative
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         if ctx.controller.map(|c| c.name()) != Some(Heidenhain.name()) {
             return Vec::new();

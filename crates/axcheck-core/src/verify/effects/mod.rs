@@ -128,7 +128,7 @@ impl EffectContext<'_> {
 /// One explanation of the measured change: the change it predicts per row, its
 /// parameters, and the sentence that names it.
 #[derive(Debug, Clone)]
-pub struct Candidate {
+pub(crate) struct Candidate {
     pub key: Key,
     pub change: Vec<f64>,
     pub params: Vec<(&'static str, f64)>,
@@ -137,15 +137,14 @@ pub struct Candidate {
 }
 
 /// One effect of the vocabulary.
-pub trait VerifyEffect: Sync {
-    fn key(&self) -> Key;
+pub(crate) trait VerifyEffect: Sync {
     /// Its candidates for this verification.
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate>;
 }
 
 /// Every effect, in the order in which they are preferred when two explain the change
 /// alike (the simpler mistake first).
-pub const EFFECTS: &[&dyn VerifyEffect] = &[
+pub(crate) const EFFECTS: &[&dyn VerifyEffect] = &[
     &not_active::NotActive,
     &sign_inverted::SignInverted,
     &applied_twice::AppliedTwice,
@@ -168,7 +167,11 @@ pub fn chi2(rows: &[ComparedTarget], change: &[f64]) -> f64 {
 
 /// The χ² of the rows of one direction against `change` (as [`chi2`], its own offset),
 /// and their number.
-pub fn chi2_of(rows: &[ComparedTarget], change: &[f64], direction: Direction) -> (f64, usize) {
+pub(crate) fn chi2_of(
+    rows: &[ComparedTarget],
+    change: &[f64],
+    direction: Direction,
+) -> (f64, usize) {
     let (r, c): (Vec<ComparedTarget>, Vec<f64>) = rows
         .iter()
         .zip(change)
@@ -180,7 +183,10 @@ pub fn chi2_of(rows: &[ComparedTarget], change: &[f64], direction: Direction) ->
 
 /// The mean reversal B̄ = mean of x̄↑ − x̄↓ over the targets (ISO 230-2 2.14) of
 /// `value` (before, predicted or achieved) in the rows.
-pub fn mean_reversal(rows: &[ComparedTarget], value: impl Fn(&ComparedTarget) -> f64) -> f64 {
+pub(crate) fn mean_reversal(
+    rows: &[ComparedTarget],
+    value: impl Fn(&ComparedTarget) -> f64,
+) -> f64 {
     let mean = |d: Direction| {
         let v: Vec<f64> = rows
             .iter()
@@ -194,7 +200,7 @@ pub fn mean_reversal(rows: &[ComparedTarget], value: impl Fn(&ComparedTarget) ->
 
 /// The factor f that best scales the predicted change to the measured one (least
 /// squares, offset free): 1 when the table acted as loaded.
-pub fn fitted_factor(rows: &[ComparedTarget]) -> f64 {
+pub(crate) fn fitted_factor(rows: &[ComparedTarget]) -> f64 {
     let weights: Vec<f64> = rows.iter().map(|r| 1.0 / (r.u * r.u)).collect();
     let total: f64 = weights.iter().sum();
     let centred = |f: &dyn Fn(&ComparedTarget) -> f64| {

@@ -7,10 +7,6 @@ use super::{Candidate, EffectContext, Key, VerifyEffect};
 pub struct NotActive;
 
 impl VerifyEffect for NotActive {
-    fn key(&self) -> Key {
-        Key::NotActive
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         vec![Candidate {
             key: Key::NotActive,

@@ -27,10 +27,6 @@ const REACH_INTERVALS: f64 = 3.0;
 const ROUND_WITHIN: f64 = 3.841;
 
 impl VerifyEffect for PositionShift {
-    fn key(&self) -> Key {
-        Key::PositionShift
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         let h = ctx.interval();
         if h <= 0.0 {

@@ -11,10 +11,6 @@ pub struct Scale;
 const FACTORS: [f64; 8] = [10.0, 100.0, 1000.0, 25.4, 0.1, 0.01, 0.001, 1.0 / 25.4];
 
 impl VerifyEffect for Scale {
-    fn key(&self) -> Key {
-        Key::Scale
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         let applied = ctx.applied();
         FACTORS

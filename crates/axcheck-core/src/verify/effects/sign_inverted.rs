@@ -7,10 +7,6 @@ use super::{Candidate, EffectContext, Key, VerifyEffect};
 pub struct SignInverted;
 
 impl VerifyEffect for SignInverted {
-    fn key(&self) -> Key {
-        Key::SignInverted
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         vec![Candidate {
             key: Key::SignInverted,

@@ -9,10 +9,6 @@ use super::{Candidate, EffectContext, Key, VerifyEffect};
 pub struct WrongAxis;
 
 impl VerifyEffect for WrongAxis {
-    fn key(&self) -> Key {
-        Key::WrongAxis
-    }
-
     fn candidates(&self, ctx: &EffectContext) -> Vec<Candidate> {
         ctx.others
             .iter()

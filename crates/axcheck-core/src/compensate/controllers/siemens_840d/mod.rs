@@ -60,7 +60,7 @@ use super::controller::{Controller, Directions, Format, ReadAs, Refused, Spacing
 use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
 
-pub struct Siemens840d;
+pub(crate) struct Siemens840d;
 
 /// Most points axcheck writes: MD38000's upper limit as recalled (not confirmed).
 const MAX_POINTS: usize = 5000;

@@ -63,7 +63,7 @@ use crate::compensate::table::Table;
 use crate::units::{AxisKind, fmt_fixed};
 use limits::*;
 
-pub struct TwinCat;
+pub(crate) struct TwinCat;
 
 /// The list as the CNC reads it: integers in 0.1 µm or 0.0001°.
 #[derive(Debug, PartialEq)]

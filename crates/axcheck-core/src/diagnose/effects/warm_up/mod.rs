@@ -260,7 +260,7 @@ impl WarmUp {
     }
 }
 
-pub(crate) struct Rule;
+pub struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -513,7 +513,7 @@ pub(crate) fn davies(u: f64, nu: f64, path: f64) -> f64 {
 
 /// An F test of a larger model against a smaller one nested in it.
 #[derive(Debug, Clone)]
-pub(crate) struct FTest {
+pub struct FTest {
     pub f: f64,
     pub df1: f64,
     pub p: f64,
@@ -542,7 +542,7 @@ fn bic(fit: &TimeFit, extra: usize) -> f64 {
 
 /// The warm-up search on the linear-trend fits of [`crate::diagnose::time::tests`].
 #[derive(Debug, Clone)]
-pub(crate) struct WarmTest {
+pub struct WarmTest {
     pub tau: f64,
     /// Largest F over τ of the uniform and of the position-proportional column beyond
     /// the linear trend, and Davies' p of each.
@@ -639,7 +639,7 @@ pub(crate) fn search(
 
 /// The warm-up's estimate.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct WarmEstimate {
+pub struct WarmEstimate {
     /// Time constant, time units.
     pub tau: f64,
     /// Level approached from the first reading at P̄, and its standard error.
