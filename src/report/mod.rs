@@ -212,7 +212,7 @@ impl Reports {
     }
 
     /// The report of one axis test, with its history section when `trends` has the axis.
-    pub fn axis_with_history(
+    pub(crate) fn axis_with_history(
         &self,
         result: &CampaignResult,
         test: &AxisTest,
@@ -273,7 +273,7 @@ impl Reports {
     }
 
     /// The campaign summary, listing the flagged series of `trends`.
-    pub fn summary_with_trends(
+    pub(crate) fn summary_with_trends(
         &self,
         result: &CampaignResult,
         trends: Option<&AxisTrends>,

@@ -119,7 +119,7 @@ impl AxisTest {
         }
     }
 
-    pub fn evaluated_mut(&mut self) -> Option<&mut Evaluated> {
+    pub(crate) fn evaluated_mut(&mut self) -> Option<&mut Evaluated> {
         match &mut self.outcome {
             Outcome::Unread { .. } => None,
             Outcome::Evaluated(e) => Some(e),

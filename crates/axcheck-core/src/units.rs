@@ -59,7 +59,7 @@ impl AxisKind {
 
     /// A relative (ppm) error at `position` expressed in deviation units: 1 ppm of 1 m is
     /// 1 µm; 1 ppm of 1° is 0.0036″.
-    pub fn ppm_to_deviation(self, ppm: f64, position: f64) -> f64 {
+    pub(crate) fn ppm_to_deviation(self, ppm: f64, position: f64) -> f64 {
         ppm * 1e-6 * position * self.deviation_units_per_position_unit()
     }
 }

@@ -82,7 +82,7 @@ impl DataSource {
     }
 
     /// What to read of every file: the sheet, the reference (`{file, sheet, reference}`).
-    pub fn read_options(&self) -> crate::measurement::ReadOptions<'_> {
+    pub(crate) fn read_options(&self) -> crate::measurement::ReadOptions<'_> {
         match self {
             DataSource::Book {
                 sheet, reference, ..

@@ -11,7 +11,7 @@ use crate::measurement::FileInfo;
 impl AxisSpec {
     /// This axis with the conditions it lacks taken from `info`, and what was taken (for
     /// the report); None when the file adds nothing.
-    pub fn completed_by(&self, info: &FileInfo) -> Option<(AxisSpec, Vec<&'static str>)> {
+    pub(crate) fn completed_by(&self, info: &FileInfo) -> Option<(AxisSpec, Vec<&'static str>)> {
         let mut axis = self.clone();
         let taken = complete(&mut axis.raw.conditions, info);
         (!taken.is_empty()).then_some((axis, taken))

@@ -73,11 +73,11 @@ impl Handle {
         false
     }
 
-    pub fn is_regular(&self, _relative: &Path) -> bool {
+    pub(crate) fn is_regular(&self, _relative: &Path) -> bool {
         false
     }
 
-    pub fn open_file(&self, _relative: &Path) -> Option<File> {
+    pub(crate) fn open_file(&self, _relative: &Path) -> Option<File> {
         None
     }
 }

@@ -111,7 +111,7 @@ pub struct Opened {
 
 impl Opened {
     /// Refuses the file when its size or modification time changed since it was opened.
-    pub fn check_unchanged(&self) -> Result<(), FileError> {
+    pub(crate) fn check_unchanged(&self) -> Result<(), FileError> {
         let now = self.file.metadata()?;
         if now.len() != self.size || now.modified().ok() != self.modified {
             return Err(FileError::Changed);

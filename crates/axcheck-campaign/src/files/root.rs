@@ -85,10 +85,6 @@ impl Root {
         self.real.as_deref()
     }
 
-    pub fn allows_outside(&self) -> bool {
-        self.allow_outside
-    }
-
     /// `dir/relative` under the written rule and, unless outside paths are allowed, the
     /// real-path rule (the rule for data files, specs, tables and the history).
     pub fn resolve(&self, relative: &str) -> Result<PathBuf, PathRefused> {
@@ -142,7 +138,7 @@ impl Root {
 
     /// The real-path rule for each file a walk found under the folder (unless outside
     /// paths are allowed).
-    pub fn check_found(&self, found: &[PathBuf]) -> Result<(), PathRefused> {
+    pub(crate) fn check_found(&self, found: &[PathBuf]) -> Result<(), PathRefused> {
         if self.allow_outside {
             return Ok(());
         }

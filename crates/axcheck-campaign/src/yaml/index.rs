@@ -83,12 +83,12 @@ impl LocationIndex {
     }
 
     /// Where the second YAML document of the stream starts, if there is one.
-    pub fn second_document(&self) -> Option<(usize, usize)> {
+    pub(crate) fn second_document(&self) -> Option<(usize, usize)> {
         self.built().documents.get(1).copied()
     }
 
     /// Where the key at `path` is written, or failing that its value or nearest parent.
-    pub fn key_or_value(&self, path: &str) -> Option<(usize, usize)> {
+    pub(crate) fn key_or_value(&self, path: &str) -> Option<(usize, usize)> {
         self.key(path).or_else(|| self.value(path))
     }
 }

@@ -44,7 +44,7 @@ impl Located {
     }
 
     /// The error in `file`; without a known place, at the start of the document.
-    pub fn in_file(self, file: &str) -> YamlError {
+    pub(crate) fn in_file(self, file: &str) -> YamlError {
         let (line, column) = self.at.unwrap_or((1, 1));
         YamlError {
             file: file.to_string(),

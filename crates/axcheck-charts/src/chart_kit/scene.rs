@@ -105,7 +105,8 @@ impl Drawing {
     }
 
     /// Every outline painted with `paint`, in drawing order.
-    pub fn outlines_painted(&self, paint: &Paint) -> impl Iterator<Item = &Outline> {
+    #[cfg(test)]
+    pub(crate) fn outlines_painted(&self, paint: &Paint) -> impl Iterator<Item = &Outline> {
         self.shapes
             .iter()
             .filter(move |s| s.paint == *paint)
@@ -362,11 +363,6 @@ impl Scene {
     pub fn text(&self, content: &str) -> Option<&Text> {
         self.texts.iter().find(|t| t.text == content)
     }
-
-    /// Whether some text's content is exactly `content`.
-    pub fn has_text(&self, content: &str) -> bool {
-        self.text(content).is_some()
-    }
 }
 
 impl Drawing {
@@ -504,7 +500,7 @@ fn escape(text: &str) -> String {
 /// For the charts' tests: the scene with an SVG element per outline, as plotters wrote it.
 #[cfg(test)]
 impl Scene {
-    pub fn element_svg(&self) -> String {
+    pub(crate) fn element_svg(&self) -> String {
         let mut out = svg_open(&self.drawing);
         for shape in &self.drawing.shapes {
             for outline in &shape.outlines {

@@ -157,7 +157,7 @@ impl ErrorModel {
     }
 
     /// The reversal value B at `position`.
-    pub fn reversal_at(&self, position: f64, travel: (f64, f64)) -> f64 {
+    pub(crate) fn reversal_at(&self, position: f64, travel: (f64, f64)) -> f64 {
         if !self.reversal_knots.is_empty() {
             return piecewise_linear(&self.reversal_knots, position);
         }
@@ -168,7 +168,7 @@ impl ErrorModel {
     }
 
     /// The scatter σ at `position`.
-    pub fn scatter_at(&self, position: f64, travel: (f64, f64)) -> f64 {
+    pub(crate) fn scatter_at(&self, position: f64, travel: (f64, f64)) -> f64 {
         if !self.scatter_knots.is_empty() {
             return piecewise_linear(&self.scatter_knots, position);
         }
@@ -179,7 +179,7 @@ impl ErrorModel {
     }
 
     /// The share of the warm-up reached `time_s` after the start of the test.
-    pub fn warm_up_reached(&self, time_s: f64) -> f64 {
+    pub(crate) fn warm_up_reached(&self, time_s: f64) -> f64 {
         if self.warm_up_tau_min > 0.0 {
             -(-time_s / 60.0 / self.warm_up_tau_min).exp_m1()
         } else {

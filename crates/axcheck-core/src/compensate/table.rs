@@ -126,7 +126,7 @@ impl Table {
 
     /// The correction a backlash parameter adds on ↓ approaches relative to ↑ ones,
     /// c↓ − c↑ averaged over the points (= x̄↑ − x̄↓, the mean reversal B̄ of ISO 230-2 2.14).
-    pub fn reversal_correction(&self) -> f64 {
+    pub(crate) fn reversal_correction(&self) -> f64 {
         let n = self.positions.len().max(1) as f64;
         self.up
             .iter()
@@ -137,7 +137,7 @@ impl Table {
     }
 
     /// The table with every correction rounded to `quantum` (the controller's unit).
-    pub fn quantised(mut self, quantum: f64) -> Table {
+    pub(crate) fn quantised(mut self, quantum: f64) -> Table {
         if quantum > 0.0 {
             for v in self.up.iter_mut().chain(self.down.iter_mut()) {
                 *v = (*v / quantum).round() * quantum;

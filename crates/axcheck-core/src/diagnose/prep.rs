@@ -175,7 +175,7 @@ impl Prep {
     }
 
     /// This test with its time terms reading `clocks`, everything else as it is.
-    pub fn with_clocks(&self, clocks: Clocks) -> Prep {
+    pub(crate) fn with_clocks(&self, clocks: Clocks) -> Prep {
         Prep {
             clocks,
             ..self.clone()
@@ -199,12 +199,12 @@ impl Prep {
 
     /// Deviation units per position unit per ppm: a rate of position-proportional error
     /// `g` (deviation per position unit) is `g / ppm_factor()` ppm.
-    pub fn ppm_factor(&self) -> f64 {
+    pub(crate) fn ppm_factor(&self) -> f64 {
         1e-6 * self.kind.deviation_units_per_position_unit()
     }
 
     /// Per-cell means of `values` over the active rows, with counts.
-    pub fn cell_means(&self, values: &[f64], active: &[bool]) -> (Vec<f64>, Vec<usize>) {
+    pub(crate) fn cell_means(&self, values: &[f64], active: &[bool]) -> (Vec<f64>, Vec<usize>) {
         let mut sum = vec![0.0; self.cells()];
         let mut count = vec![0usize; self.cells()];
         for (k, r) in self.rows.iter().enumerate() {

@@ -49,7 +49,7 @@ impl Shape {
 
     /// Whether the shape is offered on `m` targets: only where it differs from the
     /// simpler ones (a curve through 3 or 4 targets is nearly one value per target).
-    pub fn offered(self, m: usize) -> bool {
+    pub(crate) fn offered(self, m: usize) -> bool {
         match self {
             Shape::Line => m >= 2,
             Shape::Curve => m >= 6,
@@ -58,7 +58,7 @@ impl Shape {
     }
 
     /// The shapes offered on `m` targets, the simplest first.
-    pub fn offered_on(m: usize) -> Vec<Shape> {
+    pub(crate) fn offered_on(m: usize) -> Vec<Shape> {
         Shape::ALL.into_iter().filter(|s| s.offered(m)).collect()
     }
 

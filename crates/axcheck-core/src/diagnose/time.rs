@@ -53,7 +53,7 @@ pub struct TimeTests {
 
 impl TimeTests {
     /// The time constant of the warm-up when one is found at level `alpha`.
-    pub fn warm_tau(&self, alpha: f64) -> Option<f64> {
+    pub(crate) fn warm_tau(&self, alpha: f64) -> Option<f64> {
         self.warm.as_ref().filter(|w| w.p < alpha).map(|w| w.tau)
     }
 }

@@ -61,7 +61,7 @@ pub struct TimeFit {
 impl TimeFit {
     /// The drift at `origin` when both the drift and the thermal columns are kept:
     /// β + γ (origin − P̄) and its variance in units of the mean square (from (XᵀX)⁻¹).
-    pub fn drift_at(&self, prep: &Prep, origin: f64) -> Option<(f64, f64)> {
+    pub(crate) fn drift_at(&self, prep: &Prep, origin: f64) -> Option<(f64, f64)> {
         let kept = |c: &usize| self.ls.kept[*c];
         let (bc, gc) = (self.drift_col.filter(kept)?, self.thermal_col.filter(kept)?);
         let a = origin - prep.pbar;
@@ -87,7 +87,7 @@ impl TimeFit {
     }
 
     /// σ² estimate (scaled units): RSS/df.
-    pub fn sigma2(&self) -> f64 {
+    pub(crate) fn sigma2(&self) -> f64 {
         if self.df > 0.0 {
             self.rss / self.df
         } else {

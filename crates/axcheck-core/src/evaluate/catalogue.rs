@@ -130,7 +130,7 @@ impl ParameterDef {
         self.quantity != Quantity::Level
     }
 
-    pub fn defined_by(&self, standard: StandardId) -> bool {
+    pub(crate) fn defined_by(&self, standard: StandardId) -> bool {
         self.standards.contains(&standard)
     }
 

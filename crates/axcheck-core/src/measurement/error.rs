@@ -43,7 +43,7 @@ impl Location {
     }
 
     /// The same place in `sheet` of a workbook.
-    pub fn in_sheet(self, sheet: &str) -> Location {
+    pub(crate) fn in_sheet(self, sheet: &str) -> Location {
         Location {
             sheet: Some(sheet.to_string()),
             ..self

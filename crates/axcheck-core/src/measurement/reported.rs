@@ -53,12 +53,12 @@ pub struct Reported {
 
 impl Reported {
     /// The value in µm (or arcsec).
-    pub fn value_um(&self) -> f64 {
+    pub(crate) fn value_um(&self) -> f64 {
         self.value * self.to_um
     }
 
     /// Half a unit of the last printed digit (the value's rounding), in µm (or arcsec).
-    pub fn rounding_um(&self) -> f64 {
+    pub(crate) fn rounding_um(&self) -> f64 {
         0.5 * 10f64.powi(-(self.decimals as i32)) * self.to_um
     }
 }

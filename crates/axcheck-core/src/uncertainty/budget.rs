@@ -25,7 +25,7 @@ impl Distribution {
     pub const STANDARD: Distribution = Distribution::Normal { k: 1.0 };
 
     /// The value's divisor: u = value / divisor.
-    pub fn divisor(self) -> f64 {
+    pub(crate) fn divisor(self) -> f64 {
         match self {
             Distribution::Normal { k } => k,
             Distribution::Rectangular => 3f64.sqrt(),

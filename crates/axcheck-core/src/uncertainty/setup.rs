@@ -229,7 +229,7 @@ impl Thermal {
     }
 
     /// |T − 20 °C|: from the recorded mean, else the assumed band.
-    pub fn offset_from_20_c(&self) -> f64 {
+    pub(crate) fn offset_from_20_c(&self) -> f64 {
         self.mean_c
             .map_or(self.unrecorded_band_c, |t| (t - 20.0).abs())
     }

@@ -116,7 +116,7 @@ pub struct Systematic {
 impl Systematic {
     /// E achieved below E predicted by more than U: better than the named table can make
     /// the axis.
-    pub fn far_better(&self) -> bool {
+    pub(crate) fn far_better(&self) -> bool {
         self.achieved < self.predicted - self.uncertainty
     }
 }

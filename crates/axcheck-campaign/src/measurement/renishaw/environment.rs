@@ -62,11 +62,6 @@ pub struct Environment {
 }
 
 impl Environment {
-    /// Mean air temperature over the test, °C.
-    pub fn air_temp_c(&self) -> Option<f64> {
-        self.air_temp_c.mean()
-    }
-
     /// Mean material temperature over the fitted sensors and the test, °C.
     pub fn material_temp_c(&self) -> Option<f64> {
         let means: Vec<f64> = self

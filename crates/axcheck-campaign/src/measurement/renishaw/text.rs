@@ -46,7 +46,7 @@ impl<'a> Line<'a> {
     }
 
     /// The line split at its first colon, when it has one.
-    pub fn key_value(&self) -> Option<KeyValue<'a>> {
+    pub(crate) fn key_value(&self) -> Option<KeyValue<'a>> {
         let raw = self.raw;
         let colon = raw.find(':')?;
         let key = raw[..colon].trim();

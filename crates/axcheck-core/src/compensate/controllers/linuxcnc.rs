@@ -71,7 +71,7 @@ impl LinuxCnc {
     };
 
     /// The controller writing `COMP_FILE_TYPE = n` files, for n = 0 or 1.
-    pub fn of_type(n: u8) -> Option<&'static LinuxCnc> {
+    pub(crate) fn of_type(n: u8) -> Option<&'static LinuxCnc> {
         match n {
             0 => Some(&Self::TYPE_0),
             1 => Some(&Self::TYPE_1),

@@ -213,7 +213,7 @@ pub struct MeansModel {
 impl MeansModel {
     /// Each target's inverse variance scaled to average 1; empty (equal weights) when
     /// every mean scatters alike.
-    pub fn weights(&self) -> Vec<f64> {
+    pub(crate) fn weights(&self) -> Vec<f64> {
         if self.sd.iter().all(|&s| s == self.sd[0]) {
             return Vec::new();
         }

@@ -134,7 +134,7 @@ pub(crate) fn least_squares(cols: &[Vec<f64>], y: &[f64]) -> LeastSquares {
 impl LeastSquares {
     /// What the kept columns leave of `v` (`v` minus its projection on their span): how a
     /// further column would enter the fit, without refitting.
-    pub fn residualize(&self, v: &[f64]) -> Vec<f64> {
+    pub(crate) fn residualize(&self, v: &[f64]) -> Vec<f64> {
         let mut out = v.to_vec();
         for _ in 0..2 {
             for qk in &self.q {
@@ -146,13 +146,13 @@ impl LeastSquares {
     }
 
     /// Leverage h of row `row`: the diagonal of the hat matrix.
-    pub fn leverage(&self, row: usize) -> f64 {
+    pub(crate) fn leverage(&self, row: usize) -> f64 {
         self.q.iter().map(|qk| qk[row] * qk[row]).sum()
     }
 
     /// Row `row` of the orthonormal basis of the kept columns (one value per column):
     /// the hat matrix is the sum of their outer products.
-    pub fn basis_row(&self, row: usize) -> Vec<f64> {
+    pub(crate) fn basis_row(&self, row: usize) -> Vec<f64> {
         self.q.iter().map(|qk| qk[row]).collect()
     }
 }

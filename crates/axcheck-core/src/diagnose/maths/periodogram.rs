@@ -266,7 +266,7 @@ impl Trend {
     /// the trend, averaged over its phase: an amplitude A adds A² times this to the
     /// reduction of the residual sum of squares its fit makes (the noncentrality of the
     /// test when the weights are 1/variance).
-    pub fn sinusoid_information(&self, f: f64) -> f64 {
+    pub(crate) fn sinusoid_information(&self, f: f64) -> f64 {
         let mut v = Vec::with_capacity(self.positions.len());
         self.project(f, &mut v);
         v.iter().map(|[s, c]| s * s + c * c).sum::<f64>() / 2.0
@@ -292,7 +292,7 @@ impl Trend {
 
 impl Scanner<'_> {
     /// The trend's residual per target, unweighted.
-    pub fn trend_residuals(&self) -> Vec<f64> {
+    pub(crate) fn trend_residuals(&self) -> Vec<f64> {
         self.resid
             .iter()
             .zip(&self.trend.sw)
@@ -301,7 +301,7 @@ impl Scanner<'_> {
     }
 
     /// Degrees of freedom left by the trend.
-    pub fn trend_dof(&self) -> f64 {
+    pub(crate) fn trend_dof(&self) -> f64 {
         self.dof + 2.0
     }
 
@@ -343,7 +343,7 @@ impl Scanner<'_> {
     }
 
     /// The F-statistic at frequency `f`.
-    pub fn f_stat(&self, f: f64) -> f64 {
+    pub(crate) fn f_stat(&self, f: f64) -> f64 {
         let (d, _, _) = self.fit(f);
         self.f_of(d)
     }
@@ -364,7 +364,7 @@ impl Scanner<'_> {
     /// The sinusoid of frequency `f` fitted at `at` (one per position: the positions, or
     /// an unrelated order of them) jointly with the trend at the positions; its phase is
     /// at `at` = 0.
-    pub fn peak_at(&self, at: &[f64], f: f64) -> Peak {
+    pub(crate) fn peak_at(&self, at: &[f64], f: f64) -> Peak {
         let (delta, a, b) = self.fit_at(at, f);
         let f_stat = self.f_of(delta);
         Peak {
@@ -403,7 +403,7 @@ impl Scanner<'_> {
     }
 
     /// Golden-section search for the highest F in [a, b].
-    pub fn refine(&self, mut a: f64, mut b: f64) -> f64 {
+    pub(crate) fn refine(&self, mut a: f64, mut b: f64) -> f64 {
         let g = (5f64.sqrt() - 1.0) / 2.0;
         let mut c = b - g * (b - a);
         let mut d = a + g * (b - a);

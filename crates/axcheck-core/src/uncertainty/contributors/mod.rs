@@ -58,18 +58,18 @@ pub struct Context<'a> {
 impl Context<'_> {
     /// The extent's length in metres on a linear axis: the sensitivity of a relative
     /// (ppm) error is L µm per ppm, of a temperature α·L µm per °C.
-    pub fn length_m(&self) -> f64 {
+    pub(crate) fn length_m(&self) -> f64 {
         self.extent.length / 1000.0
     }
 
     /// α·L, µm per °C: the sensitivity of the range to a temperature error of the
     /// positioning system (ISO 230-2 3.1), shared by the temperature contributors.
-    pub fn expansion_per_c(&self) -> f64 {
+    pub(crate) fn expansion_per_c(&self) -> f64 {
         self.setup.thermal.coefficient_um_per_m_c * self.length_m()
     }
 
     /// A range on a linear axis: where length-proportional errors act.
-    pub fn linear_range(&self) -> bool {
+    pub(crate) fn linear_range(&self) -> bool {
         self.kind == AxisKind::Linear && self.extent.shape == ExtentShape::Range
     }
 
@@ -126,7 +126,11 @@ pub(crate) mod tests {
     use crate::uncertainty::setup::InstrumentKind;
 
     /// A linear range of `length_mm` over a travel of 1000 mm with `setup`.
-    pub fn line_for(c: &dyn Contributor, setup: &Setup, extent: &Extent) -> Option<BudgetLine> {
+    pub(crate) fn line_for(
+        c: &dyn Contributor,
+        setup: &Setup,
+        extent: &Extent,
+    ) -> Option<BudgetLine> {
         c.line(&Context {
             setup,
             kind: AxisKind::Linear,

@@ -82,7 +82,7 @@ pub struct EffectContext<'a> {
 impl EffectContext<'_> {
     /// The change at each row if `new` acted at positions shifted by `shift` and `old`
     /// were replaced: new(P − shift) − old(P).
-    pub fn change_with(&self, new: &Table, shift: f64) -> Vec<f64> {
+    pub(crate) fn change_with(&self, new: &Table, shift: f64) -> Vec<f64> {
         self.rows
             .iter()
             .map(|r| {
@@ -101,7 +101,7 @@ impl EffectContext<'_> {
 
     /// The change at each row if `new` and `old` acted as `acted` makes them act (the
     /// controller reading both files alike): acted(new)(P) − acted(old)(P).
-    pub fn change_acted(&self, acted: impl Fn(&Table) -> Table) -> Vec<f64> {
+    pub(crate) fn change_acted(&self, acted: impl Fn(&Table) -> Table) -> Vec<f64> {
         let (new, old) = (acted(self.new), self.old.map(&acted));
         self.rows
             .iter()

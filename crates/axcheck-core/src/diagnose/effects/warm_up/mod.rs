@@ -654,7 +654,7 @@ pub struct WarmEstimate {
 impl WarmEstimate {
     /// Whether the level changes along the axis: the growth g is found at [`ALPHA`] (else
     /// the warm-up is taken as uniform, in the finding and in the extended model).
-    pub fn growth_found(&self) -> bool {
+    pub(crate) fn growth_found(&self) -> bool {
         self.g_p < ALPHA
     }
 
