@@ -303,6 +303,21 @@ fn the_trend_command_flags_the_wearing_axis_of_a_history() {
     let (code, _, err) = axcheck(&["trend", &s(&history), "--out", &s(&out)]);
     assert_eq!(code, 0, "{err}");
     assert_eq!(first, std::fs::read(out.join("trends.pdf")).unwrap());
+    // Written as a campaign's outputs: listed in the folder's manifest, and a trends.csv
+    // axcheck did not write is refused, not replaced.
+    let manifest = std::fs::read_to_string(out.join(".axcheck-outputs")).unwrap();
+    assert!(manifest.contains("\ntrends.csv\ntrends.pdf"), "{manifest}");
+    let theirs = dir.join("their-trends");
+    std::fs::create_dir_all(&theirs).unwrap();
+    std::fs::write(theirs.join("trends.csv"), "mine\n").unwrap();
+    let (code, _, err) = axcheck(&["trend", &s(&history), "--out", &s(&theirs)]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("was not written by axcheck"), "{err}");
+    assert_eq!(
+        std::fs::read_to_string(theirs.join("trends.csv")).unwrap(),
+        "mine\n"
+    );
+    assert!(!theirs.join("trends.pdf").exists());
 
     // The run's horizon: B reaches 9 µm about 1.3 years after 2025-06-01, so a campaign's
     // 1-year horizon does not flag that crossing, and `--horizon 3` (which wins) does.

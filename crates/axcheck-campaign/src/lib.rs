@@ -28,6 +28,6 @@ pub mod trend;
 pub mod yaml;
 
 use axcheck_core::{
-    axis_model, compensate, crosscheck, diagnose, evaluate, nde, rules, suggest, uncertainty,
-    units, verify,
+    axis_model, compensate, crosscheck, diagnose, evaluate, nde, param_key, rules, suggest,
+    uncertainty, units, verify,
 };

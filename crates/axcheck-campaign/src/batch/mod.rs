@@ -12,7 +12,7 @@ use crate::campaign::{AxisSpec, Campaign, MachineInfo};
 use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::Evaluation;
 use crate::judge::{self, Decision, DecisionRule, Judgement, Spec, Verdict};
-use crate::measurement::{self, AxisData, Recognised};
+use crate::measurement::{AxisData, Recognised};
 use crate::rules::{self, Severity, Violation};
 use crate::uncertainty::Uncertainty;
 use rayon::prelude::*;
@@ -50,7 +50,7 @@ pub fn run(
 ) -> CampaignResult {
     // The folder every file read for the campaign must be opened in, resolved once.
     let files = Files::campaign(&campaign.dir, campaign.info.allow_outside_paths);
-    let specs = load_specs(campaign, &files);
+    let specs = stages::judge::load_specs(campaign, &files);
     let work: Vec<(Arc<MachineInfo>, &crate::campaign::AxisEntry)> = campaign
         .machines
         .iter()
@@ -95,69 +95,6 @@ pub fn run(
         standard: campaign.standard,
         tests,
     }
-}
-
-/// Every spec the campaign names, loaded once: `specs/NAME.yaml` beside the campaign, a
-/// path to a `.yaml` file, or a spec built into axcheck.
-fn load_specs(campaign: &Campaign, files: &Files) -> BTreeMap<String, Result<Arc<Spec>, String>> {
-    let mut specs = BTreeMap::new();
-    for (_, entry) in campaign.axes() {
-        if let Ok(axis) = &entry.spec
-            && let Some(name) = &axis.spec
-            && !specs.contains_key(name)
-        {
-            let spec = load_spec(files, name);
-            specs.insert(name.clone(), spec.map(Arc::new));
-        }
-    }
-    specs
-}
-
-/// A spec named by path, or `specs/NAME.yaml` beside the campaign, or a built-in one; the
-/// path follows the campaign folder's rules ([`Files`]).
-fn load_spec(files: &Files, name: &str) -> Result<Spec, String> {
-    let is_path = name.ends_with(".yaml") || name.ends_with(".yml");
-    let relative = if is_path {
-        name.to_string()
-    } else {
-        format!("specs/{name}.yaml")
-    };
-    let candidate = (files.resolve(&relative)).map_err(|e| format!("spec `{name}`: {e}"))?;
-    // Anything at the path is the spec (a folder or a pipe there is an error, not a
-    // reason to take the built-in spec of that name).
-    if std::fs::symlink_metadata(&candidate).is_ok() {
-        let text = (files.read_to_string(&candidate))
-            .map_err(|e| format!("{}: cannot read the spec: {e}", candidate.display()))?;
-        return Spec::from_yaml(&text, &candidate.display().to_string()).map_err(|e| e.to_string());
-    }
-    if !is_path && let Some((_, text)) = judge::BUILTIN_SPECS.iter().find(|(n, _)| *n == name) {
-        return Spec::from_yaml(text, &format!("built-in spec {name}")).map_err(|e| e.to_string());
-    }
-    let builtin: Vec<&str> = judge::BUILTIN_SPECS.iter().map(|(n, _)| *n).collect();
-    let beside = spec_files(&files.dir().join("specs"));
-    let known: Vec<&str> = (builtin.iter().copied())
-        .chain(beside.iter().map(String::as_str))
-        .collect();
-    let hint = match is_path {
-        true => String::new(),
-        false => crate::suggest::hint(name, &known),
-    };
-    Err(format!(
-        "spec `{name}` not found{hint}: no {} and no built-in spec of that name (built in: {})",
-        candidate.display(),
-        builtin.join(", ")
-    ))
-}
-
-/// The names of the spec files in `dir` (`NAME` of `NAME.yaml`), for did-you-mean.
-fn spec_files(dir: &Path) -> Vec<String> {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return Vec::new();
-    };
-    entries
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter_map(|n| n.strip_suffix(".yaml").map(str::to_string))
-        .collect()
 }
 
 /// Which test of which axis a result belongs to.
@@ -354,7 +291,7 @@ fn run_test(
     let spec_arc = completed.map(|(s, _)| s);
     let axis: &AxisSpec = spec_arc.as_deref().unwrap_or(axis);
     let (data, nde) = stages::nde::apply(axis, data);
-    let unstated = unstated_conditions(axis, &slot.machine, campaign, &recognised, &data);
+    let unstated = stages::rules::unstated(axis, &slot.machine, campaign, &recognised, &data);
     let mut context = stages::rules::context(axis);
     context.planned = slot.planned.clone();
     context.unstated = Some(unstated.clone());
@@ -409,25 +346,6 @@ fn run_test(
     (test, verify_case)
 }
 
-/// The clause 7.1 conditions of the test that neither the campaign nor the file states.
-fn unstated_conditions(
-    axis: &AxisSpec,
-    machine: &MachineInfo,
-    campaign: &crate::campaign::CampaignInfo,
-    recognised: &Recognised,
-    data: &AxisData,
-) -> Vec<&'static str> {
-    let file_date = (recognised.info.as_ref()).is_some_and(|i| i.date.is_some());
-    let air = |n: &String| n.to_ascii_lowercase().contains("air");
-    let known = crate::campaign::clause7_1::Known {
-        machine,
-        dated: campaign.date.is_some() || file_date,
-        material_per_reading: stages::nde::has_material_temperatures(data),
-        air_per_reading: data.temperature_names.iter().any(air),
-    };
-    crate::campaign::clause7_1::unstated(axis, &known)
-}
-
 /// The file read, and of the axis kind the campaign declares; else the test's error.
 fn read_stage(
     slot: &Slot,
@@ -435,11 +353,10 @@ fn read_stage(
     path: &Path,
     files: &Files,
 ) -> Result<(AxisData, Recognised), Box<AxisTest>> {
-    let (data, recognised) =
-        match measurement::read_file_within(path, &axis.data.read_options(), Some(files)) {
-            Ok(read) => (read.data, read.recognised),
-            Err(e) => return Err(Box::new(slot.clone().error(e.to_string()))),
-        };
+    let (data, recognised) = match stages::read::read(axis, path, files) {
+        Ok(read) => (read.data, read.recognised),
+        Err(e) => return Err(Box::new(slot.clone().error(e.to_string()))),
+    };
     if data.kind != axis.raw.kind {
         let message = format!(
             "{}: the file holds a {} axis (target_{}) but the campaign declares axis `{}` {}",
@@ -469,8 +386,7 @@ fn judge_stage(
     data: &AxisData,
     judged: &Judged,
 ) -> (Verdict, Option<String>, Option<Judgement>) {
-    let (first, last) = data.measurement_travel();
-    match judge::limits(spec, &axis.raw.tolerances, axis.raw.kind, last - first) {
+    match stages::judge::limits(axis, spec, data) {
         Err(e) => (Verdict::Error, Some(e.to_string()), None),
         Ok(limits) => {
             let decision = Decision {

@@ -20,7 +20,7 @@
 use super::ecmc_app::error;
 use super::reported::{Family, Reported, ReportedQuantity, ToolResults};
 use super::{AxisData, Lines, RawReading, ReadError};
-use crate::evaluate::ParamKey;
+use crate::param_key::ParamKey;
 use crate::units::{AxisKind, Direction};
 use std::io::BufRead;
 

@@ -2,8 +2,9 @@
 //! travels, its pitch, and the planned test it names (`plan:`), read beneath the
 //! campaign's folder.
 
-use crate::campaign::AxisSpec;
+use crate::campaign::{AxisSpec, CampaignInfo, MachineInfo};
 use crate::files::Root;
+use crate::measurement::{AxisData, Recognised};
 use crate::rules::{self, PlanContext};
 use crate::units::AxisKind;
 
@@ -44,4 +45,23 @@ pub fn planned(
         read: read(),
         tolerance: raw.tolerance.unwrap_or(0.01),
     }
+}
+
+/// The clause 7.1 conditions of the test that neither the campaign nor the file states.
+pub fn unstated(
+    axis: &AxisSpec,
+    machine: &MachineInfo,
+    campaign: &CampaignInfo,
+    recognised: &Recognised,
+    data: &AxisData,
+) -> Vec<&'static str> {
+    let file_date = (recognised.info.as_ref()).is_some_and(|i| i.date.is_some());
+    let air = |n: &String| n.to_ascii_lowercase().contains("air");
+    let known = crate::campaign::clause7_1::Known {
+        machine,
+        dated: campaign.date.is_some() || file_date,
+        material_per_reading: super::nde::has_material_temperatures(data),
+        air_per_reading: data.temperature_names.iter().any(air),
+    };
+    crate::campaign::clause7_1::unstated(axis, &known)
 }

@@ -3,8 +3,8 @@
 //! "BiDir Accuracy = A", "Uni Repeat = max(R^+, R^-)", …). [`crate::crosscheck`] sets
 //! them beside axcheck's.
 
-use crate::evaluate::ParamKey;
 use crate::measurement::reported::{Family, Reported, ReportedQuantity, ToolResults};
+use crate::param_key::ParamKey;
 
 /// Status labels, the quantity each names, in the report's order.
 const LABELS: &[(&str, ReportedQuantity)] = &[
