@@ -5,14 +5,12 @@ use super::text::{left, right};
 use anyhow::{Context, Result, anyhow};
 use axcheck::campaign::stages::compensate as stages;
 use axcheck::compensate::controllers::{self, Controller};
-use axcheck::compensate::{self, Mode, Table, Warning};
+use axcheck::compensate::json::TableJson;
+use axcheck::compensate::{self, Mode, Table};
 use axcheck::evaluate::Evaluation;
 use axcheck::evaluate::StandardId;
-use axcheck::evaluate::json::ParameterSet;
-use axcheck::export::json::CompensationHead;
 use axcheck::measurement::AxisData;
 use axcheck::units::{AxisKind, fmt_fixed};
-use serde::Serialize;
 use std::fmt::Write;
 use std::path::Path;
 
@@ -207,27 +205,6 @@ pub struct Request<'a> {
     pub json: bool,
 }
 
-/// `--json`: the table, and the parameters as measured and predicted.
-#[derive(Serialize)]
-struct CompensationJson<'a> {
-    /// The controller, `absolute` or `incremental`, the active table: as in `results.json`.
-    #[serde(flatten)]
-    head: CompensationHead<'a>,
-    /// Deviation unit of the corrections and parameters: `um` or `arcsec`.
-    unit: &'static str,
-    table: &'a Table,
-    measured: ParameterSet<'a>,
-    predicted: ParameterSet<'a>,
-    /// Why the table may not achieve the prediction on the machine.
-    warnings: &'a [Warning],
-    /// What the controller must be told to load the file (LinuxCNC's INI lines).
-    #[serde(skip_serializing_if = "<[String]>::is_empty")]
-    loading: &'a [String],
-    /// The table file written, if any.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    file: Option<String>,
-}
-
 /// Writes the table (to `out`, or standard output without it) and returns what to print;
 /// the warnings go to standard error when the table goes to standard output.
 pub fn run(data: &AxisData, request: &Request) -> Result<String> {
@@ -260,16 +237,9 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     }
     let measured = axcheck::evaluate::evaluate(data, request.standard);
     if request.json {
-        let json = CompensationJson {
-            head: CompensationHead::of(&c),
-            unit: data.kind.deviation_unit(),
-            table: &done.table,
-            measured: ParameterSet::of(&measured),
-            predicted: ParameterSet::of(&done.predicted),
-            warnings: &c.warnings,
-            loading: &c.loading,
-            file: request.out.map(|p| p.display().to_string()),
-        };
+        let unit = data.kind.deviation_unit();
+        let file = request.out.map(|p| p.display().to_string());
+        let json = TableJson::new(&c, done, &measured, unit, file);
         return Ok(serde_json::to_string_pretty(&json)? + "\n");
     }
     Ok(match request.out {

@@ -11,6 +11,7 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
 use crate::compensate::Compensation;
+use crate::compensate::json::CompensationHead;
 use crate::diagnose::DiagnosisJson;
 use crate::diagnose::cross::OutOfTest;
 use crate::evaluate::json::{ParameterSet, ParameterValues, TargetIndices};
@@ -197,28 +198,6 @@ struct CompensationJson<'a> {
 enum VerificationOutcome<'a> {
     Done(crate::verify::VerificationJson<'a>),
     Failed { error: String },
-}
-
-/// What every compensation's JSON begins with (`results.json` and `compensate --json`):
-/// the controller, whether the table builds on the active one, and the active table.
-#[derive(Serialize)]
-pub struct CompensationHead<'a> {
-    controller: &'static str,
-    /// `absolute` or `incremental` (the active table plus this measurement's correction).
-    mode: crate::compensate::Mode,
-    /// The active table's file, when one was given.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    active_file: Option<&'a str>,
-}
-
-impl<'a> CompensationHead<'a> {
-    pub fn of(c: &'a Compensation) -> CompensationHead<'a> {
-        CompensationHead {
-            controller: c.controller,
-            mode: c.mode,
-            active_file: c.active_file.as_deref(),
-        }
-    }
 }
 
 impl<'a> CompensationJson<'a> {

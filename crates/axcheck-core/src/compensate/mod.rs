@@ -15,6 +15,7 @@ pub mod active;
 pub mod build;
 pub mod controllers;
 pub mod grid;
+pub mod json;
 pub mod table;
 #[cfg(test)]
 pub(crate) mod testing;

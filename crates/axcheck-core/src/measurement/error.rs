@@ -351,9 +351,60 @@ pub enum ReadErrorKind {
     CellsOutOfOrder,
 }
 
+impl ReadErrorKind {
+    /// The column, key or section the failure is about, as the file names it
+    /// (`deviation_um`, `direction`, a Renishaw key); `None` when it is about the whole
+    /// file. For a program that points at the field (the Python package's `ReadError`).
+    pub fn field(&self) -> Option<String> {
+        use ReadErrorKind::*;
+        let named = |s: &str| Some(s.to_string());
+        match self {
+            NotANumber { column, .. }
+            | NonFinite { column, .. }
+            | Implausible { column, .. }
+            | EmptyCell { column }
+            | WrongCellType { column, .. }
+            | UnpairedRun { column, .. } => named(column),
+            UnknownColumn { name, .. }
+            | MissingUnit { name, .. }
+            | DuplicateColumn { name }
+            | UnknownWideColumn { name, .. } => named(name),
+            MissingColumn { expected } => named(expected),
+            UnknownDirection { .. } => named("direction"),
+            InvalidRun { .. } => named("run"),
+            ImplausibleTarget { .. } | DuplicateTarget { .. } => named("target"),
+            TargetNotFirst { found } => named(found),
+            RenishawMissingKey { key, .. } | RenishawBadValue { key, .. } => named(key),
+            RenishawMissingSection { section, .. }
+            | RenishawDuplicateSection { section, .. }
+            | RenishawNoEof { section } => named(section),
+            _ => None,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A failure about one column names it; one about the whole file names none.
+    #[test]
+    fn the_field_of_a_failure() {
+        let column = |c: &str| ReadErrorKind::NotANumber {
+            column: c.into(),
+            found: "abc".into(),
+        };
+        assert_eq!(
+            column("deviation_um").field().as_deref(),
+            Some("deviation_um")
+        );
+        let direction = ReadErrorKind::UnknownDirection {
+            found: "sideways".into(),
+            suggestion: None,
+        };
+        assert_eq!(direction.field().as_deref(), Some("direction"));
+        assert_eq!(ReadErrorKind::Empty.field(), None);
+    }
 
     #[test]
     fn location_display() {

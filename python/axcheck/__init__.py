@@ -1,0 +1,268 @@
+"""axcheck in Python: ISO 230-2 (GB/T 17421.2), GOST 27843, VDI 3441 and NMTBA
+positioning tests evaluated by the same code as the ``axcheck`` command line.
+
+Every function returns what the command line prints for the same request (``eval --json``,
+``diagnose --json``, ``compensate --json``, ``verify --json``), parsed: the same keys and,
+bit for bit, the same numbers. pandas is needed only for the DataFrame methods, matplotlib
+only for :meth:`Evaluation.plot`.
+
+>>> import axcheck
+>>> m = axcheck.read("tests/data/iso230-2_table2.csv")
+>>> e = axcheck.evaluate(m)
+>>> round(e.values["A"], 2)  # ISO 230-2 2.23, bidirectional accuracy of positioning
+9.59
+"""
+
+from __future__ import annotations
+
+import json
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple
+
+from . import _axcheck
+from ._errors import ReadError
+
+if TYPE_CHECKING:  # pragma: no cover
+    import pandas
+
+__all__ = [
+    "Evaluation",
+    "Measurement",
+    "ReadError",
+    "compensate",
+    "controllers",
+    "diagnose",
+    "evaluate",
+    "read",
+    "verify",
+]
+
+__version__: str = _axcheck.__version__
+
+#: One reading in the long layout: target (mm or deg), direction (``up``/``down``), run,
+#: deviation (µm or arcsec), time (s) or None.
+Reading = Tuple[float, str, int, float, Optional[float]]
+
+
+class Measurement:
+    """A positioning test as read: the readings and what the file was recognised as."""
+
+    def __init__(self, raw: Any) -> None:
+        self._raw = raw
+
+    @property
+    def file(self) -> str:
+        """The file's name as given (``<frame>`` for a DataFrame)."""
+        return str(self._raw.file)
+
+    @property
+    def kind(self) -> str:
+        """``linear`` (positions in mm, deviations in µm) or ``rotary`` (deg, arcsec)."""
+        return str(self._raw.kind)
+
+    @property
+    def recognised(self) -> Dict[str, Any]:
+        """What the file was read as: ``layout``, ``name``, ``notes`` (``eval --json``)."""
+        value: Dict[str, Any] = json.loads(self._raw.recognised_json())
+        return value
+
+    @property
+    def layout(self) -> str:
+        """The layout recognised from the content (``long_csv``, ``xlsx``, ``renishaw`` …)."""
+        return str(self.recognised["layout"])
+
+    @property
+    def notes(self) -> List[str]:
+        """What the reader assumed or left out, in words."""
+        return list(self.recognised.get("notes", []))
+
+    def readings(self) -> List[Reading]:
+        """The readings, one tuple per reading (see :data:`Reading`)."""
+        return list(self._raw.readings())
+
+    def to_frame(self) -> "pandas.DataFrame":
+        """The readings as a DataFrame in the long layout the command line reads:
+        ``target_mm`` (or ``target_deg``), ``direction``, ``run``, ``deviation_um`` (or
+        ``deviation_arcsec``), ``time_s``."""
+        import pandas
+
+        position, deviation = _columns(self.kind)
+        columns = [position, "direction", "run", deviation, "time_s"]
+        return pandas.DataFrame.from_records(self.readings(), columns=columns)
+
+    @classmethod
+    def from_frame(cls, frame: Any, name: str = "<frame>") -> "Measurement":
+        """A test from a pandas or polars DataFrame in the long layout (the columns named
+        as a long CSV names them: ``target_mm``, ``direction``, ``run``,
+        ``deviation_um``, optionally ``time_s`` and ``temp_NAME_c``), read by the same
+        reader as a file, so that its checks and messages are the same."""
+        if hasattr(frame, "write_csv"):  # polars
+            text = frame.write_csv()
+        else:
+            text = frame.to_csv(index=False, float_format="%.17g")
+        return cls(_axcheck.read_text(text, name))
+
+    def __repr__(self) -> str:
+        return f"Measurement({self.file!r}, {self.kind}, {self.layout})"
+
+
+def _columns(kind: str) -> Tuple[str, str]:
+    if kind == "rotary":
+        return "target_deg", "deviation_arcsec"
+    return "target_mm", "deviation_um"
+
+
+def read(path: str, sheet: Optional[str] = None, reference: Optional[str] = None) -> Measurement:
+    """Reads a measurement file in any layout the command line reads (long or wide CSV,
+    XLSX, ecmc, the ecmc ISO 230 app, Renishaw ``.rtl``/``.rta``), recognised by content.
+
+    ``sheet`` names a workbook's sheet (the first by default); ``reference`` an ecmc ISO
+    230 app file's reference (``1`` to ``5``, ``rbv``; the one it evaluated by default).
+    A file that cannot be read raises :class:`ReadError` naming file, line and field.
+    """
+    return Measurement(_axcheck.read(str(path), sheet, reference))
+
+
+class Evaluation:
+    """The parameters of one test by one standard, as ``axcheck eval --json`` prints them."""
+
+    def __init__(self, data: Dict[str, Any]) -> None:
+        #: The whole of ``eval --json``, and ``uncertainty`` (ISO 230-9).
+        self.json = data
+
+    @property
+    def standard(self) -> str:
+        """The standard's key (``iso230-2``, ``gost27843`` …)."""
+        return str(self.json["standard"])
+
+    @property
+    def unit(self) -> str:
+        """The deviations' unit: ``um`` or ``arcsec``."""
+        return str(self.json["unit"])
+
+    @property
+    def values(self) -> Dict[str, float]:
+        """Each parameter's value by its key (``A``, ``E_up``, ``B_mean`` …)."""
+        return {k: float(v) for k, v in self.json["parameters"].items()}
+
+    @property
+    def parameters(self) -> List[Dict[str, Any]]:
+        """Each parameter with its symbol (``label``), name, clause and value."""
+        return list(self.json["details"])
+
+    @property
+    def expanded_uncertainty(self) -> Dict[str, float]:
+        """U (k = 2) of each parameter, for the axis kind's usual instrument or the one
+        asked (ISO/TR 230-9; the command line's budget without a campaign's conditions)."""
+        u = self.json.get("uncertainty") or {}
+        return {k: float(v) for k, v in u.get("U", {}).items()}
+
+    def targets(self) -> "pandas.DataFrame":
+        """The per-target table in the layout of ISO 230-2 Table 2: for each target i its
+        position, and for each direction the mean x̄ᵢ, sᵢ, x̄ᵢ ± 2sᵢ and Rᵢ, then Bᵢ and Rᵢ."""
+        import pandas
+
+        rows = []
+        for t in self.json["targets"]:
+            row: Dict[str, Any] = {"i": t["i"], "position": t["position"]}
+            for d in ("up", "down"):
+                side = t[d]
+                for key in ("mean", "s", "upper", "lower", "repeatability"):
+                    row[f"{key}_{d}"] = side.get(key)
+            row["reversal"] = t["reversal"]
+            row["repeatability"] = t["repeatability"]
+            rows.append(row)
+        return pandas.DataFrame(rows).set_index("i")
+
+    def plot(self, ax: Any = None) -> Any:
+        """ISO 230-2 Fig. 2a/2b: each direction's mean deviation and its ±2s band at each
+        target; returns the matplotlib axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots()
+        targets = self.json["targets"]
+        x = [t["position"] for t in targets]
+        for d, mark in (("up", "^-"), ("down", "v-")):
+            mean = [t[d]["mean"] for t in targets]
+            ax.plot(x, mean, mark, label=f"x̄ {'↑' if d == 'up' else '↓'}")
+            upper = [t[d].get("upper") for t in targets]
+            lower = [t[d].get("lower") for t in targets]
+            if all(v is not None for v in upper + lower):
+                ax.fill_between(x, lower, upper, alpha=0.15)
+        ax.set_xlabel(f"target ({self.json['position_unit']})")
+        ax.set_ylabel(f"deviation ({self.unit})")
+        ax.set_title(str(self.json["title"]))
+        ax.legend()
+        return ax
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{k}={v:.2f}" for k, v in self.values.items())
+        return f"Evaluation({self.standard}: {shown})"
+
+
+def evaluate(
+    m: Measurement,
+    standard: str = "iso230-2",
+    s_from_ranges: bool = False,
+    instrument: Optional[str] = None,
+) -> Evaluation:
+    """The parameters of ``standard`` (``iso230-2``, ``gbt17421.2``, ``gost27843``,
+    ``vdi3441``, ``nmtba``) and U per parameter; GOST 27843 with S from the ranges
+    (formula 6) when ``s_from_ranges``."""
+    return Evaluation(json.loads(_axcheck.evaluate(m._raw, standard, s_from_ranges, instrument)))
+
+
+def diagnose(m: Measurement, standard: str = "iso230-2", pitch: Optional[float] = None) -> Dict[str, Any]:
+    """What the standard's model of the axis gets wrong, and why (``diagnose --json``):
+    the effects found (Hemingray et al. 1971), the model checks and the parameters
+    without each effect. ``pitch``: the lead screw's pitch (mm), for periodic error."""
+    value: Dict[str, Any] = json.loads(_axcheck.diagnose(m._raw, standard, pitch))
+    return value
+
+
+def compensate(
+    m: Measurement,
+    controller: str,
+    active: Optional[str] = None,
+    active_backlash: Optional[float] = None,
+    interval: Optional[float] = None,
+    reference: Optional[float] = None,
+    pitch: Optional[float] = None,
+    axis: Optional[str] = None,
+    standard: str = "iso230-2",
+) -> Dict[str, Any]:
+    """The controller's compensation table for the measurement (``compensate --json``) and
+    the file's text (``file_text``): on the table active during the test (``active``, a
+    file, or ``"none"``) and its backlash, else the state is unknown and a warning says so."""
+    value: Dict[str, Any] = json.loads(
+        _axcheck.compensate(
+            m._raw, controller, active, active_backlash, interval, reference, pitch, axis, standard
+        )
+    )
+    return value
+
+
+def verify(
+    before: Measurement,
+    after: Measurement,
+    controller: str,
+    table: str,
+    active: Optional[str] = None,
+    active_backlash: Optional[float] = None,
+    backlash: Optional[float] = None,
+    axis: Optional[str] = None,
+    standard: str = "iso230-2",
+) -> Dict[str, Any]:
+    """Whether the table loaded between ``before`` and ``after`` did what it predicted
+    (``verify --json``), and if not what went wrong."""
+    value: Dict[str, Any] = json.loads(
+        _axcheck.verify(
+            before._raw, after._raw, controller, table, active, active_backlash, backlash, axis, standard
+        )
+    )
+    return value
+
+
+def controllers() -> List[str]:
+    """The controllers whose table formats :func:`compensate` writes."""
+    return list(_axcheck.controller_names())

@@ -1,0 +1,14 @@
+"""The worked example of ISO 230-2 (Table 2) evaluated from Python: the parameters the
+command line's `axcheck eval --json tests/data/iso230-2_table2.csv` prints, and U."""
+
+import sys
+
+import axcheck
+
+path = sys.argv[1] if len(sys.argv) > 1 else "tests/data/iso230-2_table2.csv"
+m: axcheck.Measurement = axcheck.read(path)
+e: axcheck.Evaluation = axcheck.evaluate(m)
+u = e.expanded_uncertainty
+print(f"{m.file}: {m.kind} axis, read as {m.layout}")
+for key in ("A", "E", "M", "R", "B"):
+    print(f"{key:2} = {e.values[key]:6.2f} {e.unit}   U = {u[key]:.2f} {e.unit}")

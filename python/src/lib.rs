@@ -1,0 +1,410 @@
+//! `axcheck._axcheck`: the evaluation core for Python. Each function returns the JSON the
+//! command line prints for the same request (`eval --json`, `diagnose --json`,
+//! `compensate --json`, `verify --json`), written by the same serialisers, so that a
+//! notebook and a campaign give the same numbers bit for bit; `axcheck/__init__.py` turns
+//! it into dicts and DataFrames. The work runs with the GIL released, so that a thread pool
+//! of Python workers scales.
+
+use axcheck_campaign::campaign::stages::compensate as tables;
+use axcheck_campaign::measurement::{self, ReadError, ReadOptions, ReadTest, Recognised};
+use axcheck_core::compensate::json::TableJson;
+use axcheck_core::compensate::{self, Active, Settings, TableSlot, controllers};
+use axcheck_core::evaluate::gost27843::SMethod;
+use axcheck_core::evaluate::{Evaluation, StandardId};
+use axcheck_core::measurement::AxisData;
+use axcheck_core::uncertainty::{self, InstrumentKind, Setup};
+use axcheck_core::verify;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use serde::Serialize;
+use std::path::Path;
+
+/// A positioning test as read: the readings and what the file was recognised as.
+#[pyclass(frozen, module = "axcheck._axcheck")]
+struct Measurement {
+    data: AxisData,
+    recognised: Recognised,
+    /// The file's name as given (`<frame>` for a DataFrame).
+    file: String,
+}
+
+#[pymethods]
+impl Measurement {
+    /// The file's name as given.
+    #[getter]
+    fn file(&self) -> &str {
+        &self.file
+    }
+
+    /// `linear` or `rotary`.
+    #[getter]
+    fn kind(&self) -> String {
+        self.data.kind.to_string()
+    }
+
+    /// What the file was read as: `{"layout", "name", "notes", …}` as JSON.
+    fn recognised_json(&self) -> PyResult<String> {
+        to_json(&self.recognised)
+    }
+
+    /// The readings in the long layout, one tuple per reading: target position (mm or
+    /// deg), direction (`up`/`down`), run label, deviation (µm or arcsec), time (s or None).
+    fn readings(&self) -> Vec<(f64, &'static str, u32, f64, Option<f64>)> {
+        let d = &self.data;
+        (d.readings.iter())
+            .map(|r| {
+                let direction = match r.direction {
+                    axcheck_core::units::Direction::Up => "up",
+                    axcheck_core::units::Direction::Down => "down",
+                };
+                let run = d.run_labels[r.run];
+                (d.targets[r.target], direction, run, r.deviation, r.time_s)
+            })
+            .collect()
+    }
+}
+
+/// A failure the Python side shows as `axcheck.ReadError` (path, line, column, sheet,
+/// field), built by `axcheck._errors` so that its type is a plain Python class.
+fn read_error(py: Python<'_>, e: &ReadError) -> PyErr {
+    let l = &e.location;
+    let args = (
+        e.to_string(),
+        l.file.clone(),
+        l.line,
+        l.column,
+        l.sheet.clone(),
+        e.kind.field(),
+    );
+    let made = py
+        .import("axcheck._errors")
+        .and_then(|m| m.getattr("ReadError"))
+        .and_then(|class| class.call1(args));
+    match made {
+        Ok(error) => PyErr::from_value(error),
+        Err(e) => e,
+    }
+}
+
+fn to_json<T: Serialize>(value: &T) -> PyResult<String> {
+    serde_json::to_string_pretty(value).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+fn standard(text: &str) -> PyResult<StandardId> {
+    StandardId::parse(text).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown standard `{text}`; expected iso230-2, gbt17421.2, gost27843, vdi3441 or nmtba"
+        ))
+    })
+}
+
+/// Reads a measurement file in any layout the command line reads; `sheet` names a
+/// workbook's sheet, `reference` an ecmc ISO 230 app file's reference (1 to 5, `rbv`).
+#[pyfunction]
+#[pyo3(signature = (path, sheet=None, reference=None))]
+fn read(
+    py: Python<'_>,
+    path: &str,
+    sheet: Option<&str>,
+    reference: Option<&str>,
+) -> PyResult<Measurement> {
+    let source = reference
+        .map(measurement::Source::parse)
+        .transpose()
+        .map_err(|e| PyValueError::new_err(format!("reference: {e}")))?;
+    let options = ReadOptions { sheet, source };
+    let read = py.detach(|| measurement::read_file_with(Path::new(path), &options));
+    let ReadTest { data, recognised } = read.map_err(|e| read_error(py, &e))?;
+    Ok(Measurement {
+        data,
+        recognised,
+        file: path.to_string(),
+    })
+}
+
+/// Reads a measurement from its text (a long or wide CSV), `name` for messages.
+#[pyfunction]
+fn read_text(py: Python<'_>, text: &str, name: &str) -> PyResult<Measurement> {
+    let read = py.detach(|| measurement::read(text.as_bytes(), name));
+    let ReadTest { data, recognised } = read.map_err(|e| read_error(py, &e))?;
+    Ok(Measurement {
+        data,
+        recognised,
+        file: name.to_string(),
+    })
+}
+
+/// What `eval` applied: nothing but the evaluation (no NDE, no tolerance, no rule).
+#[derive(Serialize)]
+struct Applied {
+    nde: Option<()>,
+    tolerance: Option<()>,
+    decision_rule: Option<()>,
+}
+
+/// `eval --json` of the measurement, with `uncertainty` (ISO 230-9: U per parameter for
+/// the axis kind's usual instrument, or `instrument`'s) after it.
+#[derive(Serialize)]
+struct EvalJson<'a, E> {
+    #[serde(flatten)]
+    evaluation: E,
+    applied: Applied,
+    file: &'a str,
+    recognised: &'a Recognised,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    other_tool: Option<axcheck_core::crosscheck::OtherTool>,
+    uncertainty: Option<uncertainty::Uncertainty>,
+}
+
+/// The parameters of `standard` (ISO 230-2 clause 2; GOST 27843 with S from ranges when
+/// asked) as `eval --json` prints them, with U per parameter.
+#[pyfunction]
+#[pyo3(signature = (m, standard_key="iso230-2", s_from_ranges=false, instrument=None))]
+fn evaluate(
+    py: Python<'_>,
+    m: &Measurement,
+    standard_key: &str,
+    s_from_ranges: bool,
+    instrument: Option<&str>,
+) -> PyResult<String> {
+    let standard = standard(standard_key)?;
+    if s_from_ranges && standard != StandardId::Gost27843 {
+        return Err(PyValueError::new_err(
+            "s_from_ranges applies to the standard gost27843 only",
+        ));
+    }
+    let setup = match instrument {
+        None => Setup::for_axis(m.data.kind),
+        Some(name) => {
+            Setup::for_instrument(InstrumentKind::from_name(name).ok_or_else(|| {
+                PyValueError::new_err(format!("instrument: unknown kind `{name}`"))
+            })?)
+        }
+    };
+    py.detach(|| {
+        let method = match s_from_ranges {
+            true => SMethod::Ranges,
+            false => SMethod::Formula5,
+        };
+        let evaluation: Evaluation = axcheck_core::evaluate::evaluate_by(&m.data, standard, method);
+        let reported = m.recognised.reported.as_ref();
+        let json = EvalJson {
+            evaluation: evaluation.json(),
+            applied: Applied {
+                nde: None,
+                tolerance: None,
+                decision_rule: None,
+            },
+            file: &m.file,
+            recognised: &m.recognised,
+            other_tool: reported.map(|r| axcheck_core::crosscheck::compare(r, &m.data)),
+            uncertainty: Some(uncertainty::evaluate(&setup, &evaluation)),
+        };
+        to_json(&json)
+    })
+}
+
+/// `diagnose --json` of the measurement: what the standard's model gets wrong, and why.
+#[pyfunction]
+#[pyo3(signature = (m, standard_key="iso230-2", pitch=None))]
+fn diagnose(
+    py: Python<'_>,
+    m: &Measurement,
+    standard_key: &str,
+    pitch: Option<f64>,
+) -> PyResult<String> {
+    let options = axcheck_core::diagnose::Options {
+        pitch,
+        standard: standard(standard_key)?,
+        ..Default::default()
+    };
+    py.detach(|| {
+        let d = axcheck_core::diagnose::diagnose(&m.data, &options);
+        #[derive(Serialize)]
+        struct WithFile<'a, T> {
+            #[serde(flatten)]
+            value: T,
+            file: &'a str,
+        }
+        let json = d.json(axcheck_campaign::simulate::model_text);
+        to_json(&WithFile {
+            value: json,
+            file: &m.file,
+        })
+    })
+}
+
+/// The controller called `name`, or the error that lists the known ones.
+fn controller(name: &str) -> PyResult<&'static dyn controllers::Controller> {
+    controllers::find(name).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown controller `{name}`; known: {}",
+            controllers::names().join(", ")
+        ))
+    })
+}
+
+/// A table file read as the controller reads it, the errors as the command line's.
+fn table_file(
+    path: &str,
+    key: &'static str,
+    c: &dyn controllers::Controller,
+    m: &Measurement,
+    axis: Option<&str>,
+) -> PyResult<compensate::Table> {
+    let at = tables::TableFile::Given {
+        path: Path::new(path),
+        key,
+    };
+    tables::read_table(at, c, m.data.kind, axis).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// `compensate --json` with the table file's text (`file_text`): the controller's table
+/// for the measurement, on the active table when given (`active`, `"none"` or None for
+/// unknown, with `active_backlash`).
+#[pyfunction]
+#[pyo3(name = "compensate", signature = (m, controller_name, active=None, active_backlash=None, interval=None, reference=None, pitch=None, axis=None, standard_key="iso230-2"))]
+#[allow(clippy::too_many_arguments)]
+fn compensate_table(
+    py: Python<'_>,
+    m: &Measurement,
+    controller_name: &str,
+    active: Option<&str>,
+    active_backlash: Option<f64>,
+    interval: Option<f64>,
+    reference: Option<f64>,
+    pitch: Option<f64>,
+    axis: Option<&str>,
+    standard_key: &str,
+) -> PyResult<String> {
+    let c = controller(controller_name)?;
+    let standard = standard(standard_key)?;
+    let file = active.filter(|a| *a != "none");
+    let state = match (active, active_backlash) {
+        (None, None) => None,
+        _ => Some(tables::active_state(file, active_backlash, |p| {
+            table_file(p, "active", c, m, axis)
+        })?),
+    };
+    let settings = Settings {
+        interval,
+        reference,
+        pitch,
+        place: TableSlot {
+            axis: axis.map(str::to_string),
+            measuring_system: None,
+            number: None,
+        },
+        active: state,
+        conditions: None,
+    };
+    py.detach(|| compensation_json(c, m, standard, &settings))
+}
+
+fn compensation_json(
+    c: &'static dyn controllers::Controller,
+    m: &Measurement,
+    standard: StandardId,
+    settings: &Settings,
+) -> PyResult<String> {
+    let options = axcheck_core::diagnose::Options {
+        pitch: settings.pitch,
+        standard,
+        ..Default::default()
+    };
+    let diagnosis = axcheck_core::diagnose::diagnose(&m.data, &options);
+    let done = compensate::compensation(c, &m.data, standard, settings, &diagnosis);
+    let table = done
+        .outcome
+        .as_ref()
+        .map_err(|refused| PyValueError::new_err(refused.to_string()))?;
+    let measured = axcheck_core::evaluate::evaluate(&m.data, standard);
+    let unit = m.data.kind.deviation_unit();
+    /// `compensate --json` and the text of the file it would write.
+    #[derive(Serialize)]
+    struct WithText<'a> {
+        #[serde(flatten)]
+        table: TableJson<'a>,
+        file_text: &'a str,
+    }
+    to_json(&WithText {
+        table: TableJson::new(&done, table, &measured, unit, None),
+        file_text: &table.file,
+    })
+}
+
+/// `verify --json`: whether the table loaded between `before` and `after` did what it
+/// predicted, and if not what went wrong.
+#[pyfunction]
+#[pyo3(name = "verify", signature = (before, after, controller_name, table, active=None, active_backlash=None, backlash=None, axis=None, standard_key="iso230-2"))]
+#[allow(clippy::too_many_arguments)]
+fn verify_table(
+    py: Python<'_>,
+    before: &Measurement,
+    after: &Measurement,
+    controller_name: &str,
+    table: &str,
+    active: Option<&str>,
+    active_backlash: Option<f64>,
+    backlash: Option<f64>,
+    axis: Option<&str>,
+    standard_key: &str,
+) -> PyResult<String> {
+    let c = controller(controller_name)?;
+    let standard = standard(standard_key)?;
+    let kind = after.data.kind;
+    let old = tables::active_state(active.filter(|a| *a != "none"), active_backlash, |p| {
+        table_file(p, "active", c, after, axis)
+    })?;
+    let loaded = Active {
+        table: Some(table_file(table, "table", c, after, axis)?),
+        file: Some(table.to_string()),
+        backlash: backlash.or(old.backlash),
+    };
+    let rule = c.backlash();
+    let new = (loaded.total(rule, kind))
+        .ok_or_else(|| PyValueError::new_err(format!("{table}: an empty table")))?;
+    let old = old.total(rule, kind);
+    py.detach(|| {
+        let input = verify::VerifyInput {
+            before: &before.data,
+            after: &after.data,
+            old: old.as_ref(),
+            new: &new,
+            others: &[],
+            controller: Some(c),
+            standard,
+        };
+        let v = verify::verify(&input).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        #[derive(Serialize)]
+        struct WithFile<'a, T> {
+            #[serde(flatten)]
+            value: T,
+            file: &'a str,
+        }
+        to_json(&WithFile {
+            value: v.json(),
+            file: &after.file,
+        })
+    })
+}
+
+/// The controllers whose tables `compensate` writes.
+#[pyfunction]
+fn controller_names() -> Vec<&'static str> {
+    controllers::names()
+}
+
+#[pymodule]
+fn _axcheck(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Measurement>()?;
+    m.add_function(wrap_pyfunction!(read, m)?)?;
+    m.add_function(wrap_pyfunction!(read_text, m)?)?;
+    m.add_function(wrap_pyfunction!(evaluate, m)?)?;
+    m.add_function(wrap_pyfunction!(diagnose, m)?)?;
+    m.add_function(wrap_pyfunction!(compensate_table, m)?)?;
+    m.add_function(wrap_pyfunction!(verify_table, m)?)?;
+    m.add_function(wrap_pyfunction!(controller_names, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

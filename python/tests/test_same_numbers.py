@@ -1,0 +1,134 @@
+"""The Python package against the command line: every file in tests/data through
+``axcheck eval --json`` and through :func:`axcheck.evaluate` gives the same JSON (the
+same keys and, bit for bit, the same numbers), and the same read errors."""
+
+import json
+import os
+import subprocess
+from pathlib import Path
+from typing import Any, Dict, List, Tuple
+
+import pytest
+
+import axcheck
+
+REPO = Path(__file__).resolve().parents[2]
+DATA = REPO / "tests" / "data"
+EXAMPLE = REPO / "example-campaign"
+SUFFIXES = {".csv", ".rtl", ".rta", ".txt", ".xlsx", ".tsv", ".dat", ".md"}
+
+
+def cli() -> str:
+    """The command line built beside the package (``AXCHECK_BIN`` to choose another)."""
+    given = os.environ.get("AXCHECK_BIN")
+    if given:
+        return given
+    target = Path(os.environ.get("CARGO_TARGET_DIR", REPO / "target"))
+    return str(target / "release" / "axcheck")
+
+
+def run(*args: str) -> Tuple[int, str, str]:
+    done = subprocess.run([cli(), *args], capture_output=True, text=True, cwd=REPO)
+    return done.returncode, done.stdout, done.stderr
+
+
+def data_files() -> List[str]:
+    files = [p for p in DATA.rglob("*") if p.is_file() and p.suffix.lower() in SUFFIXES]
+    return sorted(str(p.relative_to(REPO)) for p in files)
+
+
+def test_there_are_files_to_compare() -> None:
+    assert len(data_files()) > 50
+
+
+@pytest.mark.parametrize("path", data_files())
+def test_eval_is_the_command_lines(path: str) -> None:
+    code, stdout, stderr = run("eval", "--json", path)
+    try:
+        m = axcheck.read(path)  # the name as given, relative to the repository
+    except axcheck.ReadError as e:
+        assert code == 2, f"the CLI read {path}, Python did not: {e}"
+        assert stderr.strip() == f"axcheck: error: {e}"
+        return
+    except ValueError as e:  # not a read error: the CLI refuses it too
+        assert code == 2, f"{path}: {e}"
+        return
+    assert code == 0, f"Python read {path}, the CLI did not: {stderr}"
+    ours: Dict[str, Any] = axcheck.evaluate(m).json
+    ours.pop("uncertainty")
+    theirs = json.loads(stdout)
+    assert ours == theirs
+    # Bit for bit: the same text as well as the same values.
+    assert json.dumps(ours) == json.dumps(theirs)
+
+
+@pytest.mark.parametrize(
+    "path",
+    ["tests/data/iso230-2_table2.csv", "example-campaign/data/vmc07-y.csv", "example-campaign/data/rotary-c.csv"],
+)
+def test_diagnose_is_the_command_lines(path: str) -> None:
+    code, stdout, stderr = run("diagnose", "--json", path)
+    assert code == 0, stderr
+    assert axcheck.diagnose(axcheck.read(path)) == json.loads(stdout)
+
+
+def test_compensate_is_the_command_lines() -> None:
+    path = "example-campaign/data/vmc07-x.csv"
+    active = "example-campaign/active/VMC-07/X.ini"
+    args = ["--axis", "X1", "--reference", "0", "--active", active, "--active-backlash", "4.196"]
+    code, stdout, stderr = run("compensate", path, "-c", "siemens-840d", "--json", *args)
+    assert code == 0, stderr
+    ours = axcheck.compensate(
+        axcheck.read(path), "siemens-840d", active=active, active_backlash=4.196, reference=0.0, axis="X1"
+    )
+    text = ours.pop("file_text")
+    assert ours == json.loads(stdout)
+    assert text.startswith("; ") or "$AA_ENC_COMP" in text
+    code, table, _ = run("compensate", path, "-c", "siemens-840d", *args)
+    assert code == 0 and table == text
+
+
+def test_verify_is_the_command_lines() -> None:
+    before = "example-campaign/data/mill3-y-before.csv"
+    after = "example-campaign/data/mill3-y.csv"
+    table = "example-campaign/active/MILL-3/Y.txt"
+    code, stdout, stderr = run("verify", before, after, "--table", table, "-c", "linuxcnc", "--json")
+    assert code in (0, 1), stderr
+    ours = axcheck.verify(axcheck.read(before), axcheck.read(after), "linuxcnc", table)
+    assert ours == json.loads(stdout)
+    assert ours["verdict"] != "effective"  # Y was loaded with its trims negated
+
+
+def test_a_read_error_names_file_line_and_field(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.csv"
+    bad.write_text("target_mm,direction,run,deviation_um\n0,up,1,1.5\n10,up,1,abc\n")
+    with pytest.raises(axcheck.ReadError) as raised:
+        axcheck.read(str(bad))
+    e = raised.value
+    assert e.path == str(bad)
+    assert e.line == 3
+    assert e.field == "deviation_um"
+    assert str(e).startswith(f"{bad}:3")
+    assert isinstance(e, ValueError)
+
+
+def test_a_frame_reads_as_its_file() -> None:
+    pandas = pytest.importorskip("pandas")
+    m = axcheck.read("tests/data/iso230-2_table2.csv")
+    frame = m.to_frame()
+    assert list(frame.columns) == ["target_mm", "direction", "run", "deviation_um", "time_s"]
+    assert len(frame) == 110  # 11 targets, 5 runs, 2 directions
+    again = axcheck.Measurement.from_frame(frame.drop(columns=["time_s"]))
+    assert axcheck.evaluate(again).values == axcheck.evaluate(m).values
+    assert isinstance(frame, pandas.DataFrame)
+
+
+def test_table_2_layout() -> None:
+    pytest.importorskip("pandas")
+    e = axcheck.evaluate(axcheck.read("tests/data/iso230-2_table2.csv"))
+    table = e.targets()
+    assert len(table) == 11
+    # ISO 230-2 Table 2, target 1: x̄↑ = −1.6 µm, B₁ = −3.86 µm.
+    assert round(table.loc[1, "mean_up"], 2) == -1.6
+    assert round(table.loc[1, "reversal"], 2) == -3.86
+    assert set(e.expanded_uncertainty) >= {"A", "E", "M", "R", "B"}
