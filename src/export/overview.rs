@@ -38,7 +38,7 @@ pub struct Row<'a> {
     /// Length of the measurement travel, mm or degrees (rounded to 1e-6).
     pub travel: Option<f64>,
     /// `976.666 mm`, `360°`.
-    pub travel_text: Option<String>,
+    pub(crate) travel_text: Option<String>,
     /// Runs per direction.
     pub n: Option<usize>,
     /// Deviation unit for people: `µm` or `arcsec`.
@@ -71,7 +71,7 @@ pub struct Headline {
     #[serde(rename = "U")]
     pub u: Option<f64>,
     #[serde(rename = "U_text")]
-    pub u_text: Option<String>,
+    pub(crate) u_text: Option<String>,
 }
 
 /// The check using the largest share of its tolerance: |value| / limit.

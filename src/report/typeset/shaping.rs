@@ -54,7 +54,7 @@ pub struct Line {
     pub width: Abs,
     /// What a punctuation mark at the line's end may hang into the margin (Typst's
     /// `overhang`): added to the room the alignment distributes.
-    pub overhang: Abs,
+    pub(crate) overhang: Abs,
 }
 
 impl Setting {

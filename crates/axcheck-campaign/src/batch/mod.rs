@@ -138,7 +138,7 @@ fn run_axis(
     campaign: &Campaign,
     machine: &Arc<MachineInfo>,
     entry: &crate::campaign::AxisEntry,
-    specs: &BTreeMap<String, Result<Arc<Spec>, String>>,
+    specs: &BTreeMap<String, Result<Arc<Spec>, stages::judge::SpecError>>,
     files: &Files,
     options: BatchOptions,
 ) -> Vec<Tested> {

@@ -34,9 +34,9 @@ pub struct Known<'a> {
     /// The test date is given (by the campaign or the measurement file).
     pub dated: bool,
     /// The file gives a material temperature per reading (`temp_<name>_c` columns).
-    pub material_per_reading: bool,
+    pub(crate) material_per_reading: bool,
     /// The file gives the air temperature per reading.
-    pub air_per_reading: bool,
+    pub(crate) air_per_reading: bool,
 }
 
 /// The clause 7.1 items `axis` does not state, in the clause's order, as reports print

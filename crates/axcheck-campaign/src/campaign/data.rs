@@ -31,7 +31,7 @@ pub struct BadData {
     /// Path below `data`.
     pub path: String,
     /// The key at `path` is wrong (unknown), not its value.
-    pub at_key: bool,
+    pub(crate) at_key: bool,
     pub message: String,
 }
 

@@ -424,10 +424,10 @@ pub struct InstrumentEntry {
         alias = "accuracy_arcsec",
         skip_serializing_if = "Option::is_none"
     )]
-    pub accuracy_fixed: Option<f64>,
+    pub(crate) accuracy_fixed: Option<f64>,
     /// Length-proportional part of its accuracy, ppm of the measured length.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub accuracy_ppm: Option<f64>,
+    pub(crate) accuracy_ppm: Option<f64>,
     /// Coverage factor of a certificate's stated U (normal distribution); absent: the
     /// accuracy is a specification's ± limits (rectangular).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -447,7 +447,7 @@ pub struct InstrumentEntry {
     /// Lateral walk of the beam on its target over the measurement travel, mm (cosine
     /// error).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub beam_walk_mm: Option<f64>,
+    pub(crate) beam_walk_mm: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub serial: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -72,8 +72,8 @@ pub struct Spec {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct SpecOrigin {
     pub file: String,
-    pub linear_line: Option<usize>,
-    pub rotary_line: Option<usize>,
+    pub(crate) linear_line: Option<usize>,
+    pub(crate) rotary_line: Option<usize>,
 }
 
 impl SpecOrigin {
@@ -193,7 +193,7 @@ pub struct NoBand {
     pub travel: f64,
     /// Where the spec's last band of this kind ends; `None`: it has none, or its last
     /// has no end.
-    pub last_up_to: Option<f64>,
+    pub(crate) last_up_to: Option<f64>,
 }
 
 /// ` (its last ends at 1000 mm)`, or ` (it has no `linear` bands)`.

@@ -23,9 +23,9 @@ pub struct FileInfo {
     pub location: Option<String>,
     /// Air temperature at the start and end of the test, °C.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub air_temperature_start_c: Option<f64>,
+    pub(crate) air_temperature_start_c: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub air_temperature_end_c: Option<f64>,
+    pub(crate) air_temperature_end_c: Option<f64>,
     /// Mean air pressure over the test, kPa.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub air_pressure_kpa: Option<f64>,
@@ -34,7 +34,7 @@ pub struct FileInfo {
     pub air_humidity_pct: Option<f64>,
     /// The material (machine) temperature sensors fitted.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub material_sensors: Vec<MaterialReading>,
+    pub(crate) material_sensors: Vec<MaterialReading>,
     /// The expansion coefficient the file was taken with, µm/(m·°C) (= ppm/°C).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub expansion_um_per_m_c: Option<f64>,

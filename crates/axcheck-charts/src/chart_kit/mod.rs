@@ -65,7 +65,7 @@ pub(crate) const DASHED: &[f64] = &[10.0, 5.0];
 
 #[derive(Clone, Copy)]
 pub struct Stroke {
-    pub color: RGBColor,
+    pub(crate) color: RGBColor,
     pub width: u32,
     pub dash: &'static [f64],
 }
@@ -96,7 +96,7 @@ pub(crate) struct LegendItem {
     pub stroke: Option<Stroke>,
     pub marker: Option<(Marker, RGBColor)>,
     /// a filled box (for bands and regions)
-    pub swatch: Option<RGBColor>,
+    pub(crate) swatch: Option<RGBColor>,
     pub text: String,
 }
 
@@ -106,7 +106,7 @@ pub(crate) struct LegendItem {
 pub(crate) struct Conventions {
     /// Superscript digits and minus (as in 10⁻³) measure 0.4 em; otherwise they count as the
     /// 0.7 em of other symbols.
-    pub narrow_superscripts: bool,
+    pub(crate) narrow_superscripts: bool,
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -539,9 +539,9 @@ pub(crate) struct AxesSpec<'s> {
     pub y: (f64, f64),
     pub top: u32,
     pub right: u32,
-    pub x_desc: Option<&'s str>,
+    pub(crate) x_desc: Option<&'s str>,
     /// x ticks and vertical grid drawn by the caller (log axis)
-    pub own_x_ticks: bool,
+    pub(crate) own_x_ticks: bool,
 }
 
 /// Row height of a chart of stacked rows (bars, checks): rows are lower the more there are,

@@ -24,18 +24,18 @@ pub struct CompensationChart {
     /// The measured target positions Pi, ascending.
     pub positions: Vec<f64>,
     /// e.g. "Target position Pi / mm"
-    pub position_label: String,
+    pub(crate) position_label: String,
     /// e.g. "Mean positional deviation / µm"
-    pub deviation_label: String,
+    pub(crate) deviation_label: String,
     /// x̄i↑ and x̄i↓ as measured, per target.
     pub measured_up: Vec<f64>,
-    pub measured_down: Vec<f64>,
+    pub(crate) measured_down: Vec<f64>,
     /// x̄i↑ and x̄i↓ with the table applied, per target.
     pub compensated_up: Vec<f64>,
     pub compensated_down: Vec<f64>,
     /// The readings with the table applied, per target, ↑ and ↓.
-    pub readings_up: Vec<Vec<f64>>,
-    pub readings_down: Vec<Vec<f64>>,
+    pub(crate) readings_up: Vec<Vec<f64>>,
+    pub(crate) readings_down: Vec<Vec<f64>>,
     /// The table's points (mm or deg).
     pub table_points: Vec<f64>,
 }
@@ -63,13 +63,13 @@ pub(crate) struct Means<'a> {
 /// charts draw, each with its own curves.
 pub(crate) struct MeansChart<'a> {
     pub positions: &'a [f64],
-    pub position_label: &'a str,
-    pub deviation_label: &'a str,
+    pub(crate) position_label: &'a str,
+    pub(crate) deviation_label: &'a str,
     /// Drawn in order (the first under the others).
     pub means: Vec<Means<'a>>,
     /// Readings per target, ↑ and ↓ (empty: none drawn), and their legend text.
     pub readings: [&'a [Vec<f64>]; 2],
-    pub readings_text: &'static str,
+    pub(crate) readings_text: &'static str,
     pub table_points: &'a [f64],
 }
 

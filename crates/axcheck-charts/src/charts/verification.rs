@@ -14,15 +14,15 @@ use plotters::style::RGBColor;
 pub struct VerificationChart {
     /// The re-measurement's target positions, ascending.
     pub positions: Vec<f64>,
-    pub position_label: String,
-    pub deviation_label: String,
+    pub(crate) position_label: String,
+    pub(crate) deviation_label: String,
     /// Per target: the means before, predicted and achieved, ↑ and ↓.
-    pub before_up: Vec<f64>,
-    pub before_down: Vec<f64>,
-    pub predicted_up: Vec<f64>,
-    pub predicted_down: Vec<f64>,
-    pub achieved_up: Vec<f64>,
-    pub achieved_down: Vec<f64>,
+    pub(crate) before_up: Vec<f64>,
+    pub(crate) before_down: Vec<f64>,
+    pub(crate) predicted_up: Vec<f64>,
+    pub(crate) predicted_down: Vec<f64>,
+    pub(crate) achieved_up: Vec<f64>,
+    pub(crate) achieved_down: Vec<f64>,
 }
 
 const PREDICTED: &[f64] = &[3.0, 4.0];

@@ -353,13 +353,13 @@ pub struct TrendsDocument {
     pub inspections: usize,
     pub horizon_years: String,
     pub series: usize,
-    pub flagged_series: usize,
-    pub flagged_axes: usize,
+    pub(crate) flagged_series: usize,
+    pub(crate) flagged_axes: usize,
     pub axes: Vec<AxisTrendRows>,
     /// Axes left out of the document (their rows are in `trends.csv`), and how many of
     /// them are flagged (none unless more than [`TRENDS_PDF_AXES`] are).
-    pub omitted_axes: usize,
-    pub omitted_flagged_axes: usize,
+    pub(crate) omitted_axes: usize,
+    pub(crate) omitted_flagged_axes: usize,
     pub table: String,
 }
 
@@ -371,9 +371,9 @@ pub struct AxisTrendRows {
     pub machine: String,
     pub serial: Option<String>,
     pub axis: String,
-    pub machine_short: String,
-    pub serial_short: Option<String>,
-    pub axis_short: String,
+    pub(crate) machine_short: String,
+    pub(crate) serial_short: Option<String>,
+    pub(crate) axis_short: String,
     full_names: Vec<Row>,
     pub flagged: bool,
     pub rows: Vec<TrendRow>,

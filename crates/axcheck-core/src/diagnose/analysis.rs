@@ -22,8 +22,8 @@ use crate::measurement::AxisData;
 
 /// What the tests found out about one measurement: the shared part every effect reads
 /// and each effect's own test.
-pub struct Analysis<'a> {
-    pub basis: Basis<'a>,
+pub(crate) struct Analysis<'a> {
+    pub(crate) basis: Basis<'a>,
     pub hits: Vec<Hit>,
     pub time: TimeTests,
     pub scatter: Option<ScatterTest>,

@@ -9,9 +9,9 @@ use super::prep::Prep;
 use crate::measurement::AxisData;
 
 /// The shared part of the analysis of one measurement.
-pub struct Basis<'a> {
+pub(crate) struct Basis<'a> {
     pub data: &'a AxisData,
-    pub prep: Prep,
+    pub(crate) prep: Prep,
     pub units: Units,
     /// The readings, one per row of `prep`.
     pub x: Vec<f64>,

@@ -7,13 +7,13 @@ use super::model::PlanGuess;
 use super::model_terms::Predictor;
 
 /// The extended model's terms as the simulator has them.
-pub struct Fitted {
+pub(crate) struct Fitted {
     pub pred: Predictor,
     pub guess: PlanGuess,
     /// Hours per time unit (1, or the guessed plan's duration of a run).
-    pub hours_per_unit: f64,
+    pub(crate) hours_per_unit: f64,
     /// Drift δ per time unit at the thermal origin.
-    pub drift_rate: f64,
+    pub(crate) drift_rate: f64,
     /// Thermal growth γ, deviation per position unit per time unit.
     pub growth: f64,
     /// Where the thermal growth is zero.
@@ -22,17 +22,17 @@ pub struct Fitted {
     pub run_offsets: Vec<f64>,
     /// Reversal value per target, and its mean.
     pub reversal: Vec<f64>,
-    pub reversal_mean: f64,
+    pub(crate) reversal_mean: f64,
     /// The shape of the reversal term (a line without it).
-    pub reversal_shape: super::shape::Shape,
+    pub(crate) reversal_shape: super::shape::Shape,
     /// The periodic term, when kept.
     pub periodic: Option<Peak>,
     /// Rows the fit used.
-    pub train: Vec<bool>,
+    pub(crate) train: Vec<bool>,
     /// The outliers the tests found: (row of `prep`, deleted residual).
     pub outliers: Vec<(usize, f64)>,
     /// The scatter σ at the first and last target, when the scatter test ran.
-    pub scatter_ends: Option<(f64, f64)>,
+    pub(crate) scatter_ends: Option<(f64, f64)>,
     /// Whether the warm-up's level changes along the axis (its growth term was found).
-    pub warm_growth: bool,
+    pub(crate) warm_growth: bool,
 }

@@ -93,7 +93,7 @@ pub struct Diagnosis {
     pub gain_pct: f64,
     /// The same on the leave-targets-out RMS of the target means, when a periodic term
     /// was judged (a periodic error costs between the targets, not at them).
-    pub gain_between_targets_pct: Option<f64>,
+    pub(crate) gain_between_targets_pct: Option<f64>,
     /// Each found effect's term judged under the held-out scheme that can show it.
     pub term_gains: Vec<TermGain>,
     pub validation: &'static str,

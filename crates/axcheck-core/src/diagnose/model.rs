@@ -10,11 +10,11 @@ use crate::axis_model::{Cycle, TestPlan};
 use crate::measurement::AxisData;
 
 /// A guessed plan with what was guessed.
-pub struct PlanGuess {
+pub(crate) struct PlanGuess {
     pub plan: TestPlan,
     pub notes: Vec<String>,
     /// Whether the targets survive the simulator's rounding to 0.001 as distinct values.
-    pub simulable: bool,
+    pub(crate) simulable: bool,
 }
 
 fn plan_with(data: &AxisData, cycle: Cycle, feed: f64, dwell: f64, overrun: f64) -> TestPlan {

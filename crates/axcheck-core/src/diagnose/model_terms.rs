@@ -8,29 +8,29 @@ use super::time_fit::TimeFit;
 
 /// The terms of a model.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ModelTerms {
+pub(crate) struct ModelTerms {
     pub drift: bool,
     pub warm: bool,
     /// The warm-up's time constant when it is given (an unrelated curve's, fitted on all
     /// the readings); None: profiled on each fold's training readings.
-    pub warm_tau: Option<f64>,
+    pub(crate) warm_tau: Option<f64>,
     pub thermal: bool,
     pub runs: bool,
     pub reversal: bool,
     /// The reversal's shape along the axis, with `reversal`.
-    pub reversal_shape: Shape,
+    pub(crate) reversal_shape: Shape,
     pub outliers: bool,
     pub scatter: bool,
 }
 
 /// A model fitted to training rows: its time model and what it has at the targets.
-pub struct Predictor {
+pub(crate) struct Predictor {
     pub time: TimeFit,
     pub lines: Lines,
 }
 
 /// What a model has at each target and cell beside its time model.
-pub struct Lines {
+pub(crate) struct Lines {
     /// Bidirectional mean per target.
     pub mean: Vec<f64>,
     /// Reversal value per target as the model has it.
@@ -43,7 +43,7 @@ pub struct Lines {
 
 impl Predictor {
     /// The predicted reading of row `k`.
-    pub fn predict(&self, prep: &Prep, k: usize) -> f64 {
+    pub(crate) fn predict(&self, prep: &Prep, k: usize) -> f64 {
         self.lines.predict(prep, &self.time, k)
     }
 }

@@ -29,7 +29,7 @@ impl TimeUnit {
 
 /// One reading.
 #[derive(Debug, Clone)]
-pub struct Row {
+pub(crate) struct Row {
     /// Index in `AxisData::readings`.
     pub reading: usize,
     /// Target index i (0-based).
@@ -50,7 +50,7 @@ pub struct Row {
 
 /// A test prepared for the diagnosis.
 #[derive(Debug, Clone)]
-pub struct Prep {
+pub(crate) struct Prep {
     pub kind: AxisKind,
     /// Number of targets m.
     pub m: usize,
@@ -60,18 +60,18 @@ pub struct Prep {
     pub rows: Vec<Row>,
     pub time_unit: TimeUnit,
     /// Mean target position (the centre of position-dependent terms).
-    pub pbar: f64,
+    pub(crate) pbar: f64,
     /// First and last target.
     pub lo: f64,
     pub hi: f64,
     /// Mean time of the readings.
-    pub tbar: f64,
+    pub(crate) tbar: f64,
     /// Time of the first reading: the start of the test, where a warm-up begins.
     pub t0: f64,
     /// Time from the first to the last reading.
-    pub t_span: f64,
+    pub(crate) t_span: f64,
     /// What each time term reads per row.
-    pub clocks: Clocks,
+    pub(crate) clocks: Clocks,
     /// The declared thermal origin ([`super::Options::thermal_origin`]).
     pub thermal_origin: Option<f64>,
 }
@@ -79,7 +79,7 @@ pub struct Prep {
 /// What each time term of the model reads per row: the readings' times and runs, or, for
 /// a term unrelated to the data ([`super::confirm`]), its own in a random order.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Clocks {
+pub(crate) struct Clocks {
     /// The drift column: time about the mean, t − t̄.
     pub drift: Vec<f64>,
     /// The time in the thermal column (P − P̄)·(t − t̄).

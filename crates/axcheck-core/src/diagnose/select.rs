@@ -254,13 +254,13 @@ pub struct ModelFit {
     /// Held-out RMS prediction error of the readings, µm or arcsec (NaN for n = 1).
     pub heldout_rms: f64,
     /// Held-out mean negative log predictive density per reading (judges the scatter term).
-    pub heldout_nlpd: f64,
+    pub(crate) heldout_nlpd: f64,
     /// Leave-one-target-out RMS of the target means (when a periodic term was judged).
-    pub between_targets_rms: Option<f64>,
+    pub(crate) between_targets_rms: Option<f64>,
 }
 
 /// The kept terms and the held-out errors of the base and the extended model.
-pub struct Selection {
+pub(crate) struct Selection {
     pub terms: ModelTerms,
     /// The kept effects, in the order of the vocabulary.
     pub effects: Vec<Effect>,
@@ -269,7 +269,7 @@ pub struct Selection {
     pub base: ModelFit,
     pub extended: ModelFit,
     pub gain_pct: f64,
-    pub gain_between_targets_pct: Option<f64>,
+    pub(crate) gain_between_targets_pct: Option<f64>,
     /// Each judged term under its scheme, in the order of the vocabulary.
     pub term_gains: Vec<TermGain>,
 }

@@ -42,17 +42,17 @@ pub(crate) struct Shaped {
     /// The shape with the smallest held-out error.
     pub shape: Shape,
     /// The model with the term in that shape.
-    pub score: Score,
+    pub(crate) score: Score,
     /// Every shape offered.
     pub shapes: Vec<ShapeScore>,
     /// The best shape's gain on each simulated test, %.
-    pub null_gains_pct: Vec<f64>,
+    pub(crate) null_gains_pct: Vec<f64>,
 }
 
 /// What a cross-validation of the shaped term needs: the plan, its folds and which
 /// readings are scored and trained on.
 pub(crate) struct Setup<'a> {
-    pub prep: &'a Prep,
+    pub(crate) prep: &'a Prep,
     pub fold: &'a [usize],
     pub rows: Rows<'a>,
     /// The terms kept before (their warm-up's τ fixed), without the term.

@@ -36,13 +36,13 @@ use super::time_fit::{CoefTest, DriftTest, Terms, TimeFit, fit};
 
 /// The time tests on the active rows.
 #[derive(Debug, Clone)]
-pub struct TimeTests {
+pub(crate) struct TimeTests {
     /// Full model: thermal + run effects + drift, and the warm-up when found (the
     /// pure-error reference).
     pub full: TimeFit,
     /// The smooth part: thermal + drift, and the warm-up when found; no run effects.
     pub trend: TimeFit,
-    pub sigma2: f64,
+    pub(crate) sigma2: f64,
     pub df: f64,
     pub thermal: Option<CoefTest>,
     pub runs: Option<RunTest>,

@@ -17,7 +17,7 @@ pub(crate) struct Terms {
     pub warm: Option<f64>,
     /// The thermal growth about this origin instead of about P̄: γ·(P − O)·t, which holds
     /// the time effect still at O (a declared origin without a drift beside it).
-    pub thermal_about: Option<f64>,
+    pub(crate) thermal_about: Option<f64>,
 }
 
 /// The share of a warm-up reached `dt` after the start of the test: 1 − exp(−dt/τ).
@@ -27,33 +27,33 @@ pub(crate) fn warm_shape(dt: f64, tau: f64) -> f64 {
 
 /// A fit of the time model with cell fixed effects.
 #[derive(Debug, Clone)]
-pub struct TimeFit {
-    pub ls: LeastSquares,
+pub(crate) struct TimeFit {
+    pub(crate) ls: LeastSquares,
     /// Row indices (into `Prep::rows`) in fit order.
     pub rows: Vec<usize>,
     /// Drift rate β per time unit (0 when absent or collinear; with `thermal_about` it
     /// holds the growth's uniform part γ (P̄ − O), so that [`TimeFit::effect`] stays whole).
-    pub beta: f64,
+    pub(crate) beta: f64,
     /// Thermal coefficient γ: deviation per position unit per time unit (about P̄).
-    pub gamma: f64,
+    pub(crate) gamma: f64,
     /// Run effects, run 0 the reference (0).
     pub alpha: Vec<f64>,
     /// Column of each term in `ls`.
-    pub thermal_col: Option<usize>,
-    pub drift_col: Option<usize>,
+    pub(crate) thermal_col: Option<usize>,
+    pub(crate) drift_col: Option<usize>,
     /// Column of the uniform warm-up; the position-proportional one follows it.
-    pub warm_col: Option<usize>,
+    pub(crate) warm_col: Option<usize>,
     /// Warm-up: its time constant, the uniform level a and the level per position unit g
     /// (about P̄) that the deviations approach (0 without the term).
     pub tau: Option<f64>,
-    pub warm_a: f64,
-    pub warm_g: f64,
+    pub(crate) warm_a: f64,
+    pub(crate) warm_g: f64,
     /// Residual degrees of freedom: active rows − cells with rows − rank.
     pub df: f64,
     /// Residual sum of squares in scaled units.
-    pub rss: f64,
+    pub(crate) rss: f64,
     /// Per-cell intercept: mean of (value − time effect) over the cell's active rows.
-    pub intercepts: Vec<f64>,
+    pub(crate) intercepts: Vec<f64>,
     /// Residual per row (unscaled; NaN for inactive rows).
     pub residuals: Vec<f64>,
 }
@@ -294,7 +294,7 @@ fn intercepts(
 
 /// A coefficient's test.
 #[derive(Debug, Clone)]
-pub struct CoefTest {
+pub(crate) struct CoefTest {
     pub estimate: f64,
     pub se: f64,
     pub t: f64,
@@ -325,7 +325,7 @@ impl CoefTest {
 
 /// Drift, after thermal growth.
 #[derive(Debug, Clone)]
-pub struct DriftTest {
+pub(crate) struct DriftTest {
     pub test: CoefTest,
     /// The thermal origin chosen when thermal growth is present: the drift is the time
     /// effect there.

@@ -134,7 +134,7 @@ struct FoldLoss {
     /// Sum of squared prediction errors of the fold's held-out readings.
     pub se: f64,
     /// Sum of their negative log predictive densities.
-    pub nl: f64,
+    pub(crate) nl: f64,
     /// Held-out readings scored.
     pub count: usize,
 }
@@ -144,7 +144,7 @@ struct FoldLoss {
 pub(crate) struct Score {
     pub rms: f64,
     /// Mean negative log predictive density (Gaussian) per reading.
-    pub nlpd: f64,
+    pub(crate) nlpd: f64,
 }
 
 impl Score {
@@ -190,9 +190,9 @@ pub(crate) fn score(
 #[derive(Clone, Copy)]
 pub(crate) struct Rows<'a> {
     /// Readings not scored (the outliers: the models are compared on the others).
-    pub scored: &'a [bool],
+    pub(crate) scored: &'a [bool],
     /// Readings left out of every training set.
-    pub left_out: &'a [bool],
+    pub(crate) left_out: &'a [bool],
 }
 
 /// Cross-validates `terms` with the reversal and scatter lines along the targets'
@@ -278,7 +278,7 @@ pub(crate) struct BetweenTargets {
     pub base: Vec<f64>,
     pub extended: Vec<f64>,
     /// Targets each prediction is fitted on (all but the block).
-    pub train: usize,
+    pub(crate) train: usize,
 }
 
 impl BetweenTargets {

@@ -40,11 +40,11 @@ pub struct Outside {
     /// `above` or `below`.
     pub side: &'static str,
     /// The effects of the vocabulary that can move it.
-    pub points_to: Vec<Effect>,
+    pub(crate) points_to: Vec<Effect>,
     /// The findings among them (empty: not accounted for).
-    pub accounted_for_by: Vec<Effect>,
+    pub(crate) accounted_for_by: Vec<Effect>,
     /// Those seen by their test but not confirmed by prediction.
-    pub seen_unconfirmed: Vec<Effect>,
+    pub(crate) seen_unconfirmed: Vec<Effect>,
 }
 
 /// The model check's verdict: its kind, the statistics outside their bands and the

@@ -91,7 +91,7 @@ pub struct ParameterDef {
     pub role: Option<Role>,
     pub approach: Approach,
     /// Needs repeated approaches: not applicable with n = 1 (ISO 230-2 clause 5.2).
-    pub needs_repeats: bool,
+    pub(crate) needs_repeats: bool,
     /// What its value is made of, for the extent of its uncertainty
     /// (`crate::uncertainty::extent`).
     pub spread: Spread,

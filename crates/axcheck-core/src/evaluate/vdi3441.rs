@@ -36,15 +36,15 @@ pub(crate) fn d_factor(n: usize) -> Option<f64> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Vdi3441Figures {
     /// Ā = (X̄max + X̄min)/2.
-    pub mean_deviation: f64,
+    pub(crate) mean_deviation: f64,
     /// Ā + ((X̄max − X̄min)/2 + 3σ).
-    pub upper_limit: f64,
+    pub(crate) upper_limit: f64,
     /// Ā − ((X̄max − X̄min)/2 + 3σ).
-    pub lower_limit: f64,
+    pub(crate) lower_limit: f64,
     /// T = X̄max − X̄min + 6σ.
-    pub position_error: f64,
+    pub(crate) position_error: f64,
     /// Rp = 6σ.
-    pub scatter_width: f64,
+    pub(crate) scatter_width: f64,
 }
 
 /// VDI 3441's formulas (Hemingray et al. 1971, Fig. 2).

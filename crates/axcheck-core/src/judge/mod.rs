@@ -255,7 +255,7 @@ pub struct LargeUncertainty {
     #[serde(rename = "U")]
     pub expanded: f64,
     pub limit: f64,
-    pub over_half_limit: bool,
+    pub(crate) over_half_limit: bool,
     pub over_value: bool,
 }
 

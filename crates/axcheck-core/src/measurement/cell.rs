@@ -64,7 +64,7 @@ pub struct Field<'a> {
 pub struct Origin {
     pub file: String,
     pub sheet: Option<String>,
-    pub decimal_comma: bool,
+    pub(crate) decimal_comma: bool,
 }
 
 impl Origin {

@@ -65,7 +65,7 @@ pub struct Trend {
     /// series is too short for that interval (fewer than 5 distinct dates).
     pub slope_se: Option<f64>,
     /// Sen's 95 % interval of the slope.
-    pub slope_interval: Option<(f64, f64)>,
+    pub(crate) slope_interval: Option<(f64, f64)>,
     /// The line's value at `origin`: median of y − slope·t.
     pub intercept: Option<f64>,
     /// The line at each point of the series, in its order (empty without a slope).

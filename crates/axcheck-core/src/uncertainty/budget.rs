@@ -70,7 +70,7 @@ pub struct BudgetLine {
     pub unit: &'static str,
     pub distribution: Distribution,
     /// u = value / divisor.
-    pub divisor: f64,
+    pub(crate) divisor: f64,
     /// Standard uncertainty of the input, in `unit`.
     pub u: f64,
     /// Sensitivity coefficient c: deviation unit (µm or arcsec) per `unit`.

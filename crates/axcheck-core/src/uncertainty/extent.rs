@@ -51,11 +51,11 @@ pub struct Extent {
     /// Distance between the two targets of a range, mm or deg; 0 at one position.
     pub length: f64,
     /// How one reading's error enters the parameter: 1, or 2k for a repeatability 2kS.
-    pub reading_gain: f64,
+    pub(crate) reading_gain: f64,
     /// Standard uncertainty of the parameter from the means' scatter, s/√n terms.
-    pub means_u: Option<f64>,
+    pub(crate) means_u: Option<f64>,
     /// Standard uncertainty of the parameter from the estimates of s (chi distribution).
-    pub scatter_u: Option<f64>,
+    pub(crate) scatter_u: Option<f64>,
 }
 
 impl Extent {

@@ -153,11 +153,11 @@ pub struct Instrument {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AirCompensation {
     /// Half-width of the air temperature sensor's uncertainty, °C (default ±0.2).
-    pub temperature_sensor_c: f64,
+    pub(crate) temperature_sensor_c: f64,
     /// Half-width of the air pressure sensor's uncertainty, kPa (default ±0.1 = ±1 hPa).
-    pub pressure_sensor_kpa: f64,
+    pub(crate) pressure_sensor_kpa: f64,
     /// Half-width of the humidity sensor's uncertainty, %RH (default ±6).
-    pub humidity_sensor_pct: f64,
+    pub(crate) humidity_sensor_pct: f64,
     /// Change of the air temperature during the test (end − start), °C: what the dead
     /// path's refractive index changes by.
     pub temperature_change_c: f64,
@@ -183,7 +183,7 @@ pub struct Thermal {
     pub coefficient_um_per_m_c: f64,
     /// Half-width of the coefficient's uncertainty, µm/(m·°C): ISO 230-2 3.1 gives ±2 as
     /// the typical value.
-    pub coefficient_uncertainty_um_per_m_c: f64,
+    pub(crate) coefficient_uncertainty_um_per_m_c: f64,
     /// The deviations were corrected to 20 °C (NDE correction, clause 3.1).
     pub nde_corrected: bool,
     /// Mean temperature of the positioning system during the test (the mean of the
@@ -193,10 +193,10 @@ pub struct Thermal {
     /// correction followed each reading's own temperature.
     pub change_c: f64,
     /// Half-width of the material temperature sensors' uncertainty, °C (default ±0.1).
-    pub sensor_c: f64,
+    pub(crate) sensor_c: f64,
     /// Half-width assumed for |T − 20 °C| when the temperature was not recorded, °C
     /// (default ±1: a test meant to be made at 20 °C, clause 3.1, in a room held near it).
-    pub unrecorded_band_c: f64,
+    pub(crate) unrecorded_band_c: f64,
 }
 
 impl Default for Thermal {

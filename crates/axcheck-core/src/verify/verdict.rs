@@ -127,7 +127,7 @@ pub struct VerdictBasis<'a> {
     /// χ² rejects the table as named.
     pub rejected: bool,
     /// An effect of the vocabulary explains the change.
-    pub explained: bool,
+    pub(crate) explained: bool,
 }
 
 /// The verdict (see the module's order).

@@ -110,7 +110,7 @@ impl Transform {
     }
 
     /// The error of a raw mean at `target`: gain · raw + offset − target.
-    pub fn error(self, raw_mean: f64, target: f64) -> f64 {
+    pub(crate) fn error(self, raw_mean: f64, target: f64) -> f64 {
         self.gain * raw_mean + self.offset - target
     }
 }

@@ -38,25 +38,25 @@ impl StartEnd {
 pub struct MaterialSensor {
     /// The sensor's number (`Mat temp 1` → 1).
     pub sensor: u32,
-    pub temp_c: StartEnd,
+    pub(crate) temp_c: StartEnd,
 }
 
 /// The ENVIRONMENT:: values.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Environment {
     /// `Air temp`, °C.
-    pub air_temp_c: StartEnd,
+    pub(crate) air_temp_c: StartEnd,
     /// `Air press`, converted from the kPa written to hPa (= mbar).
-    pub air_pressure_hpa: StartEnd,
+    pub(crate) air_pressure_hpa: StartEnd,
     /// `Air humid`, % relative humidity.
-    pub air_humidity_percent: StartEnd,
+    pub(crate) air_humidity_percent: StartEnd,
     /// `Mat temp N`, the sensors fitted (those reading −10 at both ends are left out).
-    pub material_temps_c: Vec<MaterialSensor>,
+    pub(crate) material_temps_c: Vec<MaterialSensor>,
     /// `Exp coeff`: the expansion coefficient set for the part, ppm/°C (µm/m/°C).
     pub expansion_ppm_per_c: Option<f64>,
     /// `Date Time`: start and end of the test, as written.
-    pub date_time_start: Option<String>,
-    pub date_time_end: Option<String>,
+    pub(crate) date_time_start: Option<String>,
+    pub(crate) date_time_end: Option<String>,
     /// Lines not interpreted (`Env factor`, `Final Data`, others), key and value as written.
     pub other: Vec<(String, String)>,
 }

@@ -11,11 +11,11 @@ pub struct Header {
     /// `File type`: `rtl` or `rta` in the files described.
     pub file_type: Option<String>,
     /// `Owner`, e.g. the software module that wrote the file.
-    pub owner: Option<String>,
+    pub(crate) owner: Option<String>,
     /// `Version no` of that software.
     pub version: Option<String>,
     /// `Filetype` of TARGET DATA::, e.g. `ISO`.
-    pub test_type: Option<String>,
+    pub(crate) test_type: Option<String>,
     /// `Flags` after the targets, as written (meaning not documented).
     pub flags: Option<String>,
 }

@@ -79,11 +79,11 @@ pub struct RenishawTest {
     /// HEADER:: and the TARGET DATA:: fields that are not data.
     pub header: Header,
     /// USER-TEXT:: (machine, serial, date, operator, axis, location, title).
-    pub user_text: UserText,
+    pub(crate) user_text: UserText,
     /// ENVIRONMENT::, when the file has it.
     pub environment: Option<Environment>,
     /// Sections this reader does not interpret (EQUIPMENT:: and any other), kept as written.
-    pub other_sections: Vec<OtherSection>,
+    pub(crate) other_sections: Vec<OtherSection>,
     /// What was read, assumed or skipped, for the person reading the report.
     pub notes: Vec<String>,
 }

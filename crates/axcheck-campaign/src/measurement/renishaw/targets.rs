@@ -17,9 +17,9 @@ pub(super) struct Targets {
     /// True when the list rises (odd runs move up, ↑); a single target counts as rising.
     pub ascending: bool,
     /// Positions per line when every full line holds the same number.
-    pub per_line: Option<usize>,
+    pub(crate) per_line: Option<usize>,
     /// `Filetype` (e.g. `ISO`).
-    pub test_type: Option<String>,
+    pub(crate) test_type: Option<String>,
     /// `Flags` as written.
     pub flags: Option<String>,
     pub kind: AxisKind,

@@ -13,15 +13,15 @@ use crate::units::Direction;
 pub(super) struct Rtl {
     pub targets: Vec<f64>,
     pub passes: Vec<Vec<f64>>,
-    pub eol: &'static str,
-    pub per_line: usize,
+    pub(crate) eol: &'static str,
+    pub(crate) per_line: usize,
     pub file_type: &'static str,
     /// USER-TEXT:: lines as bytes (Windows-1252 or UTF-8).
-    pub user_text: Vec<Vec<u8>>,
+    pub(crate) user_text: Vec<Vec<u8>>,
     /// Sections between DEVIATIONS:: and EOF::, LF line ends.
-    pub after_deviations: &'static str,
+    pub(crate) after_deviations: &'static str,
     /// Even runs listed from the last target down, as the laser software writes them.
-    pub even_runs_reversed: bool,
+    pub(crate) even_runs_reversed: bool,
 }
 
 /// ENVIRONMENT:: of an older file (the values quoted by a third-party reader from a real

@@ -98,7 +98,7 @@ pub(super) struct Section<'a> {
 pub(super) struct Sections<'a> {
     pub list: Vec<Section<'a>>,
     /// Non-blank lines after `EOF::`, ignored.
-    pub after_eof: usize,
+    pub(crate) after_eof: usize,
 }
 
 impl<'a> Sections<'a> {

@@ -25,14 +25,14 @@ pub struct Periodogram {
     /// normalised power 0…1, one per period
     pub power: Vec<f64>,
     /// e.g. "Period / mm"
-    pub period_label: String,
+    pub(crate) period_label: String,
     /// power at the false-alarm level (e.g. 0.1 %), drawn as a dashed horizontal line
     pub threshold: Option<f64>,
     /// detected period and its label, e.g. (10.02, "10.0 mm"), marked above the plot
     pub marked: Option<(f64, String)>,
     /// periods shorter than this cannot be resolved by the plan: that region is shaded and
     /// labelled "not resolvable"
-    pub unresolved_below: Option<f64>,
+    pub(crate) unresolved_below: Option<f64>,
 }
 
 // ---------------------------------------------------------------------------------------------

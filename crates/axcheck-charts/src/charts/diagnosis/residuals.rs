@@ -30,9 +30,9 @@ pub struct ResidualsChart {
     /// true for ↑ approach, false for ↓ (distinguished by marker shape, not colour only)
     pub up: Vec<bool>,
     /// e.g. "Time since start / min" or "Reading order" or "Target position Pi / mm"
-    pub x_label: String,
+    pub(crate) x_label: String,
     /// e.g. "Residual / µm"
-    pub y_label: String,
+    pub(crate) y_label: String,
     /// ±2σ of the base model's scatter, drawn as a light horizontal band around zero
     pub band: Option<f64>,
     /// optional fitted curve of an identified effect (e.g. drift line), drawn over the points

@@ -27,11 +27,11 @@ pub struct TimePanels {
     /// Half-width of the band about the curve (where a run mean lies in 95 % of tests).
     pub band: f64,
     /// e.g. "fitted drift"
-    pub curve_label: String,
+    pub(crate) curve_label: String,
     /// The residuals after the extended model: (time, residual, ↑).
     pub after: Vec<(f64, f64, bool)>,
     /// ±2σ of the extended model's scatter.
-    pub after_band: Option<f64>,
+    pub(crate) after_band: Option<f64>,
 }
 
 /// Height of the two-panel chart: the upper panel as high as the one-panel residual chart's

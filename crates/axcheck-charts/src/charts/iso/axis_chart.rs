@@ -30,15 +30,15 @@ pub struct AxisChart {
     /// target positions P_i, ascending (mm or deg)
     pub positions: Vec<f64>,
     /// e.g. "Target position Pi / mm"
-    pub position_label: String,
+    pub(crate) position_label: String,
     /// e.g. "Positional deviation / µm"
-    pub deviation_label: String,
+    pub(crate) deviation_label: String,
     pub up: DirectionSeries,
     pub down: DirectionSeries,
     /// bidirectional mean X̄i per target
     pub mean: Vec<f64>,
     /// e.g. "X̄ ± 2S" (ISO) or "X̄ ± 3S" (GOST)
-    pub band_label: String,
+    pub(crate) band_label: String,
     /// e.g. A, E, M for the bidirectional chart
     pub spans: Vec<Span>,
 }

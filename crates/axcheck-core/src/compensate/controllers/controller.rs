@@ -129,9 +129,9 @@ pub struct Format {
     /// Whether a table can wrap around one revolution of a rotary axis.
     pub modulo: bool,
     /// Smallest step of a correction on a linear axis, µm.
-    pub quantum_um: f64,
+    pub(crate) quantum_um: f64,
     /// Smallest step of a correction on a rotary axis, arcsec.
-    pub quantum_arcsec: f64,
+    pub(crate) quantum_arcsec: f64,
 }
 
 impl Format {

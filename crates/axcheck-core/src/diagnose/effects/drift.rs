@@ -22,13 +22,13 @@ pub struct Drift {
     /// Deviation unit per time unit.
     pub rate: f64,
     /// Standard error of the rate.
-    pub rate_se: f64,
+    pub(crate) rate_se: f64,
     /// Over the test: the rate times its time span, deviation unit.
     pub total: f64,
     /// The position where the drift is the time effect, when thermal growth is found too.
     pub at: Option<f64>,
     /// What the rate was tested against: `scatter` or `run-to-run variation`.
-    pub tested_against: &'static str,
+    pub(crate) tested_against: &'static str,
 }
 
 impl Fields for Drift {
@@ -60,7 +60,7 @@ impl Fields for Drift {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).

@@ -38,7 +38,7 @@ use serde::ser::Serializer;
 /// The measure a term is judged on before the extended model takes it (it must lower it
 /// by more than unrelated terms of the same size do: [`super::confirm`]).
 #[derive(Clone, Copy)]
-pub enum Term {
+pub(crate) enum Term {
     /// A term of the reading model: the held-out RMS of the readings.
     Readings(fn(&mut ModelTerms)),
     /// A term of the reading model's scatter: the held-out negative log density (an RMS
@@ -54,7 +54,7 @@ pub enum Term {
 
 /// One effect of the vocabulary. Its findings come from its own test (each effect's
 /// `Rule::find`, given its test by the analysis that runs them in order).
-pub trait Rule: Sync {
+pub(crate) trait Rule: Sync {
     /// How its term is judged.
     fn term(&self) -> Term;
     /// The unrelated terms of the same size its term's gain is compared with.

@@ -71,7 +71,7 @@ fn direction(d: usize) -> Direction {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -155,12 +155,12 @@ impl EffectRule for Rule {
 
 /// One outlier.
 #[derive(Debug, Clone)]
-pub struct Hit {
+pub(crate) struct Hit {
     /// Row index in `Prep::rows`.
     pub row: usize,
     pub t: f64,
     /// Bonferroni-adjusted p-value.
-    pub p_adj: f64,
+    pub(crate) p_adj: f64,
     /// Deleted residual: the reading minus what the rest predicts, µm or arcsec.
     pub size: f64,
 }

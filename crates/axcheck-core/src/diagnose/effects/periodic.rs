@@ -45,9 +45,9 @@ pub struct Periodic {
     pub amplitude: f64,
     pub phase_deg: f64,
     /// How many periods the measured travel holds.
-    pub repeats_in_travel: f64,
+    pub(crate) repeats_in_travel: f64,
     /// Whether the period is the declared pitch (else the highest periodogram peak).
-    pub from_pitch: bool,
+    pub(crate) from_pitch: bool,
 }
 
 impl Fields for Periodic {
@@ -83,7 +83,7 @@ impl Fields for Periodic {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -180,20 +180,20 @@ const TRIALS_PER_RESOLUTION: f64 = 3.0;
 
 /// The outcome of the periodic search.
 #[derive(Debug, Clone)]
-pub struct Search {
+pub(crate) struct Search {
     pub resolution: Resolution,
     /// The highest peak (of the declared pitch when it was the one tested and found).
     pub peak: Option<Peak>,
     /// False-alarm probability of `peak` (the larger of the F and χ² ones).
-    pub fap: f64,
+    pub(crate) fap: f64,
     /// Whether the declared pitch was the candidate.
-    pub from_pitch: bool,
+    pub(crate) from_pitch: bool,
     /// (period, normalised power) over the resolvable range, for charts.
     pub periodogram: Vec<(f64, f64)>,
     /// The highest F over the scan (for the Monte-Carlo check).
-    pub max_f: f64,
+    pub(crate) max_f: f64,
     /// RMS of the target means about the smooth trend, µm or arcsec.
-    pub trend_rms: f64,
+    pub(crate) trend_rms: f64,
     /// The amplitude this plan confirms in about
     /// [`POWER`](crate::diagnose::options::POWER) of tests and its period.
     pub smallest: Option<Smallest>,
@@ -205,7 +205,7 @@ pub struct Search {
 /// Target means as the base model has them: a smooth (cubic) trend and independent
 /// normal scatter of a standard deviation per target.
 #[derive(Debug, Clone, Default)]
-pub struct MeansModel {
+pub(crate) struct MeansModel {
     pub trend: Vec<f64>,
     pub sd: Vec<f64>,
 }
@@ -226,7 +226,7 @@ impl MeansModel {
 /// A periodic error of `amplitude` at `period` confirmed in about
 /// [`POWER`](crate::diagnose::options::POWER) of tests.
 #[derive(Debug, Clone, Copy)]
-pub struct Smallest {
+pub(crate) struct Smallest {
     pub period: f64,
     pub amplitude: f64,
 }

@@ -128,7 +128,7 @@ impl Fields for ReversalVariation {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -253,21 +253,21 @@ impl EffectRule for Rule {
 
 /// The result of the reversal tests.
 #[derive(Debug, Clone)]
-pub struct ReversalTest {
+pub(crate) struct ReversalTest {
     /// Slope of B along the axis (deviation per position unit).
     pub slope: f64,
     /// B of the line at the mean position of the targets used.
-    pub at_center: f64,
+    pub(crate) at_center: f64,
     pub center: f64,
-    pub t_slope: f64,
-    pub p_slope: f64,
+    pub(crate) t_slope: f64,
+    pub(crate) p_slope: f64,
     /// Standard error of the slope.
-    pub se_slope: f64,
+    pub(crate) se_slope: f64,
     pub df: f64,
     /// F of the Bi about their weighted mean (m − 1 and σ's df): a reversal that varies
     /// in any shape, a worn end or section as well as a line.
-    pub f_shape: Option<f64>,
-    pub p_shape: Option<f64>,
+    pub(crate) f_shape: Option<f64>,
+    pub(crate) p_shape: Option<f64>,
 }
 
 impl ReversalTest {

@@ -55,7 +55,7 @@ impl Fields for RunOffset {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -130,10 +130,10 @@ impl EffectRule for Rule {
 
 /// Run offsets beyond the smooth model (a linear drift and a warm-up curve).
 #[derive(Debug, Clone)]
-pub struct RunTest {
+pub(crate) struct RunTest {
     pub f: f64,
-    pub df1: f64,
-    pub df2: f64,
+    pub(crate) df1: f64,
+    pub(crate) df2: f64,
     pub p: f64,
     /// Run effects after the drift fit, centred (mean 0), per run.
     pub offsets: Vec<f64>,

@@ -56,7 +56,7 @@ impl Fields for ScatterVariation {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -124,17 +124,17 @@ impl EffectRule for Rule {
 
 /// The result of the scatter test.
 #[derive(Debug, Clone)]
-pub struct ScatterTest {
+pub(crate) struct ScatterTest {
     /// The score of the log slope over its standard error.
     pub z: f64,
     pub p: f64,
     /// Cells with at least two readings.
     pub cells: usize,
     /// Fitted scatter σ at the first and last target, µm or arcsec.
-    pub sigma_lo: f64,
-    pub sigma_hi: f64,
+    pub(crate) sigma_lo: f64,
+    pub(crate) sigma_hi: f64,
     /// Relative scatter per cell (σ(P)/σ̄; mean square 1).
-    pub rel_scale: Vec<f64>,
+    pub(crate) rel_scale: Vec<f64>,
 }
 
 /// The scatter per cell relative to √`sigma2` for the outlier test once a scatter variation

@@ -22,16 +22,16 @@ use crate::units::AxisKind;
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThermalGrowth {
     /// ppm (µm per m, or for a rotary axis ppm of the angle) per time unit.
-    pub growth_ppm: f64,
+    pub(crate) growth_ppm: f64,
     /// Standard error of `growth_ppm`.
-    pub growth_se_ppm: f64,
+    pub(crate) growth_se_ppm: f64,
     /// The position where the growth is zero, mm or deg.
     pub origin: f64,
     /// Whether `origin` was declared ([`crate::diagnose::Options::thermal_origin`]), not
     /// fitted.
-    pub origin_declared: bool,
+    pub(crate) origin_declared: bool,
     /// Over the measured travel and the test, deviation unit.
-    pub over_travel_and_test: f64,
+    pub(crate) over_travel_and_test: f64,
 }
 
 impl Fields for ThermalGrowth {
@@ -77,7 +77,7 @@ impl Fields for ThermalGrowth {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).

@@ -22,16 +22,16 @@ const COLLINEAR: f64 = 1e-5;
 #[derive(Debug, Clone)]
 pub struct LeastSquares {
     /// Coefficient per input column (0 for a dropped column).
-    pub coef: Vec<f64>,
+    pub(crate) coef: Vec<f64>,
     /// Which input columns were kept.
     pub kept: Vec<bool>,
     /// Residual sum of squares.
-    pub rss: f64,
+    pub(crate) rss: f64,
     /// Number of kept columns.
     pub rank: usize,
     pub residuals: Vec<f64>,
     /// (XᵀX)⁻¹ over all input columns (zero rows and columns for dropped ones).
-    pub cov: Vec<Vec<f64>>,
+    pub(crate) cov: Vec<Vec<f64>>,
     /// Orthonormal basis of the kept columns (for leverages).
     q: Vec<Vec<f64>>,
 }

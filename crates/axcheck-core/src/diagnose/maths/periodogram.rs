@@ -18,13 +18,13 @@ const MAX_TARGETS: usize = 5000;
 
 /// The periods a plan can resolve.
 #[derive(Debug, Clone)]
-pub struct Resolution {
+pub(crate) struct Resolution {
     /// Typical (median) target spacing.
     pub spacing: f64,
     /// Length of the measured travel.
     pub length: f64,
-    pub p_min: f64,
-    pub p_max: f64,
+    pub(crate) p_min: f64,
+    pub(crate) p_max: f64,
     pub applicable: bool,
 }
 
@@ -59,16 +59,16 @@ pub(crate) fn resolution(positions: &[f64]) -> Resolution {
 
 /// A fitted sinusoid.
 #[derive(Debug, Clone)]
-pub struct Peak {
+pub(crate) struct Peak {
     pub period: f64,
     /// Amplitude (half peak-to-peak).
     pub amplitude: f64,
     /// Phase at position 0, degrees: A·sin(2πP/period + phase).
     pub phase_deg: f64,
-    pub f_stat: f64,
+    pub(crate) f_stat: f64,
     /// Single-frequency p-values: of F and (when the scatter is known) of χ².
-    pub p_f: f64,
-    pub p_chi2: Option<f64>,
+    pub(crate) p_f: f64,
+    pub(crate) p_chi2: Option<f64>,
 }
 
 /// The smooth trend's basis at fixed positions and weights: what every test of the same
@@ -91,7 +91,7 @@ pub(crate) struct Scanner<'a> {
     trend: &'a Trend,
     /// Weighted residual of the trend.
     resid: Vec<f64>,
-    pub rss_trend: f64,
+    pub(crate) rss_trend: f64,
     dof: f64,
     /// Scratch for the projected sine and cosine of a trial frequency.
     scratch: RefCell<Vec<[f64; 2]>>,

@@ -65,30 +65,30 @@ pub struct WarmUp {
     /// From the first reading to the final level, at the mean target position; deviation
     /// unit.
     pub amplitude: f64,
-    pub amplitude_se: f64,
+    pub(crate) amplitude_se: f64,
     /// Time constant τ.
     pub tau: f64,
     /// From the start of the test until every target is within 1 µm (1 arcsec) of its
     /// final level.
-    pub time_to_within_1: f64,
+    pub(crate) time_to_within_1: f64,
     /// The largest distance from the final level along the travel at the last reading,
     /// deviation unit.
-    pub remaining_at_end: f64,
+    pub(crate) remaining_at_end: f64,
     /// The position-proportional part at the end state, ppm (µm per m), with its standard
     /// error, when found.
-    pub growth_ppm: Option<(f64, f64)>,
+    pub(crate) growth_ppm: Option<(f64, f64)>,
     /// F and p of free run offsets beyond the warm-up (on the run means).
-    pub run_offsets_beyond: Option<(f64, f64)>,
+    pub(crate) run_offsets_beyond: Option<(f64, f64)>,
     /// F and p of the warm-up beyond free run offsets (within the runs).
-    pub within_runs: Option<(f64, f64)>,
+    pub(crate) within_runs: Option<(f64, f64)>,
     /// BIC with the warm-up minus BIC with a linear drift instead, and with free run
     /// offsets instead (negative: the warm-up explains the data better).
-    pub delta_bic_vs_drift: f64,
-    pub delta_bic_vs_run_offsets: f64,
+    pub(crate) delta_bic_vs_drift: f64,
+    pub(crate) delta_bic_vs_run_offsets: f64,
     /// What it was tested against: `scatter` or `run-to-run variation`.
-    pub tested_against: &'static str,
+    pub(crate) tested_against: &'static str,
     /// Whether the time constant is at an end of the range searched.
-    pub at_bound: Option<Bound>,
+    pub(crate) at_bound: Option<Bound>,
 }
 
 /// An end of the range of time constants searched.
@@ -260,7 +260,7 @@ impl WarmUp {
     }
 }
 
-pub struct Rule;
+pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
@@ -513,9 +513,9 @@ pub(crate) fn davies(u: f64, nu: f64, path: f64) -> f64 {
 
 /// An F test of a larger model against a smaller one nested in it.
 #[derive(Debug, Clone)]
-pub struct FTest {
+pub(crate) struct FTest {
     pub f: f64,
-    pub df1: f64,
+    pub(crate) df1: f64,
     pub p: f64,
 }
 
@@ -542,12 +542,12 @@ fn bic(fit: &TimeFit, extra: usize) -> f64 {
 
 /// The warm-up search on the linear-trend fits of [`crate::diagnose::time::tests`].
 #[derive(Debug, Clone)]
-pub struct WarmTest {
+pub(crate) struct WarmTest {
     pub tau: f64,
     /// Largest F over τ of the uniform and of the position-proportional column beyond
     /// the linear trend, and Davies' p of each.
     pub f: [f64; 2],
-    pub p_column: [f64; 2],
+    pub(crate) p_column: [f64; 2],
     /// The decision's p-value: twice the smaller (each column at α/2); 1 for a barely
     /// bent curve that free run offsets explain better ([`search`]).
     pub p: f64,
@@ -557,13 +557,13 @@ pub struct WarmTest {
     /// `scatter` or `run-to-run variation`.
     pub against: &'static str,
     /// Free run offsets beyond the smooth model with the warm-up.
-    pub runs_beyond: Option<FTest>,
+    pub(crate) runs_beyond: Option<FTest>,
     /// The warm-up beyond free run offsets and the linear trend: within the runs.
-    pub within_runs: Option<FTest>,
+    pub(crate) within_runs: Option<FTest>,
     /// BIC of the smooth model with the warm-up minus that of a linear drift, and minus
     /// that of free run offsets (negative: the warm-up is preferred).
-    pub delta_bic_drift: f64,
-    pub delta_bic_runs: f64,
+    pub(crate) delta_bic_drift: f64,
+    pub(crate) delta_bic_runs: f64,
     /// Linear trend with the warm-up, without and with run effects.
     pub smooth: TimeFit,
     pub full: TimeFit,
@@ -639,16 +639,16 @@ pub(crate) fn search(
 
 /// The warm-up's estimate.
 #[derive(Debug, Clone, PartialEq)]
-pub struct WarmEstimate {
+pub(crate) struct WarmEstimate {
     /// Time constant, time units.
     pub tau: f64,
     /// Level approached from the first reading at P̄, and its standard error.
     pub a: f64,
-    pub a_se: f64,
+    pub(crate) a_se: f64,
     /// Level per position unit, its standard error and the p of its t test.
     pub g: f64,
-    pub g_se: f64,
-    pub g_p: f64,
+    pub(crate) g_se: f64,
+    pub(crate) g_p: f64,
 }
 
 impl WarmEstimate {

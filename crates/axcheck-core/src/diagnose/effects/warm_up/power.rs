@@ -21,7 +21,7 @@ const CURVE_DF: f64 = 3.0;
 /// A uniform warm-up approaching `level` with time constant `tau` (time units), found in
 /// [`POWER`] of tests.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Smallest {
+pub(crate) struct Smallest {
     pub tau: f64,
     pub level: f64,
 }
