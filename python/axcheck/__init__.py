@@ -125,9 +125,17 @@ def read(path: str, sheet: Optional[str] = None, reference: Optional[str] = None
 class Evaluation:
     """The parameters of one test by one standard, as ``axcheck eval --json`` prints them."""
 
-    def __init__(self, data: Dict[str, Any]) -> None:
-        #: The whole of ``eval --json``, and ``uncertainty`` (ISO 230-9).
-        self.json = data
+    def __init__(self, raw: Any) -> None:
+        self._raw = raw
+        self._json: Optional[Dict[str, Any]] = None
+
+    @property
+    def json(self) -> Dict[str, Any]:
+        """The whole of ``eval --json``, and ``uncertainty`` (ISO/TR 230-9: U and each
+        parameter's budget), parsed when first asked for."""
+        if self._json is None:
+            self._json = json.loads(self._raw.json())
+        return self._json
 
     @property
     def standard(self) -> str:
@@ -141,8 +149,8 @@ class Evaluation:
 
     @property
     def values(self) -> Dict[str, float]:
-        """Each parameter's value by its key (``A``, ``E_up``, ``B_mean`` …)."""
-        return {k: float(v) for k, v in self.json["parameters"].items()}
+        """Each parameter's value by its key (``A``, ``E_up``, ``B_mean`` …), µm or arcsec."""
+        return dict(self._raw.values())
 
     @property
     def parameters(self) -> List[Dict[str, Any]]:
@@ -153,8 +161,7 @@ class Evaluation:
     def expanded_uncertainty(self) -> Dict[str, float]:
         """U (k = 2) of each parameter, for the axis kind's usual instrument or the one
         asked (ISO/TR 230-9; the command line's budget without a campaign's conditions)."""
-        u = self.json.get("uncertainty") or {}
-        return {k: float(v) for k, v in u.get("U", {}).items()}
+        return dict(self._raw.expanded())
 
     def targets(self) -> "pandas.DataFrame":
         """The per-target table in the layout of ISO 230-2 Table 2: for each target i its
@@ -209,7 +216,7 @@ def evaluate(
     """The parameters of ``standard`` (``iso230-2``, ``gbt17421.2``, ``gost27843``,
     ``vdi3441``, ``nmtba``) and U per parameter; GOST 27843 with S from the ranges
     (formula 6) when ``s_from_ranges``."""
-    return Evaluation(json.loads(_axcheck.evaluate(m._raw, standard, s_from_ranges, instrument)))
+    return Evaluation(_axcheck.evaluate(m._raw, standard, s_from_ranges, instrument))
 
 
 def diagnose(m: Measurement, standard: str = "iso230-2", pitch: Optional[float] = None) -> Dict[str, Any]:

@@ -9,6 +9,7 @@ path = sys.argv[1] if len(sys.argv) > 1 else "tests/data/iso230-2_table2.csv"
 m: axcheck.Measurement = axcheck.read(path)
 e: axcheck.Evaluation = axcheck.evaluate(m)
 u = e.expanded_uncertainty
+unit = {"um": "µm", "arcsec": "″"}[e.unit]
 print(f"{m.file}: {m.kind} axis, read as {m.layout}")
 for key in ("A", "E", "M", "R", "B"):
-    print(f"{key:2} = {e.values[key]:6.2f} {e.unit}   U = {u[key]:.2f} {e.unit}")
+    print(f"{key} = {e.values[key]:5.2f} {unit}   U = {u[key]:5.2f} {unit} (k = 2)")

@@ -152,12 +152,58 @@ struct EvalJson<'a, E> {
     file: &'a str,
     recognised: &'a Recognised,
     #[serde(skip_serializing_if = "Option::is_none")]
+    other_tool: Option<&'a axcheck_core::crosscheck::OtherTool>,
+    uncertainty: &'a uncertainty::Uncertainty,
+}
+
+/// One test's parameters and their U. The values are handed over as they are asked for,
+/// the whole JSON only when it is (it is most of the cost of a small file).
+#[pyclass(frozen, module = "axcheck._axcheck")]
+struct Evaluated {
+    evaluation: Evaluation,
+    uncertainty: uncertainty::Uncertainty,
     other_tool: Option<axcheck_core::crosscheck::OtherTool>,
-    uncertainty: Option<uncertainty::Uncertainty>,
+    recognised: Recognised,
+    file: String,
+}
+
+#[pymethods]
+impl Evaluated {
+    /// Each parameter's key and value, in the catalogue's order.
+    fn values(&self) -> Vec<(&'static str, f64)> {
+        (self.evaluation.parameters.iter())
+            .map(|p| (p.key(), p.value))
+            .collect()
+    }
+
+    /// Each parameter's key and its expanded uncertainty U (k = 2).
+    fn expanded(&self) -> Vec<(String, f64)> {
+        (self.uncertainty.expanded.iter())
+            .map(|(k, u)| (k.clone(), *u))
+            .collect()
+    }
+
+    /// The whole of `eval --json`, and `uncertainty`.
+    fn json(&self, py: Python<'_>) -> PyResult<String> {
+        py.detach(|| {
+            to_json(&EvalJson {
+                evaluation: self.evaluation.json(),
+                applied: Applied {
+                    nde: None,
+                    tolerance: None,
+                    decision_rule: None,
+                },
+                file: &self.file,
+                recognised: &self.recognised,
+                other_tool: self.other_tool.as_ref(),
+                uncertainty: &self.uncertainty,
+            })
+        })
+    }
 }
 
 /// The parameters of `standard` (ISO 230-2 clause 2; GOST 27843 with S from ranges when
-/// asked) as `eval --json` prints them, with U per parameter.
+/// asked) as `eval` computes them, with U per parameter.
 #[pyfunction]
 #[pyo3(signature = (m, standard_key="iso230-2", s_from_ranges=false, instrument=None))]
 fn evaluate(
@@ -166,7 +212,7 @@ fn evaluate(
     standard_key: &str,
     s_from_ranges: bool,
     instrument: Option<&str>,
-) -> PyResult<String> {
+) -> PyResult<Evaluated> {
     let standard = standard(standard_key)?;
     if s_from_ranges && standard != StandardId::Gost27843 {
         return Err(PyValueError::new_err(
@@ -175,33 +221,25 @@ fn evaluate(
     }
     let setup = match instrument {
         None => Setup::for_axis(m.data.kind),
-        Some(name) => {
-            Setup::for_instrument(InstrumentKind::from_name(name).ok_or_else(|| {
-                PyValueError::new_err(format!("instrument: unknown kind `{name}`"))
-            })?)
-        }
+        Some(name) => Setup::for_instrument(InstrumentKind::from_name(name).ok_or_else(|| {
+            PyValueError::new_err(format!("instrument: unknown kind `{name}`"))
+        })?),
     };
-    py.detach(|| {
-        let method = match s_from_ranges {
-            true => SMethod::Ranges,
-            false => SMethod::Formula5,
-        };
-        let evaluation: Evaluation = axcheck_core::evaluate::evaluate_by(&m.data, standard, method);
+    let method = match s_from_ranges {
+        true => SMethod::Ranges,
+        false => SMethod::Formula5,
+    };
+    Ok(py.detach(|| {
+        let evaluation = axcheck_core::evaluate::evaluate_by(&m.data, standard, method);
         let reported = m.recognised.reported.as_ref();
-        let json = EvalJson {
-            evaluation: evaluation.json(),
-            applied: Applied {
-                nde: None,
-                tolerance: None,
-                decision_rule: None,
-            },
-            file: &m.file,
-            recognised: &m.recognised,
+        Evaluated {
+            uncertainty: uncertainty::evaluate(&setup, &evaluation),
+            evaluation,
             other_tool: reported.map(|r| axcheck_core::crosscheck::compare(r, &m.data)),
-            uncertainty: Some(uncertainty::evaluate(&setup, &evaluation)),
-        };
-        to_json(&json)
-    })
+            recognised: m.recognised.clone(),
+            file: m.file.clone(),
+        }
+    }))
 }
 
 /// `diagnose --json` of the measurement: what the standard's model gets wrong, and why.
@@ -398,6 +436,7 @@ fn controller_names() -> Vec<&'static str> {
 #[pymodule]
 fn _axcheck(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Measurement>()?;
+    m.add_class::<Evaluated>()?;
     m.add_function(wrap_pyfunction!(read, m)?)?;
     m.add_function(wrap_pyfunction!(read_text, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;
