@@ -16,7 +16,7 @@ only for :meth:`Evaluation.plot`.
 from __future__ import annotations
 
 import json
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple, Union
 
 from . import _axcheck
 from ._errors import ReadError
@@ -25,13 +25,18 @@ if TYPE_CHECKING:  # pragma: no cover
     import pandas
 
 __all__ = [
+    "Checked",
+    "Run",
     "Evaluation",
     "Measurement",
     "ReadError",
+    "check",
     "compensate",
+    "run",
     "controllers",
     "diagnose",
     "evaluate",
+    "plan",
     "read",
     "verify",
 ]
@@ -180,6 +185,13 @@ class Evaluation:
             rows.append(row)
         return pandas.DataFrame(rows).set_index("i")
 
+    def figures(self, family: str = "sans-serif") -> Dict[str, str]:
+        """ISO 230-2 Fig. 2a (``bidirectional``) and Fig. 2b (``unidirectional``) as SVG,
+        the scenes the axis report and ``summary.html`` draw (in a notebook:
+        ``IPython.display.SVG(e.figures()["bidirectional"])``)."""
+        both, each = self._raw.figures(family)
+        return {"bidirectional": both, "unidirectional": each}
+
     def plot(self, ax: Any = None) -> Any:
         """ISO 230-2 Fig. 2a/2b: each direction's mean deviation and its ±2s band at each
         target; returns the matplotlib axes."""
@@ -273,3 +285,128 @@ def verify(
 def controllers() -> List[str]:
     """The controllers whose table formats :func:`compensate` writes."""
     return list(_axcheck.controller_names())
+
+
+#: A summary-table cell: text, integer, number, boolean or None (empty).
+Cell = Union[str, int, float, bool, None]
+
+
+class Checked:
+    """A campaign as ``axcheck check`` judges it: one row per axis test in the columns of
+    ``summary.csv`` (a stable interface), and the gate."""
+
+    def __init__(self, raw: Any) -> None:
+        self._raw = raw
+        #: The columns of ``summary.csv``, in order.
+        self.columns: List[str] = list(raw.columns())
+        #: One row per axis test, in the columns' order.
+        self.rows: List[List[Cell]] = [list(r) for r in raw.rows()]
+
+    @property
+    def passed(self) -> bool:
+        """Whether every axis passes (``check``'s exit status 0)."""
+        return bool(self._raw.passed)
+
+    @property
+    def counts(self) -> str:
+        """The verdicts counted, as the command line's summary line says them."""
+        return str(self._raw.counts)
+
+    def frame(self) -> "pandas.DataFrame":
+        """The rows as a DataFrame with the columns of ``summary.csv``."""
+        import pandas
+
+        return pandas.DataFrame(self.rows, columns=self.columns)
+
+    def __repr__(self) -> str:
+        return f"Checked({len(self.rows)} tests: {self.counts})"
+
+
+def check(campaign: str, diagnose: bool = False) -> Checked:
+    """``axcheck check``: every axis of the campaign read, evaluated, checked against its
+    test plan's rules and judged against its limits, in parallel; nothing written. With
+    ``diagnose``, every test is diagnosed too (the ``diagnosis`` column). A campaign that
+    cannot be read raises ``ValueError`` naming file, line and key."""
+    return Checked(_axcheck.check(str(campaign), diagnose))
+
+
+class Run:
+    """A campaign run by the ``axcheck`` command line: its output folder and exit status."""
+
+    def __init__(self, out: str, exit_status: int, console: str) -> None:
+        #: The output folder.
+        self.out = out
+        #: 0: every axis passes; 1: some axis does not (see the command line's README).
+        self.exit_status = exit_status
+        #: What the command printed.
+        self.console = console
+
+    @property
+    def results(self) -> Dict[str, Any]:
+        """``results.json``: every axis test with everything the stages found."""
+        import os
+
+        with open(os.path.join(self.out, "results.json"), encoding="utf-8") as f:
+            value: Dict[str, Any] = json.load(f)
+        return value
+
+    def frame(self) -> "pandas.DataFrame":
+        """``summary.csv`` as a DataFrame (the columns of :meth:`Checked.frame`, the
+        parameters' units in their headers)."""
+        import os
+
+        import pandas
+
+        return pandas.read_csv(os.path.join(self.out, "summary.csv"), keep_default_na=False)
+
+
+def run(campaign: str, out: str = "out", *args: str) -> Run:
+    """``axcheck run CAMPAIGN --out OUT [ARGS…]``: every output written (PDF reports,
+    summary.html, the workbook, tables, compensation tables). The PDF and Parquet writers
+    are the command line's, not in this package: ``run`` calls the ``axcheck`` executable
+    (``AXCHECK_BIN``, else the one on ``PATH``; ``cargo install --path .`` installs it).
+    Exit status 2 (the campaign or an output could not be written) raises ``RuntimeError``
+    with the command's message."""
+    import os
+    import shutil
+    import subprocess
+
+    exe = os.environ.get("AXCHECK_BIN") or shutil.which("axcheck")
+    if not exe:
+        raise FileNotFoundError(
+            "axcheck.run needs the axcheck command line: set AXCHECK_BIN or put it on PATH "
+            "(cargo install --path . in the repository)"
+        )
+    done = subprocess.run(
+        [exe, "run", str(campaign), "--out", str(out), *args], capture_output=True, text=True
+    )
+    if done.returncode not in (0, 1):
+        raise RuntimeError(done.stderr.strip() or f"axcheck run exited with {done.returncode}")
+    return Run(str(out), done.returncode, done.stdout)
+
+
+def plan(
+    kind: str,
+    travel: Union[float, Tuple[float, float]],
+    standard: str = "iso230-2",
+    pitch: Optional[float] = None,
+    scale_pitch: Optional[float] = None,
+    runs: Optional[int] = None,
+    overrun: float = 5.0,
+    dwell_s: float = 4.0,
+    feed: float = 1000.0,
+    seed: int = 1,
+    targets: Optional[List[float]] = None,
+) -> Dict[str, Any]:
+    """A test plan before the laser is set up (``axcheck plan``): the standard's targets on
+    an axis of ``travel`` (a length, or ``(start, end)``; mm or deg), spaced as ISO 230-2
+    4.2 asks with offsets that sample the lead screw's ``pitch`` and the scale's, or the
+    ``targets`` given; checked by the test-plan rules (``findings``, empty for a plan
+    axcheck made). ``yaml`` is the plan file ``axcheck plan -o`` writes."""
+    span = [float(travel)] if isinstance(travel, (int, float)) else [float(t) for t in travel]
+    value: Dict[str, Any] = json.loads(
+        _axcheck.plan(
+            kind, span, standard, pitch, scale_pitch, runs, overrun, dwell_s, feed, seed, targets
+        )
+    )
+    return value

@@ -5,8 +5,11 @@
 //! it into dicts and DataFrames. The work runs with the GIL released, so that a thread pool
 //! of Python workers scales.
 
+use axcheck_campaign::batch::{self, BatchOptions};
+use axcheck_campaign::campaign::Campaign;
 use axcheck_campaign::campaign::stages::compensate as tables;
 use axcheck_campaign::measurement::{self, ReadError, ReadOptions, ReadTest, Recognised};
+use axcheck_campaign::table::{self, Cell};
 use axcheck_core::compensate::json::TableJson;
 use axcheck_core::compensate::{self, Active, Settings, TableSlot, controllers};
 use axcheck_core::evaluate::gost27843::SMethod;
@@ -183,6 +186,14 @@ impl Evaluated {
             .collect()
     }
 
+    /// ISO 230-2 Fig. 2a (bidirectional) and Fig. 2b (unidirectional) as SVG: the scenes
+    /// the axis report and `summary.html` draw, texts in `family`.
+    #[pyo3(signature = (family="sans-serif"))]
+    fn figures(&self, family: &str) -> (String, String) {
+        let [both, each] = axcheck_charts::figures::iso_charts(&self.evaluation);
+        (both.svg(family), each.svg(family))
+    }
+
     /// The whole of `eval --json`, and `uncertainty`.
     fn json(&self, py: Python<'_>) -> PyResult<String> {
         py.detach(|| {
@@ -221,9 +232,11 @@ fn evaluate(
     }
     let setup = match instrument {
         None => Setup::for_axis(m.data.kind),
-        Some(name) => Setup::for_instrument(InstrumentKind::from_name(name).ok_or_else(|| {
-            PyValueError::new_err(format!("instrument: unknown kind `{name}`"))
-        })?),
+        Some(name) => {
+            Setup::for_instrument(InstrumentKind::from_name(name).ok_or_else(|| {
+                PyValueError::new_err(format!("instrument: unknown kind `{name}`"))
+            })?)
+        }
     };
     let method = match s_from_ranges {
         true => SMethod::Ranges,
@@ -427,6 +440,154 @@ fn verify_table(
     })
 }
 
+/// A test plan before the laser is set up (`axcheck plan`): the standard's targets on the
+/// axis, spaced as ISO 230-2 4.2 asks with offsets that sample the declared pitches, or the
+/// `targets` given, checked by the test-plan rules; as JSON with the plan file's YAML
+/// (`plan -o`).
+#[pyfunction]
+#[pyo3(signature = (kind, travel, standard_key="iso230-2", pitch=None, scale_pitch=None, runs=None, overrun=5.0, dwell_s=4.0, feed=1000.0, seed=1, targets=None, continuous=false))]
+#[allow(clippy::too_many_arguments)]
+fn plan(
+    kind: &str,
+    travel: Vec<f64>,
+    standard_key: &str,
+    pitch: Option<f64>,
+    scale_pitch: Option<f64>,
+    runs: Option<usize>,
+    overrun: f64,
+    dwell_s: f64,
+    feed: f64,
+    seed: u64,
+    targets: Option<Vec<f64>>,
+    continuous: bool,
+) -> PyResult<String> {
+    use axcheck_core::plan::{self, Axis, Motion};
+    use axcheck_core::units::{AxisKind, Travel};
+    let kind = match kind {
+        "linear" => AxisKind::Linear,
+        "rotary" => AxisKind::Rotary,
+        other => {
+            let e = format!("kind: expected linear or rotary, got `{other}`");
+            return Err(PyValueError::new_err(e));
+        }
+    };
+    let travel = match travel[..] {
+        [l] if l > 0.0 => Travel::Length(l),
+        [a, b] if b > a => Travel::Range([a, b]),
+        _ => {
+            let e = "travel: expected a length > 0 or (start, end) with end > start";
+            return Err(PyValueError::new_err(e));
+        }
+    };
+    let axis = Axis {
+        kind,
+        standard: standard(standard_key)?,
+        travel,
+        continuous,
+        measurement_travel: None,
+        pitch,
+        scale_pitch,
+    };
+    let motion = Motion {
+        runs,
+        overrun,
+        dwell_s,
+        feed,
+        ..Motion::default()
+    };
+    let made = match targets {
+        Some(t) => plan::with_targets(&axis, &motion, t),
+        None => plan::plan(&axis, &motion, seed),
+    };
+    let made = made.map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let json = serde_json::json!({
+        "targets": made.targets,
+        "runs": made.runs,
+        "measurement_travel": made.measurement_travel,
+        "seed": made.seed,
+        "findings": made.findings,
+        "yaml": axcheck_campaign::plan::file::to_yaml(&made),
+    });
+    to_json(&json)
+}
+
+/// A summary-table cell as Python sees it (an empty cell is None).
+#[derive(IntoPyObject)]
+enum CellValue {
+    Text(String),
+    Int(i64),
+    Number(f64),
+    Bool(bool),
+}
+
+fn cell_value(cell: Cell) -> Option<CellValue> {
+    match cell {
+        Cell::Text(t) => Some(CellValue::Text(t)),
+        Cell::Int(i) => Some(CellValue::Int(i)),
+        Cell::Number(x) => Some(CellValue::Number(x)),
+        Cell::Bool(b) => Some(CellValue::Bool(b)),
+        Cell::Empty => None,
+    }
+}
+
+/// A campaign as `axcheck check` judges it: the rows of `summary.csv` and the gate.
+#[pyclass(frozen, module = "axcheck._axcheck")]
+struct Checked {
+    rows: Vec<Vec<Cell>>,
+    passed: bool,
+    counts: String,
+}
+
+#[pymethods]
+impl Checked {
+    /// The columns of `summary.csv`, in order (a stable interface).
+    fn columns(&self) -> Vec<String> {
+        table::columns().into_iter().map(|(name, _)| name).collect()
+    }
+
+    /// One row per axis test, the cells in the columns' order.
+    fn rows(&self) -> Vec<Vec<Option<CellValue>>> {
+        (self.rows.iter())
+            .map(|row| row.iter().cloned().map(cell_value).collect())
+            .collect()
+    }
+
+    /// Whether every axis passes the gate (`check`'s exit status 0).
+    #[getter]
+    fn passed(&self) -> bool {
+        self.passed
+    }
+
+    /// The verdicts counted, as the command line's summary line says them.
+    #[getter]
+    fn counts(&self) -> &str {
+        &self.counts
+    }
+}
+
+/// `axcheck check`: every axis of the campaign read, evaluated, rule-checked and judged
+/// in parallel (with `diagnose`, diagnosed too); nothing written.
+#[pyfunction]
+#[pyo3(signature = (campaign, diagnose=false))]
+fn check(py: Python<'_>, campaign: &str, diagnose: bool) -> PyResult<Checked> {
+    py.detach(|| {
+        let loaded = Campaign::load(Path::new(campaign))
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        // The readings kept: the table's `m` and `travel` come from them.
+        let options = BatchOptions {
+            diagnose,
+            drop_data: false,
+            compensate: false,
+        };
+        let result = batch::run(&loaded, options, &|_| {});
+        Ok(Checked {
+            rows: table::rows(&result),
+            passed: result.passes_gate(),
+            counts: result.counts_text(),
+        })
+    })
+}
+
 /// The controllers whose tables `compensate` writes.
 #[pyfunction]
 fn controller_names() -> Vec<&'static str> {
@@ -437,6 +598,9 @@ fn controller_names() -> Vec<&'static str> {
 fn _axcheck(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Measurement>()?;
     m.add_class::<Evaluated>()?;
+    m.add_class::<Checked>()?;
+    m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(plan, m)?)?;
     m.add_function(wrap_pyfunction!(read, m)?)?;
     m.add_function(wrap_pyfunction!(read_text, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;

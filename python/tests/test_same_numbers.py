@@ -132,3 +132,69 @@ def test_table_2_layout() -> None:
     assert round(table.loc[1, "mean_up"], 2) == -1.6
     assert round(table.loc[1, "reversal"], 2) == -3.86
     assert set(e.expanded_uncertainty) >= {"A", "E", "M", "R", "B"}
+
+
+def test_check_is_the_summary_table_of_run(tmp_path: Path) -> None:
+    """`axcheck.check` gives the rows of `summary.csv` as `run` writes it, cell by cell."""
+    import csv
+
+    out = tmp_path / "out"
+    code, _, stderr = run("run", "example-campaign/campaign.yaml", "--out", str(out), "--no-pdf")
+    assert code == 1, stderr  # the example fails on purpose
+    checked = axcheck.check("example-campaign/campaign.yaml", diagnose=True)
+    assert not checked.passed
+    with open(out / "summary.csv", newline="", encoding="utf-8") as f:
+        written = list(csv.reader(f))
+    assert written[0] == checked.columns
+    assert len(written) - 1 == len(checked.rows) == 21
+    for theirs, ours in zip(written[1:], checked.rows):
+        for column, text, cell in zip(checked.columns, theirs, ours):
+            if cell is None:
+                assert text == "", column
+            elif isinstance(cell, bool):
+                assert text == str(cell).lower(), column
+            elif isinstance(cell, float):
+                assert float(text) == cell, column  # bit for bit
+            else:
+                assert text == str(cell), column
+
+
+def test_run_writes_the_campaigns_outputs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("AXCHECK_BIN", cli())
+    done = axcheck.run("example-campaign/campaign.yaml", str(tmp_path / "out"), "--no-pdf")
+    assert done.exit_status == 1
+    assert len(done.results["axes"]) == 21  # one entry per axis test
+    assert (tmp_path / "out" / "summary.html").is_file()
+    with pytest.raises(RuntimeError, match="nope.yaml"):
+        axcheck.run("nope.yaml", str(tmp_path / "other"))
+
+
+def test_plan_is_the_command_lines(tmp_path: Path) -> None:
+    out = tmp_path / "plan.yaml"
+    code, _, stderr = run("plan", "--kind", "linear", "--travel", "1000", "--pitch", "10", "-o", str(out))
+    assert code == 0, stderr
+    ours = axcheck.plan("linear", 1000, pitch=10)
+    assert ours["yaml"] == out.read_text(encoding="utf-8")
+    assert ours["targets"][0] == 10.0 and ours["targets"][-1] == 990.0 and ours["runs"] == 5
+    assert ours["findings"] == []
+    # Targets given are checked by the same rules: 3 targets over 980 mm are too few
+    # (ISO 230-2 4.3.2), and evenly spaced ones may alias a periodic error (4.2).
+    few = axcheck.plan("linear", 1000, targets=[10.0, 500.0, 990.0])
+    assert [f["id"] for f in few["findings"]] == ["iso-4.3.2-targets", "iso-4.2-uniform-spacing"]
+
+
+def test_the_figures_are_the_reports_scenes() -> None:
+    """ISO 230-2 Fig. 2a and 2b as SVG: well-formed, with the parameters the report's
+    chart prints beside them."""
+    import xml.etree.ElementTree as ET
+
+    e = axcheck.evaluate(axcheck.read("tests/data/iso230-2_table2.csv"))
+    texts = {}
+    for name, svg in e.figures().items():
+        root = ET.fromstring(svg)
+        texts[name] = [t.text for t in root.iter("{http://www.w3.org/2000/svg}text")]
+    both = texts["bidirectional"]
+    for symbol, value in (("A", "9.59"), ("E", "7.70"), ("M", "3.99")):
+        assert both[both.index(symbol) + 1] == value, both
+    each = texts["unidirectional"]
+    assert each[each.index("A↑") + 1] == "6.14" and each[each.index("A↓") + 1] == "5.77", each

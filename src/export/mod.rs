@@ -13,11 +13,13 @@ pub mod parquet;
 pub mod paths;
 #[cfg(feature = "pdf")]
 pub mod pdf;
-pub mod table;
 mod workers;
 pub mod xlsx;
 
 use crate::results::CampaignResult;
+/// The summary table (`axcheck-campaign`'s): the rows of `summary.csv`, the parquet file,
+/// the workbook and Python's `check`.
+pub use axcheck_campaign::table;
 use std::path::{Path, PathBuf};
 
 /// An output that could not be produced or written.

@@ -24,6 +24,7 @@ const LAYERS: &[&[&str]] = &[
     &["verify"],
     &["campaign"],
     &["results"],
+    &["table"],
     &["chart_kit"],
     &["charts"],
     &["data"],

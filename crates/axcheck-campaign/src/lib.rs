@@ -24,6 +24,7 @@ pub mod plan;
 pub mod results;
 pub mod safe_text;
 pub mod simulate;
+pub mod table;
 pub mod trend;
 pub mod yaml;
 

@@ -1,5 +1,6 @@
-//! The summary table shared by the CSV, parquet and Markdown outputs: one row per axis
-//! test, a fixed set of columns.
+//! The summary table shared by the CSV, parquet, Markdown and workbook outputs and the
+//! Python package's `check`: one row per axis test, a fixed set of columns (a stable
+//! interface, README "Outputs").
 
 use crate::evaluate::catalogue;
 use crate::results::{AxisTest, CampaignResult};
