@@ -9,7 +9,7 @@ venv=$(mktemp -d)/venv
 wheels=$(mktemp -d)
 trap 'rm -rf "$(dirname "$venv")" "$wheels"' EXIT
 python3 -m venv "$venv"
-"$venv/bin/pip" install --quiet --disable-pip-version-check "maturin>=1.9,<2" pytest pandas mypy nbclient nbformat ipykernel
+"$venv/bin/pip" install --quiet --disable-pip-version-check "maturin>=1.9,<2" pytest pandas polars mypy nbclient nbformat ipykernel
 "$venv/bin/maturin" build --release --quiet -o "$wheels"
 "$venv/bin/pip" install --quiet --disable-pip-version-check "$wheels"/axcheck-*.whl
 # The package as installed, not the source folder beside the tests.

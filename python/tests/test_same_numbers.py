@@ -198,3 +198,12 @@ def test_the_figures_are_the_reports_scenes() -> None:
         assert both[both.index(symbol) + 1] == value, both
     each = texts["unidirectional"]
     assert each[each.index("A↑") + 1] == "6.14" and each[each.index("A↓") + 1] == "5.77", each
+
+
+def test_a_polars_frame_reads_as_its_file() -> None:
+    polars = pytest.importorskip("polars")
+    m = axcheck.read("tests/data/iso230-2_table2.csv")
+    rows = m.readings()
+    columns = ["target_mm", "direction", "run", "deviation_um"]
+    frame = polars.DataFrame({c: [r[k] for r in rows] for k, c in enumerate(columns)})
+    assert axcheck.evaluate(axcheck.Measurement.from_frame(frame)).values == axcheck.evaluate(m).values

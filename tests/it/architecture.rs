@@ -41,6 +41,7 @@ const MAX_FILE_LINES: usize = 800;
 
 /// The source folders of the workspace's crates, the top first (README "Layout").
 const CRATES: &[&str] = &[
+    "python/src",
     "src",
     "crates/axcheck-charts/src",
     "crates/axcheck-campaign/src",
@@ -69,6 +70,9 @@ const FORBIDDEN: &[(&str, &[&str])] = &[
         "crates/axcheck-charts",
         &["typst", "polars", "calamine", "rust_xlsxwriter"],
     ),
+    // The Python package wraps the pure crates: a wheel without Typst or polars, and
+    // nothing of the root package (README "Python").
+    ("python", &["typst", "polars"]),
 ];
 
 /// The `.rs` files under `dir` (relative to the workspace), each with its path in the crate.
