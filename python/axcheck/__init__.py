@@ -271,12 +271,15 @@ def verify(
     backlash: Optional[float] = None,
     axis: Optional[str] = None,
     standard: str = "iso230-2",
+    others: Optional[Dict[str, str]] = None,
 ) -> Dict[str, Any]:
     """Whether the table loaded between ``before`` and ``after`` did what it predicted
-    (``verify --json``), and if not what went wrong."""
+    (``verify --json``), and if not what went wrong; ``others`` maps another axis of the
+    machine to its table file, to tell a table loaded on the wrong axis (``--other``)."""
+    pairs = sorted((others or {}).items())
     value: Dict[str, Any] = json.loads(
         _axcheck.verify(
-            before._raw, after._raw, controller, table, active, active_backlash, backlash, axis, standard
+            before._raw, after._raw, controller, table, active, active_backlash, backlash, axis, standard, pairs
         )
     )
     return value

@@ -11,7 +11,7 @@ use axcheck_campaign::campaign::stages::compensate as tables;
 use axcheck_campaign::measurement::{self, ReadError, ReadOptions, ReadTest, Recognised};
 use axcheck_campaign::table::{self, Cell};
 use axcheck_core::compensate::json::TableJson;
-use axcheck_core::compensate::{self, Active, Settings, TableSlot, controllers};
+use axcheck_core::compensate::{self, Settings, TableSlot, controllers};
 use axcheck_core::evaluate::gost27843::SMethod;
 use axcheck_core::evaluate::{Evaluation, StandardId};
 use axcheck_core::measurement::AxisData;
@@ -330,13 +330,8 @@ fn compensate_table(
 ) -> PyResult<String> {
     let c = controller(controller_name)?;
     let standard = standard(standard_key)?;
-    let file = active.filter(|a| *a != "none");
-    let state = match (active, active_backlash) {
-        (None, None) => None,
-        _ => Some(tables::active_state(file, active_backlash, |p| {
-            table_file(p, "active", c, m, axis)
-        })?),
-    };
+    let state = tables::given_active_state(active, active_backlash, "active", c, m.data.kind, axis)
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
     let settings = Settings {
         interval,
         reference,
@@ -358,18 +353,11 @@ fn compensation_json(
     standard: StandardId,
     settings: &Settings,
 ) -> PyResult<String> {
-    let options = axcheck_core::diagnose::Options {
-        pitch: settings.pitch,
-        standard,
-        ..Default::default()
-    };
-    let diagnosis = axcheck_core::diagnose::diagnose(&m.data, &options);
-    let done = compensate::compensation(c, &m.data, standard, settings, &diagnosis);
+    let (done, measured) = compensate::of_measurement(c, &m.data, standard, settings);
     let table = done
         .outcome
         .as_ref()
         .map_err(|refused| PyValueError::new_err(refused.to_string()))?;
-    let measured = axcheck_core::evaluate::evaluate(&m.data, standard);
     let unit = m.data.kind.deviation_unit();
     /// `compensate --json` and the text of the file it would write.
     #[derive(Serialize)]
@@ -387,7 +375,7 @@ fn compensation_json(
 /// `verify --json`: whether the table loaded between `before` and `after` did what it
 /// predicted, and if not what went wrong.
 #[pyfunction]
-#[pyo3(name = "verify", signature = (before, after, controller_name, table, active=None, active_backlash=None, backlash=None, axis=None, standard_key="iso230-2"))]
+#[pyo3(name = "verify", signature = (before, after, controller_name, table, active=None, active_backlash=None, backlash=None, axis=None, standard_key="iso230-2", others=Vec::new()))]
 #[allow(clippy::too_many_arguments)]
 fn verify_table(
     py: Python<'_>,
@@ -400,33 +388,33 @@ fn verify_table(
     backlash: Option<f64>,
     axis: Option<&str>,
     standard_key: &str,
+    others: Vec<(String, String)>,
 ) -> PyResult<String> {
     let c = controller(controller_name)?;
     let standard = standard(standard_key)?;
     let kind = after.data.kind;
-    let old = tables::active_state(active.filter(|a| *a != "none"), active_backlash, |p| {
-        table_file(p, "active", c, after, axis)
-    })?;
-    let loaded = Active {
-        table: Some(table_file(table, "table", c, after, axis)?),
-        file: Some(table.to_string()),
-        backlash: backlash.or(old.backlash),
-    };
-    let rule = c.backlash();
-    let new = (loaded.total(rule, kind))
-        .ok_or_else(|| PyValueError::new_err(format!("{table}: an empty table")))?;
-    let old = old.total(rule, kind);
+    let others = (others.iter())
+        .map(|(axis, path)| tables::other_table(axis, Path::new(path), "others", c, kind))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let old = tables::given_active_state(active, active_backlash, "active", c, kind, axis)
+        .map_err(|e| PyValueError::new_err(e.to_string()))?
+        .unwrap_or_default();
+    let new = table_file(table, "table", c, after, axis)?;
+    let compared = tables::compared_tables(&old, new, table, backlash, c, kind)
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
     py.detach(|| {
         let input = verify::VerifyInput {
             before: &before.data,
             after: &after.data,
-            old: old.as_ref(),
-            new: &new,
-            others: &[],
+            old: compared.old.as_ref(),
+            new: &compared.new,
+            others: &others,
             controller: Some(c),
             standard,
         };
-        let v = verify::verify(&input).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let mut v = verify::verify(&input).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        v.notes.extend(compared.notes.iter().cloned());
         #[derive(Serialize)]
         struct WithFile<'a, T> {
             #[serde(flatten)]

@@ -92,9 +92,11 @@ def test_verify_is_the_command_lines() -> None:
     before = "example-campaign/data/mill3-y-before.csv"
     after = "example-campaign/data/mill3-y.csv"
     table = "example-campaign/active/MILL-3/Y.txt"
-    code, stdout, stderr = run("verify", before, after, "--table", table, "-c", "linuxcnc", "--json")
+    other = "example-campaign/active/MILL-3/X.txt"
+    args = ["--table", table, "-c", "linuxcnc", "--other", f"X={other}", "--json"]
+    code, stdout, stderr = run("verify", before, after, *args)
     assert code in (0, 1), stderr
-    ours = axcheck.verify(axcheck.read(before), axcheck.read(after), "linuxcnc", table)
+    ours = axcheck.verify(axcheck.read(before), axcheck.read(after), "linuxcnc", table, others={"X": other})
     assert ours == json.loads(stdout)
     assert ours["verdict"] != "effective"  # Y was loaded with its trims negated
 

@@ -95,19 +95,8 @@ pub fn active_state(
     {
         return Err(anyhow!("--active-backlash: expected a number, got {b}"));
     }
-    let file = match table {
-        None if backlash.is_none() => return Ok(None),
-        None | Some("none") => None,
-        Some(path) => Some(path),
-    };
-    let active = stages::active_state(file, backlash, |path| {
-        let at = stages::TableFile::Given {
-            path: Path::new(path),
-            key: "--active",
-        };
-        stages::read_table(at, controller, kind, axis)
-    })?;
-    Ok(Some(active))
+    let given = stages::given_active_state(table, backlash, "--active", controller, kind, axis);
+    Ok(given?)
 }
 
 /// A table file given as the option `key`, read as `controller` reads it.
@@ -214,19 +203,8 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
     {
         return Err(anyhow!("--interval: expected a step > 0, got {step}"));
     }
-    let options = axcheck::diagnose::Options {
-        pitch: request.settings.pitch,
-        standard: request.standard,
-        ..Default::default()
-    };
-    let diagnosis = axcheck::diagnose::diagnose(data, &options);
-    let c = compensate::compensation(
-        controller,
-        data,
-        request.standard,
-        &request.settings,
-        &diagnosis,
-    );
+    let (c, measured) =
+        compensate::of_measurement(controller, data, request.standard, &request.settings);
     let done = c
         .outcome
         .as_ref()
@@ -235,7 +213,6 @@ pub fn run(data: &AxisData, request: &Request) -> Result<String> {
         axcheck::atomic::write(out, done.file.as_bytes())
             .with_context(|| format!("cannot write {}", out.display()))?;
     }
-    let measured = axcheck::evaluate::evaluate(data, request.standard);
     if request.json {
         let unit = data.kind.deviation_unit();
         let file = request.out.map(|p| p.display().to_string());

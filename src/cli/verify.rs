@@ -5,7 +5,7 @@
 use super::compensate::{active_state, controller, read_table};
 use super::text::{left, right};
 use anyhow::{Result, anyhow};
-use axcheck::compensate::Active;
+use axcheck::campaign::stages::compensate::{compared_tables, other_table};
 use axcheck::evaluate::StandardId;
 use axcheck::measurement;
 use axcheck::units::{AxisKind, fmt_fixed, fmt_position};
@@ -67,27 +67,21 @@ pub fn run(args: &VerifyArgs) -> Result<(String, bool)> {
         axis,
     )?
     .unwrap_or_default();
-    let loaded = Active {
-        table: Some(read_table(&args.table, "--table", controller, kind, axis)?),
-        file: Some(args.table.display().to_string()),
-        backlash: args.backlash.or(old.backlash),
-    };
-    let rule = controller.backlash();
-    let new = loaded
-        .total(rule, kind)
-        .ok_or_else(|| anyhow!("{}: an empty table", args.table.display()))?;
+    let table = read_table(&args.table, "--table", controller, kind, axis)?;
+    let file = args.table.display().to_string();
+    let compared = compared_tables(&old, table, &file, args.backlash, controller, kind)?;
     let others = others(&args.other, controller, kind)?;
-    let old = old.total(rule, kind);
     let input = verify::VerifyInput {
         before: &before,
         after: &after,
-        old: old.as_ref(),
-        new: &new,
+        old: compared.old.as_ref(),
+        new: &compared.new,
         others: &others,
         controller: Some(controller),
         standard: args.standard,
     };
-    let v = verify::verify(&input)?;
+    let mut v = verify::verify(&input)?;
+    v.notes.extend(compared.notes);
     let effective = v.verdict == Effectiveness::Effective;
     let text = if args.json {
         let name = args.after.display().to_string();
@@ -111,12 +105,7 @@ fn others(
                 .split_once('=')
                 .ok_or_else(|| anyhow!("--other: expected AXIS=FILE, got `{g}`"))?;
             let path = std::path::Path::new(file);
-            let table = read_table(path, "--other", controller, kind, Some(axis))
-                .or_else(|_| read_table(path, "--other", controller, kind, None))?;
-            Ok(Other {
-                axis: axis.to_string(),
-                new: table,
-            })
+            Ok(other_table(axis, path, "--other", controller, kind)?)
         })
         .collect()
 }

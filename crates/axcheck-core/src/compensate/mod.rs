@@ -181,6 +181,25 @@ impl Compensation {
     }
 }
 
+/// The compensation of one measurement outside a campaign (`axcheck compensate`, the
+/// Python package's `compensate`): its diagnosis made for the warnings (with the lead
+/// screw's pitch the settings give), and the parameters as measured.
+pub fn of_measurement(
+    controller: &dyn Controller,
+    data: &AxisData,
+    standard: StandardId,
+    settings: &Settings,
+) -> (Compensation, Evaluation) {
+    let options = crate::diagnose::Options {
+        pitch: settings.pitch,
+        standard,
+        ..Default::default()
+    };
+    let diagnosis = crate::diagnose::diagnose(data, &options);
+    let c = compensation(controller, data, standard, settings, &diagnosis);
+    (c, evaluate::evaluate(data, standard))
+}
+
 /// The compensation of `data` by `controller`, with the warnings of its `diagnosis`.
 pub fn compensation(
     controller: &dyn Controller,

@@ -171,6 +171,33 @@ pub fn settings(
     })
 }
 
+/// The active state given outside a campaign (the commands' `--active` and
+/// `--active-backlash`, the Python package's `active` and `active_backlash`): a table file
+/// given by the option `key`, `none` for no table, and the backlash; `None` when neither
+/// says anything (the state is unknown).
+pub fn given_active_state(
+    table: Option<&str>,
+    backlash: Option<f64>,
+    key: &'static str,
+    controller: &dyn Controller,
+    kind: AxisKind,
+    axis: Option<&str>,
+) -> Result<Option<Active>, StatedTableError> {
+    let file = match table {
+        None if backlash.is_none() => return Ok(None),
+        None | Some("none") => None,
+        Some(path) => Some(path),
+    };
+    let active = active_state(file, backlash, |path| {
+        let at = TableFile::Given {
+            path: Path::new(path),
+            key,
+        };
+        read_table(at, controller, kind, axis)
+    })?;
+    Ok(Some(active))
+}
+
 /// A stated active state, its table read as `controller` reads it.
 fn active(
     raw: &ActiveRaw,
@@ -252,14 +279,67 @@ fn case(
             read_table(at, controller, kind, settings.place.axis.as_deref())?
         }
     };
+    let backlash = v.backlash_um.or(v.backlash_arcsec);
+    let compared = compared_tables(&before_active, table, &v.table, backlash, controller, kind)?;
+    Ok(VerifyCase {
+        before,
+        old: compared.old,
+        new: compared.new,
+        controller: controller.name(),
+        notes: compared.notes,
+    })
+}
+
+/// The table loaded on another axis of the machine, read from `path` given by the option
+/// `key` (the axis's own table from a file of several, else the file's only one), to tell
+/// a table loaded on the wrong axis.
+pub fn other_table(
+    axis: &str,
+    path: &Path,
+    key: &'static str,
+    controller: &dyn Controller,
+    kind: AxisKind,
+) -> Result<crate::verify::Other, StatedTableError> {
+    let at = TableFile::Given { path, key };
+    let table = read_table(at, controller, kind, Some(axis))
+        .or_else(|_| read_table(at, controller, kind, None))?;
+    Ok(crate::verify::Other {
+        axis: axis.to_string(),
+        new: table,
+    })
+}
+
+/// The corrections a re-measurement is compared with, as the controller adds them.
+#[derive(Debug, Clone)]
+pub struct ComparedTables {
+    /// Active during the measurement before (`None`: nothing was).
+    pub old: Option<Table>,
+    /// Loaded since.
+    pub new: Table,
+    /// What was assumed (an unstated backlash).
+    pub notes: Vec<String>,
+}
+
+/// The correction active during the measurement before (`before`) and the one loaded since:
+/// `table` from `file` with the backlash loaded with it; unstated, the backlash active
+/// before, which a note says. The one composition for a campaign's `verifies:`, the command
+/// `verify` and the Python package's.
+pub fn compared_tables(
+    before: &Active,
+    table: Table,
+    file: &str,
+    backlash: Option<f64>,
+    controller: &dyn Controller,
+    kind: AxisKind,
+) -> Result<ComparedTables, StatedTableError> {
     let mut notes = Vec::new();
     let mut loaded = Active {
         table: Some(table),
-        file: Some(v.table.clone()),
-        backlash: v.backlash_um.or(v.backlash_arcsec),
+        file: Some(file.to_string()),
+        backlash,
     };
-    if loaded.backlash.is_none() && before_active.backlash.is_some() {
-        loaded.backlash = before_active.backlash;
+    if loaded.backlash.is_none() && before.backlash.is_some() {
+        loaded.backlash = before.backlash;
         notes.push(
             "the backlash loaded with the table was not stated: taken as the one active before"
                 .into(),
@@ -267,11 +347,9 @@ fn case(
     }
     let rule = controller.backlash();
     let new = loaded.total(rule, kind).ok_or(StatedTableError::Empty)?;
-    Ok(VerifyCase {
-        before,
-        old: before_active.total(rule, kind),
+    Ok(ComparedTables {
+        old: before.total(rule, kind),
         new,
-        controller: controller.name(),
         notes,
     })
 }
