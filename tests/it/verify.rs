@@ -779,3 +779,33 @@ fn a_table_re_measured_at_other_targets_is_effective_despite_an_unresolved_pitch
     eprintln!("effective in {right} of 40");
     assert!(right >= 38, "effective in {right} of 40");
 }
+
+/// `verify` without `--backlash` takes the backlash loaded with the table as the one active
+/// before (`--active-backlash`) and says so in its notes, as a campaign's `verifies:` does;
+/// stated, there is no such note.
+#[test]
+fn an_unstated_loaded_backlash_is_taken_from_before_and_noted() {
+    const NOTE: &str =
+        "the backlash loaded with the table was not stated: taken as the one active before";
+    let verify = |extra: &[&str]| {
+        let mut args = vec![
+            "verify",
+            "example-campaign/data/mill3-x-before.csv",
+            "example-campaign/data/mill3-x.csv",
+            "--controller",
+            "linuxcnc",
+            "--table",
+            "example-campaign/active/MILL-3/X.txt",
+            "--active-backlash",
+            "3",
+            "--json",
+        ];
+        args.extend_from_slice(extra);
+        let (code, out, err) = axcheck(&args);
+        assert!(code <= 1, "{err}");
+        let json: serde_json::Value = serde_json::from_str(&out).unwrap();
+        json["notes"].as_array().unwrap().clone()
+    };
+    assert!(verify(&[]).iter().any(|n| n == NOTE));
+    assert!(!verify(&["--backlash", "3"]).iter().any(|n| n == NOTE));
+}
