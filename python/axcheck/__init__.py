@@ -36,6 +36,7 @@ __all__ = [
     "controllers",
     "diagnose",
     "evaluate",
+    "parameters",
     "plan",
     "read",
     "verify",
@@ -283,6 +284,19 @@ def verify(
         )
     )
     return value
+
+
+def parameters(standard: str = "iso230-2") -> List[Dict[str, str]]:
+    """The parameters ``standard`` defines, in its order, each with its ``key`` (as in
+    :attr:`Evaluation.values`), ``symbol``, ``name`` and the ``clause`` that defines it:
+
+    >>> [p["clause"] for p in axcheck.parameters() if p["key"] == "A"]
+    ['ISO 230-2 2.23']
+    """
+    return [
+        {"key": k, "symbol": s, "name": n, "clause": c}
+        for k, s, n, c in _axcheck.parameters(standard)
+    ]
 
 
 def controllers() -> List[str]:

@@ -576,6 +576,19 @@ fn check(py: Python<'_>, campaign: &str, diagnose: bool) -> PyResult<Checked> {
     })
 }
 
+/// The parameters `standard` defines, in its order: key, symbol, name and the clause (and
+/// formula) that defines it, as the reports and `eval --json`'s `details` name them.
+#[pyfunction]
+#[pyo3(signature = (standard_key="iso230-2"))]
+fn parameters(
+    standard_key: &str,
+) -> PyResult<Vec<(&'static str, &'static str, &'static str, &'static str)>> {
+    let standard = standard(standard_key)?;
+    Ok(axcheck_core::evaluate::catalogue::of(standard)
+        .map(|d| (d.key.as_str(), d.symbol, d.name, d.clause))
+        .collect())
+}
+
 /// The controllers whose tables `compensate` writes.
 #[pyfunction]
 fn controller_names() -> Vec<&'static str> {
@@ -589,6 +602,7 @@ fn _axcheck(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Checked>()?;
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;
+    m.add_function(wrap_pyfunction!(parameters, m)?)?;
     m.add_function(wrap_pyfunction!(read, m)?)?;
     m.add_function(wrap_pyfunction!(read_text, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;

@@ -209,3 +209,16 @@ def test_a_polars_frame_reads_as_its_file() -> None:
     columns = ["target_mm", "direction", "run", "deviation_um"]
     frame = polars.DataFrame({c: [r[k] for r in rows] for k, c in enumerate(columns)})
     assert axcheck.evaluate(axcheck.Measurement.from_frame(frame)).values == axcheck.evaluate(m).values
+
+
+def test_the_catalogue_names_each_parameter_with_its_clause() -> None:
+    """Each parameter an evaluation gives is in the catalogue, with the clause `eval --json`
+    prints in `details`."""
+    e = axcheck.evaluate(axcheck.read("tests/data/gost27843_example.csv"), standard="gost27843")
+    catalogue = {p["key"]: p for p in axcheck.parameters("gost27843")}
+    assert set(e.values) <= set(catalogue)
+    for detail in e.parameters:
+        assert catalogue[detail["key"]]["clause"] == detail["clause"]
+        assert catalogue[detail["key"]]["name"] == detail["name"]
+    iso = {p["key"]: p["clause"] for p in axcheck.parameters()}
+    assert iso["A"] == "ISO 230-2 2.23" and iso["B"] == "ISO 230-2 2.13"
