@@ -93,6 +93,18 @@ fn to_json<T: Serialize>(value: &T) -> PyResult<String> {
     serde_json::to_string_pretty(value).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
+/// `value`'s JSON and the measurement's `file` after it, as the command line's
+/// `json_with_file` prints `diagnose --json` and `verify --json`.
+fn json_with_file<T: Serialize>(value: T, file: &str) -> PyResult<String> {
+    #[derive(Serialize)]
+    struct WithFile<'a, T> {
+        #[serde(flatten)]
+        value: T,
+        file: &'a str,
+    }
+    to_json(&WithFile { value, file })
+}
+
 fn standard(text: &str) -> PyResult<StandardId> {
     StandardId::parse(text).ok_or_else(|| {
         PyValueError::new_err(format!(
@@ -271,17 +283,7 @@ fn diagnose(
     };
     py.detach(|| {
         let d = axcheck_core::diagnose::diagnose(&m.data, &options);
-        #[derive(Serialize)]
-        struct WithFile<'a, T> {
-            #[serde(flatten)]
-            value: T,
-            file: &'a str,
-        }
-        let json = d.json(axcheck_campaign::simulate::model_text);
-        to_json(&WithFile {
-            value: json,
-            file: &m.file,
-        })
+        json_with_file(d.json(axcheck_campaign::simulate::model_text), &m.file)
     })
 }
 
@@ -415,16 +417,7 @@ fn verify_table(
         };
         let mut v = verify::verify(&input).map_err(|e| PyValueError::new_err(e.to_string()))?;
         v.notes.extend(compared.notes.iter().cloned());
-        #[derive(Serialize)]
-        struct WithFile<'a, T> {
-            #[serde(flatten)]
-            value: T,
-            file: &'a str,
-        }
-        to_json(&WithFile {
-            value: v.json(),
-            file: &after.file,
-        })
+        json_with_file(v.json(), &after.file)
     })
 }
 
