@@ -30,8 +30,8 @@ pub mod report;
 pub mod session;
 
 pub use axcheck_campaign::{
-    atomic, batch, campaign, files, judge, lock, measurement, panics, plan, results, safe_text,
-    simulate, trend, yaml,
+    atomic, batch, campaign, files, judge, lock, measurement, one_file, panics, plan, results,
+    safe_text, simulate, trend, yaml,
 };
 pub use axcheck_core::{
     axis_model, compensate, crosscheck, diagnose, evaluate, nde, rules, suggest, uncertainty,

@@ -16,7 +16,8 @@ only for :meth:`Evaluation.plot`.
 from __future__ import annotations
 
 import json
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple, Union
+import os
+from typing import TYPE_CHECKING, Any, Dict, Iterable, List, Literal, Optional, Tuple, Union, overload
 
 from . import _axcheck
 from ._errors import ReadError
@@ -36,6 +37,7 @@ __all__ = [
     "controllers",
     "diagnose",
     "evaluate",
+    "evaluate_files",
     "parameters",
     "plan",
     "read",
@@ -230,6 +232,52 @@ def evaluate(
     ``vdi3441``, ``nmtba``) and U per parameter; GOST 27843 with S from the ranges
     (formula 6) when ``s_from_ranges``."""
     return Evaluation(_axcheck.evaluate(m._raw, standard, s_from_ranges, instrument))
+
+
+@overload
+def evaluate_files(
+    paths: Iterable[Union[str, "os.PathLike[str]"]],
+    standard: str = ...,
+    s_from_ranges: bool = ...,
+    instrument: Optional[str] = ...,
+    jobs: Optional[int] = ...,
+    errors: Literal["raise"] = ...,
+) -> List[Evaluation]: ...
+@overload
+def evaluate_files(
+    paths: Iterable[Union[str, "os.PathLike[str]"]],
+    standard: str = ...,
+    s_from_ranges: bool = ...,
+    instrument: Optional[str] = ...,
+    jobs: Optional[int] = ...,
+    *,
+    errors: Literal["return"],
+) -> List[Union[Evaluation, ReadError]]: ...
+def evaluate_files(
+    paths: Iterable[Union[str, "os.PathLike[str]"]],
+    standard: str = "iso230-2",
+    s_from_ranges: bool = False,
+    instrument: Optional[str] = None,
+    jobs: Optional[int] = None,
+    errors: str = "raise",
+) -> Union[List[Evaluation], List[Union[Evaluation, ReadError]]]:
+    """Each file read and evaluated as ``evaluate(read(path), ...)`` would, in one call:
+    the files are spread over ``jobs`` threads (default: one per core) with the GIL
+    released once, which a Python loop or thread pool over small files cannot do.
+
+    Returns one :class:`Evaluation` per path, in the paths' order. A file that cannot be
+    read raises its :class:`ReadError` (the first in the paths' order, after all were
+    tried) when ``errors="raise"``; with ``errors="return"`` the error takes the file's
+    place in the list."""
+    if errors not in ("raise", "return"):
+        raise ValueError(f"errors: expected 'raise' or 'return', not {errors!r}")
+    names = [os.fspath(p) for p in paths]
+    done = _axcheck.evaluate_files(names, standard, s_from_ranges, instrument, jobs)
+    if errors == "raise":
+        for item in done:
+            if isinstance(item, ReadError):
+                raise item
+    return [item if isinstance(item, ReadError) else Evaluation(item) for item in done]
 
 
 def diagnose(m: Measurement, standard: str = "iso230-2", pitch: Optional[float] = None) -> Dict[str, Any]:

@@ -1,6 +1,6 @@
 """The compiled core (Rust, PyO3). Use the functions of :mod:`axcheck` instead."""
 
-from typing import List, Optional, Tuple, Union
+from typing import List, Optional, Sequence, Tuple, Union
 
 __version__: str
 
@@ -34,6 +34,13 @@ def evaluate(
     s_from_ranges: bool = False,
     instrument: Optional[str] = None,
 ) -> Evaluated: ...
+def evaluate_files(
+    paths: Sequence[str],
+    standard_key: str = "iso230-2",
+    s_from_ranges: bool = False,
+    instrument: Optional[str] = None,
+    jobs: Optional[int] = None,
+) -> List[Union[Evaluated, ValueError]]: ...
 def diagnose(m: Measurement, standard_key: str = "iso230-2", pitch: Optional[float] = None) -> str: ...
 def compensate(
     m: Measurement,

@@ -9,6 +9,7 @@ use axcheck_campaign::batch::{self, BatchOptions};
 use axcheck_campaign::campaign::Campaign;
 use axcheck_campaign::campaign::stages::compensate as tables;
 use axcheck_campaign::measurement::{self, ReadError, ReadOptions, ReadTest, Recognised};
+use axcheck_campaign::one_file::{Applied, EvalJson, WithFile};
 use axcheck_campaign::table::{self, Cell};
 use axcheck_core::compensate::json::TableJson;
 use axcheck_core::compensate::{self, Settings, TableSlot, controllers};
@@ -93,15 +94,9 @@ fn to_json<T: Serialize>(value: &T) -> PyResult<String> {
     serde_json::to_string_pretty(value).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// `value`'s JSON and the measurement's `file` after it, as the command line's
-/// `json_with_file` prints `diagnose --json` and `verify --json`.
+/// `value`'s JSON and the measurement's `file` after it, as the command line prints
+/// `diagnose --json` and `verify --json`.
 fn json_with_file<T: Serialize>(value: T, file: &str) -> PyResult<String> {
-    #[derive(Serialize)]
-    struct WithFile<'a, T> {
-        #[serde(flatten)]
-        value: T,
-        file: &'a str,
-    }
     to_json(&WithFile { value, file })
 }
 
@@ -149,28 +144,6 @@ fn read_text(py: Python<'_>, text: &str, name: &str) -> PyResult<Measurement> {
     })
 }
 
-/// What `eval` applied: nothing but the evaluation (no NDE, no tolerance, no rule).
-#[derive(Serialize)]
-struct Applied {
-    nde: Option<()>,
-    tolerance: Option<()>,
-    decision_rule: Option<()>,
-}
-
-/// `eval --json` of the measurement, with `uncertainty` (ISO 230-9: U per parameter for
-/// the axis kind's usual instrument, or `instrument`'s) after it.
-#[derive(Serialize)]
-struct EvalJson<'a, E> {
-    #[serde(flatten)]
-    evaluation: E,
-    applied: Applied,
-    file: &'a str,
-    recognised: &'a Recognised,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    other_tool: Option<&'a axcheck_core::crosscheck::OtherTool>,
-    uncertainty: &'a uncertainty::Uncertainty,
-}
-
 /// One test's parameters and their U. The values are handed over as they are asked for,
 /// the whole JSON only when it is (it is most of the cost of a small file).
 #[pyclass(frozen, module = "axcheck._axcheck")]
@@ -211,17 +184,60 @@ impl Evaluated {
         py.detach(|| {
             to_json(&EvalJson {
                 evaluation: self.evaluation.json(),
-                applied: Applied {
-                    nde: None,
-                    tolerance: None,
-                    decision_rule: None,
-                },
+                applied: &Applied::default(),
                 file: &self.file,
                 recognised: &self.recognised,
                 other_tool: self.other_tool.as_ref(),
-                uncertainty: &self.uncertainty,
+                uncertainty: Some(&self.uncertainty),
             })
         })
+    }
+}
+
+/// What to evaluate by: the standard, GOST 27843's S and the instrument for U.
+struct Request {
+    standard: StandardId,
+    method: SMethod,
+    setup: Option<Setup>,
+}
+
+impl Request {
+    fn parse(standard_key: &str, s_from_ranges: bool, instrument: Option<&str>) -> PyResult<Self> {
+        let standard = standard(standard_key)?;
+        if s_from_ranges && standard != StandardId::Gost27843 {
+            return Err(PyValueError::new_err(
+                "s_from_ranges applies to the standard gost27843 only",
+            ));
+        }
+        let setup = (instrument.map(|name| {
+            InstrumentKind::from_name(name)
+                .map(Setup::for_instrument)
+                .ok_or_else(|| PyValueError::new_err(format!("instrument: unknown kind `{name}`")))
+        }))
+        .transpose()?;
+        let method = match s_from_ranges {
+            true => SMethod::Ranges,
+            false => SMethod::Formula5,
+        };
+        Ok(Request {
+            standard,
+            method,
+            setup,
+        })
+    }
+
+    /// The evaluation of one test (no GIL needed).
+    fn evaluate(&self, data: &AxisData, recognised: Recognised, file: &str) -> Evaluated {
+        let evaluation = axcheck_core::evaluate::evaluate_by(data, self.standard, self.method);
+        let setup = (self.setup.clone()).unwrap_or_else(|| Setup::for_axis(data.kind));
+        let reported = recognised.reported.as_ref();
+        Evaluated {
+            uncertainty: uncertainty::evaluate(&setup, &evaluation),
+            evaluation,
+            other_tool: reported.map(|r| axcheck_core::crosscheck::compare(r, data)),
+            recognised,
+            file: file.to_string(),
+        }
     }
 }
 
@@ -236,35 +252,41 @@ fn evaluate(
     s_from_ranges: bool,
     instrument: Option<&str>,
 ) -> PyResult<Evaluated> {
-    let standard = standard(standard_key)?;
-    if s_from_ranges && standard != StandardId::Gost27843 {
-        return Err(PyValueError::new_err(
-            "s_from_ranges applies to the standard gost27843 only",
-        ));
-    }
-    let setup = match instrument {
-        None => Setup::for_axis(m.data.kind),
-        Some(name) => {
-            Setup::for_instrument(InstrumentKind::from_name(name).ok_or_else(|| {
-                PyValueError::new_err(format!("instrument: unknown kind `{name}`"))
-            })?)
-        }
+    let request = Request::parse(standard_key, s_from_ranges, instrument)?;
+    Ok(py.detach(|| request.evaluate(&m.data, m.recognised.clone(), &m.file)))
+}
+
+/// Each file read and evaluated as `read` and `evaluate` would, in Rust's thread pool
+/// (`jobs` threads, default one per core) with the GIL released once for them all: the
+/// Python around one call per small file costs more than its evaluation. In the paths'
+/// order, each an `Evaluated` or the `axcheck.ReadError` its file raised.
+#[pyfunction]
+#[pyo3(signature = (paths, standard_key="iso230-2", s_from_ranges=false, instrument=None, jobs=None))]
+fn evaluate_files(
+    py: Python<'_>,
+    paths: Vec<String>,
+    standard_key: &str,
+    s_from_ranges: bool,
+    instrument: Option<&str>,
+    jobs: Option<usize>,
+) -> PyResult<Vec<Py<PyAny>>> {
+    use rayon::prelude::*;
+    let request = Request::parse(standard_key, s_from_ranges, instrument)?;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs.unwrap_or(0))
+        .build()
+        .map_err(|e| PyValueError::new_err(format!("jobs: {e}")))?;
+    let one = |path: &String| {
+        let read = measurement::read_file_with(Path::new(path), &ReadOptions::default());
+        read.map(|t| request.evaluate(&t.data, t.recognised, path))
     };
-    let method = match s_from_ranges {
-        true => SMethod::Ranges,
-        false => SMethod::Formula5,
-    };
-    Ok(py.detach(|| {
-        let evaluation = axcheck_core::evaluate::evaluate_by(&m.data, standard, method);
-        let reported = m.recognised.reported.as_ref();
-        Evaluated {
-            uncertainty: uncertainty::evaluate(&setup, &evaluation),
-            evaluation,
-            other_tool: reported.map(|r| axcheck_core::crosscheck::compare(r, &m.data)),
-            recognised: m.recognised.clone(),
-            file: m.file.clone(),
-        }
-    }))
+    let done: Vec<_> = py.detach(|| pool.install(|| paths.par_iter().map(one).collect()));
+    (done.into_iter())
+        .map(|r| match r {
+            Ok(evaluated) => Ok(Py::new(py, evaluated)?.into_any()),
+            Err(e) => Ok(read_error(py, &e).into_value(py).into_any()),
+        })
+        .collect()
 }
 
 /// `diagnose --json` of the measurement: what the standard's model gets wrong, and why.
@@ -599,6 +621,7 @@ fn _axcheck(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read, m)?)?;
     m.add_function(wrap_pyfunction!(read_text, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;
+    m.add_function(wrap_pyfunction!(evaluate_files, m)?)?;
     m.add_function(wrap_pyfunction!(diagnose, m)?)?;
     m.add_function(wrap_pyfunction!(compensate_table, m)?)?;
     m.add_function(wrap_pyfunction!(verify_table, m)?)?;

@@ -6,6 +6,7 @@ use axcheck::evaluate::gost27843::SMethod;
 use axcheck::evaluate::{Evaluation, StandardId};
 use axcheck::measurement::{self, AxisData, Recognised};
 use axcheck::nde::{self, NdeCorrection};
+use axcheck::one_file::{Applied, EvalJson};
 use axcheck::units::{AxisKind, Direction, fmt_fixed, fmt_position};
 use std::fmt::Write;
 
@@ -45,17 +46,6 @@ pub struct EvalArgs {
     json: bool,
 }
 
-/// What `eval` applied to the readings and what it did not, for the text and the JSON
-/// (`applied`): a result printed without the campaign's corrections must say so.
-#[derive(serde::Serialize)]
-struct Applied {
-    /// The correction to 20 °C, when asked (`--nde`).
-    nde: Option<NdeCorrection>,
-    /// Always empty: eval applies no tolerance and no decision rule.
-    tolerance: Option<()>,
-    decision_rule: Option<()>,
-}
-
 /// `axcheck eval`: the parameters of one file, what it was read as, and the results of
 /// the tool that wrote it beside them; the text to print.
 pub fn run(args: &EvalArgs) -> Result<String> {
@@ -79,17 +69,15 @@ pub fn run(args: &EvalArgs) -> Result<String> {
     let other = (recognised.reported.as_ref()).map(|r| axcheck::crosscheck::compare(r, &data));
     Ok(match args.json {
         true => {
-            #[derive(serde::Serialize)]
-            struct WithApplied<'a, T> {
-                #[serde(flatten)]
-                evaluation: T,
-                applied: &'a Applied,
-            }
-            let value = WithApplied {
+            let value = EvalJson {
                 evaluation: evaluation.json(),
                 applied: &applied,
+                file: &name,
+                recognised: &recognised,
+                other_tool: other.as_ref(),
+                uncertainty: None,
             };
-            super::json_with_read(&value, &name, &recognised, other.as_ref())?
+            serde_json::to_string_pretty(&value)? + "\n"
         }
         false => {
             let mut text = render(&name, &recognised, &evaluation, other.as_ref());

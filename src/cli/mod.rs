@@ -13,41 +13,9 @@ pub mod text;
 pub mod trend;
 pub mod verify;
 
-/// `--json` output: `value`'s JSON with the input file's name added last, pretty-printed.
+/// `--json` output of `diagnose` and `verify`: `value`'s JSON, then the input file's name.
 pub fn json_with_file<T: serde::Serialize>(value: &T, file: &str) -> serde_json::Result<String> {
-    #[derive(serde::Serialize)]
-    struct WithFile<'a, T> {
-        #[serde(flatten)]
-        value: &'a T,
-        file: &'a str,
-    }
-    Ok(serde_json::to_string_pretty(&WithFile { value, file })? + "\n")
-}
-
-/// `--json` output of `eval`: `value`'s JSON, then the input file's name, what it was
-/// read as (`recognised`: layout, name, sheet, notes) and, when the file carries another
-/// tool's results, their comparison (`other_tool`), pretty-printed.
-pub fn json_with_read<T: serde::Serialize>(
-    value: &T,
-    file: &str,
-    recognised: &axcheck::measurement::Recognised,
-    other_tool: Option<&axcheck::crosscheck::OtherTool>,
-) -> serde_json::Result<String> {
-    #[derive(serde::Serialize)]
-    struct WithRead<'a, T> {
-        #[serde(flatten)]
-        value: &'a T,
-        file: &'a str,
-        recognised: &'a axcheck::measurement::Recognised,
-        #[serde(skip_serializing_if = "Option::is_none")]
-        other_tool: Option<&'a axcheck::crosscheck::OtherTool>,
-    }
-    let with = WithRead {
-        value,
-        file,
-        recognised,
-        other_tool,
-    };
+    let with = axcheck::one_file::WithFile { value, file };
     Ok(serde_json::to_string_pretty(&with)? + "\n")
 }
 

@@ -19,7 +19,7 @@ const LAYERS: &[&[&str]] = &[
     &["measurement", "yaml", "lock", "atomic"],
     &["evaluate", "nde", "axis_model"],
     &["uncertainty", "crosscheck", "simulate"],
-    &["rules", "judge", "diagnose", "trend"],
+    &["rules", "judge", "diagnose", "trend", "one_file"],
     &["compensate", "plan"],
     &["verify"],
     &["campaign"],

@@ -4,7 +4,8 @@
 //! resolved), [`judge`] (acceptance specs read, limits taken from one), [`plan`] (the
 //! plan file) and [`measurement`] (the readers, one file per layout) → [`batch`] runs
 //! every axis through the core's stages in parallel → [`results`], the result model that
-//! exporters, reports and the history read. Beside them: [`simulate`] (simulation files
+//! exporters, reports and the history read; [`one_file`] is the JSON of the commands that
+//! take one measurement file. Beside them: [`simulate`] (simulation files
 //! and synthetic fleets), [`trend`]'s tables, [`yaml`] (located YAML errors), [`atomic`]
 //! and [`lock`] (outputs written whole, one run per folder), [`safe_text`] and [`panics`].
 //!
@@ -19,6 +20,7 @@ pub mod history;
 pub mod judge;
 pub mod lock;
 pub mod measurement;
+pub mod one_file;
 pub mod panics;
 pub mod plan;
 pub mod results;
