@@ -18,7 +18,7 @@ const LAYERS: &[&[&str]] = &[
     ],
     &["measurement", "yaml", "lock", "atomic"],
     &["evaluate", "nde", "axis_model"],
-    &["uncertainty", "crosscheck", "simulate"],
+    &["uncertainty", "crosscheck", "simulate", "geometry"],
     &["rules", "judge", "diagnose", "trend", "one_file"],
     &["compensate", "plan"],
     &["verify"],

@@ -5,7 +5,9 @@
 //! ([`uncertainty`]), the verdict against the limits ([`judge`], ISO 14253-1), the
 //! diagnosis against the error model ([`diagnose`], [`axis_model`]), compensation tables
 //! ([`compensate`]) and their verification ([`verify`]), and each axis's trend across
-//! inspections ([`trend`]). Before the measurement, [`plan`] gives the targets, the part
+//! inspections ([`trend`]). Beside positioning, [`geometry`] evaluates the other laser tests of an
+//! axis (straightness, angular deviations, squareness) and carries positioning to the tool
+//! point. Before the measurement, [`plan`] gives the targets, the part
 //! programs and the laser's target list. Units and names are in [`units`] and [`suggest`].
 //!
 //! Nothing here opens a file, parses YAML or draws a page: readers, campaigns, outputs and
@@ -16,6 +18,7 @@ pub mod compensate;
 pub mod crosscheck;
 pub mod diagnose;
 pub mod evaluate;
+pub mod geometry;
 pub mod judge;
 pub mod measurement;
 pub mod nde;

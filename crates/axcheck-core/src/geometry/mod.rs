@@ -1,0 +1,31 @@
+//! The other laser tests of a linear axis, beside positioning: straightness
+//! ([`straightness`]), angular deviations ([`angular`]: roll, pitch, yaw), squareness
+//! between two axes ([`squareness`]), and the positioning deviation carried to the tool
+//! point through the angular deviations ([`abbe`]). [`line`] fits the reference straight
+//! lines they share.
+//!
+//! The readings are an [`AxisData`](crate::measurement::AxisData) as for positioning:
+//! targets along the axis (mm), runs, both directions; the deviation is the test's own
+//! quantity (µm across the axis for straightness, arcsec for angular deviations). The
+//! notation is ISO 230-1's (EYX, EZX: straightness of X in Y and Z; EAX, EBX, ECX: roll,
+//! pitch and yaw of X). Pure: no file, no unit parsing.
+
+pub mod abbe;
+pub mod angular;
+pub mod line;
+pub mod squareness;
+pub mod straightness;
+
+use crate::measurement::AxisData;
+use crate::units::Direction;
+
+/// Each target's mean reading in one direction (x̄ᵢ↑ or x̄ᵢ↓, as ISO 230-2 2.10 for
+/// positioning), in the readings' unit.
+fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
+    (0..data.target_count())
+        .map(|i| crate::evaluate::stats::mean(data.deviations(i, direction)))
+        .collect()
+}
+
+/// Arcseconds in a radian (648 000 / π).
+pub const ARCSEC_PER_RAD: f64 = 648_000.0 / std::f64::consts::PI;
