@@ -23,10 +23,52 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
-/// The long CSV reader.
+/// The long CSV reader, as a positioning test and as an angular test (angles at targets
+/// in mm), each evaluated by the other tests of a linear axis too.
 pub fn csv(data: &[u8]) {
     if let Ok(axis) = measurement::csv::parse(data, "fuzz.csv") {
         check_data(&axis);
+        check_geometry(&axis);
+    }
+    let angular = measurement::ReadOptions {
+        angular: true,
+        ..Default::default()
+    };
+    if let Ok(test) = measurement::read_with(data, "fuzz.csv", &angular) {
+        check_geometry(&test.data);
+    }
+}
+
+/// Straightness by both lines (with a local length), the angular deviation, a squareness
+/// with itself and the tool point through its own angles: finite numbers or `None`, no
+/// panic.
+fn check_geometry(data: &AxisData) {
+    use axcheck_core::geometry::{abbe, angular, line::ReferenceLine, squareness, straightness};
+    for line in [ReferenceLine::LeastSquares, ReferenceLine::EndPoint] {
+        let options = straightness::Options {
+            line,
+            local_length_mm: Some(100.0),
+        };
+        if let Some(s) = straightness::evaluate(data, &options) {
+            let _ = serde_json::to_vec(&s);
+            let sq = squareness::evaluate(&s.up.line, &s.down.line, 1.0, Default::default());
+            let _ = serde_json::to_vec(&sq);
+        }
+    }
+    if let Some(a) = angular::evaluate(data) {
+        let _ = serde_json::to_vec(&a);
+    }
+    let trace = angular::Trace::of(data);
+    let rotations = abbe::Rotations {
+        about_v: Some(&trace),
+        about_w: Some(&trace),
+    };
+    let offset = abbe::Offset {
+        v_mm: 120.0,
+        w_mm: -80.0,
+    };
+    if let Ok(at_tool) = abbe::to_tool_point(data, rotations, offset) {
+        check_data(&at_tool);
     }
 }
 
@@ -37,8 +79,8 @@ pub fn ecmc_app(data: &[u8]) {
     let sources = [None, Some(Source::Reference(2)), Some(Source::Readback)];
     for source in sources {
         let options = ReadOptions {
-            sheet: None,
             source,
+            ..ReadOptions::default()
         };
         let Ok(test) = measurement::read_with(data, "fuzz.md", &options) else {
             continue;

@@ -122,7 +122,11 @@ fn read(
         .map(measurement::Source::parse)
         .transpose()
         .map_err(|e| PyValueError::new_err(format!("reference: {e}")))?;
-    let options = ReadOptions { sheet, source };
+    let options = ReadOptions {
+        sheet,
+        source,
+        ..ReadOptions::default()
+    };
     let read = py.detach(|| measurement::read_file_with(Path::new(path), &options));
     let ReadTest { data, recognised } = read.map_err(|e| read_error(py, &e))?;
     Ok(Measurement {

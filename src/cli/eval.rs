@@ -44,11 +44,18 @@ pub struct EvalArgs {
     /// Print JSON (a stable interface) instead of text.
     #[arg(long)]
     json: bool,
+    #[command(flatten)]
+    other: super::geometry::GeometryArgs,
 }
 
 /// `axcheck eval`: the parameters of one file, what it was read as, and the results of
 /// the tool that wrote it beside them; the text to print.
 pub fn run(args: &EvalArgs) -> Result<String> {
+    super::geometry::refuse_others(&args.other)?;
+    if args.other.test != axcheck::geometry::TestKind::Positioning {
+        refuse_positioning_options(args)?;
+        return super::geometry::run(&args.file, args.sheet.options(), &args.other, args.json);
+    }
     if args.s_from_ranges && args.standard != StandardId::Gost27843 {
         bail!("--s-from-ranges applies to --standard gost27843 only");
     }
@@ -86,6 +93,25 @@ pub fn run(args: &EvalArgs) -> Result<String> {
             text
         }
     })
+}
+
+/// The options of a positioning test refused for the other tests, by name.
+fn refuse_positioning_options(args: &EvalArgs) -> Result<()> {
+    let test = args.other.test.key();
+    if args.nde.is_some() {
+        bail!("--nde corrects a positioning test to 20 °C; --test {test} takes none");
+    }
+    if args.s_from_ranges || args.standard != StandardId::Iso230_2 {
+        bail!(
+            "--standard and --s-from-ranges evaluate a positioning test; --test {test} is evaluated by ISO 230-1"
+        );
+    }
+    if args.sheet.names_source() {
+        bail!(
+            "--ecmc-reference reads an ecmc ISO 230 app file, a positioning test; not --test {test}"
+        );
+    }
+    Ok(())
 }
 
 /// The readings corrected to 20 °C when `--nde` asks (linear axes only), with what was

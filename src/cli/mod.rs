@@ -4,6 +4,7 @@ pub mod campaign;
 pub mod compensate;
 pub mod diagnose;
 pub mod eval;
+pub mod geometry;
 pub mod other_tool;
 pub mod plan;
 pub mod simulate;
@@ -48,6 +49,7 @@ impl SheetArg {
         axcheck::measurement::ReadOptions {
             sheet: self.sheet.as_deref(),
             source: self.ecmc_reference,
+            ..Default::default()
         }
     }
 

@@ -19,6 +19,7 @@ mod diagnose;
 mod ecmc_app;
 mod external;
 mod fuzz_corpus;
+mod geometry;
 mod gost27843;
 mod history;
 #[cfg(unix)]

@@ -31,6 +31,6 @@ pub mod trend;
 pub mod yaml;
 
 use axcheck_core::{
-    axis_model, compensate, crosscheck, diagnose, evaluate, nde, param_key, rules, suggest,
-    uncertainty, units, verify,
+    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, param_key, rules,
+    suggest, uncertainty, units, verify,
 };

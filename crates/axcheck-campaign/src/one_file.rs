@@ -1,9 +1,13 @@
-//! The JSON of the commands that take one measurement file (`eval --json`,
-//! `diagnose --json`, `verify --json`), composed once for the command line and the Python
-//! package so that both print the same keys in the same order.
+//! The JSON of the commands that take one measurement file (`eval --json` and its other
+//! tests, `diagnose --json`, `verify --json`), composed once for the command line and the
+//! Python package so that both print the same keys in the same order.
 
 use crate::crosscheck::OtherTool;
 use crate::evaluate::json::EvaluationJson;
+use crate::geometry::TestKind;
+use crate::geometry::line::ReferenceLine;
+use crate::geometry::squareness::Squareness;
+use crate::geometry::straightness::Trace;
 use crate::measurement::Recognised;
 use crate::nde::NdeCorrection;
 use crate::uncertainty::Uncertainty;
@@ -43,4 +47,43 @@ pub struct WithFile<'a, T> {
     #[serde(flatten)]
     pub value: T,
     pub file: &'a str,
+}
+
+/// `eval --test straightness|angular --json`: which test, its result (flattened: the
+/// straightness's or the angular deviation's keys), the targets and the file.
+#[derive(Serialize)]
+pub struct GeometryJson<'a, T> {
+    pub test: TestKind,
+    /// The axis the straightness deviation is along (`X`, `Y`, `Z`) or the angular one is
+    /// about (`A`, `B`, `C`), when given: ISO 230-1's EYX is `Y` on an X axis.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub direction: Option<char>,
+    /// Runs per direction.
+    pub n: usize,
+    pub targets_mm: &'a [f64],
+    #[serde(flatten)]
+    pub result: T,
+    pub file: &'a str,
+    pub recognised: &'a Recognised,
+}
+
+/// `eval --test squareness --json`: the squareness (flattened) and each straightness test
+/// it comes from.
+#[derive(Serialize)]
+pub struct SquarenessJson<'a> {
+    pub test: TestKind,
+    pub line: ReferenceLine,
+    #[serde(flatten)]
+    pub squareness: &'a Squareness,
+    pub first: SquarenessSide<'a>,
+    pub second: SquarenessSide<'a>,
+}
+
+/// One of the two straightness tests of a squareness.
+#[derive(Serialize)]
+pub struct SquarenessSide<'a> {
+    pub file: &'a str,
+    pub recognised: &'a Recognised,
+    /// Its bidirectional straightness and reference line.
+    pub straightness: &'a Trace,
 }

@@ -89,6 +89,7 @@ impl DataSource {
             } => crate::measurement::ReadOptions {
                 sheet: sheet.as_deref(),
                 source: *reference,
+                ..Default::default()
             },
             _ => crate::measurement::ReadOptions::default(),
         }

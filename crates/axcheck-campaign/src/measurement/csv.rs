@@ -5,10 +5,16 @@
 //! 6.711,up,1,-1.2,12.0,20.4
 //! ```
 //! Columns: `target_mm` or `target_deg`; one of `deviation_um`, `deviation_nm`,
-//! `deviation_mm`, `deviation_arcsec`, `deviation_deg`, `actual_mm`, `actual_deg` (an
+//! `deviation_mm`, `deviation_arcsec`, `deviation_urad`, `deviation_deg`, `actual_mm`,
+//! `actual_deg` (an
 //! actual position P_ij gives X_ij = P_ij − P_i, ISO 230-2 clause 2.5); `direction`;
 //! `run` (approach index j, 1-based); optional `time_s` and `temp_<name>_c`. Separators
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
+//!
+//! An angular test of a linear axis (pitch, yaw, roll) is the same table with angles at
+//! targets in mm (`target_mm` with `deviation_arcsec`, `deviation_urad` or
+//! `deviation_deg`), read by [`read_angular`] only: for a positioning test those units
+//! are mixed and refused.
 
 use super::cell::{Origin, Value};
 use super::error::{ReadError, ReadErrorKind};
@@ -39,6 +45,7 @@ const KNOWN: &[&str] = &[
     "deviation_nm",
     "deviation_mm",
     "deviation_arcsec",
+    "deviation_urad",
     "deviation_deg",
     "actual_mm",
     "actual_deg",
@@ -56,6 +63,8 @@ fn classify(name: &str, temps: &mut Vec<String>) -> Result<Column, ReadErrorKind
         "deviation_nm" => Column::Deviation(Linear, 0.001),
         "deviation_mm" => Column::Deviation(Linear, 1000.0),
         "deviation_arcsec" => Column::Deviation(Rotary, 1.0),
+        // 1 µrad = 0.648/π arcsec.
+        "deviation_urad" => Column::Deviation(Rotary, 0.648 / std::f64::consts::PI),
         "deviation_deg" => Column::Deviation(Rotary, 3600.0),
         "actual_mm" => Column::Actual(Linear, 1000.0),
         "actual_deg" => Column::Actual(Rotary, 3600.0),
@@ -139,6 +148,40 @@ pub(crate) fn read<R: BufRead>(
     read_text::<LongTable, R>(reader, file)
 }
 
+/// Parses an angular test of a linear axis in the long CSV layout: angles (arcsec) at
+/// targets in mm; also returns what was assumed.
+pub(crate) fn read_angular<R: BufRead>(
+    reader: R,
+    file: &str,
+) -> Result<(AxisData, Vec<String>), ReadError> {
+    read_text::<AngularTable, R>(reader, file)
+}
+
+/// What the header's units must be: one kind for a positioning (or straightness) test,
+/// angles along a linear axis for an angular test.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Quantities {
+    OneKind,
+    AnglesAlongLinear,
+}
+
+/// The long table of an angular test (see [`read_angular`]).
+pub(crate) struct AngularTable(LongTable);
+
+impl TableReader for AngularTable {
+    fn from_header(header: &Row, place: &Origin) -> Result<AngularTable, ReadError> {
+        LongTable::from_header_for(header, place, Quantities::AnglesAlongLinear).map(AngularTable)
+    }
+
+    fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError> {
+        self.0.add(row, place)
+    }
+
+    fn finish(self, place: &Origin) -> Result<(AxisData, Vec<String>), ReadError> {
+        self.0.finish(place)
+    }
+}
+
 /// The long table being read: what the header says (the columns, where the required ones
 /// are, the units) and the readings so far.
 pub(crate) struct LongTable {
@@ -162,60 +205,7 @@ pub(crate) struct LongTable {
 
 impl TableReader for LongTable {
     fn from_header(header: &Row, place: &Origin) -> Result<LongTable, ReadError> {
-        let fields = classify_header(header, place)?;
-        let header_err = |kind| ReadError::new(place.line(header.number), kind);
-        let one = |pred: &dyn Fn(&Column) -> bool, what: &str, expected: &str| {
-            fields.only(pred, what, expected).map_err(header_err)
-        };
-        let target = one(
-            &|c| matches!(c, Column::Target(_)),
-            "target position",
-            "`target_mm` or `target_deg`",
-        )?;
-        let value = one(
-            &|c| matches!(c, Column::Deviation(..) | Column::Actual(..)),
-            "deviation",
-            "`deviation_um` (or deviation_mm, deviation_arcsec, deviation_deg, actual_mm, actual_deg)",
-        )?;
-        let direction = one(&|c| *c == Column::Direction, "direction", "`direction`")?;
-        let run = one(&|c| *c == Column::Run, "run", "`run`")?;
-        let Header {
-            columns,
-            names,
-            temps,
-        } = fields;
-        let time = columns.iter().position(|c| *c == Column::TimeS);
-        let Column::Target(kind) = columns[target] else {
-            unreachable!("target column classified above")
-        };
-        let (value_kind, factor, is_actual) = match columns[value] {
-            Column::Deviation(k, f) => (k, f, false),
-            Column::Actual(k, f) => (k, f, true),
-            _ => unreachable!("value column classified above"),
-        };
-        if value_kind != kind {
-            return Err(header_err(mixed_units(
-                &names[target],
-                kind,
-                &names[value],
-                value_kind,
-            )));
-        }
-        Ok(LongTable {
-            columns,
-            names,
-            temps,
-            kind,
-            target,
-            value,
-            direction,
-            run,
-            time,
-            factor,
-            is_actual,
-            // A test holds a few hundred readings: room for them at once.
-            raw: Vec::with_capacity(256),
-        })
+        LongTable::from_header_for(header, place, Quantities::OneKind)
     }
 
     fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError> {
@@ -248,7 +238,102 @@ impl TableReader for LongTable {
     }
 }
 
+/// An angular test's header: targets along a linear axis (mm) and angular deviations.
+fn angles_along_linear(
+    names: &[String],
+    target: usize,
+    kind: AxisKind,
+    value: usize,
+    value_kind: AxisKind,
+    is_actual: bool,
+) -> Result<(), ReadErrorKind> {
+    let wrong = |column: usize, expected: &str| ReadErrorKind::WrongQuantity {
+        column: names[column].clone(),
+        test: "an angular test of a linear axis".into(),
+        expected: expected.into(),
+    };
+    if kind != AxisKind::Linear {
+        return Err(wrong(target, "targets along the axis in mm (`target_mm`)"));
+    }
+    if value_kind != AxisKind::Rotary || is_actual {
+        return Err(wrong(
+            value,
+            "angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)",
+        ));
+    }
+    Ok(())
+}
+
 impl LongTable {
+    /// The table's columns from its header, the units checked as `quantities` asks.
+    fn from_header_for(
+        header: &Row,
+        place: &Origin,
+        quantities: Quantities,
+    ) -> Result<LongTable, ReadError> {
+        let fields = classify_header(header, place)?;
+        let header_err = |kind| ReadError::new(place.line(header.number), kind);
+        let one = |pred: &dyn Fn(&Column) -> bool, what: &str, expected: &str| {
+            fields.only(pred, what, expected).map_err(header_err)
+        };
+        let target = one(
+            &|c| matches!(c, Column::Target(_)),
+            "target position",
+            "`target_mm` or `target_deg`",
+        )?;
+        let value = one(
+            &|c| matches!(c, Column::Deviation(..) | Column::Actual(..)),
+            "deviation",
+            "`deviation_um` (or deviation_mm, deviation_arcsec, deviation_deg, actual_mm, actual_deg)",
+        )?;
+        let direction = one(&|c| *c == Column::Direction, "direction", "`direction`")?;
+        let run = one(&|c| *c == Column::Run, "run", "`run`")?;
+        let Header {
+            columns,
+            names,
+            temps,
+        } = fields;
+        let time = columns.iter().position(|c| *c == Column::TimeS);
+        let Column::Target(kind) = columns[target] else {
+            unreachable!("target column classified above")
+        };
+        let (value_kind, factor, is_actual) = match columns[value] {
+            Column::Deviation(k, f) => (k, f, false),
+            Column::Actual(k, f) => (k, f, true),
+            _ => unreachable!("value column classified above"),
+        };
+        match quantities {
+            Quantities::OneKind if value_kind != kind => {
+                return Err(header_err(mixed_units(
+                    &names[target],
+                    kind,
+                    &names[value],
+                    value_kind,
+                )));
+            }
+            Quantities::AnglesAlongLinear => {
+                angles_along_linear(&names, target, kind, value, value_kind, is_actual)
+                    .map_err(header_err)?
+            }
+            Quantities::OneKind => {}
+        }
+        Ok(LongTable {
+            columns,
+            names,
+            temps,
+            kind,
+            target,
+            value,
+            direction,
+            run,
+            time,
+            factor,
+            is_actual,
+            // A test holds a few hundred readings: room for them at once.
+            raw: Vec::with_capacity(256),
+        })
+    }
+
     /// One data row as a reading.
     fn reading(&self, row: &Row, place: &Origin) -> Result<RawReading, ReadError> {
         let number = row.number;

@@ -145,6 +145,22 @@ pub(crate) enum Reader {
     EcmcReport,
 }
 
+impl Reader {
+    /// What the layout is called in a message.
+    pub(crate) fn described(self) -> &'static str {
+        match self {
+            Reader::Book => "a workbook",
+            Reader::KeyValue => "an ecmc key=value file",
+            Reader::Table(TableKind::Long) => "a long CSV",
+            Reader::Table(TableKind::Wide) => "a wide CSV",
+            Reader::Renishaw => "a Renishaw file",
+            Reader::EcmcAppReport => "an ecmc ISO 230 app report",
+            Reader::EcmcAppCsv => "an ecmc ISO 230 app CSV",
+            Reader::EcmcReport => "an ecmc test report",
+        }
+    }
+}
+
 /// The first bytes of a ZIP archive (an XLSX or ODS workbook) and of an OLE2 compound
 /// file (an Excel 97–2003 `.xls`).
 pub(crate) const ZIP_MAGIC: &[u8] = b"PK\x03\x04";

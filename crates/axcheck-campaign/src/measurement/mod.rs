@@ -37,13 +37,16 @@ pub struct ReadOptions<'a> {
     /// The reference of an ecmc ISO 230 app file (the one it evaluated when `None`; an
     /// error for another file).
     pub source: Option<Source>,
+    /// An angular test of a linear axis (pitch, yaw, roll): angles at targets in mm, from
+    /// the long CSV layout only; a positioning test refuses those units as mixed.
+    pub angular: bool,
 }
 
 impl<'a> ReadOptions<'a> {
     pub fn sheet(sheet: Option<&'a str>) -> ReadOptions<'a> {
         ReadOptions {
             sheet,
-            source: None,
+            ..ReadOptions::default()
         }
     }
 }
@@ -77,6 +80,9 @@ pub fn read_with<R: BufRead>(
         .fill_buf()
         .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
     let how = layout::recognise(head).map_err(|kind| ReadError::new(Location::file(file), kind))?;
+    if options.angular {
+        return read_angular(reader, file, how, options);
+    }
     let text_layout = match how {
         layout::Reader::Book => {
             refuse_source(
@@ -135,6 +141,34 @@ pub fn read_with<R: BufRead>(
         data,
         recognised: Recognised {
             layout: text_layout,
+            notes,
+            info: None,
+            reported: None,
+        },
+    })
+}
+
+/// An angular test of a linear axis, from the long CSV layout.
+fn read_angular<R: BufRead>(
+    reader: R,
+    file: &str,
+    how: layout::Reader,
+    options: &ReadOptions,
+) -> Result<ReadTest, ReadError> {
+    if how != layout::Reader::Table(TableKind::Long) {
+        let kind = ReadErrorKind::LayoutForTest {
+            test: "an angular test of a linear axis".into(),
+            layout: how.described().into(),
+        };
+        return Err(ReadError::new(Location::file(file), kind));
+    }
+    refuse_sheet(options.sheet, Layout::LongCsv, file)?;
+    refuse_source(options.source, Layout::LongCsv, file)?;
+    let (data, notes) = csv::read_angular(reader, file)?;
+    Ok(ReadTest {
+        data,
+        recognised: Recognised {
+            layout: Layout::LongCsv,
             notes,
             info: None,
             reported: None,

@@ -29,3 +29,40 @@ fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
 
 /// Arcseconds in a radian (648 000 / π).
 pub const ARCSEC_PER_RAD: f64 = 648_000.0 / std::f64::consts::PI;
+
+/// Which laser test a file holds: a campaign axis's `test:` and `eval --test`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TestKind {
+    /// ISO 230-2's positioning test (EXX for an X axis).
+    #[default]
+    Positioning,
+    /// Straightness across the axis (EYX, EZX).
+    Straightness,
+    /// Roll, pitch or yaw (EAX, EBX, ECX).
+    Angular,
+    /// Squareness of two axes from two straightness tests.
+    Squareness,
+}
+
+impl TestKind {
+    pub const ALL: [TestKind; 4] = [
+        TestKind::Positioning,
+        TestKind::Straightness,
+        TestKind::Angular,
+        TestKind::Squareness,
+    ];
+
+    pub fn key(self) -> &'static str {
+        match self {
+            TestKind::Positioning => "positioning",
+            TestKind::Straightness => "straightness",
+            TestKind::Angular => "angular",
+            TestKind::Squareness => "squareness",
+        }
+    }
+
+    pub fn parse(key: &str) -> Option<TestKind> {
+        TestKind::ALL.into_iter().find(|k| k.key() == key)
+    }
+}

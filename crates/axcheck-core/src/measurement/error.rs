@@ -155,6 +155,16 @@ pub enum ReadErrorKind {
         deviation: String,
         deviation_kind: String,
     },
+    #[error("column `{column}`: {test} takes {expected}")]
+    WrongQuantity {
+        column: String,
+        test: String,
+        expected: String,
+    },
+    #[error(
+        "{test} is read from the long CSV layout (target_mm, direction, run, deviation_arcsec or deviation_urad); this file is {layout}"
+    )]
+    LayoutForTest { test: String, layout: String },
     #[error("expected {expected} fields as in the header, found {found}")]
     FieldCount { expected: usize, found: usize },
     #[error("column `{column}`: expected a number, found `{found}`")]
@@ -364,7 +374,8 @@ impl ReadErrorKind {
             | Implausible { column, .. }
             | EmptyCell { column }
             | WrongCellType { column, .. }
-            | UnpairedRun { column, .. } => named(column),
+            | UnpairedRun { column, .. }
+            | WrongQuantity { column, .. } => named(column),
             UnknownColumn { name, .. }
             | MissingUnit { name, .. }
             | DuplicateColumn { name }
