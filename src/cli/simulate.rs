@@ -40,6 +40,10 @@ pub struct SimulateArgs {
     /// cycle, overrun, dwell and feed.
     #[arg(long, value_name = "PLAN.yaml")]
     plan: Option<PathBuf>,
+    /// Write the model's straightness along this axis (µm) or its rotation about it
+    /// (arcsec) instead of the positioning test: a letter of `model.geometry`.
+    #[arg(long, value_name = "LETTER", conflicts_with_all = ["fleet", "active", "controller"])]
+    geometry: Option<char>,
 }
 
 /// Runs `simulate`: writes the fleet or the file, or returns the CSV to print.
@@ -56,7 +60,13 @@ pub fn command(args: &SimulateArgs) -> Result<Option<String>> {
         backlash: args.active_backlash,
         controller: args.controller.as_deref(),
     };
-    let csv = run(model, args.seed, &active, args.plan.as_deref())?;
+    let csv = run(
+        model,
+        args.seed,
+        &active,
+        args.plan.as_deref(),
+        args.geometry,
+    )?;
     let Some(path) = &args.output else {
         return Ok(Some(csv));
     };
@@ -81,6 +91,7 @@ pub fn run(
     seed: Option<u64>,
     active: &ActiveRequest,
     plan: Option<&Path>,
+    geometry: Option<char>,
 ) -> Result<String> {
     let text = axcheck::files::read_to_string(model)
         .with_context(|| format!("cannot read the model file {}", model.display()))?;
@@ -103,6 +114,9 @@ pub fn run(
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
     }
     let seed = seed.unwrap_or(sim.seed);
+    if let Some(letter) = geometry {
+        return geometry_test(&sim, seed, letter.to_ascii_uppercase(), model);
+    }
     let mut data = sim.run(seed);
     let mut with = None;
     if let Some(name) = active.controller {
@@ -139,6 +153,36 @@ pub fn run(
     }
     comments.extend(with);
     Ok(csv::write(&data, &comments))
+}
+
+/// The model's straightness or rotation test `letter` as CSV text.
+fn geometry_test(sim: &Simulation, seed: u64, letter: char, model: &Path) -> Result<String> {
+    let g = &sim.model.geometry;
+    let Some(data) = sim.run_geometry(seed, letter) else {
+        let known: Vec<String> = (g.straightness.keys().chain(g.angular.keys()))
+            .map(char::to_string)
+            .collect();
+        bail!(
+            "--geometry {letter}: {} has no straightness along or rotation about {letter} in model.geometry (it has: {})",
+            model.display(),
+            match known.is_empty() {
+                true => "none".to_string(),
+                false => known.join(", "),
+            }
+        );
+    };
+    let axis = g.axis.unwrap_or('?');
+    let (what, write): (_, fn(&_, &_) -> String) = match g.straightness.contains_key(&letter) {
+        true => ("straightness along", csv::write),
+        false => ("rotation about", csv::write_angular),
+    };
+    let name = model.file_name().map(|n| n.to_string_lossy().into_owned());
+    let comments = vec![format!(
+        "simulated by axcheck {} from {}, seed {seed}: the {axis} axis's {what} {letter} (E{letter}{axis})",
+        env!("CARGO_PKG_VERSION"),
+        name.unwrap_or_default()
+    )];
+    Ok(write(&data, &comments))
 }
 
 /// Writes a synthetic fleet campaign into `dir`.

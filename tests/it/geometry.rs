@@ -181,3 +181,93 @@ fn options_of_another_test_are_refused_by_name() {
         assert!(stderr.contains(says), "{args:?}: {stderr}");
     }
 }
+
+/// `simulate --geometry` writes the model's straightness and rotations; `eval --test`
+/// finds the generating values within what the scatter allows, and squareness from two
+/// simulated axes is the 40 µm/m the models differ by.
+#[test]
+fn simulated_geometry_is_found_again() {
+    let dir = crate::common::scratch("geometry-sim");
+    let sim = |model: &str, letter: &str, name: &str| -> String {
+        let out = dir.join(name).display().to_string();
+        let model = format!("tests/data/geometry/{model}");
+        let (code, _, stderr) = axcheck(&["simulate", &model, "--geometry", letter, "-o", &out]);
+        assert_eq!(code, 0, "{stderr}");
+        out
+    };
+    let ey = sim("x-whole.yaml", "Y", "eyx.csv");
+    let eb = sim("x-whole.yaml", "B", "ebx.csv");
+    let ex = sim("y-whole.yaml", "X", "exy.csv");
+    let text = std::fs::read_to_string(&eb).unwrap();
+    assert!(
+        text.contains("target_mm,direction,run,deviation_arcsec"),
+        "{text}"
+    );
+    assert!(
+        text.contains("the X axis's rotation about B (EBX)"),
+        "{text}"
+    );
+    // The bow (8 µm) and slope (15 µm/m) of EYX; scatter 0.3 µm over 5 runs moves a
+    // target's mean by about 0.13 µm, the range by a few tenths.
+    let s = json(&[&ey, "--test", "straightness", "--line", "end-point"]);
+    assert!(
+        (num(&s, &["bidirectional", "deviation_um"]) - 8.0).abs() < 0.6,
+        "{s}"
+    );
+    assert!((num(&s, &["bidirectional", "line", "slope_um_per_m"]) - 15.0).abs() < 0.5);
+    let a = json(&[&eb, "--test", "angular"]);
+    assert!((num(&a, &["deviation_arcsec"]) - 20.0).abs() < 0.6, "{a}");
+    let sq = json(&[&ey, "--test", "squareness", "--second", &ex]);
+    assert!((num(&sq, &["error_um_per_m"]) + 40.0).abs() < 1.0, "{sq}");
+    // A letter the model lacks is named with those it has.
+    let (code, _, stderr) = axcheck(&[
+        "simulate",
+        "tests/data/geometry/x-whole.yaml",
+        "--geometry",
+        "A",
+    ]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("(it has: Y, Z, B, C)"), "{stderr}");
+}
+
+/// The positioning test at the beam, 150 mm below the tool point, carries the pitch's
+/// Abbe error; carried to the tool point with the simulated pitch test it is the same
+/// model's test without it, within the pitch test's scatter (0.3″ × 150 mm ≈ 0.2 µm).
+#[test]
+fn the_tool_point_takes_the_abbe_error_out_again() {
+    use axcheck::axis_model::Simulation;
+    use axcheck::geometry::{abbe, angular};
+    use axcheck::simulate::SimulationFile as _;
+    let text = std::fs::read_to_string("tests/data/geometry/x-whole.yaml").unwrap();
+    let sim = Simulation::from_yaml(&text, "x-whole.yaml").unwrap();
+    let at_beam = sim.run(7);
+    let mut flat = sim.clone();
+    flat.model.geometry.beam_mm.clear();
+    let at_tool_model = flat.run(7);
+    let pitch = angular::Trace::of(&sim.run_geometry(7, 'B').unwrap());
+    let yaw = angular::Trace::of(&sim.run_geometry(7, 'C').unwrap());
+    let rotations = abbe::Rotations {
+        about_v: Some(&pitch),
+        about_w: Some(&yaw),
+    };
+    // The tool point from the beam: 150 mm up (Z), the beam being at Z −150 from it.
+    let offset = abbe::Offset {
+        v_mm: 0.0,
+        w_mm: 150.0,
+    };
+    let carried = abbe::to_tool_point(&at_beam, rotations, offset).unwrap();
+    let mut worst: f64 = 0.0;
+    let mut abbe_at_end: f64 = 0.0;
+    for ((c, m), b) in carried
+        .readings
+        .iter()
+        .zip(&at_tool_model.readings)
+        .zip(&at_beam.readings)
+    {
+        worst = worst.max((c.deviation - m.deviation).abs());
+        abbe_at_end = abbe_at_end.max((b.deviation - m.deviation).abs());
+    }
+    // The Abbe error at the beam reaches tan(20″) × 150 mm = 14.5 µm at the travel's end.
+    assert!((abbe_at_end - 14.544).abs() < 0.01, "{abbe_at_end}");
+    assert!(worst < 0.5, "{worst}");
+}

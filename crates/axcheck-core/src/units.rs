@@ -147,6 +147,9 @@ impl fmt::Display for Direction {
     }
 }
 
+/// Arcseconds in a radian (648 000 / π).
+pub const ARCSEC_PER_RAD: f64 = 648_000.0 / std::f64::consts::PI;
+
 /// Formats `value` with `decimals` places, never printing `-0.000`.
 pub fn fmt_fixed(value: f64, decimals: usize) -> String {
     let s = format!("{value:.decimals$}");

@@ -480,6 +480,15 @@ fn parse_run(value: &Value) -> Option<u32> {
 /// gives the same bytes.
 pub fn write(data: &AxisData, comments: &[String]) -> String {
     let kind = data.kind;
+    write_in(data, comments, kind.position_unit(), kind.deviation_unit())
+}
+
+/// [`write`] for an angular test of a linear axis: angles (arcsec) at targets in mm.
+pub fn write_angular(data: &AxisData, comments: &[String]) -> String {
+    write_in(data, comments, "mm", "arcsec")
+}
+
+fn write_in(data: &AxisData, comments: &[String], position: &str, deviation: &str) -> String {
     let mut out = String::with_capacity(64 * data.readings.len() + 256);
     for c in comments {
         for line in c.lines() {
@@ -490,9 +499,7 @@ pub fn write(data: &AxisData, comments: &[String]) -> String {
     }
     let times = data.has_times();
     out.push_str(&format!(
-        "target_{},direction,run,deviation_{}",
-        kind.position_unit(),
-        kind.deviation_unit()
+        "target_{position},direction,run,deviation_{deviation}"
     ));
     if times {
         out.push_str(",time_s");

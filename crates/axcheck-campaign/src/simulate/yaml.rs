@@ -87,6 +87,7 @@ const MODEL: &[Key] = &[
     plain("outlier_rate"),
     ("outlier_size", "outlier_size_um", "outlier_size_arcsec"),
     ("resolution", "resolution_um", "resolution_arcsec"),
+    plain("geometry"),
 ];
 
 /// An entry of `model.periodic` ([`crate::axis_model::PeriodicTerm`]).

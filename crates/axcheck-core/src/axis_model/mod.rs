@@ -7,6 +7,7 @@
 //! Output is deterministic for a seed: each random term draws from its own stream
 //! ([`rng`]).
 
+pub mod geometry;
 pub mod model;
 pub mod plan;
 pub mod rng;
@@ -49,6 +50,10 @@ impl Simulation {
     /// Checks values a simulation cannot use: the plan's first, then the model's.
     pub fn validate(&self) -> Result<(), InvalidSimulation> {
         self.plan.validate().map_err(InvalidSimulation)?;
+        if self.kind == AxisKind::Rotary && !self.model.geometry.is_empty() {
+            let why = "model.geometry: straightness, rotations and the beam's offset are of a linear axis; this model is rotary";
+            return Err(InvalidSimulation(why.into()));
+        }
         let m = match (&self.plan.target_list, &self.plan.targets) {
             (Some(l), _) => l.len(),
             (None, Some(t)) => t.count,
@@ -88,7 +93,8 @@ impl Simulation {
             .map(|v| {
                 let position = targets[v.target];
                 let mut x = model.expected(kind, position, v.direction, v.time_s, travel)
-                    + run_offsets[v.run];
+                    + run_offsets[v.run]
+                    + model.geometry.abbe_at_beam(position, v.direction, travel);
                 // Draw for every reading, whatever σ, so streams stay aligned across models.
                 x += model.scatter_at(position, travel) * scatter_rng.normal();
                 let (hit, sign) = (outlier_rng.uniform(), outlier_rng.uniform());
@@ -123,5 +129,39 @@ impl Simulation {
             .collect();
         AxisData::from_raw(kind, raw, Vec::new(), "simulation")
             .expect("a simulated plan visits every target in both directions in every run")
+    }
+
+    /// A straightness (along `letter`, µm) or angular (about `letter`, arcsec) test of the
+    /// model's geometry, on the plan's targets, runs and order; `None` when the model has
+    /// no such term. Its scatter draws from its own stream, so that the positioning test
+    /// of the same seed stays as it was.
+    pub fn run_geometry(&self, seed: u64, letter: char) -> Option<AxisData> {
+        let g = &self.model.geometry;
+        let (profile, stream) = match g.straightness.get(&letter) {
+            Some(p) => (p, 20 + letter as u64),
+            None => (g.angular.get(&letter)?, 40 + letter as u64),
+        };
+        let targets = self.plan.target_positions(seed);
+        let travel = (targets[0], targets[targets.len() - 1]);
+        let mut scatter = Rng::new(seed, stream);
+        let scale = 10f64.powi(DECIMALS);
+        let raw = (self.plan.schedule(&targets).iter())
+            .map(|v| {
+                let position = targets[v.target];
+                let x =
+                    profile.at(position, v.direction, travel) + profile.scatter * scatter.normal();
+                RawReading {
+                    target: position,
+                    direction: v.direction,
+                    run: v.run as u32 + 1,
+                    deviation: (x * scale).round() / scale + 0.0,
+                    time_s: Some((v.time_s * 1000.0).round() / 1000.0),
+                    temps_c: Vec::new(),
+                    line: 0,
+                }
+            })
+            .collect();
+        let data = AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "simulation");
+        Some(data.expect("a simulated plan visits every target in both directions in every run"))
     }
 }

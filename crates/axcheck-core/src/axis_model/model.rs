@@ -8,6 +8,7 @@
 //! position; ISO 230-2 clause 3.3), per-run offsets, random scatter (constant or varying along the axis) and outliers.
 //! Deviations in the axis's deviation unit (µm or arcsec), positions in mm or deg.
 
+use super::geometry::GeometryModel;
 use crate::units::{AxisKind, Direction};
 use serde::{Deserialize, Serialize};
 
@@ -128,6 +129,9 @@ pub struct ErrorModel {
     #[serde(skip_serializing_if = "is_zero")]
     #[serde(alias = "resolution_um", alias = "resolution_arcsec")]
     pub resolution: f64,
+    /// Straightness, rotations and the beam's offset from the tool point (linear axes).
+    #[serde(skip_serializing_if = "GeometryModel::is_empty")]
+    pub geometry: GeometryModel,
 }
 
 fn is_zero(x: &f64) -> bool {
@@ -221,6 +225,7 @@ impl ErrorModel {
 
     /// Checks values a simulation cannot use.
     pub(crate) fn validate(&self, runs: usize, targets: usize) -> Result<(), String> {
+        self.geometry.validate()?;
         let nonneg = [
             ("scatter", self.scatter),
             ("scatter_end", self.scatter_end.unwrap_or(0.0)),

@@ -27,8 +27,7 @@ fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
         .collect()
 }
 
-/// Arcseconds in a radian (648 000 / π).
-pub const ARCSEC_PER_RAD: f64 = 648_000.0 / std::f64::consts::PI;
+pub use crate::units::ARCSEC_PER_RAD;
 
 /// Which laser test a file holds: a campaign axis's `test:` and `eval --test`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
