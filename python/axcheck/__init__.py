@@ -38,7 +38,10 @@ __all__ = [
     "diagnose",
     "evaluate",
     "evaluate_files",
+    "angular",
     "parameters",
+    "squareness",
+    "straightness",
     "plan",
     "read",
     "verify",
@@ -119,15 +122,19 @@ def _columns(kind: str) -> Tuple[str, str]:
     return "target_mm", "deviation_um"
 
 
-def read(path: str, sheet: Optional[str] = None, reference: Optional[str] = None) -> Measurement:
+def read(
+    path: str, sheet: Optional[str] = None, reference: Optional[str] = None, angular: bool = False
+) -> Measurement:
     """Reads a measurement file in any layout the command line reads (long or wide CSV,
     XLSX, ecmc, the ecmc ISO 230 app, Renishaw ``.rtl``/``.rta``), recognised by content.
 
     ``sheet`` names a workbook's sheet (the first by default); ``reference`` an ecmc ISO
     230 app file's reference (``1`` to ``5``, ``rbv``; the one it evaluated by default).
+    ``angular`` reads an angular test of a linear axis (pitch, yaw, roll: a long CSV with
+    ``deviation_arcsec``, ``deviation_urad`` or ``deviation_deg`` at ``target_mm``).
     A file that cannot be read raises :class:`ReadError` naming file, line and field.
     """
-    return Measurement(_axcheck.read(str(path), sheet, reference))
+    return Measurement(_axcheck.read(str(path), sheet, reference, angular))
 
 
 class Evaluation:
@@ -285,6 +292,44 @@ def diagnose(m: Measurement, standard: str = "iso230-2", pitch: Optional[float] 
     the effects found (Hemingray et al. 1971), the model checks and the parameters
     without each effect. ``pitch``: the lead screw's pitch (mm), for periodic error."""
     value: Dict[str, Any] = json.loads(_axcheck.diagnose(m._raw, standard, pitch))
+    return value
+
+
+def straightness(
+    m: Measurement, line: str = "least_squares", local: Optional[float] = None, direction: Optional[str] = None
+) -> Dict[str, Any]:
+    """The straightness of a linear axis (ISO 230-1; ``eval --test straightness --json``):
+    the range of the deviations (µm) about the reference straight line, fitted by least
+    squares or through the end points (``line="end_point"``), both directions together and
+    each, the slope removed (µm/m), the reversal and, with ``local`` (mm), the worst stretch
+    of that length. ``direction``: the axis the deviation is along (``Y`` for EYX)."""
+    value: Dict[str, Any] = json.loads(_axcheck.straightness(m._raw, line, local, direction))
+    return value
+
+
+def angular(m: Measurement, direction: Optional[str] = None) -> Dict[str, Any]:
+    """The angular deviation of a linear axis (pitch, yaw, roll; ``eval --test angular
+    --json``) of a test read with ``read(path, angular=True)``: the range of the mean
+    angular readings (arcsec), each direction's, the reversal and the repeatability.
+    ``direction``: the axis of rotation (``B`` for EBX)."""
+    value: Dict[str, Any] = json.loads(_axcheck.angular(m._raw, direction))
+    return value
+
+
+def squareness(
+    first: Measurement,
+    second: Measurement,
+    line: str = "least_squares",
+    square_error: float = 0.0,
+    convention: str = "over_90",
+) -> Dict[str, Any]:
+    """The squareness of two linear axes from their straightness tests with an optical
+    square (ISO 230-1 3.6.7; ``eval --test squareness --json``): θ₂ − θ₁ + the square's
+    error in arcsec (HP 5528A User's Guide §21), positive when the included angle is larger
+    than 90° (``convention="under_90"`` states it the other way)."""
+    value: Dict[str, Any] = json.loads(
+        _axcheck.squareness(first._raw, second._raw, line, square_error, convention)
+    )
     return value
 
 

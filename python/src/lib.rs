@@ -23,6 +23,8 @@ use pyo3::prelude::*;
 use serde::Serialize;
 use std::path::Path;
 
+mod other_tests;
+
 /// A positioning test as read: the readings and what the file was recognised as.
 #[pyclass(frozen, module = "axcheck._axcheck")]
 struct Measurement {
@@ -111,12 +113,13 @@ fn standard(text: &str) -> PyResult<StandardId> {
 /// Reads a measurement file in any layout the command line reads; `sheet` names a
 /// workbook's sheet, `reference` an ecmc ISO 230 app file's reference (1 to 5, `rbv`).
 #[pyfunction]
-#[pyo3(signature = (path, sheet=None, reference=None))]
+#[pyo3(signature = (path, sheet=None, reference=None, angular=false))]
 fn read(
     py: Python<'_>,
     path: &str,
     sheet: Option<&str>,
     reference: Option<&str>,
+    angular: bool,
 ) -> PyResult<Measurement> {
     let source = reference
         .map(measurement::Source::parse)
@@ -125,7 +128,7 @@ fn read(
     let options = ReadOptions {
         sheet,
         source,
-        ..ReadOptions::default()
+        angular,
     };
     let read = py.detach(|| measurement::read_file_with(Path::new(path), &options));
     let ReadTest { data, recognised } = read.map_err(|e| read_error(py, &e))?;
@@ -627,6 +630,9 @@ fn _axcheck(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate_files, m)?)?;
     m.add_function(wrap_pyfunction!(diagnose, m)?)?;
+    m.add_function(wrap_pyfunction!(other_tests::straightness, m)?)?;
+    m.add_function(wrap_pyfunction!(other_tests::angular, m)?)?;
+    m.add_function(wrap_pyfunction!(other_tests::squareness, m)?)?;
     m.add_function(wrap_pyfunction!(compensate_table, m)?)?;
     m.add_function(wrap_pyfunction!(verify_table, m)?)?;
     m.add_function(wrap_pyfunction!(controller_names, m)?)?;

@@ -223,3 +223,47 @@ def test_the_catalogue_names_each_parameter_with_its_clause() -> None:
     iso = {p["key"]: p["clause"] for p in axcheck.parameters()}
     assert iso["A"] == "ISO 230-2 2.23" and iso["B"] == "ISO 230-2 2.13"
 
+
+
+GEOMETRY = "tests/data/geometry"
+
+
+@pytest.mark.parametrize(
+    "args, ours",
+    [
+        (
+            [f"{GEOMETRY}/x-straightness-y.csv", "--test", "straightness", "--direction", "Y", "--local", "300"],
+            lambda: axcheck.straightness(axcheck.read(f"{GEOMETRY}/x-straightness-y.csv"), local=300, direction="Y"),
+        ),
+        (
+            [f"{GEOMETRY}/x-straightness-y.csv", "--test", "straightness", "--line", "end-point"],
+            lambda: axcheck.straightness(axcheck.read(f"{GEOMETRY}/x-straightness-y.csv"), line="end_point"),
+        ),
+        (
+            [f"{GEOMETRY}/x-pitch.csv", "--test", "angular", "--direction", "B"],
+            lambda: axcheck.angular(axcheck.read(f"{GEOMETRY}/x-pitch.csv", angular=True), direction="B"),
+        ),
+        (
+            [f"{GEOMETRY}/hp5528a-axis-1.csv", "--test", "squareness", "--second", f"{GEOMETRY}/hp5528a-axis-2.csv",
+             "--line", "end-point", "--square-error", "1.5", "--convention", "under-90"],
+            lambda: axcheck.squareness(
+                axcheck.read(f"{GEOMETRY}/hp5528a-axis-1.csv"), axcheck.read(f"{GEOMETRY}/hp5528a-axis-2.csv"),
+                line="end_point", square_error=1.5, convention="under_90",
+            ),
+        ),
+    ],
+)
+def test_the_other_tests_are_the_command_lines(args: List[str], ours: Any) -> None:
+    code, stdout, stderr = run("eval", "--json", *args)
+    assert code == 0, stderr
+    assert json.dumps(ours()) == json.dumps(json.loads(stdout))
+
+
+def test_an_angular_file_is_read_only_as_one() -> None:
+    with pytest.raises(axcheck.ReadError) as raised:
+        axcheck.read(f"{GEOMETRY}/x-pitch.csv")
+    assert raised.value.field is None or "deviation_arcsec" in str(raised.value)
+    with pytest.raises(axcheck.ReadError) as raised:
+        axcheck.read(f"{GEOMETRY}/x-straightness-y.csv", angular=True)
+    assert raised.value.field == "deviation_um"
+    assert "an angular test of a linear axis takes angular deviations" in str(raised.value)

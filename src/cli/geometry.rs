@@ -7,8 +7,8 @@ use axcheck::geometry::line::ReferenceLine;
 use axcheck::geometry::squareness::{self, Convention};
 use axcheck::geometry::{TestKind, angular, straightness};
 use axcheck::measurement::{self, ReadOptions, ReadTest};
-use axcheck::one_file::{GeometryJson, SquarenessJson, SquarenessSide};
-use axcheck::units::{AxisKind, fmt_fixed, fmt_position};
+use axcheck::one_file::{SquarenessJson, SquarenessSide, geometry_json};
+use axcheck::units::{fmt_fixed, fmt_position};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
@@ -106,19 +106,7 @@ pub fn refuse_others(args: &GeometryArgs) -> Result<()> {
 
 /// One test file read as `test` asks: a linear axis's straightness in µm, or its angles.
 fn read(path: &Path, test: TestKind, sheet: ReadOptions) -> Result<ReadTest> {
-    let options = ReadOptions {
-        angular: test == TestKind::Angular,
-        ..sheet
-    };
-    let read = measurement::read_file_with(path, &options)?;
-    if read.data.kind != AxisKind::Linear {
-        bail!(
-            "{}: a {} test is of a linear axis (targets in mm); this file's targets are in degrees",
-            path.display(),
-            test.key()
-        );
-    }
-    Ok(read)
+    Ok(axcheck::one_file::read_geometry(path, test, sheet)?)
 }
 
 /// `eval --test …`'s output: the text or the JSON.
@@ -132,18 +120,6 @@ pub fn run(file: &Path, sheet: ReadOptions, args: &GeometryArgs, json: bool) -> 
         _ => {}
     }
     let ReadTest { data, recognised } = read(file, args.test, sheet)?;
-    let json_of = |result: serde_json::Value| -> Result<String> {
-        let value = GeometryJson {
-            test: args.test,
-            direction: args.direction,
-            n: data.runs(),
-            targets_mm: &data.targets,
-            result,
-            file: &name,
-            recognised: &recognised,
-        };
-        Ok(serde_json::to_string_pretty(&value)? + "\n")
-    };
     let head = head(&name, &recognised, &data, args);
     Ok(match args.test {
         TestKind::Straightness => {
@@ -154,14 +130,18 @@ pub fn run(file: &Path, sheet: ReadOptions, args: &GeometryArgs, json: bool) -> 
             let s = straightness::evaluate(&data, &options)
                 .with_context(|| format!("{name}: a straightness needs two targets or more"))?;
             match json {
-                true => json_of(serde_json::to_value(&s)?)?,
+                true => {
+                    geometry_json(args.test, args.direction, &data, &s, &name, &recognised)? + "\n"
+                }
                 false => head + &straightness_text(&s, &data.targets),
             }
         }
         _ => {
             let a = angular::evaluate(&data).context("no target")?;
             match json {
-                true => json_of(serde_json::to_value(&a)?)?,
+                true => {
+                    geometry_json(args.test, args.direction, &data, &a, &name, &recognised)? + "\n"
+                }
                 false => head + &angular_text(&a),
             }
         }

@@ -34,6 +34,7 @@ const LAYERS: &[&[&str]] = &[
     &["report"],
     &["export"],
     &["session"],
+    &["other_tests"],
 ];
 
 const MAX_FUNCTION_LINES: usize = 100;

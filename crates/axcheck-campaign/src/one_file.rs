@@ -8,10 +8,12 @@ use crate::geometry::TestKind;
 use crate::geometry::line::ReferenceLine;
 use crate::geometry::squareness::Squareness;
 use crate::geometry::straightness::Trace;
-use crate::measurement::Recognised;
+use crate::measurement::{AxisData, ReadError, ReadOptions, ReadTest, Recognised};
 use crate::nde::NdeCorrection;
 use crate::uncertainty::Uncertainty;
+use crate::units::AxisKind;
 use serde::Serialize;
+use std::path::Path;
 
 /// What `eval` applied to the readings and what it did not (`applied`): a result printed
 /// without a campaign's corrections must say so.
@@ -86,4 +88,57 @@ pub struct SquarenessSide<'a> {
     pub recognised: &'a Recognised,
     /// Its bidirectional straightness and reference line.
     pub straightness: &'a Trace,
+}
+
+/// `eval --test straightness|angular --json`'s text for `result` of the test `data`.
+pub fn geometry_json<T: Serialize>(
+    test: TestKind,
+    direction: Option<char>,
+    data: &AxisData,
+    result: &T,
+    file: &str,
+    recognised: &Recognised,
+) -> serde_json::Result<String> {
+    serde_json::to_string_pretty(&GeometryJson {
+        test,
+        direction,
+        n: data.runs(),
+        targets_mm: &data.targets,
+        result,
+        file,
+        recognised,
+    })
+}
+
+/// Why a file cannot be one of the other tests of a linear axis.
+#[derive(Debug, thiserror::Error)]
+pub enum GeometryReadError {
+    #[error(transparent)]
+    Read(#[from] ReadError),
+    #[error(
+        "{file}: a {test} test is of a linear axis (targets in mm); this file's targets are in degrees"
+    )]
+    NotLinear { file: String, test: &'static str },
+}
+
+/// A straightness (µm across the axis) or angular (arcsec) test of a linear axis read
+/// from `path`, as `eval --test` and Python read it.
+pub fn read_geometry(
+    path: &Path,
+    test: TestKind,
+    options: ReadOptions,
+) -> Result<ReadTest, GeometryReadError> {
+    let options = ReadOptions {
+        angular: test == TestKind::Angular,
+        ..options
+    };
+    let read = crate::measurement::read_file_with(path, &options)?;
+    if read.data.kind != AxisKind::Linear {
+        let file = path.display().to_string();
+        return Err(GeometryReadError::NotLinear {
+            file,
+            test: test.key(),
+        });
+    }
+    Ok(read)
 }
