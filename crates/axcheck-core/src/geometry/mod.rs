@@ -15,6 +15,7 @@ pub mod angular;
 pub mod line;
 pub mod squareness;
 pub mod straightness;
+pub mod tolerance;
 
 use crate::measurement::AxisData;
 use crate::units::Direction;
