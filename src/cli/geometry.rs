@@ -22,7 +22,7 @@ pub struct GeometryArgs {
     #[arg(long, default_value = "positioning", value_parser = parse_test)]
     pub test: TestKind,
     /// Straightness: the axis the deviation is along (Y or Z for an X axis); angular: the
-    /// axis of rotation (A roll, B pitch, C yaw for an X axis). Names the error (EY?, EB?).
+    /// axis of rotation (A roll, B pitch, C yaw for an X axis): ISO 230-1's EYX, EBX.
     #[arg(long, value_name = "LETTER", value_parser = parse_letter)]
     pub direction: Option<char>,
     /// The reference straight line: least-squares or end-point (ISO 230-1 3.4.12).
