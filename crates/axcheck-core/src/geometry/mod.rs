@@ -16,6 +16,7 @@ pub mod line;
 pub mod squareness;
 pub mod straightness;
 pub mod tolerance;
+pub mod uncertainty;
 
 use crate::measurement::AxisData;
 use crate::units::Direction;
