@@ -295,24 +295,35 @@ def diagnose(m: Measurement, standard: str = "iso230-2", pitch: Optional[float] 
     return value
 
 
+#: An optics' accuracy for U: (percent of the value, fixed part, part per metre of travel)
+#: in the result's unit (µm or arcsec), or a preset name (``"hp5528a_short"``).
+Optics = Union[Tuple[float, float, float], str]
+
+
 def straightness(
-    m: Measurement, line: str = "least_squares", local: Optional[float] = None, direction: Optional[str] = None
+    m: Measurement,
+    line: str = "least_squares",
+    local: Optional[float] = None,
+    direction: Optional[str] = None,
+    optics: Optional[Optics] = None,
 ) -> Dict[str, Any]:
     """The straightness of a linear axis (ISO 230-1; ``eval --test straightness --json``):
     the range of the deviations (µm) about the reference straight line, fitted by least
     squares or through the end points (``line="end_point"``), both directions together and
     each, the slope removed (µm/m), the reversal and, with ``local`` (mm), the worst stretch
-    of that length. ``direction``: the axis the deviation is along (``Y`` for EYX)."""
-    value: Dict[str, Any] = json.loads(_axcheck.straightness(m._raw, line, local, direction))
+    of that length. ``direction``: the axis the deviation is along (``Y`` for EYX).
+    ``uncertainty`` holds U (k = 2) and its budget; without ``optics`` it holds the
+    scatter only, and says so."""
+    value: Dict[str, Any] = json.loads(_axcheck.straightness(m._raw, line, local, direction, optics))
     return value
 
 
-def angular(m: Measurement, direction: Optional[str] = None) -> Dict[str, Any]:
+def angular(m: Measurement, direction: Optional[str] = None, optics: Optional[Optics] = None) -> Dict[str, Any]:
     """The angular deviation of a linear axis (pitch, yaw, roll; ``eval --test angular
     --json``) of a test read with ``read(path, angular=True)``: the range of the mean
     angular readings (arcsec), each direction's, the reversal and the repeatability.
     ``direction``: the axis of rotation (``B`` for EBX)."""
-    value: Dict[str, Any] = json.loads(_axcheck.angular(m._raw, direction))
+    value: Dict[str, Any] = json.loads(_axcheck.angular(m._raw, direction, optics))
     return value
 
 
@@ -322,13 +333,17 @@ def squareness(
     line: str = "least_squares",
     square_error: float = 0.0,
     convention: str = "over_90",
+    square_u: Optional[float] = None,
+    optics: Optional[Optics] = None,
 ) -> Dict[str, Any]:
     """The squareness of two linear axes from their straightness tests with an optical
     square (ISO 230-1 3.6.7; ``eval --test squareness --json``): θ₂ − θ₁ + the square's
     error in arcsec (HP 5528A User's Guide §21), positive when the included angle is larger
-    than 90° (``convention="under_90"`` states it the other way)."""
+    than 90° (``convention="under_90"`` states it the other way); U from each line's
+    inclination, the square's calibration (``square_u``, a standard uncertainty in arcsec)
+    and the optics (``"hp5528a_short"``: the HP 5528A's short-range squareness optics)."""
     value: Dict[str, Any] = json.loads(
-        _axcheck.squareness(first._raw, second._raw, line, square_error, convention)
+        _axcheck.squareness(first._raw, second._raw, line, square_error, convention, square_u, optics)
     )
     return value
 

@@ -30,15 +30,23 @@ def read(
     path: str, sheet: Optional[str] = None, reference: Optional[str] = None, angular: bool = False
 ) -> Measurement: ...
 def straightness(
-    m: Measurement, line: str = "least_squares", local: Optional[float] = None, direction: Optional[str] = None
+    m: Measurement,
+    line: str = "least_squares",
+    local: Optional[float] = None,
+    direction: Optional[str] = None,
+    optics: Union[Tuple[float, float, float], str, None] = None,
 ) -> str: ...
-def angular(m: Measurement, direction: Optional[str] = None) -> str: ...
+def angular(
+    m: Measurement, direction: Optional[str] = None, optics: Union[Tuple[float, float, float], str, None] = None
+) -> str: ...
 def squareness(
     first: Measurement,
     second: Measurement,
     line: str = "least_squares",
     square_error: float = 0.0,
     convention: str = "over_90",
+    square_u: Optional[float] = None,
+    optics: Union[Tuple[float, float, float], str, None] = None,
 ) -> str: ...
 def read_text(text: str, name: str) -> Measurement: ...
 def evaluate(

@@ -2,7 +2,8 @@
 //! squareness (ISO 230-1), each returning the JSON `eval --test … --json` prints.
 
 use super::{Measurement, to_json};
-use axcheck_campaign::one_file;
+use axcheck_campaign::one_file::{self, OtherOptions};
+use axcheck_core::geometry::uncertainty::Accuracy;
 use axcheck_core::geometry::{self, TestKind, line::ReferenceLine};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -40,63 +41,112 @@ fn direction_letter(direction: Option<&str>, allowed: &str) -> PyResult<Option<c
     }
 }
 
+/// The optics' accuracy: (percent, fixed, per metre) or `"hp5528a_short"`.
+#[derive(FromPyObject)]
+pub enum Optics {
+    Spec(f64, f64, f64),
+    Preset(String),
+}
+
+fn optics(given: Option<Optics>) -> PyResult<Option<Accuracy>> {
+    match given {
+        None => Ok(None),
+        Some(Optics::Spec(percent, fixed, per_m)) => {
+            match [percent, fixed, per_m]
+                .iter()
+                .all(|v| v.is_finite() && *v >= 0.0)
+            {
+                true => Ok(Some(Accuracy {
+                    fraction: percent / 100.0,
+                    fixed,
+                    per_m,
+                })),
+                false => Err(PyValueError::new_err("optics: three numbers ≥ 0")),
+            }
+        }
+        Some(Optics::Preset(name)) if name.replace('-', "_") == "hp5528a_short" => {
+            Ok(Some(Accuracy::HP_5528A_SQUARENESS_SHORT))
+        }
+        Some(Optics::Preset(name)) => Err(PyValueError::new_err(format!(
+            "optics: unknown `{name}`; expected (percent, fixed, per_m) or hp5528a_short"
+        ))),
+    }
+}
+
+/// A straightness or angular test with U, as `eval --test … --json` prints it.
+fn other(
+    py: Python<'_>,
+    m: &Measurement,
+    test: TestKind,
+    direction: Option<char>,
+    options: OtherOptions,
+) -> PyResult<String> {
+    linear(m, test)?;
+    py.detach(|| {
+        let done = one_file::evaluate_other(&m.data, test, &options).ok_or_else(|| {
+            PyValueError::new_err(format!("{}: the test needs two targets or more", m.file))
+        })?;
+        one_file::geometry_json(test, direction, &m.data, &done, &m.file, &m.recognised)
+            .map_err(|e| PyValueError::new_err(e.to_string()))
+    })
+}
+
 /// `eval --test straightness --json`: the straightness (ISO 230-1) by `line`
-/// (`least_squares` or `end_point`), with the local straightness over `local` mm.
+/// (`least_squares` or `end_point`), with the local straightness over `local` mm and U
+/// (with the optics' accuracy `optics` when given).
 #[pyfunction]
-#[pyo3(signature = (m, line="least_squares", local=None, direction=None))]
+#[pyo3(signature = (m, line="least_squares", local=None, direction=None, optics=None))]
 pub fn straightness(
     py: Python<'_>,
     m: &Measurement,
     line: &str,
     local: Option<f64>,
     direction: Option<&str>,
+    optics: Option<Optics>,
 ) -> PyResult<String> {
-    linear(m, TestKind::Straightness)?;
-    let direction = direction_letter(direction, "XYZ")?;
-    let options = geometry::straightness::Options {
-        line: reference_line(line)?,
-        local_length_mm: local,
+    let options = OtherOptions {
+        straightness: geometry::straightness::Options {
+            line: reference_line(line)?,
+            local_length_mm: local,
+        },
+        optics: self::optics(optics)?,
     };
-    py.detach(|| {
-        let s = geometry::straightness::evaluate(&m.data, &options).ok_or_else(|| {
-            PyValueError::new_err(format!(
-                "{}: a straightness needs two targets or more",
-                m.file
-            ))
-        })?;
-        let test = TestKind::Straightness;
-        one_file::geometry_json(test, direction, &m.data, &s, &m.file, &m.recognised)
-            .map_err(|e| PyValueError::new_err(e.to_string()))
-    })
+    let direction = direction_letter(direction, "XYZ")?;
+    other(py, m, TestKind::Straightness, direction, options)
 }
 
 /// `eval --test angular --json`: the angular deviation of a test read with
-/// `read(path, angular=True)`.
+/// `read(path, angular=True)`, with U.
 #[pyfunction]
-#[pyo3(signature = (m, direction=None))]
-pub fn angular(py: Python<'_>, m: &Measurement, direction: Option<&str>) -> PyResult<String> {
-    linear(m, TestKind::Angular)?;
+#[pyo3(signature = (m, direction=None, optics=None))]
+pub fn angular(
+    py: Python<'_>,
+    m: &Measurement,
+    direction: Option<&str>,
+    optics: Option<Optics>,
+) -> PyResult<String> {
+    let options = OtherOptions {
+        optics: self::optics(optics)?,
+        ..OtherOptions::default()
+    };
     let direction = direction_letter(direction, "ABC")?;
-    py.detach(|| {
-        let a = geometry::angular::evaluate(&m.data)
-            .ok_or_else(|| PyValueError::new_err("no target"))?;
-        let test = TestKind::Angular;
-        one_file::geometry_json(test, direction, &m.data, &a, &m.file, &m.recognised)
-            .map_err(|e| PyValueError::new_err(e.to_string()))
-    })
+    other(py, m, TestKind::Angular, direction, options)
 }
 
 /// `eval --test squareness --json`: the squareness of two axes from their straightness
 /// tests, θ₂ − θ₁ + the square's error (HP 5528A §21), stated positive when the included
-/// angle is larger than 90° (`over_90`) or smaller (`under_90`).
+/// angle is larger than 90° (`over_90`) or smaller (`under_90`), with U.
 #[pyfunction]
-#[pyo3(signature = (first, second, line="least_squares", square_error=0.0, convention="over_90"))]
+#[pyo3(signature = (first, second, line="least_squares", square_error=0.0, convention="over_90", square_u=None, optics=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn squareness(
     first: &Measurement,
     second: &Measurement,
     line: &str,
     square_error: f64,
     convention: &str,
+    square_u: Option<f64>,
+    optics: Option<Optics>,
 ) -> PyResult<String> {
     use geometry::squareness::Convention;
     let convention = match convention.replace('-', "_").as_str() {
@@ -108,37 +158,33 @@ pub fn squareness(
             )));
         }
     };
-    let method = reference_line(line)?;
-    let trace = |m: &Measurement| -> PyResult<geometry::straightness::Trace> {
-        linear(m, TestKind::Straightness)?;
-        let options = geometry::straightness::Options {
-            line: method,
-            local_length_mm: None,
-        };
-        geometry::straightness::evaluate(&m.data, &options)
-            .map(|s| s.bidirectional)
-            .ok_or_else(|| {
-                PyValueError::new_err(format!(
-                    "{}: a straightness needs two targets or more",
-                    m.file
-                ))
-            })
+    linear(first, TestKind::Straightness)?;
+    linear(second, TestKind::Straightness)?;
+    let options = one_file::SquarenessOptions {
+        line: reference_line(line)?,
+        square_error_arcsec: square_error,
+        square_u_arcsec: square_u,
+        convention,
+        optics: self::optics(optics)?,
     };
-    let (a, b) = (trace(first)?, trace(second)?);
-    let sq = geometry::squareness::evaluate(&a.line, &b.line, square_error, convention);
+    let done = one_file::evaluate_squareness(&first.data, &second.data, &options).map_err(|k| {
+        let file = [&first.file, &second.file][k - 1];
+        PyValueError::new_err(format!("{file}: a straightness needs two targets or more"))
+    })?;
     to_json(&one_file::SquarenessJson {
         test: TestKind::Squareness,
-        line: method,
-        squareness: &sq,
+        line: options.line,
+        squareness: &done.squareness,
+        uncertainty: &done.uncertainty,
         first: one_file::SquarenessSide {
             file: &first.file,
             recognised: &first.recognised,
-            straightness: &a,
+            straightness: &done.first,
         },
         second: one_file::SquarenessSide {
             file: &second.file,
             recognised: &second.recognised,
-            straightness: &b,
+            straightness: &done.second,
         },
     })
 }

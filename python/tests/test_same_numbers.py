@@ -236,8 +236,10 @@ GEOMETRY = "tests/data/geometry"
             lambda: axcheck.straightness(axcheck.read(f"{GEOMETRY}/x-straightness-y.csv"), local=300, direction="Y"),
         ),
         (
-            [f"{GEOMETRY}/x-straightness-y.csv", "--test", "straightness", "--line", "end-point"],
-            lambda: axcheck.straightness(axcheck.read(f"{GEOMETRY}/x-straightness-y.csv"), line="end_point"),
+            [f"{GEOMETRY}/x-straightness-y.csv", "--test", "straightness", "--line", "end-point", "--optics", "0.5,0.5,0.15"],
+            lambda: axcheck.straightness(
+                axcheck.read(f"{GEOMETRY}/x-straightness-y.csv"), line="end_point", optics=(0.5, 0.5, 0.15)
+            ),
         ),
         (
             [f"{GEOMETRY}/x-pitch.csv", "--test", "angular", "--direction", "B"],
@@ -249,6 +251,14 @@ GEOMETRY = "tests/data/geometry"
             lambda: axcheck.squareness(
                 axcheck.read(f"{GEOMETRY}/hp5528a-axis-1.csv"), axcheck.read(f"{GEOMETRY}/hp5528a-axis-2.csv"),
                 line="end_point", square_error=1.5, convention="under_90",
+            ),
+        ),
+        (
+            [f"{GEOMETRY}/x-straightness-y.csv", "--test", "squareness", "--second", f"{GEOMETRY}/y-straightness-x.csv",
+             "--square-u", "0.2", "--optics", "hp5528a-short"],
+            lambda: axcheck.squareness(
+                axcheck.read(f"{GEOMETRY}/x-straightness-y.csv"), axcheck.read(f"{GEOMETRY}/y-straightness-x.csv"),
+                square_u=0.2, optics="hp5528a_short",
             ),
         ),
     ],

@@ -4,10 +4,14 @@
 use super::text::left;
 use anyhow::{Context, Result, bail};
 use axcheck::geometry::line::ReferenceLine;
-use axcheck::geometry::squareness::{self, Convention};
+use axcheck::geometry::squareness::Convention;
+use axcheck::geometry::uncertainty::{Accuracy, Uncertain};
 use axcheck::geometry::{TestKind, angular, straightness};
 use axcheck::measurement::{self, ReadOptions, ReadTest};
-use axcheck::one_file::{SquarenessJson, SquarenessSide, geometry_json};
+use axcheck::one_file::{
+    OtherOptions, OtherResult, SquarenessJson, SquarenessOptions, SquarenessSide, evaluate_other,
+    evaluate_squareness, geometry_json,
+};
 use axcheck::units::{fmt_fixed, fmt_position};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -41,6 +45,16 @@ pub struct GeometryArgs {
     /// HP 5528A §21, the default) or smaller (under-90).
     #[arg(long, value_parser = parse_convention)]
     pub convention: Option<Convention>,
+    /// Squareness: the standard uncertainty of the square's error (its calibration),
+    /// arcsec.
+    #[arg(long, value_name = "ARCSEC")]
+    pub square_u: Option<f64>,
+    /// The optics' accuracy for U, as its specification states it: `PERCENT,FIXED,PER_M`
+    /// (± PERCENT % of the value + FIXED + PER_M per metre of travel, in µm or arcsec), or
+    /// `hp5528a-short` (squareness: HP 5528A short-range optics). Unstated, U holds the
+    /// scatter only and says so.
+    #[arg(long, value_name = "SPEC", value_parser = parse_optics)]
+    pub optics: Option<Accuracy>,
 }
 
 fn parse_test(text: &str) -> Result<TestKind, String> {
@@ -59,6 +73,26 @@ fn parse_line(text: &str) -> Result<ReferenceLine, String> {
     ReferenceLine::parse(text).ok_or_else(|| "expected least-squares or end-point".into())
 }
 
+fn parse_optics(text: &str) -> Result<Accuracy, String> {
+    if text == "hp5528a-short" {
+        return Ok(Accuracy::HP_5528A_SQUARENESS_SHORT);
+    }
+    let parts: Vec<f64> = (text.split(','))
+        .map(|p| p.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| "expected PERCENT,FIXED,PER_M (three numbers) or hp5528a-short".to_string())?;
+    match parts[..] {
+        [percent, fixed, per_m] if parts.iter().all(|v| v.is_finite() && *v >= 0.0) => {
+            Ok(Accuracy {
+                fraction: percent / 100.0,
+                fixed,
+                per_m,
+            })
+        }
+        _ => Err("expected PERCENT,FIXED,PER_M (three numbers ≥ 0) or hp5528a-short".into()),
+    }
+}
+
 fn parse_convention(text: &str) -> Result<Convention, String> {
     match text {
         "over-90" => Ok(Convention::OverNinetyPositive),
@@ -70,7 +104,7 @@ fn parse_convention(text: &str) -> Result<Convention, String> {
 /// The options that belong to another test than the one asked, refused by name.
 pub fn refuse_others(args: &GeometryArgs) -> Result<()> {
     use TestKind::{Angular, Squareness, Straightness};
-    let given: [(&str, bool, &[TestKind]); 6] = [
+    let given: [(&str, bool, &[TestKind]); 7] = [
         (
             "--direction",
             args.direction.is_some(),
@@ -81,6 +115,7 @@ pub fn refuse_others(args: &GeometryArgs) -> Result<()> {
         ("--second", args.second.is_some(), &[Squareness]),
         ("--square-error", args.square_error.is_some(), &[Squareness]),
         ("--convention", args.convention.is_some(), &[Squareness]),
+        ("--square-u", args.square_u.is_some(), &[Squareness]),
     ];
     for (option, is_given, applies) in given {
         if is_given && !applies.contains(&args.test) {
@@ -112,7 +147,12 @@ fn read(path: &Path, test: TestKind, sheet: ReadOptions) -> Result<ReadTest> {
 /// `eval --test …`'s output: the text or the JSON.
 pub fn run(file: &Path, sheet: ReadOptions, args: &GeometryArgs, json: bool) -> Result<String> {
     refuse_others(args)?;
-    let line = args.line.unwrap_or_default();
+    if args.optics == Some(Accuracy::HP_5528A_SQUARENESS_SHORT) && args.test != TestKind::Squareness
+    {
+        bail!(
+            "--optics hp5528a-short is the HP 5528A's squareness optics; give PERCENT,FIXED,PER_M"
+        );
+    }
     let name = file.display().to_string();
     match args.test {
         TestKind::Squareness => return squareness_of(file, sheet, args, json),
@@ -120,32 +160,35 @@ pub fn run(file: &Path, sheet: ReadOptions, args: &GeometryArgs, json: bool) -> 
         _ => {}
     }
     let ReadTest { data, recognised } = read(file, args.test, sheet)?;
-    let head = head(&name, &recognised, &data, args);
-    Ok(match args.test {
-        TestKind::Straightness => {
-            let options = straightness::Options {
-                line,
-                local_length_mm: args.local,
-            };
-            let s = straightness::evaluate(&data, &options)
-                .with_context(|| format!("{name}: a straightness needs two targets or more"))?;
-            match json {
-                true => {
-                    geometry_json(args.test, args.direction, &data, &s, &name, &recognised)? + "\n"
-                }
-                false => head + &straightness_text(&s, &data.targets),
-            }
-        }
-        _ => {
-            let a = angular::evaluate(&data).context("no target")?;
-            match json {
-                true => {
-                    geometry_json(args.test, args.direction, &data, &a, &name, &recognised)? + "\n"
-                }
-                false => head + &angular_text(&a),
-            }
-        }
-    })
+    let options = OtherOptions {
+        straightness: straightness::Options {
+            line: args.line.unwrap_or_default(),
+            local_length_mm: args.local,
+        },
+        optics: args.optics,
+    };
+    let done = evaluate_other(&data, args.test, &options)
+        .with_context(|| format!("{name}: the test needs two targets or more"))?;
+    if json {
+        let text = geometry_json(args.test, args.direction, &data, &done, &name, &recognised)?;
+        return Ok(text + "\n");
+    }
+    let (result, u) = &done;
+    let body = match result {
+        OtherResult::Straightness(s) => straightness_text(s, u, &data.targets),
+        OtherResult::Angular(a) => angular_text(a, u),
+    };
+    Ok(head(&name, &recognised, &data, args) + &body + &u_notes(u))
+}
+
+/// What U leaves out, a line each.
+fn u_notes(u: &Uncertain) -> String {
+    u.notes.iter().map(|n| format!("  U: {n}\n")).collect()
+}
+
+/// `± U` after a value.
+fn plus_minus(u: &Uncertain, unit: &str) -> String {
+    format!("± {}{unit} (U, k = {})", fmt_fixed(u.expanded, 2), u.k)
 }
 
 /// The file, its layout and the test's shape.
@@ -180,7 +223,7 @@ fn head(
     out
 }
 
-fn straightness_text(s: &straightness::Straightness, targets: &[f64]) -> String {
+fn straightness_text(s: &straightness::Straightness, u: &Uncertain, targets: &[f64]) -> String {
     let mut out = format!("reference line: {}\n\n", s.line.key().replace('_', " "));
     let mut row = |label: &str, value: String| {
         let _ = writeln!(out, "  {}  {value}", left(label, 30));
@@ -193,7 +236,8 @@ fn straightness_text(s: &straightness::Straightness, targets: &[f64]) -> String 
             fmt_fixed(t.line.slope_um_per_m, 2)
         )
     };
-    row("straightness, both directions", trace(&s.bidirectional));
+    let both = format!("{}  {}", trace(&s.bidirectional), plus_minus(u, " µm"));
+    row("straightness, both directions", both);
     row("straightness ↑", trace(&s.up));
     row("straightness ↓", trace(&s.down));
     let i = s.reversal_target_index;
@@ -222,7 +266,7 @@ fn straightness_text(s: &straightness::Straightness, targets: &[f64]) -> String 
     out
 }
 
-fn angular_text(a: &angular::Angular) -> String {
+fn angular_text(a: &angular::Angular, u: &Uncertain) -> String {
     let mut out = String::from("\n");
     let arcsec = |v: f64| {
         format!(
@@ -234,7 +278,8 @@ fn angular_text(a: &angular::Angular) -> String {
     let mut row = |label: &str, value: String| {
         let _ = writeln!(out, "  {}  {value}", left(label, 30));
     };
-    row("angular deviation, both", arcsec(a.deviation_arcsec));
+    let both = format!("{}  {}", arcsec(a.deviation_arcsec), plus_minus(u, "″"));
+    row("angular deviation, both", both);
     row("angular deviation ↑", arcsec(a.up_arcsec));
     row("angular deviation ↓", arcsec(a.down_arcsec));
     row("reversal", arcsec(a.reversal_arcsec));
@@ -257,39 +302,39 @@ fn squareness_of(
     };
     let method = args.line.unwrap_or_default();
     let convention = args.convention.unwrap_or_default();
-    let line = |path: &Path| -> Result<(ReadTest, straightness::Trace)> {
-        let read = read(path, TestKind::Straightness, sheet)?;
-        let options = straightness::Options {
-            line: method,
-            local_length_mm: None,
-        };
-        let s = straightness::evaluate(&read.data, &options).with_context(|| {
-            format!(
-                "{}: a straightness needs two targets or more",
-                path.display()
-            )
-        })?;
-        Ok((read, s.bidirectional))
+    let first_read = read(file, TestKind::Straightness, sheet)?;
+    let second_read = read(second, TestKind::Straightness, sheet)?;
+    let options = SquarenessOptions {
+        line: method,
+        square_error_arcsec: args.square_error.unwrap_or(0.0),
+        square_u_arcsec: args.square_u,
+        convention,
+        optics: args.optics,
     };
-    let (first_read, first) = line(file)?;
-    let (second_read, second_trace) = line(second)?;
-    let square_error = args.square_error.unwrap_or(0.0);
-    let sq = squareness::evaluate(&first.line, &second_trace.line, square_error, convention);
+    let done = evaluate_squareness(&first_read.data, &second_read.data, &options).map_err(|k| {
+        let path = [file, second.as_path()][k - 1];
+        anyhow::anyhow!(
+            "{}: a straightness needs two targets or more",
+            path.display()
+        )
+    })?;
+    let (sq, first, second_trace) = (&done.squareness, &done.first, &done.second);
     let (a, b) = (file.display().to_string(), second.display().to_string());
     if json {
         let value = SquarenessJson {
             test: TestKind::Squareness,
             line: method,
-            squareness: &sq,
+            squareness: sq,
+            uncertainty: &done.uncertainty,
             first: SquarenessSide {
                 file: &a,
                 recognised: &first_read.recognised,
-                straightness: &first,
+                straightness: first,
             },
             second: SquarenessSide {
                 file: &b,
                 recognised: &second_read.recognised,
-                straightness: &second_trace,
+                straightness: second_trace,
             },
         };
         return Ok(serde_json::to_string_pretty(&value)? + "\n");
@@ -311,7 +356,7 @@ fn squareness_of(
         format!(
             "{}″  slope {} µm/m  {a}",
             fmt_fixed(sq.first_arcsec, 2),
-            slope(&first)
+            slope(first)
         ),
     );
     row(
@@ -319,7 +364,7 @@ fn squareness_of(
         format!(
             "{}″  slope {} µm/m  {b}",
             fmt_fixed(sq.second_arcsec, 2),
-            slope(&second_trace)
+            slope(second_trace)
         ),
     );
     row(
@@ -329,10 +374,11 @@ fn squareness_of(
     row(
         "squareness",
         format!(
-            "{}″ = {} µm/m  ({sign})",
+            "{}″ = {} µm/m  {}  ({sign})",
             fmt_fixed(sq.error_arcsec, 2),
-            fmt_fixed(sq.error_um_per_m, 2)
+            fmt_fixed(sq.error_um_per_m, 2),
+            plus_minus(&done.uncertainty, "″")
         ),
     );
-    Ok(out)
+    Ok(out + &u_notes(&done.uncertainty))
 }

@@ -271,3 +271,53 @@ fn the_tool_point_takes_the_abbe_error_out_again() {
     assert!((abbe_at_end - 14.544).abs() < 0.01, "{abbe_at_end}");
     assert!(worst < 0.5, "{worst}");
 }
+
+/// U through the command line: the scatter only (and a note saying so) unless the
+/// optics' accuracy is stated; squareness with HP 5528A's short-range optics preset.
+#[test]
+fn u_says_what_it_holds() {
+    let file = "tests/data/geometry/x-straightness-y.csv";
+    let bare = json(&[file, "--test", "straightness"]);
+    let u = num(&bare, &["uncertainty", "U"]);
+    assert!(u > 0.0 && u < 1.0, "{bare}");
+    let notes = bare["uncertainty"]["notes"].to_string();
+    assert!(
+        notes.contains("the optics' accuracy was not stated"),
+        "{notes}"
+    );
+    // ± (0.5 % of 8.12 µm + 0.5 µm + 0.15 µm/m × 1 m) = 0.6906 µm, rectangular: 0.3987.
+    let with = json(&[file, "--test", "straightness", "--optics", "0.5,0.5,0.15"]);
+    let optics = &with["uncertainty"]["budget"]["lines"][1];
+    assert_eq!(optics["contributor"], "optics");
+    assert_eq!(fixed(optics["u"].as_f64().unwrap(), 4), "0.3987");
+    let (code, _, stderr) = axcheck(&[
+        "eval",
+        file,
+        "--test",
+        "straightness",
+        "--optics",
+        "hp5528a-short",
+    ]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("squareness optics"), "{stderr}");
+    let sq = json(&[
+        "tests/data/geometry/hp5528a-axis-1.csv",
+        "--test",
+        "squareness",
+        "--second",
+        "tests/data/geometry/hp5528a-axis-2.csv",
+        "--optics",
+        "hp5528a-short",
+        "--square-u",
+        "0.2",
+    ]);
+    // One run: the lines' scatter is unknown (noted); the square 0.2″ and the optics'
+    // ±(0.5 + 0.1 × 0.9 m (the longer travel) + 1 % × 5.17″) = 0.6417″ / √3 = 0.3705″:
+    // U = 2·√(0.2² + 0.3705²) = 0.842″.
+    let lines = sq["uncertainty"]["budget"]["lines"]
+        .as_array()
+        .unwrap()
+        .len();
+    assert_eq!(lines, 2);
+    assert_eq!(fixed(num(&sq, &["uncertainty", "U"]), 3), "0.842");
+}

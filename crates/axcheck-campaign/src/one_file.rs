@@ -4,10 +4,12 @@
 
 use crate::crosscheck::OtherTool;
 use crate::evaluate::json::EvaluationJson;
-use crate::geometry::TestKind;
+use crate::geometry::angular::{self, Angular};
 use crate::geometry::line::ReferenceLine;
-use crate::geometry::squareness::Squareness;
-use crate::geometry::straightness::Trace;
+use crate::geometry::squareness::{Convention, Squareness};
+use crate::geometry::straightness::{self, Straightness, Trace};
+use crate::geometry::uncertainty::{self as geometry_u, Accuracy, Uncertain};
+use crate::geometry::{self, TestKind};
 use crate::measurement::{AxisData, ReadError, ReadOptions, ReadTest, Recognised};
 use crate::nde::NdeCorrection;
 use crate::uncertainty::Uncertainty;
@@ -65,6 +67,9 @@ pub struct GeometryJson<'a, T> {
     pub targets_mm: &'a [f64],
     #[serde(flatten)]
     pub result: T,
+    /// U (k = 2) of the result (the bidirectional straightness, the angular deviation)
+    /// with its budget and what it leaves out.
+    pub uncertainty: &'a Uncertain,
     pub file: &'a str,
     pub recognised: &'a Recognised,
 }
@@ -77,6 +82,7 @@ pub struct SquarenessJson<'a> {
     pub line: ReferenceLine,
     #[serde(flatten)]
     pub squareness: &'a Squareness,
+    pub uncertainty: &'a Uncertain,
     pub first: SquarenessSide<'a>,
     pub second: SquarenessSide<'a>,
 }
@@ -90,12 +96,47 @@ pub struct SquarenessSide<'a> {
     pub straightness: &'a Trace,
 }
 
-/// `eval --test straightness|angular --json`'s text for `result` of the test `data`.
-pub fn geometry_json<T: Serialize>(
+/// A straightness or angular test evaluated (its keys, untagged).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum OtherResult {
+    Straightness(Straightness),
+    Angular(Angular),
+}
+
+/// How to evaluate a straightness or angular test.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct OtherOptions {
+    pub straightness: straightness::Options,
+    /// The optics' accuracy, in the result's unit (µm or arcsec).
+    pub optics: Option<Accuracy>,
+}
+
+/// `test` (straightness or angular) of `data` with U; `None` when it has too few targets.
+pub fn evaluate_other(
+    data: &AxisData,
+    test: TestKind,
+    options: &OtherOptions,
+) -> Option<(OtherResult, Uncertain)> {
+    let o = options;
+    match test {
+        TestKind::Straightness => Some((
+            OtherResult::Straightness(straightness::evaluate(data, &o.straightness)?),
+            geometry_u::straightness(data, o.straightness.line, None, o.optics)?,
+        )),
+        _ => Some((
+            OtherResult::Angular(angular::evaluate(data)?),
+            geometry_u::angular(data, o.optics)?,
+        )),
+    }
+}
+
+/// `eval --test straightness|angular --json`'s text.
+pub fn geometry_json(
     test: TestKind,
     direction: Option<char>,
     data: &AxisData,
-    result: &T,
+    (result, uncertainty): &(OtherResult, Uncertain),
     file: &str,
     recognised: &Recognised,
 ) -> serde_json::Result<String> {
@@ -105,6 +146,7 @@ pub fn geometry_json<T: Serialize>(
         n: data.runs(),
         targets_mm: &data.targets,
         result,
+        uncertainty,
         file,
         recognised,
     })
@@ -141,4 +183,60 @@ pub fn read_geometry(
         });
     }
     Ok(read)
+}
+
+/// How to evaluate a squareness.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SquarenessOptions {
+    pub line: ReferenceLine,
+    /// The optical square's error as printed on it, arcsec.
+    pub square_error_arcsec: f64,
+    /// The standard uncertainty of that error (its calibration), arcsec.
+    pub square_u_arcsec: Option<f64>,
+    pub convention: Convention,
+    pub optics: Option<Accuracy>,
+}
+
+/// A squareness with U and the two lines it comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SquarenessResult {
+    pub squareness: Squareness,
+    pub uncertainty: Uncertain,
+    pub first: Trace,
+    pub second: Trace,
+}
+
+/// The squareness of two straightness tests; `Err(k)` when test k (1 or 2) has fewer
+/// than two targets.
+pub fn evaluate_squareness(
+    first: &AxisData,
+    second: &AxisData,
+    o: &SquarenessOptions,
+) -> Result<SquarenessResult, usize> {
+    let options = straightness::Options {
+        line: o.line,
+        local_length_mm: None,
+    };
+    let trace = |data, k: usize| {
+        straightness::evaluate(data, &options)
+            .map(|s| s.bidirectional)
+            .ok_or(k)
+    };
+    let (a, b) = (trace(first, 1)?, trace(second, 2)?);
+    let squareness =
+        geometry::squareness::evaluate(&a.line, &b.line, o.square_error_arcsec, o.convention);
+    let uncertainty = geometry_u::squareness(
+        first,
+        second,
+        o.line,
+        squareness.error_arcsec,
+        o.square_u_arcsec,
+        o.optics,
+    );
+    Ok(SquarenessResult {
+        squareness,
+        uncertainty,
+        first: a,
+        second: b,
+    })
 }

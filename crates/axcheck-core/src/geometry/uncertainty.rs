@@ -270,10 +270,10 @@ pub fn squareness(
         )),
         None => notes.push("the optical square's calibration uncertainty was not stated".into()),
     }
-    let travel = {
-        let p = &second.targets;
-        p[p.len() - 1] - p[0]
-    };
+    // The optics' part per metre on the longer of the two travels (conservative: HP
+    // states M as the moving optic's travel, and each axis moves it over its own).
+    let travel_of = |d: &AxisData| d.targets[d.targets.len() - 1] - d.targets[0];
+    let travel = travel_of(first).max(travel_of(second));
     lines.extend(optics_line(
         optics,
         error_arcsec,
