@@ -87,7 +87,6 @@ impl Simulation {
             .collect();
         let mut scatter_rng = Rng::new(seed, 3);
         let mut outlier_rng = Rng::new(seed, 4);
-        let scale = 10f64.powi(DECIMALS);
         let raw = visits
             .iter()
             .map(|v| {
@@ -116,15 +115,7 @@ impl Simulation {
                 if model.resolution > 0.0 {
                     x = (x / model.resolution).round() * model.resolution;
                 }
-                RawReading {
-                    target: position,
-                    direction: v.direction,
-                    run: v.run as u32 + 1,
-                    deviation: (x * scale).round() / scale + 0.0,
-                    time_s: Some((v.time_s * 1000.0).round() / 1000.0),
-                    temps_c: Vec::new(),
-                    line: 0,
-                }
+                reading(position, v, x)
             })
             .collect();
         AxisData::from_raw(kind, raw, Vec::new(), "simulation")
@@ -144,24 +135,30 @@ impl Simulation {
         let targets = self.plan.target_positions(seed);
         let travel = (targets[0], targets[targets.len() - 1]);
         let mut scatter = Rng::new(seed, stream);
-        let scale = 10f64.powi(DECIMALS);
         let raw = (self.plan.schedule(&targets).iter())
             .map(|v| {
                 let position = targets[v.target];
                 let x =
                     profile.at(position, v.direction, travel) + profile.scatter * scatter.normal();
-                RawReading {
-                    target: position,
-                    direction: v.direction,
-                    run: v.run as u32 + 1,
-                    deviation: (x * scale).round() / scale + 0.0,
-                    time_s: Some((v.time_s * 1000.0).round() / 1000.0),
-                    temps_c: Vec::new(),
-                    line: 0,
-                }
+                reading(position, v, x)
             })
             .collect();
         let data = AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "simulation");
         Some(data.expect("a simulated plan visits every target in both directions in every run"))
+    }
+}
+
+/// The reading of `visit` at `position` with deviation `x`, rounded as the CSV writer
+/// writes it (deviations to [`DECIMALS`], times to ms; −0 written as 0).
+fn reading(position: f64, visit: &Visit, x: f64) -> RawReading {
+    let scale = 10f64.powi(DECIMALS);
+    RawReading {
+        target: position,
+        direction: visit.direction,
+        run: visit.run as u32 + 1,
+        deviation: (x * scale).round() / scale + 0.0,
+        time_s: Some((visit.time_s * 1000.0).round() / 1000.0),
+        temps_c: Vec::new(),
+        line: 0,
     }
 }

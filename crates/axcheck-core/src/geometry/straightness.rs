@@ -93,20 +93,55 @@ pub fn evaluate(data: &AxisData, options: &Options) -> Option<Straightness> {
 
 /// The line fitted to the mean of `traces` and the range of every trace about it.
 fn trace(method: ReferenceLine, positions_mm: &[f64], traces: &[&[f64]]) -> Option<Trace> {
+    let (line, hi, lo) = about_line(method, positions_mm, traces)?;
+    Some(Trace {
+        deviation_um: hi.residual_um - lo.residual_um,
+        line,
+    })
+}
+
+/// A trace's residual about a reference line, where it is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Extreme {
+    pub residual_um: f64,
+    /// Which of the traces, and at which target.
+    pub trace: usize,
+    pub target: usize,
+}
+
+/// The line fitted to the mean of `traces`, and the largest and the smallest residual of
+/// any trace about it (the first of equals).
+pub(crate) fn about_line(
+    method: ReferenceLine,
+    positions_mm: &[f64],
+    traces: &[&[f64]],
+) -> Option<(Line, Extreme, Extreme)> {
     let mean: Vec<f64> = (0..positions_mm.len())
         .map(|i| traces.iter().map(|t| t[i]).sum::<f64>() / traces.len() as f64)
         .collect();
     let line = line::fit(method, positions_mm, &mean)?;
-    let (lo, hi) = (traces.iter())
-        .flat_map(|t| positions_mm.iter().zip(t.iter()))
-        .map(|(x, y)| y - line.at(*x))
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), r| {
-            (lo.min(r), hi.max(r))
-        });
-    Some(Trace {
-        deviation_um: hi - lo,
-        line,
-    })
+    let start = Extreme {
+        residual_um: f64::NAN,
+        trace: 0,
+        target: 0,
+    };
+    let (mut hi, mut lo) = (start, start);
+    for (k, t) in traces.iter().enumerate() {
+        for (i, (x, y)) in positions_mm.iter().zip(t.iter()).enumerate() {
+            let here = Extreme {
+                residual_um: y - line.at(*x),
+                trace: k,
+                target: i,
+            };
+            if hi.residual_um.is_nan() || here.residual_um > hi.residual_um {
+                hi = here;
+            }
+            if lo.residual_um.is_nan() || here.residual_um < lo.residual_um {
+                lo = here;
+            }
+        }
+    }
+    Some((line, hi, lo))
 }
 
 /// The worst stretch of at most `length_mm`: every run of consecutive targets that spans

@@ -18,6 +18,7 @@
 //!   offered as a named preset.
 
 use super::line::ReferenceLine;
+use super::straightness::Extreme;
 use crate::evaluate::stats::sample_sd;
 use crate::measurement::AxisData;
 use crate::uncertainty::{Budget, BudgetLine, Distribution, Input};
@@ -85,30 +86,24 @@ fn mean_u(data: &AxisData) -> Option<(Vec<f64>, [Vec<f64>; 2])> {
     Some((both, [up, down]))
 }
 
-/// The scatter's line of a range whose extremes are at `at` (target, direction; `None`:
-/// the bidirectional mean), or the note that it cannot be computed.
+/// The scatter's line of a range whose extremes are the means at `at` (target,
+/// direction), or the note that it cannot be computed.
 fn scatter_line(
     data: &AxisData,
-    at: [(usize, Option<Direction>); 2],
+    at: [(usize, Direction); 2],
     unit: &'static str,
 ) -> Result<BudgetLine, String> {
-    let Some((both, per)) = mean_u(data) else {
+    let Some((_, per)) = mean_u(data) else {
         return Err("one run: the scatter of the means cannot be estimated (no s)".into());
     };
-    let u_of = |(i, d): (usize, Option<Direction>)| match d {
-        None => both[i],
-        Some(d) => per[d.index()][i],
-    };
+    let u_of = |(i, d): (usize, Direction)| per[d.index()][i];
     let u = (u_of(at[0]).powi(2) + u_of(at[1]).powi(2)).sqrt();
-    Ok(BudgetLine::new(
-        "repeatability",
-        Input {
-            value: u,
-            unit,
-            distribution: Distribution::STANDARD,
-        },
-        1.0,
-    ))
+    let input = Input {
+        value: u,
+        unit,
+        distribution: Distribution::STANDARD,
+    };
+    Ok(BudgetLine::new("repeatability", input, 1.0))
 }
 
 fn optics_line(
@@ -139,39 +134,23 @@ pub fn straightness(
     optics: Option<Accuracy>,
 ) -> Option<Uncertain> {
     let p = &data.targets;
-    let means = |d| super::means(data, d);
-    let traces: Vec<(Direction, Vec<f64>)> = match direction {
-        Some(d) => vec![(d, means(d))],
-        None => vec![
-            (Direction::Up, means(Direction::Up)),
-            (Direction::Down, means(Direction::Down)),
-        ],
+    let directions = match direction {
+        Some(d) => vec![d],
+        None => vec![Direction::Up, Direction::Down],
     };
-    let mean: Vec<f64> = (0..p.len())
-        .map(|i| traces.iter().map(|(_, t)| t[i]).sum::<f64>() / traces.len() as f64)
-        .collect();
-    let fit = super::line::fit(line, p, &mean)?;
-    let mut lo = (f64::INFINITY, 0, Direction::Up);
-    let mut hi = (f64::NEG_INFINITY, 0, Direction::Up);
-    for (d, t) in &traces {
-        for (i, y) in t.iter().enumerate() {
-            let r = y - fit.at(p[i]);
-            if r < lo.0 {
-                lo = (r, i, *d);
-            }
-            if r > hi.0 {
-                hi = (r, i, *d);
-            }
-        }
-    }
+    let means: Vec<Vec<f64>> = directions.iter().map(|&d| super::means(data, d)).collect();
+    let traces: Vec<&[f64]> = means.iter().map(Vec::as_slice).collect();
+    let (_, hi, lo) = super::straightness::about_line(line, p, &traces)?;
+    let at = |e: Extreme| (e.target, directions[e.trace]);
     let mut notes = Vec::new();
     let mut lines = Vec::new();
-    match scatter_line(data, [(hi.1, Some(hi.2)), (lo.1, Some(lo.2))], "um") {
+    match scatter_line(data, [at(hi), at(lo)], "um") {
         Ok(l) => lines.push(l),
         Err(note) => notes.push(note),
     }
     let travel = p[p.len() - 1] - p[0];
-    lines.extend(optics_line(optics, hi.0 - lo.0, travel, "um", &mut notes));
+    let value = hi.residual_um - lo.residual_um;
+    lines.extend(optics_line(optics, value, travel, "um", &mut notes));
     Some(uncertain(travel, lines, notes))
 }
 
@@ -195,7 +174,7 @@ pub fn angular(data: &AxisData, optics: Option<Accuracy>) -> Option<Uncertain> {
     }
     let mut notes = Vec::new();
     let mut lines = Vec::new();
-    match scatter_line(data, [(hi.1, Some(hi.2)), (lo.1, Some(lo.2))], "arcsec") {
+    match scatter_line(data, [(hi.1, hi.2), (lo.1, lo.2)], "arcsec") {
         Ok(l) => lines.push(l),
         Err(note) => notes.push(note),
     }
