@@ -1,7 +1,7 @@
 //! The other tests of a linear axis for Python: straightness, angular deviation and
 //! squareness (ISO 230-1), each returning the JSON `eval --test … --json` prints.
 
-use super::{Measurement, to_json};
+use super::Measurement;
 use axcheck_campaign::one_file::{self, OtherOptions};
 use axcheck_core::geometry::uncertainty::Accuracy;
 use axcheck_core::geometry::{self, TestKind, line::ReferenceLine};
@@ -171,20 +171,9 @@ pub fn squareness(
         let file = [&first.file, &second.file][k - 1];
         PyValueError::new_err(format!("{file}: a straightness needs two targets or more"))
     })?;
-    to_json(&one_file::SquarenessJson {
-        test: TestKind::Squareness,
-        line: options.line,
-        squareness: &done.squareness,
-        uncertainty: &done.uncertainty,
-        first: one_file::SquarenessSide {
-            file: &first.file,
-            recognised: &first.recognised,
-            straightness: &done.first,
-        },
-        second: one_file::SquarenessSide {
-            file: &second.file,
-            recognised: &second.recognised,
-            straightness: &done.second,
-        },
-    })
+    done.json(
+        (&first.file, &first.recognised),
+        (&second.file, &second.recognised),
+    )
+    .map_err(|e| PyValueError::new_err(e.to_string()))
 }

@@ -9,8 +9,8 @@ use axcheck::geometry::uncertainty::{Accuracy, Uncertain};
 use axcheck::geometry::{TestKind, angular, straightness};
 use axcheck::measurement::{self, ReadOptions, ReadTest};
 use axcheck::one_file::{
-    OtherOptions, OtherResult, SquarenessJson, SquarenessOptions, SquarenessSide, evaluate_other,
-    evaluate_squareness, geometry_json,
+    OtherOptions, OtherResult, SquarenessOptions, evaluate_other, evaluate_squareness,
+    geometry_json,
 };
 use axcheck::units::{fmt_fixed, fmt_position};
 use std::fmt::Write;
@@ -321,23 +321,11 @@ fn squareness_of(
     let (sq, first, second_trace) = (&done.squareness, &done.first, &done.second);
     let (a, b) = (file.display().to_string(), second.display().to_string());
     if json {
-        let value = SquarenessJson {
-            test: TestKind::Squareness,
-            line: method,
-            squareness: sq,
-            uncertainty: &done.uncertainty,
-            first: SquarenessSide {
-                file: &a,
-                recognised: &first_read.recognised,
-                straightness: first,
-            },
-            second: SquarenessSide {
-                file: &b,
-                recognised: &second_read.recognised,
-                straightness: second_trace,
-            },
-        };
-        return Ok(serde_json::to_string_pretty(&value)? + "\n");
+        let sides = (
+            (a.as_str(), &first_read.recognised),
+            (b.as_str(), &second_read.recognised),
+        );
+        return Ok(done.json(sides.0, sides.1)? + "\n");
     }
     let sign = match convention {
         Convention::OverNinetyPositive => "positive: the included angle is larger than 90°",

@@ -200,6 +200,7 @@ pub struct SquarenessOptions {
 /// A squareness with U and the two lines it comes from.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SquarenessResult {
+    pub line: ReferenceLine,
     pub squareness: Squareness,
     pub uncertainty: Uncertain,
     pub first: Trace,
@@ -234,9 +235,34 @@ pub fn evaluate_squareness(
         o.optics,
     );
     Ok(SquarenessResult {
+        line: o.line,
         squareness,
         uncertainty,
         first: a,
         second: b,
     })
+}
+
+impl SquarenessResult {
+    /// `eval --test squareness --json`'s text, with each straightness test's file and
+    /// what it was read as.
+    pub fn json(
+        &self,
+        first: (&str, &Recognised),
+        second: (&str, &Recognised),
+    ) -> serde_json::Result<String> {
+        let side = |(file, recognised), straightness| SquarenessSide {
+            file,
+            recognised,
+            straightness,
+        };
+        serde_json::to_string_pretty(&SquarenessJson {
+            test: TestKind::Squareness,
+            line: self.line,
+            squareness: &self.squareness,
+            uncertainty: &self.uncertainty,
+            first: side(first, &self.first),
+            second: side(second, &self.second),
+        })
+    }
 }
