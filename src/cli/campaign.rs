@@ -170,7 +170,7 @@ pub fn warnings_line(result: &CampaignResult, where_all: &str) -> Option<String>
 
 /// `  FAIL         VMC-07 Y  A = 10.96 µm > 8.00 µm, …`
 fn problem_line(t: &AxisTest, width: usize) -> String {
-    let unit = t.kind().map_or("", |k| k.deviation_symbol());
+    let unit = t.deviation_symbol();
     let why = match t.verdict() {
         Verdict::Error => t.error().unwrap_or_default().to_string(),
         Verdict::Noncompliant => t.broken_rules_text(),
@@ -188,9 +188,7 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
             })
             .collect::<Vec<_>>()
             .join(", "),
-        _ => t
-            .evaluated()
-            .and_then(|e| e.judgement.as_ref())
+        _ => t.judgement()
             .into_iter()
             .flat_map(|j| j.failed())
             .map(|c| {
@@ -220,7 +218,7 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
 
 /// Why a test is not judged: no limit, or only limits of parameters it does not have.
 fn not_judged_why(t: &AxisTest) -> String {
-    let judgement = t.evaluated().and_then(|e| e.judgement.as_ref());
+    let judgement = t.judgement();
     match judgement.map(|j| &j.not_applicable) {
         Some(keys) if !keys.is_empty() => format!(
             "no limit applied: the limits of {} do not apply to this test",
@@ -423,16 +421,18 @@ fn outputs_line(
         .tests
         .iter()
         .any(|t| t.evaluated().is_some_and(|e| e.compensation.is_some()));
+    // The other laser tests have no report of their own (yet).
+    let reports = (outcome.result.tests.iter()).any(|t| t.other().is_none());
     format!(
         "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.xlsx, summary.parquet, results.json, junit.xml{}{}{}",
         plan.out.unwrap_or(Path::new("")).display(),
         outcome.written.len(),
         start.elapsed().as_secs_f64(),
         if plan.html { ", summary.html" } else { "" },
-        if plan.pdf {
-            ", summary.pdf, reports/MACHINE/AXIS.pdf"
-        } else {
-            ""
+        match (plan.pdf, reports) {
+            (true, true) => ", summary.pdf, reports/MACHINE/AXIS.pdf",
+            (true, false) => ", summary.pdf",
+            (false, _) => "",
         },
         if tables {
             ", compensation/MACHINE/AXIS.*"

@@ -162,7 +162,7 @@ fn listed(labels: &[String]) -> String {
 /// `Verification of MILL-3 X: effective: E 21.90 µm before, 1.20 predicted, 1.41 achieved`.
 fn verification(t: &AxisTest) -> Option<String> {
     let v = t.evaluated().and_then(|e| e.verification.as_deref())?;
-    let unit = t.kind().map_or("", |k| k.deviation_symbol());
+    let unit = t.deviation_symbol();
     Some(match v {
         Err(e) => format!("Verification of {}: not made: {e}", t.label()),
         Ok(v) => format!("Verification of {}: {}", t.label(), v.summary(unit)),

@@ -5,7 +5,10 @@
 //! `kind`, `standard`, `unit`, `n`, `verdict` (`pass`/`fail`/`noncompliant`/`error`),
 //! `parameters` (keyed as in `axcheck eval --json`), `limits`, `checks`, `rules`
 //! (`{id, clause, severity, message}`), `conditions`, `nde`, and `error` with the message
-//! when the verdict is `error`. No time stamps or absolute paths: the same campaign gives
+//! when the verdict is `error`; a straightness or angular test (ISO 230-1) has no
+//! `standard` and `parameters` but `geometry` (`test`, `symbol`, `direction` or `about`,
+//! its result as `eval --test … --json` prints it, `uncertainty`, `tolerance`), and its
+//! `checks` are of `straightness`, `straightness_local` or `angular`. No time stamps or absolute paths: the same campaign gives
 //! the same bytes.
 
 use super::{ExportError, Exporter, OutputFile};
@@ -51,6 +54,9 @@ pub(crate) struct TestJson<'a> {
     verdict: Verdict,
     #[serde(flatten)]
     evaluation: Option<Evaluated<'a>>,
+    /// A straightness or angular test (ISO 230-1): which, its result, U and tolerances.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    geometry: Option<OtherJson<'a>>,
     #[serde(flatten)]
     judgement: Option<Judged<'a>>,
     rules: &'a [Violation],
@@ -73,6 +79,44 @@ pub(crate) struct TestJson<'a> {
     other_tool: Option<&'a crate::crosscheck::OtherTool>,
     #[serde(skip_serializing_if = "Option::is_none")]
     error: Option<&'a str>,
+}
+
+/// A straightness or angular test in `results.json`: the keys of `eval --test … --json`
+/// (but the file's, given beside) with ISO 230-1's symbol and the tolerances as written.
+#[derive(Serialize)]
+struct OtherJson<'a> {
+    test: crate::geometry::TestKind,
+    symbol: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    direction: Option<char>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    about: Option<char>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    n: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    targets_mm: Option<&'a [f64]>,
+    #[serde(flatten)]
+    result: &'a crate::one_file::OtherResult,
+    uncertainty: &'a crate::geometry::uncertainty::Uncertain,
+    tolerance: Vec<&'a str>,
+}
+
+impl<'a> OtherJson<'a> {
+    fn new(t: &'a AxisTest) -> Option<OtherJson<'a>> {
+        let o = t.other()?;
+        let raw = &t.spec.as_ref()?.raw;
+        Some(OtherJson {
+            test: o.test,
+            symbol: &o.symbol,
+            direction: raw.direction.map(|c| c.to_ascii_uppercase()),
+            about: raw.about.map(|c| c.to_ascii_uppercase()),
+            n: o.data.as_ref().map(|d| d.runs()),
+            targets_mm: o.data.as_ref().map(|d| d.targets.as_slice()),
+            result: &o.result,
+            uncertainty: &o.uncertainty,
+            tolerance: raw.tolerance.iter().map(|(text, _)| text.as_str()).collect(),
+        })
+    }
 }
 
 /// What the campaign declares of the axis.
@@ -241,15 +285,17 @@ pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
         file: t.file.as_deref(),
         recognised: t.recognised(),
         kind: t.kind(),
-        standard: t.standard().map(|s| s.key()),
-        unit: t.kind().map(|k| k.deviation_unit()),
+        standard: t.positioning_standard().map(|s| s.key()),
+        unit: t.deviation_unit(),
         position_unit: t.kind().map(|k| k.position_unit()),
         declared: t.spec.as_ref().map(|spec| Declared {
             travel: spec.raw.travel,
             declared_measurement_travel: spec.raw.measurement_travel,
             conditions: &spec.raw.conditions,
         }),
-        measured: ev.and_then(|e| e.data.as_ref()).map(|d| {
+        measured: (ev.and_then(|e| e.data.as_ref()))
+            .or_else(|| t.other().and_then(|o| o.data.as_ref()))
+            .map(|d| {
             let (a, b) = d.measurement_travel();
             Measured {
                 measurement_travel: [a, b],
@@ -265,7 +311,8 @@ pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
             notes: &ev.evaluation.notes,
             conditions_not_stated: &ev.unstated,
         }),
-        judgement: ev.and_then(|e| e.judgement.as_ref()).map(Judged::new),
+        geometry: OtherJson::new(t),
+        judgement: t.judgement().map(Judged::new),
         rules: t.findings(),
         nde: ev.and_then(|e| e.nde.as_ref()),
         uncertainty: ev

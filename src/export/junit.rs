@@ -76,8 +76,8 @@ impl Exporter for JunitExporter {
             );
             for t in tests {
                 let name = match &t.file {
-                    Some(file) if t.tests > 1 => format!("{} [{file}]", t.axis),
-                    _ => t.axis.clone(),
+                    Some(file) if t.tests > 1 => format!("{} [{file}]", t.axis_label()),
+                    _ => t.axis_label(),
                 };
                 let _ = write!(
                     out,
@@ -105,7 +105,7 @@ impl Exporter for JunitExporter {
 /// What a test case's failure says: the parameters over their limits, those within their
 /// uncertainty zone, the limits when they are examples, the broken rules.
 fn failure_lines(t: &AxisTest) -> Vec<String> {
-    let unit = t.kind().map_or("", |k| k.deviation_symbol());
+    let unit = t.deviation_symbol();
     let mut body = Vec::new();
     if let Some(j) = t.judgement() {
         body.extend(j.failed().map(|c| c.over_limit(3, unit)));

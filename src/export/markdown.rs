@@ -84,19 +84,22 @@ fn row(t: &AxisTest) -> String {
     format!(
         "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
         cell(&t.machine.id),
-        cell(&t.axis),
+        cell(&t.axis_label()),
         cell(t.file.as_deref().unwrap_or("–")),
-        t.standard().map_or("–", |s| s.key()),
-        t.evaluated()
-            .and_then(|e| e.judgement.as_ref())
+        t.positioning_standard().map_or("–", |s| s.key()),
+        t.judgement()
             .map_or("–".to_string(), |j| cell(&j.limits.describe_labelled())),
-        e.map_or("–".to_string(), |e| e.n.to_string()),
+        (e.map(|e| e.n).or_else(|| t.other()?.data.as_ref().map(|d| d.runs())))
+            .map_or("–".to_string(), |n| n.to_string()),
         v(Role::Accuracy),
         v(Role::Systematic),
         v(Role::MeanRange),
         v(Role::Repeatability),
         v(Role::Reversal),
-        t.kind().map_or("–", |k| k.deviation_symbol()),
+        match t.deviation_symbol() {
+            "" => "–",
+            unit => unit,
+        },
         verdict_cell(t)
     )
 }
@@ -109,10 +112,26 @@ fn verdict_cell(t: &AxisTest) -> String {
         .into_iter()
         .map(|l| l.key.to_string())
         .collect();
-    match large.is_empty() {
+    let verdict = match large.is_empty() {
         true => format!("**{}**", t.verdict()),
         false => format!("**{}** (U large: {})", t.verdict(), cell(&large.join(", "))),
+    };
+    // Another laser test has none of the columns' parameters: its values follow.
+    match t.other() {
+        Some(o) => format!("{verdict}: {}", other_values(o)),
+        None => verdict,
     }
+}
+
+/// `straightness 8.12, local straightness 0.82`: the values of another laser test.
+fn other_values(o: &crate::results::OtherTested) -> String {
+    (crate::evaluate::ParamKey::GEOMETRY.into_iter())
+        .filter_map(|k| {
+            let value = o.result.value(k)?;
+            Some(format!("{} {}", crate::results::OtherTested::name(k), fmt_fixed(value, 2)))
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// What the findings list says of a test: its error, the parameters over their limits and
@@ -123,9 +142,7 @@ fn problems(t: &AxisTest) -> Vec<String> {
     if let Some(e) = t.error() {
         lines.push(format!("- **{label}**: error: {}", cell(e)));
     }
-    for c in t
-        .evaluated()
-        .and_then(|e| e.judgement.as_ref())
+    for c in t.judgement()
         .into_iter()
         .flat_map(|j| j.failed())
     {

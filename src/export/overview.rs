@@ -28,7 +28,7 @@ pub struct Row<'a> {
     /// `MACHINE|AXIS|TEST`: unique in the campaign.
     pub id: String,
     pub machine: &'a str,
-    pub axis: &'a str,
+    pub axis: String,
     /// Index of the test among the axis's tests (1-based) and their number.
     pub test: usize,
     pub tests: usize,
@@ -101,32 +101,34 @@ pub fn rows<'a>(result: &'a CampaignResult, trends: Option<&AxisTrends>) -> Vec<
 
 /// `MACHINE|AXIS|TEST`.
 pub(crate) fn test_id(t: &AxisTest) -> String {
-    format!("{}|{}|{}", t.machine.id, t.axis, t.test)
+    format!("{}|{}|{}", t.machine.id, t.axis_label(), t.test)
 }
 
 fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
     let ev = t.evaluated();
     let e = ev.map(|e| &e.evaluation);
-    let travel = ev.and_then(|e| e.data.as_ref()).map(|d| {
+    let data = (ev.and_then(|e| e.data.as_ref())).or_else(|| t.other()?.data.as_ref());
+    let travel = data.map(|d| {
         let (a, b) = d.measurement_travel();
         ((b - a) * 1e6).round() / 1e6
     });
     Row {
         id: test_id(t),
         machine: &t.machine.id,
-        axis: &t.axis,
+        axis: t.axis_label(),
         test: t.test,
         tests: t.tests,
         kind: t.kind(),
-        standard: t.standard().map(|s| s.title()),
+        standard: t.positioning_standard().map(|s| s.title()),
         travel,
         travel_text: travel.zip(t.kind()).map(|(x, k)| travel_text(k, x)),
-        n: e.map(|e| e.n),
-        unit: t.kind().map(|k| k.deviation_symbol()),
+        n: e.map(|e| e.n).or_else(|| data.map(|d| d.runs())),
+        unit: Some(t.deviation_symbol()).filter(|u| !u.is_empty()),
         values: headlines(t),
         worst: worst(t),
         verdict: t.verdict(),
-        decision_rule: (ev.and_then(|e| e.judgement.as_ref()))
+        decision_rule: t
+            .judgement()
             .filter(|j| !j.limits.is_empty())
             .map(|j| j.rule.key()),
         rules: t.broken_rules().map(|f| f.id).collect(),
@@ -190,7 +192,7 @@ fn headlines(t: &AxisTest) -> BTreeMap<&'static str, Headline> {
 }
 
 fn worst(t: &AxisTest) -> Option<Worst> {
-    let c = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
+    let c = t.judgement()?.worst()?;
     let symbol = axcheck_charts::data::symbol_of(t, c.key);
     Some(Worst {
         text: format!("{symbol} {}", fmt_fixed(c.ratio(), 2)),

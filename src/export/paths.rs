@@ -1,6 +1,7 @@
 //! Where each test's own outputs go (its report, its compensation table): one folder per
 //! machine, one file per axis test, names safe on every file system.
 
+use crate::campaign::geometry::symbol;
 use crate::results::CampaignResult;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;
@@ -79,10 +80,14 @@ pub(crate) fn test_stems(result: &CampaignResult, folder: &str) -> Vec<PathBuf> 
                 .entry(t.machine.id.clone())
                 .or_insert_with(|| unique(&safe_name(&t.machine.id), &mut taken_dirs))
                 .clone();
-            let base = if t.tests > 1 {
-                format!("{}-test{}", safe_name(&t.axis), t.test)
-            } else {
-                safe_name(&t.axis)
+            // An axis's other laser tests beside its positioning test: `X-EYX`.
+            let axis = match t.spec.as_ref().and_then(|s| symbol(&s.raw)) {
+                Some(symbol) => safe_name(&format!("{}-{symbol}", t.axis)),
+                None => safe_name(&t.axis),
+            };
+            let base = match t.tests > 1 {
+                true => format!("{axis}-test{}", t.test),
+                false => axis,
             };
             let name = unique(&base, used.entry(dir.clone()).or_default());
             PathBuf::from(folder).join(dir).join(name)

@@ -248,7 +248,7 @@ fn write_test(
     t: &crate::results::AxisTest,
 ) -> Result<(), XlsxError> {
     write_text(sheet, r, 0, &t.machine.id)?;
-    write_text(sheet, r, 1, &t.axis)?;
+    write_text(sheet, r, 1, &t.axis_label())?;
     write_number(sheet, r, 2, t.test as f64)
 }
 

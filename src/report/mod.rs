@@ -348,7 +348,7 @@ fn ratio_bars(result: &CampaignResult) -> Vec<charts::RatioBar> {
     tests
         .iter()
         .filter_map(|t| {
-            let worst = t.evaluated().and_then(|e| e.judgement.as_ref())?.worst()?;
+            let worst = t.judgement()?.worst()?;
             Some(charts::RatioBar {
                 // Drawn as text by the chart, not read from the report's data.
                 label: crate::safe_text::visible(&t.label()).into_owned(),

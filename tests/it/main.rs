@@ -20,6 +20,7 @@ mod ecmc_app;
 mod external;
 mod fuzz_corpus;
 mod geometry;
+mod geometry_campaign;
 mod gost27843;
 mod history;
 #[cfg(unix)]

@@ -104,6 +104,21 @@ pub enum OtherResult {
     Angular(Angular),
 }
 
+impl OtherResult {
+    /// The value a tolerance may limit (`straightness`, `straightness_local`, `angular`).
+    pub fn value(&self, key: crate::param_key::ParamKey) -> Option<f64> {
+        use crate::param_key::ParamKey as K;
+        match (self, key) {
+            (OtherResult::Straightness(s), K::Straightness) => Some(s.bidirectional.deviation_um),
+            (OtherResult::Straightness(s), K::StraightnessLocal) => {
+                s.local.as_ref().map(|l| l.deviation_um)
+            }
+            (OtherResult::Angular(a), K::Angular) => Some(a.deviation_arcsec),
+            _ => None,
+        }
+    }
+}
+
 /// How to evaluate a straightness or angular test.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct OtherOptions {

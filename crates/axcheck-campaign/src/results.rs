@@ -46,6 +46,52 @@ pub enum Outcome {
     /// The file was read and evaluated (boxed: a fleet's results stay small and cheap to
     /// move, whatever a test holds).
     Evaluated(Box<Evaluated>),
+    /// A straightness or angular test (ISO 230-1) read, evaluated and judged.
+    Other(Box<OtherTested>),
+}
+
+/// A straightness or angular test of an axis, evaluated and judged.
+#[derive(Debug, Clone)]
+pub struct OtherTested {
+    pub verdict: Verdict,
+    pub recognised: Recognised,
+    pub test: crate::geometry::TestKind,
+    /// ISO 230-1's symbol: `EYX`, `EBX` …
+    pub symbol: String,
+    /// The readings (dropped by the CI gate once the test is judged).
+    pub data: Option<AxisData>,
+    pub result: crate::one_file::OtherResult,
+    /// U (k = 2) of the result's main value (the straightness, the angular deviation).
+    pub uncertainty: crate::geometry::uncertainty::Uncertain,
+    pub judgement: Judgement,
+}
+
+impl OtherTested {
+    /// The deviation unit of its values: `um` or `arcsec`.
+    pub fn unit(&self) -> &'static str {
+        match self.test {
+            crate::geometry::TestKind::Angular => "arcsec",
+            _ => "um",
+        }
+    }
+
+    /// A value's name as reports print it.
+    pub fn name(key: crate::param_key::ParamKey) -> &'static str {
+        use crate::param_key::ParamKey as K;
+        match key {
+            K::Straightness => "straightness",
+            K::StraightnessLocal => "local straightness",
+            K::Angular => "angular deviation",
+            _ => "",
+        }
+    }
+
+    /// U of each judged value, by key.
+    pub fn expanded(&self) -> BTreeMap<String, f64> {
+        (self.judgement.checks.iter())
+            .filter_map(|c| Some((c.key.to_string(), c.expanded_uncertainty?)))
+            .collect()
+    }
 }
 
 /// Everything the stages found for a test whose file was read.
@@ -95,11 +141,19 @@ impl AxisTest {
         self.spec.as_ref().map(|s| s.standard)
     }
 
+    /// The standard a positioning test is evaluated by; `None` for the other tests (ISO
+    /// 230-1's, whatever the campaign's standard).
+    pub fn positioning_standard(&self) -> Option<StandardId> {
+        self.standard()
+            .filter(|_| self.test_kind() == crate::geometry::TestKind::Positioning)
+    }
+
     /// The test's verdict (`error` when it was not evaluated).
     pub fn verdict(&self) -> Verdict {
         match &self.outcome {
             Outcome::Unread { .. } => Verdict::Error,
             Outcome::Evaluated(e) => e.verdict,
+            Outcome::Other(o) => o.verdict,
         }
     }
 
@@ -108,22 +162,63 @@ impl AxisTest {
         match &self.outcome {
             Outcome::Unread { error, .. } => Some(error),
             Outcome::Evaluated(e) => e.error.as_deref(),
+            Outcome::Other(_) => None,
         }
     }
 
     /// What the stages found, when the file was read and evaluated.
+    /// A positioning test's: `None` for the other tests ([`Self::other`]).
     pub fn evaluated(&self) -> Option<&Evaluated> {
         match &self.outcome {
-            Outcome::Unread { .. } => None,
             Outcome::Evaluated(e) => Some(e),
+            Outcome::Unread { .. } | Outcome::Other(_) => None,
         }
     }
 
     pub(crate) fn evaluated_mut(&mut self) -> Option<&mut Evaluated> {
         match &mut self.outcome {
-            Outcome::Unread { .. } => None,
             Outcome::Evaluated(e) => Some(e),
+            Outcome::Unread { .. } | Outcome::Other(_) => None,
         }
+    }
+
+    /// The axis's name, followed for another laser test by ISO 230-1's symbol: `X`,
+    /// `X EYX`.
+    pub fn axis_label(&self) -> String {
+        match self.spec.as_ref().and_then(|s| crate::campaign::geometry::symbol(&s.raw)) {
+            Some(symbol) => format!("{} {symbol}", self.axis),
+            None => self.axis.clone(),
+        }
+    }
+
+    /// The unit its deviations are printed in: `µm` or `″` (an angular test's arcsec on a
+    /// linear axis); empty when the axis is unknown.
+    pub fn deviation_symbol(&self) -> &'static str {
+        match self.test_kind() {
+            crate::geometry::TestKind::Angular => crate::units::AxisKind::Rotary.deviation_symbol(),
+            _ => self.kind().map_or("", |k| k.deviation_symbol()),
+        }
+    }
+
+    /// The unit of its deviations as files write it: `um` or `arcsec`.
+    pub fn deviation_unit(&self) -> Option<&'static str> {
+        match self.test_kind() {
+            crate::geometry::TestKind::Angular => Some("arcsec"),
+            _ => self.kind().map(|k| k.deviation_unit()),
+        }
+    }
+
+    /// A straightness or angular test evaluated and judged.
+    pub fn other(&self) -> Option<&OtherTested> {
+        match &self.outcome {
+            Outcome::Other(o) => Some(o),
+            _ => None,
+        }
+    }
+
+    /// Which laser test this is: positioning unless the axis entry says otherwise.
+    pub fn test_kind(&self) -> crate::geometry::TestKind {
+        self.spec.as_ref().map_or_else(Default::default, |s| s.raw.test)
     }
 
     /// The layout the file was read as, when it was read.
@@ -131,17 +226,25 @@ impl AxisTest {
         match &self.outcome {
             Outcome::Unread { recognised, .. } => recognised.as_deref(),
             Outcome::Evaluated(e) => Some(&e.recognised),
+            Outcome::Other(o) => Some(&o.recognised),
         }
     }
 
     /// The judgement against the limits, when the test was judged.
     pub fn judgement(&self) -> Option<&crate::judge::Judgement> {
-        self.evaluated().and_then(|e| e.judgement.as_ref())
+        match &self.outcome {
+            Outcome::Evaluated(e) => e.judgement.as_ref(),
+            Outcome::Other(o) => Some(&o.judgement),
+            Outcome::Unread { .. } => None,
+        }
     }
 
     /// The checks whose U is over half the limit or over the value (none when the test
     /// was not judged or its U not computed: `check` computes U only for ISO 14253-1).
     pub fn large_uncertainty(&self) -> Vec<crate::judge::LargeUncertainty> {
+        if let Some(o) = self.other() {
+            return o.judgement.large_uncertainty(&o.expanded());
+        }
         let e = self.evaluated();
         match (self.judgement(), e.and_then(|e| e.uncertainty.as_ref())) {
             (Some(j), Some(u)) => j.large_uncertainty(&u.expanded),
@@ -152,10 +255,7 @@ impl AxisTest {
     /// The checks whose decision is inconclusive (the measurement's U straddles the
     /// limit, ISO 14253-1): none when the test was not judged.
     pub fn inconclusive(&self) -> impl Iterator<Item = &crate::judge::Check> {
-        self.evaluated()
-            .and_then(|e| e.judgement.as_ref())
-            .into_iter()
-            .flat_map(|j| j.inconclusive())
+        self.judgement().into_iter().flat_map(|j| j.inconclusive())
     }
 
     /// The test-plan findings (none when the file was not read).
@@ -163,10 +263,11 @@ impl AxisTest {
         self.evaluated().map_or(&[], |e| &e.findings)
     }
 
-    /// `VMC-07 X` or `VMC-07 X (2/3)`, on one line whatever the names hold: hidden
+    /// `VMC-07 X`, `VMC-07 X (2/3)` or, for another laser test, `VMC-07 X EYX`, on one line whatever the names hold: hidden
     /// characters, line breaks and tabs as escapes ([`crate::safe_text::one_line`]).
     pub fn label(&self) -> String {
-        let (id, axis) = (one_line(&self.machine.id), one_line(&self.axis));
+        let axis_label = self.axis_label();
+        let (id, axis) = (one_line(&self.machine.id), one_line(&axis_label));
         if self.tests > 1 {
             format!("{id} {axis} ({}/{})", self.test, self.tests)
         } else {
@@ -189,7 +290,7 @@ impl AxisTest {
 
     /// True when no tolerance applied to this test.
     pub fn no_tolerance(&self) -> bool {
-        (self.evaluated().and_then(|e| e.judgement.as_ref())).is_none_or(|j| j.limits.is_empty())
+        self.judgement().is_none_or(|j| j.limits.is_empty())
     }
 }
 
@@ -226,8 +327,7 @@ impl CampaignResult {
     /// Whether a test was judged by ISO 14253-1 (then `inconclusive` is a possible verdict).
     pub fn uses_uncertainty_rule(&self) -> bool {
         self.tests.iter().any(|t| {
-            (t.evaluated().and_then(|e| e.judgement.as_ref()))
-                .is_some_and(|j| j.rule == DecisionRule::Iso14253_1)
+            t.judgement().is_some_and(|j| j.rule == DecisionRule::Iso14253_1)
         })
     }
 
@@ -315,7 +415,7 @@ impl CampaignResult {
             self.tests.len()
         )];
         for (t, large) in flagged.iter().take(CAVEAT_TESTS) {
-            let unit = t.kind().map_or("", |k| k.deviation_symbol());
+            let unit = t.deviation_symbol();
             // The first in the standard's order (A before E, M …), and how many more.
             let Some(worst) = large.first() else {
                 continue;

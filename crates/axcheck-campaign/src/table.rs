@@ -3,6 +3,7 @@
 //! interface, README "Outputs").
 
 use crate::evaluate::catalogue;
+use crate::param_key::ParamKey;
 use crate::results::{AxisTest, CampaignResult};
 
 /// A cell of the table.
@@ -74,6 +75,13 @@ pub fn columns() -> Vec<(String, ColumnKind)> {
             ("error", Text),
             // Added in issue 42: the verdict rests on a spec marked `example: true`.
             ("example_limits", Bool),
+            // Added in issue 46: the laser test (`positioning`, `straightness`, `angular`),
+            // ISO 230-1's symbol (`EYX`) and the other tests' values (µm, µm, arcsec).
+            ("test_kind", Text),
+            ("symbol", Text),
+            ("straightness", Number),
+            ("straightness_local", Number),
+            ("angular", Number),
         ]
         .iter()
         .map(|(n, k)| (n.to_string(), *k)),
@@ -89,28 +97,30 @@ pub fn rows(result: &CampaignResult) -> Vec<Vec<Cell>> {
 fn row(t: &AxisTest) -> Vec<Cell> {
     let ev = t.evaluated();
     let e = ev.map(|e| &e.evaluation);
+    let other = t.other();
+    let data = (ev.and_then(|e| e.data.as_ref())).or_else(|| other.and_then(|o| o.data.as_ref()));
     // Rounded to 1e-6: positions carry at most 6 decimals, their difference no more.
-    let travel = ev.and_then(|e| e.data.as_ref()).map(|d| {
+    let travel = data.map(|d| {
         let (a, b) = d.measurement_travel();
         ((b - a) * 1e6).round() / 1e6
     });
-    let worst = ev
-        .and_then(|e| e.judgement.as_ref())
-        .and_then(|j| j.worst());
+    let worst = t.judgement().and_then(|j| j.worst());
+    let (n, m) = match (e, data) {
+        (Some(e), _) => (Some(e.n), Some(e.targets.len())),
+        (None, Some(d)) => (Some(d.runs()), Some(d.targets.len())),
+        _ => (None, None),
+    };
     let mut cells = vec![
         Cell::text(&t.machine.id),
         Cell::text(&t.axis),
         Cell::Int(t.test as i64),
         Cell::opt_text(t.file.clone()),
         Cell::opt_text(t.kind().map(|k| k.to_string())),
-        Cell::opt_text(t.standard().map(|s| s.key())),
-        Cell::opt_text(
-            ev.and_then(|e| e.judgement.as_ref())
-                .map(|j| j.limits.describe()),
-        ),
-        Cell::opt_text(t.kind().map(|k| k.deviation_unit())),
-        e.map_or(Cell::Empty, |e| Cell::Int(e.n as i64)),
-        e.map_or(Cell::Empty, |e| Cell::Int(e.targets.len() as i64)),
+        Cell::opt_text(t.positioning_standard().map(|s| s.key())),
+        Cell::opt_text(t.judgement().map(|j| j.limits.describe())),
+        Cell::opt_text(t.deviation_unit()),
+        n.map_or(Cell::Empty, |n| Cell::Int(n as i64)),
+        m.map_or(Cell::Empty, |m| Cell::Int(m as i64)),
         Cell::opt_number(travel),
         Cell::text(t.verdict().name()),
     ];
@@ -119,9 +129,7 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     }
     cells.push(Cell::opt_text(worst.map(|c| c.key.to_string())));
     cells.push(Cell::opt_number(worst.map(|c| c.ratio())));
-    let failed: Vec<String> = ev
-        .and_then(|e| e.judgement.as_ref())
-        .into_iter()
+    let failed: Vec<String> = (t.judgement().into_iter())
         .flat_map(|j| j.failed().map(|c| c.key.to_string()))
         .collect();
     cells.push(Cell::text(failed.join(" ")));
@@ -134,9 +142,19 @@ fn row(t: &AxisTest) -> Vec<Cell> {
     cells.push(Cell::opt_text(t.error()));
     // Empty where no limit applied: there is no verdict to qualify.
     cells.push(
-        ev.and_then(|e| e.judgement.as_ref())
-            .filter(|j| !j.limits.is_empty())
+        (t.judgement().filter(|j| !j.limits.is_empty()))
             .map_or(Cell::Empty, |j| Cell::Bool(j.limits.example)),
     );
+    cells.push(Cell::text(t.test_kind().key()));
+    cells.push(Cell::opt_text(other.map(|o| o.symbol.clone())));
+    let value = |key| {
+        let result = other.map(|o| &o.result);
+        Cell::opt_number(result.and_then(|r| r.value(key)))
+    };
+    cells.extend([
+        value(ParamKey::Straightness),
+        value(ParamKey::StraightnessLocal),
+        value(ParamKey::Angular),
+    ]);
     cells
 }

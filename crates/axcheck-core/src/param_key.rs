@@ -39,10 +39,16 @@ pub enum ParamKey {
     SpreadDown,
     LMax,
     LMean,
+    /// The other laser tests' values (ISO 230-1), judged like the parameters: a
+    /// straightness (µm), a local straightness over a stated length (µm), an angular
+    /// deviation (arcsec).
+    Straightness,
+    StraightnessLocal,
+    Angular,
 }
 
 impl ParamKey {
-    /// Every key, in the order the catalogue first lists it.
+    /// Every positioning parameter's key, in the order the catalogue first lists it.
     pub const ALL: [ParamKey; 29] = {
         use ParamKey::*;
         [
@@ -51,6 +57,14 @@ impl ParamKey {
             LMax, LMean,
         ]
     };
+
+    /// The keys of the other laser tests' values (not in the positioning catalogue: no
+    /// positioning tolerance may name them).
+    pub const GEOMETRY: [ParamKey; 3] = [
+        ParamKey::Straightness,
+        ParamKey::StraightnessLocal,
+        ParamKey::Angular,
+    ];
 
     /// The key as files and outputs write it: `A`, `A_up`, `R_max` …
     pub fn as_str(self) -> &'static str {
@@ -85,12 +99,15 @@ impl ParamKey {
             SpreadDown => "spread_down",
             LMax => "L_max",
             LMean => "L_mean",
+            Straightness => "straightness",
+            StraightnessLocal => "straightness_local",
+            Angular => "angular",
         }
     }
 
     /// The key `text` writes, if it is one (spelled exactly: keys are case-sensitive).
     pub fn parse(text: &str) -> Option<ParamKey> {
-        ParamKey::ALL.into_iter().find(|k| k.as_str() == text)
+        (ParamKey::ALL.into_iter().chain(ParamKey::GEOMETRY)).find(|k| k.as_str() == text)
     }
 }
 
@@ -129,13 +146,14 @@ mod tests {
 
     #[test]
     fn every_key_reads_back_and_is_distinct() {
-        for k in ParamKey::ALL {
+        let every = || ParamKey::ALL.into_iter().chain(ParamKey::GEOMETRY);
+        for k in every() {
             assert_eq!(ParamKey::parse(k.as_str()), Some(k));
         }
-        let mut written: Vec<&str> = ParamKey::ALL.iter().map(|k| k.as_str()).collect();
+        let mut written: Vec<&str> = every().map(|k| k.as_str()).collect();
         written.sort_unstable();
         written.dedup();
-        assert_eq!(written.len(), ParamKey::ALL.len());
+        assert_eq!(written.len(), every().count());
         assert_eq!(ParamKey::parse("a"), None);
         assert_eq!(ParamKey::parse("A "), None);
     }

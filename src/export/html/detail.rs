@@ -84,15 +84,13 @@ pub struct Links {
 
 pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) -> Detail<'a> {
     let ev = t.evaluated();
-    let unit = t.kind().map(|k| k.deviation_symbol());
+    let unit = Some(t.deviation_symbol()).filter(|u| !u.is_empty());
     Detail {
         id: super::super::overview::test_id(t),
         label: t.label(),
         file: t.file.as_deref(),
-        standard: t.standard().map(|s| s.title()),
-        limits: ev
-            .and_then(|e| e.judgement.as_ref())
-            .map(|j| j.limits.describe_labelled()),
+        standard: t.positioning_standard().map(|s| s.title()),
+        limits: t.judgement().map(|j| j.limits.describe_labelled()),
         unit,
         parameters: parameters(t),
         not_applicable: (ev.map(|e| &e.evaluation).into_iter())
@@ -128,11 +126,14 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
 }
 
 fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
+    if let Some(o) = t.other() {
+        return other_values(o);
+    }
     let Some(e) = t.evaluated().map(|e| &e.evaluation) else {
         return Vec::new();
     };
     let check = |key: ParamKey| {
-        (t.evaluated().and_then(|e| e.judgement.as_ref()))
+        (t.judgement())
             .and_then(|j| j.checks.iter().find(|c| c.key == key))
     };
     let u_of = |key: ParamKey| {
@@ -149,6 +150,25 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
             u: u_of(p.def.key).map(|u| fmt_fixed(u, 2)),
             limit: check(p.def.key).map(|c| fmt_fixed(c.limit, 2)),
             outcome: check(p.def.key).map(|c| c.outcome),
+        })
+        .collect()
+}
+
+/// A straightness or angular test's values, with U and their checks.
+fn other_values(o: &crate::results::OtherTested) -> Vec<ParameterRow> {
+    (ParamKey::GEOMETRY.into_iter())
+        .filter_map(|key| {
+            let value = o.result.value(key)?;
+            let check = o.judgement.checks.iter().find(|c| c.key == key);
+            Some(ParameterRow {
+                symbol: key.as_str(),
+                name: crate::results::OtherTested::name(key),
+                clause: "ISO 230-1",
+                value: fmt_fixed(value, 2),
+                u: Some(fmt_fixed(o.uncertainty.expanded, 2)),
+                limit: check.map(|c| fmt_fixed(c.limit, 2)),
+                outcome: check.map(|c| c.outcome),
+            })
         })
         .collect()
 }

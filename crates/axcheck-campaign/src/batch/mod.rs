@@ -3,6 +3,7 @@
 //! with its message; the rest of the campaign completes. Then each re-measurement that
 //! verifies a table is compared with its prediction ([`verification`]).
 
+mod other;
 pub mod verification;
 
 use crate::results::{AxisTest, CampaignResult, Evaluated, Outcome};
@@ -281,6 +282,9 @@ fn run_test(
         Ok(read) => read,
         Err(test) => return (*test, None),
     };
+    if other::is_other(axis) {
+        return (other::run(slot, axis, campaign, (data, recognised), options), None);
+    }
     // The tool's own results are of the readings as the file holds them (before NDE).
     let other_tool = (recognised.reported.as_ref()).map(|r| crate::crosscheck::compare(r, &data));
     // The file's own conditions (a Renishaw ENVIRONMENT) fill what the campaign leaves out.

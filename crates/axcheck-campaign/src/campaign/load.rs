@@ -151,6 +151,8 @@ fn axis(
             standard,
             // `spec: none` opts an axis out of the campaign's default spec.
             spec: match raw.spec.as_deref() {
+                // The other tests' limits are their own `tolerance:` (no spec holds them).
+                _ if raw.test != crate::geometry::TestKind::Positioning => None,
                 Some("none") => None,
                 Some(name) => Some(name.to_string()),
                 None => campaign.spec.clone().filter(|s| s != "none"),
@@ -194,6 +196,7 @@ fn validated_axis(
     check_compensation(&raw, base, index)?;
     check_plan(&raw, base, index)?;
     check_tolerances(&mut raw, base, index)?;
+    super::geometry::check(&mut raw, base, index)?;
     check_instrument(&raw, base, index)?;
     Ok((raw, standard, data))
 }

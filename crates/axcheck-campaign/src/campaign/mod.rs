@@ -7,6 +7,7 @@
 pub mod clause7_1;
 pub mod data;
 mod file_info;
+pub mod geometry;
 mod load;
 pub mod model;
 pub mod stages;
@@ -221,11 +222,13 @@ fn unique_axis_names(machine: &Machine, m: usize, index: &LocationIndex) -> Resu
     let mut axes = BTreeMap::new();
     for (a, entry) in machine.axes.iter().enumerate() {
         let Ok(spec) = &entry.spec else { continue };
-        if let Some(first) = axes.insert(spec.raw.name.as_str(), a) {
+        // One axis may hold several tests: positioning, EYX, EZX, EBX …
+        let test = (spec.raw.name.as_str(), spec.raw.test.key(), geometry::symbol(&spec.raw));
+        if let Some(first) = axes.insert(test, a) {
             return Err(Located::new(
                 index.value(&format!("machines[{m}].axes[{a}].name")),
                 format!(
-                    "machines[{m}].axes[{a}].name: axis `{}` of machine `{}` is named twice (axes[{first}] and axes[{a}]); each axis of a machine needs its own name",
+                    "machines[{m}].axes[{a}].name: axis `{}` of machine `{}` is named twice (axes[{first}] and axes[{a}]); each axis of a machine needs its own name (or, for one axis's other laser tests, its own `test:` and `direction:` or `about:`)",
                     spec.raw.name, machine.info.id
                 ),
             ));

@@ -2,6 +2,9 @@
 //! test report needs by ISO 230-2 clause 7.1 has a key of its own.
 
 use crate::axis_model::Cycle;
+use crate::geometry::TestKind;
+use crate::geometry::line::ReferenceLine;
+use crate::geometry::tolerance::Tolerance;
 use crate::judge::{DecisionRule, Tolerances};
 use crate::uncertainty::InstrumentKind;
 use crate::units::{AxisKind, Travel};
@@ -200,6 +203,67 @@ pub struct AxisRaw {
     pub plan: Option<PlanRaw>,
     #[serde(default)]
     pub conditions: Box<Conditions>,
+    /// The other laser tests of a linear axis (ISO 230-1): which test the files hold
+    /// and how it is evaluated and judged. `test: straightness` with `direction: Y` is
+    /// EYX of an X axis, `test: angular` with `about: B` its pitch EBX. `positioning`
+    /// (ISO 230-2) when absent.
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::keyword",
+        skip_serializing_if = "is_positioning"
+    )]
+    pub test: TestKind,
+    /// Straightness: the axis the deviation is along (`Y` or `Z` for an X axis).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub direction: Option<char>,
+    /// Angular: the axis the rotation is about (`A` roll, `B` pitch, `C` yaw of an X
+    /// axis; ISO 230-1 names them by the axis of rotation).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub about: Option<char>,
+    /// Straightness: the reference line, `least_squares` (default) or `end_point`.
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub line: Option<ReferenceLine>,
+    /// Straightness: the local straightness over any stretch of this length, mm (taken
+    /// from a tolerance `… over any L` when absent).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub local_mm: Option<f64>,
+    /// The test's tolerances as written (`0.020 per 1000`, `0.010 over any 300`, `30″`):
+    /// read by serde, then checked and moved into `tolerance` by the loader.
+    #[serde(
+        rename = "tolerance",
+        default,
+        deserialize_with = "one_or_many_texts",
+        skip_serializing
+    )]
+    pub(super) written_tolerance: Vec<String>,
+    /// The tolerances, each beside its text.
+    #[serde(skip_deserializing, skip_serializing_if = "Vec::is_empty")]
+    pub tolerance: Vec<(String, Tolerance)>,
+}
+
+fn is_positioning(test: &TestKind) -> bool {
+    *test == TestKind::Positioning
+}
+
+/// A tolerance or a list of them: text (`0.020 per 1000`) or a number (mm).
+fn one_or_many_texts<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Vec<String>, D::Error> {
+    let text = |v: &Value| match v {
+        Value::String(s) => Ok(s.clone()),
+        Value::Number(n) => Ok(n.to_string()),
+        other => Err(D::Error::custom(format!(
+            "expected a tolerance such as `0.020 per 1000` or `30″`, got {}",
+            describe(other)
+        ))),
+    };
+    match Value::deserialize(deserializer)? {
+        Value::Null => Ok(Vec::new()),
+        Value::Sequence(items) => items.iter().map(text).collect(),
+        one => Ok(vec![text(&one)?]),
+    }
 }
 
 /// An axis's compensation table: `compensation: {interval: 50, reference: 0, axis: X1}`

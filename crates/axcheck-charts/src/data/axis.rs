@@ -188,8 +188,7 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
         ("Standard", t.standard().map(|s| s.title().to_string())),
         (
             "Acceptance spec",
-            t.evaluated()
-                .and_then(|e| e.judgement.as_ref())
+            t.judgement()
                 .map(|j| j.limits.describe_labelled()),
         ),
         (
@@ -223,16 +222,12 @@ impl VerdictText {
                     .to_string()
             }
             Verdict::Pass => {
-                let n = t
-                    .evaluated()
-                    .and_then(|e| e.judgement.as_ref())
+                let n = t.judgement()
                     .map_or(0, |j| j.checks.len());
                 format!("All {n} limited parameters are within tolerance.")
             }
             Verdict::Fail => {
-                let failed: Vec<String> = t
-                    .evaluated()
-                    .and_then(|e| e.judgement.as_ref())
+                let failed: Vec<String> = t.judgement()
                     .into_iter()
                     .flat_map(|j| j.failed())
                     .map(|c| symbol_of(t, c.key))
@@ -248,7 +243,7 @@ impl VerdictText {
             ),
             Verdict::Error => t.error().unwrap_or_default().to_string(),
             Verdict::Inconclusive => {
-                let unit = t.kind().map_or("", |k| k.deviation_symbol());
+                let unit = t.deviation_symbol();
                 let zone: Vec<String> = t
                     .inconclusive()
                     .map(|c| {
@@ -267,7 +262,7 @@ impl VerdictText {
                 )
             }
         };
-        let unit = t.kind().map_or("", |k| k.deviation_symbol());
+        let unit = t.deviation_symbol();
         let large: Vec<String> = (t.large_uncertainty().iter())
             .map(|l| l.text(2, unit))
             .collect();
@@ -308,9 +303,7 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
         .parameters
         .iter()
         .map(|p| {
-            let check = t
-                .evaluated()
-                .and_then(|e| e.judgement.as_ref())
+            let check = t.judgement()
                 .and_then(|j| j.checks.iter().find(|c| c.key == p.def.key));
             let at = if let Some(i) = p.at_target {
                 format!("at i = {} ({})", i + 1, pos(e.kind, e.targets[i].position))

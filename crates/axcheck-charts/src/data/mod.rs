@@ -127,7 +127,7 @@ pub(crate) fn campaign_short(result: &CampaignResult) -> String {
 pub(crate) fn short_label(t: &AxisTest) -> String {
     let (m, a) = (
         short_name(&t.machine.id, SHORT_NAME),
-        short_name(&t.axis, AXIS_NAME),
+        short_name(&t.axis_label(), AXIS_NAME),
     );
     if t.tests > 1 {
         format!("{m} {a} ({}/{})", t.test, t.tests)

@@ -110,8 +110,7 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
         }),
         noncompliant: with(Verdict::Noncompliant, AxisTest::broken_rules_text),
         has_chart: result.tests.iter().any(|t| {
-            t.evaluated()
-                .and_then(|e| e.judgement.as_ref())
+            t.judgement()
                 .and_then(|j| j.worst())
                 .is_some()
         }),
@@ -126,36 +125,34 @@ fn row(t: &AxisTest) -> SummaryRow {
         e.and_then(|e| e.headline(role))
             .map_or("–".to_string(), |p| num(p.value))
     };
-    let travel = t
-        .evaluated()
-        .and_then(|e| e.data.as_ref())
-        .map_or("–".into(), |d| {
+    let data = (t.evaluated().and_then(|e| e.data.as_ref()))
+        .or_else(|| t.other().and_then(|o| o.data.as_ref()));
+    let travel = data.map_or("–".into(), |d| {
             let (a, b) = d.measurement_travel();
             pos(d.kind, ((b - a) * 1e6).round() / 1e6)
         });
-    let worst = match t
-        .evaluated()
-        .and_then(|e| e.judgement.as_ref())
+    let worst = match t.judgement()
         .and_then(|j| j.worst())
     {
         Some(c) => format!("{} {}", symbol_of(t, c.key), fmt_fixed(c.ratio(), 2)),
-        None if t.no_tolerance() && e.is_some() => "no tolerance".to_string(),
+        None if t.no_tolerance() && (e.is_some() || t.other().is_some()) => "no tolerance".to_string(),
         None => "–".to_string(),
     };
     SummaryRow {
         machine: short_name(&t.machine.id, 40),
         axis: if t.tests > 1 {
-            format!("{} ({}/{})", short_name(&t.axis, 30), t.test, t.tests)
+            format!("{} ({}/{})", short_name(&t.axis_label(), 30), t.test, t.tests)
         } else {
-            short_name(&t.axis, 30)
+            short_name(&t.axis_label(), 30)
         },
         travel,
-        n: e.map_or("–".into(), |e| e.n.to_string()),
+        n: (e.map(|e| e.n).or_else(|| data.map(|d| d.runs())))
+            .map_or("–".into(), |n| n.to_string()),
         a: headline(Role::Accuracy),
         e: headline(Role::Systematic),
         r: headline(Role::Repeatability),
         b: headline(Role::Reversal),
-        unit: t.kind().map_or("", |k| k.deviation_symbol()),
+        unit: t.deviation_symbol(),
         worst,
         diagnosis: t
             .evaluated()

@@ -79,7 +79,7 @@ fn table_round(x: f64) -> f64 {
 /// zone conformance is proven, right of it (marked) nonconformance, whatever rule decided.
 pub fn decision_bars(t: &AxisTest) -> Vec<CheckBar> {
     let (Some(j), Some(u)) = (
-        t.evaluated().and_then(|e| e.judgement.as_ref()),
+        t.judgement(),
         t.evaluated().and_then(|e| e.uncertainty.as_ref()),
     ) else {
         return Vec::new();

@@ -14,8 +14,10 @@ pub enum ReferenceLine {
     /// Least squares over every target (HP 5528A §21: Y = mX + b minimising the squared
     /// residuals), the laser packages' default.
     #[default]
+    #[serde(alias = "least-squares")]
     LeastSquares,
     /// Through the first and the last target (HP 5528A §21: m = (last − first) / length).
+    #[serde(alias = "end-point")]
     EndPoint,
 }
 

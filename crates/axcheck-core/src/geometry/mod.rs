@@ -12,6 +12,7 @@
 
 pub mod abbe;
 pub mod angular;
+pub mod judge;
 pub mod line;
 pub mod squareness;
 pub mod straightness;

@@ -8,5 +8,10 @@ use std::path::Path;
 
 /// The test file at `path` (resolved beneath `files`) as `axis` says to read it.
 pub fn read(axis: &AxisSpec, path: &Path, files: &Root) -> Result<ReadTest, ReadError> {
-    measurement::read_file_within(path, &axis.data.read_options(), Some(files))
+    let options = measurement::ReadOptions {
+        // An angular test's readings are angles at positions in mm.
+        angular: axis.raw.test == crate::geometry::TestKind::Angular,
+        ..axis.data.read_options()
+    };
+    measurement::read_file_within(path, &options, Some(files))
 }

@@ -1,0 +1,182 @@
+//! The other laser tests in a campaign (`test: straightness|angular`): the values are
+//! `eval --test`'s (numpy's, `tests/data/geometry/EXPECTED.md`), the limits the written
+//! tolerances at the measured travel, the verdicts those of ISO 14253-1 worked by hand
+//! here; then every output that lists tests lists them, and bad keys stop at their line.
+
+use crate::common::{axcheck, scratch};
+use serde_json::Value;
+use std::path::Path;
+
+const CAMPAIGN: &str = "tests/data/geometry/campaign.yaml";
+
+fn eval_json(args: &[&str]) -> Value {
+    let mut all = vec!["eval", "--json"];
+    all.extend_from_slice(args);
+    let (code, stdout, stderr) = axcheck(&all);
+    assert_eq!(code, 0, "{stderr}");
+    serde_json::from_str(&stdout).unwrap()
+}
+
+/// `run --no-pdf` of the campaign into a fresh folder: its `results.json` and the folder.
+fn run() -> (Value, std::path::PathBuf) {
+    let out = scratch("geometry-campaign").join("out");
+    let (code, stdout, stderr) = axcheck(&["run", CAMPAIGN, "--out", out.to_str().unwrap(), "--no-pdf"]);
+    assert_eq!(code, 1, "Y's straightness fails: {stdout}{stderr}");
+    let json = std::fs::read_to_string(out.join("results.json")).unwrap();
+    (serde_json::from_str(&json).unwrap(), out)
+}
+
+fn test<'a>(results: &'a Value, symbol: &str) -> &'a Value {
+    (results["axes"].as_array().unwrap().iter())
+        .find(|t| t["geometry"]["symbol"] == symbol)
+        .unwrap_or_else(|| panic!("no {symbol} in {results}"))
+}
+
+fn check<'a>(t: &'a Value, key: &str) -> &'a Value {
+    (t["checks"].as_array().unwrap().iter())
+        .find(|c| c["key"] == key)
+        .unwrap_or_else(|| panic!("no check of {key} in {t}"))
+}
+
+fn f(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+/// EYX of X: numpy's 8.124 µm, against `0.020 per 1000` over the file's 1000 mm (20 µm)
+/// and its local value against `0.010 over any 300`, both by ISO 14253-1 with eval's U.
+#[test]
+fn a_straightness_is_judged_by_its_written_tolerances() {
+    let (results, _) = run();
+    let t = test(&results, "EYX");
+    let eval = eval_json(&[
+        "tests/data/geometry/x-straightness-y.csv",
+        "--test",
+        "straightness",
+        "--direction",
+        "Y",
+        "--local",
+        "300",
+    ]);
+    assert_eq!(t["geometry"]["test"], "straightness");
+    assert_eq!(t["geometry"]["direction"], "Y");
+    assert_eq!(t["unit"], "um");
+    assert_eq!(t["standard"], Value::Null);
+    let value = f(&t["geometry"]["bidirectional"]["deviation_um"]);
+    assert_eq!(format!("{value:.3}"), "8.124", "EXPECTED.md");
+    assert_eq!(t["geometry"]["bidirectional"], eval["bidirectional"]);
+    assert_eq!(t["geometry"]["local"], eval["local"]);
+    let u = f(&eval["uncertainty"]["U"]);
+    assert_eq!(t["geometry"]["uncertainty"]["U"], eval["uncertainty"]["U"]);
+    let whole = check(t, "straightness");
+    assert!((f(&whole["limit"]) - 20.0).abs() < 1e-9, "{whole}");
+    assert_eq!(f(&whole["U"]), u);
+    // By hand: conformance proven when value ≤ limit − U.
+    let want = if value <= 20.0 - u { "pass" } else { "inconclusive" };
+    assert_eq!(whole["outcome"], want);
+    let local = check(t, "straightness_local");
+    let local_value = f(&eval["local"]["deviation_um"]);
+    assert_eq!(f(&local["value"]), local_value);
+    assert!((f(&local["limit"]) - 10.0).abs() < 1e-9);
+    let want = if local_value <= 10.0 - u { "pass" } else { "inconclusive" };
+    assert_eq!(local["outcome"], want);
+    assert_eq!(t["decision_rule"], "iso14253-1");
+    assert_eq!(t["verdict"], "pass", "{t}");
+    assert_eq!(t["geometry"]["tolerance"], serde_json::json!(["0.020 per 1000", "0.010 over any 300"]));
+}
+
+/// EBX of X: numpy's 20.204″ against 30″; EXY of Y by end points: 0.264 µm against
+/// 0.1 µm, judged by the simple rule its axis states: fail.
+#[test]
+fn an_angular_test_passes_and_a_straightness_fails() {
+    let (results, _) = run();
+    let pitch = test(&results, "EBX");
+    assert_eq!(pitch["unit"], "arcsec");
+    assert_eq!(format!("{:.3}", f(&pitch["geometry"]["deviation_arcsec"])), "20.204");
+    let c = check(pitch, "angular");
+    assert_eq!(f(&c["limit"]), 30.0);
+    let u = f(&c["U"]);
+    assert_eq!(c["outcome"], if 20.204 + u <= 30.0 { "pass" } else { "inconclusive" });
+    let y = test(&results, "EXY");
+    assert_eq!(y["geometry"]["line"], "end_point");
+    assert_eq!(format!("{:.3}", f(&y["geometry"]["bidirectional"]["deviation_um"])), "0.264");
+    let c = check(y, "straightness");
+    assert!((f(&c["limit"]) - 0.1).abs() < 1e-12);
+    assert_eq!(c["outcome"], "fail");
+    assert_eq!(c.get("U"), None, "the simple rule uses no U");
+    assert_eq!(y["decision_rule"], "simple");
+    assert_eq!(y["verdict"], "fail");
+    assert_eq!(results["counts"]["fail"], 1);
+}
+
+/// Every table lists the three tests by ISO 230-1's symbol, with their values.
+#[test]
+fn the_summaries_list_each_test() {
+    let (_, out) = run();
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    // No cell here holds a comma or a quote: a split is the CSV.
+    let mut lines = csv.lines().map(|l| l.split(',').collect::<Vec<&str>>());
+    let header = lines.next().unwrap();
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let records: Vec<Vec<&str>> = lines.collect();
+    assert_eq!(records.len(), 3);
+    let row = |symbol: &str| records.iter().find(|r| r[column("symbol")] == symbol).unwrap();
+    assert_eq!(row("EYX")[column("test_kind")], "straightness");
+    assert_eq!(row("EYX")[column("axis")], "X");
+    assert!(row("EYX")[column("straightness")].starts_with("8.12"));
+    assert!(row("EBX")[column("angular")].starts_with("20.20"));
+    assert_eq!(row("EBX")[column("unit")], "arcsec");
+    assert_eq!(row("EXY")[column("verdict")], "fail");
+    assert_eq!(row("EXY")[column("failed")], "straightness");
+    assert_eq!(row("EYX")[column("A")], "", "no positioning parameter");
+    let junit = std::fs::read_to_string(out.join("junit.xml")).unwrap();
+    assert!(junit.contains("name=\"Y EXY\""), "{junit}");
+    assert!(junit.contains("straightness = 0.26"), "{junit}");
+    let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    assert!(md.contains("| X EBX |"), "{md}");
+    let (code, stdout, _) = axcheck(&["check", CAMPAIGN, "--jobs", "1"]);
+    assert_eq!(code, 1);
+    assert!(stdout.contains("MILL-G Y EXY"), "{stdout}");
+    assert!(stdout.contains("straightness = 0.26 µm > 0.10 µm"), "{stdout}");
+}
+
+/// A campaign with one axis entry replaced by `entry`: the error `check` prints.
+fn refused(entry: &str) -> String {
+    let dir = scratch(&format!("geometry-bad-{}", entry.len()));
+    for f in ["x-straightness-y.csv", "x-pitch.csv"] {
+        std::fs::copy(Path::new("tests/data/geometry").join(f), dir.join(f)).unwrap();
+    }
+    let text = format!(
+        "campaign: {{name: bad}}\nmachines:\n  - id: M\n    axes:\n      - name: X\n        kind: linear\n{entry}"
+    );
+    let file = dir.join("campaign.yaml");
+    std::fs::write(&file, text).unwrap();
+    let (code, stdout, stderr) = axcheck(&["check", file.to_str().unwrap()]);
+    assert_ne!(code, 0, "{stdout}");
+    format!("{stdout}{stderr}")
+}
+
+#[test]
+fn bad_keys_stop_at_their_line() {
+    let e = refused("        test: straightness\n        direction: Y\n        data: x-straightness-y.csv\n        tolerance: 30″\n");
+    assert!(e.contains("campaign.yaml:9"), "{e}");
+    assert!(e.contains("cannot limit a straightness test"), "{e}");
+    let e = refused("        test: straightness\n        data: x-straightness-y.csv\n");
+    assert!(e.contains("states the direction of its deviation"), "{e}");
+    let e = refused("        test: straightness\n        direction: X\n        data: x-straightness-y.csv\n");
+    assert!(e.contains("a straightness of axis X is across it"), "{e}");
+    let e = refused("        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerances: {A: 5}\n");
+    assert!(e.contains("campaign.yaml:9") && e.contains("`tolerances` belongs to a positioning test"), "{e}");
+    let e = refused("        direction: Y\n        data: x-straightness-y.csv\n");
+    assert!(e.contains("`direction` belongs to a straightness or angular test"), "{e}");
+    let e = refused("        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerance: 0.010 per 1000 mm per\n");
+    assert!(e.contains("tolerance `0.010 per 1000 mm per`"), "{e}");
+    let e = refused("        test: straightness\n        direction: Y\n        local_mm: 200\n        data: x-straightness-y.csv\n        tolerance: 0.010 over any 300\n");
+    assert!(e.contains("over 200 mm but its tolerance is over any 300 mm"), "{e}");
+}
+
+/// A positioning file read as an angular test is refused by its unit, naming the column.
+#[test]
+fn an_angular_test_takes_angles() {
+    let e = refused("        test: angular\n        about: C\n        data: x-straightness-y.csv\n        tolerance: 30″\n");
+    assert!(e.contains("deviation_um"), "{e}");
+}
