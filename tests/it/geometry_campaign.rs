@@ -17,9 +17,9 @@ fn eval_json(args: &[&str]) -> Value {
     serde_json::from_str(&stdout).unwrap()
 }
 
-/// `run --no-pdf` of the campaign into a fresh folder: its `results.json` and the folder.
-fn run() -> (Value, std::path::PathBuf) {
-    let out = scratch("geometry-campaign").join("out");
+/// `run --no-pdf` of the campaign into a fresh folder (`name`: the test's own): its `results.json` and the folder.
+fn run(name: &str) -> (Value, std::path::PathBuf) {
+    let out = scratch(&format!("geometry-campaign-{name}")).join("out");
     let (code, stdout, stderr) = axcheck(&["run", CAMPAIGN, "--out", out.to_str().unwrap(), "--no-pdf"]);
     assert_eq!(code, 1, "Y's straightness fails: {stdout}{stderr}");
     let json = std::fs::read_to_string(out.join("results.json")).unwrap();
@@ -46,7 +46,7 @@ fn f(v: &Value) -> f64 {
 /// and its local value against `0.010 over any 300`, both by ISO 14253-1 with eval's U.
 #[test]
 fn a_straightness_is_judged_by_its_written_tolerances() {
-    let (results, _) = run();
+    let (results, _) = run("eyx");
     let t = test(&results, "EYX");
     let eval = eval_json(&[
         "tests/data/geometry/x-straightness-y.csv",
@@ -88,7 +88,7 @@ fn a_straightness_is_judged_by_its_written_tolerances() {
 /// 0.1 µm, judged by the simple rule its axis states: fail.
 #[test]
 fn an_angular_test_passes_and_a_straightness_fails() {
-    let (results, _) = run();
+    let (results, _) = run("ebx");
     let pitch = test(&results, "EBX");
     assert_eq!(pitch["unit"], "arcsec");
     assert_eq!(format!("{:.3}", f(&pitch["geometry"]["deviation_arcsec"])), "20.204");
@@ -111,7 +111,7 @@ fn an_angular_test_passes_and_a_straightness_fails() {
 /// Every table lists the three tests by ISO 230-1's symbol, with their values.
 #[test]
 fn the_summaries_list_each_test() {
-    let (_, out) = run();
+    let (_, out) = run("summaries");
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
     // No cell here holds a comma or a quote: a split is the CSV.
     let mut lines = csv.lines().map(|l| l.split(',').collect::<Vec<&str>>());
@@ -141,7 +141,9 @@ fn the_summaries_list_each_test() {
 
 /// A campaign with one axis entry replaced by `entry`: the error `check` prints.
 fn refused(entry: &str) -> String {
-    let dir = scratch(&format!("geometry-bad-{}", entry.len()));
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = scratch(&format!("geometry-bad-{k}"));
     for f in ["x-straightness-y.csv", "x-pitch.csv"] {
         std::fs::copy(Path::new("tests/data/geometry").join(f), dir.join(f)).unwrap();
     }
@@ -158,14 +160,14 @@ fn refused(entry: &str) -> String {
 #[test]
 fn bad_keys_stop_at_their_line() {
     let e = refused("        test: straightness\n        direction: Y\n        data: x-straightness-y.csv\n        tolerance: 30″\n");
-    assert!(e.contains("campaign.yaml:9"), "{e}");
+    assert!(e.contains("campaign.yaml:10:"), "{e}");
     assert!(e.contains("cannot limit a straightness test"), "{e}");
     let e = refused("        test: straightness\n        data: x-straightness-y.csv\n");
     assert!(e.contains("states the direction of its deviation"), "{e}");
     let e = refused("        test: straightness\n        direction: X\n        data: x-straightness-y.csv\n");
     assert!(e.contains("a straightness of axis X is across it"), "{e}");
     let e = refused("        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerances: {A: 5}\n");
-    assert!(e.contains("campaign.yaml:9") && e.contains("`tolerances` belongs to a positioning test"), "{e}");
+    assert!(e.contains("campaign.yaml:10:") && e.contains("`tolerances` belongs to a positioning test"), "{e}");
     let e = refused("        direction: Y\n        data: x-straightness-y.csv\n");
     assert!(e.contains("`direction` belongs to a straightness or angular test"), "{e}");
     let e = refused("        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerance: 0.010 per 1000 mm per\n");
