@@ -188,7 +188,8 @@ fn problem_line(t: &AxisTest, width: usize) -> String {
             })
             .collect::<Vec<_>>()
             .join(", "),
-        _ => t.judgement()
+        _ => t
+            .judgement()
             .into_iter()
             .flat_map(|j| j.failed())
             .map(|c| {

@@ -54,6 +54,9 @@ pub(crate) struct TestJson<'a> {
     verdict: Verdict,
     #[serde(flatten)]
     evaluation: Option<Evaluated<'a>>,
+    /// The positioning test carried to the tool point (`tool_point:`), or why it was not.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tool_point: Option<ToolPointJson<'a>>,
     /// A straightness or angular test (ISO 230-1): which, its result, U and tolerances.
     #[serde(skip_serializing_if = "Option::is_none")]
     geometry: Option<OtherJson<'a>>,
@@ -114,7 +117,48 @@ impl<'a> OtherJson<'a> {
             targets_mm: o.data.as_ref().map(|d| d.targets.as_slice()),
             result: &o.result,
             uncertainty: &o.uncertainty,
-            tolerance: raw.tolerance.iter().map(|(text, _)| text.as_str()).collect(),
+            tolerance: raw
+                .tolerance
+                .iter()
+                .map(|(text, _)| text.as_str())
+                .collect(),
+        })
+    }
+}
+
+/// A positioning test at the tool point: the offsets from the beam (mm, by axis letter),
+/// the angular tests it was carried through, its parameters, checks and verdict there.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum ToolPointJson<'a> {
+    Carried {
+        offsets_mm: BTreeMap<String, f64>,
+        rotations: &'a [String],
+        parameters: ParameterValues<'a>,
+        checks: &'a [Check],
+        verdict: Verdict,
+        notes: &'a [String],
+    },
+    Failed {
+        error: &'a str,
+    },
+}
+
+impl<'a> ToolPointJson<'a> {
+    fn new(t: &'a AxisTest) -> Option<ToolPointJson<'a>> {
+        let carried = t.evaluated()?.tool_point.as_deref()?;
+        Some(match carried {
+            Ok(p) => ToolPointJson::Carried {
+                offsets_mm: (p.offsets_mm.iter())
+                    .map(|(c, mm)| (c.to_ascii_lowercase().to_string(), *mm))
+                    .collect(),
+                rotations: &p.rotations,
+                parameters: ParameterValues(&p.evaluation.parameters),
+                checks: p.judgement.as_ref().map_or(&[][..], |j| &j.checks),
+                verdict: p.verdict,
+                notes: &p.notes,
+            },
+            Err(error) => ToolPointJson::Failed { error },
         })
     }
 }
@@ -296,12 +340,12 @@ pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
         measured: (ev.and_then(|e| e.data.as_ref()))
             .or_else(|| t.other().and_then(|o| o.data.as_ref()))
             .map(|d| {
-            let (a, b) = d.measurement_travel();
-            Measured {
-                measurement_travel: [a, b],
-                readings: d.readings.len(),
-            }
-        }),
+                let (a, b) = d.measurement_travel();
+                Measured {
+                    measurement_travel: [a, b],
+                    readings: d.readings.len(),
+                }
+            }),
         verdict: t.verdict(),
         evaluation: ev.map(|ev| Evaluated {
             n: ev.evaluation.n,
@@ -312,6 +356,7 @@ pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
             conditions_not_stated: &ev.unstated,
         }),
         geometry: OtherJson::new(t),
+        tool_point: ToolPointJson::new(t),
         judgement: t.judgement().map(Judged::new),
         rules: t.findings(),
         nde: ev.and_then(|e| e.nde.as_ref()),

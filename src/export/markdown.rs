@@ -89,8 +89,9 @@ fn row(t: &AxisTest) -> String {
         t.positioning_standard().map_or("–", |s| s.key()),
         t.judgement()
             .map_or("–".to_string(), |j| cell(&j.limits.describe_labelled())),
-        (e.map(|e| e.n).or_else(|| t.other()?.data.as_ref().map(|d| d.runs())))
-            .map_or("–".to_string(), |n| n.to_string()),
+        (e.map(|e| e.n)
+            .or_else(|| t.other()?.data.as_ref().map(|d| d.runs())))
+        .map_or("–".to_string(), |n| n.to_string()),
         v(Role::Accuracy),
         v(Role::Systematic),
         v(Role::MeanRange),
@@ -128,7 +129,11 @@ fn other_values(o: &crate::results::OtherTested) -> String {
     (crate::evaluate::ParamKey::GEOMETRY.into_iter())
         .filter_map(|k| {
             let value = o.result.value(k)?;
-            Some(format!("{} {}", crate::results::OtherTested::name(k), fmt_fixed(value, 2)))
+            Some(format!(
+                "{} {}",
+                crate::results::OtherTested::name(k),
+                fmt_fixed(value, 2)
+            ))
         })
         .collect::<Vec<_>>()
         .join(", ")
@@ -142,10 +147,7 @@ fn problems(t: &AxisTest) -> Vec<String> {
     if let Some(e) = t.error() {
         lines.push(format!("- **{label}**: error: {}", cell(e)));
     }
-    for c in t.judgement()
-        .into_iter()
-        .flat_map(|j| j.failed())
-    {
+    for c in t.judgement().into_iter().flat_map(|j| j.failed()) {
         lines.push(format!("- **{label}**: {}", c.over_limit(2, "")));
     }
     for f in t.findings() {

@@ -20,7 +20,8 @@ fn eval_json(args: &[&str]) -> Value {
 /// `run --no-pdf` of the campaign into a fresh folder (`name`: the test's own): its `results.json` and the folder.
 fn run(name: &str) -> (Value, std::path::PathBuf) {
     let out = scratch(&format!("geometry-campaign-{name}")).join("out");
-    let (code, stdout, stderr) = axcheck(&["run", CAMPAIGN, "--out", out.to_str().unwrap(), "--no-pdf"]);
+    let (code, stdout, stderr) =
+        axcheck(&["run", CAMPAIGN, "--out", out.to_str().unwrap(), "--no-pdf"]);
     assert_eq!(code, 1, "Y's straightness fails: {stdout}{stderr}");
     let json = std::fs::read_to_string(out.join("results.json")).unwrap();
     (serde_json::from_str(&json).unwrap(), out)
@@ -71,17 +72,28 @@ fn a_straightness_is_judged_by_its_written_tolerances() {
     assert!((f(&whole["limit"]) - 20.0).abs() < 1e-9, "{whole}");
     assert_eq!(f(&whole["U"]), u);
     // By hand: conformance proven when value ≤ limit − U.
-    let want = if value <= 20.0 - u { "pass" } else { "inconclusive" };
+    let want = if value <= 20.0 - u {
+        "pass"
+    } else {
+        "inconclusive"
+    };
     assert_eq!(whole["outcome"], want);
     let local = check(t, "straightness_local");
     let local_value = f(&eval["local"]["deviation_um"]);
     assert_eq!(f(&local["value"]), local_value);
     assert!((f(&local["limit"]) - 10.0).abs() < 1e-9);
-    let want = if local_value <= 10.0 - u { "pass" } else { "inconclusive" };
+    let want = if local_value <= 10.0 - u {
+        "pass"
+    } else {
+        "inconclusive"
+    };
     assert_eq!(local["outcome"], want);
     assert_eq!(t["decision_rule"], "iso14253-1");
     assert_eq!(t["verdict"], "pass", "{t}");
-    assert_eq!(t["geometry"]["tolerance"], serde_json::json!(["0.020 per 1000", "0.010 over any 300"]));
+    assert_eq!(
+        t["geometry"]["tolerance"],
+        serde_json::json!(["0.020 per 1000", "0.010 over any 300"])
+    );
 }
 
 /// EBX of X: numpy's 20.204″ against 30″; EXY of Y by end points: 0.264 µm against
@@ -91,14 +103,27 @@ fn an_angular_test_passes_and_a_straightness_fails() {
     let (results, _) = run("ebx");
     let pitch = test(&results, "EBX");
     assert_eq!(pitch["unit"], "arcsec");
-    assert_eq!(format!("{:.3}", f(&pitch["geometry"]["deviation_arcsec"])), "20.204");
+    assert_eq!(
+        format!("{:.3}", f(&pitch["geometry"]["deviation_arcsec"])),
+        "20.204"
+    );
     let c = check(pitch, "angular");
     assert_eq!(f(&c["limit"]), 30.0);
     let u = f(&c["U"]);
-    assert_eq!(c["outcome"], if 20.204 + u <= 30.0 { "pass" } else { "inconclusive" });
+    assert_eq!(
+        c["outcome"],
+        if 20.204 + u <= 30.0 {
+            "pass"
+        } else {
+            "inconclusive"
+        }
+    );
     let y = test(&results, "EXY");
     assert_eq!(y["geometry"]["line"], "end_point");
-    assert_eq!(format!("{:.3}", f(&y["geometry"]["bidirectional"]["deviation_um"])), "0.264");
+    assert_eq!(
+        format!("{:.3}", f(&y["geometry"]["bidirectional"]["deviation_um"])),
+        "0.264"
+    );
     let c = check(y, "straightness");
     assert!((f(&c["limit"]) - 0.1).abs() < 1e-12);
     assert_eq!(c["outcome"], "fail");
@@ -119,7 +144,12 @@ fn the_summaries_list_each_test() {
     let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
     let records: Vec<Vec<&str>> = lines.collect();
     assert_eq!(records.len(), 3);
-    let row = |symbol: &str| records.iter().find(|r| r[column("symbol")] == symbol).unwrap();
+    let row = |symbol: &str| {
+        records
+            .iter()
+            .find(|r| r[column("symbol")] == symbol)
+            .unwrap()
+    };
     assert_eq!(row("EYX")[column("test_kind")], "straightness");
     assert_eq!(row("EYX")[column("axis")], "X");
     assert!(row("EYX")[column("straightness")].starts_with("8.12"));
@@ -136,7 +166,10 @@ fn the_summaries_list_each_test() {
     let (code, stdout, _) = axcheck(&["check", CAMPAIGN, "--jobs", "1"]);
     assert_eq!(code, 1);
     assert!(stdout.contains("MILL-G Y EXY"), "{stdout}");
-    assert!(stdout.contains("straightness = 0.26 µm > 0.10 µm"), "{stdout}");
+    assert!(
+        stdout.contains("straightness = 0.26 µm > 0.10 µm"),
+        "{stdout}"
+    );
 }
 
 /// A campaign with one axis entry replaced by `entry`: the error `check` prints.
@@ -159,26 +192,166 @@ fn refused(entry: &str) -> String {
 
 #[test]
 fn bad_keys_stop_at_their_line() {
-    let e = refused("        test: straightness\n        direction: Y\n        data: x-straightness-y.csv\n        tolerance: 30″\n");
+    let e = refused(
+        "        test: straightness\n        direction: Y\n        data: x-straightness-y.csv\n        tolerance: 30″\n",
+    );
     assert!(e.contains("campaign.yaml:10:"), "{e}");
     assert!(e.contains("cannot limit a straightness test"), "{e}");
     let e = refused("        test: straightness\n        data: x-straightness-y.csv\n");
     assert!(e.contains("states the direction of its deviation"), "{e}");
-    let e = refused("        test: straightness\n        direction: X\n        data: x-straightness-y.csv\n");
+    let e = refused(
+        "        test: straightness\n        direction: X\n        data: x-straightness-y.csv\n",
+    );
     assert!(e.contains("a straightness of axis X is across it"), "{e}");
-    let e = refused("        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerances: {A: 5}\n");
-    assert!(e.contains("campaign.yaml:10:") && e.contains("`tolerances` belongs to a positioning test"), "{e}");
+    let e = refused(
+        "        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerances: {A: 5}\n",
+    );
+    assert!(
+        e.contains("campaign.yaml:10:") && e.contains("`tolerances` belongs to a positioning test"),
+        "{e}"
+    );
     let e = refused("        direction: Y\n        data: x-straightness-y.csv\n");
-    assert!(e.contains("`direction` belongs to a straightness or angular test"), "{e}");
-    let e = refused("        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerance: 0.010 per 1000 mm per\n");
+    assert!(
+        e.contains("`direction` belongs to a straightness or angular test"),
+        "{e}"
+    );
+    let e = refused(
+        "        test: angular\n        about: B\n        data: x-pitch.csv\n        tolerance: 0.010 per 1000 mm per\n",
+    );
     assert!(e.contains("tolerance `0.010 per 1000 mm per`"), "{e}");
-    let e = refused("        test: straightness\n        direction: Y\n        local_mm: 200\n        data: x-straightness-y.csv\n        tolerance: 0.010 over any 300\n");
-    assert!(e.contains("over 200 mm but its tolerance is over any 300 mm"), "{e}");
+    let e = refused(
+        "        test: straightness\n        direction: Y\n        local_mm: 200\n        data: x-straightness-y.csv\n        tolerance: 0.010 over any 300\n",
+    );
+    assert!(
+        e.contains("over 200 mm but its tolerance is over any 300 mm"),
+        "{e}"
+    );
 }
 
 /// A positioning file read as an angular test is refused by its unit, naming the column.
 #[test]
 fn an_angular_test_takes_angles() {
-    let e = refused("        test: angular\n        about: C\n        data: x-straightness-y.csv\n        tolerance: 30″\n");
+    let e = refused(
+        "        test: angular\n        about: C\n        data: x-straightness-y.csv\n        tolerance: 30″\n",
+    );
     assert!(e.contains("deviation_um"), "{e}");
+}
+
+/// Each reading's mean per (target, direction) of a long CSV: (targets, up, down).
+fn means(path: &Path) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut sums: std::collections::BTreeMap<(i64, bool), (f64, f64)> = Default::default();
+    // Comment lines, then the header.
+    for line in text.lines().filter(|l| !l.starts_with('#')).skip(1) {
+        let cells: Vec<&str> = line.split(',').collect();
+        let target: f64 = cells[0].parse().unwrap();
+        let sum = sums
+            .entry(((target * 1000.0).round() as i64, cells[1] == "up"))
+            .or_default();
+        sum.0 += cells[3].parse::<f64>().unwrap();
+        sum.1 += 1.0;
+    }
+    let mut targets: Vec<f64> = sums.keys().map(|(t, _)| *t as f64 / 1000.0).collect();
+    targets.dedup();
+    let mean = |up| {
+        (targets.iter())
+            .map(|t| {
+                let (s, n) = sums[&((t * 1000.0).round() as i64, up)];
+                s / n
+            })
+            .collect()
+    };
+    (targets.clone(), mean(true), mean(false))
+}
+
+/// X at the beam, 150 mm below the tool point, with its pitch EBX (20″/m) and yaw ECX:
+/// E at the tool point by hand (each mean plus tan(EBX)·150 mm, E = the range of the
+/// means, ISO 230-2 2.16), as `results.json` gives it; the measured E is kept beside it.
+#[test]
+fn a_positioning_test_is_carried_to_its_tool_point() {
+    let dir = scratch("geometry-tool-point");
+    let model = "tests/data/geometry/x-whole.yaml";
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    for (file, geometry) in [
+        ("x.csv", None),
+        ("x-ebx.csv", Some("B")),
+        ("x-ecx.csv", Some("C")),
+    ] {
+        let mut args = vec!["simulate", model, "-o"];
+        let out = path(&format!("data/{file}"));
+        args.push(&out);
+        if let Some(letter) = geometry {
+            args.extend(["--geometry", letter]);
+        }
+        let (code, _, stderr) = axcheck(&args);
+        assert_eq!(code, 0, "{stderr}");
+    }
+    let campaign = "campaign: {name: tool point, date: 2026-11-30}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, data: data/x.csv, tolerances: {E: 9}, tool_point: {y_mm: 0, z_mm: 150}}\n      - {name: X, kind: linear, test: angular, about: B, data: data/x-ebx.csv, tolerance: 30″}\n      - {name: X, kind: linear, test: angular, about: C, data: data/x-ecx.csv, tolerance: 30″}\n";
+    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
+    let out = path("out");
+    let (code, stdout, stderr) =
+        axcheck(&["run", &path("campaign.yaml"), "--out", &out, "--no-pdf"]);
+    let results = std::fs::read_to_string(dir.join("out/results.json"))
+        .unwrap_or_else(|e| panic!("{e}: {stdout}{stderr}"));
+    let results: Value = serde_json::from_str(&results).unwrap();
+    let x = &results["axes"][0];
+    let carried = &x["tool_point"];
+    assert_eq!(
+        carried["rotations"],
+        serde_json::json!(["EBX", "ECX"]),
+        "{x}"
+    );
+    assert_eq!(
+        carried["offsets_mm"],
+        serde_json::json!({"y": 0.0, "z": 150.0})
+    );
+    // By hand: the pitch's mean per target and direction, its tangent times 150 mm.
+    let (targets, up, down) = means(&dir.join("data/x.csv"));
+    let (pitch_targets, pitch_up, pitch_down) = means(&dir.join("data/x-ebx.csv"));
+    assert_eq!(
+        targets, pitch_targets,
+        "the same targets: no interpolation to check"
+    );
+    let arcsec = std::f64::consts::PI / 648_000.0;
+    let tool = |m: &[f64], p: &[f64]| -> Vec<f64> {
+        m.iter()
+            .zip(p)
+            .map(|(m, p)| m + (p * arcsec).tan() * 150_000.0)
+            .collect()
+    };
+    let range = |a: &[f64], b: &[f64]| {
+        let all = a.iter().chain(b);
+        all.clone().cloned().fold(f64::MIN, f64::max) - all.cloned().fold(f64::MAX, f64::min)
+    };
+    let e_beam = range(&up, &down);
+    let e_tool = range(&tool(&up, &pitch_up), &tool(&down, &pitch_down));
+    assert!(
+        (f(&x["parameters"]["E"]) - e_beam).abs() < 1e-9,
+        "{e_beam} {x}"
+    );
+    assert!(
+        (f(&carried["parameters"]["E"]) - e_tool).abs() < 1e-9,
+        "{e_tool} {carried}"
+    );
+    // 20″/m of pitch at 1000 mm, 150 mm from the beam, is tan(20″) × 150 mm = 14.5 µm.
+    let end = targets.len() - 1;
+    let moved = tool(&up, &pitch_up)[end] - up[end];
+    assert!((moved - 14.544).abs() < 0.3, "{moved}");
+    assert!(e_beam - e_tool > 3.0, "beam {e_beam}, tool {e_tool}");
+    // E ≤ 9 µm fails at the beam and passes at the tool point: a finding.
+    assert_eq!(x["verdict"], "fail");
+    assert_eq!(carried["verdict"], "pass", "{carried}");
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stdout.contains("Verdict changes at the tool point (Abbe, through EBX and ECX): M X is fail at the beam, pass at the tool point"),
+        "{stdout}"
+    );
+    // A tool point without the angular test its offset needs says which.
+    let campaign = campaign.replace(
+        "about: B, data: data/x-ebx.csv",
+        "about: A, data: data/x-ebx.csv",
+    );
+    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
+    let (_, stdout, _) = axcheck(&["check", &path("campaign.yaml")]);
+    assert!(stdout.contains("Not carried to the tool point: M X: the tool point's offset of 150 mm along Z needs the rotation of X about Y (EBX)"), "{stdout}");
 }

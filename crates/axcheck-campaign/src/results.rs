@@ -64,6 +64,9 @@ pub struct OtherTested {
     /// U (k = 2) of the result's main value (the straightness, the angular deviation).
     pub uncertainty: crate::geometry::uncertainty::Uncertain,
     pub judgement: Judgement,
+    /// An angular test's mean angles, kept when its readings are dropped: a positioning
+    /// test of the axis is carried to its tool point through them.
+    pub trace: Option<crate::geometry::angular::Trace>,
 }
 
 impl OtherTested {
@@ -130,6 +133,23 @@ pub struct Evaluated {
     pub out_of_test: Vec<OutOfTest>,
     /// The results the tool that wrote the file printed in it, beside axcheck's.
     pub other_tool: Option<Box<crate::crosscheck::OtherTool>>,
+    /// The test carried to the tool point (`tool_point:`), or why it could not be.
+    pub tool_point: Option<Box<Result<ToolPoint, String>>>,
+}
+
+/// A positioning test carried from the beam to the tool point through its axis's angular
+/// tests (Abbe, `geometry::abbe`), evaluated and judged as the measured one.
+#[derive(Debug, Clone)]
+pub struct ToolPoint {
+    /// The offsets across the axis, (letter, mm), in `geometry::abbe`'s order.
+    pub offsets_mm: [(char, f64); 2],
+    /// The angular tests it is carried through (`EBX`, `ECX`).
+    pub rotations: Vec<String>,
+    pub evaluation: Evaluation,
+    /// Judged against the measured test's limits, with its U.
+    pub judgement: Option<Judgement>,
+    pub verdict: Verdict,
+    pub notes: Vec<String>,
 }
 
 impl AxisTest {
@@ -185,7 +205,11 @@ impl AxisTest {
     /// The axis's name, followed for another laser test by ISO 230-1's symbol: `X`,
     /// `X EYX`.
     pub fn axis_label(&self) -> String {
-        match self.spec.as_ref().and_then(|s| crate::campaign::geometry::symbol(&s.raw)) {
+        match self
+            .spec
+            .as_ref()
+            .and_then(|s| crate::campaign::geometry::symbol(&s.raw))
+        {
             Some(symbol) => format!("{} {symbol}", self.axis),
             None => self.axis.clone(),
         }
@@ -218,7 +242,9 @@ impl AxisTest {
 
     /// Which laser test this is: positioning unless the axis entry says otherwise.
     pub fn test_kind(&self) -> crate::geometry::TestKind {
-        self.spec.as_ref().map_or_else(Default::default, |s| s.raw.test)
+        self.spec
+            .as_ref()
+            .map_or_else(Default::default, |s| s.raw.test)
     }
 
     /// The layout the file was read as, when it was read.
@@ -327,7 +353,8 @@ impl CampaignResult {
     /// Whether a test was judged by ISO 14253-1 (then `inconclusive` is a possible verdict).
     pub fn uses_uncertainty_rule(&self) -> bool {
         self.tests.iter().any(|t| {
-            t.judgement().is_some_and(|j| j.rule == DecisionRule::Iso14253_1)
+            t.judgement()
+                .is_some_and(|j| j.rule == DecisionRule::Iso14253_1)
         })
     }
 
@@ -384,6 +411,7 @@ impl CampaignResult {
             ));
         }
         lines.extend(self.large_uncertainty_lines(&label));
+        lines.extend(self.tool_point_lines(&label));
         let unstated: Vec<usize> = (self.tests.iter())
             .filter_map(|t| t.evaluated().map(|e| e.unstated.len()))
             .filter(|n| *n > 0)
@@ -395,6 +423,29 @@ impl CampaignResult {
                 unstated.len(),
                 self.tests.len()
             ));
+        }
+        lines
+    }
+
+    /// The positioning tests whose verdict at the tool point is not the measured one (a
+    /// pitch or yaw large enough to change it, Abbe), or that could not be carried there.
+    fn tool_point_lines(&self, label: &impl Fn(&AxisTest) -> String) -> Vec<String> {
+        let mut lines = Vec::new();
+        for t in &self.tests {
+            let Some(carried) = t.evaluated().and_then(|e| e.tool_point.as_deref()) else {
+                continue;
+            };
+            match carried {
+                Ok(p) if p.verdict != t.verdict() => lines.push(format!(
+                    "Verdict changes at the tool point (Abbe, through {}): {} is {} at the beam, {} at the tool point",
+                    p.rotations.join(" and "),
+                    label(t),
+                    t.verdict().words(),
+                    p.verdict.words()
+                )),
+                Ok(_) => {}
+                Err(why) => lines.push(format!("Not carried to the tool point: {}: {why}", label(t))),
+            }
         }
         lines
     }

@@ -132,10 +132,8 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
     let Some(e) = t.evaluated().map(|e| &e.evaluation) else {
         return Vec::new();
     };
-    let check = |key: ParamKey| {
-        (t.judgement())
-            .and_then(|j| j.checks.iter().find(|c| c.key == key))
-    };
+    let check =
+        |key: ParamKey| (t.judgement()).and_then(|j| j.checks.iter().find(|c| c.key == key));
     let u_of = |key: ParamKey| {
         t.evaluated()
             .and_then(|e| e.uncertainty.as_ref())

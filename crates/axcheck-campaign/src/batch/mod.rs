@@ -4,6 +4,7 @@
 //! verifies a table is compared with its prediction ([`verification`]).
 
 mod other;
+mod tool_point;
 pub mod verification;
 
 use crate::results::{AxisTest, CampaignResult, Evaluated, Outcome};
@@ -66,10 +67,14 @@ pub fn run(
                 let mut tests = run_axis(campaign, machine, entry, &specs, &files, options);
                 for (t, _) in &mut tests {
                     progress(t);
+                    // A test carried to its tool point keeps its readings until then.
+                    let carried = (t.spec.as_ref()).is_some_and(|s| s.raw.tool_point.is_some());
                     if options.drop_data
                         && let Some(e) = t.evaluated_mut()
                     {
-                        e.data = None;
+                        if !carried {
+                            e.data = None;
+                        }
                         // Nor each target's statistics: the gate prints parameters.
                         e.evaluation.targets = Vec::new();
                         // The gate needs U, not each parameter's budget (a third of the
@@ -85,6 +90,12 @@ pub fn run(
     };
     let mut tested = evaluate_all();
     verification::verify_all(&mut tested);
+    tool_point::carry_all(&mut tested);
+    if options.drop_data {
+        for e in tested.iter_mut().filter_map(|(t, _)| t.evaluated_mut()) {
+            e.data = None;
+        }
+    }
     let tests = tested.into_iter().map(|(t, _)| t).collect();
     CampaignResult {
         info: campaign.info.clone(),
@@ -283,7 +294,10 @@ fn run_test(
         Err(test) => return (*test, None),
     };
     if other::is_other(axis) {
-        return (other::run(slot, axis, campaign, (data, recognised), options), None);
+        return (
+            other::run(slot, axis, campaign, (data, recognised), options),
+            None,
+        );
     }
     // The tool's own results are of the readings as the file holds them (before NDE).
     let other_tool = (recognised.reported.as_ref()).map(|r| crate::crosscheck::compare(r, &data));
@@ -346,6 +360,7 @@ fn run_test(
         diagnosis: diagnosis.map(Box::new),
         out_of_test: Vec::new(),
         other_tool: other_tool.map(Box::new),
+        tool_point: None,
     })));
     (test, verify_case)
 }

@@ -6,12 +6,12 @@ use super::{BatchOptions, Slot};
 use crate::campaign::{AxisSpec, CampaignInfo};
 use crate::geometry::TestKind;
 use crate::geometry::judge::{Value, judge, limits};
-use crate::geometry::straightness;
+use crate::geometry::{angular, straightness};
 use crate::judge::Decision;
 use crate::measurement::{AxisData, Recognised};
 use crate::one_file::{OtherOptions, OtherResult, evaluate_other};
 use crate::param_key::ParamKey;
-use crate::results::{AxisTest, Outcome, OtherTested};
+use crate::results::{AxisTest, OtherTested, Outcome};
 
 /// The test of `data` as `axis` states it, judged; an error names why it could not be.
 pub(super) fn run(
@@ -22,7 +22,11 @@ pub(super) fn run(
     options: BatchOptions,
 ) -> AxisTest {
     let raw = &axis.raw;
-    let local = raw.local_mm.or_else(|| raw.tolerance.iter().find_map(|(_, t)| t.local().map(|l| l.1)));
+    let local = raw.local_mm.or_else(|| {
+        raw.tolerance
+            .iter()
+            .find_map(|(_, t)| t.local().map(|l| l.1))
+    });
     let other = OtherOptions {
         straightness: straightness::Options {
             line: raw.line.unwrap_or_default(),
@@ -58,6 +62,7 @@ pub(super) fn run(
         recognised,
         test: raw.test,
         symbol,
+        trace: (raw.test == TestKind::Angular).then(|| angular::Trace::of(&data)),
         data: (!options.drop_data).then_some(data),
         result,
         uncertainty,

@@ -31,12 +31,15 @@ pub(super) fn check(raw: &mut AxisRaw, base: &str, index: &LocationIndex) -> Res
         Err(Located::new(place, format!("{path}: {why}")))
     };
     let test = raw.test;
+    check_tool_point(raw, base, index)?;
     if test == TestKind::Positioning {
         for (key, given) in geometry_keys(raw) {
             if given {
                 return refuse(
                     key,
-                    format!("`{key}` belongs to a straightness or angular test; add `test: straightness` or `test: angular`"),
+                    format!(
+                        "`{key}` belongs to a straightness or angular test; add `test: straightness` or `test: angular`"
+                    ),
                 );
             }
         }
@@ -51,7 +54,10 @@ pub(super) fn check(raw: &mut AxisRaw, base: &str, index: &LocationIndex) -> Res
     if raw.kind != AxisKind::Linear {
         return refuse(
             "test",
-            format!("a {} test is of a linear axis; this axis is rotary", test.key()),
+            format!(
+                "a {} test is of a linear axis; this axis is rotary",
+                test.key()
+            ),
         );
     }
     for key in POSITIONING_ONLY {
@@ -89,11 +95,81 @@ pub(super) fn check(raw: &mut AxisRaw, base: &str, index: &LocationIndex) -> Res
     {
         return refuse(
             "local_mm",
-            format!("the local straightness is over {l} mm but its tolerance is over any {over} mm; write one length"),
+            format!(
+                "the local straightness is over {l} mm but its tolerance is over any {over} mm; write one length"
+            ),
         );
     }
     raw.tolerance = read;
     Ok(())
+}
+
+/// A tool point is of a positioning test of a linear axis X, Y or Z, offset across it by
+/// finite distances.
+fn check_tool_point(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(), Located> {
+    let Some(tool) = &raw.tool_point else {
+        return Ok(());
+    };
+    let path = format!("{base}.tool_point");
+    let refuse = |why: String| Err(Located::new(index.key(&path), format!("{path}: {why}")));
+    if raw.test != TestKind::Positioning || raw.kind != AxisKind::Linear {
+        return refuse("a tool point is of a positioning test of a linear axis".into());
+    }
+    let Some(own) = axis_letter(&raw.name) else {
+        return refuse(format!(
+            "the axis `{}` is not named X, Y or Z: which offsets are across it is not known",
+            raw.name
+        ));
+    };
+    let given = [('X', tool.x_mm), ('Y', tool.y_mm), ('Z', tool.z_mm)];
+    for (letter, value) in given {
+        match value {
+            Some(_) if letter == own => {
+                return refuse(format!(
+                    "`{}_mm` is along the axis itself; give the offsets across it ({})",
+                    letter.to_ascii_lowercase(),
+                    across(own)
+                        .map(|c| format!("{}_mm", c.to_ascii_lowercase()))
+                        .join(", ")
+                ));
+            }
+            Some(v) if !v.is_finite() => {
+                return refuse(format!("expected a distance in mm, got {v}"));
+            }
+            _ => {}
+        }
+    }
+    if given.iter().all(|(_, v)| v.is_none()) {
+        return refuse(
+            "give the offsets of the tool point from the beam, e.g. {y_mm: 0, z_mm: 150}".into(),
+        );
+    }
+    Ok(())
+}
+
+/// The axis letter `X`, `Y` or `Z` an axis's name starts with (`X`, `x`, `X1`).
+pub fn axis_letter(name: &str) -> Option<char> {
+    let c = name.trim().chars().next()?.to_ascii_uppercase();
+    matches!(c, 'X' | 'Y' | 'Z').then_some(c)
+}
+
+/// The two axes across `letter`, in ISO 841's cyclic order (X: Y, Z; Y: Z, X; Z: X, Y),
+/// as `geometry::abbe` takes them.
+pub fn across(letter: char) -> [char; 2] {
+    match letter {
+        'X' => ['Y', 'Z'],
+        'Y' => ['Z', 'X'],
+        _ => ['X', 'Y'],
+    }
+}
+
+/// The rotation about `letter`: A about X, B about Y, C about Z.
+pub fn rotation_about(letter: char) -> char {
+    match letter {
+        'X' => 'A',
+        'Y' => 'B',
+        _ => 'C',
+    }
 }
 
 /// The other tests' keys and whether each is written.
@@ -116,11 +192,19 @@ fn check_letters(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(),
         let place = index.value(&path).or_else(|| index.key(base));
         Located::new(place, format!("{path}: {why}"))
     };
-    let own = raw.name.trim().chars().next().map(|c| c.to_ascii_uppercase());
+    let own = raw
+        .name
+        .trim()
+        .chars()
+        .next()
+        .map(|c| c.to_ascii_uppercase());
     match raw.test {
         TestKind::Straightness => {
             if raw.about.is_some() {
-                return Err(located("about", "a straightness test takes `direction:`, not `about:`".into()));
+                return Err(located(
+                    "about",
+                    "a straightness test takes `direction:`, not `about:`".into(),
+                ));
             }
             match raw.direction.map(|c| c.to_ascii_uppercase()) {
                 None => Err(located(
@@ -142,7 +226,10 @@ fn check_letters(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<(),
             for key in ["direction", "line", "local_mm"] {
                 let given = geometry_keys(raw).iter().any(|(k, g)| *k == key && *g);
                 if given {
-                    return Err(located(key, format!("`{key}` belongs to a straightness test, not an angular one")));
+                    return Err(located(
+                        key,
+                        format!("`{key}` belongs to a straightness test, not an angular one"),
+                    ));
                 }
             }
             match raw.about.map(|c| c.to_ascii_uppercase()) {
@@ -168,5 +255,9 @@ pub fn symbol(raw: &AxisRaw) -> Option<String> {
         TestKind::Angular => raw.about?,
         _ => return None,
     };
-    Some(format!("E{}{}", letter.to_ascii_uppercase(), raw.name.trim()))
+    Some(format!(
+        "E{}{}",
+        letter.to_ascii_uppercase(),
+        raw.name.trim()
+    ))
 }

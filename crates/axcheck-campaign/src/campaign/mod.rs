@@ -14,7 +14,7 @@ pub mod stages;
 
 pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, InstrumentEntry, MachineInfo, Nde, OutputOptions,
-    SensorKind, TemperatureSensor, Unjudged,
+    SensorKind, TemperatureSensor, ToolPointRaw, Unjudged,
 };
 
 use crate::evaluate::StandardId;
@@ -223,7 +223,11 @@ fn unique_axis_names(machine: &Machine, m: usize, index: &LocationIndex) -> Resu
     for (a, entry) in machine.axes.iter().enumerate() {
         let Ok(spec) = &entry.spec else { continue };
         // One axis may hold several tests: positioning, EYX, EZX, EBX …
-        let test = (spec.raw.name.as_str(), spec.raw.test.key(), geometry::symbol(&spec.raw));
+        let test = (
+            spec.raw.name.as_str(),
+            spec.raw.test.key(),
+            geometry::symbol(&spec.raw),
+        );
         if let Some(first) = axes.insert(test, a) {
             return Err(Located::new(
                 index.value(&format!("machines[{m}].axes[{a}].name")),

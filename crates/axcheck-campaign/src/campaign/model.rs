@@ -243,6 +243,35 @@ pub struct AxisRaw {
     /// The tolerances, each beside its text.
     #[serde(skip_deserializing, skip_serializing_if = "Vec::is_empty")]
     pub tolerance: Vec<(String, Tolerance)>,
+    /// Positioning: where the tool point is from the laser beam, mm (`{y_mm: 0, z_mm:
+    /// 150}` for an X axis whose beam runs 150 mm below it): the test is also carried to
+    /// it through the axis's angular tests in the campaign (Abbe, `geometry::abbe`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tool_point: Option<ToolPointRaw>,
+}
+
+/// The tool point's offsets from the beam across the axis, mm (the axis's own left out).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ToolPointRaw {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub x_mm: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub y_mm: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub z_mm: Option<f64>,
+}
+
+impl ToolPointRaw {
+    /// The offset along `letter` (`X`, `Y`, `Z`), 0 when not given.
+    pub fn along(&self, letter: char) -> f64 {
+        match letter {
+            'X' => self.x_mm,
+            'Y' => self.y_mm,
+            _ => self.z_mm,
+        }
+        .unwrap_or(0.0)
+    }
 }
 
 fn is_positioning(test: &TestKind) -> bool {

@@ -188,8 +188,7 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
         ("Standard", t.standard().map(|s| s.title().to_string())),
         (
             "Acceptance spec",
-            t.judgement()
-                .map(|j| j.limits.describe_labelled()),
+            t.judgement().map(|j| j.limits.describe_labelled()),
         ),
         (
             "Test date",
@@ -303,7 +302,8 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
         .parameters
         .iter()
         .map(|p| {
-            let check = t.judgement()
+            let check = t
+                .judgement()
                 .and_then(|j| j.checks.iter().find(|c| c.key == p.def.key));
             let at = if let Some(i) = p.at_target {
                 format!("at i = {} ({})", i + 1, pos(e.kind, e.targets[i].position))

@@ -109,11 +109,10 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
             t.error().unwrap_or_default().to_string()
         }),
         noncompliant: with(Verdict::Noncompliant, AxisTest::broken_rules_text),
-        has_chart: result.tests.iter().any(|t| {
-            t.judgement()
-                .and_then(|j| j.worst())
-                .is_some()
-        }),
+        has_chart: result
+            .tests
+            .iter()
+            .any(|t| t.judgement().and_then(|j| j.worst()).is_some()),
         trends: None,
         generator: generator(),
     }
@@ -128,20 +127,25 @@ fn row(t: &AxisTest) -> SummaryRow {
     let data = (t.evaluated().and_then(|e| e.data.as_ref()))
         .or_else(|| t.other().and_then(|o| o.data.as_ref()));
     let travel = data.map_or("–".into(), |d| {
-            let (a, b) = d.measurement_travel();
-            pos(d.kind, ((b - a) * 1e6).round() / 1e6)
-        });
-    let worst = match t.judgement()
-        .and_then(|j| j.worst())
-    {
+        let (a, b) = d.measurement_travel();
+        pos(d.kind, ((b - a) * 1e6).round() / 1e6)
+    });
+    let worst = match t.judgement().and_then(|j| j.worst()) {
         Some(c) => format!("{} {}", symbol_of(t, c.key), fmt_fixed(c.ratio(), 2)),
-        None if t.no_tolerance() && (e.is_some() || t.other().is_some()) => "no tolerance".to_string(),
+        None if t.no_tolerance() && (e.is_some() || t.other().is_some()) => {
+            "no tolerance".to_string()
+        }
         None => "–".to_string(),
     };
     SummaryRow {
         machine: short_name(&t.machine.id, 40),
         axis: if t.tests > 1 {
-            format!("{} ({}/{})", short_name(&t.axis_label(), 30), t.test, t.tests)
+            format!(
+                "{} ({}/{})",
+                short_name(&t.axis_label(), 30),
+                t.test,
+                t.tests
+            )
         } else {
             short_name(&t.axis_label(), 30)
         },

@@ -53,11 +53,12 @@ pub fn limits(
 ) -> Result<BTreeMap<ParamKey, (f64, String)>, LimitError> {
     let mut limits: BTreeMap<ParamKey, (f64, String)> = BTreeMap::new();
     for (written, tolerance) in tolerances {
-        let (key, limit) = limit_of(test, *tolerance, length_mm).map_err(|why| LimitError::Form {
-            written: written.clone(),
-            test: test.key(),
-            why,
-        })?;
+        let (key, limit) =
+            limit_of(test, *tolerance, length_mm).map_err(|why| LimitError::Form {
+                written: written.clone(),
+                test: test.key(),
+                why,
+            })?;
         if let Some((_, first)) = limits.get(&key) {
             return Err(LimitError::Twice {
                 key,
@@ -127,7 +128,9 @@ pub fn judge(
     Judgement {
         limits: Limits {
             spec: None,
-            values: (limits.iter()).map(|(k, (l, _))| (*k, (*l, LimitSource::Axis))).collect(),
+            values: (limits.iter())
+                .map(|(k, (l, _))| (*k, (*l, LimitSource::Axis)))
+                .collect(),
             example: false,
         },
         rule: decision.rule,
@@ -159,11 +162,21 @@ mod tests {
     #[test]
     fn an_angle_cannot_limit_a_straightness_nor_a_length_an_angle() {
         let e = limits(TestKind::Straightness, &written(&["30″"]), 800.0).unwrap_err();
-        assert!(e.to_string().contains("cannot limit a straightness test"), "{e}");
+        assert!(
+            e.to_string().contains("cannot limit a straightness test"),
+            "{e}"
+        );
         let e = limits(TestKind::Angular, &written(&["0.010"]), 800.0).unwrap_err();
-        assert!(e.to_string().contains("an angular deviation is an angle"), "{e}");
+        assert!(
+            e.to_string().contains("an angular deviation is an angle"),
+            "{e}"
+        );
         let e = limits(TestKind::Straightness, &written(&["0.02", "20 µm"]), 800.0).unwrap_err();
-        assert!(e.to_string().contains("two tolerances limit the straightness"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("two tolerances limit the straightness"),
+            "{e}"
+        );
     }
 
     /// 14 µm ± 2.5 µm against 16 µm: simple passes, ISO 14253-1 is inconclusive
@@ -195,7 +208,12 @@ mod tests {
     /// A local tolerance on a test evaluated without a local length has nothing to judge.
     #[test]
     fn a_limit_without_its_value_is_not_applicable() {
-        let l = limits(TestKind::Straightness, &written(&["0.010 over any 300"]), 800.0).unwrap();
+        let l = limits(
+            TestKind::Straightness,
+            &written(&["0.010 over any 300"]),
+            800.0,
+        )
+        .unwrap();
         let v = Value {
             key: ParamKey::Straightness,
             value: 5.0,
