@@ -177,6 +177,13 @@ pub fn run(file: &Path, sheet: ReadOptions, args: &GeometryArgs, json: bool) -> 
     let body = match result {
         OtherResult::Straightness(s) => straightness_text(s, u, &data.targets),
         OtherResult::Angular(a) => angular_text(a, u),
+        // Only a campaign's squareness pair holds one; `eval` prints its own below.
+        OtherResult::Squareness(s) => {
+            format!(
+                "  squareness {}″\n",
+                fmt_fixed(s.squareness.error_arcsec, 2)
+            )
+        }
     };
     Ok(head(&name, &recognised, &data, args) + &body + &u_notes(u))
 }

@@ -89,7 +89,11 @@ pub(crate) struct TestJson<'a> {
 #[derive(Serialize)]
 struct OtherJson<'a> {
     test: crate::geometry::TestKind,
+    #[serde(skip_serializing_if = "str::is_empty")]
     symbol: &'a str,
+    /// A squareness's two axes, as its `axes:` names them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axes: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     direction: Option<char>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -102,25 +106,36 @@ struct OtherJson<'a> {
     result: &'a crate::one_file::OtherResult,
     uncertainty: &'a crate::geometry::uncertainty::Uncertain,
     tolerance: Vec<&'a str>,
+    /// A squareness's straightness tests: `{symbol, file}` each.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    from: Vec<Source<'a>>,
+}
+
+#[derive(Serialize)]
+struct Source<'a> {
+    symbol: &'a str,
+    file: &'a str,
 }
 
 impl<'a> OtherJson<'a> {
     fn new(t: &'a AxisTest) -> Option<OtherJson<'a>> {
         let o = t.other()?;
-        let raw = &t.spec.as_ref()?.raw;
+        let raw = t.spec.as_ref().map(|s| &s.raw);
         Some(OtherJson {
             test: o.test,
             symbol: &o.symbol,
-            direction: raw.direction.map(|c| c.to_ascii_uppercase()),
-            about: raw.about.map(|c| c.to_ascii_uppercase()),
+            axes: raw.is_none().then_some(t.axis.as_str()),
+            direction: raw
+                .and_then(|r| r.direction)
+                .map(|c| c.to_ascii_uppercase()),
+            about: raw.and_then(|r| r.about).map(|c| c.to_ascii_uppercase()),
             n: o.data.as_ref().map(|d| d.runs()),
             targets_mm: o.data.as_ref().map(|d| d.targets.as_slice()),
             result: &o.result,
             uncertainty: &o.uncertainty,
-            tolerance: raw
-                .tolerance
-                .iter()
-                .map(|(text, _)| text.as_str())
+            tolerance: o.tolerance.iter().map(String::as_str).collect(),
+            from: (o.sources.iter())
+                .map(|(symbol, file)| Source { symbol, file })
                 .collect(),
         })
     }

@@ -55,7 +55,7 @@ fn one_broken_axis_fails_alone() {
     );
     assert_eq!(verdict(3), "error");
     assert!(
-        error(3).contains("campaign.yaml:10:67: machines[1].axes[0].tolerance: unknown key `tolerance` (did you mean `tolerances`?)"),
+        error(3).contains("campaign.yaml:10:78: machines[1].axes[0].tolerance: limits by parameter are `tolerances: {A: …}` (did you mean `tolerances`?)"),
         "{}",
         error(3)
     );

@@ -305,7 +305,9 @@ fn every_broken_input_fails_alone_with_a_clear_error() {
         (
             "unknown-key",
             "{name: unknown-key, kind: linear, data: data/good.csv, tolerence: {A: 1}}",
-            "did you mean `tolerances`",
+            // The nearest key since issue 46; written as a mapping, `tolerance` then
+            // points to `tolerances` (campaign::one_broken_axis_fails_alone).
+            "did you mean `tolerance`",
         ),
         (
             "wrong-type",

@@ -133,6 +133,46 @@ fn an_angular_test_passes_and_a_straightness_fails() {
     assert_eq!(results["counts"]["fail"], 1);
 }
 
+/// X–Y squareness from EYX and EXY: numpy's −8.222″ (`EXPECTED.md`), its U as
+/// `eval --test squareness` gives it, against `0.060 per 1000` = arctan(6·10⁻⁵).
+#[test]
+fn a_squareness_pair_is_judged() {
+    let (results, _) = run("squareness");
+    let sq = (results["axes"].as_array().unwrap().iter())
+        .find(|t| t["geometry"]["test"] == "squareness")
+        .unwrap();
+    assert_eq!(sq["axis"], "X-Y");
+    assert_eq!(sq["geometry"]["axes"], "X-Y");
+    assert_eq!(
+        format!("{:.3}", f(&sq["geometry"]["error_arcsec"])),
+        "-8.222"
+    );
+    assert_eq!(sq["geometry"]["convention"], "over_ninety_positive");
+    assert_eq!(sq["geometry"]["from"][0]["symbol"], "EYX");
+    assert_eq!(sq["geometry"]["from"][1]["file"], "y-straightness-x.csv");
+    let eval = eval_json(&[
+        "tests/data/geometry/x-straightness-y.csv",
+        "--test",
+        "squareness",
+        "--second",
+        "tests/data/geometry/y-straightness-x.csv",
+    ]);
+    assert_eq!(sq["geometry"]["uncertainty"]["U"], eval["uncertainty"]["U"]);
+    assert_eq!(sq["geometry"]["error_arcsec"], eval["error_arcsec"]);
+    let c = check(sq, "squareness");
+    let limit = (6e-5f64).atan() * 648_000.0 / std::f64::consts::PI;
+    assert!((f(&c["limit"]) - limit).abs() < 1e-9, "{c}");
+    assert_eq!(format!("{limit:.3}"), "12.376");
+    let u = f(&eval["uncertainty"]["U"]);
+    let want = if 8.222 + u <= limit {
+        "pass"
+    } else {
+        "inconclusive"
+    };
+    assert_eq!(c["outcome"], want);
+    assert_eq!(sq["unit"], "arcsec");
+}
+
 /// Every table lists the three tests by ISO 230-1's symbol, with their values.
 #[test]
 fn the_summaries_list_each_test() {
@@ -143,7 +183,7 @@ fn the_summaries_list_each_test() {
     let header = lines.next().unwrap();
     let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
     let records: Vec<Vec<&str>> = lines.collect();
-    assert_eq!(records.len(), 3);
+    assert_eq!(records.len(), 4);
     let row = |symbol: &str| {
         records
             .iter()
@@ -163,6 +203,8 @@ fn the_summaries_list_each_test() {
     assert!(junit.contains("straightness = 0.26"), "{junit}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     assert!(md.contains("| X EBX |"), "{md}");
+    assert!(md.contains("| X-Y squareness |"), "{md}");
+    assert!(row("")[column("test_kind")] == "squareness");
     let (code, stdout, _) = axcheck(&["check", CAMPAIGN, "--jobs", "1"]);
     assert_eq!(code, 1);
     assert!(stdout.contains("MILL-G Y EXY"), "{stdout}");
@@ -354,4 +396,34 @@ fn a_positioning_test_is_carried_to_its_tool_point() {
     std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
     let (_, stdout, _) = axcheck(&["check", &path("campaign.yaml")]);
     assert!(stdout.contains("Not carried to the tool point: M X: the tool point's offset of 150 mm along Z needs the rotation of X about Y (EBX)"), "{stdout}");
+}
+
+/// A squareness pair naming a straightness test the machine does not hold is an error
+/// of its own, at its line; the machine's tests still run.
+#[test]
+fn a_squareness_without_its_test_says_which() {
+    let dir = scratch("geometry-squareness-missing");
+    std::fs::copy(
+        "tests/data/geometry/x-straightness-y.csv",
+        dir.join("x.csv"),
+    )
+    .unwrap();
+    let text = "campaign: {name: bad}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, test: straightness, direction: Y, data: x.csv, tolerance: 0.02}\n    squareness:\n      - axes: [X, Y]\n        tolerance: 20″\n";
+    std::fs::write(dir.join("campaign.yaml"), text).unwrap();
+    let (code, stdout, _) = axcheck(&["check", dir.join("campaign.yaml").to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(
+        stdout.contains("1 pass, 0 fail, 0 noncompliant, 1 error"),
+        "{stdout}"
+    );
+    // Named by its pair (`M X-Y`), the message by its place: `squareness[0]`.
+    assert!(
+        stdout.contains("M X-Y ") && stdout.contains("squareness[0].axes"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("campaign.yaml:7:")
+            && stdout.contains("takes the straightness of Y along X (EXY)"),
+        "{stdout}"
+    );
 }

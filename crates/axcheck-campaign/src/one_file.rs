@@ -102,6 +102,8 @@ pub struct SquarenessSide<'a> {
 pub enum OtherResult {
     Straightness(Straightness),
     Angular(Angular),
+    /// A campaign's squareness pair (its U is the test's `uncertainty`).
+    Squareness(Box<SquarenessResult>),
 }
 
 impl OtherResult {
@@ -114,6 +116,7 @@ impl OtherResult {
                 s.local.as_ref().map(|l| l.deviation_um)
             }
             (OtherResult::Angular(a), K::Angular) => Some(a.deviation_arcsec),
+            (OtherResult::Squareness(s), K::Squareness) => Some(s.squareness.error_arcsec),
             _ => None,
         }
     }
@@ -213,11 +216,14 @@ pub struct SquarenessOptions {
 }
 
 /// A squareness with U and the two lines it comes from.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SquarenessResult {
     pub line: ReferenceLine,
+    #[serde(flatten)]
     pub squareness: Squareness,
+    #[serde(skip)]
     pub uncertainty: Uncertain,
+    /// Each straightness test's bidirectional straightness and reference line.
     pub first: Trace,
     pub second: Trace,
 }

@@ -54,7 +54,8 @@ pub enum Outcome {
 #[derive(Debug, Clone)]
 pub struct OtherTested {
     pub verdict: Verdict,
-    pub recognised: Recognised,
+    /// What its file was read as (none for a squareness of two tests).
+    pub recognised: Option<Recognised>,
     pub test: crate::geometry::TestKind,
     /// ISO 230-1's symbol: `EYX`, `EBX` …
     pub symbol: String,
@@ -67,13 +68,17 @@ pub struct OtherTested {
     /// An angular test's mean angles, kept when its readings are dropped: a positioning
     /// test of the axis is carried to its tool point through them.
     pub trace: Option<crate::geometry::angular::Trace>,
+    /// A squareness's two straightness tests: (symbol, file) each.
+    pub sources: Vec<(String, String)>,
+    /// Its tolerances as written.
+    pub tolerance: Vec<String>,
 }
 
 impl OtherTested {
     /// The deviation unit of its values: `um` or `arcsec`.
     pub fn unit(&self) -> &'static str {
         match self.test {
-            crate::geometry::TestKind::Angular => "arcsec",
+            crate::geometry::TestKind::Angular | crate::geometry::TestKind::Squareness => "arcsec",
             _ => "um",
         }
     }
@@ -85,6 +90,7 @@ impl OtherTested {
             K::Straightness => "straightness",
             K::StraightnessLocal => "local straightness",
             K::Angular => "angular deviation",
+            K::Squareness => "squareness",
             _ => "",
         }
     }
@@ -195,6 +201,15 @@ impl AxisTest {
         }
     }
 
+    /// Drops the test's readings (the CI gate, once every pass that needs them is done).
+    pub(crate) fn drop_data(&mut self) {
+        match &mut self.outcome {
+            Outcome::Evaluated(e) => e.data = None,
+            Outcome::Other(o) => o.data = None,
+            Outcome::Unread { .. } => {}
+        }
+    }
+
     pub(crate) fn evaluated_mut(&mut self) -> Option<&mut Evaluated> {
         match &mut self.outcome {
             Outcome::Evaluated(e) => Some(e),
@@ -205,6 +220,9 @@ impl AxisTest {
     /// The axis's name, followed for another laser test by ISO 230-1's symbol: `X`,
     /// `X EYX`.
     pub fn axis_label(&self) -> String {
+        if self.test_kind() == crate::geometry::TestKind::Squareness {
+            return format!("{} squareness", self.axis);
+        }
         match self
             .spec
             .as_ref()
@@ -219,7 +237,9 @@ impl AxisTest {
     /// linear axis); empty when the axis is unknown.
     pub fn deviation_symbol(&self) -> &'static str {
         match self.test_kind() {
-            crate::geometry::TestKind::Angular => crate::units::AxisKind::Rotary.deviation_symbol(),
+            crate::geometry::TestKind::Angular | crate::geometry::TestKind::Squareness => {
+                crate::units::AxisKind::Rotary.deviation_symbol()
+            }
             _ => self.kind().map_or("", |k| k.deviation_symbol()),
         }
     }
@@ -227,7 +247,9 @@ impl AxisTest {
     /// The unit of its deviations as files write it: `um` or `arcsec`.
     pub fn deviation_unit(&self) -> Option<&'static str> {
         match self.test_kind() {
-            crate::geometry::TestKind::Angular => Some("arcsec"),
+            crate::geometry::TestKind::Angular | crate::geometry::TestKind::Squareness => {
+                Some("arcsec")
+            }
             _ => self.kind().map(|k| k.deviation_unit()),
         }
     }
@@ -240,11 +262,14 @@ impl AxisTest {
         }
     }
 
-    /// Which laser test this is: positioning unless the axis entry says otherwise.
+    /// Which laser test this is: positioning unless the axis entry says otherwise (or
+    /// it is a machine's squareness pair).
     pub fn test_kind(&self) -> crate::geometry::TestKind {
-        self.spec
-            .as_ref()
-            .map_or_else(Default::default, |s| s.raw.test)
+        match (self.other(), &self.spec) {
+            (Some(o), _) => o.test,
+            (None, Some(s)) => s.raw.test,
+            (None, None) => Default::default(),
+        }
     }
 
     /// The layout the file was read as, when it was read.
@@ -252,7 +277,7 @@ impl AxisTest {
         match &self.outcome {
             Outcome::Unread { recognised, .. } => recognised.as_deref(),
             Outcome::Evaluated(e) => Some(&e.recognised),
-            Outcome::Other(o) => Some(&o.recognised),
+            Outcome::Other(o) => o.recognised.as_ref(),
         }
     }
 

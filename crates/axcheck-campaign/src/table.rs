@@ -76,12 +76,14 @@ pub fn columns() -> Vec<(String, ColumnKind)> {
             // Added in issue 42: the verdict rests on a spec marked `example: true`.
             ("example_limits", Bool),
             // Added in issue 46: the laser test (`positioning`, `straightness`, `angular`),
-            // ISO 230-1's symbol (`EYX`) and the other tests' values (µm, µm, arcsec).
+            // ISO 230-1's symbol (`EYX`) and the other tests' values (µm, µm, arcsec,
+            // arcsec).
             ("test_kind", Text),
             ("symbol", Text),
             ("straightness", Number),
             ("straightness_local", Number),
             ("angular", Number),
+            ("squareness", Number),
         ]
         .iter()
         .map(|(n, k)| (n.to_string(), *k)),
@@ -146,15 +148,13 @@ fn row(t: &AxisTest) -> Vec<Cell> {
             .map_or(Cell::Empty, |j| Cell::Bool(j.limits.example)),
     );
     cells.push(Cell::text(t.test_kind().key()));
-    cells.push(Cell::opt_text(other.map(|o| o.symbol.clone())));
+    cells.push(Cell::opt_text(
+        other.map(|o| o.symbol.clone()).filter(|s| !s.is_empty()),
+    ));
     let value = |key| {
         let result = other.map(|o| &o.result);
         Cell::opt_number(result.and_then(|r| r.value(key)))
     };
-    cells.extend([
-        value(ParamKey::Straightness),
-        value(ParamKey::StraightnessLocal),
-        value(ParamKey::Angular),
-    ]);
+    cells.extend(ParamKey::GEOMETRY.map(value));
     cells
 }

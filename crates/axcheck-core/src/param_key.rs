@@ -45,6 +45,8 @@ pub enum ParamKey {
     Straightness,
     StraightnessLocal,
     Angular,
+    /// The squareness of two axes, arcsec.
+    Squareness,
 }
 
 impl ParamKey {
@@ -60,10 +62,11 @@ impl ParamKey {
 
     /// The keys of the other laser tests' values (not in the positioning catalogue: no
     /// positioning tolerance may name them).
-    pub const GEOMETRY: [ParamKey; 3] = [
+    pub const GEOMETRY: [ParamKey; 4] = [
         ParamKey::Straightness,
         ParamKey::StraightnessLocal,
         ParamKey::Angular,
+        ParamKey::Squareness,
     ];
 
     /// The key as files and outputs write it: `A`, `A_up`, `R_max` …
@@ -102,6 +105,7 @@ impl ParamKey {
             Straightness => "straightness",
             StraightnessLocal => "straightness_local",
             Angular => "angular",
+            Squareness => "squareness",
         }
     }
 

@@ -4,6 +4,7 @@
 //! verifies a table is compared with its prediction ([`verification`]).
 
 mod other;
+mod squareness;
 mod tool_point;
 pub mod verification;
 
@@ -91,11 +92,13 @@ pub fn run(
     let mut tested = evaluate_all();
     verification::verify_all(&mut tested);
     tool_point::carry_all(&mut tested);
+    let squareness = squareness::evaluate_all(campaign, &tested);
     if options.drop_data {
-        for e in tested.iter_mut().filter_map(|(t, _)| t.evaluated_mut()) {
-            e.data = None;
+        for (t, _) in &mut tested {
+            t.drop_data();
         }
     }
+    tested.extend(squareness.into_iter().map(|t| (t, None)));
     let tests = tested.into_iter().map(|(t, _)| t).collect();
     CampaignResult {
         info: campaign.info.clone(),
@@ -294,10 +297,7 @@ fn run_test(
         Err(test) => return (*test, None),
     };
     if other::is_other(axis) {
-        return (
-            other::run(slot, axis, campaign, (data, recognised), options),
-            None,
-        );
+        return (other::run(slot, axis, campaign, (data, recognised)), None);
     }
     // The tool's own results are of the readings as the file holds them (before NDE).
     let other_tool = (recognised.reported.as_ref()).map(|r| crate::crosscheck::compare(r, &data));

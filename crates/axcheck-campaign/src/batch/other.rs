@@ -2,7 +2,7 @@
 //! U, and judged against the axis's `tolerance:` by the campaign's decision rule, as a
 //! positioning test is by its parameters' limits.
 
-use super::{BatchOptions, Slot};
+use super::Slot;
 use crate::campaign::{AxisSpec, CampaignInfo};
 use crate::geometry::TestKind;
 use crate::geometry::judge::{Value, judge, limits};
@@ -19,7 +19,6 @@ pub(super) fn run(
     axis: &AxisSpec,
     campaign: &CampaignInfo,
     (data, recognised): (AxisData, Recognised),
-    options: BatchOptions,
 ) -> AxisTest {
     let raw = &axis.raw;
     let local = raw.local_mm.or_else(|| {
@@ -59,11 +58,14 @@ pub(super) fn run(
     let symbol = crate::campaign::geometry::symbol(raw).unwrap_or_default();
     slot.with(Outcome::Other(Box::new(OtherTested {
         verdict,
-        recognised,
+        recognised: Some(recognised),
         test: raw.test,
         symbol,
         trace: (raw.test == TestKind::Angular).then(|| angular::Trace::of(&data)),
-        data: (!options.drop_data).then_some(data),
+        // Kept for a squareness of the machine; the batch drops it at its end.
+        data: Some(data),
+        sources: Vec::new(),
+        tolerance: raw.tolerance.iter().map(|(text, _)| text.clone()).collect(),
         result,
         uncertainty,
         judgement,

@@ -58,7 +58,12 @@ pub(super) fn machine(
             .in_file(file)),
         }],
     };
-    Machine { info, axes }
+    let squareness = super::squareness::entries(value.get("squareness"), base, index, file, &axes);
+    Machine {
+        info,
+        axes,
+        squareness,
+    }
 }
 
 /// An axis that asks for a LinuxCNC comp file type on a machine whose controller is not
@@ -121,6 +126,7 @@ fn broken_machine(value: &Value, base: &str, error: YamlError) -> Machine {
                 spec: Err(error.clone()),
             })
             .collect(),
+        squareness: Vec::new(),
     }
 }
 

@@ -10,6 +10,7 @@ mod file_info;
 pub mod geometry;
 mod load;
 pub mod model;
+pub mod squareness;
 pub mod stages;
 
 pub use model::{
@@ -56,6 +57,8 @@ pub struct Campaign {
 pub struct Machine {
     pub info: MachineInfo,
     pub axes: Vec<AxisEntry>,
+    /// Its `squareness:` pairs, each ready or with its error.
+    pub squareness: Vec<squareness::SquarenessEntry>,
 }
 
 /// An axis as loaded: ready to evaluate, or the reason it cannot be.

@@ -4,6 +4,7 @@
 use crate::axis_model::Cycle;
 use crate::geometry::TestKind;
 use crate::geometry::line::ReferenceLine;
+use crate::geometry::squareness::Convention;
 use crate::geometry::tolerance::Tolerance;
 use crate::judge::{DecisionRule, Tolerances};
 use crate::uncertainty::InstrumentKind;
@@ -136,6 +137,50 @@ pub struct MachineInfo {
     /// from the document, so that a broken axis fails alone.
     #[serde(default, skip_serializing)]
     pub axes: IgnoredAny,
+    /// Squareness of pairs of the machine's linear axes from their straightness tests
+    /// (read one by one by the loader, as the axes).
+    #[serde(default, skip_serializing)]
+    pub squareness: IgnoredAny,
+}
+
+/// A squareness of two linear axes from their straightness tests in the campaign and an
+/// optical square (ISO 230-1; the method and sign of the HP 5528A User's Guide, §21):
+/// `axes: [X, Y]` takes the straightness of X along Y (EYX) and of Y along X (EXY).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SquarenessRaw {
+    pub axes: [String; 2],
+    /// The optical square's error as printed on it, arcsec (0 when absent).
+    #[serde(default)]
+    pub square_error_arcsec: f64,
+    /// The standard uncertainty of that error (its calibration), arcsec.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub square_u_arcsec: Option<f64>,
+    /// The sign: `over_90` (positive when the angle is larger than 90°, the default) or
+    /// `under_90`.
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub convention: Option<Convention>,
+    /// The reference lines, `least_squares` (default) or `end_point`.
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub line: Option<ReferenceLine>,
+    /// As an axis's: `20″`, or a slope `0.020 per 1000`; checked by the loader.
+    #[serde(
+        rename = "tolerance",
+        default,
+        deserialize_with = "one_or_many_texts",
+        skip_serializing
+    )]
+    pub(super) written_tolerance: Vec<String>,
+    #[serde(skip_deserializing, skip_serializing_if = "Vec::is_empty")]
+    pub tolerance: Vec<(String, Tolerance)>,
 }
 
 /// An axis as written in the campaign.
@@ -290,6 +335,9 @@ fn one_or_many_texts<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Vec<S
     };
     match Value::deserialize(deserializer)? {
         Value::Null => Ok(Vec::new()),
+        Value::Mapping(_) => Err(D::Error::custom(
+            "limits by parameter are `tolerances: {A: …}` (did you mean `tolerances`?); `tolerance:` is a straightness, angular or squareness test's, e.g. `0.020 per 1000`",
+        )),
         Value::Sequence(items) => items.iter().map(text).collect(),
         one => Ok(vec![text(&one)?]),
     }

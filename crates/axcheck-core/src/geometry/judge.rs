@@ -8,7 +8,8 @@
 //!   straightness over that stretch;
 //! - an angular test: an angle (`30″`), or a length per length as its slope (`0.040 per
 //!   1000`, as ISO 230-1's acceptance standards write angular tolerances), limits the
-//!   angular deviation.
+//!   angular deviation;
+//! - a squareness: an angle, or a slope (`0.020 per 1000`, arctan(2·10⁻⁵)), limits it.
 //!
 //! Any other pairing is refused with the reason: an angle cannot limit a straightness.
 
@@ -88,7 +89,11 @@ fn limit_of(
             Some(arcsec) => Ok((ParamKey::Angular, arcsec)),
             None => Err("an angular deviation is an angle; write e.g. `30″` or `0.040 per 1000`"),
         },
-        TestKind::Positioning | TestKind::Squareness => Err("its tolerances are written otherwise"),
+        TestKind::Squareness => match t.angle_arcsec() {
+            Some(arcsec) => Ok((ParamKey::Squareness, arcsec)),
+            None => Err("a squareness is an angle or a slope; write e.g. `0.020 per 1000` or `4″`"),
+        },
+        TestKind::Positioning => Err("its tolerances are written otherwise"),
     }
 }
 

@@ -20,8 +20,10 @@ use serde::{Deserialize, Serialize};
 pub enum Convention {
     /// Positive when the included angle is larger than 90° (HP 5528A §21).
     #[default]
+    #[serde(alias = "over_90", alias = "over-90")]
     OverNinetyPositive,
     /// Positive when the included angle is smaller than 90°.
+    #[serde(alias = "under_90", alias = "under-90")]
     UnderNinetyPositive,
 }
 
