@@ -11,6 +11,15 @@ for model in models/*.yaml; do
   axcheck simulate "$model" -o "data/$name.csv"
 done
 
+# MILL-8 measured whole: beside each positioning test (above), X's straightness along Y
+# and Z and its pitch and yaw, and Y's straightness along X (for the X–Y squareness).
+for letter in Y Z B C; do
+  lower=$(echo "$letter" | tr 'YZBC' 'yzbc')
+  kind=e${lower}x
+  axcheck simulate models/mill8-x.yaml --geometry "$letter" -o "data/mill8-x-$kind.csv"
+done
+axcheck simulate models/mill8-y.yaml --geometry X -o data/mill8-y-exy.csv
+
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
