@@ -84,7 +84,7 @@ impl Console {
                 let tenth = (axes * 10 / total.max(1)).min(10);
                 if tenth > self.tenths.fetch_max(tenth, Ordering::Relaxed) {
                     eprintln!(
-                        "axcheck: {} % ({axes} of {total} axes evaluated)",
+                        "axcheck: {} % ({axes} of {total} axis entries evaluated)",
                         tenth * 10
                     );
                 }

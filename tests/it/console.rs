@@ -46,7 +46,10 @@ fn a_fleet_prints_twenty_problems_and_a_count_of_the_rest() {
     // Not a terminal: a progress line at every tenth, not one per axis.
     let progress: Vec<&str> = stderr.lines().filter(|l| l.contains(" % (")).collect();
     assert_eq!(progress.len(), 10, "{stderr}");
-    assert_eq!(progress[9], "axcheck: 100 % (200 of 200 axes evaluated)");
+    assert_eq!(
+        progress[9],
+        "axcheck: 100 % (200 of 200 axis entries evaluated)"
+    );
     assert!(stderr.lines().count() <= 11, "{stderr}");
 
     let (code, stdout, stderr) = axcheck(&["check", campaign.to_str().unwrap(), "--progress"]);
@@ -63,16 +66,23 @@ fn a_fleet_prints_twenty_problems_and_a_count_of_the_rest() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// Progress counts axes: the example campaign has 20 axes and 21 tests (GANTRY-1 X has two
-/// data files), and 100 % comes with the last axis, not one test early.
+/// Progress counts axis entries: the example campaign has 27 entries and 29 tests (GANTRY-1
+/// X has two data files; MILL-8's squareness is a test of no entry), and 100 % comes with
+/// the last entry, not one test early.
 #[test]
 fn progress_counts_axes_when_an_axis_has_several_tests() {
     let (code, stdout, stderr) =
         axcheck(&["check", "example-campaign/campaign.yaml", "--jobs", "1"]);
     assert_eq!(code, 1, "{stderr}");
-    assert!(stdout.contains("21 tests: 16 pass"), "{stdout}");
+    assert!(stdout.contains("29 tests: 24 pass"), "{stdout}");
     let progress: Vec<&str> = stderr.lines().filter(|l| l.contains(" % (")).collect();
     assert_eq!(progress.len(), 10, "{stderr}");
-    assert_eq!(progress[4], "axcheck: 50 % (10 of 20 axes evaluated)");
-    assert_eq!(progress[9], "axcheck: 100 % (20 of 20 axes evaluated)");
+    assert_eq!(
+        progress[4],
+        "axcheck: 50 % (14 of 27 axis entries evaluated)"
+    );
+    assert_eq!(
+        progress[9],
+        "axcheck: 100 % (27 of 27 axis entries evaluated)"
+    );
 }

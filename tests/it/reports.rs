@@ -73,10 +73,13 @@ fn every_pdf_of_the_example_campaign() {
         serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
     let axes = results["axes"].as_array().unwrap();
     let files = pdfs(&out);
+    // The other laser tests (issue 46) have no report of their own yet.
+    let positioning = axes.iter().filter(|a| a.get("geometry").is_none()).count();
+    assert_eq!(positioning, 23);
     assert_eq!(
         files.len(),
-        axes.len() + 1,
-        "one report per axis test and the summary"
+        positioning + 1,
+        "one report per positioning test and the summary"
     );
 
     let (pages, text) = read_pdf(&out.join("summary.pdf"));
@@ -91,7 +94,7 @@ fn every_pdf_of_the_example_campaign() {
         );
     }
 
-    for axis in axes {
+    for axis in axes.iter().filter(|a| a.get("geometry").is_none()) {
         let machine = axis["machine"].as_str().unwrap();
         let name = axis["axis"].as_str().unwrap();
         let file = if axis["tests"].as_u64() == Some(1) {

@@ -59,7 +59,15 @@ fn results_e(out: &Path) -> Vec<(String, Option<f64>)> {
     let axes = results["axes"].as_array().unwrap();
     axes.iter()
         .map(|a| {
-            let id = format!("{}|{}|{}", str(&a["machine"]), str(&a["axis"]), a["test"]);
+            // The axis with the other laser tests' symbol (`X EYX`, `X-Y squareness`).
+            let axis = match (&a["geometry"]["symbol"], &a["geometry"]["test"]) {
+                (Value::String(symbol), _) => format!("{} {symbol}", str(&a["axis"])),
+                (_, Value::String(t)) if t == "squareness" => {
+                    format!("{} squareness", str(&a["axis"]))
+                }
+                _ => str(&a["axis"]).to_string(),
+            };
+            let id = format!("{}|{axis}|{}", str(&a["machine"]), a["test"]);
             (id, a["parameters"]["E"].as_f64())
         })
         .collect()
@@ -76,7 +84,7 @@ fn the_example_page_renders_quietly_and_on_its_own() {
     assert_eq!(b.console_errors(), Vec::<String>::new());
     // No request but the page: no script, style, font or image from anywhere else.
     assert_eq!(b.requests(), [url(page)]);
-    assert_eq!(shown(&mut b), "21 of 21 tests");
+    assert_eq!(shown(&mut b), "29 of 29 tests");
     let title = b
         .eval("document.getElementById('title').textContent")
         .unwrap();
@@ -86,13 +94,13 @@ fn the_example_page_renders_quietly_and_on_its_own() {
         .eval("[...document.querySelectorAll('#counts button')].map(x => x.textContent)")
         .unwrap();
     let want = [
-        "21 tests",
+        "29 tests",
         "2 FAIL",
         "1 NONCOMPLIANT",
         "1 INCONCLUSIVE",
         "0 ERROR",
         "1 NOT JUDGED",
-        "16 PASS",
+        "24 PASS",
     ];
     assert_eq!(counts, serde_json::json!(want));
     // Verdicts are words in the rows, not colours only.
@@ -107,19 +115,19 @@ fn typing_a_machine_name_shows_its_tests() {
     let mut b = open(page);
     b.click("#search").unwrap();
     b.type_text("LATHE").unwrap();
-    assert_eq!(shown(&mut b), "3 of 21 tests");
+    assert_eq!(shown(&mut b), "3 of 29 tests");
     let ids = row_ids(&mut b);
     assert_eq!(ids, ["LATHE-5|X|1", "LATHE-5|Z|1", "LATHE-5|C|1"]);
     // Words narrow together (machine and verdict), and the verdict buttons filter too.
     b.type_text(" noncompliant").unwrap();
-    assert_eq!(shown(&mut b), "1 of 21 tests");
+    assert_eq!(shown(&mut b), "1 of 29 tests");
     assert_eq!(row_ids(&mut b), ["LATHE-5|X|1"]);
     for _ in 0.."LATHE noncompliant".len() {
         b.press_key("Backspace").unwrap();
     }
-    assert_eq!(shown(&mut b), "21 of 21 tests");
+    assert_eq!(shown(&mut b), "29 of 29 tests");
     b.click("#counts button[data-verdict=\"fail\"]").unwrap();
-    assert_eq!(shown(&mut b), "2 of 21 tests");
+    assert_eq!(shown(&mut b), "2 of 29 tests");
     assert_eq!(row_ids(&mut b), ["VMC-07|Y|1", "MILL-3|Y|1"]);
     let pressed = "document.querySelector('#counts button[data-verdict=\"fail\"]').ariaPressed";
     assert_eq!(b.eval(pressed).unwrap(), "true");
