@@ -136,6 +136,21 @@ fn every_pdf_of_the_example_campaign() {
             text.contains("Modelcheckanddiagnosis"),
             "{machine} {name}: diagnosis section"
         );
+        // Issue 46: a test carried to its tool point says so, with its parameters there.
+        if let Some(p) = axis.get("tool_point") {
+            assert!(text.contains("Atthetoolpoint(Abbe)"), "{machine} {name}");
+            let a = p["parameters"]["A"].as_f64().unwrap();
+            assert!(
+                text.contains(&format!("{a:.2}")),
+                "{machine} {name}: A = {a:.2} at the tool point"
+            );
+            let changes = p["verdict"] != axis["verdict"];
+            assert_eq!(
+                text.contains("therotationschangetheverdict"),
+                changes,
+                "{machine} {name}"
+            );
+        }
         let verdict = axis["verdict"]
             .as_str()
             .unwrap()

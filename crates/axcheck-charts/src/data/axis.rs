@@ -45,6 +45,8 @@ pub struct AxisReport<'a> {
     history: Option<super::trends::HistorySection>,
     /// The results the tool that wrote the file printed, beside axcheck's.
     other_tool: Option<super::other_tool::OtherToolSection<'a>>,
+    /// The test carried to the tool point (`tool_point:`).
+    tool_point: Option<super::tool_point::ToolPointSection<'a>>,
     generator: String,
 }
 
@@ -104,6 +106,7 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         other_tool: ev
             .and_then(|e| e.other_tool.as_deref())
             .map(super::other_tool::other_tool_section),
+        tool_point: super::tool_point::tool_point_section(t),
         generator: generator(),
     }
 }

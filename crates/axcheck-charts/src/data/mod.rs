@@ -13,6 +13,7 @@ mod conditions;
 pub mod diagnosis;
 mod other_tool;
 mod summary;
+mod tool_point;
 pub mod trends;
 mod uncertainty;
 
