@@ -422,18 +422,16 @@ fn outputs_line(
         .tests
         .iter()
         .any(|t| t.evaluated().is_some_and(|e| e.compensation.is_some()));
-    // The other laser tests have no report of their own (yet).
-    let reports = (outcome.result.tests.iter()).any(|t| t.other().is_none());
     format!(
         "Outputs in {} ({} files) after {:.2} s: summary.md, summary.csv, summary.xlsx, summary.parquet, results.json, junit.xml{}{}{}",
         plan.out.unwrap_or(Path::new("")).display(),
         outcome.written.len(),
         start.elapsed().as_secs_f64(),
         if plan.html { ", summary.html" } else { "" },
-        match (plan.pdf, reports) {
-            (true, true) => ", summary.pdf, reports/MACHINE/AXIS.pdf",
-            (true, false) => ", summary.pdf",
-            (false, _) => "",
+        if plan.pdf {
+            ", summary.pdf, reports/MACHINE/AXIS.pdf"
+        } else {
+            ""
         },
         if tables {
             ", compensation/MACHINE/AXIS.*"

@@ -2,6 +2,7 @@
 //! machine, one file per axis test, names safe on every file system.
 
 use crate::campaign::geometry::symbol;
+use crate::geometry::TestKind;
 use crate::results::CampaignResult;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;
@@ -83,6 +84,9 @@ pub(crate) fn test_stems(result: &CampaignResult, folder: &str) -> Vec<PathBuf> 
             // An axis's other laser tests beside its positioning test: `X-EYX`.
             let axis = match t.spec.as_ref().and_then(|s| symbol(&s.raw)) {
                 Some(symbol) => safe_name(&format!("{}-{symbol}", t.axis)),
+                None if t.test_kind() == TestKind::Squareness => {
+                    safe_name(&format!("{}-squareness", t.axis))
+                }
                 None => safe_name(&t.axis),
             };
             let base = match t.tests > 1 {

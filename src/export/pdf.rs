@@ -28,9 +28,6 @@ impl Exporter for PdfExporter {
         // 1 000 axes) and should not be left to the end.
         let jobs: Vec<Job> = std::iter::once(Job::Summary)
             .chain(result.tests.iter().zip(paths).map(|(t, p)| Job::Axis(t, p)))
-            // The other laser tests have no report pages yet: their values, limits and
-            // verdicts are in the summary, `results.json` and the tables.
-            .filter(|job| !matches!(job, Job::Axis(t, _) if t.other().is_some()))
             .collect();
         let mut files = typeset_all(&jobs, rayon::current_num_threads(), |job| match job {
             Job::Summary => Ok(OutputFile {

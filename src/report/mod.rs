@@ -40,11 +40,15 @@ pub const TEMPLATES: &[(&str, &str)] = &[
     ),
     ("summary.typ", include_str!("../../templates/summary.typ")),
     ("trends.typ", include_str!("../../templates/trends.typ")),
+    (
+        "other-report.typ",
+        include_str!("../../templates/other-report.typ"),
+    ),
 ];
 
 /// Templates a customised copy may lack (added after the copy was made): the built-in
 /// one is used.
-const NEWER_TEMPLATES: &[&str] = &["trends.typ"];
+const NEWER_TEMPLATES: &[&str] = &["trends.typ", "other-report.typ"];
 
 /// A report that could not be produced.
 #[derive(Debug, thiserror::Error)]
@@ -218,6 +222,9 @@ impl Reports {
         test: &AxisTest,
         trends: Option<&AxisTrends>,
     ) -> Result<Rendered, ReportError> {
+        if test.other().is_some() {
+            return self.other(result, test);
+        }
         let document = test.label();
         let mut report = data::axis_report(result, test);
         let mut history_charts = Vec::new();
@@ -265,6 +272,34 @@ impl Reports {
         );
         let date = result.info.date.as_deref();
         self.compile(&document, "/axis-report.typ", files, date, ident)
+    }
+
+    /// The report of a straightness, angular or squareness test (ISO 230-1).
+    fn other(&self, result: &CampaignResult, test: &AxisTest) -> Result<Rendered, ReportError> {
+        let document = test.label();
+        let Some(report) = data::other_report(result, test) else {
+            return Err(ReportError::Typeset {
+                document,
+                message: "not one of the other laser tests".into(),
+            });
+        };
+        let mut files = Files::data(&document, &report)?;
+        if let Some(chart) = test.other().and_then(data::other_chart) {
+            let style = charts::Style {
+                width_px: CHART_WIDTH_PX,
+                height_px: CHART_HEIGHT_PX,
+            };
+            files.chart("geometry", charts::geometry::geometry(&chart, &style));
+        }
+        let ident = format!(
+            "axcheck/{}/{}/{}/{}",
+            result.info.name,
+            test.machine.id,
+            test.axis_label(),
+            test.test
+        );
+        let date = result.info.date.as_deref();
+        self.compile(&document, "/other-report.typ", files, date, ident)
     }
 
     /// The campaign summary.

@@ -58,6 +58,58 @@ fn squash(s: &str) -> String {
     s.chars().filter(|c| !c.is_whitespace()).collect()
 }
 
+/// The straightness, angular and squareness reports of the example's MILL-8 (issue 46):
+/// each gives its values, U and limits as `results.json` does, and its verdict.
+fn other_reports(out: &std::path::Path, axes: &[serde_json::Value]) {
+    let others: Vec<&serde_json::Value> = axes
+        .iter()
+        .filter(|a| a.get("geometry").is_some())
+        .collect();
+    assert_eq!(
+        others.len(),
+        6,
+        "EYX, EZX, EBX, ECX, EXY and the squareness"
+    );
+    for t in others {
+        let g = &t["geometry"];
+        let stem = match g["symbol"].as_str() {
+            Some(symbol) => format!("{}-{symbol}", t["axis"].as_str().unwrap()),
+            None => format!("{}-squareness", t["axis"].as_str().unwrap()),
+        };
+        let path = out
+            .join("reports")
+            .join(t["machine"].as_str().unwrap())
+            .join(format!("{stem}.pdf"));
+        let (pages, text) = read_pdf(&path);
+        assert!(pages <= 2, "{stem}: {pages} pages");
+        let text = squash(&text);
+        let kind = match g["test"].as_str().unwrap() {
+            "straightness" => "Straightnesstestreport",
+            "angular" => "Angulardeviationtestreport",
+            _ => "Squarenesstestreport",
+        };
+        assert!(
+            text.to_lowercase().contains(&kind.to_lowercase()),
+            "{stem}: {kind}"
+        );
+        for c in t["checks"].as_array().unwrap() {
+            let value = format!("{:.2}", c["value"].as_f64().unwrap()).replace('-', "−");
+            let limit = format!("{:.2}", c["limit"].as_f64().unwrap());
+            assert!(
+                text.contains(&value) && text.contains(&limit),
+                "{stem}: {value} against {limit}"
+            );
+        }
+        let u = format!(
+            "U={}",
+            format!("{:.2}", g["uncertainty"]["U"].as_f64().unwrap())
+        );
+        assert!(text.contains(&u), "{stem}: {u}");
+        let verdict = t["verdict"].as_str().unwrap().to_uppercase();
+        assert!(text.contains(&verdict), "{stem}: {verdict}");
+    }
+}
+
 #[test]
 fn every_pdf_of_the_example_campaign() {
     let out = std::env::temp_dir().join(format!("axcheck-pdf-{}", std::process::id()));
@@ -73,14 +125,12 @@ fn every_pdf_of_the_example_campaign() {
         serde_json::from_slice(&std::fs::read(out.join("results.json")).unwrap()).unwrap();
     let axes = results["axes"].as_array().unwrap();
     let files = pdfs(&out);
-    // The other laser tests (issue 46) have no report of their own yet.
-    let positioning = axes.iter().filter(|a| a.get("geometry").is_none()).count();
-    assert_eq!(positioning, 23);
     assert_eq!(
         files.len(),
-        positioning + 1,
-        "one report per positioning test and the summary"
+        axes.len() + 1,
+        "one report per axis test and the summary"
     );
+    other_reports(&out, axes);
 
     let (pages, text) = read_pdf(&out.join("summary.pdf"));
     assert_eq!(pages, 2, "summary: table, then chart and lists");

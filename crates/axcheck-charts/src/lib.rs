@@ -9,7 +9,8 @@ pub mod charts;
 pub mod data;
 pub mod figures;
 
-use axcheck_campaign::{campaign, judge, measurement, results, trend};
+use axcheck_campaign::{campaign, judge, measurement, one_file, results, trend};
 use axcheck_core::{
-    axis_model, compensate, crosscheck, diagnose, evaluate, nde, rules, uncertainty, units, verify,
+    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, param_key, rules,
+    uncertainty, units, verify,
 };

@@ -108,7 +108,8 @@ fn details(
         let details: Vec<detail::Detail> = (block.iter())
             .map(|(t, report, table)| {
                 let links = detail::Links {
-                    report: (reports && t.evaluated().is_some()).then(|| slash(report)),
+                    report: (reports && (t.evaluated().is_some() || t.other().is_some()))
+                        .then(|| slash(report)),
                     table: table.as_deref().map(slash),
                 };
                 detail::detail(t, trends, links)

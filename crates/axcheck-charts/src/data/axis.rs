@@ -210,14 +210,14 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
 
 /// The verdict in words.
 #[derive(Serialize)]
-struct VerdictText {
+pub(super) struct VerdictText {
     key: Verdict,
     word: String,
     detail: String,
 }
 
 impl VerdictText {
-    fn new(t: &AxisTest) -> VerdictText {
+    pub(super) fn new(t: &AxisTest) -> VerdictText {
         let detail = match t.verdict() {
             Verdict::NotJudged => {
                 "Not judged: no tolerance applied, so nothing was compared with a limit; evaluated and checked against the test-plan rules only."

@@ -11,6 +11,7 @@ mod axis;
 mod compensation;
 mod conditions;
 pub mod diagnosis;
+mod other;
 mod other_tool;
 mod summary;
 mod tool_point;
@@ -19,6 +20,7 @@ mod uncertainty;
 
 pub use axis::{AxisReport, axis_report};
 pub use compensation::{compensation_chart, verification_chart};
+pub use other::{chart as other_chart, other_report};
 pub use summary::{Summary, summary};
 pub use uncertainty::decision_bars;
 
