@@ -100,10 +100,7 @@ fn other_reports(out: &std::path::Path, axes: &[serde_json::Value]) {
                 "{stem}: {value} against {limit}"
             );
         }
-        let u = format!(
-            "U={}",
-            format!("{:.2}", g["uncertainty"]["U"].as_f64().unwrap())
-        );
+        let u = format!("U={:.2}", g["uncertainty"]["U"].as_f64().unwrap());
         assert!(text.contains(&u), "{stem}: {u}");
         let verdict = t["verdict"].as_str().unwrap().to_uppercase();
         assert!(text.contains(&verdict), "{stem}: {verdict}");
