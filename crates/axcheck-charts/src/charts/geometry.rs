@@ -67,7 +67,7 @@ mod tests {
         let chart = GeometryChart {
             positions: vec![0.0, 500.0, 1000.0],
             position_label: "Position / mm".into(),
-            deviation_label: "Straightness deviation about the least-squares line / µm".into(),
+            deviation_label: "Deviation about the line / µm".into(),
             up: vec![-2.0, 4.0, -2.0],
             down: vec![-1.0, 3.0, -1.0],
             mean: Some(vec![-1.5, 3.5, -1.5]),
@@ -80,7 +80,7 @@ mod tests {
         let scene = geometry(&chart, &style);
         let texts: Vec<&str> = scene.texts.iter().map(|t| t.text.as_str()).collect();
         for label in [
-            "Straightness deviation about the least-squares line / µm",
+            "Deviation about the line / µm",
             "x̄i↑",
             "mean of x̄i↑ and x̄i↓",
         ] {
