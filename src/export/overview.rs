@@ -145,10 +145,12 @@ fn row<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>) -> Row<'a> {
         compensation: compensation(t),
         trend: trends.map(|trends| {
             let m = &t.machine;
-            (trends.axis(&m.id, m.serial.as_deref(), &t.axis).iter())
-                .filter(|(_, trend)| trend.flagged)
-                .map(|(series, _)| series.parameter.clone())
-                .collect()
+            (trends
+                .axis(&m.id, m.serial.as_deref(), &t.axis_label())
+                .iter())
+            .filter(|(_, trend)| trend.flagged)
+            .map(|(series, _)| series.parameter.clone())
+            .collect()
         }),
         error: t.error(),
     }

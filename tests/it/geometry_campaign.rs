@@ -427,3 +427,48 @@ fn a_squareness_without_its_test_says_which() {
         "{stdout}"
     );
 }
+
+/// The other tests in the inspection history: a row per value, each test its own series
+/// (`X EYX`), read back by `trend` with the value and limit of `results.json`.
+#[test]
+fn the_other_tests_have_their_own_series() {
+    let dir = scratch("geometry-history");
+    let out = dir.join("out");
+    let history = dir.join("history");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        CAMPAIGN,
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+        "--history",
+        history.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(stdout.contains("History: 5 rows appended"), "{stdout}");
+    let (code, json, stderr) = axcheck(&["trend", history.to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    let trends: Value = serde_json::from_str(&json).unwrap();
+    let series = |axis: &str, parameter: &str| {
+        (trends["axes"].as_array().unwrap().iter())
+            .find(|s| s["axis"] == axis && s["parameter"] == parameter)
+            .unwrap_or_else(|| panic!("no {axis} {parameter} in {trends}"))
+            .clone()
+    };
+    let eyx = series("X EYX", "straightness");
+    assert_eq!(format!("{:.3}", f(&eyx["points"][0]["value"])), "8.124");
+    assert!((f(&eyx["limit"]) - 20.0).abs() < 1e-9);
+    assert_eq!(eyx["unit"], "um");
+    let local = series("X EYX", "straightness_local");
+    assert!((f(&local["limit"]) - 10.0).abs() < 1e-9);
+    assert_eq!(
+        format!(
+            "{:.3}",
+            f(&series("X EBX", "angular")["points"][0]["value"])
+        ),
+        "20.204"
+    );
+    let sq = series("X-Y squareness", "squareness");
+    assert_eq!(format!("{:.3}", f(&sq["points"][0]["value"])), "-8.222");
+    assert_eq!(sq["unit"], "arcsec");
+}

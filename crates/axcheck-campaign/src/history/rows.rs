@@ -44,6 +44,9 @@ pub fn records(result: &CampaignResult) -> Result<Vec<Record>, HistoryError> {
 }
 
 fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
+    if t.other().is_some() {
+        return other_records(campaign, date, t);
+    }
     let (Some(evaluation), Some(kind), Some(standard)) =
         (t.evaluated().map(|e| &e.evaluation), t.kind(), t.standard())
     else {
@@ -99,3 +102,42 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
         })
         .collect()
 }
+
+/// The rows of a straightness, angular or squareness test: one per value it has (the
+/// straightness and its local value, the angular deviation, the squareness), its series
+/// named by the axis and ISO 230-1's symbol (`X EYX`, `X-Y squareness`), so that each
+/// test of an axis measured whole has its own trends beside the positioning test's.
+fn other_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
+    let Some(o) = t.other() else {
+        return Vec::new();
+    };
+    let text = |s: &str| -> SharedText { s.into() };
+    let (campaign, machine, axis) = (text(campaign), text(&t.machine.id), text(&t.axis_label()));
+    let serial = t.machine.serial.as_deref().map(text);
+    let (verdict, unit) = (text(t.verdict().name()), text(o.unit()));
+    let check = |key| o.judgement.checks.iter().find(|c| c.key == key);
+    (crate::param_key::ParamKey::GEOMETRY.into_iter())
+        .filter_map(|key| Some((key, o.result.value(key).filter(|v| v.is_finite())?)))
+        .map(|(key, value)| Record {
+            schema_version: SCHEMA_VERSION,
+            campaign: campaign.clone(),
+            date,
+            machine: machine.clone(),
+            serial: serial.clone(),
+            axis: axis.clone(),
+            test: u32::try_from(t.test).unwrap_or(u32::MAX),
+            kind: text("linear"),
+            standard: text(OTHER_STANDARD),
+            verdict: verdict.clone(),
+            parameter: text(key.as_str()),
+            unit: unit.clone(),
+            value,
+            limit: check(key).map(|c| c.limit),
+            uncertainty: Some(o.uncertainty.expanded),
+            effects: text(""),
+        })
+        .collect()
+}
+
+/// The `standard` of the other laser tests' rows: their definitions are ISO 230-1's.
+const OTHER_STANDARD: &str = "iso230-1";
