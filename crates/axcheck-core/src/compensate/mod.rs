@@ -14,6 +14,7 @@
 pub mod active;
 pub mod build;
 pub mod controllers;
+pub mod cross;
 pub mod grid;
 pub mod json;
 pub mod table;
