@@ -226,7 +226,10 @@ impl VerdictText {
             Verdict::Pass => {
                 let n = t.judgement()
                     .map_or(0, |j| j.checks.len());
-                format!("All {n} limited parameters are within tolerance.")
+                match n {
+                    1 => "The limited value is within tolerance.".to_string(),
+                    n => format!("All {n} limited parameters are within tolerance."),
+                }
             }
             Verdict::Fail => {
                 let failed: Vec<String> = t.judgement()
