@@ -9,7 +9,6 @@ use crate::charts::geometry::GeometryChart;
 use crate::geometry::TestKind;
 use crate::geometry::line::{Line, ReferenceLine};
 use crate::judge::Conformance;
-use crate::measurement::AxisData;
 use crate::one_file::OtherResult;
 use crate::param_key::ParamKey;
 use crate::results::{AxisTest, CampaignResult, OtherTested};
@@ -263,18 +262,10 @@ fn method(o: &OtherTested) -> Vec<Row> {
     }
 }
 
-fn means(data: &AxisData, d: Direction) -> Vec<f64> {
-    (0..data.target_count())
-        .map(|i| {
-            let x = data.deviations(i, d);
-            x.iter().sum::<f64>() / x.len().max(1) as f64
-        })
-        .collect()
-}
-
 /// The chart of a straightness (about its reference line) or an angular test.
 pub fn chart(o: &OtherTested) -> Option<GeometryChart> {
     let data = o.data.as_ref()?;
+    let means = crate::geometry::means;
     let (up, down) = (means(data, Direction::Up), means(data, Direction::Down));
     let positions = data.targets.clone();
     match &o.result {

@@ -15,7 +15,7 @@
 
 use super::TestKind;
 use super::tolerance::Tolerance;
-use crate::judge::{Check, Conformance, Decision, Judgement, LimitSource, Limits};
+use crate::judge::{Check, Decision, Judgement, LimitSource, Limits};
 use crate::param_key::ParamKey;
 use std::collections::BTreeMap;
 
@@ -105,27 +105,13 @@ pub fn judge(
     limits: &BTreeMap<ParamKey, (f64, String)>,
     decision: &Decision,
 ) -> Judgement {
-    let mut checks = Vec::new();
-    for v in values {
-        let Some(&(limit, _)) = limits.get(&v.key) else {
-            continue;
-        };
-        let expanded = match decision.rule {
-            crate::judge::DecisionRule::Simple => None,
-            crate::judge::DecisionRule::Iso14253_1 => Some(v.expanded.unwrap_or(0.0)),
-        };
-        let outcome = decision.outcome(v.value, limit, expanded.unwrap_or(0.0));
-        checks.push(Check {
-            key: v.key,
-            value: v.value,
-            limit,
-            margin: limit - v.value.abs(),
-            pass: outcome == Conformance::Pass,
-            source: LimitSource::Axis,
-            expanded_uncertainty: expanded,
-            outcome,
-        });
-    }
+    let checks = (values.iter())
+        .filter_map(|v| {
+            let &(limit, _) = limits.get(&v.key)?;
+            let limit = (limit, LimitSource::Axis);
+            Some(Check::decide(v.key, v.value, limit, decision, v.expanded))
+        })
+        .collect();
     let not_applicable = (limits.keys())
         .filter(|k| !values.iter().any(|v| v.key == **k))
         .map(|k| k.to_string())

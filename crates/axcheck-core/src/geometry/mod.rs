@@ -24,7 +24,7 @@ use crate::units::Direction;
 
 /// Each target's mean reading in one direction (x̄ᵢ↑ or x̄ᵢ↓, as ISO 230-2 2.10 for
 /// positioning), in the readings' unit.
-fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
+pub fn means(data: &AxisData, direction: Direction) -> Vec<f64> {
     (0..data.target_count())
         .map(|i| crate::evaluate::stats::mean(data.deviations(i, direction)))
         .collect()

@@ -143,6 +143,32 @@ pub struct Check {
 }
 
 impl Check {
+    /// `value` of `key` against `limit` under `decision`: with ISO 14253-1 the value's U
+    /// (`expanded`; a value without one is judged with U = 0), with the simple rule none.
+    pub fn decide(
+        key: ParamKey,
+        value: f64,
+        (limit, source): (f64, LimitSource),
+        decision: &Decision,
+        expanded: Option<f64>,
+    ) -> Check {
+        let expanded = match decision.rule {
+            DecisionRule::Simple => None,
+            DecisionRule::Iso14253_1 => Some(expanded.unwrap_or(0.0)),
+        };
+        let outcome = decision.outcome(value, limit, expanded.unwrap_or(0.0));
+        Check {
+            key,
+            value,
+            limit,
+            margin: limit - value.abs(),
+            pass: outcome == Conformance::Pass,
+            source,
+            expanded_uncertainty: expanded,
+            outcome,
+        }
+    }
+
     /// |value| / limit: the share of the tolerance used.
     pub fn ratio(&self) -> f64 {
         if self.limit > 0.0 {
@@ -309,25 +335,9 @@ pub fn judge(evaluation: &Evaluation, limits: Limits, decision: &Decision) -> Ju
     let mut not_applicable = Vec::new();
     // In the standard's order of parameters, then any others.
     for p in &evaluation.parameters {
-        if let Some(&(limit, source)) = limits.values.get(&p.def.key) {
-            let expanded = match decision.rule {
-                DecisionRule::Simple => None,
-                DecisionRule::Iso14253_1 => {
-                    let u = decision.expanded.and_then(|m| m.get(p.key()));
-                    Some(u.copied().unwrap_or(0.0))
-                }
-            };
-            let outcome = decision.outcome(p.value, limit, expanded.unwrap_or(0.0));
-            checks.push(Check {
-                key: p.def.key,
-                value: p.value,
-                limit,
-                margin: limit - p.value.abs(),
-                pass: outcome == Conformance::Pass,
-                source,
-                expanded_uncertainty: expanded,
-                outcome,
-            });
+        if let Some(&limit) = limits.values.get(&p.def.key) {
+            let u = decision.expanded.and_then(|m| m.get(p.key())).copied();
+            checks.push(Check::decide(p.def.key, p.value, limit, decision, u));
         }
     }
     // Alphabetically by key, as `ParamKey` orders.

@@ -7,7 +7,10 @@
 //! re-measured residuals' difference from it, against the scatter of the means.
 
 use super::CrossTable;
-use crate::geometry::line::{ReferenceLine, fit};
+use crate::geometry::{
+    self,
+    line::{ReferenceLine, fit},
+};
 use crate::measurement::AxisData;
 use crate::units::Direction;
 use serde::Serialize;
@@ -58,17 +61,14 @@ pub struct OtherOutput<'a> {
     pub after: &'a AxisData,
 }
 
-/// The bidirectional mean at each target.
+/// The bidirectional mean at each target (as the straightness's reference line is fitted
+/// to).
 fn means(data: &AxisData) -> Vec<f64> {
-    (0..data.target_count())
-        .map(|i| {
-            let (u, d) = (
-                data.deviations(i, Direction::Up),
-                data.deviations(i, Direction::Down),
-            );
-            (u.iter().chain(d).sum::<f64>()) / (u.len() + d.len()).max(1) as f64
-        })
-        .collect()
+    let (up, down) = (
+        geometry::means(data, Direction::Up),
+        geometry::means(data, Direction::Down),
+    );
+    up.iter().zip(&down).map(|(u, d)| (u + d) / 2.0).collect()
 }
 
 /// `values` about their own reference line.
