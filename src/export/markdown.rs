@@ -126,14 +126,10 @@ fn verdict_cell(t: &AxisTest) -> String {
 
 /// `straightness 8.12, local straightness 0.82`: the values of another laser test.
 fn other_values(o: &crate::results::OtherTested) -> String {
-    (crate::evaluate::ParamKey::GEOMETRY.into_iter())
-        .filter_map(|k| {
-            let value = o.result.value(k)?;
-            Some(format!(
-                "{} {}",
-                crate::results::OtherTested::name(k),
-                fmt_fixed(value, 2)
-            ))
+    (o.values())
+        .map(|(k, value, _)| {
+            let name = crate::results::OtherTested::name(k);
+            format!("{name} {}", fmt_fixed(value, 2))
         })
         .collect::<Vec<_>>()
         .join(", ")

@@ -95,6 +95,24 @@ impl OtherTested {
         }
     }
 
+    /// Each value the test has (of `ParamKey::GEOMETRY`, in its order) with its check,
+    /// when a tolerance limited it.
+    pub fn values(
+        &self,
+    ) -> impl Iterator<
+        Item = (
+            crate::param_key::ParamKey,
+            f64,
+            Option<&crate::judge::Check>,
+        ),
+    > {
+        (crate::param_key::ParamKey::GEOMETRY.into_iter()).filter_map(move |key| {
+            let value = self.result.value(key)?;
+            let check = self.judgement.checks.iter().find(|c| c.key == key);
+            Some((key, value, check))
+        })
+    }
+
     /// U of each judged value, by key.
     pub fn expanded(&self) -> BTreeMap<String, f64> {
         (self.judgement.checks.iter())

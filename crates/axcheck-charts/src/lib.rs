@@ -11,6 +11,6 @@ pub mod figures;
 
 use axcheck_campaign::{campaign, judge, measurement, one_file, results, trend};
 use axcheck_core::{
-    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, param_key, rules,
-    uncertainty, units, verify,
+    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, rules, uncertainty,
+    units, verify,
 };

@@ -154,19 +154,15 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
 
 /// A straightness or angular test's values, with U and their checks.
 fn other_values(o: &crate::results::OtherTested) -> Vec<ParameterRow> {
-    (ParamKey::GEOMETRY.into_iter())
-        .filter_map(|key| {
-            let value = o.result.value(key)?;
-            let check = o.judgement.checks.iter().find(|c| c.key == key);
-            Some(ParameterRow {
-                symbol: key.as_str(),
-                name: crate::results::OtherTested::name(key),
-                clause: "ISO 230-1",
-                value: fmt_fixed(value, 2),
-                u: Some(fmt_fixed(o.uncertainty.expanded, 2)),
-                limit: check.map(|c| fmt_fixed(c.limit, 2)),
-                outcome: check.map(|c| c.outcome),
-            })
+    (o.values())
+        .map(|(key, value, check)| ParameterRow {
+            symbol: key.as_str(),
+            name: crate::results::OtherTested::name(key),
+            clause: "ISO 230-1",
+            value: fmt_fixed(value, 2),
+            u: Some(fmt_fixed(o.uncertainty.expanded, 2)),
+            limit: check.map(|c| fmt_fixed(c.limit, 2)),
+            outcome: check.map(|c| c.outcome),
         })
         .collect()
 }

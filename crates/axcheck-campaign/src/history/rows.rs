@@ -47,60 +47,81 @@ fn test_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
     if t.other().is_some() {
         return other_records(campaign, date, t);
     }
-    let (Some(evaluation), Some(kind), Some(standard)) =
-        (t.evaluated().map(|e| &e.evaluation), t.kind(), t.standard())
-    else {
+    let (Some(e), Some(kind), Some(standard)) = (t.evaluated(), t.kind(), t.standard()) else {
         return Vec::new();
     };
     // Not diagnosed: empty; diagnosed with nothing found: `none`.
-    let effects = t
-        .evaluated()
-        .and_then(|e| e.diagnosis.as_deref())
+    let effects = (e.diagnosis.as_deref())
         .map(|d| d.effects_label())
         .unwrap_or_default();
-    // One copy of each text for the test's rows.
-    let text = |s: &str| -> SharedText { s.into() };
-    let (campaign, machine, axis) = (text(campaign), text(&t.machine.id), text(&t.axis));
-    let serial = t.machine.serial.as_deref().map(text);
-    let (kind_text, standard_key) = (text(&kind.to_string()), text(standard.key()));
-    let (verdict, unit, effects) = (
-        text(t.verdict().name()),
-        text(kind.deviation_unit()),
-        text(&effects),
+    let kind_text = kind.to_string();
+    let head = Head::of(
+        campaign,
+        date,
+        t,
+        &t.axis,
+        [&kind_text, standard.key(), kind.deviation_unit(), &effects],
     );
-    evaluation
-        .parameters
-        .iter()
+    (e.evaluation.parameters.iter())
         .filter(|p| p.value.is_finite())
         .map(|p| {
-            let key = p.key();
-            Record {
-                schema_version: SCHEMA_VERSION,
-                campaign: campaign.clone(),
-                date,
-                machine: machine.clone(),
-                serial: serial.clone(),
-                axis: axis.clone(),
-                test: u32::try_from(t.test).unwrap_or(u32::MAX),
-                kind: kind_text.clone(),
-                standard: standard_key.clone(),
-                verdict: verdict.clone(),
-                parameter: text(key),
-                unit: unit.clone(),
-                value: p.value,
-                limit: t
-                    .evaluated()
-                    .and_then(|e| e.judgement.as_ref())
-                    .and_then(|j| j.limits.values.get(&p.def.key))
-                    .map(|(limit, _)| *limit),
-                uncertainty: t
-                    .evaluated()
-                    .and_then(|e| e.uncertainty.as_ref())
-                    .and_then(|u| u.expanded_of(p.def.key)),
-                effects: effects.clone(),
-            }
+            let limit = (e.judgement.as_ref())
+                .and_then(|j| j.limits.values.get(&p.def.key))
+                .map(|(limit, _)| *limit);
+            let u = (e.uncertainty.as_ref()).and_then(|u| u.expanded_of(p.def.key));
+            head.record(p.key(), p.value, limit, u)
         })
         .collect()
+}
+
+/// What every row of one test shares, each text one copy for all its rows.
+struct Head {
+    campaign: SharedText,
+    date: NaiveDate,
+    machine: SharedText,
+    serial: Option<SharedText>,
+    axis: SharedText,
+    test: u32,
+    verdict: SharedText,
+    /// Kind, standard, unit and effects.
+    texts: [SharedText; 4],
+}
+
+impl Head {
+    fn of(campaign: &str, date: NaiveDate, t: &AxisTest, axis: &str, texts: [&str; 4]) -> Head {
+        Head {
+            campaign: campaign.into(),
+            date,
+            machine: t.machine.id.as_str().into(),
+            serial: t.machine.serial.as_deref().map(Into::into),
+            axis: axis.into(),
+            test: u32::try_from(t.test).unwrap_or(u32::MAX),
+            verdict: t.verdict().name().into(),
+            texts: texts.map(Into::into),
+        }
+    }
+
+    fn record(&self, parameter: &str, value: f64, limit: Option<f64>, u: Option<f64>) -> Record {
+        let [kind, standard, unit, effects] = self.texts.clone();
+        Record {
+            schema_version: SCHEMA_VERSION,
+            campaign: self.campaign.clone(),
+            date: self.date,
+            machine: self.machine.clone(),
+            serial: self.serial.clone(),
+            axis: self.axis.clone(),
+            test: self.test,
+            kind,
+            standard,
+            verdict: self.verdict.clone(),
+            parameter: parameter.into(),
+            unit,
+            value,
+            limit,
+            uncertainty: u,
+            effects,
+        }
+    }
 }
 
 /// The rows of a straightness, angular or squareness test: one per value it has (the
@@ -111,30 +132,22 @@ fn other_records(campaign: &str, date: NaiveDate, t: &AxisTest) -> Vec<Record> {
     let Some(o) = t.other() else {
         return Vec::new();
     };
-    let text = |s: &str| -> SharedText { s.into() };
-    let (campaign, machine, axis) = (text(campaign), text(&t.machine.id), text(&t.axis_label()));
-    let serial = t.machine.serial.as_deref().map(text);
-    let (verdict, unit) = (text(t.verdict().name()), text(o.unit()));
-    let check = |key| o.judgement.checks.iter().find(|c| c.key == key);
-    (crate::param_key::ParamKey::GEOMETRY.into_iter())
-        .filter_map(|key| Some((key, o.result.value(key).filter(|v| v.is_finite())?)))
-        .map(|(key, value)| Record {
-            schema_version: SCHEMA_VERSION,
-            campaign: campaign.clone(),
-            date,
-            machine: machine.clone(),
-            serial: serial.clone(),
-            axis: axis.clone(),
-            test: u32::try_from(t.test).unwrap_or(u32::MAX),
-            kind: text("linear"),
-            standard: text(OTHER_STANDARD),
-            verdict: verdict.clone(),
-            parameter: text(key.as_str()),
-            unit: unit.clone(),
-            value,
-            limit: check(key).map(|c| c.limit),
-            uncertainty: Some(o.uncertainty.expanded),
-            effects: text(""),
+    let head = Head::of(
+        campaign,
+        date,
+        t,
+        &t.axis_label(),
+        ["linear", OTHER_STANDARD, o.unit(), ""],
+    );
+    (o.values())
+        .filter(|(_, value, _)| value.is_finite())
+        .map(|(key, value, check)| {
+            head.record(
+                key.as_str(),
+                value,
+                check.map(|c| c.limit),
+                Some(o.uncertainty.expanded),
+            )
         })
         .collect()
 }

@@ -10,7 +10,6 @@ use crate::geometry::TestKind;
 use crate::geometry::line::{Line, ReferenceLine};
 use crate::judge::Conformance;
 use crate::one_file::OtherResult;
-use crate::param_key::ParamKey;
 use crate::results::{AxisTest, CampaignResult, OtherTested};
 use crate::units::{AxisKind, Direction};
 use serde::Serialize;
@@ -145,17 +144,13 @@ fn facts(result: &CampaignResult, t: &AxisTest, o: &OtherTested) -> Vec<Row> {
 
 /// Each value a tolerance may limit, with U, its limit and outcome.
 fn values(o: &OtherTested) -> Vec<ValueRow> {
-    (ParamKey::GEOMETRY.into_iter())
-        .filter_map(|key| {
-            let value = o.result.value(key)?;
-            let check = o.judgement.checks.iter().find(|c| c.key == key);
-            Some(ValueRow {
-                name: OtherTested::name(key),
-                value: num(value),
-                u: num(o.uncertainty.expanded),
-                limit: check.map_or("–".into(), |c| num(c.limit)),
-                outcome: check.map(|c| c.outcome),
-            })
+    (o.values())
+        .map(|(key, value, check)| ValueRow {
+            name: OtherTested::name(key),
+            value: num(value),
+            u: num(o.uncertainty.expanded),
+            limit: check.map_or("–".into(), |c| num(c.limit)),
+            outcome: check.map(|c| c.outcome),
         })
         .collect()
 }
