@@ -74,6 +74,10 @@ impl CrossFormat for Csv {
         Ok(table)
     }
 
+    fn extensions(&self) -> &'static [&'static str] {
+        &["csv"]
+    }
+
     fn resolution_um(&self) -> f64 {
         0.0005
     }

@@ -108,6 +108,10 @@ impl CrossFormat for Heidenhain {
         Ok(t)
     }
 
+    fn extensions(&self) -> &'static [&'static str] {
+        &["COM", "CMA"]
+    }
+
     fn resolution_um(&self) -> f64 {
         0.05
     }

@@ -11,6 +11,7 @@
 //! the sign a controller's cross table takes (`docs/cross-axis-compensation.md`, §0);
 //! each format's file says the convention in words where it can hold a comment.
 
+pub mod build;
 pub mod csv;
 pub mod heidenhain;
 pub mod siemens_cec;
@@ -21,7 +22,7 @@ use super::controllers::{Refused, Unreadable};
 use crate::geometry::straightness::Straightness;
 
 /// A correction of `output` by `input`'s position.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct CrossTable {
     /// The input axis's name on the controller (`X1`, `AX1`, `X`, TwinCAT's number `1`).
     pub input: String,
@@ -51,6 +52,12 @@ pub trait CrossFormat: Sync {
     /// The largest difference a write and a read may make to a correction, µm (the
     /// format's resolution, half a unit of its last place).
     fn resolution_um(&self) -> f64;
+    /// The extensions of the files `write` gives, in their order.
+    fn extensions(&self) -> &'static [&'static str];
+    /// Whether the format holds only equidistant points.
+    fn equidistant(&self) -> bool {
+        false
+    }
 }
 
 /// Every format, in the order of the README.
@@ -61,6 +68,16 @@ pub fn formats() -> [&'static dyn CrossFormat; 4] {
         &heidenhain::Heidenhain,
         &twincat::TwinCat,
     ]
+}
+
+/// The format called `name` (as the command line and a machine's `controller` name it).
+pub fn find(name: &str) -> Option<&'static dyn CrossFormat> {
+    formats().into_iter().find(|f| f.name() == name)
+}
+
+/// The names of every format, for error messages.
+pub fn names() -> Vec<&'static str> {
+    formats().iter().map(|f| f.name()).collect()
 }
 
 /// The table that cancels `straightness`'s deviations about its reference line (measured

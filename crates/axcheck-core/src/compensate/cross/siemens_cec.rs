@@ -134,6 +134,14 @@ impl CrossFormat for SiemensCec {
         })
     }
 
+    fn extensions(&self) -> &'static [&'static str] {
+        &["ini"]
+    }
+
+    fn equidistant(&self) -> bool {
+        true
+    }
+
     fn resolution_um(&self) -> f64 {
         0.0005
     }

@@ -243,13 +243,13 @@ fn verify_names_the_wrong_sign_and_the_wrong_axis() {
             after: &z_after,
         }];
         let line = ReferenceLine::LeastSquares;
-        let v = verify(&before, &right, &table, line, &z).unwrap();
+        let v = verify(&before, &right, (&table, None), line, &z).unwrap();
         ok += usize::from(v.verdict == CrossVerdict::Effective && v.achieved_um < 1.5);
-        let v = verify(&before, &minus, &table, line, &z).unwrap();
+        let v = verify(&before, &minus, (&table, None), line, &z).unwrap();
         inverted += usize::from(
             v.verdict == CrossVerdict::MadeWorse && v.findings == [CrossFinding::SignInverted],
         );
-        let v = verify(&before, &unchanged, &table, line, &z).unwrap();
+        let v = verify(&before, &unchanged, (&table, None), line, &z).unwrap();
         let named = v.findings
             == [CrossFinding::WrongAxis {
                 output: "Z1".into(),
@@ -259,4 +259,103 @@ fn verify_names_the_wrong_sign_and_the_wrong_axis() {
     assert!(ok >= 48, "effective in {ok} of 50");
     assert!(inverted >= 48, "sign inverted found in {inverted} of 50");
     assert!(wrong >= 48, "wrong axis found in {wrong} of 50");
+}
+
+/// EYX of a bow of 8 µm on 15 µm/m at unequal targets, without scatter.
+fn bowed(active: &dyn Fn(f64) -> f64) -> crate::measurement::AxisData {
+    use crate::compensate::testing::axis;
+    use crate::units::AxisKind;
+    let targets = [0.0, 150.0, 250.0, 500.0, 750.0, 1000.0];
+    axis(AxisKind::Linear, &targets, 3, |x, _| {
+        8.0 * (1.0 - ((x - 500.0) / 500.0).powi(2)) + 0.015 * x - active(x)
+    })
+}
+
+/// Without an active table the table is −residual at the targets (csv keeps them), the
+/// prediction flat, a warning says the active state is unstated; CEC's grid is the mean
+/// spacing (200 mm) through both ends.
+#[test]
+fn a_table_on_the_measured_targets_or_the_mean_spacing() {
+    use build::{CrossActive, CrossRequest, compensate};
+    let data = bowed(&|_| 0.0);
+    let request = CrossRequest {
+        input: Some("X".into()),
+        output: Some("Y".into()),
+        ..CrossRequest::default()
+    };
+    let c = compensate(&csv::Csv, &data, &request).unwrap();
+    assert_eq!(c.table.positions_mm, data.targets);
+    assert_eq!(c.mode, crate::compensate::Mode::Absolute);
+    assert!((c.measured_um - 8.0).abs() < 0.3, "{}", c.measured_um);
+    assert!(c.predicted_um < 1e-9, "{}", c.predicted_um);
+    assert_eq!(c.warnings.len(), 1);
+    let cec = compensate(&siemens_cec::SiemensCec, &data, &request).unwrap();
+    assert_eq!(
+        cec.table.positions_mm,
+        [0.0, 200.0, 400.0, 600.0, 800.0, 1000.0]
+    );
+    // Linear between targets: the prediction is not flat, but far below 8 µm.
+    assert!(
+        cec.predicted_um > 0.0 && cec.predicted_um < 1.0,
+        "{}",
+        cec.predicted_um
+    );
+    let none = CrossRequest {
+        active: CrossActive::None,
+        ..request
+    };
+    assert!(
+        compensate(&csv::Csv, &data, &none)
+            .unwrap()
+            .warnings
+            .is_empty()
+    );
+}
+
+/// Measured with half the correction active, the table is the active one plus what is
+/// left: the whole correction again, by hand (c = −residual of the bow without the
+/// active half); the names come from the active table, and a contradicting name is
+/// refused.
+#[test]
+fn a_table_builds_on_the_active_one() {
+    use build::{CrossActive, CrossRequest, compensate};
+    let whole = compensate(
+        &csv::Csv,
+        &bowed(&|_| 0.0),
+        &CrossRequest {
+            input: Some("X".into()),
+            output: Some("Y".into()),
+            active: CrossActive::None,
+            ..CrossRequest::default()
+        },
+    )
+    .unwrap()
+    .table;
+    let half = CrossTable {
+        corrections_um: whole.corrections_um.iter().map(|c| c / 2.0).collect(),
+        ..whole.clone()
+    };
+    // With `half` active the controller added it: the readings are the bow plus half.
+    let data = bowed(&|x| -half.at(x));
+    let mut request = CrossRequest {
+        active: CrossActive::Table {
+            table: half.clone(),
+            file: "YX.csv".into(),
+        },
+        ..CrossRequest::default()
+    };
+    let c = compensate(&csv::Csv, &data, &request).unwrap();
+    assert_eq!(c.mode, crate::compensate::Mode::Incremental);
+    assert_eq!(
+        (c.table.input.as_str(), c.table.output.as_str()),
+        ("X", "Y")
+    );
+    for (got, want) in c.table.corrections_um.iter().zip(&whole.corrections_um) {
+        assert!((got - want).abs() < 1e-9, "{got} {want}");
+    }
+    assert!((c.measured_um - 4.0).abs() < 0.3, "{}", c.measured_um);
+    assert!(c.predicted_um < 1e-9);
+    request.output = Some("Z".into());
+    let refused = compensate(&csv::Csv, &data, &request).unwrap_err();
+    assert!(refused.to_string().contains("`Y`, not `Z`"), "{refused}");
 }

@@ -117,6 +117,10 @@ impl CrossFormat for TwinCat {
         Ok(t)
     }
 
+    fn extensions(&self) -> &'static [&'static str] {
+        &["lis"]
+    }
+
     fn resolution_um(&self) -> f64 {
         0.05
     }

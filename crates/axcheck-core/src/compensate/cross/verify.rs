@@ -113,12 +113,34 @@ fn scatter(data: &AxisData) -> f64 {
     s / ((2 * data.runs()).max(1) as f64).sqrt()
 }
 
-/// `after` (this output axis re-measured with `table` loaded) against `before`; `None`
-/// when the two tests are not at the same targets or have fewer than two.
+/// The change a table makes at `positions` where `old` was active before (none: the
+/// table's own corrections), µm.
+pub fn change(new: &CrossTable, old: Option<&CrossTable>, positions: &[f64]) -> Vec<f64> {
+    positions
+        .iter()
+        .map(|x| new.at(*x) - old.map_or(0.0, |o| o.at(*x)))
+        .collect()
+}
+
+/// The straightness (range of the bidirectional means about their reference line) of
+/// `data` as measured and with `change` (µm at its targets) added: what a table predicts.
+pub fn predicted(data: &AxisData, change: &[f64], line: ReferenceLine) -> Option<(f64, f64)> {
+    let p = &data.targets;
+    let m = means(data);
+    let moved: Vec<f64> = m.iter().zip(change).map(|(y, c)| y + c).collect();
+    Some((
+        range(&residuals(line, p, &m)?),
+        range(&residuals(line, p, &moved)?),
+    ))
+}
+
+/// `after` (this output axis re-measured with `new` loaded, `old` loaded before: none
+/// when nothing was) against `before`; `None` when the two tests are not at the same
+/// targets or have fewer than two.
 pub fn verify(
     before: &AxisData,
     after: &AxisData,
-    table: &CrossTable,
+    (new, old): (&CrossTable, Option<&CrossTable>),
     line: ReferenceLine,
     others: &[OtherOutput],
 ) -> Option<CrossVerification> {
@@ -130,7 +152,7 @@ pub fn verify(
     {
         return None;
     }
-    let c: Vec<f64> = p.iter().map(|x| table.at(*x)).collect();
+    let c = change(new, old, p);
     let m = means(before);
     let shifted = |sign: f64| -> Vec<f64> { m.iter().zip(&c).map(|(y, c)| y + sign * c).collect() };
     let before_r = residuals(line, p, &m)?;
