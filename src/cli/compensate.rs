@@ -20,34 +20,34 @@ pub struct TableArgs {
     /// Grid step (mm or deg) of an equidistant table; default: the measured targets where
     /// the controller takes any points, else their mean spacing.
     #[arg(long)]
-    interval: Option<f64>,
+    pub interval: Option<f64>,
     /// Reference point (mm or deg): the grid passes through it and the correction is zero
     /// there; default: the first grid point, corrections as measured.
     #[arg(long, value_name = "POS", allow_negative_numbers = true)]
-    reference: Option<f64>,
+    pub reference: Option<f64>,
     /// Lead-screw or encoder pitch (mm or deg), for the warning on periodic error.
     #[arg(long, allow_negative_numbers = true, value_parser = super::parse_pitch)]
-    pitch: Option<f64>,
+    pub pitch: Option<f64>,
     /// The axis's name on the controller, for formats that name it (HEIDENHAIN `X`,
     /// Siemens `X1`, TwinCAT its logical number `2`) and to pick its table from an active
     /// file of several; default: the active table's, else a placeholder in the file that
     /// the control cannot load, to replace.
     #[arg(long)]
-    axis: Option<String>,
+    pub axis: Option<String>,
     /// Siemens: the measuring system, 0 (the first encoder) or 1 (a direct measuring
     /// system the axis is closed on); default: the active table's, else 0.
     #[arg(long, value_parser = clap::value_parser!(u8).range(0..=1))]
-    measuring_system: Option<u8>,
+    pub measuring_system: Option<u8>,
     /// The table active during the measurement, in the controller's format, or `none`:
     /// the table written is then the active one plus this measurement's correction.
     /// Without it the state is unknown, and a warning says to add the values to whatever
     /// was active.
     #[arg(long, value_name = "TABLE|none")]
-    active: Option<String>,
+    pub active: Option<String>,
     /// The backlash parameter active during the measurement, µm or arcsec (Siemens
     /// MD32450, LinuxCNC BACKLASH without a table, …).
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
-    active_backlash: Option<f64>,
+    pub active_backlash: Option<f64>,
 }
 
 impl TableArgs {
@@ -143,6 +143,8 @@ pub struct CompensateArgs {
     out: Option<std::path::PathBuf>,
     #[command(flatten)]
     table: TableArgs,
+    #[command(flatten)]
+    cross: super::cross::CrossArgs,
     /// Standard for the parameters measured and predicted.
     #[arg(long, short, default_value = "iso230-2", value_parser = super::parse_standard)]
     standard: StandardId,
@@ -153,6 +155,9 @@ pub struct CompensateArgs {
 
 /// `axcheck compensate`: reads the file, writes the table; the text to print.
 pub fn command(args: CompensateArgs) -> Result<String> {
+    if args.cross.is_cross()? {
+        return cross(&args);
+    }
     let controller =
         controllers::with_comp_file_type(controller(&args.controller)?, args.comp_file_type)
             .map_err(|e| anyhow!("--comp-file-type: {e}"))?;
@@ -169,6 +174,34 @@ pub fn command(args: CompensateArgs) -> Result<String> {
         json: args.json,
     };
     run(&data, &request)
+}
+
+/// `compensate --test straightness`: a cross table; the pitch table's options refused.
+fn cross(args: &CompensateArgs) -> Result<String> {
+    let t = &args.table;
+    let pitch_only = [
+        ("--reference", t.reference.is_some()),
+        ("--pitch", t.pitch.is_some()),
+        ("--axis", t.axis.is_some()),
+        ("--measuring-system", t.measuring_system.is_some()),
+        ("--active-backlash", t.active_backlash.is_some()),
+        ("--comp-file-type", args.comp_file_type.is_some()),
+    ];
+    if let Some((option, _)) = pitch_only.iter().find(|(_, given)| *given) {
+        return Err(anyhow!(
+            "{option} applies to a positioning test's table, not to a cross table (--test straightness names its axes with --input and --output)"
+        ));
+    }
+    super::cross::compensate_command(super::cross::CompensateCross {
+        file: &args.file,
+        sheet: args.sheet.options(),
+        controller: &args.controller,
+        out: args.out.as_deref(),
+        interval_mm: t.interval,
+        active: t.active.as_deref(),
+        json: args.json,
+        cross: &args.cross,
+    })
 }
 
 /// On an ecmc ISO 230 app file, `--reference 1` to `5` without `--ecmc-reference` may be

@@ -57,7 +57,7 @@ pub struct GeometryArgs {
     pub optics: Option<Accuracy>,
 }
 
-fn parse_test(text: &str) -> Result<TestKind, String> {
+pub fn parse_test(text: &str) -> Result<TestKind, String> {
     TestKind::parse(text)
         .ok_or_else(|| "expected positioning, straightness, angular or squareness".to_string())
 }
@@ -69,7 +69,7 @@ fn parse_letter(text: &str) -> Result<char, String> {
     }
 }
 
-fn parse_line(text: &str) -> Result<ReferenceLine, String> {
+pub fn parse_line(text: &str) -> Result<ReferenceLine, String> {
     ReferenceLine::parse(text).ok_or_else(|| "expected least-squares or end-point".into())
 }
 

@@ -2,6 +2,7 @@
 
 pub mod campaign;
 pub mod compensate;
+pub mod cross;
 pub mod diagnose;
 pub mod eval;
 pub mod geometry;

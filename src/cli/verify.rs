@@ -44,6 +44,12 @@ pub struct VerifyArgs {
     /// (repeatable).
     #[arg(long, value_name = "AXIS=FILE")]
     other: Vec<String>,
+    #[command(flatten)]
+    cross: super::cross::CrossArgs,
+    /// Straightness: another output axis's straightness along the same input, before and
+    /// after, to tell a cross table loaded on the wrong axis (repeatable).
+    #[arg(long, value_name = "AXIS=BEFORE,AFTER")]
+    other_straightness: Vec<String>,
     /// Standard for the parameters compared.
     #[arg(long, short, default_value = "iso230-2", value_parser = super::parse_standard)]
     standard: StandardId,
@@ -54,6 +60,14 @@ pub struct VerifyArgs {
 
 /// Runs the verification; the text or JSON to print and whether the table was effective.
 pub fn run(args: &VerifyArgs) -> Result<(String, bool)> {
+    if args.cross.is_cross()? {
+        return cross(args);
+    }
+    if !args.other_straightness.is_empty() {
+        return Err(anyhow!(
+            "--other-straightness applies to --test straightness"
+        ));
+    }
     let controller = controller(&args.controller)?;
     let before = measurement::read_file(&args.before, None)?.data;
     let after = measurement::read_file(&args.after, None)?.data;
@@ -90,6 +104,31 @@ pub fn run(args: &VerifyArgs) -> Result<(String, bool)> {
         render(&v, kind, &args.after.display().to_string())
     };
     Ok((text, effective))
+}
+
+/// `verify --test straightness`: a cross table; the pitch table's options refused.
+fn cross(args: &VerifyArgs) -> Result<(String, bool)> {
+    let pitch_only = [
+        ("--backlash", args.backlash.is_some()),
+        ("--active-backlash", args.active_backlash.is_some()),
+        ("--axis", args.axis.is_some()),
+        ("--other", !args.other.is_empty()),
+    ];
+    if let Some((option, _)) = pitch_only.iter().find(|(_, given)| *given) {
+        return Err(anyhow!(
+            "{option} applies to a positioning test's table, not to a cross table (--other-straightness names another output axis's tests)"
+        ));
+    }
+    super::cross::verify_command(super::cross::VerifyCross {
+        before: &args.before,
+        after: &args.after,
+        controller: &args.controller,
+        table: &args.table,
+        active: args.active.as_deref(),
+        others: &args.other_straightness,
+        json: args.json,
+        cross: &args.cross,
+    })
 }
 
 /// `--other AXIS=FILE`, each table read as the controller reads it.

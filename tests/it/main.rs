@@ -14,6 +14,7 @@ mod catalogue;
 mod cli;
 mod console;
 mod controllers;
+mod cross_tables;
 mod decision;
 mod diagnose;
 mod ecmc_app;
