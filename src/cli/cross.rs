@@ -111,6 +111,8 @@ pub fn compensate_command(c: CompensateCross) -> Result<String> {
         interval_mm: c.interval_mm,
         line: c.cross.line.unwrap_or_default(),
         active: active(c.active, format)?,
+        stem: (c.out.and_then(Path::file_stem))
+            .map_or(String::new(), |s| s.to_string_lossy().into_owned()),
     };
     let done = compensate(format, &read.data, &request)
         .map_err(|refused| anyhow!("{}: {refused}", c.file.display()))?;
@@ -251,6 +253,7 @@ pub fn verify_command(v: VerifyCross) -> Result<(String, bool)> {
             output,
             before,
             after,
+            own: None,
         })
         .collect();
     let line = v.cross.line.unwrap_or_default();

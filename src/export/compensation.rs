@@ -1,10 +1,12 @@
 //! `compensation/<machine>/<axis>.<ext>`: the compensation table of each evaluated axis
-//! whose machine names a `controller`, in that controller's format.
+//! whose machine names a `controller`, in that controller's format; a straightness test's
+//! cross table beside it (`X-EYX.<ext>`, each of the format's files).
 
 use super::paths::test_stems;
 use super::{ExportError, Exporter, OutputFile};
+use crate::compensate::cross::{self, build::CrossCompensation};
 use crate::results::CampaignResult;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 pub(crate) struct CompensationExporter;
 
@@ -15,11 +17,45 @@ pub(crate) fn table_paths(result: &CampaignResult) -> Vec<Option<PathBuf>> {
         .iter()
         .zip(test_stems(result, "compensation"))
         .map(|(t, stem)| {
+            if let Some(extension) = cross_extension(t) {
+                return Some(PathBuf::from(format!("{}.{extension}", stem.display())));
+            }
             let c = t
                 .evaluated()
                 .and_then(|e| e.compensation.as_deref())
                 .filter(|c| c.outcome.is_ok())?;
             Some(PathBuf::from(format!("{}.{}", stem.display(), c.extension)))
+        })
+        .collect()
+}
+
+/// A straightness test's cross table, when one was written.
+fn cross_table(t: &crate::results::AxisTest) -> Option<&CrossCompensation> {
+    let cross = t.other()?.cross.as_deref()?;
+    cross.table.as_ref()?.as_ref().ok()
+}
+
+/// The extension of a cross table's first file.
+fn cross_extension(t: &crate::results::AxisTest) -> Option<&'static str> {
+    cross_table(t)?.parts.first().map(|p| p.extension)
+}
+
+/// Each file of a test's cross table beside `first`, written again under that name (the
+/// files of a format may name each other: HEIDENHAIN's `.CMA` enters its `.COM`).
+fn cross_files(t: &crate::results::AxisTest, first: &Path) -> Vec<OutputFile> {
+    let Some(c) = cross_table(t) else {
+        return Vec::new();
+    };
+    let stem = first
+        .file_stem()
+        .map_or(String::new(), |s| s.to_string_lossy().into_owned());
+    let parts = (cross::find(c.format).and_then(|f| f.write(&c.table, &stem).ok()))
+        .unwrap_or_else(|| c.parts.clone());
+    parts
+        .into_iter()
+        .map(|p| OutputFile {
+            path: first.with_extension(p.extension),
+            bytes: p.text.into_bytes(),
         })
         .collect()
 }
@@ -34,7 +70,11 @@ impl Exporter for CompensationExporter {
             .tests
             .iter()
             .zip(table_paths(result))
-            .filter_map(|(t, path)| {
+            .flat_map(|(t, path)| {
+                let path = path?;
+                if t.other().is_some() {
+                    return Some(cross_files(t, &path));
+                }
                 let file = &t
                     .evaluated()
                     .and_then(|e| e.compensation.as_deref())?
@@ -42,11 +82,12 @@ impl Exporter for CompensationExporter {
                     .as_ref()
                     .ok()?
                     .file;
-                Some(OutputFile {
-                    path: path?,
+                Some(vec![OutputFile {
+                    path,
                     bytes: file.as_bytes().to_vec(),
-                })
+                }])
             })
+            .flatten()
             .collect())
     }
 }

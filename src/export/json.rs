@@ -14,6 +14,8 @@
 use super::{ExportError, Exporter, OutputFile};
 use crate::campaign::{CampaignInfo, Conditions, MachineInfo};
 use crate::compensate::Compensation;
+use crate::compensate::cross::build::CrossCompensation;
+use crate::compensate::cross::verify::CrossVerification;
 use crate::compensate::json::CompensationHead;
 use crate::diagnose::DiagnosisJson;
 use crate::diagnose::cross::OutOfTest;
@@ -57,6 +59,9 @@ pub(crate) struct TestJson<'a> {
     /// The positioning test carried to the tool point (`tool_point:`), or why it was not.
     #[serde(skip_serializing_if = "Option::is_none")]
     tool_point: Option<ToolPointJson<'a>>,
+    /// The fit of the means on the axis's angular tests (an Abbe error read off the beam).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    abbe: Option<&'a crate::diagnose::abbe::AbbeFit>,
     /// A straightness or angular test (ISO 230-1): which, its result, U and tolerances.
     #[serde(skip_serializing_if = "Option::is_none")]
     geometry: Option<OtherJson<'a>>,
@@ -109,6 +114,37 @@ struct OtherJson<'a> {
     /// A squareness's straightness tests: `{symbol, file}` each.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     from: Vec<Source<'a>>,
+    /// A straightness test's cross table (its first file under `compensation/`), or why
+    /// none was written.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cross_table: Option<Done<'a, CrossCompensation>>,
+    /// The comparison of this re-measurement with a loaded cross table's prediction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cross_verification: Option<Done<'a, CrossVerification>>,
+}
+
+/// A result, or why there is none.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum Done<'a, T: Serialize> {
+    Made {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        file: Option<String>,
+        #[serde(flatten)]
+        value: &'a T,
+    },
+    Refused {
+        refused: &'a str,
+    },
+}
+
+impl<'a, T: Serialize> Done<'a, T> {
+    fn new(result: &'a Result<T, String>) -> Done<'a, T> {
+        match result {
+            Ok(value) => Done::Made { file: None, value },
+            Err(refused) => Done::Refused { refused },
+        }
+    }
 }
 
 #[derive(Serialize)]
@@ -137,6 +173,12 @@ impl<'a> OtherJson<'a> {
             from: (o.sources.iter())
                 .map(|(symbol, file)| Source { symbol, file })
                 .collect(),
+            cross_table: (o.cross.as_deref())
+                .and_then(|c| c.table.as_ref())
+                .map(Done::new),
+            cross_verification: (o.cross.as_deref())
+                .and_then(|c| c.verification.as_ref())
+                .map(Done::new),
         })
     }
 }
@@ -371,6 +413,7 @@ pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
             conditions_not_stated: &ev.unstated,
         }),
         geometry: OtherJson::new(t),
+        abbe: t.evaluated().and_then(|e| e.abbe.as_deref()),
         tool_point: ToolPointJson::new(t),
         judgement: t.judgement().map(Judged::new),
         rules: t.findings(),
@@ -447,6 +490,10 @@ pub(crate) fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_jso
         .zip(&tables)
         .map(|(t, table)| {
             let mut json = test_json(t);
+            let cross = (json.geometry.as_mut()).and_then(|g| g.cross_table.as_mut());
+            if let (Some(Done::Made { file, .. }), Some(path)) = (cross, table) {
+                *file = Some(path.to_string_lossy().replace('\\', "/"));
+            }
             json.compensation = t
                 .evaluated()
                 .and_then(|e| e.compensation.as_deref())

@@ -267,3 +267,204 @@ fn cross_tables_refuse_what_they_cannot_be() {
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains("give --out"), "{stderr}");
 }
+
+/// A campaign whose machine names HEIDENHAIN writes each straightness test's cross table
+/// under `compensation/` (the .CMA entering the .COM by its name there); its
+/// re-measurements after the tables were loaded — Y's as predicted, Z's table loaded on Y
+/// — are compared in `results.json`: Y's effective, Z's not effective with Y named, and a
+/// table built on Z's loaded one withheld.
+#[test]
+fn a_campaign_writes_and_verifies_cross_tables() {
+    let dir = scratch("cross-tables-campaign");
+    write_test(&dir.join("data/y-before.csv"), 8.0, &|_| 0.0);
+    write_test(&dir.join("data/z-before.csv"), -3.0, &|_| 0.0);
+    let campaign = |files: [&str; 2], compensation: [&str; 2]| {
+        format!(
+            "campaign: {{name: cross tables, date: 2026-11-30}}\nmachines:\n  - id: M\n    controller: heidenhain\n    axes:\n      - {{name: X, kind: linear, test: straightness, direction: Y, data: {}, compensation: {}}}\n      - {{name: X, kind: linear, test: straightness, direction: Z, data: {}, compensation: {}}}\n",
+            files[0], compensation[0], files[1], compensation[1]
+        )
+    };
+    std::fs::write(
+        dir.join("before.yaml"),
+        campaign(
+            ["data/y-before.csv", "data/z-before.csv"],
+            ["{active: none}", "{input: X, output: Z, active: none}"],
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out-before");
+    let (code, _, stderr) = axcheck(&[
+        "run",
+        dir.join("before.yaml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert!(code == 0 || code == 1, "{stderr}");
+    let com = std::fs::read_to_string(out.join("compensation/M/X-EYX.COM")).unwrap();
+    assert!(
+        com.starts_with("BEGIN X-EYX.COM MM\nNR   AXISPOS      Y\n"),
+        "{com}"
+    );
+    let cma = std::fs::read_to_string(out.join("compensation/M/X-EYX.CMA")).unwrap();
+    assert!(cma.contains("0    *       X-EYX.COM"), "{cma}");
+    assert!(out.join("compensation/M/X-EZX.CMA").exists());
+    let results: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let y = &results["axes"][0]["geometry"]["cross_table"];
+    assert_eq!(y["file"], "compensation/M/X-EYX.COM");
+    assert_eq!(y["mode"], "absolute");
+    assert!(
+        y["warnings"][0]
+            .as_str()
+            .unwrap()
+            .contains("compensation.input"),
+        "{y}"
+    );
+    assert!(y["predicted_um"].as_f64().unwrap() < 1e-9);
+    // The tables as loaded: Y's on Y; Z's on Y (the wrong axis), Z unchanged.
+    for name in ["X-EYX.COM", "X-EYX.CMA", "X-EZX.COM", "X-EZX.CMA"] {
+        std::fs::copy(out.join("compensation/M").join(name), dir.join(name)).unwrap();
+    }
+    let y_table = &y["table"];
+    let z_table = results["axes"][1]["geometry"]["cross_table"]["table"].clone();
+    write_test(&dir.join("data/y-after.csv"), 8.0, &|x| {
+        at(y_table, x) + at(&z_table, x)
+    });
+    write_test(&dir.join("data/z-after.csv"), -3.0, &|_| 0.0);
+    std::fs::write(
+        dir.join("after.yaml"),
+        campaign(
+            ["data/y-after.csv", "data/z-after.csv"],
+            [
+                "{verifies: {before: data/y-before.csv, table: X-EYX.COM}}",
+                "{verifies: {before: data/z-before.csv, table: X-EZX.COM}}",
+            ],
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out-after");
+    let (code, _, stderr) = axcheck(&[
+        "run",
+        dir.join("after.yaml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert!(code == 0 || code == 1, "{stderr}");
+    let results: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let (y, z) = (
+        &results["axes"][0]["geometry"],
+        &results["axes"][1]["geometry"],
+    );
+    // Y got its own table and Z's: not as its own predicted, so Y is not "effective".
+    assert_ne!(y["cross_verification"]["verdict"], "effective", "{y}");
+    assert_eq!(z["cross_verification"]["verdict"], "not_effective", "{z}");
+    assert_eq!(
+        z["cross_verification"]["findings"][0]["effect"],
+        "wrong_axis"
+    );
+    assert_eq!(z["cross_verification"]["findings"][0]["output"], "Y");
+    assert!(
+        z["cross_table"]["refused"]
+            .as_str()
+            .unwrap()
+            .starts_with("withheld"),
+        "{z}"
+    );
+    assert!(!out.join("compensation/M/X-EZX.COM").exists());
+}
+
+/// A pitch table's key on a straightness test, and a cross table's on a positioning test,
+/// stop at their line.
+#[test]
+fn compensation_keys_of_the_other_table_stop_at_their_line() {
+    let dir = scratch("cross-tables-keys");
+    write_test(&dir.join("data/eyx.csv"), 8.0, &|_| 0.0);
+    let cases = [
+        (
+            "{name: X, kind: linear, test: straightness, direction: Y, data: data/eyx.csv, compensation: {reference: 0}}",
+            "machines[0].axes[0].compensation.reference: is of a positioning test's pitch table",
+        ),
+        (
+            "{name: X, kind: linear, data: data/eyx.csv, compensation: {input: X1}}",
+            "machines[0].axes[0].compensation.input: names a cross table's axis",
+        ),
+    ];
+    for (axis, message) in cases {
+        let yaml = format!(
+            "campaign: {{name: keys, date: 2026-11-30}}\nmachines:\n  - id: M\n    controller: csv\n    axes:\n      - {axis}\n"
+        );
+        let path = dir.join("campaign.yaml");
+        std::fs::write(&path, yaml).unwrap();
+        let (code, stdout, stderr) = axcheck(&["check", path.to_str().unwrap()]);
+        let all = format!("{stdout}{stderr}");
+        assert_ne!(code, 0, "{all}");
+        assert!(all.contains(message), "{all}");
+        assert!(all.contains("campaign.yaml:6"), "{all}");
+    }
+}
+
+/// A positioning test read 160 mm off the line the axis positions on, with a pitch bowed
+/// 8″: `run` fits it on the campaign's pitch test and finds the lever (−160 mm within
+/// 3 u, the model's), and says so on the console; the beam on the line, nothing.
+#[test]
+fn a_campaign_finds_an_abbe_error_from_the_pitch_test() {
+    let dir = scratch("abbe-campaign");
+    for (name, beam) in [("off", -160.0), ("on", 0.0)] {
+        let model = format!(
+            "kind: linear\nseed: 7\nmodel:\n  scale_um_per_m: 16\n  reversal_um: 1.8\n  scatter_um: 0.3\n  geometry:\n    axis: X\n    angular:\n      B: {{slope_arcsec_per_m: 22, bow_arcsec: 8, scatter_arcsec: 0.3}}\n    beam_mm: {{Z: {beam}}}\nplan:\n  targets: {{start_mm: 5, end_mm: 795, count: 9}}\n  runs: 5\n  cycle: standard\n"
+        );
+        let path = dir.join(format!("{name}.yaml"));
+        std::fs::write(&path, model).unwrap();
+        for (suffix, extra) in [("x", vec![]), ("ebx", vec!["--geometry", "B"])] {
+            let out = dir.join(format!("data/{name}-{suffix}.csv"));
+            let mut args = vec![
+                "simulate",
+                path.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+            ];
+            args.extend(extra);
+            let (code, _, stderr) = axcheck(&args);
+            assert_eq!(code, 0, "{stderr}");
+        }
+    }
+    let campaign = "campaign: {name: abbe, date: 2026-11-30}\nmachines:\n  - id: OFF\n    axes:\n      - {name: X, kind: linear, data: data/off-x.csv}\n      - {name: X, kind: linear, test: angular, about: B, data: data/off-ebx.csv}\n  - id: ON\n    axes:\n      - {name: X, kind: linear, data: data/on-x.csv}\n      - {name: X, kind: linear, test: angular, about: B, data: data/on-ebx.csv}\n";
+    std::fs::write(dir.join("campaign.yaml"), campaign).unwrap();
+    let out = dir.join("out");
+    let (_, stdout, stderr) = axcheck(&[
+        "run",
+        dir.join("campaign.yaml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    let results: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let abbe = |machine: &str| {
+        (results["axes"].as_array().unwrap().iter())
+            .find(|t| t["machine"] == machine && t["abbe"].is_object())
+            .map(|t| t["abbe"].clone())
+            .unwrap_or_else(|| panic!("no abbe for {machine}: {stderr}"))
+    };
+    let off = abbe("OFF");
+    assert_eq!(off["found"], true, "{off}");
+    let lever = &off["levers"][0];
+    assert_eq!(
+        (&lever["symbol"], &lever["along"]),
+        (&"EBX".into(), &"Z".into())
+    );
+    let (o, u) = (
+        lever["offset_mm"].as_f64().unwrap(),
+        lever["u_mm"].as_f64().unwrap(),
+    );
+    assert!((o + 160.0).abs() < 3.0 * u && u < 10.0, "{o} ± {u}");
+    assert_eq!(abbe("ON")["found"], false);
+    assert!(
+        stdout.contains("Abbe error: OFF X's positioning error follows EBX as a lever of -1"),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("Abbe error: ON X"), "{stdout}");
+}

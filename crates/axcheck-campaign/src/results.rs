@@ -72,6 +72,17 @@ pub struct OtherTested {
     pub sources: Vec<(String, String)>,
     /// Its tolerances as written.
     pub tolerance: Vec<String>,
+    /// A straightness test's cross table and the verification of a loaded one.
+    pub cross: Option<Box<CrossOutcome>>,
+}
+
+/// A straightness test's cross table, where its machine names a controller (or why none
+/// was written), and the comparison with its prediction where the test re-measures the
+/// axis after a cross table was loaded (`compensation.verifies`), or why none was made.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct CrossOutcome {
+    pub table: Option<Result<crate::compensate::cross::build::CrossCompensation, String>>,
+    pub verification: Option<Result<crate::compensate::cross::verify::CrossVerification, String>>,
 }
 
 impl OtherTested {
@@ -159,6 +170,9 @@ pub struct Evaluated {
     pub other_tool: Option<Box<crate::crosscheck::OtherTool>>,
     /// The test carried to the tool point (`tool_point:`), or why it could not be.
     pub tool_point: Option<Box<Result<ToolPoint, String>>>,
+    /// The fit of the means on the axis's angular tests in the campaign (an Abbe error
+    /// read off the beam), where it has any.
+    pub abbe: Option<Box<crate::diagnose::abbe::AbbeFit>>,
 }
 
 /// A positioning test carried from the beam to the tool point through its axis's angular
@@ -225,6 +239,13 @@ impl AxisTest {
             Outcome::Evaluated(e) => e.data = None,
             Outcome::Other(o) => o.data = None,
             Outcome::Unread { .. } => {}
+        }
+    }
+
+    pub(crate) fn other_mut(&mut self) -> Option<&mut OtherTested> {
+        match &mut self.outcome {
+            Outcome::Other(o) => Some(o),
+            _ => None,
         }
     }
 
@@ -455,6 +476,7 @@ impl CampaignResult {
         }
         lines.extend(self.large_uncertainty_lines(&label));
         lines.extend(self.tool_point_lines(&label));
+        lines.extend(self.abbe_lines(&label));
         let unstated: Vec<usize> = (self.tests.iter())
             .filter_map(|t| t.evaluated().map(|e| e.unstated.len()))
             .filter(|n| *n > 0)
@@ -491,6 +513,34 @@ impl CampaignResult {
             }
         }
         lines
+    }
+
+    /// The positioning tests whose means follow the axis's pitch or yaw (an Abbe error).
+    fn abbe_lines(&self, label: &impl Fn(&AxisTest) -> String) -> Vec<String> {
+        let found = (self.tests.iter())
+            .filter_map(|t| Some((t, t.evaluated()?.abbe.as_deref()?)))
+            .filter(|(_, a)| a.found);
+        found
+            .map(|(t, a)| {
+                let levers: Vec<String> = (a.levers.iter())
+                    .filter(|l| matches!((l.offset_mm, l.u_mm), (Some(o), Some(u)) if o.abs() >= 3.0 * u))
+                    .filter_map(|l| {
+                        Some(format!(
+                            "{} as a lever of {} ± {} mm along {}",
+                            l.symbol,
+                            crate::units::fmt_fixed(l.offset_mm?, 0),
+                            crate::units::fmt_fixed(l.u_mm?, 0),
+                            l.along
+                        ))
+                    })
+                    .collect();
+                format!(
+                    "Abbe error: {}'s positioning error follows {} (the beam off the line the axis positions on): its E depends on where the beam is; `tool_point:` judges it at the tool",
+                    label(t),
+                    levers.join(" and ")
+                )
+            })
+            .collect()
     }
 
     /// The tests whose U is large against a limit or a value: a line saying how many,

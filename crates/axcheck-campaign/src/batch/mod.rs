@@ -3,6 +3,8 @@
 //! with its message; the rest of the campaign completes. Then each re-measurement that
 //! verifies a table is compared with its prediction ([`verification`]).
 
+mod abbe;
+mod cross;
 mod other;
 mod squareness;
 mod tool_point;
@@ -91,7 +93,9 @@ pub fn run(
     };
     let mut tested = evaluate_all();
     verification::verify_all(&mut tested);
+    cross::verify_all(&mut tested, &files);
     tool_point::carry_all(&mut tested);
+    abbe::fit_all(&mut tested);
     let squareness = squareness::evaluate_all(campaign, &tested);
     if options.drop_data {
         for (t, _) in &mut tested {
@@ -297,7 +301,12 @@ fn run_test(
         Err(test) => return (*test, None),
     };
     if other::is_other(axis) {
-        return (other::run(slot, axis, campaign, (data, recognised)), None);
+        let controller = (slot.machine.controller.as_deref()).filter(|_| options.compensate);
+        let cross = cross::table(controller, axis, &data, files);
+        return (
+            other::run(slot, axis, campaign, (data, recognised), cross),
+            None,
+        );
     }
     // The tool's own results are of the readings as the file holds them (before NDE).
     let other_tool = (recognised.reported.as_ref()).map(|r| crate::crosscheck::compare(r, &data));
@@ -361,6 +370,7 @@ fn run_test(
         out_of_test: Vec::new(),
         other_tool: other_tool.map(Box::new),
         tool_point: None,
+        abbe: None,
     })));
     (test, verify_case)
 }

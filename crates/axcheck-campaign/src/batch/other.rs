@@ -4,6 +4,7 @@
 
 use super::Slot;
 use crate::campaign::{AxisSpec, CampaignInfo};
+use crate::compensate::cross::build::CrossCompensation;
 use crate::geometry::TestKind;
 use crate::geometry::judge::{Value, judge, limits};
 use crate::geometry::{angular, straightness};
@@ -11,7 +12,7 @@ use crate::judge::Decision;
 use crate::measurement::{AxisData, Recognised};
 use crate::one_file::{OtherOptions, OtherResult, evaluate_other};
 use crate::param_key::ParamKey;
-use crate::results::{AxisTest, OtherTested, Outcome};
+use crate::results::{AxisTest, CrossOutcome, OtherTested, Outcome};
 
 /// The test of `data` as `axis` states it, judged; an error names why it could not be.
 pub(super) fn run(
@@ -19,6 +20,7 @@ pub(super) fn run(
     axis: &AxisSpec,
     campaign: &CampaignInfo,
     (data, recognised): (AxisData, Recognised),
+    cross: Option<Result<CrossCompensation, String>>,
 ) -> AxisTest {
     let raw = &axis.raw;
     let local = raw.local_mm.or_else(|| {
@@ -66,6 +68,12 @@ pub(super) fn run(
         data: Some(data),
         sources: Vec::new(),
         tolerance: raw.tolerance.iter().map(|(text, _)| text.clone()).collect(),
+        cross: cross.map(|table| {
+            Box::new(CrossOutcome {
+                table: Some(table),
+                verification: None,
+            })
+        }),
         result,
         uncertainty,
         judgement,

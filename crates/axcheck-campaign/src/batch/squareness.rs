@@ -122,5 +122,6 @@ fn evaluate(
         trace: None,
         sources: vec![(first.1, first.2), (second.1, second.2)],
         tolerance: raw.tolerance.iter().map(|(text, _)| text.clone()).collect(),
+        cross: None,
     })
 }

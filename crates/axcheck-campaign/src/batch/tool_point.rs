@@ -17,12 +17,12 @@ use std::sync::Arc;
 
 /// An angular test of the campaign: machine, axis, the rotation's letter, its symbol and
 /// its mean angles.
-struct Angular {
-    machine: String,
-    axis: String,
-    about: char,
-    symbol: String,
-    trace: Trace,
+pub(super) struct Angular {
+    pub machine: String,
+    pub axis: String,
+    pub about: char,
+    pub symbol: String,
+    pub trace: Trace,
 }
 
 /// Every positioning test with a tool point carried to it (or the reason it cannot be).
@@ -43,7 +43,7 @@ pub(crate) fn carry_all(tests: &mut [Tested]) {
     }
 }
 
-fn angular_of(t: &AxisTest) -> Option<Angular> {
+pub(super) fn angular_of(t: &AxisTest) -> Option<Angular> {
     let o = t.other().filter(|o| o.test == TestKind::Angular)?;
     let raw = &t.spec.as_ref()?.raw;
     Some(Angular {

@@ -32,6 +32,7 @@ pub(super) fn check(raw: &mut AxisRaw, base: &str, index: &LocationIndex) -> Res
     };
     let test = raw.test;
     check_tool_point(raw, base, index)?;
+    super::cross::check(raw, base, index)?;
     if test == TestKind::Positioning {
         for (key, given) in geometry_keys(raw) {
             if given {
@@ -61,7 +62,9 @@ pub(super) fn check(raw: &mut AxisRaw, base: &str, index: &LocationIndex) -> Res
         );
     }
     for key in POSITIONING_ONLY {
-        if index.key(&format!("{base}.{key}")).is_some() {
+        // A straightness's table is the cross table (checked by `super::cross`).
+        let cross = key == "compensation" && test == TestKind::Straightness;
+        if index.key(&format!("{base}.{key}")).is_some() && !cross {
             return refuse(
                 key,
                 format!(

@@ -5,6 +5,7 @@
 //! campaign is still evaluated. Every error names the campaign file, line and column.
 
 pub mod clause7_1;
+mod cross;
 pub mod data;
 mod file_info;
 pub mod geometry;

@@ -353,6 +353,13 @@ pub struct CompensationRaw {
     /// control cannot load.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub axis: Option<String>,
+    /// A straightness test's cross table: the axis measured along (its input) and the
+    /// axis corrected (its output), as the controller names them; default: the axis's
+    /// name and the straightness's `direction`, as the campaign names them.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub input: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub output: Option<String>,
     /// Spacing of an equidistant table; default: the controller's (the targets, or their
     /// mean spacing).
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -26,6 +26,7 @@
 //!
 //! Pure: no file I/O; deterministic for [`Options::seed`].
 
+pub mod abbe;
 mod analysis;
 mod basis;
 mod checks;

@@ -47,6 +47,9 @@ pub struct CrossRequest {
     pub interval_mm: Option<f64>,
     pub line: ReferenceLine,
     pub active: CrossActive,
+    /// The files' name without extension (see [`CrossFormat::write`]); empty: the
+    /// format's default.
+    pub stem: String,
 }
 
 /// A cross table written, with what it is and what it predicts.
@@ -101,7 +104,7 @@ pub fn compensate(
     let (measured_um, predicted_um) =
         predicted(data, &change(&table, active, &data.targets), request.line)
             .ok_or_else(|| Refused::Grid("a cross table needs two targets or more".into()))?;
-    let parts = format.write(&table)?;
+    let parts = format.write(&table, &request.stem)?;
     Ok(CrossCompensation {
         format: format.name(),
         mode: if active.is_some() {

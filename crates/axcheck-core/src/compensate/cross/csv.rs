@@ -20,7 +20,7 @@ impl CrossFormat for Csv {
         "csv"
     }
 
-    fn write(&self, t: &CrossTable) -> Result<Vec<Part>, Refused> {
+    fn write(&self, t: &CrossTable, _stem: &str) -> Result<Vec<Part>, Refused> {
         check_rising(t)?;
         let mut text = format!(
             "{HEAD}{} as a function of input {}\n# correction_um is added to the output axis's commanded position\ninput_mm,correction_um\n",

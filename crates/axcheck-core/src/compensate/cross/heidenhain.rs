@@ -15,14 +15,20 @@ use crate::compensate::controllers::{Refused, Unreadable};
 
 pub struct Heidenhain;
 
-/// The `.COM` file's name for a table: `YX.COM` (Y corrected along X).
-fn com_name(t: &CrossTable) -> String {
-    let clean = |s: &str| {
+/// The `.COM` file's name for a table: the stem given (letters, digits, `-` and `_`
+/// kept), else `YX.COM` (Y corrected along X).
+fn com_name(t: &CrossTable, stem: &str) -> String {
+    let clean = |s: &str, also: &[char]| {
         s.chars()
-            .filter(char::is_ascii_alphanumeric)
+            .filter(|c| c.is_ascii_alphanumeric() || also.contains(c))
             .collect::<String>()
     };
-    format!("{}{}.COM", clean(&t.output), clean(&t.input)).to_uppercase()
+    let stem = clean(stem, &['-', '_']);
+    if stem.is_empty() {
+        format!("{}{}.COM", clean(&t.output, &[]), clean(&t.input, &[])).to_uppercase()
+    } else {
+        format!("{stem}.COM")
+    }
 }
 
 impl CrossFormat for Heidenhain {
@@ -30,7 +36,7 @@ impl CrossFormat for Heidenhain {
         "heidenhain"
     }
 
-    fn write(&self, t: &CrossTable) -> Result<Vec<Part>, Refused> {
+    fn write(&self, t: &CrossTable, stem: &str) -> Result<Vec<Part>, Refused> {
         check_rising(t)?;
         let valid = |s: &str| !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric());
         if !valid(&t.input) || !valid(&t.output) {
@@ -39,7 +45,7 @@ impl CrossFormat for Heidenhain {
                 t.input, t.output
             )));
         }
-        let name = com_name(t);
+        let name = com_name(t, stem);
         let mut com = format!("BEGIN {name} MM\nNR   AXISPOS      {}\n", t.output);
         for (k, (p, c)) in t.positions_mm.iter().zip(&t.corrections_um).enumerate() {
             com.push_str(&format!("{k:<4} {p:<+12.4} {:+.4}\n", c / 1000.0));

@@ -45,8 +45,10 @@ pub struct Part {
 pub trait CrossFormat: Sync {
     /// The name the command line and campaigns give it.
     fn name(&self) -> &'static str;
-    /// The table's files, or why the format cannot hold it.
-    fn write(&self, table: &CrossTable) -> Result<Vec<Part>, Refused>;
+    /// The table's files, or why the format cannot hold it. `stem`: the files' name
+    /// without extension, for formats whose files name each other (HEIDENHAIN's `.CMA`
+    /// enters its `.COM` by name); empty: the format's own default name.
+    fn write(&self, table: &CrossTable, stem: &str) -> Result<Vec<Part>, Refused>;
     /// The table the files hold (in the order `write` gives them).
     fn read(&self, parts: &[&str]) -> Result<CrossTable, Unreadable>;
     /// The largest difference a write and a read may make to a correction, µm (the

@@ -23,7 +23,7 @@ impl CrossFormat for SiemensCec {
         "siemens-840d"
     }
 
-    fn write(&self, t: &CrossTable) -> Result<Vec<Part>, Refused> {
+    fn write(&self, t: &CrossTable, _stem: &str) -> Result<Vec<Part>, Refused> {
         check_rising(t)?;
         let step = t.step_mm().ok_or_else(|| {
             Refused::Grid("CEC takes an equidistant grid ($AN_CEC_STEP): resample the table".into())

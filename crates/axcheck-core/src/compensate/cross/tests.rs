@@ -45,7 +45,7 @@ fn every_format_reads_back_what_it_writes() {
         for case in 0..1000 {
             let t = random_table(&mut r, format);
             let parts = format
-                .write(&t)
+                .write(&t, "")
                 .unwrap_or_else(|e| panic!("{} {case}: {e}", format.name()));
             let texts: Vec<&str> = parts.iter().map(|p| p.text.as_str()).collect();
             let back = format
@@ -92,7 +92,7 @@ fn a_cec_table_as_the_manual_writes_it() {
         positions_mm: vec![0.0, 100.0, 200.0, 300.0, 400.0],
         corrections_um: vec![0.0, 2.1, 3.5, 1.8, 0.0],
     };
-    let text = &siemens_cec::SiemensCec.write(&t).unwrap()[0].text;
+    let text = &siemens_cec::SiemensCec.write(&t, "").unwrap()[0].text;
     for line in [
         "%_N_NC_CEC_INI",
         "CHANDATA(1)",
@@ -113,7 +113,7 @@ fn a_cec_table_as_the_manual_writes_it() {
         ..t.clone()
     };
     let e = siemens_cec::SiemensCec
-        .write(&uneven)
+        .write(&uneven, "")
         .unwrap_err()
         .to_string();
     assert!(e.contains("equidistant"), "{e}");
@@ -136,10 +136,13 @@ fn a_heidenhain_table_and_its_assignment() {
         positions_mm: vec![0.0, 100.0],
         corrections_um: vec![0.0, 2.1],
     };
-    let parts = heidenhain::Heidenhain.write(&t).unwrap();
+    let parts = heidenhain::Heidenhain.write(&t, "").unwrap();
     assert_eq!(parts[0].text.lines().next(), Some("BEGIN YX.COM MM"));
     assert!(parts[0].text.contains("+0.0021"), "{}", parts[0].text);
     assert_eq!(parts[1].text.lines().nth(2), Some("0    *       YX.COM"));
+    let named = heidenhain::Heidenhain.write(&t, "X-EYX").unwrap();
+    assert_eq!(named[0].text.lines().next(), Some("BEGIN X-EYX.COM MM"));
+    assert_eq!(named[1].text.lines().nth(2), Some("0    *       X-EYX.COM"));
     let inactive = parts[1].text.replace('*', " ");
     let e = heidenhain::Heidenhain
         .read(&[&parts[0].text, &inactive])
@@ -156,7 +159,7 @@ fn a_twincat_list_in_tenths_of_a_micrometre() {
         positions_mm: vec![0.0, 100.0],
         corrections_um: vec![0.0, 2.1],
     };
-    let text = &twincat::TwinCat.write(&t).unwrap()[0].text;
+    let text = &twincat::TwinCat.write(&t, "").unwrap()[0].text;
     assert!(text.contains("kw.crosscomp.table[1].setpoint"), "{text}");
     assert!(
         text.lines()
@@ -167,7 +170,7 @@ fn a_twincat_list_in_tenths_of_a_micrometre() {
         input: "X".into(),
         ..t
     };
-    assert!(twincat::TwinCat.write(&named).is_err());
+    assert!(twincat::TwinCat.write(&named, "").is_err());
 }
 
 /// A straightness bow of 8 µm (residuals +4 in the middle, −4 at the ends about the
@@ -241,6 +244,7 @@ fn verify_names_the_wrong_sign_and_the_wrong_axis() {
             output: "Z1",
             before: &z_before,
             after: &z_after,
+            own: None,
         }];
         let line = ReferenceLine::LeastSquares;
         let v = verify(&before, &right, (&table, None), line, &z).unwrap();

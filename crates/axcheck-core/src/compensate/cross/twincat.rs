@@ -22,7 +22,7 @@ impl CrossFormat for TwinCat {
         "twincat"
     }
 
-    fn write(&self, t: &CrossTable) -> Result<Vec<Part>, Refused> {
+    fn write(&self, t: &CrossTable, _stem: &str) -> Result<Vec<Part>, Refused> {
         check_rising(t)?;
         let number = |s: &str| s.parse::<u32>().ok();
         let (Some(slave), Some(master)) = (number(&t.output), number(&t.input)) else {

@@ -59,6 +59,9 @@ pub struct OtherOutput<'a> {
     pub output: &'a str,
     pub before: &'a AxisData,
     pub after: &'a AxisData,
+    /// That axis's own cross table loaded between its two tests (and the one active
+    /// before), whose change is taken out of its re-measurement first.
+    pub own: Option<(&'a CrossTable, Option<&'a CrossTable>)>,
 }
 
 /// The bidirectional mean at each target (as the straightness's reference line is fitted
@@ -200,7 +203,12 @@ fn wrong_axis(c: &[f64], line: ReferenceLine, others: &[OtherOutput]) -> Vec<Cro
             if p.len() != c.len() || a.len() != b.len() {
                 return None;
             }
-            let change: Vec<f64> = a.iter().zip(&b).map(|(a, b)| a - b).collect();
+            let own = o
+                .own
+                .map_or(vec![0.0; p.len()], |(n, old)| change(n, old, p));
+            let change: Vec<f64> = (a.iter().zip(&b).zip(&own))
+                .map(|((a, b), own)| a - b - own)
+                .collect();
             let change = residuals(line, p, &change)?;
             let expected = residuals(line, p, c)?;
             let zero = vec![0.0; c.len()];
