@@ -192,7 +192,8 @@ pub fn read_geometry(
         angular: test == TestKind::Angular,
         ..options
     };
-    let read = crate::measurement::read_file_with(path, &options)?;
+    let mut read = crate::measurement::read_file_with(path, &options)?;
+    crate::measurement::note_test(&mut read, test);
     if read.data.kind != AxisKind::Linear {
         let file = path.display().to_string();
         return Err(GeometryReadError::NotLinear {

@@ -38,7 +38,9 @@ pub struct ReadOptions<'a> {
     /// error for another file).
     pub source: Option<Source>,
     /// An angular test of a linear axis (pitch, yaw, roll): angles at targets in mm, from
-    /// the long CSV layout only; a positioning test refuses those units as mixed.
+    /// the long or the wide CSV or either in an XLSX sheet. Without it, those units are
+    /// refused as an angular test's; with it, µm or degree targets are refused, and so is
+    /// every other layout (none records an angular test of a linear axis).
     pub angular: bool,
 }
 
@@ -80,8 +82,9 @@ pub fn read_with<R: BufRead>(
         .fill_buf()
         .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
     let how = layout::recognise(head).map_err(|kind| ReadError::new(Location::file(file), kind))?;
+    let quantities = table::Quantities::angular(options.angular);
     if options.angular {
-        return read_angular(reader, file, how, options);
+        refuse_for_angular(how, file)?;
     }
     let text_layout = match how {
         layout::Reader::Book => {
@@ -102,7 +105,7 @@ pub fn read_with<R: BufRead>(
                     limit_mib: limit >> 20,
                 },
             )?;
-            return xlsx::read(&bytes, file, sheet);
+            return xlsx::read_for(&bytes, file, sheet, quantities);
         }
         layout::Reader::Renishaw => {
             refuse_sheet(sheet, Layout::RenishawRtl, file)?;
@@ -134,8 +137,8 @@ pub fn read_with<R: BufRead>(
     refuse_source(options.source, text_layout.clone(), file)?;
     let (data, notes) = match text_layout {
         Layout::KeyValue => keyvalue::read(reader, file)?,
-        Layout::WideCsv => wide::read(reader, file)?,
-        _ => csv::read(reader, file)?,
+        Layout::WideCsv => wide::read_for(reader, file, quantities)?,
+        _ => csv::read_for(reader, file, quantities)?,
     };
     Ok(ReadTest {
         data,
@@ -148,32 +151,21 @@ pub fn read_with<R: BufRead>(
     })
 }
 
-/// An angular test of a linear axis, from the long CSV layout.
-fn read_angular<R: BufRead>(
-    reader: R,
-    file: &str,
-    how: layout::Reader,
-    options: &ReadOptions,
-) -> Result<ReadTest, ReadError> {
-    if how != layout::Reader::Table(TableKind::Long) {
-        let kind = ReadErrorKind::LayoutForTest {
-            test: "an angular test of a linear axis".into(),
-            layout: how.described().into(),
-        };
-        return Err(ReadError::new(Location::file(file), kind));
-    }
-    refuse_sheet(options.sheet, Layout::LongCsv, file)?;
-    refuse_source(options.source, Layout::LongCsv, file)?;
-    let (data, notes) = csv::read_angular(reader, file)?;
-    Ok(ReadTest {
-        data,
-        recognised: Recognised {
-            layout: Layout::LongCsv,
-            notes,
-            info: None,
-            reported: None,
+/// An angular test of a linear axis is read from the tables only (the long and the wide
+/// CSV, in a text file or a workbook's sheet), whose column names carry the angle's unit.
+/// A Renishaw file records no test type and no angle unit for a linear axis (see
+/// [`renishaw`]); the ecmc layouts hold positions. Each is refused, saying why.
+fn refuse_for_angular(how: layout::Reader, file: &str) -> Result<(), ReadError> {
+    let test = table::ANGULAR_TEST.to_string();
+    let kind = match how {
+        layout::Reader::Table(_) | layout::Reader::Book => return Ok(()),
+        layout::Reader::Renishaw => ReadErrorKind::RenishawTestNotRecorded { test },
+        other => ReadErrorKind::LayoutForTest {
+            test,
+            layout: other.described().into(),
         },
-    })
+    };
+    Err(ReadError::new(Location::file(file), kind))
 }
 
 /// An ecmc ISO 230 app report or raw-points CSV, with `options.source`'s deviations.
@@ -256,6 +248,21 @@ fn read_renishaw<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadErro
             reported: None,
         },
     })
+}
+
+/// Notes what a file read for `test` (another test of a linear axis than its
+/// positioning) cannot say of itself. A Renishaw file records no test type (see
+/// [`renishaw`]): its µm at targets in mm are taken as the straightness asked for, and the
+/// notes say so. The tables need no note: their units are the test's.
+pub fn note_test(read: &mut ReadTest, test: crate::geometry::TestKind) {
+    use crate::geometry::TestKind;
+    // An `.rta` is a rotary axis's: refused as such by the other tests' readers.
+    if read.recognised.layout == Layout::RenishawRtl && test != TestKind::Positioning {
+        read.recognised.notes.push(format!(
+            "a Renishaw file records no test type: its deviations (µm at targets in mm) are taken as the {} test asked for",
+            test.key()
+        ));
+    }
 }
 
 /// The whole of `reader`, refused with `too_large` past `limit` bytes (for the readers

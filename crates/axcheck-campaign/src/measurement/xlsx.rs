@@ -15,13 +15,20 @@
 //! stray cell at XFD1048576 would ask for 1.7·10^10 cells), and their count is bounded.
 //! For the same reason `.xls` (Excel 97–2003) and `.ods` books are refused with a clear
 //! message: calamine reads those only whole, into dense ranges.
+//!
+//! The other laser tests of a linear axis (ISO 230-1) read from either table as from its
+//! CSV: a straightness test is a linear table (µm across the axis at `target_mm`); an
+//! angular test's sheet has angles at `target_mm` (`deviation_arcsec`, `_urad`, `_deg` in
+//! the long table, `up_1_arcsec`, … in the wide one), read only when the caller asks for
+//! one ([`read_for`] with [`Quantities::AnglesAlongLinear`]), with the same refusals as
+//! the CSV readers, at the header's cell.
 
 use super::cell::{Field, Origin, Value};
 use super::csv::LongTable;
 use super::error::{ReadError, ReadErrorKind};
 use super::layout::table_kind;
 use super::layout::{Layout, OLE_MAGIC, ReadTest, Recognised};
-use super::table::{Row, TableKind, TableReader};
+use super::table::{Quantities, Row, TableKind, TableReader};
 use super::wide::WideTable;
 use super::{AxisData, Location, MAX_READINGS};
 use calamine::{DataRef, Reader as _, Xlsx};
@@ -50,6 +57,17 @@ pub fn parse(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<AxisData, 
 /// Reads the sheet `sheet` (or the first) of the workbook in `bytes`, saying which sheet
 /// and table it found and what it skipped.
 pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
+    read_for(bytes, file, sheet, Quantities::OneKind)
+}
+
+/// [`read`] with the units `quantities` asks (an angular test's angles at targets in mm,
+/// or one kind).
+pub(crate) fn read_for(
+    bytes: &[u8],
+    file: &str,
+    sheet: Option<&str>,
+    quantities: Quantities,
+) -> Result<ReadTest, ReadError> {
     let whole = |kind| ReadError::new(Location::file(file), kind);
     if let Some(what) = unsupported(bytes) {
         let what = what.to_string();
@@ -62,7 +80,7 @@ pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<Read
     let place = Origin::sheet(file, &name);
     let mut cells = calamine(|| book.worksheet_cells_reader(&name))
         .map_err(|kind| ReadError::new(place.whole(), kind))?;
-    let mut sheet_reader = SheetReader::new(place.clone());
+    let mut sheet_reader = SheetReader::new(place.clone(), quantities);
     let mut row: Option<(u32, Vec<(u32, Value)>)> = None;
     let mut count = 0usize;
     while let Some(cell) =
@@ -250,6 +268,8 @@ struct Found {
 /// A sheet being read row by row: looking for the header, then feeding the table.
 struct SheetReader {
     place: Origin,
+    /// The units the table's header must have.
+    quantities: Quantities,
     table: Option<Found>,
     /// Rows above the header that held something.
     skipped: Vec<usize>,
@@ -258,9 +278,10 @@ struct SheetReader {
 }
 
 impl SheetReader {
-    fn new(place: Origin) -> SheetReader {
+    fn new(place: Origin, quantities: Quantities) -> SheetReader {
         SheetReader {
             place,
+            quantities,
             table: None,
             skipped: Vec::new(),
             comments: 0,
@@ -338,9 +359,10 @@ impl SheetReader {
             fields[*c as usize + 1 - first].value = value.clone();
         }
         let header = Row { number, fields };
+        let (place, quantities) = (&self.place, self.quantities);
         let table = match kind {
-            TableKind::Long => Table::Long(LongTable::from_header(&header, &self.place)?),
-            TableKind::Wide => Table::Wide(WideTable::from_header(&header, &self.place)?),
+            TableKind::Long => Table::Long(LongTable::from_header(&header, place, quantities)?),
+            TableKind::Wide => Table::Wide(WideTable::from_header(&header, place, quantities)?),
         };
         self.table = Some(Found {
             table,
