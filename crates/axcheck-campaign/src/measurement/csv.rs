@@ -224,26 +224,31 @@ impl TableReader for LongTable {
     }
 }
 
-/// An angular test's header: targets along a linear axis (mm) and angular deviations.
-fn angles_along_linear(
+/// The header's units against the test's: one kind for a positioning or straightness
+/// test, angular deviations at targets along a linear axis (mm) for an angular test.
+/// `Err` holds the index of the column at fault and what is wrong with it.
+fn check_quantities(
     names: &[String],
-    target: usize,
-    kind: AxisKind,
-    value: usize,
-    value_kind: AxisKind,
-    is_actual: bool,
-) -> Result<(), ReadErrorKind> {
-    let wrong = |column: usize, expected: &str| not_for_angular(&names[column], expected);
-    if kind != AxisKind::Linear {
-        return Err(wrong(target, "targets along the axis in mm (`target_mm`)"));
-    }
-    if value_kind != AxisKind::Rotary || is_actual {
-        return Err(wrong(
+    (target, kind): (usize, AxisKind),
+    (value, value_kind, is_actual): (usize, AxisKind, bool),
+    quantities: Quantities,
+) -> Result<(), (usize, ReadErrorKind)> {
+    let wrong = |column: usize, expected: &str| (column, not_for_angular(&names[column], expected));
+    match quantities {
+        Quantities::OneKind if value_kind != kind => Err((
+            value,
+            mixed_units(&names[target], kind, &names[value], value_kind),
+        )),
+        Quantities::OneKind => Ok(()),
+        Quantities::AnglesAlongLinear if kind != AxisKind::Linear => {
+            Err(wrong(target, "targets along the axis in mm (`target_mm`)"))
+        }
+        Quantities::AnglesAlongLinear if value_kind != AxisKind::Rotary || is_actual => Err(wrong(
             value,
             "angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)",
-        ));
+        )),
+        Quantities::AnglesAlongLinear => Ok(()),
     }
-    Ok(())
 }
 
 impl LongTable {
@@ -284,21 +289,14 @@ impl LongTable {
             Column::Actual(k, f) => (k, f, true),
             _ => unreachable!("value column classified above"),
         };
-        match quantities {
-            Quantities::OneKind if value_kind != kind => {
-                return Err(header_err(mixed_units(
-                    &names[target],
-                    kind,
-                    &names[value],
-                    value_kind,
-                )));
-            }
-            Quantities::AnglesAlongLinear => {
-                angles_along_linear(&names, target, kind, value, value_kind, is_actual)
-                    .map_err(header_err)?
-            }
-            Quantities::OneKind => {}
-        }
+        // At the column's cell: the header names several, and this one is wrong.
+        check_quantities(
+            &names,
+            (target, kind),
+            (value, value_kind, is_actual),
+            quantities,
+        )
+        .map_err(|(k, e)| place.error(header.number, header.fields[k].column, e))?;
         Ok(LongTable {
             columns,
             names,
@@ -580,5 +578,37 @@ mod tests {
             }
         }
         assert!(text.starts_with("# made by a test\ntarget_mm,direction,run,deviation_um\n"));
+    }
+
+    /// An angular test's table is read only for one, and reads only angles at mm.
+    #[test]
+    fn an_angular_tests_units_are_enforced_both_ways() {
+        let pitch = "target_mm,direction,run,deviation_urad\n0,up,1,10\n0,down,1,-10\n";
+        let (d, _) = read_for(pitch.as_bytes(), "p.csv", Quantities::AnglesAlongLinear).unwrap();
+        assert_eq!(d.kind, AxisKind::Linear);
+        assert!((d.deviation(0, Direction::Up, 0) - 2.062_648_06).abs() < 1e-8);
+        let e = parse(pitch.as_bytes(), "p.csv").unwrap_err();
+        assert_eq!(e.kind.field().as_deref(), Some("deviation_urad"));
+        assert!(
+            e.to_string().starts_with("p.csv:1:25: column `deviation_urad` holds angles at targets in mm (`target_mm`): this looks like an angular test of a linear axis"),
+            "{e}"
+        );
+        let err = |text: &str| {
+            read_for(text.as_bytes(), "p.csv", Quantities::AnglesAlongLinear)
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            err("target_mm,direction,run,deviation_um\n"),
+            "p.csv:1:25: column `deviation_um`: an angular test of a linear axis takes angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)"
+        );
+        assert!(err("target_mm,direction,run,actual_deg\n").contains("column `actual_deg`: an angular test"));
+        assert!(err("target_deg,direction,run,deviation_arcsec\n").contains("column `target_deg`: an angular test of a linear axis takes targets along the axis in mm"));
+        assert!(
+            err("target_mm,direction,run,deviation_arcsec\n0,up,1,2e5\n")
+                .ends_with("2e5 is not a plausible deviation (more than 100000 arcsec); check the column's unit")
+        );
+        // A rotary axis's positioning test keeps its angles at degrees.
+        assert!(parse("target_deg,direction,run,deviation_urad\n0,up,1,1\n0,down,1,1\n".as_bytes(), "r.csv").is_ok());
     }
 }

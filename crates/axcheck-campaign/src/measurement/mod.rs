@@ -380,3 +380,32 @@ impl<R: BufRead> Lines<R> {
         Ok(Some((self.number, text)))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn angular() -> ReadOptions<'static> {
+        ReadOptions {
+            angular: true,
+            ..ReadOptions::default()
+        }
+    }
+
+    /// An angular test is read from the tables only: another layout is refused naming the
+    /// file, the test and what the file is.
+    #[test]
+    fn an_angular_test_is_refused_from_layouts_without_its_units() {
+        let key_value = "UNIT=mm\nTGT_DATA[1]=0\nREF_DATA_FWD[1,1]=0.001\n";
+        let e = read_with(key_value.as_bytes(), "x.dat", &angular()).unwrap_err();
+        assert_eq!(e.location, Location::file("x.dat"));
+        assert_eq!(
+            e.to_string(),
+            "x.dat: an angular test of a linear axis is read from the long CSV (target_mm, direction, run, deviation_arcsec, deviation_urad or deviation_deg), the wide CSV (target_mm, up_1_arcsec, down_1_arcsec, …) or either in an XLSX sheet; this file is an ecmc key=value file"
+        );
+        let wide = "target_mm,up_1_arcsec,down_1_arcsec\n0,1,2\n100,3,4\n";
+        let read = read_with(wide.as_bytes(), "w.csv", &angular()).unwrap();
+        assert_eq!(read.recognised.layout, Layout::WideCsv);
+        assert_eq!(read.data.deviations(1, crate::units::Direction::Down), &[4.0]);
+    }
+}

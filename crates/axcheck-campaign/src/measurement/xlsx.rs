@@ -423,6 +423,7 @@ impl SheetReader {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::units::Direction;
 
     #[test]
     fn sheet_choice() {
@@ -461,5 +462,80 @@ mod tests {
             e.starts_with("b.xlsx: the file is a ZIP archive but not an XLSX workbook ("),
             "{e}"
         );
+    }
+
+    /// A sheet fed row by row as calamine streams it: `rows[r]` is row r + 1, text cells
+    /// for text and numbers for numbers, from column A.
+    fn sheet(rows: &[&[&str]], quantities: Quantities) -> Result<(AxisData, TableKind, Vec<String>), ReadError> {
+        let mut reader = SheetReader::new(Origin::sheet("b.xlsx", "EBX"), quantities);
+        for (r, row) in rows.iter().enumerate() {
+            let cells = (row.iter().enumerate())
+                .map(|(c, text)| {
+                    let value = match text.parse::<f64>() {
+                        Ok(x) => Value::Number(x),
+                        Err(_) => Value::Text(text.to_string().into()),
+                    };
+                    (c as u32, value)
+                })
+                .collect();
+            reader.take_row(r + 1, cells)?;
+        }
+        reader.finish()
+    }
+
+    const ANGULAR: Quantities = Quantities::AnglesAlongLinear;
+
+    /// An angular test in either table of a sheet: the same angles, whichever table.
+    #[test]
+    fn an_angular_test_reads_from_the_long_and_the_wide_table() {
+        let wide: &[&[&str]] = &[
+            &["Pitch of X"],
+            &["target_mm", "up_1_arcsec", "down_1_arcsec"],
+            &["0", "-0.131", "-0.014"],
+            &["500", "9.829", "9.954"],
+        ];
+        let long: &[&[&str]] = &[
+            &["target_mm", "direction", "run", "deviation_urad"],
+            &["0", "up", "1", "-0.635"],
+            &["500", "up", "1", "47.652"],
+            &["500", "down", "1", "48.258"],
+            &["0", "down", "1", "-0.068"],
+        ];
+        let (w, kind, notes) = sheet(wide, ANGULAR).unwrap();
+        assert_eq!(kind, TableKind::Wide);
+        assert_eq!(w.targets, vec![0.0, 500.0]);
+        assert_eq!(w.deviations(1, Direction::Down), &[9.954]);
+        assert_eq!(notes[0], "row 1 above the header (row 2) skipped");
+        let (l, kind, _) = sheet(long, ANGULAR).unwrap();
+        assert_eq!(kind, TableKind::Long);
+        // 47.652 µrad = 47.652 · 0.648/π″ = 9.829″ to 0.001″.
+        for i in 0..2 {
+            for d in Direction::BOTH {
+                let (a, b) = (l.deviations(i, d)[0], w.deviations(i, d)[0]);
+                assert!((a - b).abs() < 5e-4, "{i} {d:?}: {a} {b}");
+            }
+        }
+    }
+
+    /// The CSV readers' refusals, at the header's cell.
+    #[test]
+    fn a_sheets_units_are_the_tests() {
+        let err = |rows: &[&[&str]], q| sheet(rows, q).unwrap_err().to_string();
+        let angles: &[&[&str]] = &[&["target_mm", "up_1_arcsec", "down_1_arcsec"], &["0", "1", "2"]];
+        let e = err(angles, Quantities::OneKind);
+        assert!(
+            e.starts_with("b.xlsx, sheet \"EBX\", cell B1: column `up_1_arcsec` holds angles at targets in mm (`target_mm`): this looks like an angular test"),
+            "{e}"
+        );
+        let lengths: &[&[&str]] = &[&["target_mm", "direction", "run", "deviation_um"], &["0", "up", "1", "2"]];
+        assert_eq!(
+            err(lengths, ANGULAR),
+            "b.xlsx, sheet \"EBX\", cell D1: column `deviation_um`: an angular test of a linear axis takes angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)"
+        );
+        let degrees: &[&[&str]] = &[&["target_deg", "up_1_arcsec", "down_1_arcsec"], &["0", "1", "2"]];
+        assert!(err(degrees, ANGULAR).contains("cell A1: column `target_deg`: an angular test"));
+        // A straightness test's sheet is a linear table, read as such.
+        let (d, _, _) = sheet(&[&["target_mm", "up_1_um", "down_1_um"], &["0", "1.5", "2"]], Quantities::OneKind).unwrap();
+        assert_eq!(d.deviations(0, Direction::Up), &[1.5]);
     }
 }
