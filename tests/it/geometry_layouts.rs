@@ -90,7 +90,9 @@ fn book(path: &Path) {
     for (name, rows) in [("EBX long", long), ("EBX wide", wide)] {
         let sheet = workbook.add_worksheet();
         sheet.set_name(name).unwrap();
-        sheet.write_string(0, 0, "Pitch of X, laser 2026-11-30").unwrap();
+        sheet
+            .write_string(0, 0, "Pitch of X, laser 2026-11-30")
+            .unwrap();
         for (r, row) in rows.iter().enumerate() {
             for (c, cell) in row.iter().enumerate() {
                 let (r, c) = (r as u32 + 1, c as u16);
@@ -158,7 +160,12 @@ fn an_angular_test_from_a_wide_csv_and_xlsx_sheets_is_the_long_csvs() {
 #[test]
 fn an_angular_test_in_urad_is_the_same_within_its_digits() {
     let dir = scratch("geometry-layouts-urad");
-    let urad = |a: &str| format!("{:.9e}", a.parse::<f64>().unwrap() * std::f64::consts::PI / 0.648);
+    let urad = |a: &str| {
+        format!(
+            "{:.9e}",
+            a.parse::<f64>().unwrap() * std::f64::consts::PI / 0.648
+        )
+    };
     let wide = dir.join("data/x-pitch-urad.csv");
     std::fs::write(&wide, csv_of(&wide_rows("urad", &urad))).unwrap();
     let v = angular(wide.to_str().unwrap(), None);
@@ -185,7 +192,10 @@ fn each_tests_units_are_enforced_and_a_campaign_reads_a_sheet() {
         wide.display()
     );
     assert!(stderr.contains(&says), "{stderr}");
-    assert!(stderr.contains("`eval --test angular --direction A|B|C`"), "{stderr}");
+    assert!(
+        stderr.contains("`eval --test angular --direction A|B|C`"),
+        "{stderr}"
+    );
     let straightness = dir.join("data/eyx-wide.csv");
     std::fs::write(
         &straightness,

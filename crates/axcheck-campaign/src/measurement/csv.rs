@@ -602,13 +602,22 @@ mod tests {
             err("target_mm,direction,run,deviation_um\n"),
             "p.csv:1:25: column `deviation_um`: an angular test of a linear axis takes angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)"
         );
-        assert!(err("target_mm,direction,run,actual_deg\n").contains("column `actual_deg`: an angular test"));
+        assert!(
+            err("target_mm,direction,run,actual_deg\n")
+                .contains("column `actual_deg`: an angular test")
+        );
         assert!(err("target_deg,direction,run,deviation_arcsec\n").contains("column `target_deg`: an angular test of a linear axis takes targets along the axis in mm"));
         assert!(
             err("target_mm,direction,run,deviation_arcsec\n0,up,1,2e5\n")
                 .ends_with("2e5 is not a plausible deviation (more than 100000 arcsec); check the column's unit")
         );
         // A rotary axis's positioning test keeps its angles at degrees.
-        assert!(parse("target_deg,direction,run,deviation_urad\n0,up,1,1\n0,down,1,1\n".as_bytes(), "r.csv").is_ok());
+        assert!(
+            parse(
+                "target_deg,direction,run,deviation_urad\n0,up,1,1\n0,down,1,1\n".as_bytes(),
+                "r.csv"
+            )
+            .is_ok()
+        );
     }
 }

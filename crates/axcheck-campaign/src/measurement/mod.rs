@@ -250,21 +250,6 @@ fn read_renishaw<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadErro
     })
 }
 
-/// Notes what a file read for `test` (another test of a linear axis than its
-/// positioning) cannot say of itself. A Renishaw file records no test type (see
-/// [`renishaw`]): its µm at targets in mm are taken as the straightness asked for, and the
-/// notes say so. The tables need no note: their units are the test's.
-pub fn note_test(read: &mut ReadTest, test: crate::geometry::TestKind) {
-    use crate::geometry::TestKind;
-    // An `.rta` is a rotary axis's: refused as such by the other tests' readers.
-    if read.recognised.layout == Layout::RenishawRtl && test != TestKind::Positioning {
-        read.recognised.notes.push(format!(
-            "a Renishaw file records no test type: its deviations (µm at targets in mm) are taken as the {} test asked for",
-            test.key()
-        ));
-    }
-}
-
 /// The whole of `reader`, refused with `too_large` past `limit` bytes (for the readers
 /// that need all of a file in memory).
 pub(crate) fn read_all<R: std::io::Read>(
@@ -406,6 +391,9 @@ mod tests {
         let wide = "target_mm,up_1_arcsec,down_1_arcsec\n0,1,2\n100,3,4\n";
         let read = read_with(wide.as_bytes(), "w.csv", &angular()).unwrap();
         assert_eq!(read.recognised.layout, Layout::WideCsv);
-        assert_eq!(read.data.deviations(1, crate::units::Direction::Down), &[4.0]);
+        assert_eq!(
+            read.data.deviations(1, crate::units::Direction::Down),
+            &[4.0]
+        );
     }
 }

@@ -100,7 +100,10 @@ fn classify(name: &str, quantities: Quantities) -> Result<RunColumn, ReadErrorKi
                     canonical("um")
                 ),
                 Quantities::AnglesAlongLinear => {
-                    format!("`{}` (or urad, deg) for an angular test", canonical("arcsec"))
+                    format!(
+                        "`{}` (or urad, deg) for an angular test",
+                        canonical("arcsec")
+                    )
                 }
             },
         });
@@ -344,7 +347,8 @@ fn check_unit(
             Err(mixed_units(target, kind, name, column.kind))
         }
         Quantities::AnglesAlongLinear if column.kind != AxisKind::Rotary => {
-            let canonical = |unit: &str| format!("`{}_{}_{unit}`", column.direction.name(), column.run);
+            let canonical =
+                |unit: &str| format!("`{}_{}_{unit}`", column.direction.name(), column.run);
             let expected = format!(
                 "angular deviations ({}, {} or {}); µm are a positioning or straightness test's",
                 canonical("arcsec"),
@@ -535,7 +539,10 @@ mod tests {
                 assert_eq!(wide.deviations(i, d), long.deviations(i, d));
             }
         }
-        assert!(notes[0].starts_with("3 targets × 2 runs per direction"), "{notes:?}");
+        assert!(
+            notes[0].starts_with("3 targets × 2 runs per direction"),
+            "{notes:?}"
+        );
     }
 
     #[test]
@@ -545,7 +552,11 @@ mod tests {
         // 100 µrad = 100 · 0.648/π = 20.6265″; 0.001° = 3.6″.
         assert!((d.deviation(1, Direction::Up, 0) - 20.626_480_6).abs() < 1e-6);
         assert!((d.deviation(1, Direction::Down, 0) - 3.6).abs() < 1e-9);
-        let (rotary, _) = read("target_deg,up_1_urad,down_1_urad\n90,1000,-1000\n".as_bytes(), "r.csv").unwrap();
+        let (rotary, _) = read(
+            "target_deg,up_1_urad,down_1_urad\n90,1000,-1000\n".as_bytes(),
+            "r.csv",
+        )
+        .unwrap();
         assert!((rotary.deviation(0, Direction::Up, 0) - 206.264_806).abs() < 1e-5);
     }
 
@@ -570,11 +581,13 @@ mod tests {
             err("target_deg,up_1_arcsec,down_1_arcsec\n0,1,2\n"),
             "p.csv:1:1: column `target_deg`: an angular test of a linear axis takes targets along the axis in mm (`target_mm`)"
         );
+        assert!(err("target_mm,up_1,down_1_arcsec\n").contains(
+            "`up_1` has no unit; write `up_1_arcsec` (or urad, deg) for an angular test"
+        ));
         assert!(
-            err("target_mm,up_1,down_1_arcsec\n")
-                .contains("`up_1` has no unit; write `up_1_arcsec` (or urad, deg) for an angular test")
+            err("target,up_1_arcsec,down_1_arcsec\n")
+                .contains("write `target_mm` (targets along the axis)")
         );
-        assert!(err("target,up_1_arcsec,down_1_arcsec\n").contains("write `target_mm` (targets along the axis)"));
         assert_eq!(
             err("target_mm,up_1_arcsec,down_1_arcsec\n0,1,2e5\n"),
             "p.csv:2:5: column `down_1_arcsec`: 2e5 is not a plausible deviation (more than 100000 arcsec); check the column's unit"
@@ -593,6 +606,9 @@ mod tests {
         assert_eq!(d.deviations(1, Direction::Up), &[2.1, 2.2]);
         assert_eq!(d.deviations(2, Direction::Down), &[-0.9, -0.8]);
         let e = angular(text).unwrap_err().to_string();
-        assert!(e.starts_with("p.csv:1:11: column `up_1_um`: an angular test"), "{e}");
+        assert!(
+            e.starts_with("p.csv:1:11: column `up_1_um`: an angular test"),
+            "{e}"
+        );
     }
 }

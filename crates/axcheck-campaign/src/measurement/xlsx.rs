@@ -466,7 +466,10 @@ mod tests {
 
     /// A sheet fed row by row as calamine streams it: `rows[r]` is row r + 1, text cells
     /// for text and numbers for numbers, from column A.
-    fn sheet(rows: &[&[&str]], quantities: Quantities) -> Result<(AxisData, TableKind, Vec<String>), ReadError> {
+    fn sheet(
+        rows: &[&[&str]],
+        quantities: Quantities,
+    ) -> Result<(AxisData, TableKind, Vec<String>), ReadError> {
         let mut reader = SheetReader::new(Origin::sheet("b.xlsx", "EBX"), quantities);
         for (r, row) in rows.iter().enumerate() {
             let cells = (row.iter().enumerate())
@@ -521,21 +524,34 @@ mod tests {
     #[test]
     fn a_sheets_units_are_the_tests() {
         let err = |rows: &[&[&str]], q| sheet(rows, q).unwrap_err().to_string();
-        let angles: &[&[&str]] = &[&["target_mm", "up_1_arcsec", "down_1_arcsec"], &["0", "1", "2"]];
+        let angles: &[&[&str]] = &[
+            &["target_mm", "up_1_arcsec", "down_1_arcsec"],
+            &["0", "1", "2"],
+        ];
         let e = err(angles, Quantities::OneKind);
         assert!(
             e.starts_with("b.xlsx, sheet \"EBX\", cell B1: column `up_1_arcsec` holds angles at targets in mm (`target_mm`): this looks like an angular test"),
             "{e}"
         );
-        let lengths: &[&[&str]] = &[&["target_mm", "direction", "run", "deviation_um"], &["0", "up", "1", "2"]];
+        let lengths: &[&[&str]] = &[
+            &["target_mm", "direction", "run", "deviation_um"],
+            &["0", "up", "1", "2"],
+        ];
         assert_eq!(
             err(lengths, ANGULAR),
             "b.xlsx, sheet \"EBX\", cell D1: column `deviation_um`: an angular test of a linear axis takes angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)"
         );
-        let degrees: &[&[&str]] = &[&["target_deg", "up_1_arcsec", "down_1_arcsec"], &["0", "1", "2"]];
+        let degrees: &[&[&str]] = &[
+            &["target_deg", "up_1_arcsec", "down_1_arcsec"],
+            &["0", "1", "2"],
+        ];
         assert!(err(degrees, ANGULAR).contains("cell A1: column `target_deg`: an angular test"));
         // A straightness test's sheet is a linear table, read as such.
-        let (d, _, _) = sheet(&[&["target_mm", "up_1_um", "down_1_um"], &["0", "1.5", "2"]], Quantities::OneKind).unwrap();
+        let (d, _, _) = sheet(
+            &[&["target_mm", "up_1_um", "down_1_um"], &["0", "1.5", "2"]],
+            Quantities::OneKind,
+        )
+        .unwrap();
         assert_eq!(d.deviations(0, Direction::Up), &[1.5]);
     }
 }

@@ -14,6 +14,6 @@ pub fn read(axis: &AxisSpec, path: &Path, files: &Root) -> Result<ReadTest, Read
         ..axis.data.read_options()
     };
     let mut read = measurement::read_file_within(path, &options, Some(files))?;
-    measurement::note_test(&mut read, axis.raw.test);
+    crate::one_file::note_test(&mut read, axis.raw.test);
     Ok(read)
 }

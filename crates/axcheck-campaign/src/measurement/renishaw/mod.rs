@@ -50,7 +50,7 @@
 //! `Owner`, and the extension says only a linear (`.rtl`, µm at mm) or a rotary (`.rta`,
 //! mrad at degrees) axis. No real file is public to check further. Hence, without
 //! guessing: an `.rtl` is read as µm at targets in mm, a positioning test or, when the
-//! caller asks for one, a straightness test (noted: [`super::note_test`]); an angular test
+//! caller asks for one, a straightness test (noted: `one_file::note_test`); an angular test
 //! of a linear axis is refused (`RenishawTestNotRecorded`: no source gives the unit of its
 //! angles in such a file, and reading an `.rta`'s mrad at degrees as one would be a guess).
 

@@ -429,7 +429,8 @@ fn the_dispatch_recognises_it_and_reads_it_from_a_reader() {
 #[test]
 fn the_test_type_is_not_recorded_so_angular_is_refused_and_straightness_noted() {
     use crate::geometry::TestKind;
-    use crate::measurement::{ReadOptions, note_test, read_with};
+    use crate::measurement::{ReadOptions, read_with};
+    use crate::one_file::note_test;
     let angular = ReadOptions {
         angular: true,
         ..ReadOptions::default()
