@@ -215,16 +215,31 @@ fn each_tests_units_are_enforced_and_a_campaign_reads_a_sheet() {
         stderr.contains("1:11: column `up_1_um`: an angular test of a linear axis takes angular deviations (`up_1_arcsec`, `up_1_urad` or `up_1_deg`)"),
         "{stderr}"
     );
-    // The same µm as a straightness test: the means' range about their line.
-    let s = eval(&[
-        straightness.to_str().unwrap(),
-        "--test",
-        "straightness",
-        "--direction",
-        "Y",
-    ]);
+    // The same µm as a straightness test, as the long CSV of the same readings gives it:
+    // the line of both directions' means (0.2, 2.35, −1.1 µm; least squares, slope
+    // −1.3 µm/m) leaves up −1.133, 1.617, −1.133 and down −0.733, 2.117, −0.733 µm, a
+    // range of 2.117 + 1.133 = 3.25 µm (README: the bidirectional straightness).
+    let long = dir.join("data/eyx-long.csv");
+    std::fs::write(
+        &long,
+        "target_mm,direction,run,deviation_um\n0,up,1,0.0\n500,up,1,2.1\n1000,up,1,-1.3\n\
+         1000,down,1,-0.9\n500,down,1,2.6\n0,down,1,0.4\n",
+    )
+    .unwrap();
+    let straight = |file: &Path| {
+        eval(&[
+            file.to_str().unwrap(),
+            "--test",
+            "straightness",
+            "--direction",
+            "Y",
+        ])
+    };
+    let s = straight(&straightness);
     assert_eq!(s["recognised"]["layout"], "wide-csv");
-    assert!(s["bidirectional"]["deviation_um"].as_f64().unwrap() > 0.0);
+    let range = s["bidirectional"]["deviation_um"].as_f64().unwrap();
+    assert_eq!(format!("{range:.3}"), "3.250");
+    assert_eq!(values(s), values(straight(&long)));
 
     // A Renishaw file records no test type: an angular test is refused, not guessed.
     let rtl = dir.join("data/x.rtl");
