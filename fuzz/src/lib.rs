@@ -30,11 +30,7 @@ pub fn csv(data: &[u8]) {
         check_data(&axis);
         check_geometry(&axis);
     }
-    let angular = measurement::ReadOptions {
-        angular: true,
-        ..Default::default()
-    };
-    if let Ok(test) = measurement::read_with(data, "fuzz.csv", &angular) {
+    if let Ok(test) = measurement::read_with(data, "fuzz.csv", &angular()) {
         check_geometry(&test.data);
     }
 }
@@ -93,10 +89,23 @@ pub fn ecmc_app(data: &[u8]) {
     }
 }
 
-/// The wide CSV reader.
+/// The wide CSV reader, as a positioning test and as an angular test (angles at targets
+/// in mm), each evaluated by the other tests of a linear axis too.
 pub fn wide(data: &[u8]) {
     if let Ok(axis) = measurement::wide::parse(data, "fuzz.csv") {
         check_data(&axis);
+        check_geometry(&axis);
+    }
+    if let Ok(test) = measurement::read_with(data, "fuzz.csv", &angular()) {
+        check_geometry(&test.data);
+    }
+}
+
+/// The options that read an angular test of a linear axis.
+fn angular() -> measurement::ReadOptions<'static> {
+    measurement::ReadOptions {
+        angular: true,
+        ..Default::default()
     }
 }
 
@@ -109,6 +118,9 @@ pub fn xlsx(data: &[u8]) {
     let name = String::from_utf8_lossy(&data[data.len().saturating_sub(8)..]);
     if let Ok(axis) = measurement::xlsx::parse(data, "fuzz.xlsx", Some(&name)) {
         check_data(&axis);
+    }
+    if let Ok(test) = measurement::read_with(data, "fuzz.xlsx", &angular()) {
+        check_geometry(&test.data);
     }
 }
 

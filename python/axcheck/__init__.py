@@ -130,8 +130,9 @@ def read(
 
     ``sheet`` names a workbook's sheet (the first by default); ``reference`` an ecmc ISO
     230 app file's reference (``1`` to ``5``, ``rbv``; the one it evaluated by default).
-    ``angular`` reads an angular test of a linear axis (pitch, yaw, roll: a long CSV with
-    ``deviation_arcsec``, ``deviation_urad`` or ``deviation_deg`` at ``target_mm``).
+    ``angular`` reads an angular test of a linear axis (pitch, yaw, roll: angles at
+    ``target_mm``, ``deviation_arcsec``/``_urad``/``_deg`` in a long table or
+    ``up_1_arcsec``, ``down_1_urad``, … in a wide one, as CSV or an XLSX sheet).
     A file that cannot be read raises :class:`ReadError` naming file, line and field.
     """
     return Measurement(_axcheck.read(str(path), sheet, reference, angular))

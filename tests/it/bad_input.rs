@@ -82,7 +82,12 @@ fn missing_and_duplicate_columns() {
     );
     expect(
         "target_mm,direction,run,deviation_arcsec\n",
-        "bad.csv:1:",
+        "bad.csv:1:25:",
+        &["looks like an angular test", "--test angular"],
+    );
+    expect(
+        "target_deg,direction,run,deviation_um\n",
+        "bad.csv:1:26:",
         &["an angle", "a length"],
     );
 }

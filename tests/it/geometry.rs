@@ -65,11 +65,11 @@ fn pitch_is_the_range_of_the_means() {
     ]);
     assert_eq!(a["direction"], "B");
     assert_eq!(fixed(num(&a, &["deviation_arcsec"]), 3), "20.204");
-    // Read as a positioning test, the same file mixes a length and an angle.
+    // Read as a positioning test, the same file's angles at mm are named an angular test's.
     let (code, _, stderr) = axcheck(&["eval", "tests/data/geometry/x-pitch.csv"]);
     assert_eq!(code, 2);
     assert!(
-        stderr.contains("`deviation_arcsec` is an angle but `target_mm` is a length"),
+        stderr.contains("tests/data/geometry/x-pitch.csv:1:25: column `deviation_arcsec` holds angles at targets in mm (`target_mm`): this looks like an angular test of a linear axis"),
         "{stderr}"
     );
 }

@@ -22,6 +22,7 @@ mod external;
 mod fuzz_corpus;
 mod geometry;
 mod geometry_campaign;
+mod geometry_layouts;
 mod gost27843;
 mod history;
 #[cfg(unix)]

@@ -10,7 +10,7 @@ use crate::geometry::squareness::{Convention, Squareness};
 use crate::geometry::straightness::{self, Straightness, Trace};
 use crate::geometry::uncertainty::{self as geometry_u, Accuracy, Uncertain};
 use crate::geometry::{self, TestKind};
-use crate::measurement::{AxisData, ReadError, ReadOptions, ReadTest, Recognised};
+use crate::measurement::{AxisData, Layout, ReadError, ReadOptions, ReadTest, Recognised};
 use crate::nde::NdeCorrection;
 use crate::uncertainty::Uncertainty;
 use crate::units::AxisKind;
@@ -192,7 +192,8 @@ pub fn read_geometry(
         angular: test == TestKind::Angular,
         ..options
     };
-    let read = crate::measurement::read_file_with(path, &options)?;
+    let mut read = crate::measurement::read_file_with(path, &options)?;
+    note_test(&mut read, test);
     if read.data.kind != AxisKind::Linear {
         let file = path.display().to_string();
         return Err(GeometryReadError::NotLinear {
@@ -201,6 +202,21 @@ pub fn read_geometry(
         });
     }
     Ok(read)
+}
+
+/// Notes what a file read for `test` (another test of a linear axis than its
+/// positioning) cannot say of itself. A Renishaw file records no test type (see
+/// [`crate::measurement::renishaw`]): its µm at targets in mm are taken as the
+/// straightness asked for, and the notes say so. The tables need no note: their units
+/// are the test's. `eval --test` and a campaign's reading of a test both call it.
+pub fn note_test(read: &mut ReadTest, test: TestKind) {
+    // An `.rta` is a rotary axis's: refused as such by the other tests' readers.
+    if read.recognised.layout == Layout::RenishawRtl && test != TestKind::Positioning {
+        read.recognised.notes.push(format!(
+            "a Renishaw file records no test type: its deviations (µm at targets in mm) are taken as the {} test asked for",
+            test.key()
+        ));
+    }
 }
 
 /// How to evaluate a squareness.

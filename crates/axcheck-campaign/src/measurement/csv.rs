@@ -11,14 +11,17 @@
 //! `run` (approach index j, 1-based); optional `time_s` and `temp_<name>_c`. Separators
 //! `,`, `;` or tab; with `;` or tab a decimal comma is accepted. `#` lines are comments.
 //!
-//! An angular test of a linear axis (pitch, yaw, roll) is the same table with angles at
-//! targets in mm (`target_mm` with `deviation_arcsec`, `deviation_urad` or
-//! `deviation_deg`), read by [`read_angular`] only: for a positioning test those units
-//! are mixed and refused.
+//! The other laser tests of a linear axis (ISO 230-1) use the same table. A straightness
+//! test is a linear one: deviations across the axis in `deviation_um` (`_nm`, `_mm`) at
+//! `target_mm`. An angular test (roll, pitch, yaw) has angles at targets in mm
+//! (`target_mm` with `deviation_arcsec`, `deviation_urad` or `deviation_deg`), read only
+//! when the caller asks for one ([`read_for`] with [`Quantities::AnglesAlongLinear`]):
+//! read for any other test, angles at mm are refused as an angular test's layout, and read
+//! for an angular test, µm or degree targets are refused naming the column.
 
 use super::cell::{Origin, Value};
 use super::error::{ReadError, ReadErrorKind};
-use super::table::{Row, TableReader, mixed_units, read_text};
+use super::table::{Quantities, Row, TableReader, mixed_units, not_for_angular, read_text};
 use super::{AxisData, MAX_READINGS, MAX_TEMPERATURES, RawReading};
 use crate::suggest::did_you_mean;
 use crate::units::{AxisKind, Direction, fmt_fixed};
@@ -145,41 +148,17 @@ pub(crate) fn read<R: BufRead>(
     reader: R,
     file: &str,
 ) -> Result<(AxisData, Vec<String>), ReadError> {
-    read_text::<LongTable, R>(reader, file)
+    read_for(reader, file, Quantities::OneKind)
 }
 
-/// Parses an angular test of a linear axis in the long CSV layout: angles (arcsec) at
-/// targets in mm; also returns what was assumed.
-pub(crate) fn read_angular<R: BufRead>(
+/// Parses the long CSV layout with the units `quantities` asks (an angular test's angles
+/// at targets in mm, or one kind); also returns what was assumed.
+pub(crate) fn read_for<R: BufRead>(
     reader: R,
     file: &str,
+    quantities: Quantities,
 ) -> Result<(AxisData, Vec<String>), ReadError> {
-    read_text::<AngularTable, R>(reader, file)
-}
-
-/// What the header's units must be: one kind for a positioning (or straightness) test,
-/// angles along a linear axis for an angular test.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Quantities {
-    OneKind,
-    AnglesAlongLinear,
-}
-
-/// The long table of an angular test (see [`read_angular`]).
-pub(crate) struct AngularTable(LongTable);
-
-impl TableReader for AngularTable {
-    fn from_header(header: &Row, place: &Origin) -> Result<AngularTable, ReadError> {
-        LongTable::from_header_for(header, place, Quantities::AnglesAlongLinear).map(AngularTable)
-    }
-
-    fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError> {
-        self.0.add(row, place)
-    }
-
-    fn finish(self, place: &Origin) -> Result<(AxisData, Vec<String>), ReadError> {
-        self.0.finish(place)
-    }
+    read_text::<LongTable, R>(reader, file, quantities)
 }
 
 /// The long table being read: what the header says (the columns, where the required ones
@@ -191,6 +170,9 @@ pub(crate) struct LongTable {
     /// Names of the `temp_<name>_c` columns.
     temps: Vec<String>,
     kind: AxisKind,
+    /// The value column's kind: its unit names a deviation in messages (arcsec for an
+    /// angular test of a linear axis).
+    value_kind: AxisKind,
     target: usize,
     value: usize,
     direction: usize,
@@ -204,8 +186,12 @@ pub(crate) struct LongTable {
 }
 
 impl TableReader for LongTable {
-    fn from_header(header: &Row, place: &Origin) -> Result<LongTable, ReadError> {
-        LongTable::from_header_for(header, place, Quantities::OneKind)
+    fn from_header(
+        header: &Row,
+        place: &Origin,
+        quantities: Quantities,
+    ) -> Result<LongTable, ReadError> {
+        LongTable::from_header_for(header, place, quantities)
     }
 
     fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError> {
@@ -238,30 +224,31 @@ impl TableReader for LongTable {
     }
 }
 
-/// An angular test's header: targets along a linear axis (mm) and angular deviations.
-fn angles_along_linear(
+/// The header's units against the test's: one kind for a positioning or straightness
+/// test, angular deviations at targets along a linear axis (mm) for an angular test.
+/// `Err` holds the index of the column at fault and what is wrong with it.
+fn check_quantities(
     names: &[String],
-    target: usize,
-    kind: AxisKind,
-    value: usize,
-    value_kind: AxisKind,
-    is_actual: bool,
-) -> Result<(), ReadErrorKind> {
-    let wrong = |column: usize, expected: &str| ReadErrorKind::WrongQuantity {
-        column: names[column].clone(),
-        test: "an angular test of a linear axis".into(),
-        expected: expected.into(),
-    };
-    if kind != AxisKind::Linear {
-        return Err(wrong(target, "targets along the axis in mm (`target_mm`)"));
-    }
-    if value_kind != AxisKind::Rotary || is_actual {
-        return Err(wrong(
+    (target, kind): (usize, AxisKind),
+    (value, value_kind, is_actual): (usize, AxisKind, bool),
+    quantities: Quantities,
+) -> Result<(), (usize, ReadErrorKind)> {
+    let wrong = |column: usize, expected: &str| (column, not_for_angular(&names[column], expected));
+    match quantities {
+        Quantities::OneKind if value_kind != kind => Err((
+            value,
+            mixed_units(&names[target], kind, &names[value], value_kind),
+        )),
+        Quantities::OneKind => Ok(()),
+        Quantities::AnglesAlongLinear if kind != AxisKind::Linear => {
+            Err(wrong(target, "targets along the axis in mm (`target_mm`)"))
+        }
+        Quantities::AnglesAlongLinear if value_kind != AxisKind::Rotary || is_actual => Err(wrong(
             value,
             "angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)",
-        ));
+        )),
+        Quantities::AnglesAlongLinear => Ok(()),
     }
-    Ok(())
 }
 
 impl LongTable {
@@ -302,26 +289,20 @@ impl LongTable {
             Column::Actual(k, f) => (k, f, true),
             _ => unreachable!("value column classified above"),
         };
-        match quantities {
-            Quantities::OneKind if value_kind != kind => {
-                return Err(header_err(mixed_units(
-                    &names[target],
-                    kind,
-                    &names[value],
-                    value_kind,
-                )));
-            }
-            Quantities::AnglesAlongLinear => {
-                angles_along_linear(&names, target, kind, value, value_kind, is_actual)
-                    .map_err(header_err)?
-            }
-            Quantities::OneKind => {}
-        }
+        // At the column's cell: the header names several, and this one is wrong.
+        check_quantities(
+            &names,
+            (target, kind),
+            (value, value_kind, is_actual),
+            quantities,
+        )
+        .map_err(|(k, e)| place.error(header.number, header.fields[k].column, e))?;
         Ok(LongTable {
             columns,
             names,
             temps,
             kind,
+            value_kind,
             target,
             value,
             direction,
@@ -354,7 +335,7 @@ impl LongTable {
                 column: self.names[self.value].clone(),
                 value: field.value.shown(),
                 limit: format!("{}", super::MAX_DEVIATION),
-                unit: self.kind.deviation_unit().to_string(),
+                unit: self.value_kind.deviation_unit().to_string(),
             };
             return Err(place.error(number, field.column, kind));
         }
@@ -597,5 +578,46 @@ mod tests {
             }
         }
         assert!(text.starts_with("# made by a test\ntarget_mm,direction,run,deviation_um\n"));
+    }
+
+    /// An angular test's table is read only for one, and reads only angles at mm.
+    #[test]
+    fn an_angular_tests_units_are_enforced_both_ways() {
+        let pitch = "target_mm,direction,run,deviation_urad\n0,up,1,10\n0,down,1,-10\n";
+        let (d, _) = read_for(pitch.as_bytes(), "p.csv", Quantities::AnglesAlongLinear).unwrap();
+        assert_eq!(d.kind, AxisKind::Linear);
+        assert!((d.deviation(0, Direction::Up, 0) - 2.062_648_06).abs() < 1e-8);
+        let e = parse(pitch.as_bytes(), "p.csv").unwrap_err();
+        assert_eq!(e.kind.field().as_deref(), Some("deviation_urad"));
+        assert!(
+            e.to_string().starts_with("p.csv:1:25: column `deviation_urad` holds angles at targets in mm (`target_mm`): this looks like an angular test of a linear axis"),
+            "{e}"
+        );
+        let err = |text: &str| {
+            read_for(text.as_bytes(), "p.csv", Quantities::AnglesAlongLinear)
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            err("target_mm,direction,run,deviation_um\n"),
+            "p.csv:1:25: column `deviation_um`: an angular test of a linear axis takes angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)"
+        );
+        assert!(
+            err("target_mm,direction,run,actual_deg\n")
+                .contains("column `actual_deg`: an angular test")
+        );
+        assert!(err("target_deg,direction,run,deviation_arcsec\n").contains("column `target_deg`: an angular test of a linear axis takes targets along the axis in mm"));
+        assert!(
+            err("target_mm,direction,run,deviation_arcsec\n0,up,1,2e5\n")
+                .ends_with("2e5 is not a plausible deviation (more than 100000 arcsec); check the column's unit")
+        );
+        // A rotary axis's positioning test keeps its angles at degrees.
+        assert!(
+            parse(
+                "target_deg,direction,run,deviation_urad\n0,up,1,1\n0,down,1,1\n".as_bytes(),
+                "r.csv"
+            )
+            .is_ok()
+        );
     }
 }

@@ -38,7 +38,9 @@ pub struct ReadOptions<'a> {
     /// error for another file).
     pub source: Option<Source>,
     /// An angular test of a linear axis (pitch, yaw, roll): angles at targets in mm, from
-    /// the long CSV layout only; a positioning test refuses those units as mixed.
+    /// the long or the wide CSV or either in an XLSX sheet. Without it, those units are
+    /// refused as an angular test's; with it, µm or degree targets are refused, and so is
+    /// every other layout (none records an angular test of a linear axis).
     pub angular: bool,
 }
 
@@ -80,8 +82,9 @@ pub fn read_with<R: BufRead>(
         .fill_buf()
         .map_err(|e| ReadError::new(Location::file(file), ReadErrorKind::Io(e.to_string())))?;
     let how = layout::recognise(head).map_err(|kind| ReadError::new(Location::file(file), kind))?;
+    let quantities = table::Quantities::angular(options.angular);
     if options.angular {
-        return read_angular(reader, file, how, options);
+        refuse_for_angular(how, file)?;
     }
     let text_layout = match how {
         layout::Reader::Book => {
@@ -102,7 +105,7 @@ pub fn read_with<R: BufRead>(
                     limit_mib: limit >> 20,
                 },
             )?;
-            return xlsx::read(&bytes, file, sheet);
+            return xlsx::read_for(&bytes, file, sheet, quantities);
         }
         layout::Reader::Renishaw => {
             refuse_sheet(sheet, Layout::RenishawRtl, file)?;
@@ -134,8 +137,8 @@ pub fn read_with<R: BufRead>(
     refuse_source(options.source, text_layout.clone(), file)?;
     let (data, notes) = match text_layout {
         Layout::KeyValue => keyvalue::read(reader, file)?,
-        Layout::WideCsv => wide::read(reader, file)?,
-        _ => csv::read(reader, file)?,
+        Layout::WideCsv => wide::read_for(reader, file, quantities)?,
+        _ => csv::read_for(reader, file, quantities)?,
     };
     Ok(ReadTest {
         data,
@@ -148,32 +151,21 @@ pub fn read_with<R: BufRead>(
     })
 }
 
-/// An angular test of a linear axis, from the long CSV layout.
-fn read_angular<R: BufRead>(
-    reader: R,
-    file: &str,
-    how: layout::Reader,
-    options: &ReadOptions,
-) -> Result<ReadTest, ReadError> {
-    if how != layout::Reader::Table(TableKind::Long) {
-        let kind = ReadErrorKind::LayoutForTest {
-            test: "an angular test of a linear axis".into(),
-            layout: how.described().into(),
-        };
-        return Err(ReadError::new(Location::file(file), kind));
-    }
-    refuse_sheet(options.sheet, Layout::LongCsv, file)?;
-    refuse_source(options.source, Layout::LongCsv, file)?;
-    let (data, notes) = csv::read_angular(reader, file)?;
-    Ok(ReadTest {
-        data,
-        recognised: Recognised {
-            layout: Layout::LongCsv,
-            notes,
-            info: None,
-            reported: None,
+/// An angular test of a linear axis is read from the tables only (the long and the wide
+/// CSV, in a text file or a workbook's sheet), whose column names carry the angle's unit.
+/// A Renishaw file records no test type and no angle unit for a linear axis (see
+/// [`renishaw`]); the ecmc layouts hold positions. Each is refused, saying why.
+fn refuse_for_angular(how: layout::Reader, file: &str) -> Result<(), ReadError> {
+    let test = table::ANGULAR_TEST.to_string();
+    let kind = match how {
+        layout::Reader::Table(_) | layout::Reader::Book => return Ok(()),
+        layout::Reader::Renishaw => ReadErrorKind::RenishawTestNotRecorded { test },
+        other => ReadErrorKind::LayoutForTest {
+            test,
+            layout: other.described().into(),
         },
-    })
+    };
+    Err(ReadError::new(Location::file(file), kind))
 }
 
 /// An ecmc ISO 230 app report or raw-points CSV, with `options.source`'s deviations.
@@ -371,5 +363,37 @@ impl<R: BufRead> Lines<R> {
             )
         })?;
         Ok(Some((self.number, text)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn angular() -> ReadOptions<'static> {
+        ReadOptions {
+            angular: true,
+            ..ReadOptions::default()
+        }
+    }
+
+    /// An angular test is read from the tables only: another layout is refused naming the
+    /// file, the test and what the file is.
+    #[test]
+    fn an_angular_test_is_refused_from_layouts_without_its_units() {
+        let key_value = "UNIT=mm\nTGT_DATA[1]=0\nREF_DATA_FWD[1,1]=0.001\n";
+        let e = read_with(key_value.as_bytes(), "x.dat", &angular()).unwrap_err();
+        assert_eq!(e.location, Location::file("x.dat"));
+        assert_eq!(
+            e.to_string(),
+            "x.dat: an angular test of a linear axis is read from the long CSV (target_mm, direction, run, deviation_arcsec, deviation_urad or deviation_deg), the wide CSV (target_mm, up_1_arcsec, down_1_arcsec, …) or either in an XLSX sheet; this file is an ecmc key=value file"
+        );
+        let wide = "target_mm,up_1_arcsec,down_1_arcsec\n0,1,2\n100,3,4\n";
+        let read = read_with(wide.as_bytes(), "w.csv", &angular()).unwrap();
+        assert_eq!(read.recognised.layout, Layout::WideCsv);
+        assert_eq!(
+            read.data.deviations(1, crate::units::Direction::Down),
+            &[4.0]
+        );
     }
 }

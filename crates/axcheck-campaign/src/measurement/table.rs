@@ -18,9 +18,44 @@ pub(crate) struct Row<'a> {
     pub fields: Vec<Field<'a>>,
 }
 
+/// What a table's units must be. A positioning or a straightness test has deviations of
+/// its targets' kind (µm at mm, arcsec at degrees); an angular test of a linear axis
+/// (roll, pitch, yaw) has angles at targets in mm, which a positioning test refuses as
+/// mixed: the units, not the caller's word, keep one test from being read as the other.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) enum Quantities {
+    #[default]
+    OneKind,
+    AnglesAlongLinear,
+}
+
+impl Quantities {
+    /// The quantities of an angular test when `angular`, else of any other test.
+    pub(crate) fn angular(angular: bool) -> Quantities {
+        match angular {
+            true => Quantities::AnglesAlongLinear,
+            false => Quantities::OneKind,
+        }
+    }
+}
+
+/// The test an angular table is read for, as messages name it.
+pub(crate) const ANGULAR_TEST: &str = "an angular test of a linear axis";
+
+/// A column of the wrong quantity for an angular test: `expected` says what it takes.
+pub(crate) fn not_for_angular(column: &str, expected: &str) -> ReadErrorKind {
+    ReadErrorKind::WrongQuantity {
+        column: column.to_string(),
+        test: ANGULAR_TEST.into(),
+        expected: expected.into(),
+    }
+}
+
 pub(crate) trait TableReader: Sized {
-    /// The layout's columns from the header row, or why the header is wrong.
-    fn from_header(header: &Row, place: &Origin) -> Result<Self, ReadError>;
+    /// The layout's columns from the header row, their units checked as `quantities`
+    /// asks, or why the header is wrong.
+    fn from_header(header: &Row, place: &Origin, quantities: Quantities)
+    -> Result<Self, ReadError>;
     /// One data row.
     fn add(&mut self, row: &Row, place: &Origin) -> Result<(), ReadError>;
     /// The validated test and what was assumed in reading it.
@@ -46,12 +81,14 @@ impl TableKind {
     }
 }
 
-/// Reads a CSV table of layout `T`: the header is the first line that is neither blank nor
-/// a `#` comment; its separator (`,`, `;` or tab) holds for every line, and with `;` or
-/// tab a decimal comma is read. Returns the test and what was assumed or skipped.
+/// Reads a CSV table of layout `T` with the units `quantities` asks: the header is the
+/// first line that is neither blank nor a `#` comment; its separator (`,`, `;` or tab)
+/// holds for every line, and with `;` or tab a decimal comma is read. Returns the test and
+/// what was assumed or skipped.
 pub(crate) fn read_text<T: TableReader, R: BufRead>(
     reader: R,
     file: &str,
+    quantities: Quantities,
 ) -> Result<(AxisData, Vec<String>), ReadError> {
     let mut lines = Lines::new(reader, file);
     let mut comments = 0usize;
@@ -66,7 +103,7 @@ pub(crate) fn read_text<T: TableReader, R: BufRead>(
     let sep = super::fields::detect_separator(&header);
     let place = Origin::text(file, sep != ',');
     let header_row = text_row(&header, sep, header_line, Vec::new());
-    let mut table = T::from_header(&header_row, &place)?;
+    let mut table = T::from_header(&header_row, &place, quantities)?;
     let width = header_row.fields.len();
     let mut rows = 0usize;
     // One buffer of fields for every line: a field borrows its line, so the buffer is
@@ -160,13 +197,21 @@ fn recycle<'b>(mut fields: Vec<Field<'_>>) -> Vec<Field<'b>> {
         .collect()
 }
 
-/// A target column of one kind with a value column of the other.
+/// A target column of one kind with a value column of the other, read for a test that
+/// is not angular. Angles at targets in mm are an angular test's layout: said so, with
+/// the option that reads them, rather than called mixed.
 pub(crate) fn mixed_units(
     target: &str,
     kind: AxisKind,
     value: &str,
     value_kind: AxisKind,
 ) -> ReadErrorKind {
+    if (kind, value_kind) == (AxisKind::Linear, AxisKind::Rotary) {
+        return ReadErrorKind::AnglesAlongLinear {
+            target: target.to_string(),
+            deviation: value.to_string(),
+        };
+    }
     let describe = |k: AxisKind| match k {
         AxisKind::Linear => "a length".to_string(),
         AxisKind::Rotary => "an angle".to_string(),

@@ -15,13 +15,20 @@
 //! stray cell at XFD1048576 would ask for 1.7·10^10 cells), and their count is bounded.
 //! For the same reason `.xls` (Excel 97–2003) and `.ods` books are refused with a clear
 //! message: calamine reads those only whole, into dense ranges.
+//!
+//! The other laser tests of a linear axis (ISO 230-1) read from either table as from its
+//! CSV: a straightness test is a linear table (µm across the axis at `target_mm`); an
+//! angular test's sheet has angles at `target_mm` (`deviation_arcsec`, `_urad`, `_deg` in
+//! the long table, `up_1_arcsec`, … in the wide one), read only when the caller asks for
+//! one ([`read_for`] with [`Quantities::AnglesAlongLinear`]), with the same refusals as
+//! the CSV readers, at the header's cell.
 
 use super::cell::{Field, Origin, Value};
 use super::csv::LongTable;
 use super::error::{ReadError, ReadErrorKind};
 use super::layout::table_kind;
 use super::layout::{Layout, OLE_MAGIC, ReadTest, Recognised};
-use super::table::{Row, TableKind, TableReader};
+use super::table::{Quantities, Row, TableKind, TableReader};
 use super::wide::WideTable;
 use super::{AxisData, Location, MAX_READINGS};
 use calamine::{DataRef, Reader as _, Xlsx};
@@ -50,6 +57,17 @@ pub fn parse(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<AxisData, 
 /// Reads the sheet `sheet` (or the first) of the workbook in `bytes`, saying which sheet
 /// and table it found and what it skipped.
 pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<ReadTest, ReadError> {
+    read_for(bytes, file, sheet, Quantities::OneKind)
+}
+
+/// [`read`] with the units `quantities` asks (an angular test's angles at targets in mm,
+/// or one kind).
+pub(crate) fn read_for(
+    bytes: &[u8],
+    file: &str,
+    sheet: Option<&str>,
+    quantities: Quantities,
+) -> Result<ReadTest, ReadError> {
     let whole = |kind| ReadError::new(Location::file(file), kind);
     if let Some(what) = unsupported(bytes) {
         let what = what.to_string();
@@ -62,7 +80,7 @@ pub(crate) fn read(bytes: &[u8], file: &str, sheet: Option<&str>) -> Result<Read
     let place = Origin::sheet(file, &name);
     let mut cells = calamine(|| book.worksheet_cells_reader(&name))
         .map_err(|kind| ReadError::new(place.whole(), kind))?;
-    let mut sheet_reader = SheetReader::new(place.clone());
+    let mut sheet_reader = SheetReader::new(place.clone(), quantities);
     let mut row: Option<(u32, Vec<(u32, Value)>)> = None;
     let mut count = 0usize;
     while let Some(cell) =
@@ -250,6 +268,8 @@ struct Found {
 /// A sheet being read row by row: looking for the header, then feeding the table.
 struct SheetReader {
     place: Origin,
+    /// The units the table's header must have.
+    quantities: Quantities,
     table: Option<Found>,
     /// Rows above the header that held something.
     skipped: Vec<usize>,
@@ -258,9 +278,10 @@ struct SheetReader {
 }
 
 impl SheetReader {
-    fn new(place: Origin) -> SheetReader {
+    fn new(place: Origin, quantities: Quantities) -> SheetReader {
         SheetReader {
             place,
+            quantities,
             table: None,
             skipped: Vec::new(),
             comments: 0,
@@ -338,9 +359,10 @@ impl SheetReader {
             fields[*c as usize + 1 - first].value = value.clone();
         }
         let header = Row { number, fields };
+        let (place, quantities) = (&self.place, self.quantities);
         let table = match kind {
-            TableKind::Long => Table::Long(LongTable::from_header(&header, &self.place)?),
-            TableKind::Wide => Table::Wide(WideTable::from_header(&header, &self.place)?),
+            TableKind::Long => Table::Long(LongTable::from_header(&header, place, quantities)?),
+            TableKind::Wide => Table::Wide(WideTable::from_header(&header, place, quantities)?),
         };
         self.table = Some(Found {
             table,
@@ -401,6 +423,7 @@ impl SheetReader {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::units::Direction;
 
     #[test]
     fn sheet_choice() {
@@ -439,5 +462,96 @@ mod tests {
             e.starts_with("b.xlsx: the file is a ZIP archive but not an XLSX workbook ("),
             "{e}"
         );
+    }
+
+    /// A sheet fed row by row as calamine streams it: `rows[r]` is row r + 1, text cells
+    /// for text and numbers for numbers, from column A.
+    fn sheet(
+        rows: &[&[&str]],
+        quantities: Quantities,
+    ) -> Result<(AxisData, TableKind, Vec<String>), ReadError> {
+        let mut reader = SheetReader::new(Origin::sheet("b.xlsx", "EBX"), quantities);
+        for (r, row) in rows.iter().enumerate() {
+            let cells = (row.iter().enumerate())
+                .map(|(c, text)| {
+                    let value = match text.parse::<f64>() {
+                        Ok(x) => Value::Number(x),
+                        Err(_) => Value::Text(text.to_string().into()),
+                    };
+                    (c as u32, value)
+                })
+                .collect();
+            reader.take_row(r + 1, cells)?;
+        }
+        reader.finish()
+    }
+
+    const ANGULAR: Quantities = Quantities::AnglesAlongLinear;
+
+    /// An angular test in either table of a sheet: the same angles, whichever table.
+    #[test]
+    fn an_angular_test_reads_from_the_long_and_the_wide_table() {
+        let wide: &[&[&str]] = &[
+            &["Pitch of X"],
+            &["target_mm", "up_1_arcsec", "down_1_arcsec"],
+            &["0", "-0.131", "-0.014"],
+            &["500", "9.829", "9.954"],
+        ];
+        let long: &[&[&str]] = &[
+            &["target_mm", "direction", "run", "deviation_urad"],
+            &["0", "up", "1", "-0.635"],
+            &["500", "up", "1", "47.652"],
+            &["500", "down", "1", "48.258"],
+            &["0", "down", "1", "-0.068"],
+        ];
+        let (w, kind, notes) = sheet(wide, ANGULAR).unwrap();
+        assert_eq!(kind, TableKind::Wide);
+        assert_eq!(w.targets, vec![0.0, 500.0]);
+        assert_eq!(w.deviations(1, Direction::Down), &[9.954]);
+        assert_eq!(notes[0], "row 1 above the header (row 2) skipped");
+        let (l, kind, _) = sheet(long, ANGULAR).unwrap();
+        assert_eq!(kind, TableKind::Long);
+        // 47.652 µrad = 47.652 · 0.648/π″ = 9.829″ to 0.001″.
+        for i in 0..2 {
+            for d in Direction::BOTH {
+                let (a, b) = (l.deviations(i, d)[0], w.deviations(i, d)[0]);
+                assert!((a - b).abs() < 5e-4, "{i} {d:?}: {a} {b}");
+            }
+        }
+    }
+
+    /// The CSV readers' refusals, at the header's cell.
+    #[test]
+    fn a_sheets_units_are_the_tests() {
+        let err = |rows: &[&[&str]], q| sheet(rows, q).unwrap_err().to_string();
+        let angles: &[&[&str]] = &[
+            &["target_mm", "up_1_arcsec", "down_1_arcsec"],
+            &["0", "1", "2"],
+        ];
+        let e = err(angles, Quantities::OneKind);
+        assert!(
+            e.starts_with("b.xlsx, sheet \"EBX\", cell B1: column `up_1_arcsec` holds angles at targets in mm (`target_mm`): this looks like an angular test"),
+            "{e}"
+        );
+        let lengths: &[&[&str]] = &[
+            &["target_mm", "direction", "run", "deviation_um"],
+            &["0", "up", "1", "2"],
+        ];
+        assert_eq!(
+            err(lengths, ANGULAR),
+            "b.xlsx, sheet \"EBX\", cell D1: column `deviation_um`: an angular test of a linear axis takes angular deviations (`deviation_arcsec`, `deviation_urad` or `deviation_deg`)"
+        );
+        let degrees: &[&[&str]] = &[
+            &["target_deg", "up_1_arcsec", "down_1_arcsec"],
+            &["0", "1", "2"],
+        ];
+        assert!(err(degrees, ANGULAR).contains("cell A1: column `target_deg`: an angular test"));
+        // A straightness test's sheet is a linear table, read as such.
+        let (d, _, _) = sheet(
+            &[&["target_mm", "up_1_um", "down_1_um"], &["0", "1.5", "2"]],
+            Quantities::OneKind,
+        )
+        .unwrap();
+        assert_eq!(d.deviations(0, Direction::Up), &[1.5]);
     }
 }

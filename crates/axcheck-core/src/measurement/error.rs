@@ -162,9 +162,17 @@ pub enum ReadErrorKind {
         expected: String,
     },
     #[error(
-        "{test} is read from the long CSV layout (target_mm, direction, run, deviation_arcsec or deviation_urad); this file is {layout}"
+        "{test} is read from the long CSV (target_mm, direction, run, deviation_arcsec, deviation_urad or deviation_deg), the wide CSV (target_mm, up_1_arcsec, down_1_arcsec, …) or either in an XLSX sheet; this file is {layout}"
     )]
     LayoutForTest { test: String, layout: String },
+    #[error(
+        "column `{deviation}` holds angles at targets in mm (`{target}`): this looks like an angular test of a linear axis (roll, pitch or yaw); evaluate it with `eval --test angular --direction A|B|C` (in a campaign, `test: angular` with `about:`), or give the deviations in um, nm or mm for a positioning or straightness test"
+    )]
+    AnglesAlongLinear { target: String, deviation: String },
+    #[error(
+        "{test} is not read from a Renishaw file: its header records no test type (`File type` says rtl or rta, a linear or a rotary axis, and nothing more), and the unit such a file would give a linear axis's angles in is not known; export the test from the laser software as CSV and read it as the long or wide CSV (target_mm with deviation_arcsec, or up_1_arcsec, down_1_arcsec, …)"
+    )]
+    RenishawTestNotRecorded { test: String },
     #[error("expected {expected} fields as in the header, found {found}")]
     FieldCount { expected: usize, found: usize },
     #[error("column `{column}`: expected a number, found `{found}`")]
@@ -293,7 +301,7 @@ pub enum ReadErrorKind {
     #[error("no layout recognised; tried: {tried}")]
     Unrecognised { tried: String },
     #[error(
-        "unknown column `{name}`{}; the wide layout has target_mm or target_deg first, then up_J_UNIT and down_J_UNIT for each run J (up_1_um, down_1_um, …; units um, nm, mm, arcsec or deg)",
+        "unknown column `{name}`{}; the wide layout has target_mm or target_deg first, then up_J_UNIT and down_J_UNIT for each run J (up_1_um, down_1_um, …; units um, nm, mm, arcsec, urad or deg)",
         crate::suggest::phrase(suggestion.as_deref())
     )]
     UnknownWideColumn {
@@ -376,6 +384,7 @@ impl ReadErrorKind {
             | WrongCellType { column, .. }
             | UnpairedRun { column, .. }
             | WrongQuantity { column, .. } => named(column),
+            AnglesAlongLinear { deviation, .. } => named(deviation),
             UnknownColumn { name, .. }
             | MissingUnit { name, .. }
             | DuplicateColumn { name }

@@ -13,5 +13,7 @@ pub fn read(axis: &AxisSpec, path: &Path, files: &Root) -> Result<ReadTest, Read
         angular: axis.raw.test == crate::geometry::TestKind::Angular,
         ..axis.data.read_options()
     };
-    measurement::read_file_within(path, &options, Some(files))
+    let mut read = measurement::read_file_within(path, &options, Some(files))?;
+    crate::one_file::note_test(&mut read, axis.raw.test);
+    Ok(read)
 }

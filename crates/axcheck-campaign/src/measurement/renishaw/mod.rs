@@ -37,6 +37,22 @@
 //! come back (and are listed from the last target down). A deviation is read by its
 //! target column, never by its line's position. Deviation = measured − target, ISO 230-2
 //! clause 2.5.
+//!
+//! **Which test a file holds is not recorded**, so this reader cannot refuse a file of
+//! another test than the one asked for. Checked (2026, for ISO 230-1's straightness and
+//! angular tests): the keys every known reader or writer meets — HEADER's `File type`
+//! (`rtl`/`rta`), `Owner`, `Version no`; TARGET DATA's `Filetype` (`ISO`) and `Flags`
+//! (meaning undocumented); USER-TEXT's free text; ENVIRONMENT — in the seven third-party
+//! readers and the one third-party writer this reader was rebuilt from, and in public
+//! code, documentation, pages and issues searched for `.rtl`/`.rta` with straightness,
+//! angular, pitch or yaw. None reads or writes a measurement type: the one
+//! writer puts `Owner : Linear` in every file whatever it holds, no reader interprets
+//! `Owner`, and the extension says only a linear (`.rtl`, µm at mm) or a rotary (`.rta`,
+//! mrad at degrees) axis. No real file is public to check further. Hence, without
+//! guessing: an `.rtl` is read as µm at targets in mm, a positioning test or, when the
+//! caller asks for one, a straightness test (noted: `one_file::note_test`); an angular test
+//! of a linear axis is refused (`RenishawTestNotRecorded`: no source gives the unit of its
+//! angles in such a file, and reading an `.rta`'s mrad at degrees as one would be a guess).
 
 mod environment;
 mod header;

@@ -422,3 +422,42 @@ fn the_dispatch_recognises_it_and_reads_it_from_a_reader() {
         crate::measurement::Layout::RenishawRta
     );
 }
+
+/// No header field says which test a file holds (the module's doc says what was
+/// checked): an angular test is refused from an `.rtl` and an `.rta` alike, naming the
+/// file; a straightness test reads an `.rtl`'s µm as asked, with a note.
+#[test]
+fn the_test_type_is_not_recorded_so_angular_is_refused_and_straightness_noted() {
+    use crate::geometry::TestKind;
+    use crate::measurement::{ReadOptions, read_with};
+    use crate::one_file::note_test;
+    let angular = ReadOptions {
+        angular: true,
+        ..ReadOptions::default()
+    };
+    let rtl = Rtl::of(&table2()).bytes();
+    for (bytes, name) in [(&rtl, "x.rtl"), (&rotary_rta().bytes(), "c.rta")] {
+        let e = read_with(&bytes[..], name, &angular).unwrap_err();
+        assert_eq!(e.location, Location::file(name));
+        assert!(
+            matches!(*e.kind, ReadErrorKind::RenishawTestNotRecorded { .. }),
+            "{e}"
+        );
+        let says = format!(
+            "{name}: an angular test of a linear axis is not read from a Renishaw file: its header records no test type"
+        );
+        assert!(e.to_string().starts_with(&says), "{e}");
+    }
+    let positioning = crate::measurement::read(&rtl[..], "x.rtl").unwrap();
+    let mut read = positioning.clone();
+    note_test(&mut read, TestKind::Positioning);
+    assert_eq!(read, positioning);
+    note_test(&mut read, TestKind::Straightness);
+    assert_eq!(read.data, positioning.data);
+    assert_eq!(
+        read.recognised.notes.last().map(String::as_str),
+        Some(
+            "a Renishaw file records no test type: its deviations (µm at targets in mm) are taken as the straightness test asked for"
+        )
+    );
+}
