@@ -133,7 +133,7 @@ fn broken_files() -> Vec<(&'static str, Vec<u8>, &'static str)> {
         (
             "mixed-units.csv",
             "target_mm,direction,run,deviation_arcsec\n".into(),
-            "an angle",
+            "holds angles at targets in mm",
         ),
         (
             "direction-typo.csv",

@@ -7,6 +7,7 @@ use super::tool_point::{Angular, angular_of};
 use crate::campaign::geometry::{across, axis_letter, rotation_about};
 use crate::diagnose::abbe::{self, Rotation};
 use crate::geometry::TestKind;
+use crate::units::Direction;
 
 /// Every positioning test of an axis with an angular test about an axis across it.
 pub(crate) fn fit_all(tests: &mut [Tested]) {
@@ -22,7 +23,7 @@ pub(crate) fn fit_all(tests: &mut [Tested]) {
         let machine = t.machine.id.clone();
         let [v, w] = across(own);
         // About v the lever lies along w and adds; about w along v and subtracts.
-        let rotations: Vec<Rotation> = [(v, w, 1.0), (w, v, -1.0)]
+        let found: Vec<(&Angular, char, f64)> = [(v, w, 1.0), (w, v, -1.0)]
             .into_iter()
             .filter_map(|(about, lever, sign)| {
                 let a = angular.iter().find(|a| {
@@ -30,12 +31,21 @@ pub(crate) fn fit_all(tests: &mut [Tested]) {
                         && a.axis == spec.raw.name
                         && a.about == rotation_about(about)
                 })?;
-                Some(Rotation {
-                    symbol: &a.symbol,
-                    lever,
-                    sign,
-                    trace: &a.trace,
-                })
+                Some((a, lever, sign))
+            })
+            .collect();
+        let angles: Vec<Box<dyn Fn(f64, Direction) -> Option<f64> + '_>> = (found.iter())
+            .map(|(a, _, _)| {
+                Box::new(move |x: f64, d| a.trace.at(x, d))
+                    as Box<dyn Fn(f64, Direction) -> Option<f64>>
+            })
+            .collect();
+        let rotations: Vec<Rotation> = (found.iter().zip(&angles))
+            .map(|((a, lever, sign), angle)| Rotation {
+                symbol: &a.symbol,
+                lever: *lever,
+                sign: *sign,
+                angle_arcsec: angle.as_ref(),
             })
             .collect();
         if rotations.is_empty() {

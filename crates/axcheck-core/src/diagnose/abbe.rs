@@ -17,7 +17,6 @@
 use super::maths::linalg::least_squares;
 use super::maths::stats::f_upper;
 use crate::evaluate::stats::sample_sd;
-use crate::geometry::angular::Trace;
 use crate::measurement::AxisData;
 use crate::units::{ARCSEC_PER_RAD, Direction};
 use serde::Serialize;
@@ -28,7 +27,7 @@ pub const ALPHA: f64 = 0.001;
 pub const SHARE: f64 = 0.5;
 
 /// One angular test the positioning test is fitted on.
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct Rotation<'a> {
     /// ISO 230-1's symbol, `EBX`.
     pub symbol: &'a str,
@@ -36,7 +35,9 @@ pub struct Rotation<'a> {
     /// lever in the reading (+1 for a rotation about v, whose lever is w; −1 about w).
     pub lever: char,
     pub sign: f64,
-    pub trace: &'a Trace,
+    /// Its mean angle at a position (mm) in a direction, arcsec; `None` outside its
+    /// travel (an angular test's trace, `geometry::angular::Trace::at`).
+    pub angle_arcsec: &'a dyn Fn(f64, Direction) -> Option<f64>,
 }
 
 /// A fitted lever.
@@ -122,7 +123,9 @@ pub fn fit(data: &AxisData, rotations: &[Rotation]) -> Option<AbbeFit> {
     ];
     for r in rotations {
         let angle = (m.x.iter().zip(&m.direction))
-            .map(|(x, d)| Some(r.sign * (r.trace.at(*x, *d)? / ARCSEC_PER_RAD).tan() * 1000.0))
+            .map(|(x, d)| {
+                Some(r.sign * ((r.angle_arcsec)(*x, *d)? / ARCSEC_PER_RAD).tan() * 1000.0)
+            })
             .collect::<Option<Vec<f64>>>()?;
         cols.push(angle);
     }
@@ -175,11 +178,11 @@ fn evidence(added: usize, f: f64, dof: (usize, usize), p: f64, share: f64) -> St
         return "the angles are straight along the travel: an Abbe error would be a progressive (linear) error and cannot be told from one".into();
     }
     format!(
-        "the angles carry {:.0} % of what a progressive error leaves of the means; F = {f:.1} on ({}, {}) degrees of freedom against the runs' scatter, {}",
+        "the angles carry {:.0} % of what a progressive error leaves of the means; F = {f:.1} on ({}, {}) degrees of freedom against the runs' scatter, P = {}",
         share * 100.0,
         dof.0,
         dof.1,
-        crate::verify::explain::fmt_p(p)
+        super::finding::fmt_p(p)
     )
 }
 

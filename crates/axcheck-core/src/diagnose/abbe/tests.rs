@@ -1,5 +1,6 @@
 use super::*;
 use crate::axis_model::Simulation;
+use crate::geometry::angular::Trace;
 
 /// MILL-8's X as the example simulates it, with a pitch of `bow` arcsec in the middle of
 /// the travel (and 22″/m), the beam `beam_z` mm from the tool point along Z.
@@ -29,7 +30,7 @@ fn fitted(bow: f64, beam_z: f64, seed: u64) -> AbbeFit {
         symbol: "EBX",
         lever: 'Z',
         sign: 1.0,
-        trace: &trace,
+        angle_arcsec: &|x, d| trace.at(x, d),
     };
     fit(&positioning, &[rotation]).unwrap()
 }
