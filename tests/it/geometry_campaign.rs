@@ -633,3 +633,68 @@ fn bad_optics_stop_at_their_line() {
         "{e}"
     );
 }
+
+/// No test-plan rule is cited for straightness and angular tests
+/// (docs/optics-specifications.md, "Plan rules for the other tests"), and ISO 230-2's do
+/// not hold for them: a straightness of three targets and one run, which would break
+/// 4.3.2's targets and runs, has no finding and is judged, not `noncompliant`; `plan`
+/// does not plan an axis entry that is not a positioning test.
+#[test]
+fn positioning_plan_rules_are_not_applied_to_the_other_tests() {
+    let dir = scratch("geometry-no-plan-rules");
+    let mut csv = String::from("target_mm,direction,run,deviation_um\n");
+    for (target, y) in [(0, 0.0), (500, 1.2), (1000, 0.0)] {
+        csv += &format!("{target},up,1,{y}\n");
+    }
+    for (target, y) in [(1000, 0.1), (500, 1.3), (0, 0.1)] {
+        csv += &format!("{target},down,1,{y}\n");
+    }
+    std::fs::write(dir.join("x.csv"), csv).unwrap();
+    let text = "campaign: {name: sparse}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, test: straightness, direction: Y, data: x.csv, tolerance: 0.020}\n";
+    let file = dir.join("campaign.yaml");
+    std::fs::write(&file, text).unwrap();
+    let out = scratch("geometry-no-plan-rules-out").join("out");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let results: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap())
+            .unwrap();
+    let t = test(&results, "EYX");
+    assert_eq!(t["rules"], serde_json::json!([]), "{t}");
+    assert_eq!(t["verdict"], "pass");
+    let (code, _, stderr) = axcheck(&[
+        "plan",
+        "--campaign",
+        CAMPAIGN,
+        "--machine",
+        "MILL-G",
+        "--axis",
+        "X",
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("axis `X` of machine `MILL-G` has no positioning test"),
+        "{stderr}"
+    );
+    // An axis whose straightness entry comes first is planned from its positioning entry.
+    let text = "campaign: {name: order}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, test: straightness, direction: Y, data: x.csv}\n      - {name: X, kind: linear, travel: [0, 800], data: x.csv}\n";
+    std::fs::write(&file, text).unwrap();
+    let (code, stdout, stderr) = axcheck(&[
+        "plan",
+        "--campaign",
+        file.to_str().unwrap(),
+        "--machine",
+        "M",
+        "--axis",
+        "X",
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.starts_with("Test plan: "), "{stdout}");
+    assert!(stdout.contains("(ISO 230-2:1997)"), "{stdout}");
+}
