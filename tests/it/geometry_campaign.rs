@@ -663,8 +663,7 @@ fn positioning_plan_rules_are_not_applied_to_the_other_tests() {
     ]);
     assert_eq!(code, 0, "{stdout}{stderr}");
     let results: Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap())
-            .unwrap();
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
     let t = test(&results, "EYX");
     assert_eq!(t["rules"], serde_json::json!([]), "{t}");
     assert_eq!(t["verdict"], "pass");
