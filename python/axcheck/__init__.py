@@ -296,9 +296,10 @@ def diagnose(m: Measurement, standard: str = "iso230-2", pitch: Optional[float] 
     return value
 
 
-#: An optics' accuracy for U: (percent of the value, fixed part, part per metre of travel)
-#: in the result's unit (µm or arcsec), or a preset name (``"hp5528a_short"``).
-Optics = Union[Tuple[float, float, float], str]
+#: An optics' accuracy for U: (percent of the value, fixed part, part per metre of travel[,
+#: part per square metre]) in the result's unit (µm or arcsec), or a preset's name
+#: (``"hp5528a_squareness_short"``, ``"hp5528a_squareness_long"``; see the README).
+Optics = Union[Tuple[float, float, float], Tuple[float, float, float, float], str]
 
 
 def straightness(

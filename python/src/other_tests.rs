@@ -3,6 +3,7 @@
 
 use super::Measurement;
 use axcheck_campaign::one_file::{self, OtherOptions};
+use axcheck_core::geometry::optics;
 use axcheck_core::geometry::uncertainty::Accuracy;
 use axcheck_core::geometry::{self, TestKind, line::ReferenceLine};
 use pyo3::exceptions::PyValueError;
@@ -41,35 +42,42 @@ fn direction_letter(direction: Option<&str>, allowed: &str) -> PyResult<Option<c
     }
 }
 
-/// The optics' accuracy: (percent, fixed, per metre) or `"hp5528a_short"`.
+/// The optics' accuracy: (percent, fixed, per metre[, per square metre]) or a preset's
+/// name (`"hp5528a_squareness_short"`, `"hp5528a_squareness_long"`; `"hp5528a_short"` as
+/// before).
 #[derive(FromPyObject)]
 pub enum Optics {
+    Spec4(f64, f64, f64, f64),
     Spec(f64, f64, f64),
     Preset(String),
 }
 
-fn optics(given: Option<Optics>) -> PyResult<Option<Accuracy>> {
-    match given {
-        None => Ok(None),
-        Some(Optics::Spec(percent, fixed, per_m)) => {
-            match [percent, fixed, per_m]
-                .iter()
-                .all(|v| v.is_finite() && *v >= 0.0)
-            {
-                true => Ok(Some(Accuracy {
+fn optics(given: Option<Optics>, test: TestKind) -> PyResult<Option<optics::Optics>> {
+    let terms =
+        |percent: f64, fixed: f64, per_m: f64, per_m2: f64| match [percent, fixed, per_m, per_m2]
+            .iter()
+            .all(|v| v.is_finite() && *v >= 0.0)
+        {
+            true => Ok(Some(
+                Accuracy {
                     fraction: percent / 100.0,
                     fixed,
                     per_m,
-                })),
-                false => Err(PyValueError::new_err("optics: three numbers ≥ 0")),
-            }
-        }
-        Some(Optics::Preset(name)) if name.replace('-', "_") == "hp5528a_short" => {
-            Ok(Some(Accuracy::HP_5528A_SQUARENESS_SHORT))
-        }
-        Some(Optics::Preset(name)) => Err(PyValueError::new_err(format!(
-            "optics: unknown `{name}`; expected (percent, fixed, per_m) or hp5528a_short"
-        ))),
+                    per_m2,
+                }
+                .into(),
+            )),
+            false => Err(PyValueError::new_err("optics: three or four numbers ≥ 0")),
+        };
+    match given {
+        None => Ok(None),
+        Some(Optics::Spec(percent, fixed, per_m)) => terms(percent, fixed, per_m, 0.0),
+        Some(Optics::Spec4(percent, fixed, per_m, per_m2)) => terms(percent, fixed, per_m, per_m2),
+        Some(Optics::Preset(name)) => optics::Preset::for_test(&name.replace('_', "-"), test)
+            .map(|p| Some(p.into()))
+            .map_err(|e| {
+                PyValueError::new_err(format!("optics: {e}; or (percent, fixed, per_m[, per_m2])"))
+            }),
     }
 }
 
@@ -109,7 +117,7 @@ pub fn straightness(
             line: reference_line(line)?,
             local_length_mm: local,
         },
-        optics: self::optics(optics)?,
+        optics: self::optics(optics, TestKind::Straightness)?,
     };
     let direction = direction_letter(direction, "XYZ")?;
     other(py, m, TestKind::Straightness, direction, options)
@@ -126,7 +134,7 @@ pub fn angular(
     optics: Option<Optics>,
 ) -> PyResult<String> {
     let options = OtherOptions {
-        optics: self::optics(optics)?,
+        optics: self::optics(optics, TestKind::Angular)?,
         ..OtherOptions::default()
     };
     let direction = direction_letter(direction, "ABC")?;
@@ -165,7 +173,7 @@ pub fn squareness(
         square_error_arcsec: square_error,
         square_u_arcsec: square_u,
         convention,
-        optics: self::optics(optics)?,
+        optics: self::optics(optics, TestKind::Squareness)?,
     };
     let done = one_file::evaluate_squareness(&first.data, &second.data, &options).map_err(|k| {
         let file = [&first.file, &second.file][k - 1];

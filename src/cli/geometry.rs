@@ -4,6 +4,7 @@
 use super::text::left;
 use anyhow::{Context, Result, bail};
 use axcheck::geometry::line::ReferenceLine;
+use axcheck::geometry::optics::{Optics, Preset};
 use axcheck::geometry::squareness::Convention;
 use axcheck::geometry::uncertainty::{Accuracy, Uncertain};
 use axcheck::geometry::{TestKind, angular, straightness};
@@ -49,12 +50,14 @@ pub struct GeometryArgs {
     /// arcsec.
     #[arg(long, value_name = "ARCSEC")]
     pub square_u: Option<f64>,
-    /// The optics' accuracy for U, as its specification states it: `PERCENT,FIXED,PER_M`
-    /// (± PERCENT % of the value + FIXED + PER_M per metre of travel, in µm or arcsec), or
-    /// `hp5528a-short` (squareness: HP 5528A short-range optics). Unstated, U holds the
-    /// scatter only and says so.
+    /// The optics' accuracy for U, as its specification states it:
+    /// `PERCENT,FIXED,PER_M[,PER_M2]` (± PERCENT % of the value + FIXED + PER_M·M +
+    /// PER_M2·M², M the travel in metres, in µm for straightness and arcsec for angular and
+    /// squareness), or a preset's name: `hp5528a-squareness-short`,
+    /// `hp5528a-squareness-long` (HP 5528A User's Guide §13). Unstated, U holds the scatter
+    /// only and says so.
     #[arg(long, value_name = "SPEC", value_parser = parse_optics)]
-    pub optics: Option<Accuracy>,
+    pub optics: Option<Optics>,
 }
 
 pub fn parse_test(text: &str) -> Result<TestKind, String> {
@@ -73,23 +76,34 @@ pub fn parse_line(text: &str) -> Result<ReferenceLine, String> {
     ReferenceLine::parse(text).ok_or_else(|| "expected least-squares or end-point".into())
 }
 
-fn parse_optics(text: &str) -> Result<Accuracy, String> {
-    if text == "hp5528a-short" {
-        return Ok(Accuracy::HP_5528A_SQUARENESS_SHORT);
+fn parse_optics(text: &str) -> Result<Optics, String> {
+    let numbers = || {
+        format!(
+            "expected PERCENT,FIXED,PER_M[,PER_M2] (numbers ≥ 0) or a preset: {}",
+            Accuracy::preset_names().join(", ")
+        )
+    };
+    if text.trim().starts_with(|c: char| c.is_ascii_alphabetic()) {
+        return Preset::find(text)
+            .map(Optics::from)
+            .ok_or_else(|| format!("unknown optics `{text}`; {}", numbers()));
     }
     let parts: Vec<f64> = (text.split(','))
         .map(|p| p.trim().parse::<f64>())
         .collect::<Result<_, _>>()
-        .map_err(|_| "expected PERCENT,FIXED,PER_M (three numbers) or hp5528a-short".to_string())?;
+        .map_err(|_| numbers())?;
+    if !parts.iter().all(|v| v.is_finite() && *v >= 0.0) {
+        return Err(numbers());
+    }
     match parts[..] {
-        [percent, fixed, per_m] if parts.iter().all(|v| v.is_finite() && *v >= 0.0) => {
-            Ok(Accuracy {
-                fraction: percent / 100.0,
-                fixed,
-                per_m,
-            })
+        [percent, fixed, per_m] | [percent, fixed, per_m, _] => Ok(Accuracy {
+            fraction: percent / 100.0,
+            fixed,
+            per_m,
+            per_m2: parts.get(3).copied().unwrap_or(0.0),
         }
-        _ => Err("expected PERCENT,FIXED,PER_M (three numbers ≥ 0) or hp5528a-short".into()),
+        .into()),
+        _ => Err(numbers()),
     }
 }
 
@@ -104,7 +118,7 @@ fn parse_convention(text: &str) -> Result<Convention, String> {
 /// The options that belong to another test than the one asked, refused by name.
 pub fn refuse_others(args: &GeometryArgs) -> Result<()> {
     use TestKind::{Angular, Squareness, Straightness};
-    let given: [(&str, bool, &[TestKind]); 7] = [
+    let given: [(&str, bool, &[TestKind]); 8] = [
         (
             "--direction",
             args.direction.is_some(),
@@ -116,6 +130,11 @@ pub fn refuse_others(args: &GeometryArgs) -> Result<()> {
         ("--square-error", args.square_error.is_some(), &[Squareness]),
         ("--convention", args.convention.is_some(), &[Squareness]),
         ("--square-u", args.square_u.is_some(), &[Squareness]),
+        (
+            "--optics",
+            args.optics.is_some(),
+            &[Straightness, Angular, Squareness],
+        ),
     ];
     for (option, is_given, applies) in given {
         if is_given && !applies.contains(&args.test) {
@@ -147,11 +166,8 @@ fn read(path: &Path, test: TestKind, sheet: ReadOptions) -> Result<ReadTest> {
 /// `eval --test …`'s output: the text or the JSON.
 pub fn run(file: &Path, sheet: ReadOptions, args: &GeometryArgs, json: bool) -> Result<String> {
     refuse_others(args)?;
-    if args.optics == Some(Accuracy::HP_5528A_SQUARENESS_SHORT) && args.test != TestKind::Squareness
-    {
-        bail!(
-            "--optics hp5528a-short is the HP 5528A's squareness optics; give PERCENT,FIXED,PER_M"
-        );
+    if let Some(preset) = args.optics.and_then(|o| o.preset) {
+        Preset::for_test(preset.name, args.test).map_err(|e| anyhow::anyhow!("--optics {e}"))?;
     }
     let name = file.display().to_string();
     match args.test {

@@ -4,8 +4,9 @@
 use super::text::right;
 use anyhow::{Context, Result, anyhow, bail};
 use axcheck::axis_model::Cycle;
-use axcheck::campaign::Campaign;
+use axcheck::campaign::{AxisEntry, Campaign};
 use axcheck::evaluate::StandardId;
+use axcheck::geometry::TestKind;
 use axcheck::plan::programs::{Coordinates, GcodeSystem};
 use axcheck::plan::{self, Axis, Motion, Plan, file, laser, programs};
 use axcheck::units::{AxisKind, Travel, fmt_fixed};
@@ -372,15 +373,26 @@ fn from_campaign(path: &Path, args: &PlanArgs) -> Result<CampaignAxis> {
         _ => bail!("--campaign needs --machine M and --axis A"),
     };
     let campaign = Campaign::load(path)?;
-    let (found, entry) = campaign
-        .axes()
-        .find(|(m, a)| &m.info.id == machine && &a.name == name)
-        .ok_or_else(|| {
-            anyhow!(
+    let entries: Vec<_> = (campaign.axes())
+        .filter(|(m, a)| &m.info.id == machine && &a.name == name)
+        .collect();
+    // A plan is of a positioning test (ISO 230-2): the axis's straightness and angular
+    // entries (ISO 230-1) are not planned by its rules.
+    let positioning = |(_, a): &&(&_, &AxisEntry)| {
+        (a.spec.as_ref()).map_or(true, |s| s.raw.test == TestKind::Positioning)
+    };
+    let Some(&(found, entry)) = entries.iter().find(positioning) else {
+        match entries.is_empty() {
+            true => bail!(
                 "{}: no axis `{name}` of machine `{machine}`",
                 path.display()
-            )
-        })?;
+            ),
+            false => bail!(
+                "{}: axis `{name}` of machine `{machine}` has no positioning test: `plan` plans an ISO 230-2 positioning test, not its straightness or angular tests",
+                path.display()
+            ),
+        }
+    };
     let lathe = is_lathe(found.info.machine_type.as_deref());
     let spec = entry.spec.as_ref().map_err(|e| anyhow!("{e}"))?;
     let raw = &spec.raw;

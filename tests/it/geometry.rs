@@ -299,7 +299,11 @@ fn u_says_what_it_holds() {
         "hp5528a-short",
     ]);
     assert_eq!(code, 2);
-    assert!(stderr.contains("squareness optics"), "{stderr}");
+    assert!(stderr.contains("hp5528a-squareness-short"), "{stderr}");
+    assert!(
+        stderr.contains("stated for squareness), not for this straightness test"),
+        "{stderr}"
+    );
     let sq = json(&[
         "tests/data/geometry/hp5528a-axis-1.csv",
         "--test",
@@ -320,4 +324,87 @@ fn u_says_what_it_holds() {
         .len();
     assert_eq!(lines, 2);
     assert_eq!(fixed(num(&sq, &["uncertainty", "U"]), 3), "0.842");
+}
+
+/// Every preset through `--optics`, and the optics' four terms: the long-range squareness
+/// optics and a term per square metre by hand; a preset of another test, an unknown name
+/// and `--optics` on a positioning test are refused.
+#[test]
+fn optics_presets_and_terms_by_hand() {
+    let (first, second) = (
+        "tests/data/geometry/hp5528a-axis-1.csv",
+        "tests/data/geometry/hp5528a-axis-2.csv",
+    );
+    let squareness = |optics: &str| {
+        json(&[
+            first,
+            "--test",
+            "squareness",
+            "--second",
+            second,
+            "--optics",
+            optics,
+            "--square-u",
+            "0.2",
+        ])
+    };
+    // θ = −5.1716″ over the longer travel 0.9 m, long-range optics: ±(0.5 + 0.01 × 0.9 +
+    // 2.5 % × 5.1716) = 0.6383″, u = 0.3685″; U = 2·√(0.2² + 0.3685²) = 0.839″.
+    let long = squareness("hp5528a-squareness-long");
+    let line = &long["uncertainty"]["budget"]["lines"][1];
+    assert_eq!(line["contributor"], "optics");
+    assert_eq!(fixed(line["value"].as_f64().unwrap(), 4), "0.6383");
+    assert_eq!(fixed(num(&long, &["uncertainty", "U"]), 3), "0.839");
+    let notes = long["uncertainty"]["notes"].to_string();
+    assert!(
+        notes.contains("long-range optics") && notes.contains("section 13"),
+        "{notes}"
+    );
+    // The short-range optics by their name and their earlier one alike: 0.842″.
+    for name in ["hp5528a-squareness-short", "hp5528a-short"] {
+        assert_eq!(
+            fixed(num(&squareness(name), &["uncertainty", "U"]), 3),
+            "0.842"
+        );
+    }
+    // Only a term per square metre: 1 × 0.9² = 0.81″, u = 0.4677″; U = 2·√(0.04 +
+    // 0.21870) = 1.017″.
+    let m2 = squareness("0,0,0,1");
+    let line = &m2["uncertainty"]["budget"]["lines"][1];
+    assert_eq!(fixed(line["value"].as_f64().unwrap(), 4), "0.8100");
+    assert_eq!(fixed(num(&m2, &["uncertainty", "U"]), 3), "1.017");
+    let notes = m2["uncertainty"]["notes"].to_string();
+    assert!(notes.contains("±(1·M²) arcsec"), "{notes}");
+
+    let file = "tests/data/geometry/x-straightness-y.csv";
+    let refused = |args: &[&str]| {
+        let (code, _, stderr) = crate::common::axcheck(args);
+        assert_eq!(code, 2, "{stderr}");
+        stderr
+    };
+    let e = refused(&[
+        "eval",
+        file,
+        "--test",
+        "angular",
+        "--optics",
+        "hp5528a-squareness-long",
+    ]);
+    assert!(
+        e.contains("`hp5528a-squareness-long`") && e.contains("not for this angular test"),
+        "{e}"
+    );
+    let e = refused(&["eval", file, "--test", "straightness", "--optics", "xl80"]);
+    assert!(e.contains("unknown optics `xl80`"), "{e}");
+    assert!(
+        e.contains("hp5528a-squareness-short, hp5528a-squareness-long"),
+        "{e}"
+    );
+    let e = refused(&["eval", file, "--optics", "0.5,0.5,0.15"]);
+    assert!(
+        e.contains("--optics applies to --test straightness or angular or squareness"),
+        "{e}"
+    );
+    let e = refused(&["eval", file, "--test", "straightness", "--optics", "1,2"]);
+    assert!(e.contains("PERCENT,FIXED,PER_M[,PER_M2]"), "{e}");
 }

@@ -472,3 +472,228 @@ fn the_other_tests_have_their_own_series() {
     assert_eq!(format!("{:.3}", f(&sq["points"][0]["value"])), "-8.222");
     assert_eq!(sq["unit"], "arcsec");
 }
+
+/// The campaign of `CAMPAIGN` with `optics:` stated on its three tests (`optics` the text
+/// after each tolerance), run into a fresh folder: its `results.json`.
+fn run_with_optics(name: &str, eyx: &str, ebx: &str, pair: &str) -> Value {
+    let root = scratch(&format!("geometry-optics-{name}"));
+    let dir = root.join("data");
+    for f in [
+        "x-straightness-y.csv",
+        "x-pitch.csv",
+        "y-straightness-x.csv",
+    ] {
+        std::fs::copy(Path::new("tests/data/geometry").join(f), dir.join(f)).unwrap();
+    }
+    let text = std::fs::read_to_string(CAMPAIGN).unwrap();
+    let text = text
+        .replace(
+            "        tolerance: [\"0.020 per 1000\", \"0.010 over any 300\"]\n",
+            &format!("        tolerance: [\"0.020 per 1000\", \"0.010 over any 300\"]\n        optics: {eyx}\n"),
+        )
+        .replace(
+            "        tolerance: 30″\n",
+            &format!("        tolerance: 30″\n        optics: {ebx}\n"),
+        )
+        .replace(
+            "        tolerance: 0.060 per 1000\n",
+            &format!("        tolerance: 0.060 per 1000\n        optics: {pair}\n"),
+        );
+    assert_eq!(text.matches("optics:").count(), 3);
+    let file = dir.join("campaign.yaml");
+    std::fs::write(&file, text).unwrap();
+    let out = root.join("out");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert_eq!(code, 1, "Y's straightness fails: {stdout}{stderr}");
+    serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap()
+}
+
+fn squareness_test(results: &Value) -> &Value {
+    (results["axes"].as_array().unwrap().iter())
+        .find(|t| t["geometry"]["test"] == "squareness")
+        .unwrap()
+}
+
+/// `optics:` on a straightness, an angular test and a squareness pair: each U grows by
+/// the optics' bound worked by hand (rectangular: u = bound/√3, U² grows by 4u²), the
+/// budget has the line and the notes name the specification; `eval --optics` agrees.
+#[test]
+fn the_optics_stated_enter_u() {
+    let (bare, _) = run("optics-bare");
+    let with = run_with_optics(
+        "stated",
+        "{percent: 0.5, fixed: 0.5, per_m: 0.15}",
+        "{percent: 0.2, fixed: 0.5, per_m2: 0.1}",
+        "hp5528a-squareness-long",
+    );
+    let u_of = |t: &Value| f(&t["geometry"]["uncertainty"]["U"]);
+    let grows = |before: f64, after: f64, bound: f64| {
+        let u = bound / 3f64.sqrt();
+        let by = (after * after - before * before) / 4.0;
+        assert!(
+            (by - u * u).abs() < 1e-9,
+            "{before} → {after}: {by} for {u}²"
+        );
+    };
+    // EYX: 8.124 µm over 1 m: 0.5 % × 8.124 + 0.5 + 0.15 × 1 = 0.69062 µm.
+    let (b, w) = (test(&bare, "EYX"), test(&with, "EYX"));
+    let value = f(&w["geometry"]["bidirectional"]["deviation_um"]);
+    let bound = 0.005 * value + 0.5 + 0.15;
+    assert_eq!(format!("{bound:.5}"), "0.69062");
+    grows(u_of(b), u_of(w), bound);
+    let lines = w["geometry"]["uncertainty"]["budget"]["lines"].to_string();
+    assert!(lines.contains("\"optics\""), "{lines}");
+    let notes = w["geometry"]["uncertainty"]["notes"].to_string();
+    assert!(
+        notes.contains("±(0.5 % of the value + 0.5 + 0.15·M) µm"),
+        "{notes}"
+    );
+    assert!(!notes.contains("was not stated"), "{notes}");
+    assert!(
+        b["geometry"]["uncertainty"]["notes"]
+            .to_string()
+            .contains("was not stated")
+    );
+    let eval = eval_json(&[
+        "tests/data/geometry/x-straightness-y.csv",
+        "--test",
+        "straightness",
+        "--local",
+        "300",
+        "--optics",
+        "0.5,0.5,0.15",
+    ]);
+    assert_eq!(w["geometry"]["uncertainty"]["U"], eval["uncertainty"]["U"]);
+    // EBX: 20.20″ over 1 m: 0.2 % × 20.20 + 0.5 + 0.1 × 1² = 0.6404″.
+    let (b, w) = (test(&bare, "EBX"), test(&with, "EBX"));
+    let value = f(&w["geometry"]["deviation_arcsec"]);
+    let bound = 0.002 * value + 0.5 + 0.1;
+    assert_eq!(format!("{bound:.4}"), "0.6404");
+    grows(u_of(b), u_of(w), bound);
+    // X-Y: −8.2223″, the longer travel 1 m, long-range optics: 2.5 % × 8.2223 + 0.5 +
+    // 0.01 × 1 = 0.71556″.
+    let (b, w) = (squareness_test(&bare), squareness_test(&with));
+    let theta = f(&w["geometry"]["error_arcsec"]);
+    let bound = 0.025 * theta.abs() + 0.5 + 0.01;
+    assert_eq!(format!("{bound:.5}"), "0.71556");
+    grows(u_of(b), u_of(w), bound);
+    let notes = w["geometry"]["uncertainty"]["notes"].to_string();
+    assert!(
+        notes.contains("long-range optics") && notes.contains("section 13"),
+        "{notes}"
+    );
+}
+
+/// `optics:` stops at its line: an unknown name (listing the presets), a preset of
+/// another test (naming both), a term of a wrong form, and on a positioning test.
+#[test]
+fn bad_optics_stop_at_their_line() {
+    let straightness =
+        "        test: straightness\n        direction: Y\n        data: x-straightness-y.csv\n";
+    let e = refused(&format!("{straightness}        optics: xl80-short\n"));
+    assert!(e.contains("campaign.yaml:10:"), "{e}");
+    assert!(e.contains("unknown optics `xl80-short`"), "{e}");
+    assert!(
+        e.contains("hp5528a-squareness-short, hp5528a-squareness-long"),
+        "{e}"
+    );
+    assert!(
+        e.contains("{percent: , fixed: , per_m: , per_m2: } (in µm)"),
+        "{e}"
+    );
+    let e = refused(&format!(
+        "{straightness}        optics: hp5528a-squareness-short\n"
+    ));
+    assert!(e.contains("campaign.yaml:10:"), "{e}");
+    assert!(
+        e.contains("`hp5528a-squareness-short` is the HP 5528A squareness, short-range optics")
+            && e.contains("not for this straightness test"),
+        "{e}"
+    );
+    let e = refused(&format!("{straightness}        optics: {{percent: -1}}\n"));
+    assert!(
+        e.contains("optics.percent: expected a number ≥ 0, got -1"),
+        "{e}"
+    );
+    let e = refused(&format!("{straightness}        optics: {{per_mm: 1}}\n"));
+    assert!(e.contains("per_mm"), "{e}");
+    let e = refused(&format!("{straightness}        optics: {{}}\n"));
+    assert!(e.contains("state the optics' accuracy as"), "{e}");
+    let e = refused(&format!("{straightness}        optics: 0.5\n"));
+    assert!(e.contains("expected a preset's name"), "{e}");
+    let e = refused("        data: x-straightness-y.csv\n        optics: {fixed: 0.5}\n");
+    assert!(
+        e.contains("`optics` belongs to a straightness or angular test"),
+        "{e}"
+    );
+}
+
+/// No test-plan rule is cited for straightness and angular tests
+/// (docs/optics-specifications.md, "Plan rules for the other tests"), and ISO 230-2's do
+/// not hold for them: a straightness of three targets and one run, which would break
+/// 4.3.2's targets and runs, has no finding and is judged, not `noncompliant`; `plan`
+/// does not plan an axis entry that is not a positioning test.
+#[test]
+fn positioning_plan_rules_are_not_applied_to_the_other_tests() {
+    let dir = scratch("geometry-no-plan-rules");
+    let mut csv = String::from("target_mm,direction,run,deviation_um\n");
+    for (target, y) in [(0, 0.0), (500, 1.2), (1000, 0.0)] {
+        csv += &format!("{target},up,1,{y}\n");
+    }
+    for (target, y) in [(1000, 0.1), (500, 1.3), (0, 0.1)] {
+        csv += &format!("{target},down,1,{y}\n");
+    }
+    std::fs::write(dir.join("x.csv"), csv).unwrap();
+    let text = "campaign: {name: sparse}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, test: straightness, direction: Y, data: x.csv, tolerance: 0.020}\n";
+    let file = dir.join("campaign.yaml");
+    std::fs::write(&file, text).unwrap();
+    let out = scratch("geometry-no-plan-rules-out").join("out");
+    let (code, stdout, stderr) = axcheck(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let results: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let t = test(&results, "EYX");
+    assert_eq!(t["rules"], serde_json::json!([]), "{t}");
+    assert_eq!(t["verdict"], "pass");
+    let (code, _, stderr) = axcheck(&[
+        "plan",
+        "--campaign",
+        CAMPAIGN,
+        "--machine",
+        "MILL-G",
+        "--axis",
+        "X",
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("axis `X` of machine `MILL-G` has no positioning test"),
+        "{stderr}"
+    );
+    // An axis whose straightness entry comes first is planned from its positioning entry.
+    let text = "campaign: {name: order}\nmachines:\n  - id: M\n    axes:\n      - {name: X, kind: linear, test: straightness, direction: Y, data: x.csv}\n      - {name: X, kind: linear, travel: [0, 800], data: x.csv}\n";
+    std::fs::write(&file, text).unwrap();
+    let (code, stdout, stderr) = axcheck(&[
+        "plan",
+        "--campaign",
+        file.to_str().unwrap(),
+        "--machine",
+        "M",
+        "--axis",
+        "X",
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.starts_with("Test plan: "), "{stdout}");
+    assert!(stdout.contains("(ISO 230-2:1997)"), "{stdout}");
+}

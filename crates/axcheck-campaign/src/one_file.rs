@@ -6,9 +6,10 @@ use crate::crosscheck::OtherTool;
 use crate::evaluate::json::EvaluationJson;
 use crate::geometry::angular::{self, Angular};
 use crate::geometry::line::ReferenceLine;
+use crate::geometry::optics::Optics;
 use crate::geometry::squareness::{Convention, Squareness};
 use crate::geometry::straightness::{self, Straightness, Trace};
-use crate::geometry::uncertainty::{self as geometry_u, Accuracy, Uncertain};
+use crate::geometry::uncertainty::{self as geometry_u, Uncertain};
 use crate::geometry::{self, TestKind};
 use crate::measurement::{AxisData, Layout, ReadError, ReadOptions, ReadTest, Recognised};
 use crate::nde::NdeCorrection;
@@ -127,7 +128,7 @@ impl OtherResult {
 pub struct OtherOptions {
     pub straightness: straightness::Options,
     /// The optics' accuracy, in the result's unit (µm or arcsec).
-    pub optics: Option<Accuracy>,
+    pub optics: Option<Optics>,
 }
 
 /// `test` (straightness or angular) of `data` with U; `None` when it has too few targets.
@@ -228,7 +229,8 @@ pub struct SquarenessOptions {
     /// The standard uncertainty of that error (its calibration), arcsec.
     pub square_u_arcsec: Option<f64>,
     pub convention: Convention,
-    pub optics: Option<Accuracy>,
+    /// The optics' accuracy, arcsec.
+    pub optics: Option<Optics>,
 }
 
 /// A squareness with U and the two lines it comes from.

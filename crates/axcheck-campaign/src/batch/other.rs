@@ -33,7 +33,7 @@ pub(super) fn run(
             line: raw.line.unwrap_or_default(),
             local_length_mm: local,
         },
-        optics: None,
+        optics: raw.optics,
     };
     let Some((result, mut uncertainty)) = evaluate_other(&data, raw.test, &other) else {
         let message = format!(

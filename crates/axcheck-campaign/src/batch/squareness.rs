@@ -95,7 +95,7 @@ fn evaluate(
         square_error_arcsec: raw.square_error_arcsec,
         square_u_arcsec: raw.square_u_arcsec,
         convention: raw.convention.unwrap_or_default(),
-        optics: None,
+        optics: raw.optics,
     };
     let result = evaluate_squareness(first.0, second.0, &options)
         .map_err(|k| format!("straightness test {k} has fewer than two targets"))?;

@@ -3,11 +3,15 @@
 //! form stops at its line and not after the measurement is read.
 
 use super::AxisRaw;
+use super::model::OpticsStatedRaw;
 use crate::geometry::TestKind;
 use crate::geometry::judge::limits;
+use crate::geometry::optics::{Optics, OpticsError, Preset};
 use crate::geometry::tolerance::Tolerance;
+use crate::geometry::uncertainty::Accuracy;
 use crate::units::AxisKind;
-use crate::yaml::{Located, LocationIndex};
+use crate::yaml::{self, Located, LocationIndex, deserialize_at};
+use serde_norway::Value;
 
 /// The keys of a positioning test that the other tests do not take, with what they are.
 const POSITIONING_ONLY: [&str; 7] = [
@@ -104,7 +108,87 @@ pub(super) fn check(raw: &mut AxisRaw, base: &str, index: &LocationIndex) -> Res
         );
     }
     raw.tolerance = read;
+    raw.optics = optics(raw.written_optics.take(), test, base, index)?;
     Ok(())
+}
+
+/// The `optics:` at `base` of a test of kind `test`: a preset's name stated for that kind
+/// of test, or the specification's terms (`{percent, fixed, per_m, per_m2}`, each ≥ 0, in
+/// the result's unit).
+pub(super) fn optics(
+    written: Option<Value>,
+    test: TestKind,
+    base: &str,
+    index: &LocationIndex,
+) -> Result<Option<Optics>, Located> {
+    let path = format!("{base}.optics");
+    let refuse = |at: &str, why: String| {
+        Located::new(
+            index.value(at).or_else(|| index.key(&path)),
+            format!("{at}: {why}"),
+        )
+    };
+    let unit = match test {
+        TestKind::Straightness => "µm",
+        _ => "arcsec",
+    };
+    let form = format!("{{percent: , fixed: , per_m: , per_m2: }} (in {unit})");
+    let Some(value) = written else {
+        return Ok(None);
+    };
+    match value {
+        Value::Null => Ok(None),
+        Value::String(name) => match Preset::for_test(&name, test) {
+            Ok(p) => Ok(Some(p.into())),
+            Err(e @ OpticsError::Unknown(_)) => Err(refuse(
+                &path,
+                format!("{e}; or state the specification as {form}"),
+            )),
+            Err(e) => Err(refuse(&path, e.to_string())),
+        },
+        Value::Mapping(_) => {
+            let stated: OpticsStatedRaw = deserialize_at(&value, &path, index)?;
+            let terms = [
+                ("percent", stated.percent),
+                ("fixed", stated.fixed),
+                ("per_m", stated.per_m),
+                ("per_m2", stated.per_m2),
+            ];
+            if terms.iter().all(|(_, v)| v.is_none()) {
+                return Err(refuse(
+                    &path,
+                    format!("state the optics' accuracy as {form}, or a preset's name"),
+                ));
+            }
+            for (key, v) in terms {
+                if let Some(v) = v
+                    && !(v >= 0.0 && v.is_finite())
+                {
+                    return Err(refuse(
+                        &format!("{path}.{key}"),
+                        format!("expected a number ≥ 0, got {v}"),
+                    ));
+                }
+            }
+            Ok(Some(
+                Accuracy {
+                    fraction: stated.percent.unwrap_or(0.0) / 100.0,
+                    fixed: stated.fixed.unwrap_or(0.0),
+                    per_m: stated.per_m.unwrap_or(0.0),
+                    per_m2: stated.per_m2.unwrap_or(0.0),
+                }
+                .into(),
+            ))
+        }
+        other => Err(refuse(
+            &path,
+            format!(
+                "expected a preset's name ({}) or {form}, got {}",
+                Accuracy::preset_names().join(", "),
+                yaml::describe(&other)
+            ),
+        )),
+    }
 }
 
 /// A tool point is of a positioning test of a linear axis X, Y or Z, offset across it by
@@ -176,13 +260,14 @@ pub fn rotation_about(letter: char) -> char {
 }
 
 /// The other tests' keys and whether each is written.
-fn geometry_keys(raw: &AxisRaw) -> [(&'static str, bool); 5] {
+fn geometry_keys(raw: &AxisRaw) -> [(&'static str, bool); 6] {
     [
         ("direction", raw.direction.is_some()),
         ("about", raw.about.is_some()),
         ("line", raw.line.is_some()),
         ("local_mm", raw.local_mm.is_some()),
         ("tolerance", !raw.written_tolerance.is_empty()),
+        ("optics", raw.written_optics.is_some()),
     ]
 }
 

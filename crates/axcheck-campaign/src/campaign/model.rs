@@ -4,6 +4,7 @@
 use crate::axis_model::Cycle;
 use crate::geometry::TestKind;
 use crate::geometry::line::ReferenceLine;
+use crate::geometry::optics::Optics;
 use crate::geometry::squareness::Convention;
 use crate::geometry::tolerance::Tolerance;
 use crate::judge::{DecisionRule, Tolerances};
@@ -181,6 +182,12 @@ pub struct SquarenessRaw {
     pub(super) written_tolerance: Vec<String>,
     #[serde(skip_deserializing, skip_serializing_if = "Vec::is_empty")]
     pub tolerance: Vec<(String, Tolerance)>,
+    /// The optics' accuracy for U, as an axis entry's `optics:` (arcsec): checked by the
+    /// loader.
+    #[serde(rename = "optics", default, skip_serializing)]
+    pub(super) written_optics: Option<Value>,
+    #[serde(skip_deserializing, skip_serializing_if = "Option::is_none")]
+    pub optics: Option<Optics>,
 }
 
 /// An axis as written in the campaign.
@@ -288,11 +295,34 @@ pub struct AxisRaw {
     /// The tolerances, each beside its text.
     #[serde(skip_deserializing, skip_serializing_if = "Vec::is_empty")]
     pub tolerance: Vec<(String, Tolerance)>,
+    /// Straightness or angular: the optics' accuracy for U, a preset's name or `{percent:
+    /// 0.5, fixed: 0.5, per_m: 0, per_m2: 0.15}` in the result's unit (µm or arcsec): read
+    /// by serde, then checked and moved into `optics` by the loader.
+    #[serde(rename = "optics", default, skip_serializing)]
+    pub(super) written_optics: Option<Value>,
+    /// The optics as stated.
+    #[serde(skip_deserializing, skip_serializing_if = "Option::is_none")]
+    pub optics: Option<Optics>,
     /// Positioning: where the tool point is from the laser beam, mm (`{y_mm: 0, z_mm:
     /// 150}` for an X axis whose beam runs 150 mm below it): the test is also carried to
     /// it through the axis's angular tests in the campaign (Abbe, `geometry::abbe`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tool_point: Option<ToolPointRaw>,
+}
+
+/// An optics' accuracy stated as numbers (`optics: {percent: 0.5, fixed: 0.5}`): ±(percent %
+/// of the value + fixed + per_m·M + per_m2·M²), M the travel in m, in the result's unit.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OpticsStatedRaw {
+    #[serde(default)]
+    pub percent: Option<f64>,
+    #[serde(default)]
+    pub fixed: Option<f64>,
+    #[serde(default)]
+    pub per_m: Option<f64>,
+    #[serde(default)]
+    pub per_m2: Option<f64>,
 }
 
 /// The tool point's offsets from the beam across the axis, mm (the axis's own left out).

@@ -104,6 +104,8 @@ fn entry(
     }
     limits(TestKind::Squareness, &read, 1.0).map_err(|e| refuse("tolerance", e.to_string()))?;
     raw.tolerance = read;
+    raw.optics =
+        super::geometry::optics(raw.written_optics.take(), TestKind::Squareness, base, index)?;
     if let Some(u) = raw.square_u_arcsec
         && !(u >= 0.0 && u.is_finite())
     {

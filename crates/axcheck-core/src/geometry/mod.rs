@@ -14,6 +14,7 @@ pub mod abbe;
 pub mod angular;
 pub mod judge;
 pub mod line;
+pub mod optics;
 pub mod squareness;
 pub mod straightness;
 pub mod tolerance;

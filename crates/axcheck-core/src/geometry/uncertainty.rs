@@ -10,14 +10,15 @@
 //! - A slope by least squares from means of standard uncertainty u: u(m) = u/√Σ(Pᵢ − P̄)²;
 //!   through the end points: u(m) = √2·u/L (each end's mean).
 //! - The optics' accuracy, as the laser's specification states it (a fraction of the
-//!   value, a fixed part, a part per metre of travel), is a rectangular bound. No
-//!   specification of straightness or angular optics was available to the project to
-//!   default to: unstated, the budget has no such line and says so. The HP 5528A's
-//!   squareness specification (User's Guide, section 13 "Squareness", its accuracy
-//!   statement: short-range optics ±(0.5 + 0.1·M)″ ± 1 % of θ, M the travel in metres) is
-//!   offered as a named preset.
+//!   value, a fixed part, a part per metre of travel and one per square metre), is a
+//!   rectangular bound. No specification of straightness or angular optics could be
+//!   sourced legibly (docs/optics-specifications.md): unstated, the budget has no such
+//!   line and says so. The HP 5528A's squareness specifications (User's Guide, section 13,
+//!   short- and long-range optics) are presets ([`super::optics`]).
 
 use super::line::ReferenceLine;
+pub use super::optics::Accuracy;
+use super::optics::Optics;
 use super::straightness::Extreme;
 use crate::evaluate::stats::sample_sd;
 use crate::measurement::AxisData;
@@ -27,29 +28,6 @@ use serde::Serialize;
 
 /// Coverage factor of U.
 pub const K: f64 = 2.0;
-
-/// An optics' accuracy as a laser specification states it: ±(fraction·|value| + fixed +
-/// per_m·travel in m), in the result's unit.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
-pub struct Accuracy {
-    pub fraction: f64,
-    pub fixed: f64,
-    pub per_m: f64,
-}
-
-impl Accuracy {
-    /// HP 5528A squareness, short-range optics: ±(0.5 + 0.1·M)″ ± 1 % of θ (User's Guide
-    /// section 13 "Squareness", its accuracy statement).
-    pub const HP_5528A_SQUARENESS_SHORT: Accuracy = Accuracy {
-        fraction: 0.01,
-        fixed: 0.5,
-        per_m: 0.1,
-    };
-
-    fn bound(&self, value: f64, travel_mm: f64) -> f64 {
-        self.fraction * value.abs() + self.fixed + self.per_m * travel_mm / 1000.0
-    }
-}
 
 /// U of one result with its budget and what it leaves out.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -107,18 +85,19 @@ fn scatter_line(
 }
 
 fn optics_line(
-    accuracy: Option<Accuracy>,
+    optics: Option<Optics>,
     value: f64,
     travel_mm: f64,
     unit: &'static str,
     notes: &mut Vec<String>,
 ) -> Option<BudgetLine> {
-    let Some(a) = accuracy else {
+    let Some(o) = optics else {
         notes.push("the optics' accuracy was not stated: U holds the scatter only".into());
         return None;
     };
+    notes.push(o.describe(unit));
     let input = Input {
-        value: a.bound(value, travel_mm),
+        value: o.accuracy.bound(value, travel_mm),
         unit,
         distribution: Distribution::Rectangular,
     };
@@ -131,7 +110,7 @@ pub fn straightness(
     data: &AxisData,
     line: ReferenceLine,
     direction: Option<Direction>,
-    optics: Option<Accuracy>,
+    optics: Option<Optics>,
 ) -> Option<Uncertain> {
     let p = &data.targets;
     let directions = match direction {
@@ -156,7 +135,7 @@ pub fn straightness(
 
 /// U of an angular deviation (both directions' means): the scatter at its largest and
 /// smallest mean, and the optics.
-pub fn angular(data: &AxisData, optics: Option<Accuracy>) -> Option<Uncertain> {
+pub fn angular(data: &AxisData, optics: Option<Optics>) -> Option<Uncertain> {
     let mut lo = (f64::INFINITY, 0, Direction::Up);
     let mut hi = (f64::NEG_INFINITY, 0, Direction::Up);
     for d in [Direction::Up, Direction::Down] {
@@ -217,7 +196,7 @@ pub fn squareness(
     line: ReferenceLine,
     error_arcsec: f64,
     square_u_arcsec: Option<f64>,
-    optics: Option<Accuracy>,
+    optics: Option<Optics>,
 ) -> Uncertain {
     let mut notes = Vec::new();
     let mut lines = Vec::new();
@@ -285,10 +264,40 @@ mod tests {
             fraction: 0.002,
             fixed: 0.5,
             per_m: 0.0,
+            per_m2: 0.0,
         };
-        let u = straightness(&data, ReferenceLine::EndPoint, None, Some(optics)).unwrap();
+        let u = straightness(&data, ReferenceLine::EndPoint, None, Some(optics.into())).unwrap();
         let c = (0.2449f64.powi(2) + 0.2944f64.powi(2)).sqrt() * 2.0;
         assert!((u.expanded - c).abs() < 1e-3, "{} {c}", u.expanded);
+        assert_eq!(
+            u.notes,
+            ["the optics as stated: ±(0.2 % of the value + 0.5) µm"]
+        );
+    }
+
+    #[test]
+    fn a_term_per_square_metre_by_hand() {
+        // A specification ±(0.5 % of the value + 0.5 + 0.15·M²) µm over 0 … 400 mm for a
+        // straightness of 5 µm: 0.025 + 0.5 + 0.15 · 0.16 = 0.549 µm; u = 0.549/√3 =
+        // 0.31697 µm. With the scatter's √2·0.3/√3 = 0.24495 µm: U = 2·√(0.24495² +
+        // 0.31697²) = 2·√0.160467 = 0.8012.
+        let targets: Vec<f64> = (0..=4).map(|k| k as f64 * 100.0).collect();
+        let mut data = test(&targets, 3, |x| if x == 200.0 { 5.0 } else { 0.0 }, 0.0);
+        data = data.map_deviations(|r| r.deviation + 0.3 * (r.run as f64 - 1.0));
+        let optics = Accuracy {
+            fraction: 0.005,
+            fixed: 0.5,
+            per_m: 0.0,
+            per_m2: 0.15,
+        };
+        assert!((optics.bound(5.0, 400.0) - 0.549).abs() < 1e-12);
+        assert!((optics.bound(-5.0, 2000.0) - (0.025 + 0.5 + 0.6)).abs() < 1e-12);
+        let u = straightness(&data, ReferenceLine::EndPoint, None, Some(optics.into())).unwrap();
+        let line = u.budget.line("optics").unwrap();
+        assert!((line.value - 0.549).abs() < 1e-12, "{}", line.value);
+        assert!((line.u - 0.549 / 3f64.sqrt()).abs() < 1e-12);
+        assert_eq!(format!("{:.4}", u.expanded), "0.8012");
+        assert!(u.notes[0].contains("0.15·M²"), "{:?}", u.notes);
     }
 
     #[test]
@@ -317,10 +326,28 @@ mod tests {
             ReferenceLine::LeastSquares,
             -5.2,
             Some(0.1),
-            Some(Accuracy::HP_5528A_SQUARENESS_SHORT),
+            Some(Accuracy::HP_5528A_SQUARENESS_SHORT.into()),
         );
         let optics = s.budget.line("optics").unwrap();
         assert!((optics.value - 0.652).abs() < 1e-12);
         assert_eq!(s.budget.lines.len(), 4);
+        // The long-range optics, named: 2.5 % of 5.2 = 0.13, 0.5, 0.01: 0.64″, and the note
+        // names the preset and its source.
+        let preset = super::super::optics::Preset::find("hp5528a-squareness-long").unwrap();
+        let s = squareness(
+            &data,
+            &data,
+            ReferenceLine::LeastSquares,
+            -5.2,
+            Some(0.1),
+            Some(preset.into()),
+        );
+        let optics = s.budget.line("optics").unwrap();
+        assert!((optics.value - 0.64).abs() < 1e-12, "{}", optics.value);
+        assert!(
+            s.notes
+                .iter()
+                .any(|n| n.contains("long-range") && n.contains("section 13"))
+        );
     }
 }
