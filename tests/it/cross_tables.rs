@@ -370,7 +370,7 @@ fn a_campaign_writes_and_verifies_cross_tables() {
         z["cross_table"]["refused"]
             .as_str()
             .unwrap()
-            .starts_with("withheld"),
+            .starts_with("withheld because"),
         "{z}"
     );
     assert!(!out.join("compensation/M/X-EZX.COM").exists());

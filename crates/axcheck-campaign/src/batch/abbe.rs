@@ -34,18 +34,15 @@ pub(crate) fn fit_all(tests: &mut [Tested]) {
                 Some((a, lever, sign))
             })
             .collect();
-        let angles: Vec<Box<dyn Fn(f64, Direction) -> Option<f64> + '_>> = (found.iter())
-            .map(|(a, _, _)| {
-                Box::new(move |x: f64, d| a.trace.at(x, d))
-                    as Box<dyn Fn(f64, Direction) -> Option<f64>>
-            })
+        let angles: Vec<_> = (found.iter())
+            .map(|(a, _, _)| move |x: f64, d: Direction| a.trace.at(x, d))
             .collect();
         let rotations: Vec<Rotation> = (found.iter().zip(&angles))
             .map(|((a, lever, sign), angle)| Rotation {
                 symbol: &a.symbol,
                 lever: *lever,
                 sign: *sign,
-                angle_arcsec: angle.as_ref(),
+                angle_arcsec: angle,
             })
             .collect();
         if rotations.is_empty() {

@@ -244,11 +244,8 @@ fn withhold(cross: &mut CrossOutcome, result: &Result<cross::verify::CrossVerifi
     );
     if failed && matches!(cross.table, Some(Ok(_))) {
         cross.table = Some(Err(format!(
-            "withheld: the loaded cross table did not act as predicted ({}), so a table built on it would be wrong too; correct the loading first",
-            serde_json::to_value(v.verdict)
-                .ok()
-                .and_then(|s| s.as_str().map(str::to_string))
-                .unwrap_or_default()
+            "withheld because the loaded cross table did not act as predicted ({}): a table built on it would be wrong too; correct the loading first",
+            v.verdict.key()
         )));
     }
 }

@@ -6,6 +6,7 @@
 use super::conditions::Row;
 use super::{CampaignHeader, generator, num, pos, short_name};
 use crate::charts::geometry::GeometryChart;
+use crate::compensate::cross::verify::CrossFinding;
 use crate::geometry::TestKind;
 use crate::geometry::line::{Line, ReferenceLine};
 use crate::judge::Conformance;
@@ -33,6 +34,8 @@ pub struct OtherReport<'a> {
     /// Where U comes from, in words.
     u_method: &'static str,
     notes: &'a [String],
+    /// A straightness test's cross table and its verification, a line each (empty: none).
+    cross: Vec<Row>,
     has_chart: bool,
     chart_title: &'static str,
     generator: String,
@@ -93,6 +96,7 @@ pub fn other_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> Option<O
             _ => "from the scatter of the means at the value's extremes",
         },
         notes: &o.uncertainty.notes,
+        cross: cross(o),
         has_chart: chart(o).is_some(),
         chart_title: match o.test {
             TestKind::Straightness => "Mean deviations about the reference line",
@@ -153,6 +157,56 @@ fn values(o: &OtherTested) -> Vec<ValueRow> {
             outcome: check.map(|c| c.outcome),
         })
         .collect()
+}
+
+/// The cross table written for the controller (or why none) and the verification of a
+/// loaded one, as the report states them.
+fn cross(o: &OtherTested) -> Vec<Row> {
+    let Some(c) = o.cross.as_deref() else {
+        return Vec::new();
+    };
+    let table = c.table.as_ref().map(|t| match t {
+        Ok(t) => format!(
+            "{} ({}): {} corrected as a function of {} at {} points; straightness {} µm measured, {} µm predicted; each value is added to {}'s command",
+            t.format,
+            t.mode_key(),
+            t.table.output,
+            t.table.input,
+            t.table.positions_mm.len(),
+            num(t.measured_um),
+            num(t.predicted_um),
+            t.table.output
+        ),
+        Err(why) => format!("not written: {why}"),
+    });
+    let warnings = (c.table.as_ref().and_then(|t| t.as_ref().ok()))
+        .map(|t| t.warnings.join("; "))
+        .filter(|w| !w.is_empty());
+    let verification = c.verification.as_ref().map(|v| match v {
+        Ok(v) => {
+            let findings: Vec<String> = (v.findings.iter())
+                .map(|f| match f {
+                    CrossFinding::WrongAxis { output } => format!("wrong_axis: {output}"),
+                    other => other.key().to_string(),
+                })
+                .collect();
+            format!(
+                "{}{}: straightness {} µm before, {} µm predicted, {} µm achieved (scatter of a mean {} µm)",
+                v.verdict.key(),
+                if findings.is_empty() { String::new() } else { format!(" ({})", findings.join(", ")) },
+                num(v.before_um),
+                num(v.predicted_um),
+                num(v.achieved_um),
+                num(v.scatter_um)
+            )
+        }
+        Err(why) => format!("not made: {why}"),
+    });
+    Row::present([
+        ("Cross-axis table", table),
+        ("Table warnings", warnings),
+        ("Loaded table verified", verification),
+    ])
 }
 
 /// A budget line's contributor in words.

@@ -124,6 +124,16 @@ pub fn compensate(
     })
 }
 
+impl CrossCompensation {
+    /// `absolute` or `incremental`, as the JSON writes the mode.
+    pub fn mode_key(&self) -> &'static str {
+        match self.mode {
+            Mode::Absolute => "absolute",
+            Mode::Incremental => "incremental",
+        }
+    }
+}
+
 /// The axes named, else the active table's; a stated name that contradicts the active
 /// table is refused (the table would build on another axis's correction).
 fn names(request: &CrossRequest, active: Option<&CrossTable>) -> Result<(String, String), Refused> {

@@ -29,6 +29,28 @@ pub enum CrossVerdict {
     MadeWorse,
 }
 
+impl CrossVerdict {
+    /// The verdict's key, as the JSON writes it.
+    pub fn key(self) -> &'static str {
+        match self {
+            CrossVerdict::Effective => "effective",
+            CrossVerdict::PartlyEffective => "partly_effective",
+            CrossVerdict::NotEffective => "not_effective",
+            CrossVerdict::MadeWorse => "made_worse",
+        }
+    }
+}
+
+impl CrossFinding {
+    /// The effect's key, as the JSON writes it.
+    pub fn key(&self) -> &'static str {
+        match self {
+            CrossFinding::SignInverted => "sign_inverted",
+            CrossFinding::WrongAxis { .. } => "wrong_axis",
+        }
+    }
+}
+
 /// Why the table did not act as predicted, when the tests say.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "effect", rename_all = "snake_case")]

@@ -1,6 +1,6 @@
 use super::*;
 use crate::axis_model::Simulation;
-use crate::geometry::angular::Trace;
+use crate::measurement::AxisData;
 
 /// MILL-8's X as the example simulates it, with a pitch of `bow` arcsec in the middle of
 /// the travel (and 22″/m), the beam `beam_z` mm from the tool point along Z.
@@ -21,16 +21,31 @@ fn simulation(bow: f64, beam_z: f64) -> Simulation {
     .unwrap()
 }
 
+/// The pitch test's mean angle at `x` in direction `d`, linear between its targets (as
+/// `geometry::angular::Trace` reads it, which this layer does not use).
+fn trace(pitch: &AxisData, x: f64, d: Direction) -> Option<f64> {
+    let t = &pitch.targets;
+    let mean = |i: usize| {
+        let r = pitch.deviations(i, d);
+        r.iter().sum::<f64>() / r.len() as f64
+    };
+    if x < t[0] - 1e-6 || x > t[t.len() - 1] + 1e-6 {
+        return None;
+    }
+    let k = t.partition_point(|&p| p < x).clamp(1, t.len() - 1);
+    let u = ((x - t[k - 1]) / (t[k] - t[k - 1])).clamp(0.0, 1.0);
+    Some(mean(k - 1) + u * (mean(k) - mean(k - 1)))
+}
+
 fn fitted(bow: f64, beam_z: f64, seed: u64) -> AbbeFit {
     let s = simulation(bow, beam_z);
     let positioning = s.run(seed);
     let pitch = s.run_geometry(seed, 'B').unwrap();
-    let trace = Trace::of(&pitch);
     let rotation = Rotation {
         symbol: "EBX",
         lever: 'Z',
         sign: 1.0,
-        angle_arcsec: &|x, d| trace.at(x, d),
+        angle_arcsec: &|x, d| trace(&pitch, x, d),
     };
     fit(&positioning, &[rotation]).unwrap()
 }
