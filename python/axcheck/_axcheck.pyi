@@ -34,10 +34,10 @@ def straightness(
     line: str = "least_squares",
     local: Optional[float] = None,
     direction: Optional[str] = None,
-    optics: Union[Tuple[float, float, float], str, None] = None,
+    optics: Union[Tuple[float, float, float], Tuple[float, float, float, float], str, None] = None,
 ) -> str: ...
 def angular(
-    m: Measurement, direction: Optional[str] = None, optics: Union[Tuple[float, float, float], str, None] = None
+    m: Measurement, direction: Optional[str] = None, optics: Union[Tuple[float, float, float], Tuple[float, float, float, float], str, None] = None
 ) -> str: ...
 def squareness(
     first: Measurement,
@@ -46,7 +46,7 @@ def squareness(
     square_error: float = 0.0,
     convention: str = "over_90",
     square_u: Optional[float] = None,
-    optics: Union[Tuple[float, float, float], str, None] = None,
+    optics: Union[Tuple[float, float, float], Tuple[float, float, float, float], str, None] = None,
 ) -> str: ...
 def read_text(text: str, name: str) -> Measurement: ...
 def evaluate(
