@@ -179,6 +179,7 @@ pub fn evaluate(data: &[u8]) {
             pitch: Some(5.0),
             planned: None,
             unstated: None,
+            calibration: None,
         };
         let _ = rules::check(&ctx, &axis);
     }

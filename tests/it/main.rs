@@ -28,6 +28,7 @@ mod history;
 #[cfg(unix)]
 mod hostile_fs;
 mod injection;
+mod instrument_calibration;
 mod iso230_2;
 mod layouts;
 #[cfg(unix)]

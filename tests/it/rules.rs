@@ -54,6 +54,7 @@ fn ctx(kind: AxisKind) -> PlanContext {
         pitch: None,
         planned: None,
         unstated: None,
+        calibration: None,
     }
 }
 

@@ -322,6 +322,7 @@ fn run_test(
     let mut context = stages::rules::context(axis);
     context.planned = slot.planned.clone();
     context.unstated = Some(unstated.clone());
+    context.calibration = stages::rules::calibration(axis, campaign, &recognised);
     let findings = rules::check(&context, &data);
     let evaluation = stages::evaluate::evaluate(axis, &data);
     let rule = stages::judge::decision_rule(axis, spec, campaign.decision_rule);

@@ -238,6 +238,16 @@ fn check_instrument(raw: &AxisRaw, base: &str, index: &LocationIndex) -> Result<
         ("dead_path_mm", i.dead_path_mm, false),
         ("beam_walk_mm", i.beam_walk_mm, false),
     ];
+    if let Some(c) = &i.calibration
+        && let (Some(on), Some(due)) = (&c.calibrated_on, &c.due)
+        && due < on
+    {
+        let path = format!("{base}.conditions.instrument.calibration.due");
+        return Err(Located::new(
+            index.value(&path),
+            format!("{path}: {due} is before the calibration on {on}"),
+        ));
+    }
     for (key, value, positive) in fields {
         let Some(v) = value else { continue };
         let ok = v.is_finite() && if positive { v > 0.0 } else { v >= 0.0 };

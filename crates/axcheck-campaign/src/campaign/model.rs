@@ -630,6 +630,34 @@ pub struct InstrumentEntry {
     pub serial: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub position: Option<String>,
+    /// Its calibration: a test after the due date is not traceable
+    /// (`instrument-calibration-due`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub calibration: Option<CalibrationEntry>,
+}
+
+/// An instrument's calibration as its certificate states it (ISO/IEC 17025:2017 6.4.13 e):
+/// the certificate's number, the day it was calibrated, the day the next calibration is
+/// due, and the body that calibrated it.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CalibrationEntry {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub certificate: Option<String>,
+    #[serde(
+        default,
+        deserialize_with = "iso_date",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub calibrated_on: Option<String>,
+    #[serde(
+        default,
+        deserialize_with = "iso_date",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub due: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub body: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -696,7 +724,7 @@ fn iso_date<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<String>
     }
 }
 
-fn is_iso_date(s: &str) -> bool {
+pub(crate) fn is_iso_date(s: &str) -> bool {
     let b = s.as_bytes();
     b.len() == 10
         && b[4] == b'-'

@@ -278,6 +278,7 @@ fn findings(plan: &Plan) -> Result<Vec<Violation>, PlanError> {
         pitch,
         planned: None,
         unstated: None,
+        calibration: None,
     };
     let mut out = rules::check(&ctx(plan.axis.pitch), &data);
     // The plan's deviations are placeholders (all 0): what the rules say of measured

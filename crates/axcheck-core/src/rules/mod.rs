@@ -11,6 +11,7 @@ mod data_unit;
 mod gost_2_10_runs;
 mod gost_2_7_targets;
 mod gost_2_8_cardinal;
+mod instrument_calibration_due;
 mod iso_2_2_measurement_travel;
 mod iso_2_2_reversal_room;
 mod iso_3_3_thermal;
@@ -77,6 +78,18 @@ pub struct PlanContext {
     /// The clause 7.1 conditions the campaign does not state (`None`: not a campaign's
     /// test, e.g. a plan before the measurement).
     pub unstated: Option<Vec<&'static str>>,
+    /// The instrument's stated calibration and the test's date (`None`: not stated).
+    pub calibration: Option<CalibrationDue>,
+}
+
+/// The instrument's calibration as stated, against the test's date; dates as
+/// `YYYY-MM-DD`, which compare as text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CalibrationDue {
+    pub instrument: String,
+    pub certificate: Option<String>,
+    pub due: String,
+    pub test_date: String,
 }
 
 /// A planned test as the rules compare it: its targets (mm or deg) and runs, or why its
@@ -151,6 +164,7 @@ pub const RULES: &[Rule] = &[
     data_unit::RULE,
     plan_targets::RULE,
     iso_7_1_conditions::RULE,
+    instrument_calibration_due::RULE,
 ];
 
 /// Checks the plan of one test.

@@ -18,6 +18,7 @@ pub fn context(axis: &AxisSpec) -> PlanContext {
         pitch: axis.raw.pitch,
         planned: None,
         unstated: None,
+        calibration: None,
     }
 }
 
@@ -64,4 +65,36 @@ pub fn unstated(
         air_per_reading: data.temperature_names.iter().any(air),
     };
     crate::campaign::clause7_1::unstated(axis, &known)
+}
+
+/// The instrument's calibration due date against the test's date (the file's when it
+/// writes one YYYY-MM-DD, else the campaign's), where both are stated.
+pub fn calibration(
+    axis: &AxisSpec,
+    campaign: &CampaignInfo,
+    recognised: &Recognised,
+) -> Option<rules::CalibrationDue> {
+    let instrument = axis.raw.conditions.instrument.as_ref()?;
+    let c = instrument.calibration.as_ref()?;
+    let file_date = (recognised.info.as_ref())
+        .and_then(|i| i.date.clone())
+        .filter(|d| crate::campaign::model::is_iso_date(d));
+    let name = [
+        instrument.name.clone(),
+        instrument.serial.clone().map(|s| format!("s/n {s}")),
+    ]
+    .into_iter()
+    .flatten()
+    .collect::<Vec<_>>()
+    .join(" ");
+    Some(rules::CalibrationDue {
+        instrument: if name.is_empty() {
+            "(unnamed)".into()
+        } else {
+            name
+        },
+        certificate: c.certificate.clone(),
+        due: c.due.clone()?,
+        test_date: file_date.or_else(|| campaign.date.clone())?,
+    })
 }
