@@ -363,6 +363,14 @@ fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session::Ru
         history: (args.history.clone()).or_else(|| campaign.history.clone()),
         horizon: trend_options(args.horizon_years, campaign)?,
         wait: args.wait,
+        flags: axcheck::inputs::RunFlags {
+            no_pdf: args.no_pdf,
+            no_html: args.no_html,
+            no_diagnose: args.no_diagnose,
+            templates: (args.templates.as_deref()).map(|p| p.to_string_lossy().into_owned()),
+            history: (args.history.as_deref()).map(|p| p.to_string_lossy().into_owned()),
+            horizon: args.horizon_years,
+        },
     })
 }
 
