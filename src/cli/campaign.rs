@@ -280,6 +280,26 @@ pub struct RunArgs {
     wait: bool,
 }
 
+impl RunArgs {
+    /// The arguments of a recorded run (`results.json` `inputs`), into `out`: what
+    /// `reproduce` runs again.
+    pub fn recorded(campaign: PathBuf, out: PathBuf, flags: &axcheck::inputs::RunFlags) -> RunArgs {
+        RunArgs {
+            campaign,
+            out,
+            jobs: 0,
+            no_pdf: flags.no_pdf,
+            no_html: flags.no_html,
+            no_diagnose: flags.no_diagnose,
+            templates: flags.templates.as_ref().map(PathBuf::from),
+            progress: false,
+            history: flags.history.as_ref().map(PathBuf::from),
+            horizon_years: flags.horizon,
+            wait: false,
+        }
+    }
+}
+
 /// `axcheck check`'s arguments.
 #[derive(clap::Args)]
 pub struct CheckArgs {
@@ -352,7 +372,7 @@ fn run_with_console(
 /// `run`'s flags over the campaign's own settings: `--no-pdf`, `--no-html` and
 /// `--no-diagnose` turn off what `campaign.output` turns on; `--history` and `--horizon`
 /// override `campaign.history` and `campaign.trend_horizon_years`.
-fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session::RunOptions<'a>> {
+pub fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session::RunOptions<'a>> {
     let output = &campaign.info.output;
     Ok(session::RunOptions {
         out: Some(&args.out),

@@ -6,12 +6,14 @@ use super::{Appended, RunOptions};
 use crate::inputs::{Folder, History, InputFile, Inputs};
 use std::path::Path;
 
-/// `inputs` (the campaign's files, from the batch) with the rest of the run.
+/// `inputs` (the campaign's files, from the batch) with the rest of the run;
+/// `campaign_history`: the campaign's `history:` as written.
 pub(super) fn complete(
     inputs: Inputs,
     plan: &RunOptions,
     reports: Option<&crate::report::Reports>,
     appended: Option<&Appended>,
+    campaign_history: Option<&str>,
 ) -> Inputs {
     let templates = match (plan.templates, reports) {
         (Some(dir), Some(reports)) => Some(Folder {
@@ -20,11 +22,15 @@ pub(super) fn complete(
         }),
         _ => None,
     };
-    let history = (plan.history.as_deref()).zip(appended).map(|(dir, a)| History {
-        folder: dir.to_string_lossy().into_owned(),
-        files: history_files(dir, a.path.as_deref()),
-        written: (a.path.as_deref()).map(|p| crate::files::relative_to(p, dir)),
-    });
+    // Named as given, never by where it lies: `reproduce` runs on a copy.
+    let named = (plan.flags.history.clone()).or_else(|| campaign_history.map(str::to_string));
+    let history = (plan.history.as_deref())
+        .zip(appended)
+        .map(|(dir, a)| History {
+            folder: named.unwrap_or_default(),
+            files: history_files(dir, a.path.as_deref()),
+            written: (a.path.as_deref()).map(|p| crate::files::relative_to(p, dir)),
+        });
     Inputs {
         axcheck: env!("CARGO_PKG_VERSION").to_string(),
         command: plan.flags.command(&inputs.campaign),

@@ -4,10 +4,12 @@
 //! appended to its inspection history and its trends fitted, then every output written
 //! ([`crate::export`]). The command line only prints what [`run`] returns.
 
+pub mod compare;
 mod history;
 mod inputs;
 mod locks;
 mod output_dir;
+pub mod reproduce;
 
 pub use history::{AppendError, Appended};
 pub use locks::lock_folders;
@@ -158,7 +160,8 @@ fn write_run(
     };
     let read = std::mem::take(&mut result.inputs);
     let done = appended.as_ref().and_then(|a| a.as_ref().ok());
-    result.inputs = inputs::complete(read, plan, reports.as_ref(), done);
+    let named = result.info.history.clone();
+    result.inputs = inputs::complete(read, plan, reports.as_ref(), done, named.as_deref());
     let exporters = exporters(plan, reports, trends.as_ref());
     let written =
         export::write_all(&result, &exporters, out).map_err(|source| SessionError::Write {

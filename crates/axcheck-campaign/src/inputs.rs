@@ -42,7 +42,8 @@ pub struct Folder {
 /// The history a run was appended to, and what of it the trends read.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct History {
-    /// As given (`--history DIR`), or the campaign's `history:` joined to its folder.
+    /// As given (`--history DIR`, from the folder `run` ran in), else the campaign's
+    /// `history:` as written (relative to the campaign's folder).
     pub folder: String,
     /// The other runs' files the trends were fitted on (relative to the folder).
     pub files: Vec<InputFile>,
