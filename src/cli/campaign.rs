@@ -282,8 +282,13 @@ pub struct RunArgs {
 
 impl RunArgs {
     /// The arguments of a recorded run (`results.json` `inputs`), into `out`: what
-    /// `reproduce` runs again.
-    pub fn recorded(campaign: PathBuf, out: PathBuf, flags: &axcheck::inputs::RunFlags) -> RunArgs {
+    /// `reproduce` runs again (the folders recorded from the campaign's folder `dir`).
+    pub fn recorded(
+        campaign: PathBuf,
+        dir: &Path,
+        out: PathBuf,
+        flags: &axcheck::inputs::RunFlags,
+    ) -> RunArgs {
         RunArgs {
             campaign,
             out,
@@ -291,9 +296,9 @@ impl RunArgs {
             no_pdf: flags.no_pdf,
             no_html: flags.no_html,
             no_diagnose: flags.no_diagnose,
-            templates: flags.templates.as_ref().map(PathBuf::from),
+            templates: flags.templates.as_ref().map(|t| dir.join(t)),
             progress: false,
-            history: flags.history.as_ref().map(PathBuf::from),
+            history: flags.history.as_ref().map(|h| dir.join(h)),
             horizon_years: flags.horizon,
             wait: false,
         }
@@ -387,11 +392,17 @@ pub fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session
             no_pdf: args.no_pdf,
             no_html: args.no_html,
             no_diagnose: args.no_diagnose,
-            templates: (args.templates.as_deref()).map(|p| p.to_string_lossy().into_owned()),
-            history: (args.history.as_deref()).map(|p| p.to_string_lossy().into_owned()),
+            templates: (args.templates.as_deref()).map(|p| from_campaign(campaign, p)),
+            history: (args.history.as_deref()).map(|p| from_campaign(campaign, p)),
             horizon: args.horizon_years,
         },
     })
+}
+
+/// A folder given on the command line as seen from the campaign's folder (recorded in
+/// `results.json`: no place on this machine).
+fn from_campaign(campaign: &Campaign, path: &Path) -> String {
+    axcheck::files::path_from(&campaign.dir, path)
 }
 
 /// What `run` prints after its outputs are written; the exit status.

@@ -46,14 +46,8 @@ pub fn command(args: &ReproduceArgs) -> Result<u8> {
         inputs.axcheck,
         inputs.command
     ));
-    let places = Places::of(inputs, args.campaign.as_deref())?;
-    if places.campaign != Path::new(&inputs.campaign) {
-        super::say(&format!(
-            "Note: the campaign is read as {}, not as {} as `run` read it: messages in the outputs that quote a file's path may differ",
-            places.campaign.display(),
-            inputs.campaign
-        ));
-    }
+    let places = Places::of(inputs, &recorded.out, args.campaign.as_deref())?;
+    super::say(&format!("Campaign: {}", places.campaign.display()));
     let changes = reproduce::check_inputs(inputs, &places)?;
     if !changes.is_empty() {
         super::say("Inputs changed since the run (nothing was run again):");
@@ -89,8 +83,12 @@ pub fn command(args: &ReproduceArgs) -> Result<u8> {
 fn rerun(places: &Places, inputs: &axcheck::inputs::Inputs, scratch: &Scratch) -> Result<()> {
     let campaign = Campaign::load(&places.campaign)?;
     let out = scratch.dir.join("out");
-    let args = super::campaign::RunArgs::recorded(places.campaign.clone(), out, &inputs.options);
+    let dir = places.campaign.parent().unwrap_or(Path::new(""));
+    let args =
+        super::campaign::RunArgs::recorded(places.campaign.clone(), dir, out, &inputs.options);
     let mut options: RunOptions = super::campaign::run_options(&args, &campaign)?;
+    // As recorded, whatever the folders are called from here (the history is a copy).
+    options.flags = inputs.options.clone();
     if let Some(history) = options.history.take() {
         let copy = scratch.dir.join("history");
         let n = reproduce::copy_history(&history, &copy)?;
@@ -158,11 +156,20 @@ fn print_comparison(c: &Comparison, out: &Path, version: &str) -> u8 {
         ));
         return 0;
     }
+    let extra = (c.differences.iter())
+        .filter(|d| matches!(d, Difference::Extra(_)))
+        .count();
+    let differing = c.differences.len() - extra + c.same_text.len();
+    let extra = match extra {
+        0 => String::new(),
+        1 => ", and 1 output of the run is not written by the re-run".to_string(),
+        n => format!(", and {n} outputs of the run are not written by the re-run"),
+    };
     super::say(&format!(
-        "not identical: {} of the outputs differ from those in {} ({} compared)",
-        c.differences.len() + c.same_text.len(),
+        "not identical: {differing} of the {} outputs {} from those in {}{extra}",
+        c.compared,
+        if differing == 1 { "differs" } else { "differ" },
         out.display(),
-        c.compared
     ));
     for d in &c.differences {
         super::say(&match d {

@@ -15,9 +15,9 @@ pub(super) fn complete(
     appended: Option<&Appended>,
     campaign_history: Option<&str>,
 ) -> Inputs {
-    let templates = match (plan.templates, reports) {
+    let templates = match (&plan.flags.templates, reports) {
         (Some(dir), Some(reports)) => Some(Folder {
-            folder: dir.to_string_lossy().into_owned(),
+            folder: dir.clone(),
             files: reports.templates_read().to_vec(),
         }),
         _ => None,

@@ -24,7 +24,7 @@ pub enum ReproduceError {
     )]
     NoInputs(PathBuf),
     #[error(
-        "cannot find the campaign file {campaign} (the path `run` was given, taken from the folder it ran in); run reproduce from that folder, or give the campaign with --campaign FILE"
+        "cannot find the campaign file {campaign} as the run read it (by its SHA-256) beside the output folder, above it or in the current folder; give it with --campaign FILE"
     )]
     NoCampaign { campaign: String },
     #[error("copying the history {} for the re-run: {cause}", from.display())]
@@ -154,7 +154,7 @@ pub enum InputChange {
 }
 
 /// Where the recorded inputs are now: the campaign file found, and the folders of the
-/// templates and the history.
+/// templates and the history (both recorded from the campaign's folder).
 #[derive(Debug, Clone)]
 pub struct Places {
     pub campaign: PathBuf,
@@ -163,27 +163,68 @@ pub struct Places {
 }
 
 impl Places {
-    /// The campaign at `campaign` (else the path `run` was given, from the current
-    /// folder), the templates and the history as recorded: `--templates` and `--history`
-    /// as given, else the campaign's `history:` beside it.
-    pub fn of(inputs: &Inputs, campaign: Option<&Path>) -> Result<Places, ReproduceError> {
-        let campaign = campaign.map_or_else(|| PathBuf::from(&inputs.campaign), Path::to_path_buf);
-        if std::fs::symlink_metadata(&campaign).is_err() {
-            return Err(ReproduceError::NoCampaign {
-                campaign: campaign.display().to_string(),
-            });
-        }
+    /// The campaign at `campaign`, else the file of the campaign's name and SHA-256 beside
+    /// the output folder `out` or above it, or in the current folder, or in a folder of
+    /// one of these ([`find_campaign`]).
+    pub fn of(
+        inputs: &Inputs,
+        out: &Path,
+        campaign: Option<&Path>,
+    ) -> Result<Places, ReproduceError> {
+        let campaign = match campaign {
+            Some(path) => path.to_path_buf(),
+            None => find_campaign(inputs, out).ok_or_else(|| ReproduceError::NoCampaign {
+                campaign: inputs.campaign.clone(),
+            })?,
+        };
         let dir = campaign.parent().map(Path::to_path_buf).unwrap_or_default();
-        let history = (inputs.history.as_ref()).map(|h| match &inputs.options.history {
-            Some(given) => PathBuf::from(given),
-            None => dir.join(&h.folder),
-        });
         Ok(Places {
-            templates: (inputs.templates.as_ref()).map(|t| PathBuf::from(&t.folder)),
+            templates: (inputs.templates.as_ref()).map(|t| dir.join(&t.folder)),
+            history: (inputs.history.as_ref()).map(|h| dir.join(&h.folder)),
             campaign,
-            history,
         })
     }
+}
+
+/// The campaign file a run read, found by its name and SHA-256 in the output folder's
+/// parent and grandparent and the current folder, or in a folder directly inside one of
+/// them (`out` beside `example-campaign/`); the first in that order, folders by name.
+pub fn find_campaign(inputs: &Inputs, out: &Path) -> Option<PathBuf> {
+    let recorded = (inputs.files.iter()).find(|f| f.path == inputs.campaign)?;
+    let parent = out.parent().unwrap_or(Path::new(""));
+    let grandparent = match parent.as_os_str().is_empty() {
+        true => Path::new(".."),
+        false => parent.parent().unwrap_or(Path::new("")),
+    };
+    let mut seen = Vec::new();
+    for base in [parent, grandparent, Path::new("")] {
+        // `""` is the current folder, which paths joined to it keep relative.
+        let here = match base.as_os_str().is_empty() {
+            true => Path::new("."),
+            false => base,
+        };
+        match std::fs::canonicalize(here) {
+            Ok(real) if seen.contains(&real) => continue,
+            Ok(real) => seen.push(real),
+            Err(_) => continue,
+        }
+        let mut folders: Vec<PathBuf> = (std::fs::read_dir(here).into_iter().flatten())
+            .filter_map(Result::ok)
+            .filter(|e| e.file_type().is_ok_and(|t| t.is_dir()))
+            .map(|e| base.join(e.file_name()))
+            .collect();
+        folders.sort();
+        let found = std::iter::once(base.join(&inputs.campaign))
+            .chain(folders.iter().map(|f| f.join(&inputs.campaign)))
+            .find(|candidate| {
+                crate::files::read(candidate)
+                    .is_ok_and(|bytes| sha256_hex(&bytes) == recorded.sha256)
+            });
+        if found.is_some() {
+            return found;
+        }
+    }
+    None
 }
 
 /// Each recorded input read again and its SHA-256 compared: what changed, in the order
@@ -191,19 +232,14 @@ impl Places {
 /// but cannot be read stops the check (exit 2).
 pub fn check_inputs(inputs: &Inputs, places: &Places) -> Result<Vec<InputChange>, ReproduceError> {
     let dir = places.campaign.parent().unwrap_or(Path::new(""));
-    let campaign_name = crate::files::relative_to(&places.campaign, dir);
     let mut changes = Vec::new();
     for f in &inputs.files {
-        // The campaign file is where it was found, whatever its name.
-        let path = match f.path == inputs_campaign_name(inputs) {
+        // The campaign file is the one found or given, whatever its name.
+        let path = match f.path == inputs.campaign {
             true => places.campaign.clone(),
             false => dir.join(&f.path),
         };
-        let shown = match f.path == inputs_campaign_name(inputs) {
-            true => campaign_name.clone(),
-            false => f.path.clone(),
-        };
-        check_one(&path, &shown, f, &mut changes)?;
+        check_one(&path, &f.path, f, &mut changes)?;
     }
     if let (Some(t), Some(folder)) = (&inputs.templates, &places.templates) {
         for f in &t.files {
@@ -227,14 +263,6 @@ pub fn check_inputs(inputs: &Inputs, places: &Places) -> Result<Vec<InputChange>
         }
     }
     Ok(changes)
-}
-
-/// The campaign file's entry among the recorded files: the name of the path `run` was
-/// given.
-fn inputs_campaign_name(inputs: &Inputs) -> String {
-    let given = Path::new(&inputs.campaign);
-    let dir = given.parent().unwrap_or(Path::new(""));
-    crate::files::relative_to(given, dir)
 }
 
 /// `path` read and its SHA-256 compared with `recorded`'s (named `shown` when not).

@@ -11,13 +11,12 @@ use serde::{Deserialize, Serialize};
 pub struct Inputs {
     /// The version of axcheck that ran.
     pub axcheck: String,
-    /// The campaign file as `run` was given it (relative to the folder `run` ran in,
-    /// unless given whole): messages that quote a file name it by this path.
+    /// The campaign file's name (in its folder, which every other path starts from).
     pub campaign: String,
     /// Every file read from the campaign's folder, the campaign file too: its path
     /// relative to that folder (`/`-separated) and its SHA-256, sorted by path.
     pub files: Vec<InputFile>,
-    /// The templates read from `--templates` (paths relative to that folder); `null` with
+    /// The templates read from `--templates` (paths relative to its folder); `null` with
     /// the built-in templates or without PDFs.
     #[serde(default)]
     pub templates: Option<Folder>,
@@ -26,15 +25,15 @@ pub struct Inputs {
     pub history: Option<History>,
     /// The command-line options of `run` that change its outputs.
     pub options: RunFlags,
-    /// `axcheck run …` with those options (without `--out`, `--jobs` and the options that
-    /// change nothing in the outputs).
+    /// `axcheck run CAMPAIGN …` with those options, as run from the campaign's folder
+    /// (without `--out`, `--jobs` and the options that change nothing in the outputs).
     pub command: String,
 }
 
 /// A folder given on the command line and the files read from it.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Folder {
-    /// As given (`--templates DIR`).
+    /// `--templates DIR` seen from the campaign's folder (`../templates`).
     pub folder: String,
     pub files: Vec<InputFile>,
 }
@@ -42,8 +41,8 @@ pub struct Folder {
 /// The history a run was appended to, and what of it the trends read.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct History {
-    /// As given (`--history DIR`, from the folder `run` ran in), else the campaign's
-    /// `history:` as written (relative to the campaign's folder).
+    /// `--history DIR` seen from the campaign's folder, else the campaign's `history:`
+    /// as written.
     pub folder: String,
     /// The other runs' files the trends were fitted on (relative to the folder).
     pub files: Vec<InputFile>,
@@ -53,8 +52,9 @@ pub struct History {
     pub written: Option<String>,
 }
 
-/// The options of `axcheck run` that change its outputs, as given (each `false` or
-/// `null` when not given; the campaign's own `output:` settings are in its file).
+/// The options of `axcheck run` that change its outputs (each `false` or `null` when not
+/// given; the campaign's own `output:` settings are in its file). The folders are seen
+/// from the campaign's folder, so that the record names no place on one machine.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct RunFlags {
     #[serde(default)]
@@ -63,10 +63,10 @@ pub struct RunFlags {
     pub no_html: bool,
     #[serde(default)]
     pub no_diagnose: bool,
-    /// `--templates DIR`, as given.
+    /// `--templates DIR`, from the campaign's folder.
     #[serde(default)]
     pub templates: Option<String>,
-    /// `--history DIR`, as given.
+    /// `--history DIR`, from the campaign's folder.
     #[serde(default)]
     pub history: Option<String>,
     /// `--horizon YEARS`.
@@ -121,8 +121,8 @@ mod tests {
             ..RunFlags::default()
         };
         assert_eq!(
-            flags.command("camp/campaign.yaml"),
-            "axcheck run camp/campaign.yaml --no-pdf --history 'plant history' --horizon 1.5"
+            flags.command("campaign.yaml"),
+            "axcheck run campaign.yaml --no-pdf --history 'plant history' --horizon 1.5"
         );
         assert_eq!(
             RunFlags::default().command("it's.yaml"),

@@ -127,17 +127,17 @@ pub fn run(
 /// The campaign file and every file read beneath its folder, sorted by path.
 fn inputs(campaign: &Campaign, files: &Files) -> crate::inputs::Inputs {
     let mut read = files.recorded();
+    let name = crate::files::relative_to(&campaign.file, &campaign.dir);
     if let Some(sha256) = &campaign.sha256 {
-        let path = crate::files::relative_to(&campaign.file, &campaign.dir);
-        read.retain(|f| f.path != path);
+        read.retain(|f| f.path != name);
         read.push(crate::inputs::InputFile {
-            path,
+            path: name.clone(),
             sha256: sha256.clone(),
         });
         read.sort();
     }
     crate::inputs::Inputs {
-        campaign: campaign.file.to_string_lossy().into_owned(),
+        campaign: name,
         files: read,
         ..Default::default()
     }

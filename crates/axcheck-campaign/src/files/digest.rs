@@ -63,6 +63,50 @@ pub fn relative_to(path: &Path, dir: &Path) -> String {
     format!("{head}{}", names.join("/"))
 }
 
+/// `path` as seen from the folder `dir`, both through their real paths (the parts that do
+/// not exist yet, as a history folder a run creates, as written): `../templates`,
+/// `history`, `.`; `/`-separated. Where no relative path leads (another drive) or a path
+/// cannot be resolved, `path` as given.
+pub fn path_from(dir: &Path, path: &Path) -> String {
+    let given = || path.to_string_lossy().replace('\\', "/");
+    let (Some(dir), Some(path)) = (resolved(dir), resolved(path)) else {
+        return given();
+    };
+    let (d, p): (Vec<Component>, Vec<Component>) =
+        (dir.components().collect(), path.components().collect());
+    let common = d.iter().zip(&p).take_while(|(a, b)| a == b).count();
+    if common == 0 {
+        return given();
+    }
+    let ups = std::iter::repeat_n("..".to_string(), d.len() - common);
+    let names = p[common..]
+        .iter()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned());
+    let parts: Vec<String> = ups.chain(names).collect();
+    match parts.is_empty() {
+        true => ".".to_string(),
+        false => parts.join("/"),
+    }
+}
+
+/// `path` made absolute through the real path of its nearest existing ancestor.
+fn resolved(path: &Path) -> Option<std::path::PathBuf> {
+    let mut rest = Vec::new();
+    let mut existing = path;
+    loop {
+        let probe = match existing.as_os_str().is_empty() {
+            true => Path::new("."),
+            false => existing,
+        };
+        if let Ok(real) = std::fs::canonicalize(probe) {
+            let real = dunce::simplified(&real).to_path_buf();
+            return Some(rest.iter().rev().fold(real, |p, name| p.join(name)));
+        }
+        rest.push(existing.file_name()?.to_os_string());
+        existing = existing.parent()?;
+    }
+}
+
 /// The files read through one folder ([`super::Root::recording`]), shared by its clones.
 #[derive(Debug, Default)]
 pub struct Recorder {
@@ -118,5 +162,21 @@ mod tests {
         assert_eq!(relative_to(Path::new("x.csv"), Path::new("")), "x.csv");
         #[cfg(unix)]
         assert_eq!(relative_to(Path::new("/data/x.csv"), dir), "/data/x.csv");
+    }
+
+    #[test]
+    fn folders_are_named_from_the_campaigns_folder() {
+        let base = std::env::temp_dir().join(format!("axcheck-path-from-{}", std::process::id()));
+        std::fs::create_dir_all(base.join("plant/camp")).unwrap();
+        std::fs::create_dir_all(base.join("plant/templates")).unwrap();
+        let camp = base.join("plant/camp");
+        assert_eq!(
+            path_from(&camp, &base.join("plant/templates")),
+            "../templates"
+        );
+        // A history a run will create.
+        assert_eq!(path_from(&camp, &camp.join("history/new")), "history/new");
+        assert_eq!(path_from(&camp, &camp), ".");
+        std::fs::remove_dir_all(base).unwrap();
     }
 }

@@ -17,7 +17,7 @@ mod root;
 #[cfg(windows)]
 pub mod windows;
 
-pub use digest::{InputFile, relative_to, sha256_hex, sha256_of};
+pub use digest::{InputFile, path_from, relative_to, sha256_hex, sha256_of};
 pub use real::{OutsidePath, real_path};
 pub use root::{PathRefused, Root, may_match};
 
