@@ -312,7 +312,10 @@ fn what_cannot_be_reproduced_is_said() {
     let (code, stdout, err) = reproduce(&[s(&out)]);
     assert_eq!(code, 0, "{stdout}{err}");
     assert!(
-        stdout.contains(&format!("Campaign: {}", s(&dir.join("renamed/campaign.yaml")))),
+        stdout.contains(&format!(
+            "Campaign: {}",
+            s(&dir.join("renamed/campaign.yaml"))
+        )),
         "{stdout}"
     );
     std::fs::create_dir_all(dir.join("far/away")).unwrap();
