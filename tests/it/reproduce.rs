@@ -189,10 +189,12 @@ fn with_pdfs_templates_and_a_history_the_copy_is_run_and_the_history_kept() {
     let text = crate::common::pdf_text(&out.join("summary.pdf"));
     let vmc = std::fs::read(dir.join("camp/data/vmc07-x.csv")).unwrap();
     assert!(text.contains("Inputs"), "{text}");
-    assert!(
-        text.contains(&axcheck::files::sha256_hex(&vmc)[..16]),
-        "{text}"
-    );
+    let short = &axcheck::files::sha256_hex(&vmc)[..16];
+    assert!(text.contains(short), "{text}");
+    // And each axis report its measurement file's.
+    let report = crate::common::pdf_text(&out.join("reports/VMC-07/X.pdf"));
+    assert!(report.contains("File SHA-256"), "{report}");
+    assert!(report.contains(&format!("{short}…")), "{report}");
     let listing = |dir: &Path| -> Vec<(PathBuf, Vec<u8>, std::time::SystemTime)> {
         let mut all: Vec<_> = (walkdir::WalkDir::new(dir).into_iter())
             .map(Result::unwrap)

@@ -65,6 +65,18 @@ pub fn inputs_list(inputs: &Inputs, listed: usize, digits: usize) -> Option<Inpu
     })
 }
 
+/// The first [`PDF_DIGITS`] hex digits of the SHA-256 of `file` (relative to the
+/// campaign's folder), as the run recorded it, with an ellipsis: an axis report's
+/// measurement file.
+pub fn short_sha256(inputs: &Inputs, file: Option<&str>) -> Option<String> {
+    let file = file?;
+    let found = inputs.files.iter().find(|f| f.path == file)?;
+    Some(format!(
+        "{}…",
+        &found.sha256[..PDF_DIGITS.min(found.sha256.len())]
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
