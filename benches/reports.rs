@@ -15,6 +15,7 @@ fn main() {
             diagnose: true,
             drop_data: false,
             compensate: true,
+            record_inputs: false,
         },
         &|_| {},
     );

@@ -30,8 +30,8 @@ pub mod report;
 pub mod session;
 
 pub use axcheck_campaign::{
-    atomic, batch, campaign, files, judge, lock, measurement, one_file, panics, plan, results,
-    safe_text, simulate, trend, yaml,
+    atomic, batch, campaign, files, inputs, judge, lock, measurement, one_file, panics, plan,
+    results, safe_text, simulate, trend, yaml,
 };
 pub use axcheck_core::{
     axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, rules, suggest,

@@ -35,6 +35,11 @@ enum Command {
     /// The CI gate: evaluate a campaign and write nothing (exit 0: every axis passes,
     /// 1: any axis fails, is noncompliant or has an error, 2: the campaign cannot be read).
     Check(cli::campaign::CheckArgs),
+    /// Check that a run's outputs follow from its inputs: every input recorded in its
+    /// results.json checked by its SHA-256, then the campaign run again the same way into a
+    /// temporary folder and every output compared byte for byte (exit 0: identical, 1: an
+    /// input changed or an output differs, 2: the run or an input cannot be read).
+    Reproduce(cli::reproduce::ReproduceArgs),
     /// Model check and diagnosis of a measurement file: what the standard's model of the
     /// axis gets wrong (drift, warm-up, thermal growth, run offsets, periodic error, reversal or
     /// scatter varying along the axis, outliers), with evidence and the held-out gain; several
@@ -152,6 +157,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
     let jobs = match &mut cli.command {
         Command::Run(args) => Some(&mut args.jobs),
         Command::Check(args) => Some(&mut args.jobs),
+        Command::Reproduce(args) => Some(&mut args.jobs),
         _ => None,
     };
     if let Some(jobs) = jobs {
@@ -167,6 +173,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Eval(args) => print(&cli::eval::run(&args)?)?,
         Command::Run(args) => return Ok(ExitCode::from(cli::campaign::run_command(&args)?)),
         Command::Check(args) => return Ok(ExitCode::from(cli::campaign::check_command(&args)?)),
+        Command::Reproduce(args) => return Ok(ExitCode::from(cli::reproduce::command(&args)?)),
         Command::Diagnose {
             files,
             sheet,

@@ -588,6 +588,7 @@ fn check(py: Python<'_>, campaign: &str, diagnose: bool) -> PyResult<Checked> {
             diagnose,
             drop_data: false,
             compensate: false,
+            record_inputs: false,
         };
         let result = batch::run(&loaded, options, &|_| {});
         Ok(Checked {

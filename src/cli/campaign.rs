@@ -280,6 +280,31 @@ pub struct RunArgs {
     wait: bool,
 }
 
+impl RunArgs {
+    /// The arguments of a recorded run (`results.json` `inputs`), into `out`: what
+    /// `reproduce` runs again (the folders recorded from the campaign's folder `dir`).
+    pub fn recorded(
+        campaign: PathBuf,
+        dir: &Path,
+        out: PathBuf,
+        flags: &axcheck::inputs::RunFlags,
+    ) -> RunArgs {
+        RunArgs {
+            campaign,
+            out,
+            jobs: 0,
+            no_pdf: flags.no_pdf,
+            no_html: flags.no_html,
+            no_diagnose: flags.no_diagnose,
+            templates: flags.templates.as_ref().map(|t| dir.join(t)),
+            progress: false,
+            history: flags.history.as_ref().map(|h| dir.join(h)),
+            horizon_years: flags.horizon,
+            wait: false,
+        }
+    }
+}
+
 /// `axcheck check`'s arguments.
 #[derive(clap::Args)]
 pub struct CheckArgs {
@@ -352,7 +377,7 @@ fn run_with_console(
 /// `run`'s flags over the campaign's own settings: `--no-pdf`, `--no-html` and
 /// `--no-diagnose` turn off what `campaign.output` turns on; `--history` and `--horizon`
 /// override `campaign.history` and `campaign.trend_horizon_years`.
-fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session::RunOptions<'a>> {
+pub fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session::RunOptions<'a>> {
     let output = &campaign.info.output;
     Ok(session::RunOptions {
         out: Some(&args.out),
@@ -363,7 +388,21 @@ fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session::Ru
         history: (args.history.clone()).or_else(|| campaign.history.clone()),
         horizon: trend_options(args.horizon_years, campaign)?,
         wait: args.wait,
+        flags: axcheck::inputs::RunFlags {
+            no_pdf: args.no_pdf,
+            no_html: args.no_html,
+            no_diagnose: args.no_diagnose,
+            templates: (args.templates.as_deref()).map(|p| from_campaign(campaign, p)),
+            history: (args.history.as_deref()).map(|p| from_campaign(campaign, p)),
+            horizon: args.horizon_years,
+        },
     })
+}
+
+/// A folder given on the command line as seen from the campaign's folder (recorded in
+/// `results.json`: no place on this machine).
+fn from_campaign(campaign: &Campaign, path: &Path) -> String {
+    axcheck::files::path_from(&campaign.dir, path)
 }
 
 /// What `run` prints after its outputs are written; the exit status.

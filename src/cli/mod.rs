@@ -8,6 +8,7 @@ pub mod eval;
 pub mod geometry;
 pub mod other_tool;
 pub mod plan;
+pub mod reproduce;
 pub mod simulate;
 pub mod tables;
 pub mod text;

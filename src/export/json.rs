@@ -1,6 +1,7 @@
 //! `results.json`: everything, and a stable interface for scripts.
 //!
-//! Top level: `axcheck` (version), `campaign`, `counts`, `axes`. One entry in `axes` per
+//! Top level: `axcheck` (version), `campaign`, `counts`, `inputs` (the version, every file
+//! read with its SHA-256, the options: [`crate::inputs`]), `axes`. One entry in `axes` per
 //! test of an axis (most axes have one): `machine`, `axis`, `test`, `tests`, `file`,
 //! `kind`, `standard`, `unit`, `n`, `verdict` (`pass`/`fail`/`noncompliant`/`error`),
 //! `parameters` (keyed as in `axcheck eval --json`), `limits`, `checks`, `rules`
@@ -436,6 +437,8 @@ struct Head<'a> {
     axcheck: &'static str,
     campaign: CampaignJson<'a>,
     counts: BTreeMap<Verdict, usize>,
+    /// What the run read (each file's SHA-256) and how it was run (added in issue 47).
+    inputs: &'a crate::inputs::Inputs,
     axes: [(); 0],
 }
 
@@ -463,6 +466,7 @@ fn results_head(result: &CampaignResult) -> Head<'_> {
             standard: result.info.standard.is_none().then_some(standard),
         },
         counts: result.counts(),
+        inputs: &result.inputs,
         axes: [],
     }
 }

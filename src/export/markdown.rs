@@ -37,6 +37,7 @@ impl Exporter for MarkdownExporter {
                 let _ = writeln!(out, "{p}");
             }
         }
+        out.push_str(&inputs(result));
         // Every text from input went through `cell`; what axcheck composed around it (a
         // parameter's check, a rule's id) is made visible too, whatever it quotes.
         let out = crate::safe_text::visible(&out).into_owned();
@@ -72,6 +73,35 @@ fn header(result: &CampaignResult) -> String {
         caveats,
         if caveats.is_empty() { "" } else { "\n" }
     )
+}
+
+/// Files listed under "Inputs" before "… and N more".
+const INPUTS_LISTED: usize = 200;
+
+/// The files the run read with their SHA-256 and how it was run (nothing for a result no
+/// run recorded).
+fn inputs(result: &CampaignResult) -> String {
+    let Some(list) = axcheck_charts::data::inputs::inputs_list(&result.inputs, INPUTS_LISTED, 64)
+    else {
+        return String::new();
+    };
+    let mut out = format!(
+        "\n## Inputs\n\nMade by axcheck {} from {} files with: {}\n\n| file | SHA-256 |\n|---|---|\n",
+        cell(&list.axcheck),
+        list.total,
+        cell(&list.command)
+    );
+    for r in &list.rows {
+        let _ = writeln!(out, "| {} | {} |", cell(&r.path), r.sha256);
+    }
+    if list.more > 0 {
+        let _ = writeln!(
+            out,
+            "\n… and {} more (results.json lists them all)",
+            list.more
+        );
+    }
+    out
 }
 
 /// A test's line of the table: its headline parameters (A, E, M, R, B of its standard).

@@ -21,7 +21,7 @@ mod store;
 
 pub use charts::{History, HistoryChart, history_of};
 #[cfg(feature = "parquet")]
-pub use store::{append, file_path, read, read_bytes, visit};
+pub use store::{append, file_path, history_files, read, read_bytes, visit};
 
 /// The trends of the run's axes (`run`'s records) over the history in `dir`, read file by
 /// file: only the run's axes' series are kept, never the whole history.

@@ -177,8 +177,8 @@ pub fn visit(dir: &Path, mut visit: impl FnMut(Vec<Record>)) -> Result<(), Histo
     Ok(())
 }
 
-/// The `*.parquet` files under `dir`, sorted.
-fn history_files(dir: &Path) -> Result<Vec<PathBuf>, HistoryError> {
+/// The `*.parquet` files under `dir`, sorted: the files [`visit`] reads.
+pub fn history_files(dir: &Path) -> Result<Vec<PathBuf>, HistoryError> {
     let mut files = Vec::new();
     for entry in walkdir::WalkDir::new(dir) {
         let entry = entry.map_err(|e| HistoryError::Io {

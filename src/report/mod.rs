@@ -136,6 +136,9 @@ pub struct Rendered {
 /// Renders reports; build once, use from many threads.
 pub struct Reports {
     typesetter: Typesetter,
+    /// The templates read from the customised copy, with their SHA-256 (empty with the
+    /// built-in ones): inputs of the run.
+    read: Vec<crate::files::InputFile>,
 }
 
 impl Reports {
@@ -144,7 +147,7 @@ impl Reports {
     /// does not put another file into the reports).
     pub fn new(dir: Option<&Path>) -> Result<Reports, ReportError> {
         let mut templates = HashMap::new();
-        let root = dir.map(|dir| crate::files::Root::folder(dir, "templates folder"));
+        let root = dir.map(|dir| crate::files::Root::folder(dir, "templates folder").recording());
         for (name, text) in TEMPLATES {
             let text = match &root {
                 None => text.to_string(),
@@ -163,7 +166,14 @@ impl Reports {
             typesetter: Typesetter::new(templates).ok_or_else(|| {
                 ReportError::Templates("a template name is not a valid virtual path".into())
             })?,
+            read: root.map_or_else(Vec::new, |root| root.recorded()),
         })
+    }
+
+    /// The templates read from the customised copy with their SHA-256, sorted by path
+    /// (relative to its folder); empty with the built-in templates.
+    pub fn templates_read(&self) -> &[crate::files::InputFile] {
+        &self.read
     }
 
     fn compile(

@@ -4,9 +4,12 @@
 //! appended to its inspection history and its trends fitted, then every output written
 //! ([`crate::export`]). The command line only prints what [`run`] returns.
 
+pub mod compare;
 mod history;
+mod inputs;
 mod locks;
 mod output_dir;
+pub mod reproduce;
 
 pub use history::{AppendError, Appended};
 pub use locks::lock_folders;
@@ -40,6 +43,9 @@ pub struct RunOptions<'a> {
     pub horizon: crate::trend::fit::TrendOptions,
     /// Wait for another run that holds the output or history folder.
     pub wait: bool,
+    /// The command-line options as given, recorded in `results.json` (`inputs`) so that
+    /// `reproduce` runs the campaign the same way.
+    pub flags: crate::inputs::RunFlags,
 }
 
 /// What a run hears of while it runs: a lock it waits for or takes over, each test done.
@@ -100,6 +106,7 @@ fn gate(campaign: &Campaign, options: &RunOptions, observer: &dyn Observer) -> R
         diagnose: options.diagnose,
         drop_data: true,
         compensate: false,
+        record_inputs: false,
     };
     let result = batch::run(campaign, batch_options, &|t| observer.test_done(t));
     RunOutcome {
@@ -141,8 +148,9 @@ fn write_run(
         diagnose: plan.diagnose,
         drop_data: false,
         compensate: true,
+        record_inputs: true,
     };
-    let result = batch::run(campaign, options, &|t| observer.test_done(t));
+    let mut result = batch::run(campaign, options, &|t| observer.test_done(t));
     // The history first: the reports show each axis over it, this run included. A history
     // that cannot be appended to or read costs the reports their history, not the outputs.
     let appended = (plan.history.as_deref()).map(|dir| history::append(&result, dir, plan.horizon));
@@ -150,6 +158,10 @@ fn write_run(
         Some(Ok(appended)) => appended.trends.clone(),
         _ => None,
     };
+    let read = std::mem::take(&mut result.inputs);
+    let done = appended.as_ref().and_then(|a| a.as_ref().ok());
+    let named = result.info.history.clone();
+    result.inputs = inputs::complete(read, plan, reports.as_ref(), done, named.as_deref());
     let exporters = exporters(plan, reports, trends.as_ref());
     let written =
         export::write_all(&result, &exporters, out).map_err(|source| SessionError::Write {

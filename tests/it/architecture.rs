@@ -16,7 +16,7 @@ const LAYERS: &[&[&str]] = &[
         "panics",
         "safe_text",
     ],
-    &["measurement", "yaml", "lock", "atomic"],
+    &["measurement", "yaml", "lock", "atomic", "inputs"],
     &["evaluate", "nde", "axis_model"],
     &["uncertainty", "crosscheck", "simulate"],
     &["rules", "judge", "diagnose", "trend"],

@@ -55,6 +55,7 @@ pub fn run_campaign(path: &std::path::Path, diagnose: bool) -> axcheck::results:
         diagnose,
         drop_data: false,
         compensate: true,
+        record_inputs: true,
     };
     axcheck::batch::run(&campaign, options, &|_| {})
 }

@@ -185,9 +185,14 @@ fn summary_md_holds_no_markup_from_input() {
     assert_eq!(raw_hidden(&md), Vec::<char>::new());
     // Unescaped pipes: 14 in every line of the table.
     let cells = |line: &str| line.replace("\\|", "").matches('|').count();
-    let table: Vec<&str> = md.lines().filter(|l| l.starts_with('|')).collect();
+    let (tests, inputs) = md.split_once("\n## Inputs\n").unwrap();
+    let table: Vec<&str> = tests.lines().filter(|l| l.starts_with('|')).collect();
     assert_eq!(table.len(), 2 + 6, "{md}");
     assert!(table.iter().all(|l| cells(l) == 14), "{table:#?}");
+    // The inputs' table (issue 47): file and SHA-256, 3 pipes a line.
+    let table: Vec<&str> = inputs.lines().filter(|l| l.starts_with('|')).collect();
+    assert!(table.len() > 2, "{inputs}");
+    assert!(table.iter().all(|l| cells(l) == 3), "{table:#?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -44,6 +44,7 @@ mod renishaw;
 mod report_compensation;
 mod report_layout;
 mod reports;
+mod reproduce;
 mod rules;
 mod simulator;
 mod standards;

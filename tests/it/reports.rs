@@ -130,8 +130,19 @@ fn every_pdf_of_the_example_campaign() {
     other_reports(&out, axes);
 
     let (pages, text) = read_pdf(&out.join("summary.pdf"));
-    assert_eq!(pages, 2, "summary: table, then chart and lists");
+    assert_eq!(
+        pages, 3,
+        "summary: table, then chart and lists, then the inputs"
+    );
     let text = squash(&text);
+    // Issue 47: the inputs with the start of their SHA-256, and the version.
+    let campaign = std::fs::read("example-campaign/campaign.yaml").unwrap();
+    let sha = axcheck::files::sha256_hex(&campaign);
+    assert!(
+        text.contains(&format!("campaign.yaml{}", &sha[..16])),
+        "{text}"
+    );
+    assert!(text.contains(&format!("Madebyaxcheck{}", env!("CARGO_PKG_VERSION"))));
     assert!(text.contains("Plant2annualinspection"));
     for axis in axes {
         assert!(

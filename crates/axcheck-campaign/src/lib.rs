@@ -1,7 +1,7 @@
 //! axcheck's campaigns: everything between the user's files and the core's stages, in the
 //! pipeline's order — [`files`] (every user file read beneath its campaign's root, no
 //! link out), [`campaign`] (the campaign file loaded, validated and its data files
-//! resolved), [`judge`] (acceptance specs read, limits taken from one), [`plan`] (the
+//! resolved), [`inputs`] (what a run read, with each file's SHA-256), [`judge`] (acceptance specs read, limits taken from one), [`plan`] (the
 //! plan file) and [`measurement`] (the readers, one file per layout) → [`batch`] runs
 //! every axis through the core's stages in parallel → [`results`], the result model that
 //! exporters, reports and the history read; [`one_file`] is the JSON of the commands that
@@ -17,6 +17,7 @@ pub mod batch;
 pub mod campaign;
 pub mod files;
 pub mod history;
+pub mod inputs;
 pub mod judge;
 pub mod lock;
 pub mod measurement;

@@ -395,6 +395,9 @@ pub struct CampaignResult {
     pub file_name: String,
     pub standard: StandardId,
     pub tests: Vec<AxisTest>,
+    /// What the run read and how it was run (`results.json` `inputs`): the files read
+    /// from the campaign's folder when the batch recorded them, the rest set by the run.
+    pub inputs: crate::inputs::Inputs,
 }
 
 impl CampaignResult {

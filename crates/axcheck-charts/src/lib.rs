@@ -9,7 +9,7 @@ pub mod charts;
 pub mod data;
 pub mod figures;
 
-use axcheck_campaign::{campaign, judge, measurement, one_file, results, trend};
+use axcheck_campaign::{campaign, inputs, judge, measurement, one_file, results, trend};
 use axcheck_core::{
     axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, rules, uncertainty,
     units, verify,

@@ -52,7 +52,12 @@ struct Page<'a> {
     history: bool,
     block: usize,
     rows: Vec<overview::Row<'a>>,
+    /// The files the run read with their SHA-256 and how it was run, under the footer.
+    inputs: Option<axcheck_charts::data::inputs::InputsList>,
 }
+
+/// Input files listed under the page's footer before "… and N more".
+const INPUTS_LISTED: usize = 200;
 
 impl Exporter for HtmlExporter {
     fn name(&self) -> &'static str {
@@ -68,6 +73,7 @@ impl Exporter for HtmlExporter {
             history: trends.is_some(),
             block: BLOCK,
             rows: overview::rows(result, trends),
+            inputs: axcheck_charts::data::inputs::inputs_list(&result.inputs, INPUTS_LISTED, 64),
         };
         let details = details(result, trends, self.reports)?;
         Ok(vec![OutputFile {

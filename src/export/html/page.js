@@ -89,8 +89,18 @@
     ["Inspector", c.inspector], ["Standard", c.standard], ["Campaign file", c.file]]) {
     if (text) dl.append(el("div", {}, el("dt", {}, label), el("dd", {}, text)));
   }
-  document.getElementById("footer").textContent =
+  const footer = document.getElementById("footer");
+  footer.textContent =
     `${data.generator}. Values in µm (linear axes) or arcsec (rotary axes), 2 decimals; U is the expanded uncertainty (k = 2).`;
+  if (data.inputs) {
+    // The files the run read, each with its SHA-256 (axcheck reproduce checks them).
+    const i = data.inputs;
+    const list = el("table", { id: "inputs" }, el("tr", {}, el("th", {}, "File"), el("th", {}, "SHA-256")));
+    for (const r of i.rows) list.append(el("tr", {}, el("td", {}, r.path), el("td", { class: "sha" }, r.sha256)));
+    footer.append(el("details", {},
+      el("summary", {}, `Inputs: ${i.total} files, made by axcheck ${i.axcheck} with ${i.command}`),
+      list, i.more ? el("p", {}, `… and ${i.more} more (results.json lists them all)`) : null));
+  }
 
   const state = { text: "", verdict: null, sortKey: null, sortDesc: false, order: null, shown: [], active: -1, selected: null };
   const countsBox = document.getElementById("counts");

@@ -45,6 +45,9 @@ pub struct BatchOptions {
     /// Compute each test's compensation table where its machine names a controller (with
     /// the diagnosis its warnings need); the CI gate writes no tables and skips them.
     pub compensate: bool,
+    /// Note every file read from the campaign's folder with its SHA-256
+    /// ([`CampaignResult::inputs`]): `run` records its inputs, the gate need not.
+    pub record_inputs: bool,
 }
 
 /// Evaluates every axis of `campaign`; `progress` is called once per finished test.
@@ -55,6 +58,10 @@ pub fn run(
 ) -> CampaignResult {
     // The folder every file read for the campaign must be opened in, resolved once.
     let files = Files::campaign(&campaign.dir, campaign.info.allow_outside_paths);
+    let files = match options.record_inputs {
+        true => files.recording(),
+        false => files,
+    };
     let specs = stages::judge::load_specs(campaign, &files);
     let work: Vec<(Arc<MachineInfo>, &crate::campaign::AxisEntry)> = campaign
         .machines
@@ -113,6 +120,26 @@ pub fn run(
             .unwrap_or_default(),
         standard: campaign.standard,
         tests,
+        inputs: inputs(campaign, &files),
+    }
+}
+
+/// The campaign file and every file read beneath its folder, sorted by path.
+fn inputs(campaign: &Campaign, files: &Files) -> crate::inputs::Inputs {
+    let mut read = files.recorded();
+    let name = crate::files::relative_to(&campaign.file, &campaign.dir);
+    if let Some(sha256) = &campaign.sha256 {
+        read.retain(|f| f.path != name);
+        read.push(crate::inputs::InputFile {
+            path: name.clone(),
+            sha256: sha256.clone(),
+        });
+        read.sort();
+    }
+    crate::inputs::Inputs {
+        campaign: name,
+        files: read,
+        ..Default::default()
     }
 }
 

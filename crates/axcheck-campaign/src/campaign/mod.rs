@@ -52,6 +52,8 @@ pub struct Campaign {
     /// Standard for axes that name none.
     pub standard: StandardId,
     pub machines: Vec<Machine>,
+    /// The SHA-256 of the campaign file's bytes, when it was loaded from one.
+    pub sha256: Option<String>,
 }
 
 #[derive(Debug, Clone)]
@@ -132,11 +134,15 @@ const TOP_KEYS: [&str; 2] = ["campaign", "machines"];
 impl Campaign {
     /// Loads a campaign file from disk (a regular file only: [`crate::files`]).
     pub fn load(path: &Path) -> Result<Campaign, CampaignError> {
-        let text = crate::files::read_to_string(path).map_err(|e| CampaignError::Unreadable {
-            file: path.display().to_string(),
-            reason: e.to_string(),
-        })?;
-        Campaign::parse(&text, path)
+        let (text, sha256) =
+            crate::files::read_to_string_hashed(path).map_err(|e| CampaignError::Unreadable {
+                file: path.display().to_string(),
+                reason: e.to_string(),
+            })?;
+        Ok(Campaign {
+            sha256: Some(sha256),
+            ..Campaign::parse(&text, path)?
+        })
     }
 
     /// Parses campaign `text` read from `path`.
@@ -190,6 +196,7 @@ impl Campaign {
             history,
             standard,
             machines,
+            sha256: None,
         };
         campaign.check_unique_names(&index).map_err(fail)?;
         Ok(campaign)

@@ -11,11 +11,13 @@
 //! written while axcheck reads it is noticed instead of giving half a measurement.
 
 mod beneath;
+mod digest;
 mod real;
 mod root;
 #[cfg(windows)]
 pub mod windows;
 
+pub use digest::{InputFile, path_from, relative_to, sha256_hex, sha256_of};
 pub use real::{OutsidePath, real_path};
 pub use root::{PathRefused, Root, may_match};
 
@@ -240,6 +242,14 @@ fn bytes(file: &mut File) -> std::io::Result<Vec<u8>> {
 /// The text of the regular file `path` (UTF-8, with or without a byte-order mark).
 pub fn read_to_string(path: &Path) -> Result<String, FileError> {
     utf8(read(path)?)
+}
+
+/// The text of the regular file `path` (as [`read_to_string`]) and the SHA-256 of its
+/// bytes: the campaign file, recorded with the files read beneath its folder.
+pub fn read_to_string_hashed(path: &Path) -> Result<(String, String), FileError> {
+    let bytes = read(path)?;
+    let sha256 = sha256_hex(&bytes);
+    Ok((utf8(bytes)?, sha256))
 }
 
 /// The bytes as UTF-8 text without its byte-order mark (Windows' "UTF-8 with BOM"); UTF-16

@@ -12,6 +12,7 @@
 //!   decide only what it refuses.
 
 use super::beneath::Handle;
+use super::digest::{Recorder, relative_to, sha256_hex, sha256_of};
 use super::real::{OutsidePath, check_real, folder, real_path};
 use super::{FileError, Opened};
 use std::fs::File;
@@ -51,6 +52,8 @@ pub struct Root {
     name: &'static str,
     /// A handle on the folder at its real path, that files are opened beneath (Linux).
     handle: Option<Arc<Handle>>,
+    /// Where each file read is noted with its SHA-256 ([`Root::recording`]).
+    recorder: Option<Arc<Recorder>>,
 }
 
 impl Root {
@@ -65,7 +68,23 @@ impl Root {
             real,
             allow_outside,
             name: "campaign folder",
+            recorder: None,
         }
+    }
+
+    /// This folder, noting every file read through it (and its clones) with its SHA-256:
+    /// [`Root::recorded`].
+    pub fn recording(self) -> Root {
+        Root {
+            recorder: Some(Arc::default()),
+            ..self
+        }
+    }
+
+    /// The files read so far with their SHA-256, sorted by path (relative to the folder);
+    /// empty unless [`Root::recording`].
+    pub fn recorded(&self) -> Vec<super::InputFile> {
+        self.recorder.as_ref().map_or_else(Vec::new, |r| r.files())
     }
 
     /// Another folder (`name` for messages): nothing outside it is ever read.
@@ -161,17 +180,33 @@ impl Root {
     }
 
     /// Opens `path`, gives it to `read`, and refuses the result when the file changed.
+    /// When recording, the file is hashed from its start once `read` is done, through the
+    /// same handle (before the check that it did not change).
     pub fn read_with<T>(
         &self,
         path: &Path,
         read: impl FnOnce(&mut File) -> T,
     ) -> Result<T, FileError> {
-        super::read_opened(self.open(path)?, read)
+        let Some(recorder) = &self.recorder else {
+            return super::read_opened(self.open(path)?, read);
+        };
+        let mut opened = self.open(path)?;
+        let value = read(&mut opened.file);
+        use std::io::{Seek, SeekFrom};
+        opened.file.seek(SeekFrom::Start(0))?;
+        let sha256 = sha256_of(&mut opened.file)?;
+        opened.check_unchanged()?;
+        recorder.note(relative_to(path, &self.dir), sha256);
+        Ok(value)
     }
 
-    /// The bytes of `path`.
+    /// The bytes of `path` (hashed as they are, when recording).
     pub fn read(&self, path: &Path) -> Result<Vec<u8>, FileError> {
-        self.read_with(path, super::bytes)?.map_err(FileError::Io)
+        let bytes = super::read_opened(self.open(path)?, super::bytes)?.map_err(FileError::Io)?;
+        if let Some(recorder) = &self.recorder {
+            recorder.note(relative_to(path, &self.dir), sha256_hex(&bytes));
+        }
+        Ok(bytes)
     }
 
     /// The text of `path` (UTF-8).

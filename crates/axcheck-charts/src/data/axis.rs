@@ -187,6 +187,10 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
         ("Axis travel", travel),
         ("Measurement travel", measured),
         ("Measurement file", t.file.clone()),
+        (
+            "File SHA-256",
+            super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
+        ),
         ("Test", test),
         ("Standard", t.standard().map(|s| s.title().to_string())),
         (

@@ -4,13 +4,15 @@
 //!
 //! [`axis`] is the test report of one axis (ISO 230-2 clause 7), [`conditions`] its test
 //! conditions (clause 7.1), [`compensation`] its compensation table and the parameters
-//! predicted with it, [`summary`] the campaign summary; [`axis_chart`] gives the
+//! predicted with it, [`summary`] the campaign summary ([`inputs`]: the files its run
+//! read, with their SHA-256); [`axis_chart`] gives the
 //! data of the figures of ISO 230-2 Fig. 2a/2b.
 
 mod axis;
 mod compensation;
 mod conditions;
 pub mod diagnosis;
+pub mod inputs;
 mod other;
 mod other_tool;
 mod summary;

@@ -124,6 +124,10 @@ fn facts(result: &CampaignResult, t: &AxisTest, o: &OtherTested) -> Vec<Row> {
         ("Machine", Some(t.machine.id.clone())),
         ("Test", Some(t.axis_label())),
         ("File", t.file.clone()),
+        (
+            "File SHA-256",
+            super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
+        ),
         ("From the straightness tests", Some(sources)),
         ("Measurement travel", travel),
         (

@@ -23,6 +23,9 @@ pub struct Summary<'a> {
     has_chart: bool,
     /// The flagged series of the run's axes (only when the run keeps a history).
     trends: Option<super::trends::TrendsSummary>,
+    /// The files the run read with the start of their SHA-256, and how it was run
+    /// (`null` for a result no run recorded).
+    inputs: Option<super::inputs::InputsList>,
     generator: String,
 }
 
@@ -114,6 +117,11 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
             .iter()
             .any(|t| t.judgement().and_then(|j| j.worst()).is_some()),
         trends: None,
+        inputs: super::inputs::inputs_list(
+            &result.inputs,
+            super::inputs::PDF_LISTED,
+            super::inputs::PDF_DIGITS,
+        ),
         generator: generator(),
     }
 }
