@@ -2,6 +2,7 @@
 
 use crate::campaign::Campaign;
 use crate::campaign::data::DataSource;
+use crate::files::resolved;
 use std::path::{Path, PathBuf};
 
 #[derive(Debug, thiserror::Error)]
@@ -47,28 +48,6 @@ pub(crate) fn check_history_dir(out: &Path, history: &Path) -> Result<(), Output
         out: out.into(),
         how,
     })
-}
-
-/// `path` made absolute through its real folders: its nearest existing ancestor's real
-/// path and the rest of it (the folders a run creates).
-fn resolved(path: &Path) -> Option<PathBuf> {
-    let mut rest = Vec::new();
-    let mut existing = path;
-    loop {
-        let probe = match existing.as_os_str().is_empty() {
-            true => Path::new("."),
-            false => existing,
-        };
-        if let Ok(real) = std::fs::canonicalize(probe) {
-            return Some(
-                rest.iter()
-                    .rev()
-                    .fold(real, |p: PathBuf, name| p.join(name)),
-            );
-        }
-        rest.push(existing.file_name()?);
-        existing = existing.parent()?;
-    }
 }
 
 /// Refuses an output folder that is a file, or is (or lies inside) a folder holding the

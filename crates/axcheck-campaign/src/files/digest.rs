@@ -89,22 +89,9 @@ pub fn path_from(dir: &Path, path: &Path) -> String {
     }
 }
 
-/// `path` made absolute through the real path of its nearest existing ancestor.
+/// `path`'s real path (`super::real::resolved`), without Windows' `\\?\` prefix.
 fn resolved(path: &Path) -> Option<std::path::PathBuf> {
-    let mut rest = Vec::new();
-    let mut existing = path;
-    loop {
-        let probe = match existing.as_os_str().is_empty() {
-            true => Path::new("."),
-            false => existing,
-        };
-        if let Ok(real) = std::fs::canonicalize(probe) {
-            let real = dunce::simplified(&real).to_path_buf();
-            return Some(rest.iter().rev().fold(real, |p, name| p.join(name)));
-        }
-        rest.push(existing.file_name()?.to_os_string());
-        existing = existing.parent()?;
-    }
+    super::real::resolved(path).map(|p| dunce::simplified(&p).to_path_buf())
 }
 
 /// The files read through one folder ([`super::Root::recording`]), shared by its clones.

@@ -18,7 +18,7 @@ mod root;
 pub mod windows;
 
 pub use digest::{InputFile, path_from, relative_to, sha256_hex, sha256_of};
-pub use real::{OutsidePath, real_path};
+pub use real::{OutsidePath, real_path, resolved};
 pub use root::{PathRefused, Root, may_match};
 
 use std::fs::{File, Metadata};

@@ -16,6 +16,24 @@ pub(super) fn folder(base: &Path) -> &Path {
     }
 }
 
+/// `path` made absolute through its real folders: its nearest existing ancestor's real
+/// path and the rest of it as written (the folders a run creates).
+pub fn resolved(path: &Path) -> Option<PathBuf> {
+    let mut rest = Vec::new();
+    let mut existing = path;
+    loop {
+        if let Ok(real) = std::fs::canonicalize(folder(existing)) {
+            return Some(
+                rest.iter()
+                    .rev()
+                    .fold(real, |p: PathBuf, name| p.join(name)),
+            );
+        }
+        rest.push(existing.file_name()?);
+        existing = existing.parent()?;
+    }
+}
+
 /// A path whose real path leaves its folder.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OutsidePath {
