@@ -468,3 +468,33 @@ fn a_campaign_finds_an_abbe_error_from_the_pitch_test() {
     );
     assert!(!stdout.contains("Abbe error: ON X"), "{stdout}");
 }
+
+/// A campaign whose names would write lines of their own into a SINUMERIK part program
+/// (`X\nM17`, an output `Y1\nM30`) gets no table, and `results.json` says why.
+#[test]
+fn hostile_axis_names_write_no_cross_table() {
+    let dir = scratch("cross-tables-hostile");
+    write_test(&dir.join("data/eyx.csv"), 8.0, &|_| 0.0);
+    let yaml = "campaign: {name: hostile, date: 2026-11-30}\nmachines:\n  - id: M\n    controller: siemens-840d\n    axes:\n      - {name: \"X\\nM17\", kind: linear, test: straightness, direction: Y, data: data/eyx.csv, compensation: {output: \"Y1\\nM30\", active: none}}\n";
+    std::fs::write(dir.join("campaign.yaml"), yaml).unwrap();
+    let out = dir.join("out");
+    let (_, _, stderr) = axcheck(&[
+        "run",
+        dir.join("campaign.yaml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ]);
+    let results: Value = serde_json::from_str(
+        &std::fs::read_to_string(out.join("results.json")).unwrap_or_else(|_| panic!("{stderr}")),
+    )
+    .unwrap();
+    let refused = results["axes"][0]["geometry"]["cross_table"]["refused"]
+        .as_str()
+        .unwrap_or_else(|| panic!("{results}"));
+    assert!(
+        refused.contains("is not a name the file can hold"),
+        "{refused}"
+    );
+    assert!(!out.join("compensation").exists());
+}

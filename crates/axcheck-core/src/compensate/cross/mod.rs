@@ -138,8 +138,20 @@ impl CrossTable {
     }
 }
 
-/// The positions must rise; a format's writer refuses a table that does not.
+/// The positions must rise, and the axes be named as a file can hold them (letters,
+/// digits and `_`, as the pitch tables' [`super::controllers::axis_name`]: a line break or a
+/// bracket in a name would write lines of its own into a part program the control runs);
+/// a format's writer refuses a table that is not so.
 fn check_rising(table: &CrossTable) -> Result<(), Refused> {
+    for name in [&table.input, &table.output] {
+        let fits = !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if !fits {
+            return Err(Refused::Grid(format!(
+                "the axis name `{}` is not a name the file can hold (letters, digits and _)",
+                name.escape_debug()
+            )));
+        }
+    }
     let p = &table.positions_mm;
     if p.len() < 2 || p.windows(2).any(|w| w[1] <= w[0]) {
         return Err(Refused::Grid(

@@ -363,3 +363,25 @@ fn a_table_builds_on_the_active_one() {
     let refused = compensate(&csv::Csv, &data, &request).unwrap_err();
     assert!(refused.to_string().contains("`Y`, not `Z`"), "{refused}");
 }
+
+/// A name that would write lines of its own into the file (a line break, a bracket) is
+/// refused by every format, before a byte is written.
+#[test]
+fn axis_names_that_would_inject_lines_are_refused() {
+    for format in formats() {
+        for (input, output) in [("X\nM17", "Y"), ("1", "2)\nM30"), ("", "Y"), ("X", "Y Z")] {
+            let t = CrossTable {
+                input: input.into(),
+                output: output.into(),
+                positions_mm: vec![0.0, 100.0],
+                corrections_um: vec![0.0, 2.1],
+            };
+            let e = format.write(&t, "").unwrap_err();
+            assert!(
+                e.to_string().contains("is not a name the file can hold"),
+                "{}: {e}",
+                format.name()
+            );
+        }
+    }
+}
