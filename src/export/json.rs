@@ -41,6 +41,9 @@ pub(crate) struct TestJson<'a> {
     axis: &'a str,
     test: usize,
     tests: usize,
+    /// The number of its report when the campaign or its machine is a certificate.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    report_number: Option<String>,
     file: Option<&'a str>,
     /// The layout the file was read as (with the sheet of a workbook) and the notes on
     /// what was assumed or skipped.
@@ -86,8 +89,56 @@ pub(crate) struct TestJson<'a> {
     /// The results the tool that wrote the file printed, beside axcheck's (as `eval --json`).
     #[serde(skip_serializing_if = "Option::is_none")]
     other_tool: Option<&'a crate::crosscheck::OtherTool>,
+    /// Where the test verifies a table loaded since a measurement before: that measurement
+    /// judged against the same limits (the axis as found) and this test (as left).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    as_found: Option<StateJson<'a>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    as_left: Option<StateJson<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     error: Option<&'a str>,
+}
+
+/// The axis as found or as left: a measurement's file, verdict, parameters, U and checks.
+#[derive(Serialize)]
+struct StateJson<'a> {
+    file: &'a str,
+    verdict: Verdict,
+    parameters: ParameterValues<'a>,
+    #[serde(rename = "U", skip_serializing_if = "Option::is_none")]
+    expanded: Option<&'a BTreeMap<String, f64>>,
+    #[serde(flatten)]
+    judgement: Option<Judged<'a>>,
+    rules: &'a [Violation],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<&'a str>,
+}
+
+impl<'a> StateJson<'a> {
+    /// The as-found and as-left states of a test that verifies a table.
+    fn pair(t: &'a AxisTest) -> Option<(StateJson<'a>, StateJson<'a>)> {
+        let e = t.evaluated()?;
+        let found = e.as_found.as_deref()?;
+        let before = StateJson {
+            file: &found.file,
+            verdict: found.verdict,
+            parameters: ParameterValues(&found.evaluation.parameters),
+            expanded: found.uncertainty.as_ref().map(|u| &u.expanded),
+            judgement: found.judgement.as_ref().map(Judged::new),
+            rules: &found.findings,
+            error: found.error.as_deref(),
+        };
+        let after = StateJson {
+            file: t.file.as_deref().unwrap_or_default(),
+            verdict: e.verdict,
+            parameters: ParameterValues(&e.evaluation.parameters),
+            expanded: e.uncertainty.as_ref().map(|u| &u.expanded),
+            judgement: e.judgement.as_ref().map(Judged::new),
+            rules: &e.findings,
+            error: e.error.as_deref(),
+        };
+        Some((before, after))
+    }
 }
 
 /// A straightness or angular test in `results.json`: the keys of `eval --test … --json`
@@ -378,12 +429,14 @@ impl<'a> CompensationJson<'a> {
 /// The JSON view of one test.
 pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
     let ev = t.evaluated();
+    let (as_found, as_left) = StateJson::pair(t).unzip();
     TestJson {
         machine: &t.machine.id,
         machine_info: &t.machine,
         axis: &t.axis,
         test: t.test,
         tests: t.tests,
+        report_number: None,
         file: t.file.as_deref(),
         recognised: t.recognised(),
         kind: t.kind(),
@@ -427,6 +480,8 @@ pub(crate) fn test_json(t: &AxisTest) -> TestJson<'_> {
         diagnosis: (ev.and_then(|e| e.diagnosis.as_deref())).map(|d| d.json(model_text)),
         out_of_test: ev.map_or(&[][..], |e| &e.out_of_test),
         other_tool: ev.and_then(|e| e.other_tool.as_deref()),
+        as_found,
+        as_left,
         error: t.error(),
     }
 }
@@ -494,6 +549,7 @@ pub(crate) fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_jso
         .zip(&tables)
         .map(|(t, table)| {
             let mut json = test_json(t);
+            json.report_number = result.report_number(t);
             let cross = (json.geometry.as_mut()).and_then(|g| g.cross_table.as_mut());
             if let (Some(Done::Made { file, .. }), Some(path)) = (cross, table) {
                 *file = Some(path.to_string_lossy().replace('\\', "/"));

@@ -44,11 +44,15 @@ pub const TEMPLATES: &[(&str, &str)] = &[
         "other-report.typ",
         include_str!("../../templates/other-report.typ"),
     ),
+    (
+        "certificate.typ",
+        include_str!("../../templates/certificate.typ"),
+    ),
 ];
 
 /// Templates a customised copy may lack (added after the copy was made): the built-in
 /// one is used.
-const NEWER_TEMPLATES: &[&str] = &["trends.typ", "other-report.typ"];
+const NEWER_TEMPLATES: &[&str] = &["trends.typ", "other-report.typ", "certificate.typ"];
 
 /// A report that could not be produced.
 #[derive(Debug, thiserror::Error)]

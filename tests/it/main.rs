@@ -11,6 +11,7 @@ mod big_input;
 mod browser;
 mod campaign;
 mod catalogue;
+mod certificate;
 mod cli;
 mod console;
 mod controllers;

@@ -353,6 +353,14 @@ fn no_report_of_the_names_campaign_overprints() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+#[test]
+fn no_report_of_a_certificate_overprints() {
+    let out = run("tests/data/certificate/campaign.yaml", "certificate-layout");
+    // MILL-3 X's positioning and straightness, MILL-8 Y, and the summary.
+    assert_no_overprinting(&out, 4);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 /// The text of the first page of `pdf`, without whitespace (pdftotext breaks lines).
 fn first_page_text(pdf: &Path) -> String {
     let out = std::process::Command::new("pdftotext")

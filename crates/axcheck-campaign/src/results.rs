@@ -173,6 +173,25 @@ pub struct Evaluated {
     /// The fit of the means on the axis's angular tests in the campaign (an Abbe error
     /// read off the beam), where it has any.
     pub abbe: Option<Box<crate::diagnose::abbe::AbbeFit>>,
+    /// Where the test verifies a table loaded since a measurement before: that measurement
+    /// judged as this test is (the axis as found; this test is the axis as left).
+    pub as_found: Option<Box<AsFound>>,
+}
+
+/// The measurement before an adjustment of the axis (a table loaded), judged against the
+/// same limits, rule and decision rule as the test after it (ISO/IEC 17025:2017 7.8.4.1 d:
+/// results before and after an adjustment).
+#[derive(Debug, Clone)]
+pub struct AsFound {
+    /// The file, as the campaign names it (`compensation.verifies.before`).
+    pub file: String,
+    pub verdict: Verdict,
+    /// Why its parameters could not be judged.
+    pub error: Option<String>,
+    pub evaluation: Evaluation,
+    pub judgement: Option<Judgement>,
+    pub findings: Vec<Violation>,
+    pub uncertainty: Option<Uncertainty>,
 }
 
 /// A positioning test carried from the beam to the tool point through its axis's angular
@@ -401,6 +420,42 @@ pub struct CampaignResult {
 }
 
 impl CampaignResult {
+    /// The certificate `t`'s report is part of: its machine's, else the campaign's.
+    pub fn certificate_of<'a>(
+        &'a self,
+        t: &'a AxisTest,
+    ) -> Option<&'a crate::campaign::certificate::CertificateRaw> {
+        (t.machine.certificate.as_ref()).or(self.info.certificate.as_ref())
+    }
+
+    /// The number of `t`'s report when the campaign is a certificate
+    /// (`campaign.certificate`; see [`crate::campaign::certificate`]).
+    pub fn report_number(&self, t: &AxisTest) -> Option<String> {
+        let certificate = self.certificate_of(t)?;
+        let kind = t.test_kind();
+        let symbol = match kind {
+            crate::geometry::TestKind::Positioning => None,
+            crate::geometry::TestKind::Squareness => Some("SQ".to_string()),
+            _ => t
+                .other()
+                .map(|o| o.symbol.clone())
+                .or_else(|| crate::campaign::geometry::symbol(&t.spec.as_ref()?.raw)),
+        };
+        Some(
+            certificate.report_number(&crate::campaign::certificate::ReportId {
+                machine: &t.machine.id,
+                axis: &t.axis,
+                symbol: symbol
+                    .as_deref()
+                    .filter(|s| !s.is_empty())
+                    .or(Some(kind.key()))
+                    .filter(|_| kind != crate::geometry::TestKind::Positioning),
+                test: t.test,
+                tests: t.tests,
+            }),
+        )
+    }
+
     /// Number of tests per verdict.
     pub fn counts(&self) -> BTreeMap<Verdict, usize> {
         let mut counts = BTreeMap::from([

@@ -10,7 +10,7 @@ mod squareness;
 mod tool_point;
 pub mod verification;
 
-use crate::results::{AxisTest, CampaignResult, Evaluated, Outcome};
+use crate::results::{AsFound, AxisTest, CampaignResult, Evaluated, Outcome};
 
 use crate::campaign::stages;
 use crate::campaign::{AxisSpec, Campaign, MachineInfo};
@@ -345,26 +345,14 @@ fn run_test(
     let spec_arc = completed.map(|(s, _)| s);
     let axis: &AxisSpec = spec_arc.as_deref().unwrap_or(axis);
     let (data, nde) = stages::nde::apply(axis, data);
-    let unstated = stages::rules::unstated(axis, &slot.machine, campaign, &recognised, &data);
-    let mut context = stages::rules::context(axis);
-    context.planned = slot.planned.clone();
-    context.unstated = Some(unstated.clone());
-    context.calibration = stages::rules::calibration(axis, campaign, &recognised);
-    let findings = rules::check(&context, &data);
-    let evaluation = stages::evaluate::evaluate(axis, &data);
-    let rule = stages::judge::decision_rule(axis, spec, campaign.decision_rule);
-    // The gate computes what it prints: U only where the decision rule judges with it.
-    let uncertainty = (!options.drop_data || rule == DecisionRule::Iso14253_1).then(|| {
-        let setup = stages::uncertainty::setup(axis, &data, nde.as_ref());
-        crate::uncertainty::evaluate(&setup, &evaluation)
-    });
-    let judged = Judged {
-        evaluation: &evaluation,
-        findings: &findings,
-        uncertainty: uncertainty.as_ref(),
-        rule,
+    let judging = Judging {
+        slot: &slot,
+        axis,
+        spec,
+        campaign,
+        options,
     };
-    let (verdict, error, judgement) = judge_stage(axis, spec, &data, &judged);
+    let judged = judging.judge(&recognised, &data, nde.as_ref());
     let diagnosis_of = || crate::diagnose::diagnose(&data, &stages::diagnose::options(axis));
     let diagnosis = options.diagnose.then(diagnosis_of);
     let controller = (slot.machine.controller.as_deref()).filter(|_| options.compensate);
@@ -376,10 +364,22 @@ fn run_test(
         diagnosis.as_ref(),
         diagnosis_of,
     );
+    let as_found = (verify_case.as_ref())
+        .and_then(|c| c.as_ref().ok())
+        .map(|c| Box::new(judging.as_found(c)));
     let mut slot = slot;
     if let Some(spec) = spec_arc {
         slot.spec = Some(spec);
     }
+    let JudgedReadings {
+        verdict,
+        error,
+        unstated,
+        evaluation,
+        judgement,
+        findings,
+        uncertainty,
+    } = judged;
     let test = slot.with(Outcome::Evaluated(Box::new(Evaluated {
         verdict,
         error,
@@ -399,8 +399,92 @@ fn run_test(
         other_tool: other_tool.map(Box::new),
         tool_point: None,
         abbe: None,
+        as_found,
     })));
     (test, verify_case)
+}
+
+/// What a test's readings are judged with: its axis, limits, campaign and run.
+struct Judging<'a> {
+    slot: &'a Slot,
+    axis: &'a AxisSpec,
+    spec: Option<&'a Spec>,
+    campaign: &'a crate::campaign::CampaignInfo,
+    options: BatchOptions,
+}
+
+/// Readings checked against the plan's rules, evaluated, given U and judged.
+struct JudgedReadings {
+    verdict: Verdict,
+    error: Option<String>,
+    unstated: Vec<&'static str>,
+    evaluation: Evaluation,
+    judgement: Option<Judgement>,
+    findings: Vec<Violation>,
+    uncertainty: Option<Uncertainty>,
+}
+
+impl Judging<'_> {
+    /// `data` (read as `recognised`, NDE-corrected by `nde`) judged as this test is.
+    fn judge(
+        &self,
+        recognised: &Recognised,
+        data: &AxisData,
+        nde: Option<&crate::nde::NdeCorrection>,
+    ) -> JudgedReadings {
+        let (axis, campaign) = (self.axis, self.campaign);
+        let unstated =
+            stages::rules::unstated(axis, &self.slot.machine, campaign, recognised, data);
+        let mut context = stages::rules::context(axis);
+        context.planned = self.slot.planned.clone();
+        context.unstated = Some(unstated.clone());
+        context.calibration =
+            stages::rules::calibration(axis, &self.slot.machine, campaign, recognised);
+        let findings = rules::check(&context, data);
+        let evaluation = stages::evaluate::evaluate(axis, data);
+        let rule = stages::judge::decision_rule(axis, self.spec, campaign.decision_rule);
+        // The gate computes what it prints: U only where the decision rule judges with it.
+        let uncertainty =
+            (!self.options.drop_data || rule == DecisionRule::Iso14253_1).then(|| {
+                let setup = stages::uncertainty::setup(axis, data, nde);
+                crate::uncertainty::evaluate(&setup, &evaluation)
+            });
+        let judged = Judged {
+            evaluation: &evaluation,
+            findings: &findings,
+            uncertainty: uncertainty.as_ref(),
+            rule,
+        };
+        let (verdict, error, judgement) = judge_stage(axis, self.spec, data, &judged);
+        JudgedReadings {
+            verdict,
+            error,
+            unstated,
+            evaluation,
+            judgement,
+            findings,
+            uncertainty,
+        }
+    }
+
+    /// The measurement before the table this test verifies, judged as the test is: the
+    /// axis as found (ISO/IEC 17025:2017 7.8.4.1 d), the test being the axis as left.
+    fn as_found(&self, case: &stages::compensate::VerifyCase) -> AsFound {
+        let j = self.judge(
+            &case.before_recognised,
+            &case.before,
+            case.before_nde.as_ref(),
+        );
+        AsFound {
+            file: case.before_file.clone(),
+            verdict: j.verdict,
+            error: j.error,
+            evaluation: j.evaluation,
+            judgement: j.judgement,
+            findings: j.findings,
+            uncertainty: j.uncertainty,
+        }
+    }
 }
 
 /// The file read, and of the axis kind the campaign declares; else the test's error.

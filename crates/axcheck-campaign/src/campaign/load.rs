@@ -35,6 +35,12 @@ pub(super) fn machine(
         let located = Located::new(index.value(&path), message);
         return broken_machine(value, base, located.in_file(file));
     }
+    if let Some(c) = &info.certificate {
+        let path = format!("{base}.certificate");
+        if let Err(located) = super::certificate::check(c, &path, campaign.date.is_some(), index) {
+            return broken_machine(value, base, located.in_file(file));
+        }
+    }
     let axes = match value.get("axes") {
         Some(Value::Sequence(items)) => items
             .iter()

@@ -4,6 +4,7 @@
 //! error. A broken machine or axis is kept as an entry with its error, so the rest of the
 //! campaign is still evaluated. Every error names the campaign file, line and column.
 
+pub mod certificate;
 pub mod clause7_1;
 mod cross;
 pub mod data;
@@ -168,6 +169,10 @@ impl Campaign {
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let history = history_dir(&info, &dir, &index).map_err(fail)?;
         check_horizon(&info, &index).map_err(fail)?;
+        if let Some(c) = &info.certificate {
+            certificate::check(c, "campaign.certificate", info.date.is_some(), &index)
+                .map_err(fail)?;
+        }
         let machine_values = match top.get("machines") {
             None => return Err(fail(Located::new(root(), "missing the `machines:` list"))),
             Some(Value::Sequence(items)) => items,

@@ -72,6 +72,9 @@ pub struct CampaignInfo {
     pub trend_horizon_years: Option<f64>,
     #[serde(default)]
     pub output: OutputOptions,
+    /// The campaign's reports are a laboratory's calibration certificate (ISO/IEC 17025).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub certificate: Option<super::certificate::CertificateRaw>,
 }
 
 /// `campaign.unjudged`: what the gate makes of a test no limit was applied to.
@@ -134,6 +137,10 @@ pub struct MachineInfo {
     /// (`compensation/MACHINE/AXIS.<ext>`), e.g. `csv`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub controller: Option<String>,
+    /// This machine's reports are a laboratory's calibration certificate (in place of the
+    /// campaign's `certificate`, if any).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub certificate: Option<super::certificate::CertificateRaw>,
     /// Lets `axes` through the unknown-key check: the loader reads the axes one by one
     /// from the document, so that a broken axis fails alone.
     #[serde(default, skip_serializing)]
@@ -709,7 +716,9 @@ pub struct Nde {
 
 /// A date written YYYY-MM-DD (text, as YAML reads `2026-11-20`) that is a day of the
 /// calendar: `2026-02-30` is refused here, not by the history after the outputs.
-fn iso_date<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<String>, D::Error> {
+pub(crate) fn iso_date<'de, D: Deserializer<'de>>(
+    deserializer: D,
+) -> Result<Option<String>, D::Error> {
     let value = Value::deserialize(deserializer)?;
     match value.as_str() {
         _ if value.is_null() => Ok(None),

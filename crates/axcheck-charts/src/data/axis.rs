@@ -47,6 +47,10 @@ pub struct AxisReport<'a> {
     other_tool: Option<super::other_tool::OtherToolSection<'a>>,
     /// The test carried to the tool point (`tool_point:`).
     tool_point: Option<super::tool_point::ToolPointSection<'a>>,
+    /// The certificate block (`campaign.certificate`), absent for a plain test report.
+    certificate: Option<super::certificate::CertificateSection<'a>>,
+    /// The axis as found and as left, where the test verifies a table.
+    as_found: Option<super::as_found::AsFoundSection<'a>>,
     generator: String,
 }
 
@@ -107,6 +111,8 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .and_then(|e| e.other_tool.as_deref())
             .map(super::other_tool::other_tool_section),
         tool_point: super::tool_point::tool_point_section(t),
+        certificate: super::certificate::certificate_section(result, &[t], result.report_number(t)),
+        as_found: super::as_found::as_found_section(t),
         generator: generator(),
     }
 }

@@ -8,7 +8,9 @@
 //! read, with their SHA-256); [`axis_chart`] gives the
 //! data of the figures of ISO 230-2 Fig. 2a/2b.
 
+mod as_found;
 mod axis;
+pub mod certificate;
 mod compensation;
 mod conditions;
 pub mod diagnosis;

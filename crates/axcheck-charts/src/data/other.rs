@@ -38,6 +38,8 @@ pub struct OtherReport<'a> {
     cross: Vec<Row>,
     has_chart: bool,
     chart_title: &'static str,
+    /// The certificate block (`campaign.certificate`), absent for a plain test report.
+    certificate: Option<super::certificate::CertificateSection<'a>>,
     generator: String,
 }
 
@@ -102,6 +104,7 @@ pub fn other_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> Option<O
             TestKind::Straightness => "Mean deviations about the reference line",
             _ => "Mean angular deviations along the axis",
         },
+        certificate: super::certificate::certificate_section(result, &[t], result.report_number(t)),
         generator: generator(),
     })
 }

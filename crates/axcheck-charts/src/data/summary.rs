@@ -26,6 +26,8 @@ pub struct Summary<'a> {
     /// The files the run read with the start of their SHA-256, and how it was run
     /// (`null` for a result no run recorded).
     inputs: Option<super::inputs::InputsList>,
+    /// The certificate block (`campaign.certificate`) with every instrument of the run.
+    certificate: Option<super::certificate::CertificateSection<'a>>,
     generator: String,
 }
 
@@ -122,6 +124,10 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
             super::inputs::PDF_LISTED,
             super::inputs::PDF_DIGITS,
         ),
+        certificate: {
+            let all: Vec<&AxisTest> = result.tests.iter().collect();
+            super::certificate::certificate_section(result, &all, None)
+        },
         generator: generator(),
     }
 }

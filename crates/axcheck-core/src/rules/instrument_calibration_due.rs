@@ -20,14 +20,40 @@ pub(crate) const RULE: Rule = Rule {
 
 fn check(plan: &Plan) -> Option<String> {
     let c = plan.ctx.calibration.as_ref()?;
-    (c.due.as_str() < c.test_date.as_str()).then(|| {
+    if c.certifying {
+        if let Some(missing) = unshown(c) {
+            return Some(missing);
+        }
+    }
+    let (due, test_date) = (c.due.as_deref()?, c.test_date.as_deref()?);
+    (due < test_date).then(|| {
         let certificate = c
             .certificate
             .as_deref()
             .map_or(String::new(), |n| format!(" (certificate {n})"));
         format!(
-            "the calibration of the instrument {}{certificate} was due on {}, before the test on {}: its results are not traceable; recalibrate the instrument and measure again",
-            c.instrument, c.due, c.test_date
+            "the calibration of the instrument {}{certificate} was due on {due}, before the test on {test_date}: its results are not traceable; recalibrate the instrument and measure again",
+            c.instrument.as_deref().unwrap_or("(unnamed)")
         )
     })
+}
+
+/// What a certificate cannot show of the instrument's traceability (ISO/IEC 17025:2017
+/// 7.8.4.1 c): the instrument, its certificate or its due date unstated.
+fn unshown(c: &super::CalibrationDue) -> Option<String> {
+    let why = "the campaign is a certificate (campaign.certificate), which must show how its results are traceable";
+    let Some(instrument) = &c.instrument else {
+        return Some(format!(
+            "no instrument is stated (conditions.instrument): {why}; state the instrument with its calibration: {{certificate, calibrated_on, due, body}}"
+        ));
+    };
+    let lacks = match (&c.certificate, &c.due) {
+        (None, None) => "calibration certificate or due date",
+        (None, Some(_)) => "calibration certificate",
+        (Some(_), None) => "due date of its calibration",
+        (Some(_), Some(_)) => return None,
+    };
+    Some(format!(
+        "the instrument {instrument} states no {lacks} (conditions.instrument.calibration): {why}; copy them from the instrument's calibration certificate"
+    ))
 }

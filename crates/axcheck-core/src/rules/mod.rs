@@ -86,10 +86,14 @@ pub struct PlanContext {
 /// `YYYY-MM-DD`, which compare as text.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CalibrationDue {
-    pub instrument: String,
+    /// The instrument's name and serial as stated (`None`: no instrument is stated).
+    pub instrument: Option<String>,
     pub certificate: Option<String>,
-    pub due: String,
-    pub test_date: String,
+    pub due: Option<String>,
+    pub test_date: Option<String>,
+    /// The campaign is a calibration certificate (`campaign.certificate`): the traceability
+    /// must be shown, so an unstated certificate or due date is a breach too.
+    pub certifying: bool,
 }
 
 /// A planned test as the rules compare it: its targets (mm or deg) and runs, or why its

@@ -112,6 +112,11 @@ pub fn active_state<E>(
 #[derive(Debug, Clone)]
 pub struct VerifyCase {
     pub before: AxisData,
+    /// The measurement before as read: its file (as the campaign names it), the layout it
+    /// was read as and its NDE correction, for its own judgement (as found).
+    pub before_file: String,
+    pub before_recognised: crate::measurement::Recognised,
+    pub before_nde: Option<crate::nde::NdeCorrection>,
     pub old: Option<Table>,
     pub new: Table,
     /// The controller's name, for the effects of its own parameters.
@@ -247,7 +252,7 @@ fn case(
         })?;
     let read = crate::measurement::read_file_within(&path, &Default::default(), Some(files))
         .map_err(|e| StatedTableError::Before(Box::new(e)))?;
-    let (before, _) = crate::campaign::stages::nde::apply(axis, read.data);
+    let (before, before_nde) = crate::campaign::stages::nde::apply(axis, read.data);
     let before_active = match &v.active {
         Some(a) => active(
             a,
@@ -283,6 +288,9 @@ fn case(
     let compared = compared_tables(&before_active, table, &v.table, backlash, controller, kind)?;
     Ok(VerifyCase {
         before,
+        before_file: v.before.clone(),
+        before_recognised: read.recognised,
+        before_nde,
         old: compared.old,
         new: compared.new,
         controller: controller.name(),

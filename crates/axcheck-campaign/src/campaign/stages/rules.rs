@@ -67,34 +67,41 @@ pub fn unstated(
     crate::campaign::clause7_1::unstated(axis, &known)
 }
 
-/// The instrument's calibration due date against the test's date (the file's when it
-/// writes one YYYY-MM-DD, else the campaign's), where both are stated.
+/// The instrument's calibration against the test's date (the file's when it writes one
+/// YYYY-MM-DD, else the campaign's): where a due date is stated, or always when the campaign
+/// is a certificate (which must show the instrument's traceability).
 pub fn calibration(
     axis: &AxisSpec,
+    machine: &MachineInfo,
     campaign: &CampaignInfo,
     recognised: &Recognised,
 ) -> Option<rules::CalibrationDue> {
-    let instrument = axis.raw.conditions.instrument.as_ref()?;
-    let c = instrument.calibration.as_ref()?;
+    let certifying = campaign.certificate.is_some() || machine.certificate.is_some();
+    let instrument = axis.raw.conditions.instrument.as_ref();
+    let c = instrument.and_then(|i| i.calibration.as_ref());
+    if !certifying && c.and_then(|c| c.due.as_ref()).is_none() {
+        return None;
+    }
     let file_date = (recognised.info.as_ref())
         .and_then(|i| i.date.clone())
         .filter(|d| crate::campaign::model::is_iso_date(d));
-    let name = [
-        instrument.name.clone(),
-        instrument.serial.clone().map(|s| format!("s/n {s}")),
-    ]
-    .into_iter()
-    .flatten()
-    .collect::<Vec<_>>()
-    .join(" ");
-    Some(rules::CalibrationDue {
-        instrument: if name.is_empty() {
+    let name = instrument.map(|i| {
+        let name = [i.name.clone(), i.serial.clone().map(|s| format!("s/n {s}"))]
+            .into_iter()
+            .flatten()
+            .collect::<Vec<_>>()
+            .join(" ");
+        if name.is_empty() {
             "(unnamed)".into()
         } else {
             name
-        },
-        certificate: c.certificate.clone(),
-        due: c.due.clone()?,
-        test_date: file_date.or_else(|| campaign.date.clone())?,
+        }
+    });
+    Some(rules::CalibrationDue {
+        instrument: name,
+        certificate: c.and_then(|c| c.certificate.clone()),
+        due: c.and_then(|c| c.due.clone()),
+        test_date: file_date.or_else(|| campaign.date.clone()),
+        certifying,
     })
 }
