@@ -148,7 +148,7 @@ def test_check_is_the_summary_table_of_run(tmp_path: Path) -> None:
     with open(out / "summary.csv", newline="", encoding="utf-8") as f:
         written = list(csv.reader(f))
     assert written[0] == checked.columns
-    assert len(written) - 1 == len(checked.rows) == 29
+    assert len(written) - 1 == len(checked.rows) == 33
     for theirs, ours in zip(written[1:], checked.rows):
         for column, text, cell in zip(checked.columns, theirs, ours):
             if cell is None:
@@ -165,7 +165,7 @@ def test_run_writes_the_campaigns_outputs(tmp_path: Path, monkeypatch: pytest.Mo
     monkeypatch.setenv("AXCHECK_BIN", cli())
     done = axcheck.run("example-campaign/campaign.yaml", str(tmp_path / "out"), "--no-pdf")
     assert done.exit_status == 1
-    assert len(done.results["axes"]) == 29  # one entry per axis test
+    assert len(done.results["axes"]) == 33  # one entry per axis test
     assert (tmp_path / "out" / "summary.html").is_file()
     with pytest.raises(RuntimeError, match="nope.yaml"):
         axcheck.run("nope.yaml", str(tmp_path / "other"))

@@ -59,9 +59,9 @@ fn the_example_reproduces_and_a_changed_byte_is_named() {
     ] {
         assert!(paths.contains(&expected), "{expected} not in {paths:?}");
     }
-    // The 29 tests read 30 data files, 5 active tables, a spec and the campaign (built-in
+    // The 33 tests read 34 data files, 5 active tables, a spec and the campaign (built-in
     // specs are part of the version).
-    assert_eq!(files.len(), 37, "{paths:?}");
+    assert_eq!(files.len(), 41, "{paths:?}");
     for f in files {
         let path = f["path"].as_str().unwrap();
         assert!(!path.starts_with('/') && !path.contains('\\'), "{path}");
@@ -72,7 +72,7 @@ fn the_example_reproduces_and_a_changed_byte_is_named() {
     let (code, stdout, err) = reproduce(&[s(&out)]);
     assert_eq!(code, 0, "{stdout}{err}");
     assert!(
-        stdout.contains("Inputs: the 37 files recorded are unchanged (SHA-256)"),
+        stdout.contains("Inputs: the 41 files recorded are unchanged (SHA-256)"),
         "{stdout}"
     );
     assert!(
@@ -221,7 +221,7 @@ fn with_pdfs_templates_and_a_history_the_copy_is_run_and_the_history_kept() {
         stdout.contains("History: run again on a copy of"),
         "{stdout}"
     );
-    assert!(stdout.contains("identical: the 44 outputs"), "{stdout}");
+    assert!(stdout.contains("identical: the 48 outputs"), "{stdout}");
     assert_eq!(
         listing(&history),
         before,

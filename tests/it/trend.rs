@@ -438,7 +438,7 @@ fn the_example_history_is_what_the_readme_says() {
     ];
     let (code, stdout, err) = crate::common::axcheck(&args);
     assert_eq!(code, 1, "{stdout}{err}");
-    assert!(stdout.contains("History: 256 rows appended to"), "{stdout}");
+    assert!(stdout.contains("History: 298 rows appended to"), "{stdout}");
     assert!(
         stdout.contains("Trends (2022-11-20 to 2026-11-20, horizon 2 years): 13 series flagged"),
         "{stdout}"
