@@ -186,6 +186,24 @@ fn an_instrument_without_its_certificate_makes_the_test_noncompliant() {
 }
 
 #[test]
+fn a_calibration_after_the_test_does_not_show_the_instrument_valid_that_day() {
+    let dir = copy("certificate-after", |t| {
+        t.replace("calibrated_on: 2025-12-01", "calibrated_on: 2026-11-24")
+    });
+    let (code, _, results) = run(&dir);
+    assert_eq!(code, 1);
+    let y = axis(&results, "MILL-8", "K-2026-0417/MILL-8-Y-P");
+    assert_eq!(y["verdict"], "noncompliant");
+    let rule = (y["rules"].as_array().unwrap().iter())
+        .find(|r| r["id"] == "instrument-calibration-due")
+        .expect("the rule's finding");
+    assert_eq!(
+        rule["message"],
+        "the instrument HP 5529A laser s/n 3112A01234 was calibrated on 2026-11-24 (certificate NPL-2025-7781), after the test on 2026-11-20: that calibration does not show it was valid on the day; state the calibration that was valid on 2026-11-20"
+    );
+}
+
+#[test]
 fn a_verified_axis_is_reported_as_found_and_as_left() {
     let dir = copy("certificate-as-found", |t| t);
     let (_, _, results) = run(&dir);
@@ -227,7 +245,7 @@ fn a_verified_axis_is_reported_as_found_and_as_left() {
 
 #[test]
 fn certificate_keys_stop_at_their_line() {
-    let cases: [(&str, &str, &str); 3] = [
+    let cases: [(&str, &str, &str); 4] = [
         (
             "number: K-2026-0417\n",
             "number: K-2026-0417\n    report_number: \"{number}/{machine}/{axes}\"\n",
@@ -242,6 +260,11 @@ fn certificate_keys_stop_at_their_line() {
             "  date: 2026-11-20\n",
             "",
             "campaign.yaml:12:5: campaign.certificate: a certificate states the date of the measurement: add campaign.date (ISO/IEC 17025:2017 7.8.2.1 i)",
+        ),
+        (
+            "    issued: 2026-11-27\n",
+            "    issued: 2026-11-19\n",
+            "campaign.yaml:14:13: campaign.certificate.issued: 2026-11-19 is before the measurement on 2026-11-20 (campaign.date)",
         ),
     ];
     for (k, (from, to, message)) in cases.into_iter().enumerate() {

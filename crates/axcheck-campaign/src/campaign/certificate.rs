@@ -107,12 +107,12 @@ impl CertificateRaw {
 }
 
 /// The certificate at `path` (`campaign.certificate`, `machines[0].certificate`) checked at
-/// its lines: a number, an issue date, a pattern of known placeholders naming the machine
-/// and the axis; and the campaign dated (7.8.2.1 i).
+/// its lines: a number, an issue date not before the measurement's, a pattern of known
+/// placeholders naming the machine and the axis; and the campaign dated (7.8.2.1 i).
 pub(super) fn check(
     c: &CertificateRaw,
     path: &str,
-    dated: bool,
+    measured: Option<&str>,
     index: &LocationIndex,
 ) -> Result<(), Located> {
     let at = |key: &str, message: String| {
@@ -122,16 +122,22 @@ pub(super) fn check(
     if c.number.trim().is_empty() {
         return Err(at(".number", "the certificate number is empty".into()));
     }
-    if c.issued.is_none() {
+    let Some(issued) = &c.issued else {
         return Err(at(
             "",
             "a certificate states its date of issue (issued: YYYY-MM-DD; ISO/IEC 17025:2017 7.8.2.1 j)".into(),
         ));
-    }
-    if !dated {
+    };
+    let Some(measured) = measured else {
         return Err(at(
             "",
             "a certificate states the date of the measurement: add campaign.date (ISO/IEC 17025:2017 7.8.2.1 i)".into(),
+        ));
+    };
+    if issued.as_str() < measured {
+        return Err(at(
+            ".issued",
+            format!("{issued} is before the measurement on {measured} (campaign.date)"),
         ));
     }
     check_pattern(c.pattern()).map_err(|why| at(".report_number", why))

@@ -37,7 +37,7 @@ pub(super) fn machine(
     }
     if let Some(c) = &info.certificate {
         let path = format!("{base}.certificate");
-        if let Err(located) = super::certificate::check(c, &path, campaign.date.is_some(), index) {
+        if let Err(located) = super::certificate::check(c, &path, campaign.date.as_deref(), index) {
             return broken_machine(value, base, located.in_file(file));
         }
     }

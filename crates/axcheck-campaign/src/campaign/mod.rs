@@ -170,7 +170,7 @@ impl Campaign {
         let history = history_dir(&info, &dir, &index).map_err(fail)?;
         check_horizon(&info, &index).map_err(fail)?;
         if let Some(c) = &info.certificate {
-            certificate::check(c, "campaign.certificate", info.date.is_some(), &index)
+            certificate::check(c, "campaign.certificate", info.date.as_deref(), &index)
                 .map_err(fail)?;
         }
         let machine_values = match top.get("machines") {

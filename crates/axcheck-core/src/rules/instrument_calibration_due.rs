@@ -7,14 +7,16 @@ use super::{Plan, Rule, Severity};
 /// into service; 6.5, metrological traceability through an unbroken chain of
 /// calibrations; 6.4.13 e), the due date of the next calibration among the equipment's
 /// records). A test made after its instrument's stated due date is not traceable, so it
-/// does not follow the method: `noncompliant`, like a broken test plan. The rule applies
-/// where the campaign states the instrument's `calibration: {due: …}` and the test has a
-/// date (the file's, else the campaign's).
+/// does not follow the method: `noncompliant`, like a broken test plan; so is one made
+/// before the stated calibration (that calibration cannot show the instrument valid on the
+/// day: the one before it must be stated). The rule applies where the campaign states the
+/// instrument's `calibration: {calibrated_on, due}` and the test has a date (the file's,
+/// else the campaign's), and to every test of a certificate (`unshown`).
 pub(crate) const RULE: Rule = Rule {
     id: "instrument-calibration-due",
     clause: "ISO/IEC 17025:2017 6.4.4, 6.5",
     severity: Severity::Error,
-    checks: "the instrument's calibration was still valid on the test date (its stated due date is not before it)",
+    checks: "the instrument's calibration was valid on the test date (calibrated on or before it, due on or after it; in a certificate, stated)",
     check,
 };
 
@@ -25,15 +27,19 @@ fn check(plan: &Plan) -> Option<String> {
             return Some(missing);
         }
     }
-    let (due, test_date) = (c.due.as_deref()?, c.test_date.as_deref()?);
+    let test_date = c.test_date.as_deref()?;
+    let instrument = c.instrument.as_deref().unwrap_or("(unnamed)");
+    let certificate =
+        (c.certificate.as_deref()).map_or(String::new(), |n| format!(" (certificate {n})"));
+    if let Some(on) = c.calibrated_on.as_deref().filter(|on| *on > test_date) {
+        return Some(format!(
+            "the instrument {instrument} was calibrated on {on}{certificate}, after the test on {test_date}: that calibration does not show it was valid on the day; state the calibration that was valid on {test_date}"
+        ));
+    }
+    let due = c.due.as_deref()?;
     (due < test_date).then(|| {
-        let certificate = c
-            .certificate
-            .as_deref()
-            .map_or(String::new(), |n| format!(" (certificate {n})"));
         format!(
-            "the calibration of the instrument {}{certificate} was due on {due}, before the test on {test_date}: its results are not traceable; recalibrate the instrument and measure again",
-            c.instrument.as_deref().unwrap_or("(unnamed)")
+            "the calibration of the instrument {instrument}{certificate} was due on {due}, before the test on {test_date}: its results are not traceable; recalibrate the instrument and measure again"
         )
     })
 }

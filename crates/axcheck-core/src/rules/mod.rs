@@ -89,6 +89,7 @@ pub struct CalibrationDue {
     /// The instrument's name and serial as stated (`None`: no instrument is stated).
     pub instrument: Option<String>,
     pub certificate: Option<String>,
+    pub calibrated_on: Option<String>,
     pub due: Option<String>,
     pub test_date: Option<String>,
     /// The campaign is a calibration certificate (`campaign.certificate`): the traceability

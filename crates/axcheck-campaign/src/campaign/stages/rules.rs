@@ -79,7 +79,7 @@ pub fn calibration(
     let certifying = campaign.certificate.is_some() || machine.certificate.is_some();
     let instrument = axis.raw.conditions.instrument.as_ref();
     let c = instrument.and_then(|i| i.calibration.as_ref());
-    if !certifying && c.and_then(|c| c.due.as_ref()).is_none() {
+    if !certifying && c.is_none_or(|c| c.due.is_none() && c.calibrated_on.is_none()) {
         return None;
     }
     let file_date = (recognised.info.as_ref())
@@ -100,6 +100,7 @@ pub fn calibration(
     Some(rules::CalibrationDue {
         instrument: name,
         certificate: c.and_then(|c| c.certificate.clone()),
+        calibrated_on: c.and_then(|c| c.calibrated_on.clone()),
         due: c.and_then(|c| c.due.clone()),
         test_date: file_date.or_else(|| campaign.date.clone()),
         certifying,
