@@ -204,6 +204,36 @@ fn a_calibration_after_the_test_does_not_show_the_instrument_valid_that_day() {
 }
 
 #[test]
+fn the_instruments_rule_holds_for_the_other_laser_tests_too() {
+    let dir = copy("certificate-eyx", |t| {
+        t.replacen(
+            r#"calibration: {certificate: "C-2026-118", calibrated_on: 2026-03-02, due: 2027-03-02, body: "Renishaw plc"}}
+  - id: MILL-8"#,
+            r#"calibration: {certificate: "C-2025-077", calibrated_on: 2025-03-02, due: 2026-03-02, body: "Renishaw plc"}}
+  - id: MILL-8"#,
+            1,
+        )
+    });
+    let (code, console, results) = run(&dir);
+    assert_eq!(code, 1, "{console}");
+    let eyx = axis(&results, "MILL-3", "K-2026-0417/MILL-3-X-EYX");
+    assert_eq!(eyx["verdict"], "noncompliant");
+    assert_eq!(eyx["rules"][0]["id"], "instrument-calibration-due");
+    assert!(
+        (eyx["rules"][0]["message"].as_str().unwrap()).contains(
+            "(certificate C-2025-077) was due on 2026-03-02, before the test on 2026-11-20"
+        )
+    );
+    // The positioning test of the same axis, measured with the valid calibration, passes.
+    assert_eq!(
+        axis(&results, "MILL-3", "K-2026-0417/MILL-3-X-P")["verdict"],
+        "pass"
+    );
+    let report = page_texts(&dir.join("out/reports/MILL-3/X-EYX.pdf")).join(" ");
+    assert!(report.contains("instrument-calibration-due"), "{report}");
+}
+
+#[test]
 fn a_verified_axis_is_reported_as_found_and_as_left() {
     let dir = copy("certificate-as-found", |t| t);
     let (_, _, results) = run(&dir);

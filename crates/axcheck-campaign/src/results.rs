@@ -74,6 +74,8 @@ pub struct OtherTested {
     pub tolerance: Vec<String>,
     /// A straightness test's cross table and the verification of a loaded one.
     pub cross: Option<Box<CrossOutcome>>,
+    /// The rules that hold for every measured test (the instrument's calibration).
+    pub findings: Vec<Violation>,
 }
 
 /// A straightness test's cross table, where its machine names a controller (or why none
@@ -369,7 +371,11 @@ impl AxisTest {
 
     /// The test-plan findings (none when the file was not read).
     pub fn findings(&self) -> &[Violation] {
-        self.evaluated().map_or(&[], |e| &e.findings)
+        match &self.outcome {
+            Outcome::Evaluated(e) => &e.findings,
+            Outcome::Other(o) => &o.findings,
+            Outcome::Unread { .. } => &[],
+        }
     }
 
     /// `VMC-07 X`, `VMC-07 X (2/3)` or, for another laser test, `VMC-07 X EYX`, on one line whatever the names hold: hidden

@@ -56,7 +56,14 @@ pub(super) fn run(
         expanded: None,
     };
     let judgement = judge(&values, &limits, &decision);
-    let verdict = judgement.verdict(false);
+    let mut context = super::stages::rules::context(axis);
+    context.calibration =
+        super::stages::rules::calibration(axis, &slot.machine, campaign, &recognised);
+    let findings = crate::rules::check_instrument(&context, &data);
+    let broken = findings
+        .iter()
+        .any(|f| f.severity == crate::rules::Severity::Error);
+    let verdict = judgement.verdict(broken);
     let symbol = crate::campaign::geometry::symbol(raw).unwrap_or_default();
     slot.with(Outcome::Other(Box::new(OtherTested {
         verdict,
@@ -77,6 +84,7 @@ pub(super) fn run(
         result,
         uncertainty,
         judgement,
+        findings,
     })))
 }
 

@@ -40,6 +40,8 @@ pub struct OtherReport<'a> {
     chart_title: &'static str,
     /// The certificate block (`campaign.certificate`), absent for a plain test report.
     certificate: Option<super::certificate::CertificateSection<'a>>,
+    /// The rules every measured test follows (the instrument's calibration) it breaks.
+    findings: &'a [crate::rules::Violation],
     generator: String,
 }
 
@@ -105,6 +107,7 @@ pub fn other_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> Option<O
             _ => "Mean angular deviations along the axis",
         },
         certificate: super::certificate::certificate_section(result, &[t], result.report_number(t)),
+        findings: t.findings(),
         generator: generator(),
     })
 }

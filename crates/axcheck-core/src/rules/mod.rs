@@ -178,6 +178,17 @@ pub fn check(ctx: &PlanContext, data: &AxisData) -> Vec<Violation> {
     RULES.iter().filter_map(|rule| rule.apply(&plan)).collect()
 }
 
+/// The rules that hold for every test an instrument measures, whatever its plan's standard:
+/// those of a straightness or angular test (ISO 230-1), whose plans ISO 230-2's rules do
+/// not judge.
+pub fn check_instrument(ctx: &PlanContext, data: &AxisData) -> Vec<Violation> {
+    let plan = Plan::new(ctx, data);
+    instrument_calibration_due::RULE
+        .apply(&plan)
+        .into_iter()
+        .collect()
+}
+
 const EPS: f64 = 1e-9;
 
 /// Linear tests over at most this measured travel follow clause 4.3.2.
