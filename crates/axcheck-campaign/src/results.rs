@@ -437,29 +437,26 @@ impl CampaignResult {
     /// The number of `t`'s report when the campaign is a certificate
     /// (`campaign.certificate`; see [`crate::campaign::certificate`]).
     pub fn report_number(&self, t: &AxisTest) -> Option<String> {
+        use crate::geometry::TestKind;
         let certificate = self.certificate_of(t)?;
-        let kind = t.test_kind();
-        let symbol = match kind {
-            crate::geometry::TestKind::Positioning => None,
-            crate::geometry::TestKind::Squareness => Some("SQ".to_string()),
-            _ => t
-                .other()
-                .map(|o| o.symbol.clone())
-                .or_else(|| crate::campaign::geometry::symbol(&t.spec.as_ref()?.raw)),
+        // A positioning test is `P`; another its ISO 230-1 symbol (a squareness `SQ`), or
+        // its kind where the symbol is not known (a file that could not be read).
+        let symbol = match t.test_kind() {
+            TestKind::Positioning => None,
+            TestKind::Squareness => Some("SQ".to_string()),
+            kind => (t.other().map(|o| o.symbol.clone()))
+                .or_else(|| crate::campaign::geometry::symbol(&t.spec.as_ref()?.raw))
+                .filter(|s| !s.is_empty())
+                .or_else(|| Some(kind.key().to_string())),
         };
-        Some(
-            certificate.report_number(&crate::campaign::certificate::ReportId {
-                machine: &t.machine.id,
-                axis: &t.axis,
-                symbol: symbol
-                    .as_deref()
-                    .filter(|s| !s.is_empty())
-                    .or(Some(kind.key()))
-                    .filter(|_| kind != crate::geometry::TestKind::Positioning),
-                test: t.test,
-                tests: t.tests,
-            }),
-        )
+        let id = crate::campaign::certificate::ReportId {
+            machine: &t.machine.id,
+            axis: &t.axis,
+            symbol: symbol.as_deref(),
+            test: t.test,
+            tests: t.tests,
+        };
+        Some(certificate.report_number(&id))
     }
 
     /// Number of tests per verdict.
