@@ -94,9 +94,11 @@ impl CertificateRaw {
         }
         let pattern = self.pattern();
         // A pattern without `{test}` still numbers an entry's files apart.
-        let suffix = (!pattern.contains("{test}") && id.tests > 1)
-            .then(|| format!("-{}", id.test))
-            .unwrap_or_default();
+        let suffix = if !pattern.contains("{test}") && id.tests > 1 {
+            format!("-{}", id.test)
+        } else {
+            String::new()
+        };
         let number = pattern
             .replace("{number}", &self.number)
             .replace("{machine}", id.machine)

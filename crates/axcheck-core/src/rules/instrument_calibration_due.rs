@@ -22,10 +22,10 @@ pub(crate) const RULE: Rule = Rule {
 
 fn check(plan: &Plan) -> Option<String> {
     let c = plan.ctx.calibration.as_ref()?;
-    if c.certifying {
-        if let Some(missing) = unshown(c) {
-            return Some(missing);
-        }
+    if c.certifying
+        && let Some(missing) = unshown(c)
+    {
+        return Some(missing);
     }
     let test_date = c.test_date.as_deref()?;
     let instrument = c.instrument.as_deref().unwrap_or("(unnamed)");
