@@ -8,7 +8,7 @@
 //! (`EYX`), followed by `-1`, `-2` … when the entry has several files. The summary carries
 //! `{number}` itself.
 
-use super::model::iso_date;
+use super::dates::iso_date;
 use crate::yaml::{Located, LocationIndex};
 use serde::{Deserialize, Serialize};
 

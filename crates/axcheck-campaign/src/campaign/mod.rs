@@ -8,6 +8,7 @@ pub mod certificate;
 pub mod clause7_1;
 mod cross;
 pub mod data;
+pub(crate) mod dates;
 mod file_info;
 pub mod geometry;
 mod load;

@@ -84,7 +84,7 @@ pub fn calibration(
     }
     let file_date = (recognised.info.as_ref())
         .and_then(|i| i.date.clone())
-        .filter(|d| crate::campaign::model::is_iso_date(d));
+        .filter(|d| crate::campaign::dates::is_iso_date(d));
     let name = instrument.map(|i| {
         let name = [i.name.clone(), i.serial.clone().map(|s| format!("s/n {s}"))]
             .into_iter()
