@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[&[&str]] = &[
     &[
         "units",
+        "lang",
         "param_key",
         "suggest",
         "files",
@@ -26,7 +27,7 @@ const LAYERS: &[&[&str]] = &[
     &["campaign"],
     &["results"],
     &["table"],
-    &["chart_kit"],
+    &["chart_kit", "words"],
     &["charts"],
     &["data"],
     &["figures"],

@@ -1,0 +1,232 @@
+# Слова отчётов axcheck на русском языке. Ключи те же, что в en.ftl и zh.ftl (тест сравнивает
+# наборы ключей и аргументы каждого сообщения). Десятичная запятая (7,27), даты ДД.ММ.ГГГГ.
+#
+# Термины: для испытаний по ГОСТ 27843-88 — термины его раздела 1 (1.10–1.16) дословно. Для
+# ISO 230-2 русская версия — ГОСТ ISO 230-2-2016; его полный текст недоступен (найден лишь
+# фрагмент раздела 6.2 с «однонаправленной повторяемостью» и «погрешностями
+# позиционирования»), поэтому параметры ISO 230-2 названы терминами ГОСТ 27843-88
+# (точность позиционирования, повторяемость, зона нечувствительности), а E и M — по смыслу
+# определений ISO 230-2 (2.19–2.21).
+
+## Page and shared tables (style.typ)
+page-of = Страница { $page } из { $total }
+col-parameter = Параметр
+col-value = Значение
+col-u = U (k = 2)
+col-limit = Допуск
+col-margin = Запас
+col-status = Статус
+status-pass = годен
+status-fail = НЕ ГОДЕН
+status-na = н/п
+status-inconclusive = не определён
+col-inspections = Проверок
+col-latest = Последнее
+col-slope = Наклон
+col-reaches-limit = Достигнет допуска
+trend-flagged = отмечен
+trend-method = Наклон: медиана Тейла–Сена попарных наклонов за год (устойчива к одной выпадающей проверке), ± её стандартная погрешность по 95 % интервалу Сена; полоса на графиках — два наклона этого интервала через середину прямой. «Достигнет допуска»: где прямая пересекает последний допуск (|B̄| для B̄). Ряд отмечается, если прямая достигает допуска в пределах горизонта, уже выше него или значимо (95 %) ухудшается в пределах горизонта не менее чем на десятую часть допуска.
+
+## Verdicts
+verdict-pass = ГОДЕН
+verdict-fail = НЕ ГОДЕН
+verdict-noncompliant = НЕ ПО ПРОГРАММЕ
+verdict-error = ОШИБКА
+verdict-inconclusive = НЕ ОПРЕДЕЛЁН
+verdict-not-judged = НЕ ОЦЕНЁН
+verdict-detail-not-judged = Не оценён: допуски не заданы, ни одно значение не сравнивалось с допуском; выполнены только расчёт и проверка по правилам программы испытаний.
+verdict-detail-pass-one = Нормируемое значение в пределах допуска.
+verdict-detail-pass-all = Все нормируемые параметры ({ $count }) в пределах допуска.
+verdict-detail-fail = Сверх допуска: { $symbols }.
+verdict-detail-noncompliant = Испытание не следует программе стандарта ({ $rules }): его результаты нельзя использовать для приёмки.
+verdict-detail-inconclusive = В пределах неопределённости измерения у допуска (ISO 14253-1: допуск ± U): { $zone }. Ни соответствие, ни несоответствие не доказано.
+verdict-zone = { $symbol } = { $value } ± { $u } { $unit } при допуске { $limit } { $unit }
+verdict-large-uncertainty = { $detail } Неопределённость велика для этого заключения: { $list }.
+
+## Axis report: header
+axis-report-kind = Протокол проверки точности и повторяемости позиционирования
+axis-title = { $machine } — ось { $axis }
+purpose-inspection = проверка: { $purpose }
+in-full-below = { $name } (полностью ниже)
+fact-machine-in-full = Станок, полностью
+fact-axis-in-full = Ось, полностью
+fact-machine = Станок
+fact-machine-in-file = Станок в файле
+fact-model = Модель
+fact-serial = Заводской номер
+fact-type = Тип
+fact-location = Место
+fact-axis = Ось
+fact-axis-in-file = Ось в файле
+fact-axis-travel = Ход по оси
+fact-measurement-travel = Длина измерения
+fact-measurement-file = Файл измерений
+fact-file-sha = SHA-256 файла
+fact-test = Испытание
+fact-test-of = { $test }-е из { $tests } испытаний этой оси
+fact-standard = Стандарт
+fact-spec = Нормы приёмки
+fact-date = Дата проверки
+fact-inspector = Проверяющий
+from-measurement-file = { $value } (файл измерений)
+axis-kind-linear = линейная
+axis-kind-rotary = поворотная
+
+## Axis report: test conditions
+conditions-heading = Условия проверки (ISO 230-2, 7.1)
+cond-instrument = Средство измерения
+cond-instrument-position = Положение средства измерения
+cond-equipment = Испытательное оборудование
+cond-positioning-element = Позиционируемый элемент
+cond-nde = Поправка на температурное расширение (3.1)
+cond-feed = Скорость подачи
+cond-dwell = Выдержка в каждом положении
+cond-compensation = Включённая коррекция (3.2)
+cond-other-axes = Положения других осей (3.2)
+cond-tool-offset = Коррекция инструмента
+cond-workpiece-offset = Смещение заготовки
+cond-warm-up = Прогрев (3.3)
+cond-cycle = Цикл проверки
+cond-air = Воздух (начало → конец)
+cond-pressure = Давление воздуха или масла
+cond-approaches = Подходов в каждом направлении
+cond-approaches-value = n = { $n } в каждом из { $targets } заданных положений
+cond-read-as = Файл измерений прочитан как
+cond-from-file = Взято из файла измерений
+cond-notes = Примечания
+cond-not-stated = не указано
+cycle-standard = стандартный цикл (ISO 230-2, рис. 1)
+cycle-step = ступенчатый цикл (ISO 230-2, приложение A)
+cycle-pilgrim = цикл «шаг пилигрима» (ГОСТ 27843, черт. 2)
+sensor-heading = Датчик температуры
+sensor-kind = Вид
+sensor-position = Место
+sensor-start = Начало
+sensor-end = Конец
+
+## Axis report: results
+results-heading = Результаты (значения в { $unit })
+note = Примечание: { $note }
+at-target = в положении j = { $i } ({ $position })
+not-applicable = не применяется
+fig-bidirectional = Точность и повторяемость двустороннего позиционирования (как ISO 230-2, рис. 2a)
+fig-unidirectional = Точность и повторяемость одностороннего позиционирования (как ISO 230-2, рис. 2b)
+chart-target-position = Заданное положение P / { $unit }
+chart-positional-deviation = Отклонение от заданного положения / { $unit }
+targets-heading = Результаты по заданным положениям ({ $unit }, в форме таблицы 2 ISO 230-2)
+target-position = Положение P
+target-direction = Направление
+
+## Axis report: the results of the tool that wrote the file
+other-tool-heading = Результаты { $name } из файла рядом с результатами axcheck
+other-tool-intro = Файл содержит результаты, рассчитанные его программой{ $state }. axcheck обрабатывает те же отсчёты по ISO 230-2; результаты совпадают, если различаются не более, чем объясняют округления программы и отсчётов.
+other-tool-state = { " " }(состояние: { $state })
+other-tool-its-result = Её результат
+other-tool-as-printed = Как напечатано
+other-tool-theirs = Её значение ({ $unit })
+other-tool-ours = axcheck ({ $unit })
+other-tool-difference = Разность
+other-tool-agree = совпадает
+other-tool-differ = различается
+other-tool-not-compared = Не параметры ISO 230-2, не сравнивались: { $list }.
+
+## Axis report: at the tool point
+tool-point-heading = В точке инструмента (Аббе)
+tool-point-error = Результаты нельзя перенести в точку инструмента: { $error }
+tool-point-intro = Лазер измерял эту ось на своём луче; точка инструмента лежит на расстоянии { $offsets } от луча поперёк оси. Каждый отсчёт переносится туда по угловым проверкам оси { $rotations }: смещение, умноженное на тангенс угла в данном положении и направлении (HP 5528A User's Guide, приложение B), затем обрабатывается и оценивается как измеренный.
+tool-point-verdicts = Заключение на луче: { $beam }; в точке инструмента: { $tool }
+tool-point-changes = { " " }— повороты меняют заключение
+tool-point-at-beam = На луче ({ $unit })
+tool-point-at-tool = В точке инструмента ({ $unit })
+tool-point-outcome = В точке инструмента
+
+## Axis report: uncertainty
+uncertainty-heading = Неопределённость измерения (GUM, k = 2)
+uncertainty-intro = Бюджет на длине измерения ({ $length }): суммарная стандартная неопределённость u{ $c } = { $combined } { $unit }, расширенная неопределённость U = 2u{ $c } = { $expanded } { $unit }. U каждого параметра в таблице результатов — бюджет на охватываемой им длине со статистикой его собственных оценок.
+col-contributor = Составляющая
+col-distribution = Распределение
+col-share = Доля
+decision-heading = Значение и допуск ± U (зоны решения ISO 14253-1)
+
+## Axis report: test-plan findings
+findings-heading = Проверка программы испытаний
+findings-none = Испытание следует программе стандарта: ни одно правило не нарушено.
+col-severity = Важность
+col-rule = Правило
+col-clause = Пункт
+col-finding = Замечание
+severity-error = ошибка
+severity-warning = предупреждение
+
+## Axis report: model check and diagnosis
+diagnosis-heading = Проверка модели и диагностика
+diagnosis-intro = Параметры стандарта предполагают не названную в нём модель: систематическое отклонение в каждом положении и направлении, одну зону нечувствительности и белый разброс с одним σ, не зависящим от времени. axcheck подбирает эту модель, моделирует по ней испытания с программой данного испытания и называет то, что измерение показывает сверх неё.
+diagnosis-verdict = Заключение проверки модели:
+col-effect = Эффект
+col-finding-evidence = Замечание, оценка и доказательство
+evidence = Доказательство: { $evidence }
+what-to-do = Что делать:
+detectable-heading = Что эта программа может подтвердить
+detectable-note = (величина, выявляемая в 80 % испытаний с этой программой):
+unconfirmed-heading = Видно в испытании, не подтверждено прогнозом:
+unconfirmed-note = его член даёт на отложенных данных не больше, чем посторонние члены того же размера, поэтому это не замечание, и расширенная модель его не включает.
+held-out = Ошибка на отложенных данных ({ $validation }): базовая модель { $base } { $unit } СКЗ, расширенная модель { $extended } { $unit } СКЗ, выигрыш { $gain } %.
+term-gains = По членам, при схеме отложенных данных, которая может его показать: { $list }.
+model-terms = Базовые члены: { $base }. Расширенные члены: { $extended }.
+out-of-test = Вне испытания: прогноз по { $from } этой оси ({ $readings } отсчётов в её ходе, после смещения нуля { $offset } { $unit }): базовая модель (гладкое систематическое отклонение) { $base } { $unit } СКЗ, расширенная модель (отклонение в заданных положениях и оставленные члены) { $extended } { $unit } СКЗ; { $intest }. Члены времени не учитываются: они начинаются заново с каждым испытанием.
+col-parameter-unit = Параметр ({ $unit })
+as-measured = измерено
+without = без { $what }
+checks-heading = Проверка модели: измеренные статистики и испытания, смоделированные по базовой модели
+time-effect-heading = Эффект во времени относительно средних серий и остатки после него
+residuals-time-heading = Остатки во времени
+residuals-position-heading = Остатки вдоль оси
+periodogram-heading = Периодограмма систематического отклонения вдоль оси (Ломб–Скаргл)
+
+## Axis report: compensation table
+compensation-heading = Таблица коррекции (система ЧПУ { $controller })
+compensation-refused = Таблица не записана: { $reason }.
+compensation-parameters-heading = Параметры измеренные и прогнозируемые с включённой таблицей
+col-unit = Ед.
+col-measured = Измерено
+col-predicted = Прогноз
+compensation-predicted-note = Прогноз: отсчёты этого испытания с таблицей, применённой так, как её хранит система ЧПУ (значения округлены до её единицы, { $applied }), вместо коррекции, включённой при испытании, обработанные заново.
+compensation-chart-heading = Средние отклонения от заданного положения: измеренные и с таблицей
+compensation-warnings-heading = Когда не следует корректировать
+verification-heading = Проверка: это испытание повторно измеряет таблицу, загруженную после предыдущего измерения
+verification-error = Проверку выполнить нельзя: { $error }.
+verification-verdict = Заключение: { $verdict }.
+verification-note = Прогноз: предыдущее измерение с коррекцией таблицы вместо действовавшей тогда. Заключение сравнивает достигнутое E (ISO 230-2, 2.20) с прогнозируемым и с прежним, каждую разность — с неопределённостью, которую допускает разброс двух измерений. { $notes }
+
+## Axis report: inspection history
+history-heading = История проверок ({ $count } проверок, { $first } — { $last })
+history-first = Это первая проверка оси в истории: для тренда нужно две или больше.
+history-flagged = отмечено { $flagged } из { $total } параметров
+history-flagged-within = { $flagged } в пределах горизонта { $years } лет.
+history-none-flagged = В пределах горизонта { $years } лет ни один параметр не отмечен.
+closing-note = Составлено { $generator } по данным проверки; значения в { $unit }, положения как измерены.
+
+## Названия параметров ГОСТ 27843-88, раздел 1 (1.10–1.16), дословно
+param-gost-A = точность позиционирования, двустороннего
+param-gost-A_up = точность позиционирования, одностороннего ↑
+param-gost-A_down = точность позиционирования, одностороннего ↓
+param-gost-R_max = повторяемость двустороннего позиционирования
+param-gost-R_up = повторяемость одностороннего позиционирования ↑
+param-gost-R_down = повторяемость одностороннего позиционирования ↓
+param-gost-R_mean = средняя повторяемость двустороннего позиционирования
+param-gost-B_max = максимальная зона нечувствительности
+param-gost-B_mean = средняя зона нечувствительности
+## Параметры ISO 230-2 (ГОСТ ISO 230-2-2016 недоступен целиком): термины ГОСТ 27843-88,
+## E и M — по определениям ISO 230-2 2.19–2.21
+param-iso-A = точность двустороннего позиционирования оси
+param-iso-A_up = точность одностороннего позиционирования оси ↑
+param-iso-A_down = точность одностороннего позиционирования оси ↓
+param-iso-E = систематическое отклонение двустороннего позиционирования оси
+param-iso-E_up = систематическое отклонение одностороннего позиционирования оси ↑
+param-iso-E_down = систематическое отклонение одностороннего позиционирования оси ↓
+param-iso-M = размах среднего двустороннего отклонения от заданного положения
+param-iso-R = повторяемость двустороннего позиционирования оси
+param-iso-R_up = повторяемость одностороннего позиционирования оси ↑
+param-iso-R_down = повторяемость одностороннего позиционирования оси ↓
+param-iso-B = зона нечувствительности оси
+param-iso-B_mean = средняя зона нечувствительности оси

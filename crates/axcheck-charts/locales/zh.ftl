@@ -1,0 +1,226 @@
+# axcheck 报告用语（简体中文）。键与 en.ftl、ru.ftl 相同（测试比较键集和各消息的参数）。
+# 参数名称和符号按 GB/T 17421.2-2000《机床检验通则 第2部分：数控轴线的定位精度和重复定位
+# 精度的确定》第2章的术语（ISO 230-2 和 GB/T 17421.2 的检验均用之）。日期为 YYYY-MM-DD
+# （GB/T 7408 的数字形式），小数点为“.”。
+
+## Page and shared tables (style.typ)
+page-of = 第 { $page } 页，共 { $total } 页
+col-parameter = 参数
+col-value = 数值
+col-u = U（k = 2）
+col-limit = 允差
+col-margin = 余量
+col-status = 状态
+status-pass = 合格
+status-fail = 不合格
+status-na = 不适用
+status-inconclusive = 不确定
+col-inspections = 检验次数
+col-latest = 最近值
+col-slope = 斜率
+col-reaches-limit = 达到允差
+trend-flagged = 已标记
+trend-method = 斜率：每年两两斜率的 Theil–Sen 中位数（对个别异常检验稳健），± 由 Sen 95 % 区间得出的标准误差；图中的带为该区间的两条斜率线，通过直线中点。“达到允差”：直线与最近允差相交之处（B̄ 取 |B̄|）。当直线在期限内达到允差、已超过允差，或在期限内显著（95 %）恶化至少允差的十分之一时，该序列被标记。
+
+## Verdicts
+verdict-pass = 合格
+verdict-fail = 不合格
+verdict-noncompliant = 不符合检验规程
+verdict-error = 错误
+verdict-inconclusive = 不能判定
+verdict-not-judged = 未判定
+verdict-detail-not-judged = 未判定：未给出允差，未与任何允差比较；仅作了评定并按检验规程规则检查。
+verdict-detail-pass-one = 有允差的参数在允差之内。
+verdict-detail-pass-all = 全部 { $count } 个有允差的参数均在允差之内。
+verdict-detail-fail = 超出允差：{ $symbols }。
+verdict-detail-noncompliant = 检验不符合标准规定的检验规程（{ $rules }）：其结果不能用于验收。
+verdict-detail-inconclusive = 在允差处落入测量不确定度之内（ISO 14253-1：允差 ± U）：{ $zone }。既不能证明合格，也不能证明不合格。
+verdict-zone = { $symbol } = { $value } ± { $u } { $unit }，允差 { $limit } { $unit }
+verdict-large-uncertainty = { $detail } 对此判定而言不确定度较大：{ $list }。
+
+## Axis report: header
+axis-report-kind = 定位精度和重复定位精度检验报告
+axis-title = { $machine } — 轴线 { $axis }
+purpose-inspection = { $purpose }检验
+in-full-below = { $name }（全称见下）
+fact-machine-in-full = 机床全称
+fact-axis-in-full = 轴线全称
+fact-machine = 机床
+fact-machine-in-file = 文件中的机床
+fact-model = 型号
+fact-serial = 出厂编号
+fact-type = 类型
+fact-location = 地点
+fact-axis = 轴线
+fact-axis-in-file = 文件中的轴线
+fact-axis-travel = 轴线行程
+fact-measurement-travel = 测量行程
+fact-measurement-file = 测量文件
+fact-file-sha = 文件 SHA-256
+fact-test = 检验
+fact-test-of = 本轴线 { $tests } 次检验中的第 { $test } 次
+fact-standard = 标准
+fact-spec = 验收规范
+fact-date = 检验日期
+fact-inspector = 检验人员
+from-measurement-file = { $value }（测量文件）
+axis-kind-linear = 直线
+axis-kind-rotary = 回转
+
+## Axis report: test conditions
+conditions-heading = 检验条件（GB/T 17421.2 第 7.1 条）
+cond-instrument = 测量仪器
+cond-instrument-position = 仪器位置
+cond-equipment = 检验设备
+cond-positioning-element = 定位元件
+cond-nde = 名义差异膨胀修正（3.1）
+cond-feed = 进给速度
+cond-dwell = 各目标位置的停留时间
+cond-compensation = 启用的补偿（3.2）
+cond-other-axes = 其他轴线的位置（3.2）
+cond-tool-offset = 刀具偏置
+cond-workpiece-offset = 工件偏置
+cond-warm-up = 预热（3.3）
+cond-cycle = 检验循环
+cond-air = 空气（开始 → 结束）
+cond-pressure = 气压或油压
+cond-approaches = 每个方向的趋近次数
+cond-approaches-value = 在 { $targets } 个目标位置上各 n = { $n } 次
+cond-read-as = 测量文件读作
+cond-from-file = 取自测量文件
+cond-notes = 备注
+cond-not-stated = 未说明
+cycle-standard = 标准检验循环（GB/T 17421.2 图 1）
+cycle-step = 阶梯循环（GB/T 17421.2 附录 A）
+cycle-pilgrim = 朝圣步循环（GOST 27843 图 2）
+sensor-heading = 温度传感器
+sensor-kind = 类型
+sensor-position = 位置
+sensor-start = 开始
+sensor-end = 结束
+
+## Axis report: results
+results-heading = 检验结果（单位：{ $unit }）
+note = 注：{ $note }
+at-target = 在 i = { $i }（{ $position }）
+not-applicable = 不适用
+fig-bidirectional = 双向定位精度和重复定位精度（参照 GB/T 17421.2 图 2a）
+fig-unidirectional = 单向定位精度和重复定位精度（参照 GB/T 17421.2 图 2b）
+chart-target-position = 目标位置 Pi / { $unit }
+chart-positional-deviation = 位置偏差 / { $unit }
+targets-heading = 各目标位置的结果（{ $unit }，按 GB/T 17421.2 表 2 的格式）
+target-position = 位置 Pi
+target-direction = 方向
+
+## Axis report: the results of the tool that wrote the file
+other-tool-heading = 文件中 { $name } 的结果与 axcheck 的结果对照
+other-tool-intro = 文件载有其软件计算的结果{ $state }。axcheck 按 ISO 230-2 评定同一组读数；两者之差不超过软件的修约和读数的修约所能解释的范围时，即为一致。
+other-tool-state = （状态：{ $state }）
+other-tool-its-result = 其结果
+other-tool-as-printed = 原文
+other-tool-theirs = 其值（{ $unit }）
+other-tool-ours = axcheck（{ $unit }）
+other-tool-difference = 差值
+other-tool-agree = 一致
+other-tool-differ = 不一致
+other-tool-not-compared = 非 ISO 230-2 参数，未比较：{ $list }。
+
+## Axis report: at the tool point
+tool-point-heading = 刀具点处（阿贝）
+tool-point-error = 检验结果无法换算到刀具点：{ $error }
+tool-point-intro = 激光在光束上测量本轴线；刀具点在横向距光束 { $offsets } 处。每个读数通过本轴线的角度检验 { $rotations } 换算到该处：偏置乘以该目标位置和方向上角度的正切（HP 5528A 用户指南，附录 B），然后按实测值评定和判定。
+tool-point-verdicts = 光束处判定：{ $beam }；刀具点处判定：{ $tool }
+tool-point-changes = — 转角改变了判定
+tool-point-at-beam = 光束处（{ $unit }）
+tool-point-at-tool = 刀具点处（{ $unit }）
+tool-point-outcome = 刀具点处
+
+## Axis report: uncertainty
+uncertainty-heading = 测量不确定度（GUM，k = 2）
+uncertainty-intro = 测量行程（{ $length }）上的不确定度评定：合成标准不确定度 u{ $c } = { $combined } { $unit }，扩展不确定度 U = 2u{ $c } = { $expanded } { $unit }。结果表中每个参数的 U 为其所跨长度上的评定，并含其自身估算值的统计。
+col-contributor = 分量
+col-distribution = 分布
+col-share = 占比
+decision-heading = 数值与允差 ± U 的比较（ISO 14253-1 判定区）
+
+## Axis report: test-plan findings
+findings-heading = 检验规程检查
+findings-none = 检验符合标准的检验规程：未违反任何规则。
+col-severity = 严重程度
+col-rule = 规则
+col-clause = 条款
+col-finding = 发现
+severity-error = 错误
+severity-warning = 警告
+
+## Axis report: model check and diagnosis
+diagnosis-heading = 模型检查和诊断
+diagnosis-intro = 标准的参数基于一个未明示的模型：每个目标位置和方向上的系统偏差、一个反向差值，以及与时间无关、σ 单一的白噪声分散。axcheck 拟合该模型，按本检验自身的规程由其模拟检验，并指出测量中超出该模型的部分。
+diagnosis-verdict = 模型检查结论：
+col-effect = 效应
+col-finding-evidence = 发现、估计值和证据
+evidence = 证据：{ $evidence }
+what-to-do = 处理建议：
+detectable-heading = 本规程能确认的
+detectable-note = （本规程 80 % 的检验能发现的大小）：
+unconfirmed-heading = 检验中可见，但未被预测确认：
+unconfirmed-note = 其项在留出数据上的增益不大于同样大小的无关项，故不作为发现，扩展模型不含此项。
+held-out = 留出误差（{ $validation }）：基本模型 { $base } { $unit } RMS，扩展模型 { $extended } { $unit } RMS，增益 { $gain } %。
+term-gains = 各项在能显示它的留出方案下：{ $list }。
+model-terms = 基本项：{ $base }。扩展项：{ $extended }。
+out-of-test = 检验之外：由本轴线的 { $from } 预测（其行程内 { $readings } 个读数，基准偏移 { $offset } { $unit } 之后）：基本模型（平滑系统偏差）{ $base } { $unit } RMS，扩展模型（目标位置偏差及保留项）{ $extended } { $unit } RMS；{ $intest }。时间项不计入：每次检验重新开始。
+col-parameter-unit = 参数（{ $unit }）
+as-measured = 实测
+without = 去除 { $what }
+checks-heading = 模型检查：实测统计量与由基本模型模拟的检验对比
+time-effect-heading = 随时间的效应与各次运行均值的对比，及去除后的残差
+residuals-time-heading = 随时间的残差
+residuals-position-heading = 沿轴线的残差
+periodogram-heading = 沿轴线系统偏差的周期图（Lomb–Scargle）
+
+## Axis report: compensation table
+compensation-heading = 补偿表（控制器 { $controller }）
+compensation-refused = 未写出补偿表：{ $reason }。
+compensation-parameters-heading = 实测参数与启用补偿表后的预测参数
+col-unit = 单位
+col-measured = 实测
+col-predicted = 预测
+compensation-predicted-note = 预测：本检验的读数按控制器所存的补偿表（其值修约到控制器单位，{ $applied }）代替检验时启用的补偿，重新评定。
+compensation-chart-heading = 实测及加补偿表后的平均位置偏差
+compensation-warnings-heading = 不宜补偿的情况
+verification-heading = 验证：本检验复测上次测量以来装入的补偿表
+verification-error = 无法进行验证：{ $error }。
+verification-verdict = 结论：{ $verdict }。
+verification-note = 预测：上次测量以补偿表的修正代替当时启用的修正。结论将实现的 E（GB/T 17421.2 2.20）与预测的 E 及之前的 E 比较，各差值与两次测量的分散所允许的不确定度比较。{ $notes }
+
+## Axis report: inspection history
+history-heading = 检验历史（{ $count } 次检验，{ $first } 至 { $last }）
+history-first = 这是本轴线在历史中的第一次检验：趋势需要两次或更多。
+history-flagged = { $total } 个参数中 { $flagged } 个被标记
+history-flagged-within = { $flagged }（{ $years } 年期限内）。
+history-none-flagged = { $years } 年期限内无参数被标记。
+closing-note = 由 { $generator } 根据检验数据生成；数值单位 { $unit }，位置为实测位置。
+
+## 参数名称：GB/T 17421.2-2000 第 2 章（2.13、2.14、2.18~2.23）
+param-iso-A = 轴线双向定位精度
+param-iso-A_up = 轴线单向定位精度 ↑
+param-iso-A_down = 轴线单向定位精度 ↓
+param-iso-E = 轴线双向定位系统偏差
+param-iso-E_up = 轴线单向定位系统偏差 ↑
+param-iso-E_down = 轴线单向定位系统偏差 ↓
+param-iso-M = 轴线双向平均位置偏差
+param-iso-R = 轴线双向重复定位精度
+param-iso-R_up = 轴线单向重复定位精度 ↑
+param-iso-R_down = 轴线单向重复定位精度 ↓
+param-iso-B = 轴线反向差值
+param-iso-B_mean = 轴线平均反向差值
+# GOST 27843 的参数：按其定义译出，用 GB/T 17421.2 的对应术语。
+param-gost-A = 双向定位精度
+param-gost-A_up = 单向定位精度 ↑
+param-gost-A_down = 单向定位精度 ↓
+param-gost-R_max = 双向重复定位精度
+param-gost-R_up = 单向重复定位精度 ↑
+param-gost-R_down = 单向重复定位精度 ↓
+param-gost-R_mean = 平均双向重复定位精度
+param-gost-B_max = 最大反向差值
+param-gost-B_mean = 平均反向差值
