@@ -17,6 +17,7 @@ use crate::history::{AxisTrends, history_of};
 use crate::results::{AxisTest, CampaignResult};
 use crate::trend::{Series, Trend};
 use axcheck_charts::figures::{CHART_HEIGHT_PX, CHART_WIDTH_PX, TREND_STYLE};
+use axcheck_charts::words::Words;
 use chart_kit::{labels, scene::Scene};
 use charts::{
     check as check_chart, compensation as compensation_chart, diagnosis as diagnosis_charts,
@@ -139,6 +140,9 @@ pub struct Reports {
     /// The templates read from the customised copy, with their SHA-256 (empty with the
     /// built-in ones): inputs of the run.
     read: Vec<crate::files::InputFile>,
+    /// `--lang`: the language of every report, over the machines' and the campaign's
+    /// `report.lang`.
+    lang: Option<crate::lang::Lang>,
 }
 
 impl Reports {
@@ -167,7 +171,20 @@ impl Reports {
                 ReportError::Templates("a template name is not a valid virtual path".into())
             })?,
             read: root.map_or_else(Vec::new, |root| root.recorded()),
+            lang: None,
         })
+    }
+
+    /// With every report in `lang` (`--lang`), when given.
+    pub fn with_lang(mut self, lang: Option<crate::lang::Lang>) -> Reports {
+        self.lang = lang;
+        self
+    }
+
+    /// The words of `machine`'s reports (of the summary with `None`): `--lang`, else the
+    /// machine's `report.lang`, else the campaign's, else English.
+    pub fn words(&self, result: &CampaignResult, machine: Option<&crate::campaign::MachineInfo>) -> Words {
+        Words::new(crate::campaign::report_lang(self.lang, &result.info, machine))
     }
 
     /// The templates read from the customised copy with their SHA-256, sorted by path
@@ -235,8 +252,20 @@ impl Reports {
         if test.other().is_some() {
             return self.other(result, test);
         }
+        let words = self.words(result, Some(&test.machine));
+        words.scope(|| self.axis_in(result, test, trends, &words))
+    }
+
+    /// [`Reports::axis_with_history`] in `words`' language.
+    fn axis_in(
+        &self,
+        result: &CampaignResult,
+        test: &AxisTest,
+        trends: Option<&AxisTrends>,
+        words: &Words,
+    ) -> Result<Rendered, ReportError> {
         let document = test.label();
-        let mut report = data::axis_report(result, test);
+        let mut report = data::axis_report(result, test, words);
         let mut history_charts = Vec::new();
         if let Some(history) = history_of(test, trends) {
             report = report.with_history(history.section);

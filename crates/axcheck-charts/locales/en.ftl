@@ -105,7 +105,10 @@ at-target = at i = { $i } ({ $position })
 not-applicable = not applicable
 fig-bidirectional = Bidirectional accuracy and repeatability (like ISO 230-2 Fig. 2a)
 fig-unidirectional = Unidirectional accuracy and repeatability (like ISO 230-2 Fig. 2b)
-chart-target-position = Target position Pi / { $unit }
+chart-chart-mean = mean X̄i{ $arrow }
+chart-readings = readings { $arrow }
+chart-mean-bidirectional = mean X̄i (bidirectional)
+target-position = Target position Pi / { $unit }
 chart-positional-deviation = Positional deviation / { $unit }
 targets-heading = Per-target results ({ $unit }, layout of ISO 230-2 Table 2)
 target-position = Position Pi

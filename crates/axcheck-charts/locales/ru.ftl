@@ -107,11 +107,14 @@ sensor-end = Конец
 ## Axis report: results
 results-heading = Результаты (значения в { $unit })
 note = Примечание: { $note }
-at-target = в положении j = { $i } ({ $position })
+at-target = в положении i = { $i } ({ $position })
 not-applicable = не применяется
 fig-bidirectional = Точность и повторяемость двустороннего позиционирования (как ISO 230-2, рис. 2a)
 fig-unidirectional = Точность и повторяемость одностороннего позиционирования (как ISO 230-2, рис. 2b)
-chart-target-position = Заданное положение P / { $unit }
+chart-chart-mean = среднее X̄i{ $arrow }
+chart-readings = отсчёты { $arrow }
+chart-mean-bidirectional = среднее X̄i (двустороннее)
+target-position = Заданное положение P / { $unit }
 chart-positional-deviation = Отклонение от заданного положения / { $unit }
 targets-heading = Результаты по заданным положениям ({ $unit }, в форме таблицы 2 ISO 230-2)
 target-position = Положение P

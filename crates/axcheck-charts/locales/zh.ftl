@@ -106,7 +106,10 @@ at-target = 在 i = { $i }（{ $position }）
 not-applicable = 不适用
 fig-bidirectional = 双向定位精度和重复定位精度（参照 GB/T 17421.2 图 2a）
 fig-unidirectional = 单向定位精度和重复定位精度（参照 GB/T 17421.2 图 2b）
-chart-target-position = 目标位置 Pi / { $unit }
+chart-chart-mean = 平均 X̄i{ $arrow }
+chart-readings = 读数 { $arrow }
+chart-mean-bidirectional = 双向平均 X̄i
+target-position = 目标位置 Pi / { $unit }
 chart-positional-deviation = 位置偏差 / { $unit }
 targets-heading = 各目标位置的结果（{ $unit }，按 GB/T 17421.2 表 2 的格式）
 target-position = 位置 Pi

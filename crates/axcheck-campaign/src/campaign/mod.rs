@@ -16,7 +16,7 @@ pub mod stages;
 
 pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, InstrumentEntry, MachineInfo, Nde, OutputOptions,
-    SensorKind, TemperatureSensor, ToolPointRaw, Unjudged,
+    ReportOptions, SensorKind, TemperatureSensor, ToolPointRaw, Unjudged, report_lang,
 };
 
 use crate::evaluate::StandardId;

@@ -8,6 +8,7 @@ use crate::geometry::optics::Optics;
 use crate::geometry::squareness::Convention;
 use crate::geometry::tolerance::Tolerance;
 use crate::judge::{DecisionRule, Tolerances};
+use crate::lang::Lang;
 use crate::uncertainty::InstrumentKind;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::describe;
@@ -72,6 +73,32 @@ pub struct CampaignInfo {
     pub trend_horizon_years: Option<f64>,
     #[serde(default)]
     pub output: OutputOptions,
+    /// `report: {lang: zh}`: the language of the reports (`--lang` overrides it, a
+    /// machine's `report.lang` overrides it for that machine's reports).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub report: Option<ReportOptions>,
+}
+
+/// `campaign.report` and a machine's `report`: how the reports for people are written.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReportOptions {
+    /// `en`, `zh` or `ru` (English when absent).
+    #[serde(
+        default,
+        deserialize_with = "crate::yaml::optional_keyword",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub lang: Option<Lang>,
+}
+
+/// The language of a machine's reports: `cli` (`--lang`), else the machine's
+/// `report.lang`, else the campaign's, else English.
+pub fn report_lang(cli: Option<Lang>, campaign: &CampaignInfo, machine: Option<&MachineInfo>) -> Lang {
+    let of = |r: &Option<ReportOptions>| r.as_ref().and_then(|r| r.lang);
+    cli.or_else(|| machine.and_then(|m| of(&m.report)))
+        .or_else(|| of(&campaign.report))
+        .unwrap_or_default()
 }
 
 /// `campaign.unjudged`: what the gate makes of a test no limit was applied to.
@@ -134,6 +161,9 @@ pub struct MachineInfo {
     /// (`compensation/MACHINE/AXIS.<ext>`), e.g. `csv`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub controller: Option<String>,
+    /// `report: {lang: ru}`: the language of this machine's reports.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub report: Option<ReportOptions>,
     /// Lets `axes` through the unknown-key check: the loader reads the axes one by one
     /// from the document, so that a broken axis fails alone.
     #[serde(default, skip_serializing)]
