@@ -73,10 +73,27 @@ struct Files {
 }
 
 impl Files {
-    /// `/data.json`.
-    fn data(document: &str, data: &impl serde::Serialize) -> Result<Files, ReportError> {
+    /// `/data.json`: `data` with the words of the document's language (`lang`, `t`: every
+    /// message of its catalogue, which the templates' `tr` reads).
+    fn data(
+        document: &str,
+        data: &impl serde::Serialize,
+        words: &Words,
+    ) -> Result<Files, ReportError> {
+        #[derive(serde::Serialize)]
+        struct WithWords<'a, T> {
+            #[serde(flatten)]
+            data: &'a T,
+            lang: &'static str,
+            t: &'a std::collections::BTreeMap<String, String>,
+        }
+        let with = WithWords {
+            data,
+            lang: words.lang().code(),
+            t: words.all(),
+        };
         let mut files = Files::default();
-        files.push(document, "/data.json".into(), data)?;
+        files.push(document, "/data.json".into(), &with)?;
         Ok(files)
     }
 
@@ -271,7 +288,7 @@ impl Reports {
             report = report.with_history(history.section);
             history_charts = history.charts;
         }
-        let mut files = Files::data(&document, &report)?;
+        let mut files = Files::data(&document, &report, words)?;
         for chart in history_charts {
             files.chart(&chart.name, chart.scene);
         }
@@ -315,6 +332,17 @@ impl Reports {
 
     /// The report of a straightness, angular or squareness test (ISO 230-1).
     fn other(&self, result: &CampaignResult, test: &AxisTest) -> Result<Rendered, ReportError> {
+        let words = self.words(result, Some(&test.machine));
+        words.scope(|| self.other_in(result, test, &words))
+    }
+
+    /// [`Reports::other`] in `words`' language.
+    fn other_in(
+        &self,
+        result: &CampaignResult,
+        test: &AxisTest,
+        words: &Words,
+    ) -> Result<Rendered, ReportError> {
         let document = test.label();
         let Some(report) = data::other_report(result, test) else {
             return Err(ReportError::Typeset {
@@ -322,7 +350,7 @@ impl Reports {
                 message: "not one of the other laser tests".into(),
             });
         };
-        let mut files = Files::data(&document, &report)?;
+        let mut files = Files::data(&document, &report, words)?;
         if let Some(chart) = test.other().and_then(data::other_chart) {
             let style = charts::Style {
                 width_px: CHART_WIDTH_PX,
@@ -352,6 +380,17 @@ impl Reports {
         result: &CampaignResult,
         trends: Option<&AxisTrends>,
     ) -> Result<Rendered, ReportError> {
+        let words = self.words(result, None);
+        words.scope(|| self.summary_in(result, trends, &words))
+    }
+
+    /// [`Reports::summary_with_trends`] in `words`' language.
+    fn summary_in(
+        &self,
+        result: &CampaignResult,
+        trends: Option<&AxisTrends>,
+        words: &Words,
+    ) -> Result<Rendered, ReportError> {
         let document = "summary";
         let mut summary = data::summary(result);
         if let Some(t) =
@@ -359,7 +398,7 @@ impl Reports {
         {
             summary = summary.with_trends(t);
         }
-        let mut files = Files::data(document, &summary)?;
+        let mut files = Files::data(document, &summary, words)?;
         let bars = ratio_bars(result);
         let style = charts::Style {
             width_px: CHART_WIDTH_PX,
@@ -382,7 +421,7 @@ impl Reports {
     ) -> Result<Rendered, ReportError> {
         let document = "trends";
         let (doc, charts) = data::trends::trends_document(history, pairs, horizon_years, table);
-        let mut files = Files::data(document, &doc)?;
+        let mut files = Files::data(document, &doc, &Words::new(self.lang.unwrap_or_default()))?;
         for (name, chart) in charts {
             files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
         }

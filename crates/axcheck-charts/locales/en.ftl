@@ -19,7 +19,13 @@ col-latest = Latest
 col-slope = Slope
 col-reaches-limit = Reaches the limit
 trend-flagged = flagged
-trend-method = Slope: the Theil–Sen median of the pairwise slopes per year (robust to one odd inspection), ± its standard error from Sen's 95 % interval; the band on the charts is that interval's two slopes through the line's middle. "Reaches the limit": where the line meets the latest limit (|B̄| for B̄). A series is flagged when the line reaches its limit within the horizon, is over it, or worsens significantly (95 %) by at least a tenth of its limit within the horizon.
+trend-method = Slope: the Theil–Sen median of the pairwise slopes per year (robust to one odd inspection), ± its standard error from Sen’s 95 % interval; the band on the charts is that interval’s two slopes through the line’s middle. “Reaches the limit”: where the line meets the latest limit (|B̄| for B̄). A series is flagged when the line reaches its limit within the horizon, is over it, or worsens significantly (95 %) by at least a tenth of its limit within the horizon.
+
+## Units
+unit-um = µm
+unit-mm = mm
+unit-arcsec = arcsec
+unit-s = s
 
 ## Verdicts
 verdict-pass = PASS
@@ -92,6 +98,17 @@ cond-not-stated = not stated
 cycle-standard = standard test cycle (ISO 230-2 Fig. 1)
 cycle-step = step cycle (ISO 230-2 Annex A)
 cycle-pilgrim = pilgrim-step cycle (GOST 27843 Черт. 2)
+unstated-instrument-position = Position of the measuring instrument
+unstated-sensor-positions = Positions of the temperature sensors
+unstated-model = Machine model
+unstated-type = Machine type
+unstated-equipment = Test equipment (maker, type, serial numbers)
+unstated-expansion = Expansion coefficient of the positioning element
+unstated-offsets = Tool and workpiece offsets
+unstated-material = Material temperatures at start and end
+unstated-air = Air temperature at start and end
+unstated-pressure = Air pressure and humidity at start and end
+unstated-compensation = Compensation active during the test (3.2)
 sensor-heading = Temperature sensor
 sensor-kind = Kind
 sensor-position = Position
@@ -105,18 +122,18 @@ at-target = at i = { $i } ({ $position })
 not-applicable = not applicable
 fig-bidirectional = Bidirectional accuracy and repeatability (like ISO 230-2 Fig. 2a)
 fig-unidirectional = Unidirectional accuracy and repeatability (like ISO 230-2 Fig. 2b)
-chart-chart-mean = mean X̄i{ $arrow }
+chart-mean = mean X̄i{ $arrow }
 chart-readings = readings { $arrow }
 chart-mean-bidirectional = mean X̄i (bidirectional)
-target-position = Target position Pi / { $unit }
+chart-target-position = Target position Pi / { $unit }
+target-position = Position Pi
 chart-positional-deviation = Positional deviation / { $unit }
 targets-heading = Per-target results ({ $unit }, layout of ISO 230-2 Table 2)
-target-position = Position Pi
 target-direction = Direction
 
 ## Axis report: the results of the tool that wrote the file
-other-tool-heading = Results of the { $name } in the file, beside axcheck's
-other-tool-intro = The file carries the results its tool computed{ $state }. axcheck evaluates the same readings by ISO 230-2; the two agree when they differ by no more than the tool's rounding and the readings' rounding explain.
+other-tool-heading = Results of the { $name } in the file, beside axcheck’s
+other-tool-intro = The file carries the results its tool computed{ $state }. axcheck evaluates the same readings by ISO 230-2; the two agree when they differ by no more than the tool’s rounding and the readings’ rounding explain.
 other-tool-state = { " " }(state: { $state })
 other-tool-its-result = Its result
 other-tool-as-printed = As printed
@@ -130,16 +147,16 @@ other-tool-not-compared = Not ISO 230-2 parameters, not compared: { $list }.
 ## Axis report: at the tool point
 tool-point-heading = At the tool point (Abbe)
 tool-point-error = The test could not be carried to the tool point: { $error }
-tool-point-intro = The laser measured this axis on its beam; the tool point lies at { $offsets } from the beam, across the axis. Each reading is carried there through the axis's angular tests { $rotations }: the offset times the tangent of the angle at its target and direction (HP 5528A User's Guide, Appendix B), then evaluated and judged as measured.
+tool-point-intro = The laser measured this axis on its beam; the tool point lies at { $offsets } from the beam, across the axis. Each reading is carried there through the axis’s angular tests { $rotations }: the offset times the tangent of the angle at its target and direction (HP 5528A User’s Guide, Appendix B), then evaluated and judged as measured.
 tool-point-verdicts = Verdict at the beam: { $beam }; at the tool point: { $tool }
-tool-point-changes = { " " }— the rotations change the verdict
+tool-point-changes = the rotations change the verdict
 tool-point-at-beam = At the beam ({ $unit })
 tool-point-at-tool = At the tool point ({ $unit })
 tool-point-outcome = At the tool point
 
 ## Axis report: uncertainty
 uncertainty-heading = Measurement uncertainty (GUM, k = 2)
-uncertainty-intro = Budget over the measurement travel ({ $length }): combined standard uncertainty u{ $c } = { $combined } { $unit }, expanded uncertainty U = 2u{ $c } = { $expanded } { $unit }. Each parameter's U in the results table is the budget over the length it spans, with the statistics of its own estimates.
+uncertainty-intro = Budget over the measurement travel ({ $length }): combined standard uncertainty u{ $c } = { $combined } { $unit }, expanded uncertainty U = 2u{ $c } = { $expanded } { $unit }. Each parameter’s U in the results table is the budget over the length it spans, with the statistics of its own estimates.
 col-contributor = Contributor
 col-distribution = Distribution
 col-share = Share
@@ -147,7 +164,7 @@ decision-heading = Value against the limit ± U (ISO 14253-1 decision zones)
 
 ## Axis report: test-plan findings
 findings-heading = Test-plan findings
-findings-none = The test follows the standard's plan: no rule is broken.
+findings-none = The test follows the standard’s plan: no rule is broken.
 col-severity = Severity
 col-rule = Rule
 col-clause = Clause
@@ -157,7 +174,7 @@ severity-warning = warning
 
 ## Axis report: model check and diagnosis
 diagnosis-heading = Model check and diagnosis
-diagnosis-intro = The standard's parameters assume a model it never states: a systematic deviation at each target and direction, one reversal value, and white scatter with one σ that does not depend on time. axcheck fits that model, simulates tests from it with this test's own plan, and names what the measurement shows beyond it.
+diagnosis-intro = The standard’s parameters assume a model it never states: a systematic deviation at each target and direction, one reversal value, and white scatter with one σ that does not depend on time. axcheck fits that model, simulates tests from it with this test’s own plan, and names what the measurement shows beyond it.
 diagnosis-verdict = Verdict of the model check:
 col-effect = Effect
 col-finding-evidence = Finding, estimate and evidence
@@ -187,17 +204,17 @@ compensation-parameters-heading = Parameters measured and predicted with the tab
 col-unit = Unit
 col-measured = Measured
 col-predicted = Predicted
-compensation-predicted-note = Predicted: this test's readings with the table applied as the controller holds it (its values rounded to the controller's unit, { $applied }), in place of the compensation active during the test, evaluated again.
+compensation-predicted-note = Predicted: this test’s readings with the table applied as the controller holds it (its values rounded to the controller’s unit, { $applied }), in place of the compensation active during the test, evaluated again.
 compensation-chart-heading = Mean positional deviations as measured and with the table
 compensation-warnings-heading = When not to compensate
 verification-heading = Verification: this test re-measures the table loaded since the measurement before
 verification-error = The verification could not be made: { $error }.
 verification-verdict = Verdict: { $verdict }.
-verification-note = Predicted: the measurement before with the table's correction in place of the one active then. The verdict compares E (ISO 230-2 2.20) achieved with E predicted and with E before, each difference against the uncertainty the two measurements' scatter allows. { $notes }
+verification-note = Predicted: the measurement before with the table’s correction in place of the one active then. The verdict compares E (ISO 230-2 2.20) achieved with E predicted and with E before, each difference against the uncertainty the two measurements’ scatter allows. { $notes }
 
 ## Axis report: inspection history
 history-heading = Inspection history ({ $count } inspections, { $first } to { $last })
-history-first = This is the axis's first inspection in the history: a trend needs two or more.
+history-first = This is the axis’s first inspection in the history: a trend needs two or more.
 history-flagged = { $flagged } of { $total } parameters flagged
 history-flagged-within = { $flagged } within the { $years }-year horizon.
 history-none-flagged = No parameter is flagged within the { $years }-year horizon.

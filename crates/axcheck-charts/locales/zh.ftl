@@ -22,6 +22,12 @@ col-reaches-limit = 达到允差
 trend-flagged = 已标记
 trend-method = 斜率：每年两两斜率的 Theil–Sen 中位数（对个别异常检验稳健），± 由 Sen 95 % 区间得出的标准误差；图中的带为该区间的两条斜率线，通过直线中点。“达到允差”：直线与最近允差相交之处（B̄ 取 |B̄|）。当直线在期限内达到允差、已超过允差，或在期限内显著（95 %）恶化至少允差的十分之一时，该序列被标记。
 
+## Units
+unit-um = µm
+unit-mm = mm
+unit-arcsec = 角秒
+unit-s = s
+
 ## Verdicts
 verdict-pass = 合格
 verdict-fail = 不合格
@@ -93,6 +99,17 @@ cond-not-stated = 未说明
 cycle-standard = 标准检验循环（GB/T 17421.2 图 1）
 cycle-step = 阶梯循环（GB/T 17421.2 附录 A）
 cycle-pilgrim = 朝圣步循环（GOST 27843 图 2）
+unstated-instrument-position = 测量仪器的位置
+unstated-sensor-positions = 温度传感器的位置
+unstated-model = 机床型号
+unstated-type = 机床类型
+unstated-equipment = 检验设备（制造厂、型号、编号）
+unstated-expansion = 定位元件的膨胀系数
+unstated-offsets = 刀具和工件偏置
+unstated-material = 开始和结束时的材料温度
+unstated-air = 开始和结束时的空气温度
+unstated-pressure = 开始和结束时的气压和湿度
+unstated-compensation = 检验时启用的补偿（3.2）
 sensor-heading = 温度传感器
 sensor-kind = 类型
 sensor-position = 位置
@@ -106,13 +123,13 @@ at-target = 在 i = { $i }（{ $position }）
 not-applicable = 不适用
 fig-bidirectional = 双向定位精度和重复定位精度（参照 GB/T 17421.2 图 2a）
 fig-unidirectional = 单向定位精度和重复定位精度（参照 GB/T 17421.2 图 2b）
-chart-chart-mean = 平均 X̄i{ $arrow }
+chart-mean = 平均 X̄i{ $arrow }
 chart-readings = 读数 { $arrow }
 chart-mean-bidirectional = 双向平均 X̄i
-target-position = 目标位置 Pi / { $unit }
+chart-target-position = 目标位置 Pi / { $unit }
+target-position = 位置 Pi
 chart-positional-deviation = 位置偏差 / { $unit }
 targets-heading = 各目标位置的结果（{ $unit }，按 GB/T 17421.2 表 2 的格式）
-target-position = 位置 Pi
 target-direction = 方向
 
 ## Axis report: the results of the tool that wrote the file
@@ -133,7 +150,7 @@ tool-point-heading = 刀具点处（阿贝）
 tool-point-error = 检验结果无法换算到刀具点：{ $error }
 tool-point-intro = 激光在光束上测量本轴线；刀具点在横向距光束 { $offsets } 处。每个读数通过本轴线的角度检验 { $rotations } 换算到该处：偏置乘以该目标位置和方向上角度的正切（HP 5528A 用户指南，附录 B），然后按实测值评定和判定。
 tool-point-verdicts = 光束处判定：{ $beam }；刀具点处判定：{ $tool }
-tool-point-changes = — 转角改变了判定
+tool-point-changes = 转角改变了判定
 tool-point-at-beam = 光束处（{ $unit }）
 tool-point-at-tool = 刀具点处（{ $unit }）
 tool-point-outcome = 刀具点处

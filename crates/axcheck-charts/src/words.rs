@@ -97,7 +97,16 @@ impl Words {
 
     /// Every message, for the templates: arguments as `{name}`, which the templates'
     /// `tr` replaces.
-    pub fn all(&self) -> BTreeMap<String, String> {
+    pub fn all(&self) -> &'static BTreeMap<String, String> {
+        static ALL: LazyLock<Vec<(Lang, BTreeMap<String, String>)>> = LazyLock::new(|| {
+            (Lang::ALL.into_iter())
+                .map(|lang| (lang, Words::new(lang).all_now()))
+                .collect()
+        });
+        &ALL.iter().find(|(l, _)| *l == self.lang).expect("every language").1
+    }
+
+    fn all_now(&self) -> BTreeMap<String, String> {
         let source = SOURCES.iter().find(|(l, _)| *l == self.lang).expect("every language").1;
         let resource = FluentResource::try_new(source.to_string()).expect("checked above");
         message_args(&resource)
@@ -140,6 +149,19 @@ impl Words {
             Some(_) => self.get(&id),
             None => english.to_string(),
         }
+    }
+
+    /// A unit symbol (`µm`, `mm`, `arcsec`, `°`, `s`) as this language writes it (`мкм`,
+    /// `мм` in Russian); other text as it is.
+    pub fn unit(&self, symbol: &str) -> String {
+        let key = match symbol {
+            "µm" | "um" => "unit-um",
+            "mm" => "unit-mm",
+            "arcsec" => "unit-arcsec",
+            "s" => "unit-s",
+            _ => return symbol.to_string(),
+        };
+        self.get(key)
     }
 
     /// The word for a verdict key (`pass`, `fail`, …) in this language.
@@ -243,7 +265,14 @@ mod tests {
     }
 
     /// The messages that read the same in every language: symbols and units only.
-    const SAME_EVERYWHERE: &[&str] = &["col-u", "other-tool-ours", "verdict-zone"];
+    const SAME_EVERYWHERE: &[&str] = &[
+        "col-u",
+        "other-tool-ours",
+        "verdict-zone",
+        "unit-um",
+        "unit-mm",
+        "unit-s",
+    ];
 
     /// No English left in Chinese or Russian: a message equal to its English text is one
     /// of [`SAME_EVERYWHERE`].

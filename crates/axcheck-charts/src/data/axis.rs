@@ -15,7 +15,6 @@ use crate::rules::Violation;
 use crate::units::{Travel, fmt_position};
 use crate::words::Words;
 use serde::Serialize;
-use std::collections::BTreeMap;
 
 /// Everything `axis-report.typ` shows.
 #[derive(Serialize)]
@@ -28,7 +27,7 @@ pub struct AxisReport<'a> {
     /// Names the facts shorten, in full.
     full_names: Vec<Row>,
     verdict: VerdictText,
-    unit: &'static str,
+    unit: String,
     conditions: Vec<Row>,
     sensors: Vec<SensorRow<'a>>,
     parameters: Vec<ParameterRow>,
@@ -50,9 +49,6 @@ pub struct AxisReport<'a> {
     /// The test carried to the tool point (`tool_point:`).
     tool_point: Option<super::tool_point::ToolPointSection<'a>>,
     generator: String,
-    /// The language (`en`, `zh`, `ru`: Typst's `lang`) and its words for the template.
-    lang: &'static str,
-    t: BTreeMap<String, String>,
 }
 
 impl AxisReport<'_> {
@@ -88,7 +84,7 @@ pub fn axis_report<'a>(
         facts: facts(result, t, words),
         full_names: full_names(t, words),
         verdict: VerdictText::new(t, words),
-        unit: kind.map_or("", |k| k.deviation_symbol()),
+        unit: kind.map_or(String::new(), |k| words.unit(k.deviation_symbol())),
         conditions: match (conditions, kind) {
             (Some(c), Some(k)) => condition_rows(c, k, t, words),
             _ => Vec::new(),
@@ -120,8 +116,6 @@ pub fn axis_report<'a>(
             .map(super::other_tool::other_tool_section),
         tool_point: super::tool_point::tool_point_section(t),
         generator: generator(),
-        lang: words.lang().code(),
-        t: words.all(),
     }
 }
 

@@ -113,10 +113,36 @@ fn not_stated(t: &AxisTest, words: &Words) -> Vec<Row> {
     let unstated = t.evaluated().map_or(&[][..], |e| &e.unstated);
     (unstated.iter())
         .map(|label| Row {
-            label: label.to_string(),
+            label: unstated_key(label).map_or(label.to_string(), |k| words.get(k)),
             value: words.get("cond-not-stated"),
         })
         .collect()
+}
+
+/// The catalogue key of a clause 7.1 item as `campaign::clause7_1::unstated` words it.
+fn unstated_key(label: &str) -> Option<&'static str> {
+    Some(match label {
+        "Position of the measuring instrument" => "unstated-instrument-position",
+        "Positions of the temperature sensors" => "unstated-sensor-positions",
+        "NDE correction (3.1)" => "cond-nde",
+        "Test date" => "fact-date",
+        "Machine model" => "unstated-model",
+        "Machine type" => "unstated-type",
+        "Axis travel" => "fact-axis-travel",
+        "Test equipment (maker, type, serial numbers)" => "unstated-equipment",
+        "Positioning element" => "cond-positioning-element",
+        "Expansion coefficient of the positioning element" => "unstated-expansion",
+        "Positions of the other axes (3.2)" => "cond-other-axes",
+        "Tool and workpiece offsets" => "unstated-offsets",
+        "Feed rate" => "cond-feed",
+        "Dwell at each target" => "cond-dwell",
+        "Warm-up (3.3)" => "cond-warm-up",
+        "Material temperatures at start and end" => "unstated-material",
+        "Air temperature at start and end" => "unstated-air",
+        "Air pressure and humidity at start and end" => "unstated-pressure",
+        "Compensation active during the test (3.2)" => "unstated-compensation",
+        _ => return None,
+    })
 }
 
 /// The layout the file was read as, then what was assumed or skipped: `wide CSV; 11

@@ -49,10 +49,15 @@ fn opt(x: Option<f64>) -> String {
     x.map_or("–".into(), num)
 }
 
+/// A unit symbol in the language of the document being built (`мм`, `мкм` in Russian).
+pub(crate) fn unit(symbol: &str) -> String {
+    crate::words::Words::new(crate::words::numbers()).unit(symbol)
+}
+
 /// A position with its unit: `250.5 mm`, `90°`.
 fn pos(kind: AxisKind, x: f64) -> String {
     match kind {
-        AxisKind::Linear => format!("{} mm", local(&fmt_position(x).replace('-', "−"))),
+        AxisKind::Linear => format!("{} {}", local(&fmt_position(x).replace('-', "−")), unit("mm")),
         AxisKind::Rotary => format!("{}°", local(&fmt_position(x).replace('-', "−"))),
     }
 }
@@ -211,8 +216,8 @@ pub fn axis_chart(e: &Evaluation) -> (AxisChart, Vec<Span>, Vec<Span>) {
     };
     let chart = AxisChart {
         positions: e.targets.iter().map(|t| t.position).collect(),
-        position_label: words.args("chart-target-position", &[("unit", pos_unit)]),
-        deviation_label: words.args("chart-positional-deviation", &[("unit", dev_unit)]),
+        position_label: words.args("chart-target-position", &[("unit", &words.unit(pos_unit))]),
+        deviation_label: words.args("chart-positional-deviation", &[("unit", &words.unit(dev_unit))]),
         up: series(Direction::Up),
         down: series(Direction::Down),
         mean: e.targets.iter().map(|t| t.mean).collect(),
