@@ -122,6 +122,7 @@ at-target = at i = { $i } ({ $position })
 not-applicable = not applicable
 fig-bidirectional = Bidirectional accuracy and repeatability (like ISO 230-2 Fig. 2a)
 fig-unidirectional = Unidirectional accuracy and repeatability (like ISO 230-2 Fig. 2b)
+chart-approach = Approach { $arrow }
 chart-mean = mean X̄i{ $arrow }
 chart-readings = readings { $arrow }
 chart-mean-bidirectional = mean X̄i (bidirectional)

@@ -128,6 +128,7 @@ at-target = в положении i = { $i } ({ $position })
 not-applicable = не применяется
 fig-bidirectional = Точность и повторяемость двустороннего позиционирования (как ISO 230-2, рис. 2a)
 fig-unidirectional = Точность и повторяемость одностороннего позиционирования (как ISO 230-2, рис. 2b)
+chart-approach = Подход { $arrow }
 chart-mean = среднее X̄i{ $arrow }
 chart-readings = отсчёты { $arrow }
 chart-mean-bidirectional = среднее X̄i (двустороннее)

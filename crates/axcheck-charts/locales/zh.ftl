@@ -123,6 +123,7 @@ at-target = 在 i = { $i }（{ $position }）
 not-applicable = 不适用
 fig-bidirectional = 双向定位精度和重复定位精度（参照 GB/T 17421.2 图 2a）
 fig-unidirectional = 单向定位精度和重复定位精度（参照 GB/T 17421.2 图 2b）
+chart-approach = 趋近 { $arrow }
 chart-mean = 平均 X̄i{ $arrow }
 chart-readings = 读数 { $arrow }
 chart-mean-bidirectional = 双向平均 X̄i
