@@ -97,6 +97,14 @@ fn a_russian_gost_report_names_the_parameters_in_the_terms_of_gost_27843() {
     assert!(ru.contains("20.11.2026") && !ru.contains("2026-11-20"), "{ru}");
     assert!(ru.contains("Результаты (значения в мкм)"), "{ru}");
     assert!(ru.contains("Страница 1 из"), "{ru}");
+    // The summary too: its headings, the date, a decimal comma, micrometres as мкм.
+    let summary = text(&out.join("summary.pdf"));
+    for words in ["СВОДКА ПРОВЕРКИ ТОЧНОСТИ ПОЗИЦИОНИРОВАНИЯ", "Дата", "20.11.2026", "Оси (значения", "18,00", "мкм", "ГОДЕН"] {
+        assert!(summary.contains(words), "{words} missing:\n{summary}");
+    }
+    for english in ["Axes (values", "Page 1 of", "within tolerance", "Inputs"] {
+        assert!(!summary.contains(english), "{english} left in:\n{summary}");
+    }
     // Without `--lang` nothing is recorded: the campaign says it.
     let results = results(&out);
     assert!(results["inputs"]["options"].get("lang").is_none(), "{results}");

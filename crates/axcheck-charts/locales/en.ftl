@@ -221,6 +221,43 @@ history-flagged-within = { $flagged } within the { $years }-year horizon.
 history-none-flagged = No parameter is flagged within the { $years }-year horizon.
 closing-note = Produced by { $generator } from the campaign data; values in { $unit }, positions as measured.
 
+## Campaign summary (summary.typ)
+summary-title = summary
+summary-kind = Positioning accuracy campaign summary
+summary-site = Site
+summary-purpose = Purpose
+summary-date = Date
+summary-campaign-file = Campaign file
+summary-tests = tests
+summary-trends-heading = Trends over the inspection history ({ $first } to { $last })
+summary-trends-none = None of the { $series } series of these axes is flagged within the { $years }-year horizon.
+summary-trends-flagged = { $flagged } of the { $series } series of these axes are flagged within the { $years }-year horizon (each axis report’s section “Inspection history” shows them):
+summary-machine-axis = Machine, axis
+summary-why = Why
+summary-axes-heading = Axes (values in the axis’s unit; needing attention first)
+summary-travel = Travel
+summary-worst = Worst / limit
+summary-diagnosis = Diagnosis
+summary-verdict = Verdict
+summary-no-tolerance = no tolerance
+summary-axes-note = A, E, R, B per ISO 230-2 (R and B are R_max and B_max for GOST 27843 axes); “–”: not applicable (n = 1, clause 5.2) or not evaluated. “Worst / limit”: the parameter using the largest share of its tolerance. “Diagnosis”: the effects the model check names beyond the standard’s model (none: the model explains the data).
+chart-usage-axis = Worst parameter / tolerance
+chart-usage-empty = No axes to summarise.
+chart-usage-within = within tolerance
+chart-usage-over = over tolerance
+chart-usage-limit = limit
+chart-usage-clipped = ▶ ratio above { $ratio }, bar clipped
+summary-usage-heading = Share of tolerance used (worst parameter of each axis)
+summary-noncompliant-heading = Noncompliant test plans
+summary-errors-heading = Errors
+summary-inputs-heading = Inputs
+summary-inputs-intro = Made by axcheck { $version } from the { $total } files below with the command { $command } (and the output folder); { $reproduce } on that folder checks each file’s SHA-256, runs the campaign again and compares the outputs byte for byte.
+summary-file = File
+summary-sha = SHA-256 (first 16 digits)
+summary-more-files = … and { $more } more files.
+summary-paths-note = Paths relative to the campaign’s folder (templates and history after their folder as given); results.json lists every input with its whole SHA-256.
+summary-closing-note = Produced by { $generator }. Per-axis reports: reports/MACHINE/AXIS.pdf.
+
 ## Parameter names as each standard words them (ISO 230-2; GOST 27843-88; VDI 3441 and
 ## NMTBA as described by Hemingray, Cowley and Burdekin)
 param-iso-A = bidirectional accuracy of positioning

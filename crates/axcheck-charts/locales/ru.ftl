@@ -227,6 +227,43 @@ history-flagged-within = { $flagged } в пределах горизонта { $
 history-none-flagged = В пределах горизонта { $years } лет ни один параметр не отмечен.
 closing-note = Составлено { $generator } по данным проверки; значения в { $unit }, положения как измерены.
 
+## Campaign summary (summary.typ)
+summary-title = сводка
+summary-kind = Сводка проверки точности позиционирования
+summary-site = Площадка
+summary-purpose = Цель проверки
+summary-date = Дата
+summary-campaign-file = Файл проверки
+summary-tests = испытаний
+summary-trends-heading = Тренды по истории проверок ({ $first } — { $last })
+summary-trends-none = Ни один из { $series } рядов этих осей не отмечен в пределах горизонта { $years } лет.
+summary-trends-flagged = Отмечено { $flagged } из { $series } рядов этих осей в пределах горизонта { $years } лет (их показывает раздел «История проверок» протокола каждой оси):
+summary-machine-axis = Станок, ось
+summary-why = Почему
+summary-axes-heading = Оси (значения в единицах оси; сначала требующие внимания)
+summary-travel = Длина
+summary-worst = Наибольшая доля
+summary-diagnosis = Диагностика
+summary-verdict = Итог
+summary-no-tolerance = нет допуска
+summary-axes-note = A, E, R, B по ISO 230-2 (R и B — это R_max и B_max для осей по ГОСТ 27843); «–»: не применяется (n = 1, п. 5.2) или не рассчитано. «Наибольшая доля»: параметр, занимающий наибольшую долю своего допуска. «Диагностика»: эффекты сверх модели стандарта, названные проверкой модели (нет: модель объясняет данные).
+chart-usage-axis = Параметр с наибольшей долей / допуск
+chart-usage-empty = Нет осей для сводки.
+chart-usage-within = в пределах допуска
+chart-usage-over = сверх допуска
+chart-usage-limit = допуск
+chart-usage-clipped = ▶ доля больше { $ratio }, полоса обрезана
+summary-usage-heading = Использованная доля допуска (наибольшая для каждой оси)
+summary-noncompliant-heading = Испытания не по программе
+summary-errors-heading = Ошибки
+summary-inputs-heading = Исходные данные
+summary-inputs-intro = Составлено axcheck { $version } по { $total } файлам ниже командой { $command } (и папкой результатов); { $reproduce } на этой папке проверяет SHA-256 каждого файла, повторяет расчёт и побайтно сравнивает результаты.
+summary-file = Файл
+summary-sha = SHA-256 (первые 16 цифр)
+summary-more-files = … и ещё { $more } файлов.
+summary-paths-note = Пути относительно папки файла проверки (шаблоны и история — относительно заданной папки); results.json перечисляет все исходные файлы с полными SHA-256.
+summary-closing-note = Составлено { $generator }. Протоколы осей: reports/MACHINE/AXIS.pdf.
+
 ## Названия параметров ГОСТ 27843-88, раздел 1 (1.10–1.16), дословно
 param-gost-A = точность позиционирования, двустороннего
 param-gost-A_up = точность позиционирования, одностороннего ↑

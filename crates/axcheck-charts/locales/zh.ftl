@@ -222,6 +222,43 @@ history-flagged-within = { $flagged }（{ $years } 年期限内）。
 history-none-flagged = { $years } 年期限内无参数被标记。
 closing-note = 由 { $generator } 根据检验数据生成；数值单位 { $unit }，位置为实测位置。
 
+## Campaign summary (summary.typ)
+summary-title = 汇总
+summary-kind = 定位精度检验汇总
+summary-site = 现场
+summary-purpose = 检验目的
+summary-date = 日期
+summary-campaign-file = 检验文件
+summary-tests = 检验
+summary-trends-heading = 检验历史的趋势（{ $first } 至 { $last }）
+summary-trends-none = 这些轴线的 { $series } 个序列在 { $years } 年期限内均未被标记。
+summary-trends-flagged = 这些轴线的 { $series } 个序列中有 { $flagged } 个在 { $years } 年期限内被标记（各轴线报告的“检验历史”一节列出）：
+summary-machine-axis = 机床，轴线
+summary-why = 原因
+summary-axes-heading = 轴线（数值为轴线的单位；需关注者在前）
+summary-travel = 行程
+summary-worst = 最大占比 / 允差
+summary-diagnosis = 诊断
+summary-verdict = 判定
+summary-no-tolerance = 无允差
+summary-axes-note = A、E、R、B 按 GB/T 17421.2（GOST 27843 轴线的 R 和 B 为 R_max 和 B_max）；“–”：不适用（n = 1，第 5.2 条）或未评定。“最大占比 / 允差”：占其允差比例最大的参数。“诊断”：模型检查指出的超出标准模型的效应（无：模型能解释数据）。
+chart-usage-axis = 最大占比参数 / 允差
+chart-usage-empty = 没有可汇总的轴线。
+chart-usage-within = 允差之内
+chart-usage-over = 超出允差
+chart-usage-limit = 允差
+chart-usage-clipped = ▶ 比值大于 { $ratio }，条形已截断
+summary-usage-heading = 允差占用比例（各轴线最大者）
+summary-noncompliant-heading = 不符合规程的检验
+summary-errors-heading = 错误
+summary-inputs-heading = 输入
+summary-inputs-intro = 由 axcheck { $version } 根据下列 { $total } 个文件用命令 { $command }（及输出文件夹）生成；在该文件夹上运行 { $reproduce } 将核对每个文件的 SHA-256，重新运行并逐字节比较输出。
+summary-file = 文件
+summary-sha = SHA-256（前 16 位）
+summary-more-files = … 另有 { $more } 个文件。
+summary-paths-note = 路径相对于检验文件所在的文件夹（模板和历史相对于所给的文件夹）；results.json 列出每个输入及其完整的 SHA-256。
+summary-closing-note = 由 { $generator } 生成。各轴线报告：reports/MACHINE/AXIS.pdf。
+
 ## 参数名称：GB/T 17421.2-2000 第 2 章（2.13、2.14、2.18~2.23）
 param-iso-A = 轴线双向定位精度
 param-iso-A_up = 轴线单向定位精度 ↑

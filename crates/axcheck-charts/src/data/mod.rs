@@ -113,7 +113,8 @@ pub struct CampaignHeader<'a> {
     name: &'a str,
     site: &'a str,
     purpose: &'a str,
-    date: &'a str,
+    /// In the form of the document's language ([`crate::words::numbers`]).
+    date: String,
     inspector: &'a str,
     file: &'a str,
     standard: &'static str,
@@ -126,7 +127,7 @@ impl<'a> CampaignHeader<'a> {
             name: &info.name,
             site: info.site.as_deref().unwrap_or_default(),
             purpose: info.purpose.as_deref().unwrap_or_default(),
-            date: info.date.as_deref().unwrap_or_default(),
+            date: crate::words::numbers().date(info.date.as_deref().unwrap_or_default()),
             inspector: info.inspector.as_deref().unwrap_or_default(),
             file: &result.file_name,
             standard: result.standard.title(),
