@@ -190,6 +190,7 @@ fn exporters(
         exporters.push(Box::new(export::html::HtmlExporter {
             reports: reports.is_some(),
             trends: trends.cloned(),
+            lang: plan.flags.lang,
         }));
     }
     if let Some(reports) = reports {

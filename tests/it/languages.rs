@@ -105,6 +105,9 @@ fn a_russian_gost_report_names_the_parameters_in_the_terms_of_gost_27843() {
     for english in ["Axes (values", "Page 1 of", "within tolerance", "Inputs"] {
         assert!(!summary.contains(english), "{english} left in:\n{summary}");
     }
+    // summary.html: the page's language and its words for page.js.
+    let html = std::fs::read_to_string(out.join("summary.html")).unwrap();
+    assert!(html.contains("\"lang\":\"ru\"") && html.contains("\"html-search\":\"Поиск\""));
     // Without `--lang` nothing is recorded: the campaign says it.
     let results = results(&out);
     assert!(results["inputs"]["options"].get("lang").is_none(), "{results}");

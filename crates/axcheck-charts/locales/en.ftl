@@ -258,6 +258,56 @@ summary-more-files = … and { $more } more files.
 summary-paths-note = Paths relative to the campaign’s folder (templates and history after their folder as given); results.json lists every input with its whole SHA-256.
 summary-closing-note = Produced by { $generator }. Per-axis reports: reports/MACHINE/AXIS.pdf.
 
+## summary.html (page.js)
+html-title = { $name } — axcheck summary
+html-search = Search
+html-search-placeholder = machine, axis, verdict, rule, effect …
+html-keys = ↑ ↓ move, Enter opens, Esc closes
+html-counts-label = Show the tests of one verdict
+html-headline-title = { $symbol } with its expanded uncertainty U (k = 2), in the row’s unit
+html-worst-title = The parameter using the largest share of its tolerance: |value| / limit
+html-decision-rule = Decision rule
+html-plan-rules = Plan rules
+html-plan-rules-title = Test-plan rules broken (noncompliant); warnings in the detail
+html-none = none
+html-compensation-e = Compensation E
+html-compensation-e-title = E as measured → as predicted with the new table
+html-trend = Trend
+html-trend-title = Parameters whose trend over the inspection history is flagged
+html-flagged = flagged: { $list }
+verdict-error-word = Error
+html-footer = { $generator }. Values in µm (linear axes) or arcsec (rotary axes), 2 decimals; U is the expanded uncertainty (k = 2).
+html-inputs = Inputs: { $total } files, made by axcheck { $version } with { $command }
+html-more-inputs = … and { $more } more (results.json lists them all)
+html-close = Close
+html-limits = Limits
+html-axis-report = Axis report (PDF)
+html-compensation-table = Compensation table
+html-value-unit = Value / { $unit }
+html-u-unit = U (k = 2) / { $unit }
+html-limit-unit = Limit / { $unit }
+html-check = Check
+html-outcome-pass = pass
+html-outcome-fail = fail
+html-outcome-inconclusive = inconclusive
+html-parameters = Parameters
+html-not-applicable = Not applicable here: { $list }
+html-rules = Test-plan rules
+html-advice = Advice: { $advice }
+html-no-effect = No effect found beyond the error model.
+html-controller = Controller { $controller }, { $mode } table
+html-built-on = , built on { $file }
+html-compensation-line = E { $text } { $unit } (measured → predicted)
+html-not-written = Not written: { $reason }
+html-warning = Warning: { $warning }
+html-compensation = Compensation
+html-verification = Verification
+html-history = History
+html-detail-unreadable = The detail could not be read in this browser: { $error }
+html-chart-bidirectional = Bidirectional positional deviations (ISO 230-2 Fig. 2a)
+html-chart-unidirectional = Unidirectional positional deviations (ISO 230-2 Fig. 2b)
+html-chart-history = History: { $label }
+
 ## Parameter names as each standard words them (ISO 230-2; GOST 27843-88; VDI 3441 and
 ## NMTBA as described by Hemingray, Cowley and Burdekin)
 param-iso-A = bidirectional accuracy of positioning

@@ -264,6 +264,56 @@ summary-more-files = … и ещё { $more } файлов.
 summary-paths-note = Пути относительно папки файла проверки (шаблоны и история — относительно заданной папки); results.json перечисляет все исходные файлы с полными SHA-256.
 summary-closing-note = Составлено { $generator }. Протоколы осей: reports/MACHINE/AXIS.pdf.
 
+## summary.html (page.js)
+html-title = { $name } — сводка axcheck
+html-search = Поиск
+html-search-placeholder = станок, ось, заключение, правило, эффект …
+html-keys = ↑ ↓ перемещение, Enter открывает, Esc закрывает
+html-counts-label = Показать испытания с одним заключением
+html-headline-title = { $symbol } с расширенной неопределённостью U (k = 2), в единицах строки
+html-worst-title = Параметр, занимающий наибольшую долю своего допуска: |значение| / допуск
+html-decision-rule = Правило решения
+html-plan-rules = Правила программы
+html-plan-rules-title = Нарушенные правила программы испытаний (не по программе); предупреждения — в подробностях
+html-none = нет
+html-compensation-e = Коррекция E
+html-compensation-e-title = E измеренное → прогнозируемое с новой таблицей
+html-trend = Тренд
+html-trend-title = Параметры, тренд которых по истории проверок отмечен
+html-flagged = отмечено: { $list }
+verdict-error-word = Ошибка
+html-footer = { $generator }. Значения в мкм (линейные оси) или угл. с (поворотные оси), 2 знака после запятой; U — расширенная неопределённость (k = 2).
+html-inputs = Исходные данные: { $total } файлов, составлено axcheck { $version } командой { $command }
+html-more-inputs = … и ещё { $more } (results.json перечисляет все)
+html-close = Закрыть
+html-limits = Допуски
+html-axis-report = Протокол оси (PDF)
+html-compensation-table = Таблица коррекции
+html-value-unit = Значение / { $unit }
+html-u-unit = U (k = 2) / { $unit }
+html-limit-unit = Допуск / { $unit }
+html-check = Проверка
+html-outcome-pass = годен
+html-outcome-fail = не годен
+html-outcome-inconclusive = не определён
+html-parameters = Параметры
+html-not-applicable = Здесь не применяются: { $list }
+html-rules = Правила программы испытаний
+html-advice = Совет: { $advice }
+html-no-effect = Эффектов сверх модели погрешностей не найдено.
+html-controller = Система ЧПУ { $controller }, таблица { $mode }
+html-built-on = , построена на { $file }
+html-compensation-line = E { $text } { $unit } (измерено → прогноз)
+html-not-written = Не записана: { $reason }
+html-warning = Предупреждение: { $warning }
+html-compensation = Коррекция
+html-verification = Проверка
+html-history = История
+html-detail-unreadable = Подробности нельзя прочитать в этом браузере: { $error }
+html-chart-bidirectional = Отклонения от заданного положения при двустороннем позиционировании (как ISO 230-2, рис. 2a)
+html-chart-unidirectional = Отклонения от заданного положения при одностороннем позиционировании (как ISO 230-2, рис. 2b)
+html-chart-history = История: { $label }
+
 ## Названия параметров ГОСТ 27843-88, раздел 1 (1.10–1.16), дословно
 param-gost-A = точность позиционирования, двустороннего
 param-gost-A_up = точность позиционирования, одностороннего ↑

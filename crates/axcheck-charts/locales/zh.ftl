@@ -259,6 +259,56 @@ summary-more-files = … 另有 { $more } 个文件。
 summary-paths-note = 路径相对于检验文件所在的文件夹（模板和历史相对于所给的文件夹）；results.json 列出每个输入及其完整的 SHA-256。
 summary-closing-note = 由 { $generator } 生成。各轴线报告：reports/MACHINE/AXIS.pdf。
 
+## summary.html (page.js)
+html-title = { $name } — axcheck 汇总
+html-search = 搜索
+html-search-placeholder = 机床、轴线、判定、规则、效应 …
+html-keys = ↑ ↓ 移动，Enter 打开，Esc 关闭
+html-counts-label = 显示某一判定的检验
+html-headline-title = { $symbol } 及其扩展不确定度 U（k = 2），单位为该行的单位
+html-worst-title = 占其允差比例最大的参数：|数值| / 允差
+html-decision-rule = 判定规则
+html-plan-rules = 规程规则
+html-plan-rules-title = 违反的检验规程规则（不符合）；警告见详情
+html-none = 无
+html-compensation-e = 补偿 E
+html-compensation-e-title = 实测 E → 用新补偿表预测的 E
+html-trend = 趋势
+html-trend-title = 在检验历史中趋势被标记的参数
+html-flagged = 已标记：{ $list }
+verdict-error-word = 错误
+html-footer = { $generator }。数值单位为 µm（直线轴线）或角秒（回转轴线），2 位小数；U 为扩展不确定度（k = 2）。
+html-inputs = 输入：{ $total } 个文件，由 axcheck { $version } 用 { $command } 生成
+html-more-inputs = … 另有 { $more } 个（results.json 列出全部）
+html-close = 关闭
+html-limits = 允差
+html-axis-report = 轴线报告（PDF）
+html-compensation-table = 补偿表
+html-value-unit = 数值 / { $unit }
+html-u-unit = U（k = 2）/ { $unit }
+html-limit-unit = 允差 / { $unit }
+html-check = 检查
+html-outcome-pass = 合格
+html-outcome-fail = 不合格
+html-outcome-inconclusive = 不确定
+html-parameters = 参数
+html-not-applicable = 此处不适用：{ $list }
+html-rules = 检验规程规则
+html-advice = 建议：{ $advice }
+html-no-effect = 未发现超出误差模型的效应。
+html-controller = 控制器 { $controller }，{ $mode } 补偿表
+html-built-on = ，基于 { $file }
+html-compensation-line = E { $text } { $unit }（实测 → 预测）
+html-not-written = 未写出：{ $reason }
+html-warning = 警告：{ $warning }
+html-compensation = 补偿
+html-verification = 验证
+html-history = 历史
+html-detail-unreadable = 此浏览器无法读取详情：{ $error }
+html-chart-bidirectional = 双向位置偏差（GB/T 17421.2 图 2a）
+html-chart-unidirectional = 单向位置偏差（GB/T 17421.2 图 2b）
+html-chart-history = 历史：{ $label }
+
 ## 参数名称：GB/T 17421.2-2000 第 2 章（2.13、2.14、2.18~2.23）
 param-iso-A = 轴线双向定位精度
 param-iso-A_up = 轴线单向定位精度 ↑

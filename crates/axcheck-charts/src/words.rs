@@ -272,6 +272,7 @@ mod tests {
         "unit-um",
         "unit-mm",
         "unit-s",
+        "html-u-unit",
     ];
 
     /// No English left in Chinese or Russian: a message equal to its English text is one
