@@ -151,6 +151,15 @@ impl Words {
         }
     }
 
+    /// The message `key`, or `default` when the catalogue has none (words that come from
+    /// an open list, such as an uncertainty contributor's key).
+    pub fn get_or(&self, key: &str, default: &str) -> String {
+        match self.bundle.get_message(key) {
+            Some(_) => self.get(key),
+            None => default.to_string(),
+        }
+    }
+
     /// A unit symbol (`µm`, `mm`, `arcsec`, `°`, `s`) as this language writes it (`мкм`,
     /// `мм` in Russian); other text as it is.
     pub fn unit(&self, symbol: &str) -> String {

@@ -28,7 +28,7 @@ pub(super) struct UncertaintySection<'a> {
 struct BudgetRow {
     contributor: String,
     value: String,
-    distribution: &'static str,
+    distribution: String,
     u: String,
     sensitivity: String,
     contribution: String,
@@ -55,10 +55,17 @@ fn budget_unit(unit: &str) -> String {
 
 impl BudgetRow {
     fn new(l: &BudgetLine) -> BudgetRow {
+        let words = crate::words::Words::new(crate::words::numbers());
         BudgetRow {
-            contributor: l.contributor.replace('_', " "),
+            contributor: words.get_or(
+                &format!("contributor-{}", l.contributor.replace('_', "-")),
+                &l.contributor.replace('_', " "),
+            ),
             value: format!("{} {}", sig(l.value), budget_unit(l.unit)),
-            distribution: l.distribution.name(),
+            distribution: words.get_or(
+                &format!("distribution-{}", l.distribution.name()),
+                l.distribution.name(),
+            ),
             u: sig(l.u),
             sensitivity: sig(l.sensitivity),
             contribution: sig(l.contribution),
