@@ -200,8 +200,16 @@ impl Reports {
 
     /// The words of `machine`'s reports (of the summary with `None`): `--lang`, else the
     /// machine's `report.lang`, else the campaign's, else English.
-    pub fn words(&self, result: &CampaignResult, machine: Option<&crate::campaign::MachineInfo>) -> Words {
-        Words::new(crate::campaign::report_lang(self.lang, &result.info, machine))
+    pub fn words(
+        &self,
+        result: &CampaignResult,
+        machine: Option<&crate::campaign::MachineInfo>,
+    ) -> Words {
+        Words::new(crate::campaign::report_lang(
+            self.lang,
+            &result.info,
+            machine,
+        ))
     }
 
     /// The templates read from the customised copy with their SHA-256, sorted by path

@@ -27,7 +27,13 @@ fn campaign(name: &str, campaign_extra: &str, m1_extra: &str) -> (PathBuf, PathB
 /// `run FILE --out DIR/out --no-diagnose EXTRA…`; the output folder.
 fn run(dir: &Path, file: &Path, extra: &[&str]) -> PathBuf {
     let out = dir.join("out");
-    let mut args = vec!["run", file.to_str().unwrap(), "--out", out.to_str().unwrap(), "--no-diagnose"];
+    let mut args = vec![
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-diagnose",
+    ];
     args.extend_from_slice(extra);
     let (code, stdout, stderr) = axcheck(&args);
     assert_eq!(code, 0, "{stdout}{stderr}");
@@ -67,18 +73,35 @@ fn a_chinese_iso_report_names_the_parameters_in_the_terms_of_gbt_17421_2() {
     // (pdftotext doubles the combining macron's letter of B̄: the term alone.)
     assert!(zh.contains("轴线平均反向差值"), "{zh}");
     assert!(beside(&zh, "E", "轴线双向定位系统偏差"), "{zh}");
-    for words in ["定位精度和重复定位精度检验报告", "检验结果", "合格", "检验日期", "2026-11-20", "第 1 页"] {
+    for words in [
+        "定位精度和重复定位精度检验报告",
+        "检验结果",
+        "合格",
+        "检验日期",
+        "2026-11-20",
+        "第 1 页",
+    ] {
         assert!(zh.contains(words), "{words} missing:\n{zh}");
     }
     // A decimal point in Chinese; the English headings gone.
     assert!(zh.contains("9.59"), "{zh}");
-    for english in ["Results (values in", "Test-plan findings", "Page 1 of", "Measurement travel"] {
+    for english in [
+        "Results (values in",
+        "Test-plan findings",
+        "Page 1 of",
+        "Measurement travel",
+    ] {
         assert!(!zh.contains(english), "{english} left in:\n{zh}");
     }
     // The run's record names the option, so that `reproduce` writes Chinese again.
     let results = results(&out);
     assert_eq!(results["inputs"]["options"]["lang"], "zh");
-    assert!(results["inputs"]["command"].as_str().unwrap().ends_with("--lang zh"));
+    assert!(
+        results["inputs"]["command"]
+            .as_str()
+            .unwrap()
+            .ends_with("--lang zh")
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -89,17 +112,34 @@ fn a_russian_gost_report_names_the_parameters_in_the_terms_of_gost_27843() {
     let ru = text(&out.join("reports/M2/Z.pdf"));
     // GOST 27843-88, 1.14, 1.10 and 1.16, each beside its symbol.
     assert!(beside(&ru, "A", "точность позиционирования"), "{ru}");
-    assert!(beside(&ru, "R↑", "повторяемость одностороннего позиционирования"), "{ru}");
-    assert!(beside(&ru, "B_max", "максимальная зона нечувствительности"), "{ru}");
+    assert!(
+        beside(&ru, "R↑", "повторяемость одностороннего позиционирования"),
+        "{ru}"
+    );
+    assert!(
+        beside(&ru, "B_max", "максимальная зона нечувствительности"),
+        "{ru}"
+    );
     assert!(ru.contains("зона нечувствительности") && ru.contains("повторяемость"));
     // A decimal comma, the date as DD.MM.YYYY, micrometres as мкм.
     assert!(ru.contains("18,00") && !ru.contains("18.00"), "{ru}");
-    assert!(ru.contains("20.11.2026") && !ru.contains("2026-11-20"), "{ru}");
+    assert!(
+        ru.contains("20.11.2026") && !ru.contains("2026-11-20"),
+        "{ru}"
+    );
     assert!(ru.contains("Результаты (значения в мкм)"), "{ru}");
     assert!(ru.contains("Страница 1 из"), "{ru}");
     // The summary too: its headings, the date, a decimal comma, micrometres as мкм.
     let summary = text(&out.join("summary.pdf"));
-    for words in ["СВОДКА ПРОВЕРКИ ТОЧНОСТИ ПОЗИЦИОНИРОВАНИЯ", "Дата", "20.11.2026", "Оси (значения", "18,00", "мкм", "ГОДЕН"] {
+    for words in [
+        "СВОДКА ПРОВЕРКИ ТОЧНОСТИ ПОЗИЦИОНИРОВАНИЯ",
+        "Дата",
+        "20.11.2026",
+        "Оси (значения",
+        "18,00",
+        "мкм",
+        "ГОДЕН",
+    ] {
         assert!(summary.contains(words), "{words} missing:\n{summary}");
     }
     for english in ["Axes (values", "Page 1 of", "within tolerance", "Inputs"] {
@@ -110,7 +150,10 @@ fn a_russian_gost_report_names_the_parameters_in_the_terms_of_gost_27843() {
     assert!(html.contains("\"lang\":\"ru\"") && html.contains("\"html-search\":\"Поиск\""));
     // Without `--lang` nothing is recorded: the campaign says it.
     let results = results(&out);
-    assert!(results["inputs"]["options"].get("lang").is_none(), "{results}");
+    assert!(
+        results["inputs"]["options"].get("lang").is_none(),
+        "{results}"
+    );
     assert_eq!(results["campaign"]["report"]["lang"], "ru");
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -122,7 +165,12 @@ fn results(out: &Path) -> serde_json::Value {
 
 /// The first line of a report: its kind, in its language.
 fn kind_line(pdf: &Path) -> String {
-    text(pdf).lines().find(|l| !l.trim().is_empty()).unwrap().trim().to_string()
+    text(pdf)
+        .lines()
+        .find(|l| !l.trim().is_empty())
+        .unwrap()
+        .trim()
+        .to_string()
 }
 
 #[test]
@@ -138,7 +186,10 @@ fn the_command_line_overrides_the_machine_which_overrides_the_campaign() {
         kind_line(&out.join("reports/M1/X.pdf")),
         "ПРОТОКОЛ ПРОВЕРКИ ТОЧНОСТИ И ПОВТОРЯЕМОСТИ ПОЗИЦИОНИРОВАНИЯ"
     );
-    assert_eq!(kind_line(&out.join("reports/M2/Z.pdf")), "定位精度和重复定位精度检验报告");
+    assert_eq!(
+        kind_line(&out.join("reports/M2/Z.pdf")),
+        "定位精度和重复定位精度检验报告"
+    );
     assert!(text(&out.join("summary.pdf")).contains("第 1 页"));
     // `--lang en` over both.
     let _ = std::fs::remove_dir_all(&out);
@@ -157,7 +208,10 @@ fn a_language_that_is_not_one_stops_at_its_line() {
     let (dir, file) = campaign("lang-bad", "  report: {lang: de}\n", "");
     let (code, stdout, stderr) = axcheck(&["check", file.to_str().unwrap()]);
     assert_eq!(code, 2, "{stdout}{stderr}");
-    assert!(stderr.contains("campaign.yaml:5:") && stderr.contains("expected en, zh or ru"), "{stderr}");
+    assert!(
+        stderr.contains("campaign.yaml:5:") && stderr.contains("expected en, zh or ru"),
+        "{stderr}"
+    );
     let (dir2, file2) = campaign("lang-bad-machine", "", "    report: {lang: fr}\n");
     // A broken machine fails alone, as an error test naming the line and the values.
     let (code, stdout, stderr) = axcheck(&["check", file2.to_str().unwrap()]);

@@ -63,7 +63,11 @@ impl Default for Words {
 
 impl Words {
     pub fn new(lang: Lang) -> Words {
-        let bundle = &BUNDLES.iter().find(|(l, _)| *l == lang).expect("every language").1;
+        let bundle = &BUNDLES
+            .iter()
+            .find(|(l, _)| *l == lang)
+            .expect("every language")
+            .1;
         Words { lang, bundle }
     }
 
@@ -92,7 +96,9 @@ impl Words {
             return key.to_string();
         };
         let mut errors = Vec::new();
-        self.bundle.format_pattern(pattern, args, &mut errors).into_owned()
+        self.bundle
+            .format_pattern(pattern, args, &mut errors)
+            .into_owned()
     }
 
     /// Every message, for the templates: arguments as `{name}`, which the templates'
@@ -103,19 +109,30 @@ impl Words {
                 .map(|lang| (lang, Words::new(lang).all_now()))
                 .collect()
         });
-        &ALL.iter().find(|(l, _)| *l == self.lang).expect("every language").1
+        &ALL.iter()
+            .find(|(l, _)| *l == self.lang)
+            .expect("every language")
+            .1
     }
 
     fn all_now(&self) -> BTreeMap<String, String> {
-        let source = SOURCES.iter().find(|(l, _)| *l == self.lang).expect("every language").1;
+        let source = SOURCES
+            .iter()
+            .find(|(l, _)| *l == self.lang)
+            .expect("every language")
+            .1;
         let resource = FluentResource::try_new(source.to_string()).expect("checked above");
         message_args(&resource)
             .into_iter()
             .map(|(key, names)| {
-                let placeholders: Vec<(String, String)> =
-                    names.iter().map(|n| (n.clone(), format!("{{{n}}}"))).collect();
-                let args: Vec<(&str, &str)> =
-                    placeholders.iter().map(|(n, p)| (n.as_str(), p.as_str())).collect();
+                let placeholders: Vec<(String, String)> = names
+                    .iter()
+                    .map(|n| (n.clone(), format!("{{{n}}}")))
+                    .collect();
+                let args: Vec<(&str, &str)> = placeholders
+                    .iter()
+                    .map(|(n, p)| (n.as_str(), p.as_str()))
+                    .collect();
                 let text = self.args(&key, &args);
                 (key, text)
             })
@@ -266,7 +283,10 @@ mod tests {
             let missing: Vec<&String> = en.keys().filter(|k| !other.contains_key(*k)).collect();
             let extra: Vec<&String> = other.keys().filter(|k| !en.contains_key(*k)).collect();
             assert!(missing.is_empty(), "{lang}.ftl lacks {missing:?}");
-            assert!(extra.is_empty(), "{lang}.ftl has keys en.ftl lacks: {extra:?}");
+            assert!(
+                extra.is_empty(),
+                "{lang}.ftl has keys en.ftl lacks: {extra:?}"
+            );
             for (key, args) in &en {
                 assert_eq!(&other[key], args, "{lang}.ftl `{key}` uses other arguments");
             }
@@ -311,7 +331,10 @@ mod tests {
                     let name = Words::new(lang).parameter(standard, def.key, "");
                     assert!(!name.is_empty(), "{lang} {standard:?} {}", def.key);
                 }
-                assert_eq!(Words::new(Lang::En).parameter(standard, def.key, ""), def.name);
+                assert_eq!(
+                    Words::new(Lang::En).parameter(standard, def.key, ""),
+                    def.name
+                );
             }
         }
         let zh = Words::new(Lang::Zh);
@@ -332,8 +355,14 @@ mod tests {
     #[test]
     fn arguments_are_filled_and_templates_get_placeholders() {
         let ru = Words::new(Lang::Ru);
-        assert_eq!(ru.args("results-heading", &[("unit", "мкм")]), "Результаты (значения в мкм)");
-        assert_eq!(Words::new(Lang::En).all()["results-heading"], "Results (values in {unit})");
+        assert_eq!(
+            ru.args("results-heading", &[("unit", "мкм")]),
+            "Результаты (значения в мкм)"
+        );
+        assert_eq!(
+            Words::new(Lang::En).all()["results-heading"],
+            "Results (values in {unit})"
+        );
         assert_eq!(ru.verdict("not_judged"), "НЕ ОЦЕНЁН");
     }
 }

@@ -94,7 +94,11 @@ pub struct ReportOptions {
 
 /// The language of a machine's reports: `cli` (`--lang`), else the machine's
 /// `report.lang`, else the campaign's, else English.
-pub fn report_lang(cli: Option<Lang>, campaign: &CampaignInfo, machine: Option<&MachineInfo>) -> Lang {
+pub fn report_lang(
+    cli: Option<Lang>,
+    campaign: &CampaignInfo,
+    machine: Option<&MachineInfo>,
+) -> Lang {
     let of = |r: &Option<ReportOptions>| r.as_ref().and_then(|r| r.lang);
     cli.or_else(|| machine.and_then(|m| of(&m.report)))
         .or_else(|| of(&campaign.report))

@@ -13,8 +13,8 @@ use crate::charts::diagnosis::look::{
 use crate::lang::Lang;
 use crate::words::Words;
 use plotters::prelude::*;
-use std::sync::LazyLock;
 use plotters::style::text_anchor::{HPos, VPos};
+use std::sync::LazyLock;
 
 /// Measured statistic against the band simulated from the base model (model check).
 #[derive(Debug, Clone, PartialEq)]
@@ -152,7 +152,10 @@ fn worded(keys: [&str; 8]) -> Vec<(Lang, Wording)> {
 /// The wording of `all` in the language of the document being drawn.
 fn in_language(all: &'static [(Lang, Wording)]) -> &'static Wording {
     let lang = crate::words::numbers();
-    &all.iter().find(|(l, _)| *l == lang).expect("every language").1
+    &all.iter()
+        .find(|(l, _)| *l == lang)
+        .expect("every language")
+        .1
 }
 
 /// The model checks of the diagnosis.

@@ -1,11 +1,11 @@
 //! The campaign summary's tolerance usage: each axis's worst parameter as a fraction of
 //! its limit, one horizontal bar each (900 × [`ratio_chart_height`] pixels).
 
-use crate::words::Words;
 use super::iso::look::KIT;
 use crate::chart_kit::scene::Scene;
 use crate::chart_kit::*;
 use crate::judge::Verdict;
+use crate::words::Words;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 

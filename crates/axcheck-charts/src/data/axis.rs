@@ -135,15 +135,15 @@ fn full_names(t: &AxisTest, words: &Words) -> Vec<Row> {
     Row::labelled(
         words,
         [
-        (
-            "fact-machine-in-full",
-            (t.machine.id.chars().count() > super::SHORT_NAME).then(|| t.machine.id.clone()),
-        ),
-        (
-            "fact-axis-in-full",
-            (t.axis.chars().count() > AXIS_NAME).then(|| t.axis.clone()),
-        ),
-    ],
+            (
+                "fact-machine-in-full",
+                (t.machine.id.chars().count() > super::SHORT_NAME).then(|| t.machine.id.clone()),
+            ),
+            (
+                "fact-axis-in-full",
+                (t.axis.chars().count() > AXIS_NAME).then(|| t.axis.clone()),
+            ),
+        ],
     )
 }
 
@@ -189,48 +189,51 @@ fn facts(result: &CampaignResult, t: &AxisTest, words: &Words) -> Vec<Row> {
     Row::labelled(
         words,
         [
-        ("fact-machine", Some(in_facts(&m.id, super::SHORT_NAME, words))),
-        ("fact-machine-in-file", differs(|i| &i.machine, &m.id)),
-        ("fact-model", m.model.clone()),
-        (
-            "fact-serial",
-            m.serial.clone().or_else(|| file(|i| &i.serial)),
-        ),
-        ("fact-type", m.machine_type.clone()),
-        (
-            "fact-location",
-            m.location.clone().or_else(|| file(|i| &i.location)),
-        ),
-        ("fact-axis", Some(axis)),
-        ("fact-axis-in-file", differs(|i| &i.axis, &t.axis)),
-        ("fact-axis-travel", travel),
-        ("fact-measurement-travel", measured),
-        ("fact-measurement-file", t.file.clone()),
-        (
-            "fact-file-sha",
-            super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
-        ),
-        ("fact-test", test),
-        ("fact-standard", t.standard().map(|s| s.title().to_string())),
-        (
-            "fact-spec",
-            t.judgement().map(|j| j.limits.describe_labelled()),
-        ),
-        (
-            "fact-date",
-            (result.info.date.clone())
-                .or_else(|| file(|i| &i.date))
-                .map(|d| words.date(&d)),
-        ),
-        (
-            "fact-inspector",
-            result
-                .info
-                .inspector
-                .clone()
-                .or_else(|| file(|i| &i.operator)),
-        ),
-    ],
+            (
+                "fact-machine",
+                Some(in_facts(&m.id, super::SHORT_NAME, words)),
+            ),
+            ("fact-machine-in-file", differs(|i| &i.machine, &m.id)),
+            ("fact-model", m.model.clone()),
+            (
+                "fact-serial",
+                m.serial.clone().or_else(|| file(|i| &i.serial)),
+            ),
+            ("fact-type", m.machine_type.clone()),
+            (
+                "fact-location",
+                m.location.clone().or_else(|| file(|i| &i.location)),
+            ),
+            ("fact-axis", Some(axis)),
+            ("fact-axis-in-file", differs(|i| &i.axis, &t.axis)),
+            ("fact-axis-travel", travel),
+            ("fact-measurement-travel", measured),
+            ("fact-measurement-file", t.file.clone()),
+            (
+                "fact-file-sha",
+                super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
+            ),
+            ("fact-test", test),
+            ("fact-standard", t.standard().map(|s| s.title().to_string())),
+            (
+                "fact-spec",
+                t.judgement().map(|j| j.limits.describe_labelled()),
+            ),
+            (
+                "fact-date",
+                (result.info.date.clone())
+                    .or_else(|| file(|i| &i.date))
+                    .map(|d| words.date(&d)),
+            ),
+            (
+                "fact-inspector",
+                result
+                    .info
+                    .inspector
+                    .clone()
+                    .or_else(|| file(|i| &i.operator)),
+            ),
+        ],
     )
 }
 
@@ -259,7 +262,10 @@ impl VerdictText {
             }
             Verdict::Noncompliant => {
                 let rules: Vec<&str> = t.broken_rules().map(|f| f.id).collect();
-                words.args("verdict-detail-noncompliant", &[("rules", &rules.join(", "))])
+                words.args(
+                    "verdict-detail-noncompliant",
+                    &[("rules", &rules.join(", "))],
+                )
             }
             Verdict::Error => t.error().unwrap_or_default().to_string(),
             Verdict::Inconclusive => {
@@ -327,7 +333,10 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation, words: &Words) -> Vec<ParameterR
                 .and_then(|j| j.checks.iter().find(|c| c.key == p.def.key));
             let at = if let Some(i) = p.at_target {
                 let position = pos(e.kind, e.targets[i].position);
-                words.args("at-target", &[("i", &(i + 1).to_string()), ("position", &position)])
+                words.args(
+                    "at-target",
+                    &[("i", &(i + 1).to_string()), ("position", &position)],
+                )
             } else if let Some((hi, lo)) = p.span {
                 format!("{} − ({})", num(hi), num(lo))
             } else {

@@ -55,52 +55,51 @@ pub(super) fn condition_rows(
         AxisKind::Linear => "mm/min",
         AxisKind::Rotary => "°/min",
     };
-    let approaches = t
-        .evaluated()
-        .map(|e| &e.evaluation)
-        .map(|e| {
-            let (n, targets) = (e.n.to_string(), e.targets.len().to_string());
-            words.args("cond-approaches-value", &[("n", &n), ("targets", &targets)])
-        });
+    let approaches = t.evaluated().map(|e| &e.evaluation).map(|e| {
+        let (n, targets) = (e.n.to_string(), e.targets.len().to_string());
+        words.args("cond-approaches-value", &[("n", &n), ("targets", &targets)])
+    });
     Row::labelled(
         words,
         [
-        ("cond-instrument", instrument),
-        ("cond-instrument-position", position),
-        (
-            "cond-equipment",
-            (!c.equipment.is_empty()).then(|| c.equipment.join("; ")),
-        ),
-        ("cond-positioning-element", c.positioning_element.clone()),
-        (
-            "cond-nde",
-            nde(t.evaluated().and_then(|e| e.nde.as_ref()), c.nde.as_ref()),
-        ),
-        (
-            "cond-feed",
-            c.feed_mm_per_min
-                .map(|f| format!("{} {per_min}", super::local(&fmt_position(f)))),
-        ),
-        (
-            "cond-dwell",
-            c.dwell_s.map(|d| format!("{} s", super::local(&fmt_position(d)))),
-        ),
-        ("cond-compensation", c.compensation.clone()),
-        ("cond-other-axes", c.other_axes.clone()),
-        ("cond-tool-offset", c.tool_offset.clone()),
-        ("cond-workpiece-offset", c.workpiece_offset.clone()),
-        ("cond-warm-up", c.warm_up.clone()),
-        ("cond-cycle", c.cycle.map(|cy| words.get(cycle(cy)))),
-        ("cond-air", c.air.as_ref().map(air)),
-        ("cond-pressure", c.fluid_pressure.clone()),
-        ("cond-approaches", approaches),
-        ("cond-read-as", t.recognised().map(read_as)),
-        (
-            "cond-from-file",
-            (t.evaluated().map(|e| e.conditions_from_file.join(", "))).filter(|s| !s.is_empty()),
-        ),
-        ("cond-notes", c.notes.clone()),
-    ],
+            ("cond-instrument", instrument),
+            ("cond-instrument-position", position),
+            (
+                "cond-equipment",
+                (!c.equipment.is_empty()).then(|| c.equipment.join("; ")),
+            ),
+            ("cond-positioning-element", c.positioning_element.clone()),
+            (
+                "cond-nde",
+                nde(t.evaluated().and_then(|e| e.nde.as_ref()), c.nde.as_ref()),
+            ),
+            (
+                "cond-feed",
+                c.feed_mm_per_min
+                    .map(|f| format!("{} {per_min}", super::local(&fmt_position(f)))),
+            ),
+            (
+                "cond-dwell",
+                c.dwell_s
+                    .map(|d| format!("{} s", super::local(&fmt_position(d)))),
+            ),
+            ("cond-compensation", c.compensation.clone()),
+            ("cond-other-axes", c.other_axes.clone()),
+            ("cond-tool-offset", c.tool_offset.clone()),
+            ("cond-workpiece-offset", c.workpiece_offset.clone()),
+            ("cond-warm-up", c.warm_up.clone()),
+            ("cond-cycle", c.cycle.map(|cy| words.get(cycle(cy)))),
+            ("cond-air", c.air.as_ref().map(air)),
+            ("cond-pressure", c.fluid_pressure.clone()),
+            ("cond-approaches", approaches),
+            ("cond-read-as", t.recognised().map(read_as)),
+            (
+                "cond-from-file",
+                (t.evaluated().map(|e| e.conditions_from_file.join(", ")))
+                    .filter(|s| !s.is_empty()),
+            ),
+            ("cond-notes", c.notes.clone()),
+        ],
     )
     .into_iter()
     .chain(not_stated(t, words))
@@ -230,7 +229,11 @@ pub(super) struct SensorRow<'a> {
 }
 
 pub(super) fn sensor_rows(c: &Conditions) -> Vec<SensorRow<'_>> {
-    let degrees = |t: Option<f64>| t.map_or("–".into(), |t| format!("{} °C", super::local(&fmt_fixed(t, 1))));
+    let degrees = |t: Option<f64>| {
+        t.map_or("–".into(), |t| {
+            format!("{} °C", super::local(&fmt_fixed(t, 1)))
+        })
+    };
     c.temperature_sensors
         .iter()
         .map(|s: &TemperatureSensor| SensorRow {

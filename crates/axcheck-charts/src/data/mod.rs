@@ -57,7 +57,11 @@ pub(crate) fn unit(symbol: &str) -> String {
 /// A position with its unit: `250.5 mm`, `90°`.
 fn pos(kind: AxisKind, x: f64) -> String {
     match kind {
-        AxisKind::Linear => format!("{} {}", local(&fmt_position(x).replace('-', "−")), unit("mm")),
+        AxisKind::Linear => format!(
+            "{} {}",
+            local(&fmt_position(x).replace('-', "−")),
+            unit("mm")
+        ),
         AxisKind::Rotary => format!("{}°", local(&fmt_position(x).replace('-', "−"))),
     }
 }
@@ -218,7 +222,10 @@ pub fn axis_chart(e: &Evaluation) -> (AxisChart, Vec<Span>, Vec<Span>) {
     let chart = AxisChart {
         positions: e.targets.iter().map(|t| t.position).collect(),
         position_label: words.args("chart-target-position", &[("unit", &words.unit(pos_unit))]),
-        deviation_label: words.args("chart-positional-deviation", &[("unit", &words.unit(dev_unit))]),
+        deviation_label: words.args(
+            "chart-positional-deviation",
+            &[("unit", &words.unit(dev_unit))],
+        ),
         up: series(Direction::Up),
         down: series(Direction::Down),
         mean: e.targets.iter().map(|t| t.mean).collect(),

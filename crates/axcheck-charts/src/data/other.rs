@@ -74,7 +74,10 @@ pub fn other_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> Option<O
             short_name(&t.axis_label(), super::AXIS_NAME)
         ),
         facts: facts(result, t, o),
-        verdict: super::axis::VerdictText::new(t, &crate::words::Words::new(crate::words::numbers())),
+        verdict: super::axis::VerdictText::new(
+            t,
+            &crate::words::Words::new(crate::words::numbers()),
+        ),
         unit,
         values: values(o),
         method: method(o),

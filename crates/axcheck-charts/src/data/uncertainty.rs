@@ -48,7 +48,9 @@ fn sig(x: f64) -> String {
 /// JSON's spelling) as `µm`, also in `um/(m·°C)`.
 fn budget_unit(unit: &str) -> String {
     match unit.strip_prefix("um") {
-        Some(rest) if rest.is_empty() || rest.starts_with('/') => format!("{}{rest}", super::unit("µm")),
+        Some(rest) if rest.is_empty() || rest.starts_with('/') => {
+            format!("{}{rest}", super::unit("µm"))
+        }
         _ => unit.to_string(),
     }
 }

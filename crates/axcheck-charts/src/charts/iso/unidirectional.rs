@@ -53,7 +53,14 @@ pub fn unidirectional(
             words.args("chart-approach", &[("arrow", "↓")]),
         );
         let panels = [
-            (&upper_area, &chart.up, up_spans, true, approach_up.as_str(), None),
+            (
+                &upper_area,
+                &chart.up,
+                up_spans,
+                true,
+                approach_up.as_str(),
+                None,
+            ),
             (
                 &lower_area,
                 &chart.down,
