@@ -207,8 +207,8 @@ impl Reports {
     ) -> Words {
         Words::new(crate::campaign::report_lang(
             self.lang,
-            &result.info,
-            machine,
+            result.info.report.as_ref(),
+            machine.and_then(|m| m.report.as_ref()),
         ))
     }
 

@@ -59,7 +59,39 @@ struct Page<'a> {
     inputs: Option<axcheck_charts::data::inputs::InputsList>,
     /// The page's language and its words (`tr` in page.js).
     lang: &'static str,
-    t: &'static std::collections::BTreeMap<String, String>,
+    t: std::collections::BTreeMap<&'static str, &'static str>,
+}
+
+/// The catalogue's keys page.js reads beside its own `html-…` and `verdict-…` ones.
+const PAGE_KEYS: &[&str] = &[
+    "col-clause",
+    "col-parameter",
+    "col-unit",
+    "fact-axis",
+    "fact-inspector",
+    "fact-machine",
+    "fact-standard",
+    "sensor-kind",
+    "summary-campaign-file",
+    "summary-date",
+    "summary-diagnosis",
+    "summary-file",
+    "summary-purpose",
+    "summary-site",
+    "summary-tests",
+    "summary-travel",
+    "summary-verdict",
+    "summary-worst",
+];
+
+/// The words of `words` that page.js uses: the page carries those, not the catalogue.
+fn page_words(words: &Words) -> std::collections::BTreeMap<&'static str, &'static str> {
+    (words.all().iter())
+        .filter(|(k, _)| {
+            k.starts_with("html-") || k.starts_with("verdict-") || PAGE_KEYS.contains(&k.as_str())
+        })
+        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .collect()
 }
 
 /// Input files listed under the page's footer before "… and N more".
@@ -71,7 +103,11 @@ impl Exporter for HtmlExporter {
     }
 
     fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
-        let words = Words::new(crate::campaign::report_lang(self.lang, &result.info, None));
+        let words = Words::new(crate::campaign::report_lang(
+            self.lang,
+            result.info.report.as_ref(),
+            None,
+        ));
         words.scope(|| self.export_in(result, words))
     }
 }
@@ -93,7 +129,7 @@ impl HtmlExporter {
             rows: overview::rows(result, trends),
             inputs: axcheck_charts::data::inputs::inputs_list(&result.inputs, INPUTS_LISTED, 64),
             lang: words.lang().code(),
-            t: words.all(),
+            t: page_words(&words),
         };
         let details = details(result, trends, self.reports, words)?;
         Ok(vec![OutputFile {

@@ -11,13 +11,15 @@ mod file_info;
 pub mod geometry;
 mod load;
 pub mod model;
+pub mod report_options;
 pub mod squareness;
 pub mod stages;
 
 pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, InstrumentEntry, MachineInfo, Nde, OutputOptions,
-    ReportOptions, SensorKind, TemperatureSensor, ToolPointRaw, Unjudged, report_lang,
+    SensorKind, TemperatureSensor, ToolPointRaw, Unjudged,
 };
+pub use report_options::{ReportOptions, report_lang};
 
 use crate::evaluate::StandardId;
 use crate::yaml::{self, Located, LocationIndex, YamlError, deserialize_at};

@@ -1,6 +1,7 @@
 //! The campaign file's types. Core keys are fixed (scripts write them); everything a
 //! test report needs by ISO 230-2 clause 7.1 has a key of its own.
 
+use super::report_options::ReportOptions;
 use crate::axis_model::Cycle;
 use crate::geometry::TestKind;
 use crate::geometry::line::ReferenceLine;
@@ -8,7 +9,6 @@ use crate::geometry::optics::Optics;
 use crate::geometry::squareness::Convention;
 use crate::geometry::tolerance::Tolerance;
 use crate::judge::{DecisionRule, Tolerances};
-use crate::lang::Lang;
 use crate::uncertainty::InstrumentKind;
 use crate::units::{AxisKind, Travel};
 use crate::yaml::describe;
@@ -73,36 +73,9 @@ pub struct CampaignInfo {
     pub trend_horizon_years: Option<f64>,
     #[serde(default)]
     pub output: OutputOptions,
-    /// `report: {lang: zh}`: the language of the reports (`--lang` overrides it, a
-    /// machine's `report.lang` overrides it for that machine's reports).
+    /// `report: {lang: zh}`: the reports' language (`report_options::report_lang`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub report: Option<ReportOptions>,
-}
-
-/// `campaign.report` and a machine's `report`: how the reports for people are written.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ReportOptions {
-    /// `en`, `zh` or `ru` (English when absent).
-    #[serde(
-        default,
-        deserialize_with = "crate::yaml::optional_keyword",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub lang: Option<Lang>,
-}
-
-/// The language of a machine's reports: `cli` (`--lang`), else the machine's
-/// `report.lang`, else the campaign's, else English.
-pub fn report_lang(
-    cli: Option<Lang>,
-    campaign: &CampaignInfo,
-    machine: Option<&MachineInfo>,
-) -> Lang {
-    let of = |r: &Option<ReportOptions>| r.as_ref().and_then(|r| r.lang);
-    cli.or_else(|| machine.and_then(|m| of(&m.report)))
-        .or_else(|| of(&campaign.report))
-        .unwrap_or_default()
 }
 
 /// `campaign.unjudged`: what the gate makes of a test no limit was applied to.
@@ -165,7 +138,7 @@ pub struct MachineInfo {
     /// (`compensation/MACHINE/AXIS.<ext>`), e.g. `csv`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub controller: Option<String>,
-    /// `report: {lang: ru}`: the language of this machine's reports.
+    /// `report: {lang: ru}`: this machine's reports' language.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub report: Option<ReportOptions>,
     /// Lets `axes` through the unknown-key check: the loader reads the axes one by one
