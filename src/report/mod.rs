@@ -428,11 +428,16 @@ impl Reports {
         table: &str,
     ) -> Result<Rendered, ReportError> {
         let document = "trends";
-        let (doc, charts) = data::trends::trends_document(history, pairs, horizon_years, table);
-        let mut files = Files::data(document, &doc, &Words::new(self.lang.unwrap_or_default()))?;
-        for (name, chart) in charts {
-            files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
-        }
+        let words = Words::new(self.lang.unwrap_or_default());
+        // Built in the language's numbers (charts and table), as the other documents.
+        let (doc, files) = words.scope(|| {
+            let (doc, charts) = data::trends::trends_document(history, pairs, horizon_years, table);
+            let mut files = Files::data(document, &doc, &words)?;
+            for (name, chart) in charts {
+                files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
+            }
+            Ok::<_, ReportError>((doc, files))
+        })?;
         let date = (!doc.last.is_empty()).then_some(doc.last.as_str());
         self.compile(
             document,

@@ -342,6 +342,29 @@ html-chart-bidirectional = Bidirectional positional deviations (ISO 230-2 Fig. 2
 html-chart-unidirectional = Unidirectional positional deviations (ISO 230-2 Fig. 2b)
 html-chart-history = History: { $label }
 
+## Other laser tests (other-report.typ)
+other-outcome = Outcome
+other-cross-heading = Cross-axis compensation
+other-uncertainty-heading = Measurement uncertainty (GUM)
+
+## Inspection trends (trends.typ)
+trends-kind = Inspection trends
+trends-dates = { $count } dates, { $first } to { $last }
+trends-series = Series
+trends-series-value = { $count } (machine, axis, parameter)
+trends-flagged = Flagged
+trends-flagged-value = { $series } series on { $axes } axes
+trends-horizon = Horizon
+trends-horizon-value = { $years } years after the latest inspection
+trends-charts-note = On the charts: the inspections (dots), the line through them (solid) and ahead to the horizon (dashed), its band, the limit (red), the latest inspection (grey dashed) and, within the horizon, where the line reaches the limit (red diamond).
+trends-further-axes = { $count } further axes
+trends-omitted = { $axes } ({ $flagged }) are not charted here: every series is in { $table }.
+trends-omitted-flagged = { $count } of them flagged
+trends-omitted-none = none of them flagged
+trends-serial = (serial { $serial })
+trends-axis = axis { $axis }
+trends-closing-note = Produced by axcheck from the history { $history }. Every series with its numbers: { $table }.
+
 ## Parameter names as each standard words them (ISO 230-2; GOST 27843-88; VDI 3441 and
 ## NMTBA as described by Hemingray, Cowley and Burdekin)
 param-iso-A = bidirectional accuracy of positioning

@@ -254,7 +254,7 @@ history-first = 这是本轴线在历史中的第一次检验：趋势需要两�
 history-flagged = { $total } 个参数中 { $flagged } 个被标记
 history-flagged-within = { $flagged }（{ $years } 年期限内）。
 history-none-flagged = { $years } 年期限内无参数被标记。
-closing-note = 由 { $generator } 根据检验数据生成；数值单位 { $unit }，位置为实测位置。
+closing-note = 由 { $generator } 根据检验数据生成；位置为实测位置；数值单位为 { $unit }
 
 ## Campaign summary (summary.typ)
 summary-title = 汇总
@@ -342,6 +342,29 @@ html-detail-unreadable = 此浏览器无法读取详情：{ $error }
 html-chart-bidirectional = 双向位置偏差（GB/T 17421.2 图 2a）
 html-chart-unidirectional = 单向位置偏差（GB/T 17421.2 图 2b）
 html-chart-history = 历史：{ $label }
+
+## Other laser tests (other-report.typ)
+other-outcome = 结果
+other-cross-heading = 轴间补偿
+other-uncertainty-heading = 测量不确定度（GUM）
+
+## Inspection trends (trends.typ)
+trends-kind = 检验趋势
+trends-dates = { $count } 个日期，{ $first } 至 { $last }
+trends-series = 序列
+trends-series-value = { $count }（机床、轴线、参数）
+trends-flagged = 已标记
+trends-flagged-value = { $axes } 条轴线上的 { $series } 个序列
+trends-horizon = 期限
+trends-horizon-value = 最近一次检验后 { $years } 年
+trends-charts-note = 图中：各次检验（点），通过它们的直线（实线）及延伸至期限（虚线），其带，允差（红色），最近一次检验（灰色虚线），以及期限内直线达到允差之处（红色菱形）。
+trends-further-axes = 另有 { $count } 条轴线
+trends-omitted = { $axes }（{ $flagged }）未在此作图：全部序列见 { $table }。
+trends-omitted-flagged = 其中 { $count } 条被标记
+trends-omitted-none = 均未被标记
+trends-serial = （出厂编号 { $serial }）
+trends-axis = 轴线 { $axis }
+trends-closing-note = 由 axcheck 根据历史 { $history } 生成。全部序列及其数值：{ $table }。
 
 ## 参数名称：GB/T 17421.2-2000 第 2 章（2.13、2.14、2.18~2.23）
 param-iso-A = 轴线双向定位精度
