@@ -102,6 +102,10 @@ fn a_chinese_iso_report_names_the_parameters_in_the_terms_of_gbt_17421_2() {
             .unwrap()
             .ends_with("--lang zh")
     );
+    // `reproduce` runs it again in Chinese: the same bytes.
+    let (code, stdout, stderr) = axcheck(&["reproduce", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(stdout.contains("byte for byte"), "{stdout}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
