@@ -343,6 +343,18 @@ html-chart-unidirectional = Unidirectional positional deviations (ISO 230-2 Fig.
 html-chart-history = History: { $label }
 
 ## Other laser tests (other-report.typ)
+other-kind-straightness = Straightness test report (ISO 230-1)
+other-kind-angular = Angular deviation test report (ISO 230-1)
+other-kind-squareness = Squareness test report (ISO 230-1)
+other-from-to = { $from } to { $to }
+other-from-straightness = From the straightness tests
+other-runs = Runs per direction
+other-targets = Targets
+other-tolerance = Tolerance
+other-none-stated = none stated
+other-chart-position = Target position / { $unit }
+other-chart-deviation = Deviation about the { $line } line / { $unit }
+other-chart-angular = Mean angular deviation / { $unit }
 other-outcome = Outcome
 other-cross-heading = Cross-axis compensation
 other-uncertainty-heading = Measurement uncertainty (GUM)

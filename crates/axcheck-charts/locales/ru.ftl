@@ -349,6 +349,18 @@ html-chart-unidirectional = Отклонения от заданного пол�
 html-chart-history = История: { $label }
 
 ## Other laser tests (other-report.typ)
+other-kind-straightness = Протокол проверки прямолинейности (ISO 230-1)
+other-kind-angular = Протокол проверки угловых отклонений (ISO 230-1)
+other-kind-squareness = Протокол проверки перпендикулярности (ISO 230-1)
+other-from-to = от { $from } до { $to }
+other-from-straightness = По проверкам прямолинейности
+other-runs = Серий в каждом направлении
+other-targets = Заданных положений
+other-tolerance = Допуск
+other-none-stated = не указан
+other-chart-position = Заданное положение / { $unit }
+other-chart-deviation = Отклонение от прямой ({ $line }) / { $unit }
+other-chart-angular = Среднее угловое отклонение / { $unit }
 other-outcome = Итог
 other-cross-heading = Межосевая коррекция
 other-uncertainty-heading = Неопределённость измерения (GUM)

@@ -344,6 +344,18 @@ html-chart-unidirectional = 单向位置偏差（GB/T 17421.2 图 2b）
 html-chart-history = 历史：{ $label }
 
 ## Other laser tests (other-report.typ)
+other-kind-straightness = 直线度检验报告（ISO 230-1）
+other-kind-angular = 角度偏差检验报告（ISO 230-1）
+other-kind-squareness = 垂直度检验报告（ISO 230-1）
+other-from-to = { $from } 至 { $to }
+other-from-straightness = 取自直线度检验
+other-runs = 每个方向的测量次数
+other-targets = 目标位置数
+other-tolerance = 允差
+other-none-stated = 未说明
+other-chart-position = 目标位置 / { $unit }
+other-chart-deviation = 相对 { $line } 直线的偏差 / { $unit }
+other-chart-angular = 平均角度偏差 / { $unit }
 other-outcome = 结果
 other-cross-heading = 轴间补偿
 other-uncertainty-heading = 测量不确定度（GUM）
