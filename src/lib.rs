@@ -34,6 +34,6 @@ pub use axcheck_campaign::{
     results, safe_text, simulate, trend, yaml,
 };
 pub use axcheck_core::{
-    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, rules, suggest,
+    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, lang, nde, rules, suggest,
     uncertainty, units, verify,
 };

@@ -262,6 +262,10 @@ pub struct RunArgs {
     /// Folder with a customised copy of the report templates (templates/).
     #[arg(long)]
     templates: Option<PathBuf>,
+    /// Language of the reports (axis reports, summary PDF, summary.html): en, zh or ru
+    /// (default: a machine's `report.lang`, else `campaign.report.lang`, else en).
+    #[arg(long, value_name = "en|zh|ru")]
+    lang: Option<axcheck::lang::Lang>,
     /// A progress line for every finished test on stderr (without a terminal the
     /// default is a line at every tenth of the campaign).
     #[arg(long)]
@@ -297,6 +301,7 @@ impl RunArgs {
             no_html: flags.no_html,
             no_diagnose: flags.no_diagnose,
             templates: flags.templates.as_ref().map(|t| dir.join(t)),
+            lang: flags.lang,
             progress: false,
             history: flags.history.as_ref().map(|h| dir.join(h)),
             horizon_years: flags.horizon,
@@ -395,6 +400,7 @@ pub fn run_options<'a>(args: &'a RunArgs, campaign: &Campaign) -> Result<session
             templates: (args.templates.as_deref()).map(|p| from_campaign(campaign, p)),
             history: (args.history.as_deref()).map(|p| from_campaign(campaign, p)),
             horizon: args.horizon_years,
+            lang: args.lang,
         },
     })
 }

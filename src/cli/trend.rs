@@ -26,6 +26,9 @@ pub struct TrendArgs {
     /// Years after the latest inspection within which a forecast crossing is flagged.
     #[arg(long = "horizon", default_value_t = 2.0)]
     horizon_years: f64,
+    /// Language of trends.pdf: en, zh or ru (default en).
+    #[arg(long, value_name = "en|zh|ru")]
+    lang: Option<axcheck::lang::Lang>,
 }
 
 /// Flagged lines printed before "… and N more".
@@ -79,7 +82,7 @@ fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &TrendArgs) -
         super::tell(&format!("axcheck: {m}"))
     })?;
     let csv = trend::view::csv(pairs.iter().copied());
-    let reports = axcheck::report::Reports::new(None)?;
+    let reports = axcheck::report::Reports::new(None)?.with_lang(request.lang);
     let history = request.dir.display().to_string();
     let pdf = reports
         .trends(&history, pairs, request.horizon_years, "trends.csv")

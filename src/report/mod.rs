@@ -17,6 +17,7 @@ use crate::history::{AxisTrends, history_of};
 use crate::results::{AxisTest, CampaignResult};
 use crate::trend::{Series, Trend};
 use axcheck_charts::figures::{CHART_HEIGHT_PX, CHART_WIDTH_PX, TREND_STYLE};
+use axcheck_charts::words::Words;
 use chart_kit::{labels, scene::Scene};
 use charts::{
     check as check_chart, compensation as compensation_chart, diagnosis as diagnosis_charts,
@@ -76,10 +77,27 @@ struct Files {
 }
 
 impl Files {
-    /// `/data.json`.
-    fn data(document: &str, data: &impl serde::Serialize) -> Result<Files, ReportError> {
+    /// `/data.json`: `data` with the words of the document's language (`lang`, `t`: every
+    /// message of its catalogue, which the templates' `tr` reads).
+    fn data(
+        document: &str,
+        data: &impl serde::Serialize,
+        words: &Words,
+    ) -> Result<Files, ReportError> {
+        #[derive(serde::Serialize)]
+        struct WithWords<'a, T> {
+            #[serde(flatten)]
+            data: &'a T,
+            lang: &'static str,
+            t: &'a std::collections::BTreeMap<String, String>,
+        }
+        let with = WithWords {
+            data,
+            lang: words.lang().code(),
+            t: words.all(),
+        };
         let mut files = Files::default();
-        files.push(document, "/data.json".into(), data)?;
+        files.push(document, "/data.json".into(), &with)?;
         Ok(files)
     }
 
@@ -143,6 +161,9 @@ pub struct Reports {
     /// The templates read from the customised copy, with their SHA-256 (empty with the
     /// built-in ones): inputs of the run.
     read: Vec<crate::files::InputFile>,
+    /// `--lang`: the language of every report, over the machines' and the campaign's
+    /// `report.lang`.
+    lang: Option<crate::lang::Lang>,
 }
 
 impl Reports {
@@ -171,7 +192,28 @@ impl Reports {
                 ReportError::Templates("a template name is not a valid virtual path".into())
             })?,
             read: root.map_or_else(Vec::new, |root| root.recorded()),
+            lang: None,
         })
+    }
+
+    /// With every report in `lang` (`--lang`), when given.
+    pub fn with_lang(mut self, lang: Option<crate::lang::Lang>) -> Reports {
+        self.lang = lang;
+        self
+    }
+
+    /// The words of `machine`'s reports (of the summary with `None`): `--lang`, else the
+    /// machine's `report.lang`, else the campaign's, else English.
+    pub fn words(
+        &self,
+        result: &CampaignResult,
+        machine: Option<&crate::campaign::MachineInfo>,
+    ) -> Words {
+        Words::new(crate::campaign::report_lang(
+            self.lang,
+            result.info.report.as_ref(),
+            machine.and_then(|m| m.report.as_ref()),
+        ))
     }
 
     /// The templates read from the customised copy with their SHA-256, sorted by path
@@ -239,14 +281,26 @@ impl Reports {
         if test.other().is_some() {
             return self.other(result, test);
         }
+        let words = self.words(result, Some(&test.machine));
+        words.scope(|| self.axis_in(result, test, trends, &words))
+    }
+
+    /// [`Reports::axis_with_history`] in `words`' language.
+    fn axis_in(
+        &self,
+        result: &CampaignResult,
+        test: &AxisTest,
+        trends: Option<&AxisTrends>,
+        words: &Words,
+    ) -> Result<Rendered, ReportError> {
         let document = test.label();
-        let mut report = data::axis_report(result, test);
+        let mut report = data::axis_report(result, test, words);
         let mut history_charts = Vec::new();
         if let Some(history) = history_of(test, trends) {
             report = report.with_history(history.section);
             history_charts = history.charts;
         }
-        let mut files = Files::data(&document, &report)?;
+        let mut files = Files::data(&document, &report, words)?;
         for chart in history_charts {
             files.chart(&chart.name, chart.scene);
         }
@@ -290,6 +344,17 @@ impl Reports {
 
     /// The report of a straightness, angular or squareness test (ISO 230-1).
     fn other(&self, result: &CampaignResult, test: &AxisTest) -> Result<Rendered, ReportError> {
+        let words = self.words(result, Some(&test.machine));
+        words.scope(|| self.other_in(result, test, &words))
+    }
+
+    /// [`Reports::other`] in `words`' language.
+    fn other_in(
+        &self,
+        result: &CampaignResult,
+        test: &AxisTest,
+        words: &Words,
+    ) -> Result<Rendered, ReportError> {
         let document = test.label();
         let Some(report) = data::other_report(result, test) else {
             return Err(ReportError::Typeset {
@@ -297,7 +362,7 @@ impl Reports {
                 message: "not one of the other laser tests".into(),
             });
         };
-        let mut files = Files::data(&document, &report)?;
+        let mut files = Files::data(&document, &report, words)?;
         if let Some(chart) = test.other().and_then(data::other_chart) {
             let style = charts::Style {
                 width_px: CHART_WIDTH_PX,
@@ -327,6 +392,17 @@ impl Reports {
         result: &CampaignResult,
         trends: Option<&AxisTrends>,
     ) -> Result<Rendered, ReportError> {
+        let words = self.words(result, None);
+        words.scope(|| self.summary_in(result, trends, &words))
+    }
+
+    /// [`Reports::summary_with_trends`] in `words`' language.
+    fn summary_in(
+        &self,
+        result: &CampaignResult,
+        trends: Option<&AxisTrends>,
+        words: &Words,
+    ) -> Result<Rendered, ReportError> {
         let document = "summary";
         let mut summary = data::summary(result);
         if let Some(t) =
@@ -334,7 +410,7 @@ impl Reports {
         {
             summary = summary.with_trends(t);
         }
-        let mut files = Files::data(document, &summary)?;
+        let mut files = Files::data(document, &summary, words)?;
         let bars = ratio_bars(result);
         let style = charts::Style {
             width_px: CHART_WIDTH_PX,
@@ -356,11 +432,16 @@ impl Reports {
         table: &str,
     ) -> Result<Rendered, ReportError> {
         let document = "trends";
-        let (doc, charts) = data::trends::trends_document(history, pairs, horizon_years, table);
-        let mut files = Files::data(document, &doc)?;
-        for (name, chart) in charts {
-            files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
-        }
+        let words = Words::new(self.lang.unwrap_or_default());
+        // Built in the language's numbers (charts and table), as the other documents.
+        let (doc, files) = words.scope(|| {
+            let (doc, charts) = data::trends::trends_document(history, pairs, horizon_years, table);
+            let mut files = Files::data(document, &doc, &words)?;
+            for (name, chart) in charts {
+                files.chart(&name, trend_chart::trend(&chart, &TREND_STYLE));
+            }
+            Ok::<_, ReportError>((doc, files))
+        })?;
         let date = (!doc.last.is_empty()).then_some(doc.last.as_str());
         self.compile(
             document,

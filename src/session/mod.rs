@@ -141,7 +141,7 @@ fn write_run(
     crate::atomic::OutputDir::open(out)?;
     // Built before the evaluation, so bad templates stop the run at once.
     let reports = match plan.pdf {
-        true => Some(crate::report::Reports::new(plan.templates)?),
+        true => Some(crate::report::Reports::new(plan.templates)?.with_lang(plan.flags.lang)),
         false => None,
     };
     let options = batch::BatchOptions {
@@ -190,6 +190,7 @@ fn exporters(
         exporters.push(Box::new(export::html::HtmlExporter {
             reports: reports.is_some(),
             trends: trends.cloned(),
+            lang: plan.flags.lang,
         }));
     }
     if let Some(reports) = reports {

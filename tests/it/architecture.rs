@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[&[&str]] = &[
     &[
         "units",
+        "lang",
         "param_key",
         "suggest",
         "files",
@@ -25,7 +26,7 @@ const LAYERS: &[&[&str]] = &[
     &["verify"],
     &["campaign"],
     &["results"],
-    &["table"],
+    &["table", "words"],
     &["chart_kit"],
     &["charts"],
     &["data"],

@@ -31,6 +31,7 @@ mod hostile_fs;
 mod injection;
 mod instrument_calibration;
 mod iso230_2;
+mod languages;
 mod layouts;
 #[cfg(unix)]
 mod linuxcnc_sim;

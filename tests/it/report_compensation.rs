@@ -60,7 +60,7 @@ fn run(path: &Path) -> CampaignResult {
 /// The compensation part of the report data of machine `id`.
 fn section(result: &CampaignResult, id: &str) -> Value {
     let test = result.tests.iter().find(|t| t.machine.id == id).unwrap();
-    let view = serde_json::to_value(data::axis_report(result, test)).unwrap();
+    let view = serde_json::to_value(data::axis_report(result, test, &Default::default())).unwrap();
     view["compensation"].clone()
 }
 

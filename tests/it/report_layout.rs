@@ -97,11 +97,26 @@ impl Word {
         self.y0 + self.face().ascender * self.size()
     }
 
-    /// The box of the letters' main body (see [`Face`]).
+    /// The box of the letters' main body (see [`Face`]). Full-width punctuation at a
+    /// word's end has its ink in one half of its em: Typst sets two of them side by side
+    /// (`）：`) in one em, as Chinese typesetting does, so the other half is no ink.
     fn ink(&self) -> (f64, f64, f64, f64) {
         let (face, size, baseline) = (self.face(), self.size(), self.baseline());
         let top = baseline - face.top * size;
-        (self.x0, top, self.x1, baseline + face.bottom * size)
+        let half = |c: Option<char>| c.is_some_and(|c| "（）：。，；、“”".contains(c));
+        let x0 = self.x0
+            + if half(self.text.chars().next()) {
+                size / 2.0
+            } else {
+                0.0
+            };
+        let x1 = self.x1
+            - if half(self.text.chars().last()) {
+                size / 2.0
+            } else {
+                0.0
+            };
+        (x0, top, x1, baseline + face.bottom * size)
     }
 }
 
@@ -174,7 +189,8 @@ fn footer(page: &Page) -> Vec<bool> {
         .words
         .iter()
         .rev()
-        .find(|w| w.text == "Page" && w.y0 >= band);
+        // "Page N of M", "Страница N из M", "第 N 页，共 M 页".
+        .find(|w| matches!(w.text.as_str(), "Page" | "Страница" | "第") && w.y0 >= band);
     page.words
         .iter()
         .map(|w| {
@@ -251,9 +267,16 @@ fn pdfs(dir: &Path) -> Vec<PathBuf> {
 
 /// Runs `campaign` into a fresh folder named `name`; the folder.
 fn run(campaign: &str, name: &str) -> PathBuf {
+    run_with(campaign, name, &[])
+}
+
+/// [`run`] with more options (`--lang zh`).
+fn run_with(campaign: &str, name: &str, extra: &[&str]) -> PathBuf {
     let out = std::env::temp_dir().join(format!("axcheck-layout-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
-    let (code, stdout, stderr) = axcheck(&["run", campaign, "--out", out.to_str().unwrap()]);
+    let mut args = vec!["run", campaign, "--out", out.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    let (code, stdout, stderr) = axcheck(&args);
     assert!(code == 0 || code == 1, "{code}: {stdout}{stderr}");
     out
 }
@@ -359,6 +382,25 @@ fn no_report_of_a_certificate_overprints() {
     // MILL-3 X's positioning and straightness, MILL-8 Y, and the summary.
     assert_no_overprinting(&out, 4);
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// The same in Chinese and Russian (README "Report languages"): longer words (GOST 27843's
+/// terms), ideographs, a decimal comma.
+#[test]
+fn no_report_in_chinese_or_russian_overprints() {
+    for lang in ["zh", "ru"] {
+        let name = format!("names-{lang}");
+        let out = run_with("tests/data/names/campaign.yaml", &name, &["--lang", lang]);
+        assert_no_overprinting(&out, 9);
+        let _ = std::fs::remove_dir_all(&out);
+        let out = run_with(
+            "example-campaign/campaign.yaml",
+            &format!("example-{lang}"),
+            &["--lang", lang],
+        );
+        assert_no_overprinting(&out, pdfs(&out).len().max(1));
+        let _ = std::fs::remove_dir_all(&out);
+    }
 }
 
 /// The text of the first page of `pdf`, without whitespace (pdftotext breaks lines).

@@ -72,6 +72,10 @@ pub struct RunFlags {
     /// `--horizon YEARS`.
     #[serde(default)]
     pub horizon: Option<f64>,
+    /// `--lang`: the reports' language (recorded only when given, so that the record of a
+    /// run without it stays as it was).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lang: Option<crate::lang::Lang>,
 }
 
 impl RunFlags {
@@ -93,6 +97,9 @@ impl RunFlags {
         }
         if let Some(years) = self.horizon {
             words.extend(["--horizon".to_string(), years.to_string()]);
+        }
+        if let Some(lang) = self.lang {
+            words.extend(["--lang".to_string(), lang.to_string()]);
         }
         words.join(" ")
     }
@@ -118,11 +125,12 @@ mod tests {
             no_pdf: true,
             history: Some("plant history".into()),
             horizon: Some(1.5),
+            lang: Some(crate::lang::Lang::Ru),
             ..RunFlags::default()
         };
         assert_eq!(
             flags.command("campaign.yaml"),
-            "axcheck run campaign.yaml --no-pdf --history 'plant history' --horizon 1.5"
+            "axcheck run campaign.yaml --no-pdf --history 'plant history' --horizon 1.5 --lang ru"
         );
         assert_eq!(
             RunFlags::default().command("it's.yaml"),

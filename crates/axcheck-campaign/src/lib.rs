@@ -32,6 +32,6 @@ pub mod trend;
 pub mod yaml;
 
 use axcheck_core::{
-    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, param_key, rules,
+    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, lang, nde, param_key, rules,
     suggest, uncertainty, units, verify,
 };

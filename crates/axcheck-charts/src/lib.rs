@@ -8,9 +8,10 @@ pub mod chart_kit;
 pub mod charts;
 pub mod data;
 pub mod figures;
+pub mod words;
 
 use axcheck_campaign::{campaign, inputs, judge, measurement, one_file, results, trend};
 use axcheck_core::{
-    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, nde, rules, uncertainty,
-    units, verify,
+    axis_model, compensate, crosscheck, diagnose, evaluate, geometry, lang, nde, param_key, rules,
+    uncertainty, units, verify,
 };

@@ -20,6 +20,7 @@ pub mod diagnose;
 pub mod evaluate;
 pub mod geometry;
 pub mod judge;
+pub mod lang;
 pub mod measurement;
 pub mod nde;
 pub mod param_key;

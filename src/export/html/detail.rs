@@ -9,6 +9,7 @@ use crate::history::AxisTrends;
 use crate::judge::Conformance;
 use crate::results::AxisTest;
 use crate::units::fmt_fixed;
+use axcheck_charts::words::Words;
 use serde::Serialize;
 
 #[derive(Debug, Serialize)]
@@ -19,7 +20,7 @@ pub struct Detail<'a> {
     pub standard: Option<&'static str>,
     /// The spec and band the limits come from, or that no tolerance applied.
     pub limits: Option<String>,
-    pub unit: Option<&'static str>,
+    pub unit: Option<String>,
     pub parameters: Vec<ParameterRow>,
     /// Parameters without a value here (those needing repeated runs, with n = 1).
     pub not_applicable: Vec<&'static str>,
@@ -40,7 +41,7 @@ pub struct Detail<'a> {
 #[derive(Debug, Serialize)]
 pub struct ParameterRow {
     pub symbol: &'static str,
-    pub name: &'static str,
+    pub name: String,
     pub clause: &'static str,
     pub value: String,
     #[serde(rename = "U")]
@@ -82,9 +83,16 @@ pub struct Links {
     pub table: Option<String>,
 }
 
-pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) -> Detail<'a> {
+pub fn detail<'a>(
+    t: &'a AxisTest,
+    trends: Option<&AxisTrends>,
+    links: Links,
+    words: &Words,
+) -> Detail<'a> {
     let ev = t.evaluated();
-    let unit = Some(t.deviation_symbol()).filter(|u| !u.is_empty());
+    let unit = Some(t.deviation_symbol())
+        .filter(|u| !u.is_empty())
+        .map(|u| words.unit(u));
     Detail {
         id: super::super::overview::test_id(t),
         label: t.label(),
@@ -92,7 +100,7 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
         standard: t.positioning_standard().map(|s| s.title()),
         limits: t.judgement().map(|j| j.limits.describe_labelled()),
         unit,
-        parameters: parameters(t),
+        parameters: parameters(t, words),
         not_applicable: (ev.map(|e| &e.evaluation).into_iter())
             .flat_map(|e| e.not_applicable().map(|d| d.symbol))
             .collect(),
@@ -115,17 +123,17 @@ pub fn detail<'a>(t: &'a AxisTest, trends: Option<&AxisTrends>, links: Links) ->
                 warnings: c.warnings.iter().map(|w| w.message.clone()).collect(),
             }),
         verification: ev.and_then(|e| e.verification.as_deref()).map(|v| match v {
-            Ok(v) => v.summary(unit.unwrap_or("")),
+            Ok(v) => v.summary(t.deviation_symbol()),
             Err(e) => format!("not made: {e}"),
         }),
         report: links.report,
         table: links.table,
-        charts: charts(t, trends),
+        charts: charts(t, trends, words),
         error: t.error(),
     }
 }
 
-fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
+fn parameters(t: &AxisTest, words: &Words) -> Vec<ParameterRow> {
     if let Some(o) = t.other() {
         return other_values(o);
     }
@@ -142,11 +150,11 @@ fn parameters(t: &AxisTest) -> Vec<ParameterRow> {
     (e.parameters.iter())
         .map(|p| ParameterRow {
             symbol: p.symbol(),
-            name: p.name(),
+            name: words.parameter(e.standard, p.def.key, p.name()),
             clause: p.clause(),
-            value: fmt_fixed(p.value, 2),
-            u: u_of(p.def.key).map(|u| fmt_fixed(u, 2)),
-            limit: check(p.def.key).map(|c| fmt_fixed(c.limit, 2)),
+            value: words.number(&fmt_fixed(p.value, 2)),
+            u: u_of(p.def.key).map(|u| words.number(&fmt_fixed(u, 2))),
+            limit: check(p.def.key).map(|c| words.number(&fmt_fixed(c.limit, 2))),
             outcome: check(p.def.key).map(|c| c.outcome),
         })
         .collect()
@@ -157,7 +165,7 @@ fn other_values(o: &crate::results::OtherTested) -> Vec<ParameterRow> {
     (o.values())
         .map(|(key, value, check)| ParameterRow {
             symbol: key.as_str(),
-            name: crate::results::OtherTested::name(key),
+            name: crate::results::OtherTested::name(key).to_string(),
             clause: "ISO 230-1",
             value: fmt_fixed(value, 2),
             u: Some(fmt_fixed(o.uncertainty.expanded, 2)),
@@ -168,18 +176,18 @@ fn other_values(o: &crate::results::OtherTested) -> Vec<ParameterRow> {
 }
 
 /// ISO 230-2 Fig. 2a and 2b, then the history of each charted parameter.
-fn charts(t: &AxisTest, trends: Option<&AxisTrends>) -> Vec<Chart> {
+fn charts(t: &AxisTest, trends: Option<&AxisTrends>, words: &Words) -> Vec<Chart> {
     let mut charts = Vec::new();
     if let Some(e) = t.evaluated().map(|e| &e.evaluation) {
         let [bidirectional, unidirectional] = axcheck_charts::figures::iso_charts(e);
         charts.push(Chart {
             group: "iso",
-            title: "Bidirectional positional deviations (ISO 230-2 Fig. 2a)".into(),
+            title: words.get("html-chart-bidirectional"),
             scene: SceneData::of(&bidirectional),
         });
         charts.push(Chart {
             group: "iso",
-            title: "Unidirectional positional deviations (ISO 230-2 Fig. 2b)".into(),
+            title: words.get("html-chart-unidirectional"),
             scene: SceneData::of(&unidirectional),
         });
     }
@@ -187,7 +195,7 @@ fn charts(t: &AxisTest, trends: Option<&AxisTrends>) -> Vec<Chart> {
         for chart in history.charts {
             charts.push(Chart {
                 group: "history",
-                title: format!("History: {}", chart.label),
+                title: words.args("html-chart-history", &[("label", &chart.label)]),
                 scene: SceneData::of(&chart.scene),
             });
         }

@@ -21,6 +21,7 @@ use super::{ExportError, Exporter, OutputFile};
 use crate::history::AxisTrends;
 use crate::judge::Verdict;
 use crate::results::CampaignResult;
+use axcheck_charts::words::Words;
 use base64::Engine;
 use serde::Serialize;
 use std::io::Write;
@@ -38,6 +39,8 @@ pub(crate) struct HtmlExporter {
     pub reports: bool,
     /// The trends of the run's axes, when the run keeps a history.
     pub trends: Option<Arc<AxisTrends>>,
+    /// `--lang`: the page's language over `campaign.report.lang`.
+    pub lang: Option<crate::lang::Lang>,
 }
 
 /// What the script reads first: the header, the counts and the table.
@@ -54,6 +57,41 @@ struct Page<'a> {
     rows: Vec<overview::Row<'a>>,
     /// The files the run read with their SHA-256 and how it was run, under the footer.
     inputs: Option<axcheck_charts::data::inputs::InputsList>,
+    /// The page's language and its words (`tr` in page.js).
+    lang: &'static str,
+    t: std::collections::BTreeMap<&'static str, &'static str>,
+}
+
+/// The catalogue's keys page.js reads beside its own `html-…` and `verdict-…` ones.
+const PAGE_KEYS: &[&str] = &[
+    "col-clause",
+    "col-parameter",
+    "col-unit",
+    "fact-axis",
+    "fact-inspector",
+    "fact-machine",
+    "fact-standard",
+    "sensor-kind",
+    "summary-campaign-file",
+    "summary-date",
+    "summary-diagnosis",
+    "summary-file",
+    "summary-purpose",
+    "summary-site",
+    "summary-tests",
+    "summary-travel",
+    "summary-verdict",
+    "summary-worst",
+];
+
+/// The words of `words` that page.js uses: the page carries those, not the catalogue.
+fn page_words(words: &Words) -> std::collections::BTreeMap<&'static str, &'static str> {
+    (words.all().iter())
+        .filter(|(k, _)| {
+            k.starts_with("html-") || k.starts_with("verdict-") || PAGE_KEYS.contains(&k.as_str())
+        })
+        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .collect()
 }
 
 /// Input files listed under the page's footer before "… and N more".
@@ -65,6 +103,22 @@ impl Exporter for HtmlExporter {
     }
 
     fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+        let words = Words::new(crate::campaign::report_lang(
+            self.lang,
+            result.info.report.as_ref(),
+            None,
+        ));
+        words.scope(|| self.export_in(result, words))
+    }
+}
+
+impl HtmlExporter {
+    /// The page in `words`' language.
+    fn export_in(
+        &self,
+        result: &CampaignResult,
+        words: Words,
+    ) -> Result<Vec<OutputFile>, ExportError> {
         let trends = self.trends.as_deref();
         let page = Page {
             generator: format!("axcheck {}", env!("CARGO_PKG_VERSION")),
@@ -74,8 +128,10 @@ impl Exporter for HtmlExporter {
             block: BLOCK,
             rows: overview::rows(result, trends),
             inputs: axcheck_charts::data::inputs::inputs_list(&result.inputs, INPUTS_LISTED, 64),
+            lang: words.lang().code(),
+            t: page_words(&words),
         };
-        let details = details(result, trends, self.reports)?;
+        let details = details(result, trends, self.reports, words)?;
         Ok(vec![OutputFile {
             path: "summary.html".into(),
             bytes: page_html(&script_json(&page)?, &script_json(&details)?).into_bytes(),
@@ -99,6 +155,7 @@ fn details(
     result: &CampaignResult,
     trends: Option<&AxisTrends>,
     reports: bool,
+    words: Words,
 ) -> Result<Vec<String>, ExportError> {
     let report_paths = super::paths::test_paths(result, "reports", "pdf");
     let table_paths = super::compensation::table_paths(result);
@@ -118,7 +175,8 @@ fn details(
                         .then(|| slash(report)),
                     table: table.as_deref().map(slash),
                 };
-                detail::detail(t, trends, links)
+                // On this worker's thread, in the page's language.
+                words.scope(|| detail::detail(t, trends, links, &words))
             })
             .collect();
         let json = crate::safe_text::shown_json(&details).map_err(json_error)?;

@@ -5,6 +5,15 @@
 (function () {
   const data = JSON.parse(document.getElementById("page-data").textContent);
   const rows = data.rows;
+  // The page's words in its language (axcheck's catalogues): `tr(key, {name: value})`
+  // fills each `{name}`.
+  const T = data.t || {};
+  const tr = (key, args) => {
+    let s = key in T ? T[key] : key;
+    for (const [k, v] of Object.entries(args || {})) s = s.split("{" + k + "}").join(String(v));
+    return s;
+  };
+  document.documentElement.lang = data.lang || "en";
   const RANK = { fail: 0, noncompliant: 1, inconclusive: 2, error: 3, not_judged: 4, pass: 5 };
   const ROW_PX = 28;
   const OVERSCAN = 12;
@@ -21,13 +30,13 @@
     return e;
   }
   const dash = "–";
-  const verdictBadge = (v) => el("span", { class: "badge v-" + v }, v.replace("_", " ").toUpperCase());
+  const verdictBadge = (v) => el("span", { class: "badge v-" + v }, tr("verdict-" + v.replace("_", "-")));
   const axisLabel = (r) => (r.tests > 1 ? `${r.axis} (${r.test}/${r.tests})` : r.axis);
   const value = (r, k) => r.values[k];
 
   // The columns: what a cell shows, the value it sorts by (null last), whether a number.
   const headline = (k) => ({
-    key: k, label: k, title: `${k} with its expanded uncertainty U (k = 2), in the row's unit`,
+    key: k, label: k, title: tr("html-headline-title", { symbol: k }),
     num: true,
     sort: (r) => (value(r, k) ? value(r, k).value : null),
     cell: (r) => {
@@ -40,72 +49,77 @@
     },
   });
   const columns = [
-    { key: "machine", label: "Machine", sort: (r) => r.machine, cell: (r) => r.machine },
-    { key: "axis", label: "Axis", sort: (r) => r.axis + "\u0000" + String(r.test).padStart(6, "0"), cell: axisLabel },
-    { key: "verdict", label: "Verdict", sort: (r) => RANK[r.verdict], cell: (r) => verdictBadge(r.verdict) },
+    { key: "machine", label: tr("fact-machine"), sort: (r) => r.machine, cell: (r) => r.machine },
+    { key: "axis", label: tr("fact-axis"), sort: (r) => r.axis + "\u0000" + String(r.test).padStart(6, "0"), cell: axisLabel },
+    { key: "verdict", label: tr("summary-verdict"), sort: (r) => RANK[r.verdict], cell: (r) => verdictBadge(r.verdict) },
     {
-      key: "worst", label: "Worst / limit", num: true, title: "The parameter using the largest share of its tolerance: |value| / limit",
+      key: "worst", label: tr("summary-worst"), num: true, title: tr("html-worst-title"),
       sort: (r) => (r.worst ? r.worst.ratio : null),
       cell: (r) => (r.worst ? el("span", { class: r.worst.ratio > 1 ? "over" : null }, r.worst.text) : dash),
     },
     headline("A"), headline("E"), headline("M"), headline("R"), headline("B"),
-    { key: "unit", label: "Unit", sort: (r) => r.unit, cell: (r) => r.unit || dash },
+    { key: "unit", label: tr("col-unit"), sort: (r) => r.unit, cell: (r) => r.unit || dash },
     { key: "n", label: "n", num: true, sort: (r) => r.n, cell: (r) => (r.n === null ? dash : r.n) },
-    { key: "travel", label: "Travel", num: true, sort: (r) => r.travel, cell: (r) => r.travel_text || dash },
-    { key: "kind", label: "Kind", sort: (r) => r.kind, cell: (r) => r.kind || dash },
-    { key: "standard", label: "Standard", sort: (r) => r.standard, cell: (r) => r.standard || dash },
-    { key: "decision_rule", label: "Decision rule", sort: (r) => r.decision_rule, cell: (r) => r.decision_rule || dash },
+    { key: "travel", label: tr("summary-travel"), num: true, sort: (r) => r.travel, cell: (r) => r.travel_text || dash },
+    { key: "kind", label: tr("sensor-kind"), sort: (r) => r.kind, cell: (r) => r.kind || dash },
+    { key: "standard", label: tr("fact-standard"), sort: (r) => r.standard, cell: (r) => r.standard || dash },
+    { key: "decision_rule", label: tr("html-decision-rule"), sort: (r) => r.decision_rule, cell: (r) => r.decision_rule || dash },
     {
-      key: "rules", label: "Plan rules", title: "Test-plan rules broken (noncompliant); warnings in the detail",
+      key: "rules", label: tr("html-plan-rules"), title: tr("html-plan-rules-title"),
       sort: (r) => (r.rules.length ? r.rules.join(" ") : null), cell: (r) => r.rules.join(", ") || dash,
     },
     {
-      key: "diagnosis", label: "Diagnosis", sort: (r) => (r.diagnosis ? r.diagnosis.join(" ") || "none" : null),
-      cell: (r) => (r.diagnosis ? r.diagnosis.join(", ").replaceAll("_", " ") || "none" : dash),
+      key: "diagnosis", label: tr("summary-diagnosis"), sort: (r) => (r.diagnosis ? r.diagnosis.join(" ") || "none" : null),
+      cell: (r) => (r.diagnosis ? r.diagnosis.join(", ").replaceAll("_", " ") || tr("html-none") : dash),
     },
     {
-      key: "compensation", label: "Compensation E", num: true, title: "E as measured → as predicted with the new table",
+      key: "compensation", label: tr("html-compensation-e"), num: true, title: tr("html-compensation-e-title"),
       sort: (r) => (r.compensation ? r.compensation.predicted : null),
       cell: (r) => (r.compensation ? r.compensation.text : dash),
     },
   ];
   if (data.history) {
     columns.push({
-      key: "trend", label: "Trend", title: "Parameters whose trend over the inspection history is flagged",
+      key: "trend", label: tr("html-trend"), title: tr("html-trend-title"),
       sort: (r) => (r.trend && r.trend.length ? r.trend.join(" ") : null),
-      cell: (r) => (r.trend && r.trend.length ? "flagged: " + r.trend.join(", ") : dash),
+      cell: (r) => (r.trend && r.trend.length ? tr("html-flagged", { list: r.trend.join(", ") }) : dash),
     });
   }
   if (rows.some((r) => r.error)) {
-    columns.push({ key: "error", label: "Error", sort: (r) => r.error, cell: (r) => r.error || "" });
+    columns.push({ key: "error", label: tr("verdict-error-word"), sort: (r) => r.error, cell: (r) => r.error || "" });
   }
 
   // --- Header, counts, footer -------------------------------------------------------
   const c = data.campaign;
-  document.title = `${c.name} — axcheck summary`;
+  document.title = tr("html-title", { name: c.name });
+  // The page's fixed words (page.html holds the English ones for a page without script).
+  document.querySelector('label[for="search"]').textContent = tr("html-search");
+  document.getElementById("search").placeholder = tr("html-search-placeholder");
+  document.getElementById("keys").textContent = tr("html-keys");
+  document.getElementById("counts").setAttribute("aria-label", tr("html-counts-label"));
   document.getElementById("title").textContent = c.name;
   const dl = document.getElementById("campaign");
-  for (const [label, text] of [["Site", c.site], ["Purpose", c.purpose], ["Date", c.date],
-    ["Inspector", c.inspector], ["Standard", c.standard], ["Campaign file", c.file]]) {
+  for (const [label, text] of [[tr("summary-site"), c.site], [tr("summary-purpose"), c.purpose], [tr("summary-date"), c.date],
+    [tr("fact-inspector"), c.inspector], [tr("fact-standard"), c.standard], [tr("summary-campaign-file"), c.file]]) {
     if (text) dl.append(el("div", {}, el("dt", {}, label), el("dd", {}, text)));
   }
   const footer = document.getElementById("footer");
   footer.textContent =
-    `${data.generator}. Values in µm (linear axes) or arcsec (rotary axes), 2 decimals; U is the expanded uncertainty (k = 2).`;
+    tr("html-footer", { generator: data.generator });
   if (data.inputs) {
     // The files the run read, each with its SHA-256 (axcheck reproduce checks them).
     const i = data.inputs;
-    const list = el("table", { id: "inputs" }, el("tr", {}, el("th", {}, "File"), el("th", {}, "SHA-256")));
+    const list = el("table", { id: "inputs" }, el("tr", {}, el("th", {}, tr("summary-file")), el("th", {}, "SHA-256")));
     for (const r of i.rows) list.append(el("tr", {}, el("td", {}, r.path), el("td", { class: "sha" }, r.sha256)));
     footer.append(el("details", {},
-      el("summary", {}, `Inputs: ${i.total} files, made by axcheck ${i.axcheck} with ${i.command}`),
-      list, i.more ? el("p", {}, `… and ${i.more} more (results.json lists them all)`) : null));
+      el("summary", {}, tr("html-inputs", { total: i.total, version: i.axcheck, command: i.command })),
+      list, i.more ? el("p", {}, tr("html-more-inputs", { more: i.more })) : null));
   }
 
   const state = { text: "", verdict: null, sortKey: null, sortDesc: false, order: null, shown: [], active: -1, selected: null };
   const countsBox = document.getElementById("counts");
   const allButton = el("button", { type: "button", "aria-pressed": "true", "data-verdict": "" },
-    el("span", { class: "n" }, rows.length), " tests");
+    el("span", { class: "n" }, rows.length), " " + tr("summary-tests"));
   countsBox.append(allButton);
   for (const [verdict, n] of data.counts) {
     countsBox.append(el("button", { type: "button", "aria-pressed": "false", "data-verdict": verdict },
@@ -302,7 +316,7 @@
     try {
       d = await detailOf(k);
     } catch (e) {
-      showDetail(rows[k], null, "The detail could not be read in this browser: " + e);
+      showDetail(rows[k], null, tr("html-detail-unreadable", { error: e }));
       return;
     }
     if (ticket !== opening) return;
@@ -321,7 +335,7 @@
   }
 
   function showDetail(r, d, problem) {
-    const closeButton = el("button", { type: "button" }, "Close");
+    const closeButton = el("button", { type: "button" }, tr("html-close"));
     closeButton.addEventListener("click", close);
     const parts = [el("div", { class: "top" },
       el("h2", { id: "detail-title", tabindex: "-1" }, `${r.machine} ${axisLabel(r)}`), verdictBadge(r.verdict), closeButton)];
@@ -333,7 +347,7 @@
 
   function facts(d) {
     const list = el("dl", { id: "detail-facts" });
-    for (const [label, text] of [["File", d.file], ["Standard", d.standard], ["Limits", d.limits], ["Error", d.error]]) {
+    for (const [label, text] of [[tr("summary-file"), d.file], [tr("fact-standard"), d.standard], [tr("html-limits"), d.limits], [tr("verdict-error-word"), d.error]]) {
       if (text) list.append(el("div", {}, el("dt", {}, label), el("dd", {}, text)));
     }
     list.style.display = "grid";
@@ -345,50 +359,50 @@
   function detailParts(r, d) {
     const out = [facts(d)];
     const links = el("p", { class: "links" });
-    if (d.report) links.append(el("a", { href: d.report }, "Axis report (PDF)"));
-    if (d.table) links.append(el("a", { href: d.table }, "Compensation table"));
+    if (d.report) links.append(el("a", { href: d.report }, tr("html-axis-report")));
+    if (d.table) links.append(el("a", { href: d.table }, tr("html-compensation-table")));
     if (links.childNodes.length) out.push(links);
     if (d.parameters.length) {
       const unit = d.unit || "";
       const t = el("table", { class: "parameters" },
-        el("thead", {}, el("tr", {}, ...["Parameter", "", "Clause", `Value / ${unit}`, `U (k = 2) / ${unit}`, `Limit / ${unit}`, "Check"]
+        el("thead", {}, el("tr", {}, ...[tr("col-parameter"), "", tr("col-clause"), tr("html-value-unit", { unit }), tr("html-u-unit", { unit }), tr("html-limit-unit", { unit }), tr("html-check")]
           .map((h) => el("th", { scope: "col" }, h)))));
       const tb = el("tbody");
       for (const p of d.parameters) {
         tb.append(el("tr", {}, el("th", { scope: "row" }, p.symbol), el("td", {}, p.name), el("td", {}, p.clause),
           el("td", { class: "num" }, p.value), el("td", { class: "num" }, p.U || dash),
           el("td", { class: "num" }, p.limit || dash),
-          el("td", {}, p.outcome ? el("span", { class: "badge v-" + p.outcome }, p.outcome) : dash)));
+          el("td", {}, p.outcome ? el("span", { class: "badge v-" + p.outcome }, tr("html-outcome-" + p.outcome)) : dash)));
       }
       t.append(tb);
-      out.push(el("h3", {}, "Parameters"), t);
-      if (d.not_applicable.length) out.push(el("p", { class: "muted" }, "Not applicable here: " + d.not_applicable.join(", ")));
+      out.push(el("h3", {}, tr("html-parameters")), t);
+      if (d.not_applicable.length) out.push(el("p", { class: "muted" }, tr("html-not-applicable", { list: d.not_applicable.join(", ") })));
     }
     if (d.rules.length) {
-      out.push(el("h3", {}, "Test-plan rules"), el("ul", {}, ...d.rules.map((f) =>
+      out.push(el("h3", {}, tr("html-rules")), el("ul", {}, ...d.rules.map((f) =>
         el("li", {}, el("strong", {}, `${f.id} (${f.clause}, ${f.severity})`), ": ", f.message))));
     }
     if (d.diagnosis.length) {
-      out.push(el("h3", {}, "Diagnosis"), el("ul", {}, ...d.diagnosis.map((f) =>
+      out.push(el("h3", {}, tr("summary-diagnosis")), el("ul", {}, ...d.diagnosis.map((f) =>
         el("li", {}, el("strong", {}, f.effect.replaceAll("_", " ")), ": ", f.message,
-          el("div", { class: "advice" }, "Advice: " + f.advice)))));
+          el("div", { class: "advice" }, tr("html-advice", { advice: f.advice }))))));
     } else if (r.diagnosis) {
-      out.push(el("h3", {}, "Diagnosis"), el("p", {}, "No effect found beyond the error model."));
+      out.push(el("h3", {}, tr("summary-diagnosis")), el("p", {}, tr("html-no-effect")));
     }
     if (d.compensation) {
       const cp = d.compensation;
-      const items = [el("li", {}, `Controller ${cp.controller}, ${cp.mode} table` +
-        (cp.active_file ? `, built on ${cp.active_file}` : ""))];
-      if (r.compensation) items.push(el("li", {}, `E ${r.compensation.text} ${d.unit || ""} (measured → predicted)`));
-      if (cp.refused) items.push(el("li", {}, "Not written: " + cp.refused));
-      for (const w of cp.warnings) items.push(el("li", {}, "Warning: " + w));
-      out.push(el("h3", {}, "Compensation"), el("ul", {}, ...items));
+      const items = [el("li", {}, tr("html-controller", { controller: cp.controller, mode: cp.mode }) +
+        (cp.active_file ? tr("html-built-on", { file: cp.active_file }) : ""))];
+      if (r.compensation) items.push(el("li", {}, tr("html-compensation-line", { text: r.compensation.text, unit: d.unit || "" })));
+      if (cp.refused) items.push(el("li", {}, tr("html-not-written", { reason: cp.refused })));
+      for (const w of cp.warnings) items.push(el("li", {}, tr("html-warning", { warning: w })));
+      out.push(el("h3", {}, tr("html-compensation")), el("ul", {}, ...items));
     }
-    if (d.verification) out.push(el("h3", {}, "Verification"), el("p", {}, d.verification));
+    if (d.verification) out.push(el("h3", {}, tr("html-verification")), el("p", {}, d.verification));
     const iso = d.charts.filter((ch) => ch.group === "iso");
     const hist = d.charts.filter((ch) => ch.group === "history");
     for (const ch of iso) out.push(figure(ch));
-    if (hist.length) out.push(el("h3", {}, "History"), el("div", { class: "charts-history" }, ...hist.map(figure)));
+    if (hist.length) out.push(el("h3", {}, tr("html-history")), el("div", { class: "charts-history" }, ...hist.map(figure)));
     return out;
   }
 

@@ -449,7 +449,9 @@ mod tests {
             ),
         ]);
         let typesetter = Typesetter::new(templates).unwrap();
-        let world = DocumentWorld::new(&typesetter, "/main.typ", vec![], vec![], None).unwrap();
+        // style.typ reads the report's words from /data.json (`t`, `lang`).
+        let data = vec![("/data.json".to_string(), b"{}".to_vec())];
+        let world = DocumentWorld::new(&typesetter, "/main.typ", data, vec![], None).unwrap();
         let doc = typst::compile::<PagedDocument>(&world).output.unwrap();
         let mut all = Vec::new();
         glyphs(&doc.pages()[0].frame, Point::zero(), &mut all);

@@ -13,6 +13,7 @@ mod file_info;
 pub mod geometry;
 mod load;
 pub mod model;
+pub mod report_options;
 pub mod squareness;
 pub mod stages;
 
@@ -20,6 +21,7 @@ pub use model::{
     Air, AxisRaw, CampaignInfo, Conditions, InstrumentEntry, MachineInfo, Nde, OutputOptions,
     SensorKind, TemperatureSensor, ToolPointRaw, Unjudged,
 };
+pub use report_options::{ReportOptions, report_lang};
 
 use crate::evaluate::StandardId;
 use crate::yaml::{self, Located, LocationIndex, YamlError, deserialize_at};

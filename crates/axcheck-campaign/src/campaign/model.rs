@@ -1,6 +1,7 @@
 //! The campaign file's types. Core keys are fixed (scripts write them); everything a
 //! test report needs by ISO 230-2 clause 7.1 has a key of its own.
 
+use super::report_options::ReportOptions;
 use crate::axis_model::Cycle;
 use crate::geometry::TestKind;
 use crate::geometry::line::ReferenceLine;
@@ -75,6 +76,9 @@ pub struct CampaignInfo {
     /// The campaign's reports are a laboratory's calibration certificate (ISO/IEC 17025).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub certificate: Option<super::certificate::CertificateRaw>,
+    /// `report: {lang: zh}`: the reports' language (`report_options::report_lang`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub report: Option<ReportOptions>,
 }
 
 /// `campaign.unjudged`: what the gate makes of a test no limit was applied to.
@@ -141,6 +145,9 @@ pub struct MachineInfo {
     /// campaign's `certificate`, if any).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub certificate: Option<super::certificate::CertificateRaw>,
+    /// `report: {lang: ru}`: this machine's reports' language.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub report: Option<ReportOptions>,
     /// Lets `axes` through the unknown-key check: the loader reads the axes one by one
     /// from the document, so that a broken axis fails alone.
     #[serde(default, skip_serializing)]

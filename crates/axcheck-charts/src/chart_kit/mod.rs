@@ -257,7 +257,8 @@ pub(crate) fn fmt_fixed_for_print(v: f64, decimals: usize) -> String {
     if v.abs() >= 1e9 {
         return format!("{v:.2e}").replace('-', "−");
     }
-    let s = fmt_fixed(v, decimals);
+    // In the language of the document being drawn (a decimal comma in Russian).
+    let s = crate::words::numbers().number(&fmt_fixed(v, decimals));
     match s.strip_prefix('-') {
         Some(rest) => format!("−{rest}"),
         None => s,

@@ -10,8 +10,11 @@ use crate::chart_kit::{
 use crate::charts::diagnosis::look::{
     CHECK_BAND, KIT, MARK_INSIDE, MARK_OUTSIDE, NOTE_PX, OUTSIDE, bold_width, draw_arrow, fill_rect,
 };
+use crate::lang::Lang;
+use crate::words::Words;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
+use std::sync::LazyLock;
 
 /// Measured statistic against the band simulated from the base model (model check).
 #[derive(Debug, Clone, PartialEq)]
@@ -124,36 +127,71 @@ pub(crate) struct Wording {
     scale_note: &'static str,
 }
 
+/// `keys` (catalogue keys, in the order of [`Wording`]'s fields) in each language, made
+/// once (the few strings stay for the life of the process).
+fn worded(keys: [&str; 8]) -> Vec<(Lang, Wording)> {
+    (Lang::ALL.into_iter())
+        .map(|lang| {
+            let words = Words::new(lang);
+            let t = |k: &str| -> &'static str { words.get(k).leak() };
+            let wording = Wording {
+                empty: t(keys[0]),
+                band_key: t(keys[1]),
+                band_head: t(keys[2]),
+                band_head_narrow: t(keys[3]),
+                measured_head: t(keys[4]),
+                inside: t(keys[5]),
+                outside: t(keys[6]),
+                scale_note: t(keys[7]),
+            };
+            (lang, wording)
+        })
+        .collect()
+}
+
+/// The wording of `all` in the language of the document being drawn.
+fn in_language(all: &'static [(Lang, Wording)]) -> &'static Wording {
+    let lang = crate::words::numbers();
+    &all.iter()
+        .find(|(l, _)| *l == lang)
+        .expect("every language")
+        .1
+}
+
 /// The model checks of the diagnosis.
-const MODEL_CHECKS: Wording = Wording {
-    empty: "No model checks to show.",
-    band_key: "simulated 95 % band (base model)",
-    band_head: "simulated 95 % band",
-    band_head_narrow: "95 % band",
-    measured_head: "measured",
-    inside: "measured",
-    outside: "measured, check outside",
-    scale_note: "each statistic on its own scale",
-};
+static MODEL_CHECKS: LazyLock<Vec<(Lang, Wording)>> = LazyLock::new(|| {
+    worded([
+        "check-model-empty",
+        "check-model-band-key",
+        "check-model-band-head",
+        "check-model-band-head-narrow",
+        "check-model-measured",
+        "check-model-measured",
+        "check-model-outside",
+        "check-model-scale",
+    ])
+});
 
 /// The decision of each limited parameter (ISO 14253-1): its value against the zone of
 /// the limit ± U, where neither conformance nor nonconformance is proven.
-const DECISION_ZONES: Wording = Wording {
-    empty: "No limited parameters to show.",
-    band_key: "limit ± U: inconclusive zone (ISO 14253-1)",
-    band_head: "limit − U … limit + U",
-    band_head_narrow: "limit ± U",
-    measured_head: "value",
-    inside: "value",
-    outside: "value, nonconformance proven",
-    scale_note: "each parameter on its own scale",
-};
+static DECISION_ZONES: LazyLock<Vec<(Lang, Wording)>> = LazyLock::new(|| {
+    worded([
+        "check-decision-empty",
+        "check-decision-band-key",
+        "check-decision-band-head",
+        "check-decision-band-head-narrow",
+        "check-decision-value",
+        "check-decision-value",
+        "check-decision-outside",
+        "check-decision-scale",
+    ])
+});
 
 /// Decision zones: one row per limited parameter, its |value| against the zone limit ± U
 /// (left of the zone conformance is proven, right of it nonconformance), drawn as the
 /// model checks are. Size the height with [`model_checks_height`].
 pub fn decision_zones(bars: &[CheckBar], style: &Style) -> Scene {
-    band_rows(bars, style, &DECISION_ZONES)
+    band_rows(bars, style, in_language(&DECISION_ZONES))
 }
 
 /// Model checks: one row per statistic. Each row has its own scale: the band simulated from
@@ -163,7 +201,7 @@ pub fn decision_zones(bars: &[CheckBar], style: &Style) -> Scene {
 /// end with an arrow. The measured value and the band are printed at the right. A key and the
 /// column headings sit above the rows. Size the height with [`model_checks_height`].
 pub fn model_checks(bars: &[CheckBar], style: &Style) -> Scene {
-    band_rows(bars, style, &MODEL_CHECKS)
+    band_rows(bars, style, in_language(&MODEL_CHECKS))
 }
 
 /// Rows of a value against a band, each on its own scale, in `words`.
@@ -308,6 +346,7 @@ fn draw_key(root: &Area, words: &Wording, any_outside: bool, clipped: bool) -> R
     let wi = root.dim_in_pixel().0 as i32;
     let key_y = 14;
     let mut kx = 10;
+    let beyond = Words::new(crate::words::numbers()).get("check-beyond");
     let mut key = vec![
         (Sample::Band, words.band_key),
         (Sample::Mark(MARK_INSIDE), words.inside),
@@ -316,7 +355,7 @@ fn draw_key(root: &Area, words: &Wording, any_outside: bool, clipped: bool) -> R
         key.push((Sample::Mark(MARK_OUTSIDE), words.outside));
     }
     if clipped {
-        key.push((Sample::Arrow, "beyond the scale"));
+        key.push((Sample::Arrow, beyond.as_str()));
     }
     for (sample, text) in key {
         if kx + 28 + 40 > wi - 10 {

@@ -5,6 +5,7 @@ use super::iso::look::KIT;
 use crate::chart_kit::scene::Scene;
 use crate::chart_kit::*;
 use crate::judge::Verdict;
+use crate::words::Words;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, VPos};
 
@@ -48,7 +49,10 @@ pub fn ratio_chart_height(bars: usize) -> u32 {
 /// Size the height with [`ratio_chart_height`].
 pub fn tolerance_usage(bars: &[RatioBar], style: &Style) -> Scene {
     if bars.is_empty() {
-        return message_chart(style, "No axes to summarise.");
+        return message_chart(
+            style,
+            &crate::words::Words::new(crate::words::numbers()).get("chart-usage-empty"),
+        );
     }
     let max_ratio = bars
         .iter()
@@ -152,7 +156,7 @@ fn usage_axes<'a>(
         .x_label_style(font(TICK_PX, false).color(&INK))
         .y_label_style(font(TICK_PX, false).color(&INK))
         .axis_desc_style(font(DESC_PX, false).color(&INK))
-        .x_desc("Worst parameter / tolerance")
+        .x_desc(crate::words::Words::new(crate::words::numbers()).get("chart-usage-axis"))
         .bold_line_style(GRID.stroke_width(1))
         .light_line_style(TRANSPARENT)
         .axis_style(FRAME.stroke_width(1))
@@ -262,12 +266,13 @@ impl Tone {
         }
     }
 
-    /// The key's text.
-    fn key(self) -> &'static str {
+    /// The key's text, in the language of the document being drawn.
+    fn key(self) -> String {
+        let words = Words::new(crate::words::numbers());
         match self {
-            Tone::Within => "within tolerance",
-            Tone::Over => "over tolerance",
-            Tone::Verdict(v) => v.name(),
+            Tone::Within => words.get("chart-usage-within"),
+            Tone::Over => words.get("chart-usage-over"),
+            Tone::Verdict(v) => v.name().to_string(),
         }
     }
 }
@@ -296,7 +301,8 @@ fn draw_limit(root: &Area, chart: &Chart) -> Result<(), Failed> {
         INK.stroke_width(2),
     ))?;
     let style = text_style(TICK_PX, true, INK, HPos::Center, VPos::Bottom);
-    draw_text(root, "limit", (limit_x, t - 6), style)
+    let limit = Words::new(crate::words::numbers()).get("chart-usage-limit");
+    draw_text(root, &limit, (limit_x, t - 6), style)
 }
 
 fn row_text_style(bold: bool, color: RGBColor, h: HPos) -> TextStyle<'static> {
@@ -362,13 +368,13 @@ fn draw_usage_key(root: &Area, bars: &[RatioBar], clipped: bool) -> Result<(), F
             root.draw(&Rectangle::new(swatch, edge.stroke_width(1)))?;
         }
         let style = row_text_style(false, INK, HPos::Left);
-        draw_text(root, text, (kx + 28, key_y), style)?;
-        kx += 28 + KIT.text_width(text, TICK_PX).ceil() as i32 + 22;
+        draw_text(root, &text, (kx + 28, key_y), style)?;
+        kx += 28 + KIT.text_width(&text, TICK_PX).ceil() as i32 + 22;
     }
     if clipped {
-        let note = format!(
-            "▶ ratio above {}, bar clipped",
-            fmt_fixed_for_print(RATIO_CLIP, 0)
+        let note = Words::new(crate::words::numbers()).args(
+            "chart-usage-clipped",
+            &[("ratio", &fmt_fixed_for_print(RATIO_CLIP, 0))],
         );
         let style = row_text_style(false, MUTED, HPos::Left);
         draw_text(root, &note, (kx, key_y), style)?;

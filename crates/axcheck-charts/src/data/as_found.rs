@@ -4,9 +4,10 @@
 
 use super::{num, symbol_of};
 use crate::evaluate::{Evaluation, ParamKey};
-use crate::judge::{Conformance, Judgement, Verdict};
+use crate::judge::{Conformance, Judgement};
 use crate::results::AxisTest;
 use crate::uncertainty::Uncertainty;
+use crate::words::Words;
 use serde::Serialize;
 
 /// The two measurements of an adjusted axis.
@@ -14,8 +15,9 @@ use serde::Serialize;
 pub struct AsFoundSection<'a> {
     found_file: &'a str,
     left_file: &'a str,
-    found_verdict: Verdict,
-    left_verdict: Verdict,
+    /// The verdicts in the report's words.
+    found_verdict: String,
+    left_verdict: String,
     rows: Vec<StateRow>,
 }
 
@@ -23,7 +25,7 @@ pub struct AsFoundSection<'a> {
 #[derive(Serialize)]
 struct StateRow {
     symbol: String,
-    name: &'static str,
+    name: String,
     limit: String,
     found: String,
     found_u: String,
@@ -66,8 +68,8 @@ impl State<'_> {
     }
 }
 
-/// The section of a test that verifies a table, or `None`.
-pub fn as_found_section(t: &AxisTest) -> Option<AsFoundSection<'_>> {
+/// The section of a test that verifies a table, or `None`; in `words`' language.
+pub fn as_found_section<'a>(t: &'a AxisTest, words: &Words) -> Option<AsFoundSection<'a>> {
     let e = t.evaluated()?;
     let found = e.as_found.as_deref()?;
     let before = State {
@@ -86,7 +88,7 @@ pub fn as_found_section(t: &AxisTest) -> Option<AsFoundSection<'_>> {
             let limit = (after.check(key).or_else(|| before.check(key))).map(|c| c.limit);
             StateRow {
                 symbol: symbol_of(t, key),
-                name: p.name(),
+                name: words.parameter(e.evaluation.standard, key, p.name()),
                 limit: limit.map_or("–".into(), num),
                 found: before.value(key),
                 found_u: before.u(key),
@@ -100,8 +102,8 @@ pub fn as_found_section(t: &AxisTest) -> Option<AsFoundSection<'_>> {
     Some(AsFoundSection {
         found_file: &found.file,
         left_file: t.file.as_deref().unwrap_or_default(),
-        found_verdict: found.verdict,
-        left_verdict: e.verdict,
+        found_verdict: words.verdict(found.verdict.name()),
+        left_verdict: words.verdict(e.verdict.name()),
         rows,
     })
 }

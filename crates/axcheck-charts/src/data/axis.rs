@@ -13,6 +13,7 @@ use crate::measurement::FileInfo;
 use crate::results::{AxisTest, CampaignResult};
 use crate::rules::Violation;
 use crate::units::{Travel, fmt_position};
+use crate::words::Words;
 use serde::Serialize;
 
 /// Everything `axis-report.typ` shows.
@@ -26,7 +27,7 @@ pub struct AxisReport<'a> {
     /// Names the facts shorten, in full.
     full_names: Vec<Row>,
     verdict: VerdictText,
-    unit: &'static str,
+    unit: String,
     conditions: Vec<Row>,
     sensors: Vec<SensorRow<'a>>,
     parameters: Vec<ParameterRow>,
@@ -62,8 +63,13 @@ impl AxisReport<'_> {
     }
 }
 
-/// The data of one axis report.
-pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisReport<'a> {
+/// The data of one axis report, in `words`' language (numbers too: build it inside
+/// [`Words::scope`]).
+pub fn axis_report<'a>(
+    result: &'a CampaignResult,
+    t: &'a AxisTest,
+    words: &Words,
+) -> AxisReport<'a> {
     let kind = t.kind();
     let ev = t.evaluated();
     let e = ev.map(|e| &e.evaluation);
@@ -72,21 +78,23 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
         campaign: CampaignHeader::new(result),
         campaign_short: super::campaign_short(result),
         // Shortened: the facts below print the names whole.
-        title: format!(
-            "{} — axis {}",
-            short_name(&t.machine.id, super::SHORT_NAME),
-            short_name(&t.axis, AXIS_NAME)
+        title: words.args(
+            "axis-title",
+            &[
+                ("machine", &short_name(&t.machine.id, super::SHORT_NAME)),
+                ("axis", &short_name(&t.axis, AXIS_NAME)),
+            ],
         ),
-        facts: facts(result, t),
-        full_names: full_names(t),
-        verdict: VerdictText::new(t),
-        unit: kind.map_or("", |k| k.deviation_symbol()),
+        facts: facts(result, t, words),
+        full_names: full_names(t, words),
+        verdict: VerdictText::new(t, words),
+        unit: kind.map_or(String::new(), |k| words.unit(k.deviation_symbol())),
         conditions: match (conditions, kind) {
-            (Some(c), Some(k)) => condition_rows(c, k, t),
+            (Some(c), Some(k)) => condition_rows(c, k, t, words),
             _ => Vec::new(),
         },
         sensors: conditions.map_or(Vec::new(), sensor_rows),
-        parameters: e.map_or(Vec::new(), |e| parameter_rows(t, e)),
+        parameters: e.map_or(Vec::new(), |e| parameter_rows(t, e, words)),
         coverage: e.map_or(String::new(), |e| fmt_position(e.coverage_factor)),
         s_symbol: s_symbol(t.standard()),
         n: e.map_or(0, |e| e.n),
@@ -111,39 +119,47 @@ pub fn axis_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> AxisRepor
             .and_then(|e| e.other_tool.as_deref())
             .map(super::other_tool::other_tool_section),
         tool_point: super::tool_point::tool_point_section(t),
-        certificate: super::certificate::certificate_section(result, &[t], result.report_number(t)),
-        as_found: super::as_found::as_found_section(t),
+        certificate: super::certificate::certificate_section(
+            result,
+            &[t],
+            result.report_number(t),
+            words,
+        ),
+        as_found: super::as_found::as_found_section(t, words),
         generator: generator(),
     }
 }
 
 /// A name in the two-column facts: whole when short, else shortened with a pointer to
 /// [`full_names`] (a 10 000-character name in a half-width column filled nine pages).
-fn in_facts(name: &str, max: usize) -> String {
+fn in_facts(name: &str, max: usize, words: &Words) -> String {
     if name.chars().count() <= max {
         name.to_string()
     } else {
-        format!("{} (in full below)", short_name(name, max))
+        words.args("in-full-below", &[("name", &short_name(name, max))])
     }
 }
 
 /// The machine's and the axis's names in full, across the text width, where the facts
 /// shorten them: each printed whole once.
-fn full_names(t: &AxisTest) -> Vec<Row> {
-    Row::present([
-        (
-            "Machine, in full",
-            (t.machine.id.chars().count() > super::SHORT_NAME).then(|| t.machine.id.clone()),
-        ),
-        (
-            "Axis, in full",
-            (t.axis.chars().count() > AXIS_NAME).then(|| t.axis.clone()),
-        ),
-    ])
+fn full_names(t: &AxisTest, words: &Words) -> Vec<Row> {
+    Row::labelled(
+        words,
+        [
+            (
+                "fact-machine-in-full",
+                (t.machine.id.chars().count() > super::SHORT_NAME).then(|| t.machine.id.clone()),
+            ),
+            (
+                "fact-axis-in-full",
+                (t.axis.chars().count() > AXIS_NAME).then(|| t.axis.clone()),
+            ),
+        ],
+    )
 }
 
 /// The header facts: machine, axis, travels, file, standard, spec, date and inspector.
-fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
+fn facts(result: &CampaignResult, t: &AxisTest, words: &Words) -> Vec<Row> {
     let m = &t.machine;
     let kind = t.kind();
     let travel = t
@@ -161,61 +177,75 @@ fn facts(result: &CampaignResult, t: &AxisTest) -> Vec<Row> {
     });
     let axis = format!(
         "{}{}",
-        in_facts(&t.axis, AXIS_NAME),
-        kind.map_or(String::new(), |k| format!(" ({k})"))
+        in_facts(&t.axis, AXIS_NAME, words),
+        kind.map_or(String::new(), |k| format!(
+            " ({})",
+            words.get(&format!("axis-kind-{k}"))
+        ))
     );
-    let test = (t.tests > 1).then(|| format!("{} of {} tests of this axis", t.test, t.tests));
+    let test = (t.tests > 1).then(|| {
+        let (test, tests) = (t.test.to_string(), t.tests.to_string());
+        words.args("fact-test-of", &[("test", &test), ("tests", &tests)])
+    });
     // What the file says of itself fills what the campaign leaves out, marked as such.
     let info = t.recognised().and_then(|r| r.info.as_ref());
     let file = |f: fn(&FileInfo) -> &Option<String>| {
         info.and_then(|i| f(i).as_ref())
-            .map(|v| format!("{v} (measurement file)"))
+            .map(|v| words.args("from-measurement-file", &[("value", v)]))
     };
     let differs = |f: fn(&FileInfo) -> &Option<String>, campaign: &str| {
         info.and_then(|i| f(i).clone())
             .filter(|v| v.trim() != campaign)
     };
-    Row::present([
-        ("Machine", Some(in_facts(&m.id, super::SHORT_NAME))),
-        ("Machine in the file", differs(|i| &i.machine, &m.id)),
-        ("Model", m.model.clone()),
-        (
-            "Serial number",
-            m.serial.clone().or_else(|| file(|i| &i.serial)),
-        ),
-        ("Type", m.machine_type.clone()),
-        (
-            "Location",
-            m.location.clone().or_else(|| file(|i| &i.location)),
-        ),
-        ("Axis", Some(axis)),
-        ("Axis in the file", differs(|i| &i.axis, &t.axis)),
-        ("Axis travel", travel),
-        ("Measurement travel", measured),
-        ("Measurement file", t.file.clone()),
-        (
-            "File SHA-256",
-            super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
-        ),
-        ("Test", test),
-        ("Standard", t.standard().map(|s| s.title().to_string())),
-        (
-            "Acceptance spec",
-            t.judgement().map(|j| j.limits.describe_labelled()),
-        ),
-        (
-            "Test date",
-            result.info.date.clone().or_else(|| file(|i| &i.date)),
-        ),
-        (
-            "Inspector",
-            result
-                .info
-                .inspector
-                .clone()
-                .or_else(|| file(|i| &i.operator)),
-        ),
-    ])
+    Row::labelled(
+        words,
+        [
+            (
+                "fact-machine",
+                Some(in_facts(&m.id, super::SHORT_NAME, words)),
+            ),
+            ("fact-machine-in-file", differs(|i| &i.machine, &m.id)),
+            ("fact-model", m.model.clone()),
+            (
+                "fact-serial",
+                m.serial.clone().or_else(|| file(|i| &i.serial)),
+            ),
+            ("fact-type", m.machine_type.clone()),
+            (
+                "fact-location",
+                m.location.clone().or_else(|| file(|i| &i.location)),
+            ),
+            ("fact-axis", Some(axis)),
+            ("fact-axis-in-file", differs(|i| &i.axis, &t.axis)),
+            ("fact-axis-travel", travel),
+            ("fact-measurement-travel", measured),
+            ("fact-measurement-file", t.file.clone()),
+            (
+                "fact-file-sha",
+                super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
+            ),
+            ("fact-test", test),
+            ("fact-standard", t.standard().map(|s| s.title().to_string())),
+            (
+                "fact-spec",
+                t.judgement().map(|j| j.limits.describe_labelled()),
+            ),
+            (
+                "fact-date",
+                (result.info.date.clone())
+                    .or_else(|| file(|i| &i.date))
+                    .map(|d| words.date(&d)),
+            ),
+            (
+                "fact-inspector",
+                result
+                    .info
+                    .inspector
+                    .clone()
+                    .or_else(|| file(|i| &i.operator)),
+            ),
+        ],
+    )
 }
 
 /// The verdict in words.
@@ -227,70 +257,61 @@ pub(super) struct VerdictText {
 }
 
 impl VerdictText {
-    pub(super) fn new(t: &AxisTest) -> VerdictText {
+    pub(super) fn new(t: &AxisTest, words: &Words) -> VerdictText {
         let detail = match t.verdict() {
-            Verdict::NotJudged => {
-                "Not judged: no tolerance applied, so nothing was compared with a limit; evaluated and checked against the test-plan rules only."
-                    .to_string()
-            }
-            Verdict::Pass => {
-                let n = t.judgement()
-                    .map_or(0, |j| j.checks.len());
-                match n {
-                    1 => "The limited value is within tolerance.".to_string(),
-                    n => format!("All {n} limited parameters are within tolerance."),
-                }
-            }
+            Verdict::NotJudged => words.get("verdict-detail-not-judged"),
+            Verdict::Pass => match t.judgement().map_or(0, |j| j.checks.len()) {
+                1 => words.get("verdict-detail-pass-one"),
+                n => words.args("verdict-detail-pass-all", &[("count", &n.to_string())]),
+            },
             Verdict::Fail => {
-                let failed: Vec<String> = t.judgement()
-                    .into_iter()
+                let failed: Vec<String> = (t.judgement().into_iter())
                     .flat_map(|j| j.failed())
                     .map(|c| symbol_of(t, c.key))
                     .collect();
-                format!("Over the limit: {}.", failed.join(", "))
+                words.args("verdict-detail-fail", &[("symbols", &failed.join(", "))])
             }
-            Verdict::Noncompliant => format!(
-                "The test does not follow the standard's plan ({}): its results cannot be used for acceptance.",
-                t.broken_rules()
-                    .map(|f| f.id)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
+            Verdict::Noncompliant => {
+                let rules: Vec<&str> = t.broken_rules().map(|f| f.id).collect();
+                words.args(
+                    "verdict-detail-noncompliant",
+                    &[("rules", &rules.join(", "))],
+                )
+            }
             Verdict::Error => t.error().unwrap_or_default().to_string(),
             Verdict::Inconclusive => {
                 let unit = t.deviation_symbol();
-                let zone: Vec<String> = t
-                    .inconclusive()
+                let zone: Vec<String> = (t.inconclusive())
                     .map(|c| {
-                        format!(
-                            "{} = {} ± {} {unit} against {} {unit}",
-                            symbol_of(t, c.key),
-                            num(c.value),
-                            num(c.expanded_uncertainty.unwrap_or(0.0)),
-                            num(c.limit)
+                        words.args(
+                            "verdict-zone",
+                            &[
+                                ("symbol", &symbol_of(t, c.key)),
+                                ("value", &num(c.value)),
+                                ("u", &num(c.expanded_uncertainty.unwrap_or(0.0))),
+                                ("limit", &num(c.limit)),
+                                ("unit", unit),
+                            ],
                         )
                     })
                     .collect();
-                format!(
-                    "Within the uncertainty of the measurement at the limit (ISO 14253-1: limit ± U): {}. Neither conformance nor nonconformance is proven.",
-                    zone.join("; ")
-                )
+                words.args("verdict-detail-inconclusive", &[("zone", &zone.join("; "))])
             }
         };
         let unit = t.deviation_symbol();
         let large: Vec<String> = (t.large_uncertainty().iter())
-            .map(|l| l.text(2, unit))
+            .map(|l| super::local(&l.text(2, unit)))
             .collect();
         let detail = match large.is_empty() {
             true => detail,
-            false => format!(
-                "{detail} The uncertainty is large for this verdict: {}.",
-                large.join("; ")
+            false => words.args(
+                "verdict-large-uncertainty",
+                &[("detail", &detail), ("list", &large.join("; "))],
             ),
         };
         VerdictText {
             key: t.verdict(),
-            word: t.verdict().words().to_uppercase(),
+            word: words.verdict(t.verdict().name()),
             detail,
         }
     }
@@ -300,7 +321,7 @@ impl VerdictText {
 #[derive(Serialize)]
 struct ParameterRow {
     symbol: &'static str,
-    name: &'static str,
+    name: String,
     clause: String,
     value: String,
     /// The expanded uncertainty U (k = 2) of the value, `±0.87`, or `–`.
@@ -313,7 +334,7 @@ struct ParameterRow {
 
 /// The parameters of the standard with value, limit, margin and status, then the
 /// standard's parameters that do not apply with n = 1 (ISO 230-2 clause 5.2).
-fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
+fn parameter_rows(t: &AxisTest, e: &Evaluation, words: &Words) -> Vec<ParameterRow> {
     let mut rows: Vec<ParameterRow> = e
         .parameters
         .iter()
@@ -322,7 +343,11 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
                 .judgement()
                 .and_then(|j| j.checks.iter().find(|c| c.key == p.def.key));
             let at = if let Some(i) = p.at_target {
-                format!("at i = {} ({})", i + 1, pos(e.kind, e.targets[i].position))
+                let position = pos(e.kind, e.targets[i].position);
+                words.args(
+                    "at-target",
+                    &[("i", &(i + 1).to_string()), ("position", &position)],
+                )
             } else if let Some((hi, lo)) = p.span {
                 format!("{} − ({})", num(hi), num(lo))
             } else {
@@ -330,7 +355,7 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
             };
             ParameterRow {
                 symbol: p.symbol(),
-                name: p.name(),
+                name: words.parameter(e.standard, p.def.key, p.name()),
                 clause: p
                     .clause()
                     .replace(" (GB/T 17421.2 amendment No. 1)", ", amd. 1"),
@@ -352,12 +377,12 @@ fn parameter_rows(t: &AxisTest, e: &Evaluation) -> Vec<ParameterRow> {
         .collect();
     rows.extend(e.not_applicable().map(|def| ParameterRow {
         symbol: def.symbol,
-        name: def.name,
+        name: words.parameter(e.standard, def.key, def.name),
         clause: match e.standard {
             StandardId::Iso230_2 | StandardId::Gbt17421_2 => "ISO 230-2 5.2".to_string(),
             _ => def.clause.to_string(),
         },
-        value: "not applicable".into(),
+        value: words.get("not-applicable"),
         u: "–".into(),
         limit: "–".into(),
         margin: "–".into(),
@@ -412,7 +437,7 @@ fn target_rows(e: &Evaluation) -> Vec<TargetRow> {
         .enumerate()
         .map(|(i, t)| TargetRow {
             i: (i + 1).to_string(),
-            position: fmt_position(t.position).replace('-', "−"),
+            position: super::local(&fmt_position(t.position).replace('-', "−")),
             up: DirectionColumn::new(&t.up, k),
             down: DirectionColumn::new(&t.down, k),
             b: num(t.reversal),

@@ -6,6 +6,7 @@
 use crate::campaign::certificate::{CertificateRaw, Party, Signatory};
 use crate::campaign::model::InstrumentEntry;
 use crate::results::{AxisTest, CampaignResult};
+use crate::words::Words;
 use serde::Serialize;
 
 /// The certificate block of one report.
@@ -15,9 +16,9 @@ pub struct CertificateSection<'a> {
     title: &'a str,
     /// This report's number (the summary's: the campaign's).
     number: String,
-    issued: &'a str,
+    issued: String,
     /// The date of the measurement (the campaign's).
-    measured: &'a str,
+    measured: String,
     /// Where the measurement was made (the campaign's site; "" when unstated).
     site: &'a str,
     customer: &'a Party,
@@ -43,26 +44,28 @@ struct InstrumentRow {
 }
 
 impl InstrumentRow {
-    fn of(i: &InstrumentEntry) -> InstrumentRow {
+    fn of(i: &InstrumentEntry, words: &Words) -> InstrumentRow {
         let c = i.calibration.clone().unwrap_or_default();
         let text = |s: Option<String>| s.unwrap_or_default();
+        let date = |d: Option<String>| d.map_or(String::new(), |d| words.date(&d));
         InstrumentRow {
             name: text(i.name.clone()),
             serial: text(i.serial.clone()),
             certificate: text(c.certificate),
-            calibrated_on: text(c.calibrated_on),
-            due: text(c.due),
+            calibrated_on: date(c.calibrated_on),
+            due: date(c.due),
             body: text(c.body),
         }
     }
 }
 
 /// The certificate block of the report of `tests` (one test's, or the summary's of all),
-/// numbered `number`; `None` when the campaign is no certificate.
+/// numbered `number`, in `words`' language; `None` when the campaign is no certificate.
 pub fn certificate_section<'a>(
     result: &'a CampaignResult,
     tests: &[&'a AxisTest],
     number: Option<String>,
+    words: &Words,
 ) -> Option<CertificateSection<'a>> {
     let c: &CertificateRaw = match tests {
         [t] => result.certificate_of(t)?,
@@ -70,18 +73,19 @@ pub fn certificate_section<'a>(
     };
     let mut instruments: Vec<InstrumentRow> = (tests.iter())
         .filter_map(|t| t.spec.as_ref()?.raw.conditions.instrument.as_ref())
-        .map(InstrumentRow::of)
+        .map(|i| InstrumentRow::of(i, words))
         .collect();
     instruments.sort();
     instruments.dedup();
-    let mut method: Vec<String> = tests.iter().map(|t| method_of(t)).collect();
+    let mut method: Vec<String> = tests.iter().map(|t| method_of(t, words)).collect();
+    method.retain(|m| !m.is_empty());
     method.sort();
     method.dedup();
     Some(CertificateSection {
         title: c.title.as_deref().unwrap_or_default(),
         number: number.unwrap_or_else(|| c.number.clone()),
-        issued: c.issued.as_deref().unwrap_or_default(),
-        measured: result.info.date.as_deref().unwrap_or_default(),
+        issued: c.issued.as_deref().map_or(String::new(), |d| words.date(d)),
+        measured: (result.info.date.as_deref()).map_or(String::new(), |d| words.date(d)),
         site: result.info.site.as_deref().unwrap_or_default(),
         customer: &c.customer,
         laboratory: &c.laboratory,
@@ -94,13 +98,13 @@ pub fn certificate_section<'a>(
 
 /// The method a test follows: its standard and edition (ISO 230-1's tests by name: the
 /// project has not its clauses' numbers).
-fn method_of(t: &AxisTest) -> String {
+fn method_of(t: &AxisTest, words: &Words) -> String {
     use crate::geometry::TestKind;
     match (t.test_kind(), t.positioning_standard()) {
         (TestKind::Positioning, Some(s)) => s.title().to_string(),
         (TestKind::Positioning, None) => String::new(),
-        (TestKind::Straightness, _) => "ISO 230-1:2012 (straightness)".into(),
-        (TestKind::Angular, _) => "ISO 230-1:2012 (angular deviation)".into(),
-        (TestKind::Squareness, _) => "ISO 230-1:2012 (squareness)".into(),
+        (TestKind::Straightness, _) => words.get("method-straightness"),
+        (TestKind::Angular, _) => words.get("method-angular"),
+        (TestKind::Squareness, _) => words.get("method-squareness"),
     }
 }

@@ -6,12 +6,13 @@ use crate::campaign::{Air, Conditions, InstrumentEntry, Nde, SensorKind, Tempera
 use crate::nde::NdeCorrection;
 use crate::results::AxisTest;
 use crate::units::{AxisKind, fmt_fixed, fmt_position};
+use crate::words::Words;
 use serde::Serialize;
 
 /// A labelled line: a header fact or a test condition.
 #[derive(Debug, Serialize)]
 pub(super) struct Row {
-    label: &'static str,
+    label: String,
     value: String,
 }
 
@@ -21,75 +22,126 @@ impl Row {
         rows.into_iter()
             .filter_map(|(label, value)| {
                 let value = value.filter(|v| !v.trim().is_empty())?;
-                Some(Row { label, value })
+                Some(Row {
+                    label: label.to_string(),
+                    value,
+                })
             })
             .collect()
+    }
+
+    /// [`Row::present`] with each label a key of the catalogue, in `words`' language.
+    pub(super) fn labelled<const N: usize>(
+        words: &Words,
+        rows: [(&'static str, Option<String>); N],
+    ) -> Vec<Row> {
+        let mut rows = Row::present(rows);
+        for r in &mut rows {
+            r.label = words.get(&r.label);
+        }
+        rows
     }
 }
 
 /// Clause 7.1 items the campaign gives, in the standard's order.
-pub(super) fn condition_rows(c: &Conditions, kind: AxisKind, t: &AxisTest) -> Vec<Row> {
+pub(super) fn condition_rows(
+    c: &Conditions,
+    kind: AxisKind,
+    t: &AxisTest,
+    words: &Words,
+) -> Vec<Row> {
     let (instrument, position) = c.instrument.as_ref().map_or((None, None), instrument);
     let per_min = match kind {
         AxisKind::Linear => "mm/min",
         AxisKind::Rotary => "°/min",
     };
-    let approaches = t
-        .evaluated()
-        .map(|e| &e.evaluation)
-        .map(|e| format!("n = {} at each of {} targets", e.n, e.targets.len()));
-    Row::present([
-        ("Measuring instrument", instrument),
-        ("Position of the instrument", position),
-        (
-            "Test equipment",
-            (!c.equipment.is_empty()).then(|| c.equipment.join("; ")),
-        ),
-        ("Positioning element", c.positioning_element.clone()),
-        (
-            "NDE correction (3.1)",
-            nde(t.evaluated().and_then(|e| e.nde.as_ref()), c.nde.as_ref()),
-        ),
-        (
-            "Feed rate",
-            c.feed_mm_per_min
-                .map(|f| format!("{} {per_min}", fmt_position(f))),
-        ),
-        (
-            "Dwell at each target",
-            c.dwell_s.map(|d| format!("{} s", fmt_position(d))),
-        ),
-        ("Compensation active (3.2)", c.compensation.clone()),
-        ("Positions of the other axes (3.2)", c.other_axes.clone()),
-        ("Tool offset", c.tool_offset.clone()),
-        ("Workpiece offset", c.workpiece_offset.clone()),
-        ("Warm-up (3.3)", c.warm_up.clone()),
-        ("Test cycle", c.cycle.map(|cy| cycle(cy).to_string())),
-        ("Air (start → end)", c.air.as_ref().map(air)),
-        ("Pressure of air or oil", c.fluid_pressure.clone()),
-        ("Approaches per direction", approaches),
-        ("Measurement file read as", t.recognised().map(read_as)),
-        (
-            "Taken from the measurement file",
-            (t.evaluated().map(|e| e.conditions_from_file.join(", "))).filter(|s| !s.is_empty()),
-        ),
-        ("Notes", c.notes.clone()),
-    ])
+    let approaches = t.evaluated().map(|e| &e.evaluation).map(|e| {
+        let (n, targets) = (e.n.to_string(), e.targets.len().to_string());
+        words.args("cond-approaches-value", &[("n", &n), ("targets", &targets)])
+    });
+    Row::labelled(
+        words,
+        [
+            ("cond-instrument", instrument),
+            ("cond-instrument-position", position),
+            (
+                "cond-equipment",
+                (!c.equipment.is_empty()).then(|| c.equipment.join("; ")),
+            ),
+            ("cond-positioning-element", c.positioning_element.clone()),
+            (
+                "cond-nde",
+                nde(t.evaluated().and_then(|e| e.nde.as_ref()), c.nde.as_ref()),
+            ),
+            (
+                "cond-feed",
+                c.feed_mm_per_min
+                    .map(|f| format!("{} {per_min}", super::local(&fmt_position(f)))),
+            ),
+            (
+                "cond-dwell",
+                c.dwell_s
+                    .map(|d| format!("{} s", super::local(&fmt_position(d)))),
+            ),
+            ("cond-compensation", c.compensation.clone()),
+            ("cond-other-axes", c.other_axes.clone()),
+            ("cond-tool-offset", c.tool_offset.clone()),
+            ("cond-workpiece-offset", c.workpiece_offset.clone()),
+            ("cond-warm-up", c.warm_up.clone()),
+            ("cond-cycle", c.cycle.map(|cy| words.get(cycle(cy)))),
+            ("cond-air", c.air.as_ref().map(air)),
+            ("cond-pressure", c.fluid_pressure.clone()),
+            ("cond-approaches", approaches),
+            ("cond-read-as", t.recognised().map(read_as)),
+            (
+                "cond-from-file",
+                (t.evaluated().map(|e| e.conditions_from_file.join(", ")))
+                    .filter(|s| !s.is_empty()),
+            ),
+            ("cond-notes", c.notes.clone()),
+        ],
+    )
     .into_iter()
-    .chain(not_stated(t))
+    .chain(not_stated(t, words))
     .collect()
 }
 
 /// A row "not stated" for each clause 7.1 item neither the campaign nor the file states,
 /// in the clause's order.
-fn not_stated(t: &AxisTest) -> Vec<Row> {
+fn not_stated(t: &AxisTest, words: &Words) -> Vec<Row> {
     let unstated = t.evaluated().map_or(&[][..], |e| &e.unstated);
     (unstated.iter())
         .map(|label| Row {
-            label,
-            value: "not stated".to_string(),
+            label: unstated_key(label).map_or(label.to_string(), |k| words.get(k)),
+            value: words.get("cond-not-stated"),
         })
         .collect()
+}
+
+/// The catalogue key of a clause 7.1 item as `campaign::clause7_1::unstated` words it.
+fn unstated_key(label: &str) -> Option<&'static str> {
+    Some(match label {
+        "Position of the measuring instrument" => "unstated-instrument-position",
+        "Positions of the temperature sensors" => "unstated-sensor-positions",
+        "NDE correction (3.1)" => "cond-nde",
+        "Test date" => "fact-date",
+        "Machine model" => "unstated-model",
+        "Machine type" => "unstated-type",
+        "Axis travel" => "fact-axis-travel",
+        "Test equipment (maker, type, serial numbers)" => "unstated-equipment",
+        "Positioning element" => "cond-positioning-element",
+        "Expansion coefficient of the positioning element" => "unstated-expansion",
+        "Positions of the other axes (3.2)" => "cond-other-axes",
+        "Tool and workpiece offsets" => "unstated-offsets",
+        "Feed rate" => "cond-feed",
+        "Dwell at each target" => "cond-dwell",
+        "Warm-up (3.3)" => "cond-warm-up",
+        "Material temperatures at start and end" => "unstated-material",
+        "Air temperature at start and end" => "unstated-air",
+        "Air pressure and humidity at start and end" => "unstated-pressure",
+        "Compensation active during the test (3.2)" => "unstated-compensation",
+        _ => return None,
+    })
 }
 
 /// The layout the file was read as, then what was assumed or skipped: `wide CSV; 11
@@ -136,9 +188,9 @@ fn nde(applied: Option<&NdeCorrection>, declared: Option<&Nde>) -> Option<String
 
 fn cycle(cycle: Cycle) -> &'static str {
     match cycle {
-        Cycle::Standard => "standard test cycle (ISO 230-2 Fig. 1)",
-        Cycle::Step => "step cycle (ISO 230-2 Annex A)",
-        Cycle::Pilgrim => "pilgrim-step cycle (GOST 27843 Черт. 2)",
+        Cycle::Standard => "cycle-standard",
+        Cycle::Step => "cycle-step",
+        Cycle::Pilgrim => "cycle-pilgrim",
     }
 }
 
@@ -163,7 +215,7 @@ fn air(a: &Air) -> String {
 
 /// A temperature to 0.1 °C, or a dash.
 fn celsius(t: Option<f64>) -> String {
-    t.map_or("–".into(), |t| fmt_fixed(t, 1))
+    t.map_or("–".into(), |t| super::local(&fmt_fixed(t, 1)))
 }
 
 /// A temperature sensor's line of the conditions table.
@@ -177,7 +229,11 @@ pub(super) struct SensorRow<'a> {
 }
 
 pub(super) fn sensor_rows(c: &Conditions) -> Vec<SensorRow<'_>> {
-    let degrees = |t: Option<f64>| t.map_or("–".into(), |t| format!("{} °C", fmt_fixed(t, 1)));
+    let degrees = |t: Option<f64>| {
+        t.map_or("–".into(), |t| {
+            format!("{} °C", super::local(&fmt_fixed(t, 1)))
+        })
+    };
     c.temperature_sensors
         .iter()
         .map(|s: &TemperatureSensor| SensorRow {

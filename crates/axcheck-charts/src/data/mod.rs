@@ -35,8 +35,15 @@ use crate::units::{AxisKind, Direction, fmt_fixed, fmt_position};
 use serde::Serialize;
 
 /// Deviation values in reports: 2 decimals (0.01 µm / 0.01″), with a typographic minus.
+/// In the language of the document being built ([`crate::words::Words::scope`]).
 pub fn num(x: f64) -> String {
-    fmt_fixed(x, 2).replace('-', "−")
+    local(&fmt_fixed(x, 2).replace('-', "−"))
+}
+
+/// A number written with a decimal point, in the form of the document's language
+/// ([`crate::words::numbers`]: a decimal comma in Russian).
+pub(crate) fn local(text: &str) -> String {
+    crate::words::numbers().number(text)
 }
 
 /// [`num`], or a dash for a value that does not apply.
@@ -44,11 +51,20 @@ fn opt(x: Option<f64>) -> String {
     x.map_or("–".into(), num)
 }
 
+/// A unit symbol in the language of the document being built (`мм`, `мкм` in Russian).
+pub(crate) fn unit(symbol: &str) -> String {
+    crate::words::Words::new(crate::words::numbers()).unit(symbol)
+}
+
 /// A position with its unit: `250.5 mm`, `90°`.
 fn pos(kind: AxisKind, x: f64) -> String {
     match kind {
-        AxisKind::Linear => format!("{} mm", fmt_position(x).replace('-', "−")),
-        AxisKind::Rotary => format!("{}°", fmt_position(x).replace('-', "−")),
+        AxisKind::Linear => format!(
+            "{} {}",
+            local(&fmt_position(x).replace('-', "−")),
+            unit("mm")
+        ),
+        AxisKind::Rotary => format!("{}°", local(&fmt_position(x).replace('-', "−"))),
     }
 }
 
@@ -103,7 +119,8 @@ pub struct CampaignHeader<'a> {
     name: &'a str,
     site: &'a str,
     purpose: &'a str,
-    date: &'a str,
+    /// In the form of the document's language ([`crate::words::numbers`]).
+    date: String,
     inspector: &'a str,
     file: &'a str,
     standard: &'static str,
@@ -116,7 +133,7 @@ impl<'a> CampaignHeader<'a> {
             name: &info.name,
             site: info.site.as_deref().unwrap_or_default(),
             purpose: info.purpose.as_deref().unwrap_or_default(),
-            date: info.date.as_deref().unwrap_or_default(),
+            date: crate::words::numbers().date(info.date.as_deref().unwrap_or_default()),
             inspector: info.inspector.as_deref().unwrap_or_default(),
             file: &result.file_name,
             standard: result.standard.title(),
@@ -198,14 +215,19 @@ pub fn axis_chart(e: &Evaluation) -> (AxisChart, Vec<Span>, Vec<Span>) {
             })
             .collect()
     };
+    // The labels in the language of the document being built ([`crate::words::numbers`]).
+    let words = crate::words::Words::new(crate::words::numbers());
     let (pos_unit, dev_unit) = match e.kind {
         AxisKind::Linear => ("mm", "µm"),
         AxisKind::Rotary => ("°", "arcsec"),
     };
     let chart = AxisChart {
         positions: e.targets.iter().map(|t| t.position).collect(),
-        position_label: format!("Target position Pi / {pos_unit}"),
-        deviation_label: format!("Positional deviation / {dev_unit}"),
+        position_label: words.args("chart-target-position", &[("unit", &words.unit(pos_unit))]),
+        deviation_label: words.args(
+            "chart-positional-deviation",
+            &[("unit", &words.unit(dev_unit))],
+        ),
         up: series(Direction::Up),
         down: series(Direction::Down),
         mean: e.targets.iter().map(|t| t.mean).collect(),

@@ -21,11 +21,11 @@ pub struct OtherReport<'a> {
     campaign: CampaignHeader<'a>,
     campaign_short: String,
     /// `Straightness test report`, `Angular deviation test report`, `Squareness test report`.
-    kind: &'static str,
+    kind: String,
     title: String,
     facts: Vec<Row>,
     verdict: super::axis::VerdictText,
-    unit: &'static str,
+    unit: String,
     values: Vec<ValueRow>,
     /// What the method removed or took, a line each (`slope removed: 14.95 µm/m`).
     method: Vec<Row>,
@@ -63,23 +63,32 @@ struct BudgetRow {
 /// The report of `t`, a test with [`AxisTest::other`].
 pub fn other_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> Option<OtherReport<'a>> {
     let o = t.other()?;
-    let unit = if o.unit() == "um" { "µm" } else { "″" };
+    // In the language of the document being built ([`crate::words::numbers`]).
+    let words = crate::words::Words::new(crate::words::numbers());
+    let unit = if o.unit() == "um" {
+        super::unit("µm")
+    } else {
+        "″".to_string()
+    };
     Some(OtherReport {
         campaign: CampaignHeader::new(result),
         campaign_short: super::campaign_short(result),
-        kind: match o.test {
-            TestKind::Straightness => "Straightness test report (ISO 230-1)",
-            TestKind::Angular => "Angular deviation test report (ISO 230-1)",
-            _ => "Squareness test report (ISO 230-1)",
-        },
+        kind: words.get(match o.test {
+            TestKind::Straightness => "other-kind-straightness",
+            TestKind::Angular => "other-kind-angular",
+            _ => "other-kind-squareness",
+        }),
         title: format!(
             "{} — {}",
             short_name(&t.machine.id, super::SHORT_NAME),
             short_name(&t.axis_label(), super::AXIS_NAME)
         ),
         facts: facts(result, t, o),
-        verdict: super::axis::VerdictText::new(t),
-        unit,
+        verdict: super::axis::VerdictText::new(
+            t,
+            &crate::words::Words::new(crate::words::numbers()),
+        ),
+        unit: unit.clone(),
         values: values(o),
         method: method(o),
         budget: (o.uncertainty.budget.lines.iter())
@@ -106,54 +115,63 @@ pub fn other_report<'a>(result: &'a CampaignResult, t: &'a AxisTest) -> Option<O
             TestKind::Straightness => "Mean deviations about the reference line",
             _ => "Mean angular deviations along the axis",
         },
-        certificate: super::certificate::certificate_section(result, &[t], result.report_number(t)),
+        certificate: super::certificate::certificate_section(
+            result,
+            &[t],
+            result.report_number(t),
+            &words,
+        ),
         findings: t.findings(),
         generator: generator(),
     })
 }
 
 fn facts(result: &CampaignResult, t: &AxisTest, o: &OtherTested) -> Vec<Row> {
+    let words = crate::words::Words::new(crate::words::numbers());
     let travel = o.data.as_ref().map(|d| {
         let (a, b) = d.measurement_travel();
-        format!(
-            "{} to {}",
-            pos(AxisKind::Linear, a),
-            pos(AxisKind::Linear, b)
-        )
+        let (from, to) = (pos(AxisKind::Linear, a), pos(AxisKind::Linear, b));
+        words.args("other-from-to", &[("from", &from), ("to", &to)])
     });
     let sources = (o.sources.iter())
         .map(|(symbol, file)| format!("{symbol} ({file})"))
         .collect::<Vec<_>>()
         .join(", ");
     let tolerance = o.tolerance.join("; ");
-    Row::present([
-        ("Machine", Some(t.machine.id.clone())),
-        ("Test", Some(t.axis_label())),
-        ("File", t.file.clone()),
-        (
-            "File SHA-256",
-            super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
-        ),
-        ("From the straightness tests", Some(sources)),
-        ("Measurement travel", travel),
-        (
-            "Runs per direction",
-            o.data.as_ref().map(|d| d.runs().to_string()),
-        ),
-        (
-            "Targets",
-            o.data.as_ref().map(|d| d.target_count().to_string()),
-        ),
-        (
-            "Tolerance",
-            Some(tolerance)
-                .filter(|t| !t.is_empty())
-                .or(Some("none stated".into())),
-        ),
-        ("Decision rule", Some(o.judgement.rule.key().to_string())),
-        ("Date", result.info.date.clone()),
-        ("Inspector", result.info.inspector.clone()),
-    ])
+    Row::labelled(
+        &words,
+        [
+            ("fact-machine", Some(t.machine.id.clone())),
+            ("fact-test", Some(t.axis_label())),
+            ("summary-file", t.file.clone()),
+            (
+                "fact-file-sha",
+                super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
+            ),
+            ("other-from-straightness", Some(sources)),
+            ("fact-measurement-travel", travel),
+            ("other-runs", o.data.as_ref().map(|d| d.runs().to_string())),
+            (
+                "other-targets",
+                o.data.as_ref().map(|d| d.target_count().to_string()),
+            ),
+            (
+                "other-tolerance",
+                Some(tolerance)
+                    .filter(|t| !t.is_empty())
+                    .or(Some(words.get("other-none-stated"))),
+            ),
+            (
+                "html-decision-rule",
+                Some(o.judgement.rule.key().to_string()),
+            ),
+            (
+                "summary-date",
+                result.info.date.as_deref().map(|d| words.date(d)),
+            ),
+            ("fact-inspector", result.info.inspector.clone()),
+        ],
+    )
 }
 
 /// Each value a tolerance may limit, with U, its limit and outcome.
@@ -324,6 +342,7 @@ fn method(o: &OtherTested) -> Vec<Row> {
 /// The chart of a straightness (about its reference line) or an angular test.
 pub fn chart(o: &OtherTested) -> Option<GeometryChart> {
     let data = o.data.as_ref()?;
+    let words = crate::words::Words::new(crate::words::numbers());
     let means = crate::geometry::means;
     let (up, down) = (means(data, Direction::Up), means(data, Direction::Down));
     let positions = data.targets.clone();
@@ -340,8 +359,11 @@ pub fn chart(o: &OtherTested) -> Option<GeometryChart> {
                 up: about(&up),
                 down: about(&down),
                 mean: Some(s.residuals_um.clone()),
-                position_label: "Target position / mm".into(),
-                deviation_label: format!("Deviation about the {} line / µm", line_name(s.line)),
+                position_label: words.args("other-chart-position", &[("unit", &super::unit("mm"))]),
+                deviation_label: words.args(
+                    "other-chart-deviation",
+                    &[("line", line_name(s.line)), ("unit", &super::unit("µm"))],
+                ),
                 texts: ["x̄i↑", "x̄i↓", "mean of x̄i↑ and x̄i↓"],
                 positions,
             })
@@ -350,8 +372,8 @@ pub fn chart(o: &OtherTested) -> Option<GeometryChart> {
             up,
             down,
             mean: None,
-            position_label: "Target position / mm".into(),
-            deviation_label: "Mean angular deviation / arcsec".into(),
+            position_label: words.args("other-chart-position", &[("unit", &super::unit("mm"))]),
+            deviation_label: words.args("other-chart-angular", &[("unit", &super::unit("arcsec"))]),
             texts: ["x̄i↑", "x̄i↓", ""],
             positions,
         }),

@@ -65,7 +65,7 @@ struct SummaryRow {
     e: String,
     r: String,
     b: String,
-    unit: &'static str,
+    unit: String,
     worst: String,
     diagnosis: String,
     verdict: Verdict,
@@ -126,7 +126,8 @@ pub fn summary(result: &CampaignResult) -> Summary<'_> {
         ),
         certificate: {
             let all: Vec<&AxisTest> = result.tests.iter().collect();
-            super::certificate::certificate_section(result, &all, None)
+            let words = crate::words::Words::new(crate::words::numbers());
+            super::certificate::certificate_section(result, &all, None, &words)
         },
         generator: generator(),
     }
@@ -145,9 +146,13 @@ fn row(t: &AxisTest) -> SummaryRow {
         pos(d.kind, ((b - a) * 1e6).round() / 1e6)
     });
     let worst = match t.judgement().and_then(|j| j.worst()) {
-        Some(c) => format!("{} {}", symbol_of(t, c.key), fmt_fixed(c.ratio(), 2)),
+        Some(c) => format!(
+            "{} {}",
+            symbol_of(t, c.key),
+            super::local(&fmt_fixed(c.ratio(), 2))
+        ),
         None if t.no_tolerance() && (e.is_some() || t.other().is_some()) => {
-            "no tolerance".to_string()
+            crate::words::Words::new(crate::words::numbers()).get("summary-no-tolerance")
         }
         None => "–".to_string(),
     };
@@ -170,7 +175,7 @@ fn row(t: &AxisTest) -> SummaryRow {
         e: headline(Role::Systematic),
         r: headline(Role::Repeatability),
         b: headline(Role::Reversal),
-        unit: t.deviation_symbol(),
+        unit: super::unit(t.deviation_symbol()),
         worst,
         diagnosis: t
             .evaluated()

@@ -12,7 +12,7 @@ use serde::Serialize;
 #[derive(Serialize)]
 pub(super) struct UncertaintySection<'a> {
     /// `µm` or `arcsec`.
-    unit: &'static str,
+    unit: String,
     /// The length the budget is for, with its unit.
     length: String,
     rows: Vec<BudgetRow>,
@@ -28,7 +28,7 @@ pub(super) struct UncertaintySection<'a> {
 struct BudgetRow {
     contributor: String,
     value: String,
-    distribution: &'static str,
+    distribution: String,
     u: String,
     sensitivity: String,
     contribution: String,
@@ -41,28 +41,37 @@ fn sig(x: f64) -> String {
         return num(x);
     }
     let decimals = (2 - x.abs().log10().floor() as i32).clamp(0, 6) as usize;
-    fmt_fixed(x, decimals).replace('-', "−")
+    super::local(&fmt_fixed(x, decimals).replace('-', "−"))
 }
 
 /// A budget input's unit as the rest of the report prints it: `um` (the budget's and the
 /// JSON's spelling) as `µm`, also in `um/(m·°C)`.
 fn budget_unit(unit: &str) -> String {
     match unit.strip_prefix("um") {
-        Some(rest) if rest.is_empty() || rest.starts_with('/') => format!("µm{rest}"),
+        Some(rest) if rest.is_empty() || rest.starts_with('/') => {
+            format!("{}{rest}", super::unit("µm"))
+        }
         _ => unit.to_string(),
     }
 }
 
 impl BudgetRow {
     fn new(l: &BudgetLine) -> BudgetRow {
+        let words = crate::words::Words::new(crate::words::numbers());
         BudgetRow {
-            contributor: l.contributor.replace('_', " "),
+            contributor: words.get_or(
+                &format!("contributor-{}", l.contributor.replace('_', "-")),
+                &l.contributor.replace('_', " "),
+            ),
             value: format!("{} {}", sig(l.value), budget_unit(l.unit)),
-            distribution: l.distribution.name(),
+            distribution: words.get_or(
+                &format!("distribution-{}", l.distribution.name()),
+                l.distribution.name(),
+            ),
             u: sig(l.u),
             sensitivity: sig(l.sensitivity),
             contribution: sig(l.contribution),
-            share: format!("{} %", fmt_fixed(l.share * 100.0, 1)),
+            share: format!("{} %", super::local(&fmt_fixed(l.share * 100.0, 1))),
         }
     }
 }
@@ -114,8 +123,12 @@ pub(super) fn uncertainty_section<'a>(
     position_unit: &str,
 ) -> UncertaintySection<'a> {
     UncertaintySection {
-        unit,
-        length: format!("{} {position_unit}", fmt_fixed(u.budget.length, 3)),
+        unit: super::unit(unit),
+        length: format!(
+            "{} {}",
+            super::local(&fmt_fixed(u.budget.length, 3)),
+            super::unit(position_unit)
+        ),
         rows: u.budget.lines.iter().map(BudgetRow::new).collect(),
         has_decision_chart: !decision_bars(t).is_empty(),
         combined: sig(u.budget.combined),

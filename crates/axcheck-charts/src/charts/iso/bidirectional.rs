@@ -38,7 +38,8 @@ pub fn bidirectional(chart: &AxisChart, style: &Style) -> Scene {
                 stroke: Some(MEAN_BIDIR),
                 marker: None,
                 swatch: None,
-                text: "mean X̄i (bidirectional)".to_string(),
+                text: crate::words::Words::new(crate::words::numbers())
+                    .get("chart-mean-bidirectional"),
             });
         }
         let legend_h = KIT.legend_height(&items, w as i32 - 20, h as i32) as u32;

@@ -123,7 +123,8 @@ pub(super) fn direction_legend(chart: &AxisChart, up: bool) -> Vec<LegendItem> {
             stroke: Some(mean),
             marker: Some(mean_mark),
             swatch: None,
-            text: format!("mean X̄i{arrow}"),
+            text: crate::words::Words::new(crate::words::numbers())
+                .args("chart-mean", &[("arrow", &arrow.to_string())]),
         });
     }
     if has_limits(series) {
@@ -139,7 +140,8 @@ pub(super) fn direction_legend(chart: &AxisChart, up: bool) -> Vec<LegendItem> {
             stroke: None,
             marker: Some(read_mark),
             swatch: None,
-            text: format!("readings {arrow}"),
+            text: crate::words::Words::new(crate::words::numbers())
+                .args("chart-readings", &[("arrow", &arrow.to_string())]),
         });
     }
     items

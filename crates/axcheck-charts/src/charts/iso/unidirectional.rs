@@ -46,14 +46,27 @@ pub fn unidirectional(
         let plot_h = top_h.saturating_sub(heading + X_TICK_H + 6);
         let y_label_w = KIT.y_tick_width(y, plot_h);
 
+        // The panels' titles in the language of the document being drawn.
+        let words = crate::words::Words::new(crate::words::numbers());
+        let (approach_up, approach_down) = (
+            words.args("chart-approach", &[("arrow", "↑")]),
+            words.args("chart-approach", &[("arrow", "↓")]),
+        );
         let panels = [
-            (&upper_area, &chart.up, up_spans, true, "Approach ↑", None),
+            (
+                &upper_area,
+                &chart.up,
+                up_spans,
+                true,
+                approach_up.as_str(),
+                None,
+            ),
             (
                 &lower_area,
                 &chart.down,
                 down_spans,
                 false,
-                "Approach ↓",
+                approach_down.as_str(),
                 Some(chart.position_label.as_str()).filter(|d| !d.trim().is_empty()),
             ),
         ];
