@@ -131,8 +131,8 @@ fn every_pdf_of_the_example_campaign() {
 
     let (pages, text) = read_pdf(&out.join("summary.pdf"));
     assert_eq!(
-        pages, 3,
-        "summary: table, then chart and lists, then the inputs"
+        pages, 4,
+        "summary: table, then chart and lists, then the inputs (41 files, onto a fourth page)"
     );
     let text = squash(&text);
     // Issue 47: the inputs with the start of their SHA-256, and the version.
