@@ -430,3 +430,35 @@ as-found-heading = As found and as left (values in { $unit })
 as-found-intro = The axis was adjusted between two measurements: as found ({ $found }), verdict { $found_verdict }; as left ({ $left }), verdict { $left_verdict }. Both are judged against the same limits with the same decision rule.
 col-as-found = As found
 col-as-left = As left
+
+## Conditions' values (conditions.rs)
+unit-mm-per-min = mm/min
+unit-deg-per-min = °/min
+unit-kpa = kPa
+unit-rh = { $value } % RH
+nde-alpha = ; α = { $alpha } µm/(m·°C)
+nde-applied = applied by axcheck to 20 °C: α = { $alpha } µm/(m·°C), mean temperature { $mean } °C from { $source }; largest correction { $max } µm
+nde-in-data = yes, in the data (by the instrument){ $alpha }
+nde-not-applied = not applied (no temperature given){ $alpha }
+sensor-kind-material = material
+sensor-kind-air = air
+
+## What a test was judged by (axis.rs spec_words)
+spec-no-tolerance = no tolerance applied
+spec-plus-axis = { $spec } + axis tolerances
+spec-axis-tolerances = axis tolerances
+spec-example = { $spec } — example limits, not from a standard
+
+## A verdict's uncertainty, large (axis.rs large_uncertainty)
+large-u = { $symbol } = { $value } ± { $u } { $unit } against its limit { $limit } { $unit }: { $why }
+large-u-why-both = U over half its limit and over the value
+large-u-why-half = U over half its limit
+large-u-why-value = U over the value
+
+## An instrument with its serial number; the purposes of a test (ISO 230-2 clause 1)
+instrument-serial = { $name }, s/n { $serial }
+purpose-periodic = periodic
+purpose-acceptance = acceptance
+purpose-comparison = comparison
+purpose-type = type
+purpose-compensation = compensation

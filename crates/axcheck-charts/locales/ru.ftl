@@ -437,3 +437,35 @@ as-found-heading = До и после регулировки (значения �
 as-found-intro = Ось отрегулирована между двумя измерениями: до регулировки ({ $found }) — { $found_verdict }; после регулировки ({ $left }) — { $left_verdict }. Оба результата оценены по одним и тем же допускам и одному правилу принятия решения.
 col-as-found = До регулировки
 col-as-left = После регулировки
+
+## Conditions' values (conditions.rs)
+unit-mm-per-min = мм/мин
+unit-deg-per-min = °/мин
+unit-kpa = кПа
+unit-rh = { $value } % отн. влажн.
+nde-alpha = ; α = { $alpha } мкм/(м·°C)
+nde-applied = приведено axcheck к 20 °C: α = { $alpha } мкм/(м·°C), средняя температура { $mean } °C по { $source }; наибольшая поправка { $max } мкм
+nde-in-data = да, в данных (средством измерений){ $alpha }
+nde-not-applied = не введена (температура не задана){ $alpha }
+sensor-kind-material = материал
+sensor-kind-air = воздух
+
+## What a test was judged by (axis.rs spec_words)
+spec-no-tolerance = допуски не заданы
+spec-plus-axis = { $spec } + допуски оси
+spec-axis-tolerances = допуски оси
+spec-example = { $spec } — примерные допуски, не из стандарта
+
+## A verdict's uncertainty, large (axis.rs large_uncertainty)
+large-u = { $symbol } = { $value } ± { $u } { $unit } при допуске { $limit } { $unit }: { $why }
+large-u-why-both = U больше половины допуска и больше значения
+large-u-why-half = U больше половины допуска
+large-u-why-value = U больше значения
+
+## An instrument with its serial number; the purposes of a test (ISO 230-2 clause 1)
+instrument-serial = { $name }, зав. № { $serial }
+purpose-periodic = периодическая
+purpose-acceptance = приёмочная
+purpose-comparison = сравнительная
+purpose-type = типовая
+purpose-compensation = для коррекции

@@ -431,3 +431,35 @@ as-found-heading = 调整前与调整后（单位：{ $unit }）
 as-found-intro = 两次测量之间对轴线作了调整：调整前（{ $found }），判定 { $found_verdict }；调整后（{ $left }），判定 { $left_verdict }。两者按相同的允差和相同的判定规则判定。
 col-as-found = 调整前
 col-as-left = 调整后
+
+## Conditions' values (conditions.rs)
+unit-mm-per-min = mm/min
+unit-deg-per-min = °/min
+unit-kpa = kPa
+unit-rh = 相对湿度 { $value } %
+nde-alpha = ；α = { $alpha } µm/(m·°C)
+nde-applied = 由 axcheck 修正到 20 °C：α = { $alpha } µm/(m·°C)，平均温度 { $mean } °C（{ $source }）；最大修正量 { $max } µm
+nde-in-data = 已修正，数据中由测量仪器修正{ $alpha }
+nde-not-applied = 未修正（未给出温度）{ $alpha }
+sensor-kind-material = 材料
+sensor-kind-air = 空气
+
+## What a test was judged by (axis.rs spec_words)
+spec-no-tolerance = 未采用允差
+spec-plus-axis = { $spec } + 轴线允差
+spec-axis-tolerances = 轴线允差
+spec-example = { $spec } — 示例允差，非出自标准
+
+## A verdict's uncertainty, large (axis.rs large_uncertainty)
+large-u = { $symbol } = { $value } ± { $u } { $unit }，允差 { $limit } { $unit }：{ $why }
+large-u-why-both = U 超过允差的一半且超过测得值
+large-u-why-half = U 超过允差的一半
+large-u-why-value = U 超过测得值
+
+## An instrument with its serial number; the purposes of a test (ISO 230-2 clause 1)
+instrument-serial = { $name }，编号 { $serial }
+purpose-periodic = 定期
+purpose-acceptance = 验收
+purpose-comparison = 比对
+purpose-type = 型式
+purpose-compensation = 补偿

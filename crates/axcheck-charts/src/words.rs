@@ -302,6 +302,10 @@ mod tests {
         "unit-mm",
         "unit-s",
         "html-u-unit",
+        // SI symbols that Chinese writes as English does.
+        "unit-mm-per-min",
+        "unit-deg-per-min",
+        "unit-kpa",
     ];
 
     /// No English left in Chinese or Russian: a message equal to its English text is one

@@ -228,7 +228,7 @@ fn facts(result: &CampaignResult, t: &AxisTest, words: &Words) -> Vec<Row> {
             ("fact-standard", t.standard().map(|s| s.title().to_string())),
             (
                 "fact-spec",
-                t.judgement().map(|j| j.limits.describe_labelled()),
+                t.judgement().map(|j| spec_words(&j.limits, words)),
             ),
             (
                 "fact-date",
@@ -244,6 +244,44 @@ fn facts(result: &CampaignResult, t: &AxisTest, words: &Words) -> Vec<Row> {
                     .clone()
                     .or_else(|| file(|i| &i.operator)),
             ),
+        ],
+    )
+}
+
+/// What the test was judged by, as [`crate::judge::Limits::describe_labelled`] says it,
+/// in `words`' language (the spec's own name and range as the spec file writes them).
+pub(super) fn spec_words(limits: &crate::judge::Limits, words: &Words) -> String {
+    use crate::judge::LimitSource;
+    let axis = limits.values.values().any(|(_, s)| *s == LimitSource::Axis);
+    let what = match (&limits.spec, limits.is_empty()) {
+        (_, true) => words.get("spec-no-tolerance"),
+        (Some(spec), false) if axis => words.args("spec-plus-axis", &[("spec", spec)]),
+        (Some(spec), false) => spec.clone(),
+        (None, false) => words.get("spec-axis-tolerances"),
+    };
+    match limits.example {
+        true => words.args("spec-example", &[("spec", &what)]),
+        false => what,
+    }
+}
+
+/// `M = 0.57 ± 0.80 µm against its limit 10.00 µm: U over the value` in `words`' language
+/// ([`crate::judge::LargeUncertainty::text`]).
+fn large_uncertainty(t: &AxisTest, l: &crate::judge::LargeUncertainty, words: &Words) -> String {
+    let why = match (l.over_half_limit(), l.over_value) {
+        (true, true) => "large-u-why-both",
+        (true, false) => "large-u-why-half",
+        _ => "large-u-why-value",
+    };
+    words.args(
+        "large-u",
+        &[
+            ("symbol", &symbol_of(t, l.key)),
+            ("value", &num(l.value.abs())),
+            ("u", &num(l.expanded)),
+            ("limit", &num(l.limit)),
+            ("unit", &words.unit(t.deviation_symbol())),
+            ("why", &words.get(why)),
         ],
     )
 }
@@ -298,9 +336,8 @@ impl VerdictText {
                 words.args("verdict-detail-inconclusive", &[("zone", &zone.join("; "))])
             }
         };
-        let unit = t.deviation_symbol();
         let large: Vec<String> = (t.large_uncertainty().iter())
-            .map(|l| super::local(&l.text(2, unit)))
+            .map(|l| large_uncertainty(t, l, words))
             .collect();
         let detail = match large.is_empty() {
             true => detail,

@@ -50,11 +50,12 @@ pub(super) fn condition_rows(
     t: &AxisTest,
     words: &Words,
 ) -> Vec<Row> {
-    let (instrument, position) = c.instrument.as_ref().map_or((None, None), instrument);
-    let per_min = match kind {
-        AxisKind::Linear => "mm/min",
-        AxisKind::Rotary => "°/min",
-    };
+    let (instrument, position) =
+        (c.instrument.as_ref()).map_or((None, None), |i| instrument(i, words));
+    let per_min = words.get(match kind {
+        AxisKind::Linear => "unit-mm-per-min",
+        AxisKind::Rotary => "unit-deg-per-min",
+    });
     let approaches = t.evaluated().map(|e| &e.evaluation).map(|e| {
         let (n, targets) = (e.n.to_string(), e.targets.len().to_string());
         words.args("cond-approaches-value", &[("n", &n), ("targets", &targets)])
@@ -71,7 +72,11 @@ pub(super) fn condition_rows(
             ("cond-positioning-element", c.positioning_element.clone()),
             (
                 "cond-nde",
-                nde(t.evaluated().and_then(|e| e.nde.as_ref()), c.nde.as_ref()),
+                nde(
+                    t.evaluated().and_then(|e| e.nde.as_ref()),
+                    c.nde.as_ref(),
+                    words,
+                ),
             ),
             (
                 "cond-feed",
@@ -81,7 +86,7 @@ pub(super) fn condition_rows(
             (
                 "cond-dwell",
                 c.dwell_s
-                    .map(|d| format!("{} s", super::local(&fmt_position(d)))),
+                    .map(|d| format!("{} {}", super::local(&fmt_position(d)), words.unit("s"))),
             ),
             ("cond-compensation", c.compensation.clone()),
             ("cond-other-axes", c.other_axes.clone()),
@@ -89,7 +94,7 @@ pub(super) fn condition_rows(
             ("cond-workpiece-offset", c.workpiece_offset.clone()),
             ("cond-warm-up", c.warm_up.clone()),
             ("cond-cycle", c.cycle.map(|cy| words.get(cycle(cy)))),
-            ("cond-air", c.air.as_ref().map(air)),
+            ("cond-air", c.air.as_ref().map(|a| air(a, words))),
             ("cond-pressure", c.fluid_pressure.clone()),
             ("cond-approaches", approaches),
             ("cond-read-as", t.recognised().map(read_as)),
@@ -155,33 +160,34 @@ fn read_as(r: &crate::measurement::Recognised) -> String {
 
 /// The instrument's name with its serial number, and where it stood. An instrument block
 /// always gives a name line, even when empty (then it is left out as blank).
-fn instrument(i: &InstrumentEntry) -> (Option<String>, Option<String>) {
+fn instrument(i: &InstrumentEntry, words: &Words) -> (Option<String>, Option<String>) {
     let mut name = i.name.clone().unwrap_or_default();
     if let Some(s) = &i.serial {
-        name = format!("{name}, s/n {s}");
+        name = words.args("instrument-serial", &[("name", &name), ("serial", s)]);
     }
     (Some(name), i.position.clone())
 }
 
 /// Whether and how the deviations were corrected to 20 °C (clause 3.1).
-fn nde(applied: Option<&NdeCorrection>, declared: Option<&Nde>) -> Option<String> {
+fn nde(applied: Option<&NdeCorrection>, declared: Option<&Nde>, words: &Words) -> Option<String> {
+    let number = |x: f64| super::local(&fmt_position(x));
     let alpha = |n: &Nde| {
-        n.coefficient_um_per_m_c.map_or(String::new(), |a| {
-            format!("; α = {} µm/(m·°C)", fmt_position(a))
+        (n.coefficient_um_per_m_c).map_or(String::new(), |a| {
+            words.args("nde-alpha", &[("alpha", &number(a))])
         })
     };
     match (applied, declared) {
-        (Some(n), _) => Some(format!(
-            "applied by axcheck to 20 °C: α = {} µm/(m·°C), mean temperature {} °C from {}; largest correction {} µm",
-            fmt_position(n.coefficient_um_per_m_c),
-            fmt_fixed(n.mean_temperature_c, 2),
-            n.source,
-            fmt_fixed(n.max_correction_um, 2)
+        (Some(n), _) => Some(words.args(
+            "nde-applied",
+            &[
+                ("alpha", &number(n.coefficient_um_per_m_c)),
+                ("mean", &super::local(&fmt_fixed(n.mean_temperature_c, 2))),
+                ("source", &n.source),
+                ("max", &super::local(&fmt_fixed(n.max_correction_um, 2))),
+            ],
         )),
-        (None, Some(n)) if n.corrected => {
-            Some(format!("yes, in the data (by the instrument){}", alpha(n)))
-        }
-        (None, Some(n)) => Some(format!("not applied (no temperature given){}", alpha(n))),
+        (None, Some(n)) if n.corrected => Some(words.args("nde-in-data", &[("alpha", &alpha(n))])),
+        (None, Some(n)) => Some(words.args("nde-not-applied", &[("alpha", &alpha(n))])),
         (None, None) => None,
     }
 }
@@ -195,7 +201,7 @@ fn cycle(cycle: Cycle) -> &'static str {
 }
 
 /// Air temperature from start to end, pressure and humidity.
-fn air(a: &Air) -> String {
+fn air(a: &Air, words: &Words) -> String {
     let mut parts = Vec::new();
     if a.temperature_start_c.is_some() || a.temperature_end_c.is_some() {
         parts.push(format!(
@@ -205,10 +211,12 @@ fn air(a: &Air) -> String {
         ));
     }
     if let Some(p) = a.pressure_kpa {
-        parts.push(format!("{} kPa", fmt_position(p)));
+        let p = super::local(&fmt_position(p));
+        parts.push(format!("{p} {}", words.get("unit-kpa")));
     }
     if let Some(h) = a.humidity_pct {
-        parts.push(format!("{} % RH", fmt_position(h)));
+        let h = super::local(&fmt_position(h));
+        parts.push(words.args("unit-rh", &[("value", &h)]));
     }
     parts.join(", ")
 }

@@ -286,6 +286,11 @@ pub struct LargeUncertainty {
 }
 
 impl LargeUncertainty {
+    /// Whether U is over half the limit.
+    pub fn over_half_limit(&self) -> bool {
+        self.over_half_limit
+    }
+
     /// `A = 11.55 ± 45.58 µm against its limit 20.00 µm: U over half its limit and over
     /// the value`; `unit` may be empty.
     pub fn text(&self, decimals: usize, unit: &str) -> String {
