@@ -190,6 +190,12 @@ impl Words {
         self.get(key)
     }
 
+    /// A standard's title as this language writes it (`ГОСТ 27843-88` in Russian).
+    pub fn standard(&self, standard: StandardId) -> String {
+        let key = format!("standard-{}", family_key(standard));
+        self.get_or(&key, standard.title())
+    }
+
     /// The word for a verdict key (`pass`, `fail`, …) in this language.
     pub fn verdict(&self, key: &str) -> String {
         self.get(&format!("verdict-{}", key.replace('_', "-")))
@@ -204,6 +210,17 @@ pub fn numbers() -> Lang {
 
 /// The catalogue family of a standard's parameter names: ISO 230-2 and GB/T 17421.2 share
 /// their terms.
+/// The catalogue's name of a standard's title.
+fn family_key(standard: StandardId) -> &'static str {
+    match standard {
+        StandardId::Iso230_2 => "iso230-2",
+        StandardId::Gbt17421_2 => "gbt17421-2",
+        StandardId::Gost27843 => "gost27843",
+        StandardId::Vdi3441 => "vdi3441",
+        StandardId::Nmtba => "nmtba",
+    }
+}
+
 fn family(standard: StandardId) -> &'static str {
     match standard {
         StandardId::Iso230_2 | StandardId::Gbt17421_2 => "iso",
@@ -306,6 +323,8 @@ mod tests {
         "unit-mm-per-min",
         "unit-deg-per-min",
         "unit-kpa",
+        // Titles of standards Chinese writes in Latin letters.
+        "standard-gost27843",
     ];
 
     /// No English left in Chinese or Russian: a message equal to its English text is one

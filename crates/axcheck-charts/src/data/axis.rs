@@ -225,7 +225,7 @@ fn facts(result: &CampaignResult, t: &AxisTest, words: &Words) -> Vec<Row> {
                 super::inputs::short_sha256(&result.inputs, t.file.as_deref()),
             ),
             ("fact-test", test),
-            ("fact-standard", t.standard().map(|s| s.title().to_string())),
+            ("fact-standard", t.standard().map(|s| words.standard(s))),
             (
                 "fact-spec",
                 t.judgement().map(|j| spec_words(&j.limits, words)),

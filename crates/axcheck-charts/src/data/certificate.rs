@@ -101,7 +101,7 @@ pub fn certificate_section<'a>(
 fn method_of(t: &AxisTest, words: &Words) -> String {
     use crate::geometry::TestKind;
     match (t.test_kind(), t.positioning_standard()) {
-        (TestKind::Positioning, Some(s)) => s.title().to_string(),
+        (TestKind::Positioning, Some(s)) => words.standard(s),
         (TestKind::Positioning, None) => String::new(),
         (TestKind::Straightness, _) => words.get("method-straightness"),
         (TestKind::Angular, _) => words.get("method-angular"),

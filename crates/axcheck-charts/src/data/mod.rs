@@ -123,7 +123,7 @@ pub struct CampaignHeader<'a> {
     date: String,
     inspector: &'a str,
     file: &'a str,
-    standard: &'static str,
+    standard: String,
 }
 
 impl<'a> CampaignHeader<'a> {
@@ -136,7 +136,7 @@ impl<'a> CampaignHeader<'a> {
             date: crate::words::numbers().date(info.date.as_deref().unwrap_or_default()),
             inspector: info.inspector.as_deref().unwrap_or_default(),
             file: &result.file_name,
-            standard: result.standard.title(),
+            standard: crate::words::Words::new(crate::words::numbers()).standard(result.standard),
         }
     }
 }
