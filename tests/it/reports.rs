@@ -186,14 +186,24 @@ fn every_pdf_of_the_example_campaign() {
         );
         let text = squash(&text);
         assert!(text.contains(&squash(machine)), "{machine} {name}");
+        // The certified machines report in their standard's language (issue 47).
+        let (axis_word, diagnosis) = match axis["machine_info"]["report"]["lang"].as_str() {
+            Some("zh") => ("轴线", "模型检查和诊断"),
+            Some("ru") => ("ось", "Проверкамоделиидиагностика"),
+            _ => ("axis", "Modelcheckanddiagnosis"),
+        };
         assert!(
-            text.contains(&squash(&format!("axis {name}"))),
+            text.contains(&squash(&format!("{axis_word} {name}"))),
             "{machine} {name}"
         );
         assert!(
-            text.contains("Modelcheckanddiagnosis"),
+            text.contains(diagnosis),
             "{machine} {name}: diagnosis section"
         );
+        if axis_word != "axis" {
+            // Their words and numbers are checked by tests/it/languages.rs and certificate.rs.
+            continue;
+        }
         // Issue 46: a test carried to its tool point says so, with its parameters there.
         if let Some(p) = axis.get("tool_point") {
             assert!(text.contains("Atthetoolpoint(Abbe)"), "{machine} {name}");
