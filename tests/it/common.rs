@@ -65,6 +65,18 @@ pub fn copy_data(dir: &std::path::Path, name: &str) {
     std::fs::copy(data_path(name), dir.join("data").join(name)).unwrap();
 }
 
+/// The text of `pdf` as `pdftotext -layout` gives it (pages end in form feeds).
+pub fn pdftotext_layout(pdf: &std::path::Path) -> String {
+    let out = std::process::Command::new("pdftotext")
+        .arg("-layout")
+        .arg(pdf)
+        .arg("-")
+        .output()
+        .expect("pdftotext runs (.ci/test installs poppler-utils)");
+    assert!(out.status.success(), "pdftotext {}", pdf.display());
+    String::from_utf8(out.stdout).unwrap()
+}
+
 /// The text of a PDF's pages, in order.
 pub fn pdf_text(path: &std::path::Path) -> String {
     let doc = lopdf::Document::load(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

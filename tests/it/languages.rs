@@ -42,14 +42,7 @@ fn run(dir: &Path, file: &Path, extra: &[&str]) -> PathBuf {
 
 /// The text of `pdf` as `pdftotext -layout` gives it.
 fn text(pdf: &Path) -> String {
-    let out = std::process::Command::new("pdftotext")
-        .arg("-layout")
-        .arg(pdf)
-        .arg("-")
-        .output()
-        .expect("pdftotext runs (.ci/test installs poppler-utils)");
-    assert!(out.status.success(), "pdftotext {}", pdf.display());
-    String::from_utf8(out.stdout).unwrap()
+    crate::common::pdftotext_layout(pdf)
 }
 
 /// The line of the results table that starts with `symbol`, with the term after it.

@@ -466,3 +466,6 @@ purpose-compensation = compensation
 ## Standards' titles in this language (Words::standard; the others as axcheck writes them)
 standard-gost27843 = GOST 27843-88
 standard-gbt17421-2 = GB/T 17421.2-2000 (eqv ISO 230-2:1997, amendment No. 1)
+
+## summary.html's count of the rows shown (page.js)
+html-shown-count = { $shown } of { $total } tests

@@ -473,3 +473,6 @@ purpose-compensation = для коррекции
 ## Standards' titles in this language (Words::standard; the others as axcheck writes them)
 standard-gost27843 = ГОСТ 27843-88
 standard-gbt17421-2 = GB/T 17421.2-2000 (эквивалентен ISO 230-2:1997, с изменением № 1)
+
+## summary.html's count of the rows shown (page.js)
+html-shown-count = показано { $shown } из { $total } проверок

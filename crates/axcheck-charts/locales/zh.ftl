@@ -467,3 +467,6 @@ purpose-compensation = 补偿
 ## Standards' titles in this language (Words::standard; the others as axcheck writes them)
 standard-gost27843 = GOST 27843-88
 standard-gbt17421-2 = GB/T 17421.2-2000（等效采用 ISO 230-2:1997，含第 1 号修改单）
+
+## summary.html's count of the rows shown (page.js)
+html-shown-count = 显示 { $shown } / { $total } 项检验

@@ -88,7 +88,10 @@ const PAGE_KEYS: &[&str] = &[
 fn page_words(words: &Words) -> std::collections::BTreeMap<&'static str, &'static str> {
     (words.all().iter())
         .filter(|(k, _)| {
-            k.starts_with("html-") || k.starts_with("verdict-") || PAGE_KEYS.contains(&k.as_str())
+            k.starts_with("html-")
+                || k.starts_with("verdict-")
+                || k.starts_with("purpose-")
+                || PAGE_KEYS.contains(&k.as_str())
         })
         .map(|(k, v)| (k.as_str(), v.as_str()))
         .collect()

@@ -99,7 +99,7 @@
   document.getElementById("counts").setAttribute("aria-label", tr("html-counts-label"));
   document.getElementById("title").textContent = c.name;
   const dl = document.getElementById("campaign");
-  for (const [label, text] of [[tr("summary-site"), c.site], [tr("summary-purpose"), c.purpose], [tr("summary-date"), c.date],
+  for (const [label, text] of [[tr("summary-site"), c.site], [tr("summary-purpose"), T["purpose-" + c.purpose] || c.purpose], [tr("summary-date"), c.date],
     [tr("fact-inspector"), c.inspector], [tr("fact-standard"), c.standard], [tr("summary-campaign-file"), c.file]]) {
     if (text) dl.append(el("div", {}, el("dt", {}, label), el("dd", {}, text)));
   }
@@ -182,7 +182,7 @@
     const order = state.order || rows.map((_, k) => k);
     state.shown = order.filter((k) =>
       (!state.verdict || rows[k].verdict === state.verdict) && terms.every((t) => haystack[k].includes(t)));
-    document.getElementById("shown-count").textContent = `${state.shown.length} of ${rows.length} tests`;
+    document.getElementById("shown-count").textContent = tr("html-shown-count", { shown: state.shown.length, total: rows.length });
     state.active = Math.min(Math.max(state.active, 0), state.shown.length - 1);
     wrap.scrollTop = Math.min(wrap.scrollTop, Math.max(0, state.shown.length * ROW_PX - wrap.clientHeight));
     render();
