@@ -469,3 +469,21 @@ standard-gbt17421-2 = GB/T 17421.2-2000 (eqv ISO 230-2:1997, amendment No. 1)
 
 ## summary.html's count of the rows shown (page.js)
 html-shown-count = { $shown } of { $total } tests
+
+## The diagnosis's residual charts and periodogram (data/diagnosis.rs, charts/diagnosis)
+diag-x-time = Time since the start of the test / min
+diag-x-order = Reading in the order of the test cycle
+diag-y-residual = Residual of the base model / { $unit }
+diag-period = Period / { $unit }
+diag-residual-up = residual ↑
+diag-residual-down = residual ↓
+diag-band = base model ±2σ (±{ $value })
+
+## The model check's statistics (data/diagnosis.rs; diagnose::checks names them)
+check-run-mean-spread = run mean spread
+check-lag1-autocorrelation = lag1 autocorrelation
+check-max-studentized-residual = max studentized residual
+check-reversal-range = reversal range
+check-scatter-ratio-end-to-start = scatter ratio end to start
+check-periodogram-max-f = periodogram max F
+check-trend-lack-of-fit-rms = trend lack of fit rms

@@ -476,3 +476,21 @@ standard-gbt17421-2 = GB/T 17421.2-2000 (эквивалентен ISO 230-2:1997
 
 ## summary.html's count of the rows shown (page.js)
 html-shown-count = показано { $shown } из { $total } проверок
+
+## The diagnosis's residual charts and periodogram (data/diagnosis.rs, charts/diagnosis)
+diag-x-time = Время от начала проверки / мин
+diag-x-order = Отсчёты в порядке цикла проверки
+diag-y-residual = Остаток базовой модели / { $unit }
+diag-period = Период / { $unit }
+diag-residual-up = остаток ↑
+diag-residual-down = остаток ↓
+diag-band = базовая модель ±2σ (±{ $value })
+
+## The model check's statistics (data/diagnosis.rs; diagnose::checks names them)
+check-run-mean-spread = разброс средних по прогонам
+check-lag1-autocorrelation = автокорреляция с лагом 1
+check-max-studentized-residual = наибольший стьюдентизированный остаток
+check-reversal-range = размах зоны нечувствительности
+check-scatter-ratio-end-to-start = отношение рассеяния конец/начало
+check-periodogram-max-f = наибольшее F периодограммы
+check-trend-lack-of-fit-rms = СКО неадекватности тренда

@@ -470,3 +470,21 @@ standard-gbt17421-2 = GB/T 17421.2-2000（等效采用 ISO 230-2:1997，含第 1
 
 ## summary.html's count of the rows shown (page.js)
 html-shown-count = 显示 { $shown } / { $total } 项检验
+
+## The diagnosis's residual charts and periodogram (data/diagnosis.rs, charts/diagnosis)
+diag-x-time = 自检验开始的时间 / min
+diag-x-order = 按检验循环顺序的读数
+diag-y-residual = 残差 / { $unit }
+diag-period = 周期 / { $unit }
+diag-residual-up = 残差 ↑
+diag-residual-down = 残差 ↓
+diag-band = 基本模型 ±2σ（±{ $value }）
+
+## The model check's statistics (data/diagnosis.rs; diagnose::checks names them)
+check-run-mean-spread = 各次运行平均值的离散
+check-lag1-autocorrelation = 滞后 1 自相关
+check-max-studentized-residual = 最大学生化残差
+check-reversal-range = 反向差值极差
+check-scatter-ratio-end-to-start = 终端与始端散布之比
+check-periodogram-max-f = 周期图最大 F 值
+check-trend-lack-of-fit-rms = 趋势失拟均方根

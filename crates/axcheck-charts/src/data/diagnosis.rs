@@ -241,15 +241,20 @@ pub fn diagnosis_charts(
 ) {
     use crate::charts::check::CheckBar;
     use crate::charts::diagnosis::{Periodogram, ResidualsChart};
+    // The charts' words in the language of the document being built.
+    let words = crate::words::Words::new(crate::words::numbers());
     let (pos_unit, dev_unit) = match d.kind {
-        AxisKind::Linear => ("mm", "µm"),
-        AxisKind::Rotary => ("°", "arcsec"),
+        AxisKind::Linear => (words.unit("mm"), words.unit("µm")),
+        AxisKind::Rotary => ("°".to_string(), words.unit("arcsec")),
     };
     let checks = d
         .checks
         .iter()
         .map(|c| CheckBar {
-            label: c.statistic.replace('_', " "),
+            label: words.get_or(
+                &format!("check-{}", c.statistic.replace('_', "-")),
+                &c.statistic.replace('_', " "),
+            ),
             measured: c.measured,
             low: c.simulated_low,
             high: c.simulated_high,
@@ -284,12 +289,8 @@ pub fn diagnosis_charts(
             .iter()
             .map(|r| r.direction == crate::units::Direction::Up)
             .collect(),
-        x_label: if timed {
-            "Time since the start of the test / min".into()
-        } else {
-            "Reading in the order of the test cycle".into()
-        },
-        y_label: format!("Residual of the base model / {dev_unit}"),
+        x_label: words.get(if timed { "diag-x-time" } else { "diag-x-order" }),
+        y_label: words.args("diag-y-residual", &[("unit", &dev_unit)]),
         band: Some(2.0 * sigma),
         fit: None,
         time: d
@@ -300,7 +301,7 @@ pub fn diagnosis_charts(
     };
     let along = ResidualsChart {
         x: readings.iter().map(|r| r.position).collect(),
-        x_label: format!("Target position Pi / {pos_unit}"),
+        x_label: words.args("chart-target-position", &[("unit", &pos_unit)]),
         ..ResidualsChart {
             x: Vec::new(),
             y: in_time.y.clone(),
@@ -319,7 +320,7 @@ pub fn diagnosis_charts(
     let periodogram = Periodogram {
         period: d.residuals.periodogram.iter().map(|p| p.period).collect(),
         power: d.residuals.periodogram.iter().map(|p| p.power).collect(),
-        period_label: format!("Period / {pos_unit}"),
+        period_label: words.args("diag-period", &[("unit", &pos_unit)]),
         threshold: None,
         marked,
         unresolved_below: None,

@@ -138,28 +138,30 @@ fn residual_legend(
     has_fit: bool,
     y_label: &str,
 ) -> Vec<LegendItem> {
+    let words = crate::words::Words::new(crate::words::numbers());
     let mut items = Vec::new();
-    for (up, mark, text) in [
-        (true, MARK_UP, "residual ↑"),
-        (false, MARK_DOWN, "residual ↓"),
+    for (up, mark, key) in [
+        (true, MARK_UP, "diag-residual-up"),
+        (false, MARK_DOWN, "diag-residual-down"),
     ] {
+        let text = words.get(key);
         if points.iter().any(|p| p.2 == up) {
             items.push(LegendItem {
                 stroke: None,
                 marker: Some(mark),
                 swatch: None,
-                text: text.to_string(),
+                text,
             });
         }
     }
     if let Some(b) = band {
         let unit = unit_of(y_label);
         let value = fmt_short(b);
-        let text = if unit.is_empty() {
-            format!("base model ±2σ (±{value})")
-        } else {
-            format!("base model ±2σ (±{value} {unit})")
+        let value = match unit.is_empty() {
+            true => value,
+            false => format!("{value} {unit}"),
         };
+        let text = words.args("diag-band", &[("value", &value)]);
         items.push(LegendItem {
             stroke: None,
             marker: None,
