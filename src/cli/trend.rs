@@ -88,14 +88,8 @@ fn write_outputs(out: &Path, pairs: &[(&Series, &Trend)], request: &TrendArgs) -
         .trends(&history, pairs, request.horizon_years, "trends.csv")
         .context("typesetting trends.pdf")?;
     let files = [
-        OutputFile {
-            path: PathBuf::from("trends.csv"),
-            bytes: csv.into_bytes(),
-        },
-        OutputFile {
-            path: PathBuf::from("trends.pdf"),
-            bytes: pdf.pdf,
-        },
+        OutputFile::new("trends.csv", csv.into_bytes()),
+        OutputFile::new("trends.pdf", pdf.pdf),
     ];
     axcheck::export::write_into(out, &files)?;
     Ok(())

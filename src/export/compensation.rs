@@ -42,7 +42,7 @@ fn cross_extension(t: &crate::results::AxisTest) -> Option<&'static str> {
 
 /// Each file of a test's cross table beside `first`, written again under that name (the
 /// files of a format may name each other: HEIDENHAIN's `.CMA` enters its `.COM`).
-fn cross_files(t: &crate::results::AxisTest, first: &Path) -> Vec<OutputFile> {
+fn cross_files(t: &crate::results::AxisTest, first: &Path) -> Vec<OutputFile<'static>> {
     let Some(c) = cross_table(t) else {
         return Vec::new();
     };
@@ -53,10 +53,7 @@ fn cross_files(t: &crate::results::AxisTest, first: &Path) -> Vec<OutputFile> {
         .unwrap_or_else(|| c.parts.clone());
     parts
         .into_iter()
-        .map(|p| OutputFile {
-            path: first.with_extension(p.extension),
-            bytes: p.text.into_bytes(),
-        })
+        .map(|p| OutputFile::new(first.with_extension(p.extension), p.text.into_bytes()))
         .collect()
 }
 
@@ -65,7 +62,7 @@ impl Exporter for CompensationExporter {
         "compensation"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         Ok(result
             .tests
             .iter()
@@ -82,10 +79,7 @@ impl Exporter for CompensationExporter {
                     .as_ref()
                     .ok()?
                     .file;
-                Some(vec![OutputFile {
-                    path,
-                    bytes: file.as_bytes().to_vec(),
-                }])
+                Some(vec![OutputFile::new(path, file.as_bytes().to_vec())])
             })
             .flatten()
             .collect())

@@ -12,7 +12,7 @@ impl Exporter for CsvExporter {
         "csv"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         let mut out = String::new();
         let header: Vec<String> = columns().into_iter().map(|(n, _)| n).collect();
         out.push_str(&header.join(","));
@@ -31,9 +31,6 @@ impl Exporter for CsvExporter {
             out.push_str(&cells.join(","));
             out.push('\n');
         }
-        Ok(vec![OutputFile {
-            path: "summary.csv".into(),
-            bytes: out.into_bytes(),
-        }])
+        Ok(vec![OutputFile::new("summary.csv", out.into_bytes())])
     }
 }

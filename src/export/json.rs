@@ -538,50 +538,65 @@ fn shown(json: Vec<u8>) -> Vec<u8> {
     }
 }
 
-/// `results.json`, pretty-printed: the axes are serialised in parallel (1 000 axes are
-/// 48 MB, 0.8 s of one core) and set into the head as `to_vec_pretty` would place them.
-pub(crate) fn results_json(result: &CampaignResult) -> Result<Vec<u8>, serde_json::Error> {
+/// Axes serialised at once (in parallel) before they are written: bounds the memory of a
+/// plant's `results.json` (58 kB an axis with its diagnosis) to a few megabytes.
+const AXES_PER_CHUNK: usize = 256;
+
+/// `results.json`, pretty-printed, into `out`: the axes are serialised in parallel chunks
+/// (1 000 axes are 48 MB, 0.8 s of one core) and set into the head as `to_vec_pretty` would
+/// place them.
+pub(crate) fn write_results_json(
+    result: &CampaignResult,
+    out: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     use rayon::prelude::*;
-    let tables = super::compensation::table_paths(result);
-    let axes: Vec<Vec<u8>> = result
-        .tests
-        .par_iter()
-        .zip(&tables)
-        .map(|(t, table)| {
-            let mut json = test_json(t);
-            json.report_number = result.report_number(t);
-            let cross = (json.geometry.as_mut()).and_then(|g| g.cross_table.as_mut());
-            if let (Some(Done::Made { file, .. }), Some(path)) = (cross, table) {
-                *file = Some(path.to_string_lossy().replace('\\', "/"));
-            }
-            json.compensation = t
-                .evaluated()
-                .and_then(|e| e.compensation.as_deref())
-                .map(|c| CompensationJson::new(t, c, table.as_deref()));
-            serde_json::to_vec_pretty(&json).map(shown)
-        })
-        .collect::<Result<_, _>>()?;
-    let mut out = shown(serde_json::to_vec_pretty(&results_head(result))?);
+    let head = shown(serde_json::to_vec_pretty(&results_head(result))?);
     let empty = b"\"axes\": []\n}";
-    if axes.is_empty() || !out.ends_with(empty) {
-        return Ok(out);
+    if result.tests.is_empty() || !head.ends_with(empty) {
+        out.write_all(&head)?;
+        return out.write_all(b"\n");
     }
-    out.truncate(out.len() - b"[]\n}".len());
-    out.reserve(axes.iter().map(|a| a.len() + a.len() / 8).sum());
-    out.extend_from_slice(b"[\n");
-    for (i, axis) in axes.iter().enumerate() {
-        // An element of the top-level object's array: four spaces deeper than standalone.
-        out.extend_from_slice(b"    ");
-        for &byte in axis {
-            out.push(byte);
-            if byte == b'\n' {
-                out.extend_from_slice(b"    ");
+    out.write_all(&head[..head.len() - b"[]\n}".len()])?;
+    out.write_all(b"[\n")?;
+    let tables = super::compensation::table_paths(result);
+    let count = result.tests.len();
+    for (chunk, (tests, tables)) in (result.tests.chunks(AXES_PER_CHUNK))
+        .zip(tables.chunks(AXES_PER_CHUNK))
+        .enumerate()
+    {
+        let axes: Vec<Vec<u8>> = (tests.par_iter().zip(tables))
+            .map(|(t, table)| axis_json(result, t, table.as_deref()))
+            .collect::<Result<_, _>>()?;
+        for (i, axis) in axes.iter().enumerate() {
+            // An element of the top-level object's array: four spaces deeper than standalone.
+            for line in axis.split_inclusive(|&b| b == b'\n') {
+                out.write_all(b"    ")?;
+                out.write_all(line)?;
             }
+            let last = chunk * AXES_PER_CHUNK + i + 1 == count;
+            out.write_all(if last { b"\n" } else { b",\n" })?;
         }
-        out.extend_from_slice(if i + 1 < axes.len() { b",\n" } else { b"\n" });
     }
-    out.extend_from_slice(b"  ]\n}");
-    Ok(out)
+    out.write_all(b"  ]\n}\n")
+}
+
+/// One test's JSON, standalone and pretty-printed.
+fn axis_json(
+    result: &CampaignResult,
+    t: &AxisTest,
+    table: Option<&std::path::Path>,
+) -> serde_json::Result<Vec<u8>> {
+    let mut json = test_json(t);
+    json.report_number = result.report_number(t);
+    let cross = (json.geometry.as_mut()).and_then(|g| g.cross_table.as_mut());
+    if let (Some(Done::Made { file, .. }), Some(path)) = (cross, table) {
+        *file = Some(path.to_string_lossy().replace('\\', "/"));
+    }
+    json.compensation = t
+        .evaluated()
+        .and_then(|e| e.compensation.as_deref())
+        .map(|c| CompensationJson::new(t, c, table));
+    serde_json::to_vec_pretty(&json).map(shown)
 }
 
 impl Exporter for JsonExporter {
@@ -589,15 +604,10 @@ impl Exporter for JsonExporter {
         "json"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
-        let mut bytes = results_json(result).map_err(|e| ExportError::Format {
-            format: "json",
-            message: e.to_string(),
-        })?;
-        bytes.push(b'\n');
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         Ok(vec![OutputFile {
             path: "results.json".into(),
-            bytes,
+            body: super::Body::Streamed(Box::new(move |out| write_results_json(result, out))),
         }])
     }
 }

@@ -31,7 +31,7 @@ impl Exporter for JunitExporter {
         "junit"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         let counts = result.counts();
         let allowed = result.info.unjudged_allowed();
         let failing = |v: Verdict| v.is_failure() || (v == Verdict::NotJudged && !allowed);
@@ -95,10 +95,7 @@ impl Exporter for JunitExporter {
             out.push_str("  </testsuite>\n");
         }
         out.push_str("</testsuites>\n");
-        Ok(vec![OutputFile {
-            path: "junit.xml".into(),
-            bytes: out.into_bytes(),
-        }])
+        Ok(vec![OutputFile::new("junit.xml", out.into_bytes())])
     }
 }
 

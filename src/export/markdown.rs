@@ -21,7 +21,7 @@ impl Exporter for MarkdownExporter {
         "markdown"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         let mut out = header(result);
         out.push_str(
             "| machine | axis | file | standard | spec | n | A | E | M | R | B | unit | verdict |\n",
@@ -41,10 +41,7 @@ impl Exporter for MarkdownExporter {
         // Every text from input went through `cell`; what axcheck composed around it (a
         // parameter's check, a rule's id) is made visible too, whatever it quotes.
         let out = crate::safe_text::visible(&out).into_owned();
-        Ok(vec![OutputFile {
-            path: "summary.md".into(),
-            bytes: out.into_bytes(),
-        }])
+        Ok(vec![OutputFile::new("summary.md", out.into_bytes())])
     }
 }
 

@@ -1,5 +1,7 @@
 //! Campaign outputs: one [`Exporter`] trait, one file per format (as hyperfine's export/).
-//! Each output is serialised in memory, then written atomically.
+//! Each output is serialised in memory, then written atomically; an output that grows with
+//! the data (`results.json`: about 58 kB an axis) is written as it is made ([`Body::Streamed`]),
+//! so a plant's run never holds it whole.
 
 pub mod compensation;
 pub mod csv;
@@ -72,10 +74,41 @@ fn incomplete_message(written: &usize, missing: &[PathBuf], manifest: &Path) -> 
 }
 
 /// One file an exporter produces, its path relative to the output folder.
-#[derive(Debug, Clone, PartialEq)]
-pub struct OutputFile {
+pub struct OutputFile<'a> {
     pub path: PathBuf,
-    pub bytes: Vec<u8>,
+    pub body: Body<'a>,
+}
+
+/// Writes an output's bytes into its (buffered) file, the same bytes at each call.
+pub type StreamFn<'a> = dyn Fn(&mut dyn std::io::Write) -> std::io::Result<()> + Send + Sync + 'a;
+
+/// What an output holds.
+pub enum Body<'a> {
+    /// Its bytes, made before anything is written.
+    Bytes(Vec<u8>),
+    /// Made while it is written: an output too large to hold (100 000 axes' `results.json`
+    /// is 5.8 GB).
+    Streamed(Box<StreamFn<'a>>),
+}
+
+impl OutputFile<'_> {
+    /// An output made in memory.
+    pub fn new(path: impl Into<PathBuf>, bytes: Vec<u8>) -> OutputFile<'static> {
+        OutputFile {
+            path: path.into(),
+            body: Body::Bytes(bytes),
+        }
+    }
+}
+
+impl std::fmt::Debug for OutputFile<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let body = match &self.body {
+            Body::Bytes(b) => format!("{} bytes", b.len()),
+            Body::Streamed(_) => "streamed".to_string(),
+        };
+        write!(f, "{} ({body})", self.path.display())
+    }
 }
 
 /// A format of campaign output.
@@ -83,7 +116,7 @@ pub trait Exporter: Sync {
     /// Name of the format, for messages.
     fn name(&self) -> &'static str;
     /// The files of this format for `result`.
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError>;
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError>;
 }
 
 /// The table and data outputs every `run` writes.
@@ -101,7 +134,8 @@ pub(crate) fn table_exporters() -> Vec<Box<dyn Exporter>> {
 
 /// Produces and writes the outputs of `exporters` into `dir`; returns the written paths.
 ///
-/// Nothing is written until every output is produced and every output path is checked:
+/// Nothing is written until every output is produced (a [`Body::Streamed`] one is made as
+/// it is written) and every output path is checked:
 /// a file at an output path that axcheck did not write (not in the folder's manifest,
 /// [`crate::atomic::MANIFEST`]) is refused. Each exporter's paths are checked as soon as it
 /// has produced them, so a refused table output fails before the PDFs are typeset. Then
@@ -126,7 +160,7 @@ pub fn write_all(
 /// Writes `files` into `dir` as [`write_all`] writes a campaign's outputs (the folder's
 /// manifest, atomic files, a full disk reported): the one way an output folder is written,
 /// for `trend --out` too.
-pub fn write_into(dir: &Path, files: &[OutputFile]) -> Result<Vec<PathBuf>, ExportError> {
+pub fn write_into(dir: &Path, files: &[OutputFile<'_>]) -> Result<Vec<PathBuf>, ExportError> {
     let out = crate::atomic::OutputDir::open(dir)?;
     out.check(files.iter().map(|f| f.path.as_path()))?;
     write_checked(out, files, dir)
@@ -135,7 +169,7 @@ pub fn write_into(dir: &Path, files: &[OutputFile]) -> Result<Vec<PathBuf>, Expo
 /// Writes `files`, each path already checked in `out`.
 fn write_checked(
     mut out: crate::atomic::OutputDir,
-    files: &[OutputFile],
+    files: &[OutputFile<'_>],
     dir: &Path,
 ) -> Result<Vec<PathBuf>, ExportError> {
     out.prepare(files.iter().map(|f| f.path.as_path()))?;
@@ -168,14 +202,18 @@ const WRITERS: usize = 8;
 /// returns those that could not be written, in order, with why.
 fn write_files(
     out: &crate::atomic::OutputDir,
-    files: &[OutputFile],
+    files: &[OutputFile<'_>],
 ) -> Result<Vec<(PathBuf, crate::atomic::OutputError)>, ExportError> {
     let here = |work: &(dyn Fn() + Sync)| {
         work();
         Ok::<(), crate::atomic::OutputError>(())
     };
     let written = workers::map_in_order(files, WRITERS, here, |file| {
-        Ok(out.write(&file.path, &file.bytes).err())
+        let written = match &file.body {
+            Body::Bytes(bytes) => out.write(&file.path, bytes),
+            Body::Streamed(stream) => out.write_with(&file.path, stream),
+        };
+        Ok(written.err())
     })?;
     Ok((files.iter().zip(written))
         .filter_map(|(file, error)| error.map(|e| (file.path.clone(), e)))

@@ -13,7 +13,7 @@ impl Exporter for ParquetExporter {
         "parquet"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         let err = |e: PolarsError| ExportError::Format {
             format: "parquet",
             message: e.to_string(),
@@ -50,10 +50,7 @@ impl Exporter for ParquetExporter {
         ParquetWriter::new(&mut bytes)
             .finish(&mut df)
             .map_err(err)?;
-        Ok(vec![OutputFile {
-            path: "summary.parquet".into(),
-            bytes,
-        }])
+        Ok(vec![OutputFile::new("summary.parquet", bytes)])
     }
 }
 

@@ -22,7 +22,7 @@ impl Exporter for PdfExporter {
         "pdf"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         let paths = super::paths::test_paths(result, "reports", "pdf");
         // The summary first: it is the longest job (one table row per axis: 1.5 s for
         // 1 000 axes) and should not be left to the end.
@@ -30,18 +30,18 @@ impl Exporter for PdfExporter {
             .chain(result.tests.iter().zip(paths).map(|(t, p)| Job::Axis(t, p)))
             .collect();
         let mut files = typeset_all(&jobs, rayon::current_num_threads(), |job| match job {
-            Job::Summary => Ok(OutputFile {
-                path: "summary.pdf".into(),
-                bytes: (self.reports)
+            Job::Summary => Ok(OutputFile::new(
+                "summary.pdf",
+                (self.reports)
                     .summary_with_trends(result, self.trends.as_deref())?
                     .pdf,
-            }),
-            Job::Axis(test, path) => Ok(OutputFile {
-                path: path.clone(),
-                bytes: (self.reports)
+            )),
+            Job::Axis(test, path) => Ok(OutputFile::new(
+                path.clone(),
+                (self.reports)
                     .axis_with_history(result, test, self.trends.as_deref())?
                     .pdf,
-            }),
+            )),
         })
         .map_err(|e| ExportError::Format {
             format: "pdf",
@@ -73,8 +73,8 @@ enum Job<'a> {
 fn typeset_all<'a>(
     jobs: &'a [Job<'a>],
     workers: usize,
-    typeset: impl Fn(&Job<'a>) -> Result<OutputFile, report::ReportError> + Sync,
-) -> Result<Vec<OutputFile>, report::ReportError> {
+    typeset: impl Fn(&Job<'a>) -> Result<OutputFile<'static>, report::ReportError> + Sync,
+) -> Result<Vec<OutputFile<'static>>, report::ReportError> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let finished = AtomicUsize::new(0);
     let in_own_pool = |work: &(dyn Fn() + Sync)| match rayon::ThreadPoolBuilder::new()

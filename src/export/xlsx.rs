@@ -33,15 +33,12 @@ impl Exporter for XlsxExporter {
         "xlsx"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         let bytes = workbook(result, self.trends.as_deref()).map_err(|e| ExportError::Format {
             format: "xlsx",
             message: e.to_string(),
         })?;
-        Ok(vec![OutputFile {
-            path: "summary.xlsx".into(),
-            bytes,
-        }])
+        Ok(vec![OutputFile::new("summary.xlsx", bytes)])
     }
 }
 

@@ -35,6 +35,15 @@ use std::path::{Component, Path, PathBuf};
 
 /// Writes `bytes` to `path` atomically, creating parent folders.
 pub fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    write_with(path, &|file| file.write_all(bytes))
+}
+
+/// Writes what `make` writes to `path` atomically (through a buffer), creating parent
+/// folders: an output made as it is written, never held whole.
+pub fn write_with(
+    path: &Path,
+    make: &dyn Fn(&mut dyn Write) -> std::io::Result<()>,
+) -> std::io::Result<()> {
     let dir = path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -46,8 +55,9 @@ pub fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         .unwrap_or_else(|| "output".into());
     let tmp = dir.join(temp_name(&name, std::process::id()));
     let result = (|| {
-        let mut file = std::fs::File::create(&tmp)?;
-        file.write_all(bytes)?;
+        let mut file = std::io::BufWriter::with_capacity(1 << 16, std::fs::File::create(&tmp)?);
+        make(&mut file)?;
+        let file = file.into_inner().map_err(|e| e.into_error())?;
         file.sync_all()?;
         std::fs::rename(&tmp, path)
     })();
@@ -382,8 +392,17 @@ impl OutputDir {
 
     /// Writes one output (a relative path given to [`prepare`](OutputDir::prepare)).
     pub fn write(&self, output: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+        self.write_with(output, &|file| file.write_all(bytes))
+    }
+
+    /// Writes one output as [`write_with`] does.
+    pub fn write_with(
+        &self,
+        output: &Path,
+        make: &dyn Fn(&mut dyn Write) -> std::io::Result<()>,
+    ) -> Result<(), OutputError> {
         let path = self.root.join(output);
-        write(&path, bytes).map_err(|cause| {
+        write_with(&path, make).map_err(|cause| {
             // Windows refuses to replace a file another program holds open (without
             // allowing its deletion, or at all before Windows 10 1809 and on FAT and
             // network shares); elsewhere the same error means a folder not writable.

@@ -105,7 +105,7 @@ impl Exporter for HtmlExporter {
         "html"
     }
 
-    fn export(&self, result: &CampaignResult) -> Result<Vec<OutputFile>, ExportError> {
+    fn export<'a>(&self, result: &'a CampaignResult) -> Result<Vec<OutputFile<'a>>, ExportError> {
         let words = Words::new(crate::campaign::report_lang(
             self.lang,
             result.info.report.as_ref(),
@@ -121,7 +121,7 @@ impl HtmlExporter {
         &self,
         result: &CampaignResult,
         words: Words,
-    ) -> Result<Vec<OutputFile>, ExportError> {
+    ) -> Result<Vec<OutputFile<'static>>, ExportError> {
         let trends = self.trends.as_deref();
         let page = Page {
             generator: format!("axcheck {}", env!("CARGO_PKG_VERSION")),
@@ -135,10 +135,10 @@ impl HtmlExporter {
             t: page_words(&words),
         };
         let details = details(result, trends, self.reports, words)?;
-        Ok(vec![OutputFile {
-            path: "summary.html".into(),
-            bytes: page_html(&script_json(&page)?, &script_json(&details)?).into_bytes(),
-        }])
+        Ok(vec![OutputFile::new(
+            "summary.html",
+            page_html(&script_json(&page)?, &script_json(&details)?).into_bytes(),
+        )])
     }
 }
 
