@@ -22,6 +22,15 @@ pub(crate) const TOLERANCE: f64 = 1e-10;
 /// P(Σ λⱼ χ²(hⱼ) > 0) for the terms (λⱼ, hⱼ), hⱼ > 0 degrees of freedom (not necessarily
 /// whole), to an absolute error of about `tolerance`.
 pub(crate) fn combination_positive(terms: &[(f64, f64)], tolerance: f64) -> f64 {
+    static MEMO: super::memo::Memo = super::memo::Memo::new();
+    let key: Vec<f64> = (terms.iter().flat_map(|&(l, h)| [l, h]))
+        .chain([tolerance])
+        .collect();
+    MEMO.get_or(&key, || integrate(terms, tolerance))
+}
+
+/// [`combination_positive`], computed.
+fn integrate(terms: &[(f64, f64)], tolerance: f64) -> f64 {
     let scale = terms.iter().map(|t| t.0.abs()).fold(0.0, f64::max);
     if !(scale > 0.0 && scale.is_finite()) {
         return f64::NAN;

@@ -17,6 +17,8 @@
 //! 0.5 s; neither is as accurate in the F and χ² far tails, so neither replaces this file.
 //! The tests below hold it to mpmath's values.
 
+use super::memo::Memo;
+
 /// ln Γ(x).
 fn ln_gamma(x: f64) -> f64 {
     libm::lgamma(x)
@@ -180,7 +182,10 @@ pub(crate) fn f_upper_quantile(p: f64, d1: f64, d2: f64) -> f64 {
     if !(p > 0.0 && p < 1.0 && d1 > 0.0 && d2 > 0.0) {
         return f64::NAN;
     }
-    bisect_increasing(|f| -f_upper(f, d1, d2), -p, 1e300)
+    static MEMO: Memo = Memo::new();
+    MEMO.get_or(&[p, d1, d2], || {
+        bisect_increasing(|f| -f_upper(f, d1, d2), -p, 1e300)
+    })
 }
 
 /// Upper tail P(F′ ≥ f) of the noncentral F distribution with (d1, d2) degrees of freedom
@@ -218,11 +223,14 @@ pub(crate) fn noncentrality_for_power(critical: f64, d1: f64, d2: f64, power: f6
     }
     // λ beyond 10⁶ (an effect a thousand standard errors in size) is no plan's answer,
     // and its sum would take 10⁴ terms.
-    bisect_increasing(
-        |lambda| noncentral_f_upper(critical, d1, d2, lambda),
-        power,
-        1e6,
-    )
+    static MEMO: Memo = Memo::new();
+    MEMO.get_or(&[critical, d1, d2, power], || {
+        bisect_increasing(
+            |lambda| noncentral_f_upper(critical, d1, d2, lambda),
+            power,
+            1e6,
+        )
+    })
 }
 
 /// The x in [0, `limit`] with `g(x)` = `target` for `g` increasing from below `target`
