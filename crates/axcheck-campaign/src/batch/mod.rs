@@ -18,7 +18,7 @@ use crate::diagnose::cross::{OutOfTest, out_of_test};
 use crate::evaluate::Evaluation;
 use crate::judge::{self, Decision, DecisionRule, Judgement, Spec, Verdict};
 use crate::measurement::{AxisData, Recognised};
-use crate::rules::{self, Severity, Violation};
+use crate::rules::{self, Violation};
 use crate::uncertainty::Uncertainty;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -535,10 +535,7 @@ fn judge_stage(
                 expanded: judged.uncertainty.map(|u| &u.expanded),
             };
             let judgement = judge::judge(judged.evaluation, limits, &decision);
-            let plan_broken = judged
-                .findings
-                .iter()
-                .any(|f| f.severity == Severity::Error);
+            let plan_broken = crate::rules::breaks_plan(judged.findings);
             (judgement.verdict(plan_broken), None, Some(judgement))
         }
     }

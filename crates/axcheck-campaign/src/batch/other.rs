@@ -60,10 +60,7 @@ pub(super) fn run(
     context.calibration =
         super::stages::rules::calibration(axis, &slot.machine, campaign, &recognised);
     let findings = crate::rules::check_instrument(&context, &data);
-    let broken = findings
-        .iter()
-        .any(|f| f.severity == crate::rules::Severity::Error);
-    let verdict = judgement.verdict(broken);
+    let verdict = judgement.verdict(crate::rules::breaks_plan(&findings));
     let symbol = crate::campaign::geometry::symbol(raw).unwrap_or_default();
     slot.with(Outcome::Other(Box::new(OtherTested {
         verdict,

@@ -95,7 +95,7 @@ fn carry<'a>(
     };
     let judgement = (e.judgement.as_ref())
         .map(|j| judge::judge(&evaluation, j.limits.clone(), &decision(j.rule)));
-    let plan_broken = (e.findings.iter()).any(|f| f.severity == crate::rules::Severity::Error);
+    let plan_broken = crate::rules::breaks_plan(&e.findings);
     let verdict = judgement
         .as_ref()
         .map_or(e.verdict, |j| j.verdict(plan_broken));

@@ -64,6 +64,12 @@ pub struct Violation {
     pub message: String,
 }
 
+/// Whether `findings` break the test plan: any error does, and a test whose plan is
+/// broken is noncompliant whatever its values (warnings are shown, not judged).
+pub fn breaks_plan(findings: &[Violation]) -> bool {
+    findings.iter().any(|f| f.severity == Severity::Error)
+}
+
 /// What the campaign says about the axis, besides its data.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlanContext {
