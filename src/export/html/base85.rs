@@ -67,7 +67,10 @@ mod tests {
         let bytes: Vec<u8> = (0..=255u8).chain((0..=255u8).rev()).collect();
         for n in 0..=bytes.len().min(40) {
             let text = encode(&bytes[..n]);
-            assert_eq!(text.len(), n / 4 * 5 + if n % 4 > 0 { n % 4 + 1 } else { 0 });
+            assert_eq!(
+                text.len(),
+                n / 4 * 5 + if n % 4 > 0 { n % 4 + 1 } else { 0 }
+            );
             assert_eq!(decode(&text).as_deref(), Some(&bytes[..n]), "{n}");
         }
         assert_eq!(decode(&encode(&bytes)).unwrap(), bytes);

@@ -3,12 +3,12 @@
 //! diagnosis's findings with their advice, the compensation and its verification, links to
 //! its report and table, and its charts (ISO 230-2 Fig. 2a and 2b, and its history).
 
-use axcheck_charts::chart_kit::scene::Scene;
 use crate::evaluate::ParamKey;
 use crate::history::AxisTrends;
 use crate::judge::Conformance;
 use crate::results::AxisTest;
 use crate::units::fmt_fixed;
+use axcheck_charts::chart_kit::scene::Scene;
 use axcheck_charts::words::Words;
 use serde::Serialize;
 

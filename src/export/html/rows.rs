@@ -74,7 +74,10 @@ pub(crate) fn hundredths(text: &str) -> Hundredths {
             frac.len() == 2
                 && !digits.is_empty()
                 && (digits == "0" || !digits.starts_with('0'))
-                && digits.bytes().chain(frac.bytes()).all(|b| b.is_ascii_digit())
+                && digits
+                    .bytes()
+                    .chain(frac.bytes())
+                    .all(|b| b.is_ascii_digit())
                 && !(int.starts_with('-') && digits == "0" && frac == "00")
         })
         .and_then(|(int, frac)| format!("{int}{frac}").parse::<i64>().ok())
@@ -143,7 +146,10 @@ pub(crate) fn columns<'a>(rows: &'a [overview::Row<'a>]) -> Columns<'a> {
         })
         .collect();
     let worst = WorstColumn {
-        symbol: Dict::of(rows.iter().map(|r| r.worst.as_ref().map(|w| w.symbol.clone()))),
+        symbol: Dict::of(
+            rows.iter()
+                .map(|r| r.worst.as_ref().map(|w| w.symbol.clone())),
+        ),
         ratio: (rows.iter())
             .map(|r| r.worst.as_ref().map(|w| hundredths(&worst_ratio_text(w))))
             .collect(),
@@ -202,7 +208,9 @@ mod tests {
         assert_eq!(number("-0.40"), Some(-40));
         assert_eq!(number("-12.30"), Some(-1230));
         assert_eq!(number("90071992547409.91"), None);
-        for text in ["NaN", "inf", "-0.00", "1.5", "01.00", "1.000", ".50", "-.50", "1e3.00"] {
+        for text in [
+            "NaN", "inf", "-0.00", "1.5", "01.00", "1.000", ".50", "-.50", "1e3.00",
+        ] {
             assert_eq!(number(text), None, "{text}");
         }
     }

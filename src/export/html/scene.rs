@@ -202,7 +202,8 @@ impl Tables {
             return i;
         }
         self.strings.push(text.to_string());
-        self.string_index.insert(text.to_string(), self.strings.len() - 1);
+        self.string_index
+            .insert(text.to_string(), self.strings.len() - 1);
         self.strings.len() - 1
     }
 }
