@@ -207,7 +207,8 @@ mod tests {
         assert_eq!(number("0.07"), Some(7));
         assert_eq!(number("-0.40"), Some(-40));
         assert_eq!(number("-12.30"), Some(-1230));
-        assert_eq!(number("90071992547409.91"), None);
+        assert_eq!(number("90071992547409.91"), Some((1 << 53) - 1));
+        assert_eq!(number("90071992547409.92"), None);
         for text in [
             "NaN", "inf", "-0.00", "1.5", "01.00", "1.000", ".50", "-.50", "1e3.00",
         ] {
