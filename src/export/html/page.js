@@ -337,8 +337,7 @@
     for (let i = 0; i < n; i += 5) {
       let v = 0;
       for (let j = i; j < i + 5; j++) v = v * 85 + (j < n ? DIGIT[text.charCodeAt(j)] : 84);
-      const bytes = [v >>> 24, (v >>> 16) & 255, (v >>> 8) & 255, v & 255];
-      for (let b = 0; b < Math.min(4, n - i - 1); b++) out[o++] = bytes[b];
+      for (let b = 0, m = Math.min(4, n - i - 1); b < m; b++) out[o++] = (v >>> (24 - 8 * b)) & 255;
     }
     return out;
   }
@@ -355,7 +354,10 @@
       } while (b & 128);
       return v;
     };
-    return { u, s: () => { const v = u(); return v % 2 ? -(v + 1) / 2 : v / 2; } };
+    return {
+      u, s: () => { const v = u(); return v % 2 ? -(v + 1) / 2 : v / 2; },
+      get at() { return at; }, set at(p) { at = p; },
+    };
   }
   const FORMS = 4;
   // One outline as SVG path data, as the PDF's scene writes it.
@@ -410,6 +412,24 @@
     }
     return { width, height, shapes, texts: out };
   }
+  // Reads past a scene without making it: the page makes only the opened test's charts.
+  function skipScene(st) {
+    const { ops, xs, ys, texts } = st;
+    const point = () => { xs.u(); ys.u(); };
+    ops.u(); ops.u();
+    for (let n = ops.u(); n > 0; n--) {
+      ops.u();
+      for (let m = ops.u(); m > 0; m--) {
+        const op = ops.u() - FORMS;
+        if (op < 0) point();
+        else if (op <= 1) for (let p = ops.u(); p > 0; p--) point();
+        else if (op === 2) { point(); point(); }
+        else if (op === 3) { ops.u(); point(); }
+        else throw new Error("unknown op " + (op + FORMS));
+      }
+    }
+    for (let n = texts.u() * 4; n > 0; n--) texts.u();
+  }
   async function inflate(text) {
     const inflated = new Blob([base85(text)]).stream().pipeThrough(new DecompressionStream("deflate"));
     const bytes = new Uint8Array(await new Response(inflated).arrayBuffer());
@@ -420,8 +440,20 @@
     const parts = lengths.map((n) => bytes.subarray(from, (from += n)));
     const block = JSON.parse(new TextDecoder().decode(parts[0]));
     const st = { ops: stream(parts[1]), xs: stream(parts[2]), ys: stream(parts[3]), texts: stream(parts[4]) };
-    for (const d of block.tests) for (const ch of d.charts) ch.scene = readScene(st, block);
-    return block.tests;
+    const names = ["ops", "xs", "ys", "texts"];
+    // Where each test's scenes start in the four streams; its charts are made when opened.
+    const starts = block.tests.map((d) => {
+      const at = names.map((name) => st[name].at);
+      for (let i = 0; i < d.charts.length; i++) skipScene(st);
+      return at;
+    });
+    return block.tests.map((d, i) => () => {
+      if (d.charts.length && !d.charts[0].scene) {
+        names.forEach((name, j) => { st[name].at = starts[i][j]; });
+        for (const ch of d.charts) ch.scene = readScene(st, block);
+      }
+      return d;
+    });
   }
   // The details follow this script in the page: read once the page is parsed.
   const parsed = new Promise((done) => {
@@ -435,7 +467,7 @@
       if (encoded === null) encoded = JSON.parse(document.getElementById("details-data").textContent);
       blocks.set(b, inflate(encoded[b]));
     }
-    return (await blocks.get(b))[k % data.block];
+    return (await blocks.get(b))[k % data.block]();
   }
   let opening = 0;
   async function open(k, focus) {
