@@ -30,7 +30,7 @@ use std::io::Write;
 use std::sync::Arc;
 
 /// Tests per block of details.
-pub(crate) const BLOCK: usize = 128;
+pub(crate) const BLOCK: usize = 64;
 
 const PAGE: &str = include_str!("page.html");
 const STYLE: &str = include_str!("page.css");
