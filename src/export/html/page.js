@@ -10,6 +10,11 @@
     const a = Math.abs(h);
     return (h < 0 ? "-" : "") + Math.floor(a / 100) + "." + String(a % 100).padStart(2, "0");
   };
+  // The number a text shows, to sort by; null (sorted last) when it shows none.
+  const num = (text) => {
+    const v = parseFloat(text);
+    return Number.isFinite(v) ? v : null;
+  };
   // The rows from their columns (rows.rs): one object per axis test.
   function rowsOf(c, count) {
     const dict = (d, k) => d.values[d.index[k]];
@@ -26,7 +31,7 @@
       for (const [key, col] of c.values) {
         if (col.value[k] === null) continue;
         const text = fixed2(col.value[k]), u = col.U[k];
-        values[key] = { symbol: dict(col.symbol, k), text, value: Number(text), U_text: u === null ? null : fixed2(u) };
+        values[key] = { symbol: dict(col.symbol, k), text, value: num(text), U_text: u === null ? null : fixed2(u) };
       }
       const ratio = c.worst.ratio[k];
       const comp = compensation.get(k);
@@ -34,13 +39,13 @@
         id: `${machine}|${axis}|${test}`, machine, axis, test, tests: c.tests[k],
         kind: dict(c.kind, k), standard: dict(c.standard, k), travel_text: dict(c.travel, k), n: c.n[k],
         unit: dict(c.unit, k), values,
-        worst: ratio === null ? null : { text: `${dict(c.worst.symbol, k)} ${fixed2(ratio)}`, ratio: Number(fixed2(ratio)), over: over.has(k) },
+        worst: ratio === null ? null : { text: `${dict(c.worst.symbol, k)} ${fixed2(ratio)}`, ratio: num(fixed2(ratio)), over: over.has(k) },
         verdict: dict(c.verdict, k), decision_rule: dict(c.decision_rule, k), rules: dict(c.rules, k),
         warnings: dict(c.warnings, k), diagnosis: dict(c.diagnosis, k),
-        compensation: comp ? { text: `${fixed2(comp[0])} → ${fixed2(comp[1])}`, predicted: Number(fixed2(comp[1])) } : null,
+        compensation: comp ? { text: `${fixed2(comp[0])} → ${fixed2(comp[1])}`, predicted: num(fixed2(comp[1])) } : null,
         trend: dict(c.trend, k), error: errors.has(k) ? errors.get(k) : null,
       };
-      out[k].travel = out[k].travel_text === null ? null : parseFloat(out[k].travel_text);
+      out[k].travel = out[k].travel_text === null ? null : num(out[k].travel_text);
     }
     return out;
   }
