@@ -327,3 +327,166 @@ fn a_run_with_a_history_shows_trends_and_history_charts() {
     assert_eq!(n, 6);
     assert_eq!(b.console_errors(), Vec::<String>::new());
 }
+
+/// Every path and text of an SVG chart in the detail, as the page set them: per path its
+/// fill, stroke, stroke width, dashes, opacity and outline; per text its position,
+/// baseline offset, anchor, size, colour, weight, rotation and content.
+const DRAWN: &str = "[...document.querySelectorAll('#detail svg[role=img]')].map(svg => ({
+    size: [svg.getAttribute('width'), svg.getAttribute('height'), svg.getAttribute('viewBox')],
+    paths: [...svg.querySelectorAll('path')].map(p => ['fill', 'stroke', 'stroke-width',
+        'stroke-dasharray', 'opacity', 'd'].map(a => p.getAttribute(a))),
+    texts: [...svg.querySelectorAll('text')].map(t => ['x', 'y', 'dy', 'text-anchor', 'font-size',
+        'fill', 'font-weight', 'transform'].map(a => t.getAttribute(a)).concat([t.textContent])),
+  }))";
+
+/// What [`DRAWN`] reads from the page, made from a scene as the PDF report draws it.
+fn drawn(scene: &axcheck_charts::chart_kit::scene::Scene) -> Value {
+    use axcheck_charts::chart_kit::scene::{Align, Paint};
+    let number = |x: f64| Value::from(x.to_string());
+    let paths: Vec<Value> = (scene.drawing.shapes.iter())
+        .map(|shape| {
+            let (fill, stroke, width, dash) = match &shape.paint {
+                Paint::Fill(c) => (c.hex(), "none".to_string(), Value::Null, Value::Null),
+                Paint::Stroke {
+                    colour,
+                    width,
+                    dash,
+                } => {
+                    let dash = dash.iter().map(|d| d.to_string()).collect::<Vec<_>>();
+                    let dash = Some(dash.join(" ")).filter(|d| !d.is_empty());
+                    (
+                        "none".into(),
+                        colour.hex(),
+                        width.to_string().into(),
+                        dash.into(),
+                    )
+                }
+            };
+            let opacity = (shape.opacity != 1.0).then(|| number(shape.opacity));
+            serde_json::json!([fill, stroke, width, dash, opacity, shape.path_data()])
+        })
+        .collect();
+    let texts: Vec<Value> = (scene.texts.iter())
+        .map(|t| {
+            let (x, y) = t.at;
+            let anchor = match t.align {
+                Align::Left => "start",
+                Align::Center => "middle",
+                Align::Right => "end",
+            };
+            let weight = t.bold.then_some("bold");
+            let rotate = (t.rotate != 0).then(|| format!("rotate({}, {x}, {y})", t.rotate));
+            serde_json::json!([
+                x.to_string(),
+                y.to_string(),
+                number(t.dy()),
+                anchor,
+                number(t.size),
+                t.colour.hex(),
+                weight,
+                rotate,
+                t.text
+            ])
+        })
+        .collect();
+    let (w, h) = (scene.drawing.width, scene.drawing.height);
+    serde_json::json!({
+        "size": [w.to_string(), h.to_string(), format!("0 0 {w} {h}")],
+        "paths": paths,
+        "texts": texts,
+    })
+}
+
+/// The page's charts are the report's scenes, drawn element for element: the scenes of
+/// ISO 230-2 Fig. 2a and 2b made here from the same file are what the browser shows.
+#[test]
+fn the_drawn_charts_are_the_scenes_of_the_report() {
+    let head = "name: Scenes, date: 2026-11-20, spec: general";
+    let (out, code, stdout) = run_table2("html-scenes", head, "M1", "X", &[]);
+    assert!(code == 0 || code == 1, "{stdout}");
+    let csv = std::fs::read(crate::common::data_path("iso230-2_table2.csv")).unwrap();
+    let data = axcheck::measurement::read(csv.as_slice(), "iso230-2_table2.csv").unwrap();
+    let evaluation =
+        axcheck::evaluate::evaluate(&data.data, axcheck::evaluate::StandardId::Iso230_2);
+    let want: Vec<Value> = (axcheck_charts::figures::iso_charts(&evaluation).iter())
+        .map(drawn)
+        .collect();
+
+    let mut b = open(&out.join("summary.html"));
+    b.click("#rows tr[data-test-id]").unwrap();
+    let two = "document.querySelectorAll('#detail svg[role=img]').length === 2";
+    b.wait_for(two, Duration::from_secs(10)).unwrap();
+    let got = b.eval(DRAWN).unwrap();
+    let got = got.as_array().unwrap();
+    assert_eq!(got.len(), 2);
+    for (got, want) in got.iter().zip(&want) {
+        assert_eq!(got["size"], want["size"]);
+        // Element by element, so that a difference names its element.
+        for part in ["paths", "texts"] {
+            let (g, w) = (
+                got[part].as_array().unwrap(),
+                want[part].as_array().unwrap(),
+            );
+            for (k, (g, w)) in g.iter().zip(w).enumerate() {
+                assert_eq!(g, w, "{part} {k}");
+            }
+            assert_eq!(g.len(), w.len(), "{part}");
+        }
+    }
+    // The readings' dots: 11 targets × 5 runs up, each a circle of radius 2.
+    let dots = want[0]["paths"].as_array().unwrap().iter();
+    let dots = dots.map(|p| p[5].as_str().unwrap().matches(" a2,2 0 1,0 4,0").count());
+    assert!(dots.max().unwrap() >= 55);
+    assert_eq!(b.console_errors(), Vec::<String>::new());
+}
+
+/// Bytes of summary.html per axis test: 15 MB for a plant of 10 000 axes (issue 48).
+const BYTES_PER_TEST: u64 = 1_500;
+
+/// A 1 000-axis fleet's page stays within [`BYTES_PER_TEST`], and a test of its last
+/// machine (in the last, partial block of details) opens with its charts.
+#[test]
+fn a_fleets_page_stays_small_and_opens_its_last_test() {
+    let dir = scratch("html-fleet");
+    let fleet = dir.join("fleet");
+    let fleet_s = fleet.to_str().unwrap();
+    let (code, _, stderr) = axcheck(&[
+        "simulate", "--fleet", "1000", "--seed", "3", "--out", fleet_s,
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    let out = dir.join("out");
+    let campaign = fleet.join("campaign.yaml");
+    let args = [
+        "run",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-pdf",
+    ];
+    let (code, stdout, stderr) = axcheck(&args);
+    assert!(code == 0 || code == 1, "{stdout}{stderr}");
+    let page = out.join("summary.html");
+    let size = std::fs::metadata(&page).unwrap().len();
+    assert!(
+        size <= 1_000 * BYTES_PER_TEST,
+        "{size} bytes for 1000 tests"
+    );
+
+    let mut b = open(&page);
+    assert_eq!(shown(&mut b), "1000 of 1000 tests");
+    // The last machine first (sorted by machine, twice for descending).
+    b.click("button[data-column=\"machine\"]").unwrap();
+    b.click("button[data-column=\"machine\"]").unwrap();
+    let last = row_ids(&mut b)[0].clone();
+    b.click("#rows tr[data-test-id]").unwrap();
+    let charts = "document.querySelectorAll('#detail svg[role=img]').length === 2 && \
+                  document.getElementById('detail-title').textContent";
+    let title = b.wait_for(charts, Duration::from_secs(10)).unwrap();
+    let mut id = last.split('|');
+    let (machine, axis) = (id.next().unwrap(), id.next().unwrap());
+    assert!(machine.starts_with('M') && machine.len() >= 5, "{last}");
+    let title = title.as_str().unwrap();
+    assert!(title.starts_with(&format!("{machine} {axis}")), "{title}");
+    assert_eq!(b.console_errors(), Vec::<String>::new());
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -3,12 +3,12 @@
 //! diagnosis's findings with their advice, the compensation and its verification, links to
 //! its report and table, and its charts (ISO 230-2 Fig. 2a and 2b, and its history).
 
-use super::scene::SceneData;
 use crate::evaluate::ParamKey;
 use crate::history::AxisTrends;
 use crate::judge::Conformance;
 use crate::results::AxisTest;
 use crate::units::fmt_fixed;
+use axcheck_charts::chart_kit::scene::Scene;
 use axcheck_charts::words::Words;
 use serde::Serialize;
 
@@ -68,13 +68,15 @@ pub(crate) struct CompensationDetail {
     pub warnings: Vec<String>,
 }
 
-/// A titled chart.
+/// A titled chart. Its scene goes into the block's scenes ([`super::scene::SceneBlock`]),
+/// in the order of the block's tests and their charts.
 #[derive(Debug, Serialize)]
 pub struct Chart {
     /// `iso` (ISO 230-2 Fig. 2a, 2b) or `history`.
     pub group: &'static str,
     pub title: String,
-    pub scene: SceneData,
+    #[serde(skip)]
+    pub scene: Scene,
 }
 
 /// Where the test's own files are, relative to the page.
@@ -183,12 +185,12 @@ fn charts(t: &AxisTest, trends: Option<&AxisTrends>, words: &Words) -> Vec<Chart
         charts.push(Chart {
             group: "iso",
             title: words.get("html-chart-bidirectional"),
-            scene: SceneData::of(&bidirectional),
+            scene: bidirectional,
         });
         charts.push(Chart {
             group: "iso",
             title: words.get("html-chart-unidirectional"),
-            scene: SceneData::of(&unidirectional),
+            scene: unidirectional,
         });
     }
     if let Some(history) = crate::history::history_of(t, trends) {
@@ -196,7 +198,7 @@ fn charts(t: &AxisTest, trends: Option<&AxisTrends>, words: &Words) -> Vec<Chart
             charts.push(Chart {
                 group: "history",
                 title: words.args("html-chart-history", &[("label", &chart.label)]),
-                scene: SceneData::of(&chart.scene),
+                scene: chart.scene,
             });
         }
     }

@@ -7,13 +7,16 @@
 //! name can end the script or become markup. The script builds the page from the data
 //! with `textContent` and `createElement` only.
 //!
-//! The table's rows come first and are read at once. Each test's detail (parameters,
-//! findings, charts) is larger, about 20 kB with its charts, so the details are kept in
-//! blocks of [`BLOCK`] tests, each deflated (zlib) and in base64, after the script: the
-//! page inflates a block when one of its rows is opened. A 10 000-axis page so stays in
-//! the tens of megabytes instead of hundreds, and opens as fast as its table.
+//! The table's rows come first and are read at once, by column ([`rows`]). Each test's
+//! detail (parameters, findings, charts) is larger, so the details are kept in blocks of
+//! [`BLOCK`] tests after the script, each deflated (zlib) and written in [`base85`]: the
+//! page inflates a block when one of its rows is opened. A block is its JSON (the tests'
+//! details, and the tables of their charts: paints, text styles, strings) and then its
+//! charts' numbers as bytes ([`scene`]). A 10 000-axis page so takes about 1.3 kB a test.
 
+mod base85;
 mod detail;
+mod rows;
 mod scene;
 
 use super::overview;
@@ -22,13 +25,12 @@ use crate::history::AxisTrends;
 use crate::judge::Verdict;
 use crate::results::CampaignResult;
 use axcheck_charts::words::Words;
-use base64::Engine;
 use serde::Serialize;
 use std::io::Write;
 use std::sync::Arc;
 
 /// Tests per block of details.
-pub(crate) const BLOCK: usize = 32;
+pub(crate) const BLOCK: usize = 64;
 
 const PAGE: &str = include_str!("page.html");
 const STYLE: &str = include_str!("page.css");
@@ -54,7 +56,9 @@ struct Page<'a> {
     /// Whether the run keeps a history (the table's trend column).
     history: bool,
     block: usize,
-    rows: Vec<overview::Row<'a>>,
+    /// The number of rows, then the rows by column.
+    count: usize,
+    rows: rows::Columns<'a>,
     /// The files the run read with their SHA-256 and how it was run, under the footer.
     inputs: Option<axcheck_charts::data::inputs::InputsList>,
     /// The page's language and its words (`tr` in page.js).
@@ -123,13 +127,15 @@ impl HtmlExporter {
         words: Words,
     ) -> Result<Vec<OutputFile<'static>>, ExportError> {
         let trends = self.trends.as_deref();
+        let table = overview::rows(result, trends);
         let page = Page {
             generator: format!("axcheck {}", env!("CARGO_PKG_VERSION")),
             campaign: axcheck_charts::data::CampaignHeader::new(result),
             counts: counts(result),
             history: trends.is_some(),
             block: BLOCK,
-            rows: overview::rows(result, trends),
+            count: table.len(),
+            rows: rows::columns(&table),
             inputs: axcheck_charts::data::inputs::inputs_list(&result.inputs, INPUTS_LISTED, 64),
             lang: words.lang().code(),
             t: page_words(&words),
@@ -153,7 +159,16 @@ fn counts(result: &CampaignResult) -> Vec<(Verdict, usize)> {
         .collect()
 }
 
-/// The details in blocks of [`BLOCK`] tests, each a JSON array deflated and in base64.
+/// A block of details as the page reads it (see the module docs).
+#[derive(Serialize)]
+struct Block<'a> {
+    tests: Vec<detail::Detail<'a>>,
+    #[serde(flatten)]
+    tables: &'a scene::Tables,
+}
+
+/// The details in blocks of [`BLOCK`] tests, each deflated and in base 85: the block's
+/// JSON and its charts' byte streams, each after its length (LEB128).
 fn details(
     result: &CampaignResult,
     trends: Option<&AxisTrends>,
@@ -182,11 +197,26 @@ fn details(
                 words.scope(|| detail::detail(t, trends, links, &words))
             })
             .collect();
-        let json = crate::safe_text::shown_json(&details).map_err(json_error)?;
+        let mut scenes = scene::SceneBlock::default();
+        for chart in details.iter().flat_map(|d| &d.charts) {
+            scenes.push(&chart.scene);
+        }
+        let block = Block {
+            tests: details,
+            tables: &scenes.tables,
+        };
+        let json = crate::safe_text::shown_json(&block).map_err(json_error)?;
+        let s = &scenes.streams;
+        let mut bytes = Vec::with_capacity(json.len() + s.ops.len() + s.xs.len() * 3);
+        for part in [&json, &s.ops, &s.xs, &s.ys, &s.texts] {
+            scene::put_uv(&mut bytes, part.len() as u64);
+        }
+        for part in [&json, &s.ops, &s.xs, &s.ys, &s.texts] {
+            bytes.extend_from_slice(part);
+        }
         let mut deflate = flate2::write::ZlibEncoder::new(Vec::new(), flate2::Compression::best());
-        deflate.write_all(&json).map_err(io_error)?;
-        let bytes = deflate.finish().map_err(io_error)?;
-        Ok(base64::engine::general_purpose::STANDARD.encode(bytes))
+        deflate.write_all(&bytes).map_err(io_error)?;
+        Ok(base85::encode(&deflate.finish().map_err(io_error)?))
     };
     use rayon::prelude::*;
     tests.par_chunks(BLOCK).map(encode).collect()

@@ -4,7 +4,52 @@
 "use strict";
 (function () {
   const data = JSON.parse(document.getElementById("page-data").textContent);
-  const rows = data.rows;
+  // A value of 2 decimals as the data give it: its hundredths, or its text.
+  const fixed2 = (h) => {
+    if (typeof h === "string") return h;
+    const a = Math.abs(h);
+    return (h < 0 ? "-" : "") + Math.floor(a / 100) + "." + String(a % 100).padStart(2, "0");
+  };
+  // The number a text shows, to sort by; null (sorted last) when it shows none.
+  const num = (text) => {
+    const v = parseFloat(text);
+    return Number.isFinite(v) ? v : null;
+  };
+  // The rows from their columns (rows.rs): one object per axis test.
+  function rowsOf(c, count) {
+    const dict = (d, k) => d.values[d.index[k]];
+    const sparse = (s) => {
+      const m = new Map();
+      s.rows.forEach((k, i) => m.set(k, s.values[i]));
+      return m;
+    };
+    const compensation = sparse(c.compensation), errors = sparse(c.error), over = new Set(c.worst.over);
+    const out = new Array(count);
+    for (let k = 0; k < count; k++) {
+      const machine = dict(c.machine, k), axis = dict(c.axis, k), test = c.test[k];
+      const values = {};
+      for (const [key, col] of c.values) {
+        if (col.value[k] === null) continue;
+        const text = fixed2(col.value[k]), u = col.U[k];
+        values[key] = { symbol: dict(col.symbol, k), text, value: num(text), U_text: u === null ? null : fixed2(u) };
+      }
+      const ratio = c.worst.ratio[k];
+      const comp = compensation.get(k);
+      out[k] = {
+        id: `${machine}|${axis}|${test}`, machine, axis, test, tests: c.tests[k],
+        kind: dict(c.kind, k), standard: dict(c.standard, k), travel_text: dict(c.travel, k), n: c.n[k],
+        unit: dict(c.unit, k), values,
+        worst: ratio === null ? null : { text: `${dict(c.worst.symbol, k)} ${fixed2(ratio)}`, ratio: num(fixed2(ratio)), over: over.has(k) },
+        verdict: dict(c.verdict, k), decision_rule: dict(c.decision_rule, k), rules: dict(c.rules, k),
+        warnings: dict(c.warnings, k), diagnosis: dict(c.diagnosis, k),
+        compensation: comp ? { text: `${fixed2(comp[0])} → ${fixed2(comp[1])}`, predicted: num(fixed2(comp[1])) } : null,
+        trend: dict(c.trend, k), error: errors.has(k) ? errors.get(k) : null,
+      };
+      out[k].travel = out[k].travel_text === null ? null : num(out[k].travel_text);
+    }
+    return out;
+  }
+  const rows = rowsOf(data.rows, data.count);
   // The page's words in its language (axcheck's catalogues): `tr(key, {name: value})`
   // fills each `{name}`.
   const T = data.t || {};
@@ -55,7 +100,7 @@
     {
       key: "worst", label: tr("summary-worst"), num: true, title: tr("html-worst-title"),
       sort: (r) => (r.worst ? r.worst.ratio : null),
-      cell: (r) => (r.worst ? el("span", { class: r.worst.ratio > 1 ? "over" : null }, r.worst.text) : dash),
+      cell: (r) => (r.worst ? el("span", { class: r.worst.over ? "over" : null }, r.worst.text) : dash),
     },
     headline("A"), headline("E"), headline("M"), headline("R"), headline("B"),
     { key: "unit", label: tr("col-unit"), sort: (r) => r.unit, cell: (r) => r.unit || dash },
@@ -284,12 +329,136 @@
   const blocks = new Map();
   let encoded = null;
 
-  async function inflate(b64) {
-    const bin = atob(b64);
-    const bytes = new Uint8Array(bin.length);
-    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
-    const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
-    return JSON.parse(await new Response(stream).text());
+  // A block (mod.rs): base 85 → zlib → the lengths of its five parts, its JSON, then
+  // its charts' byte streams (scene.rs), from which each chart's paths are made again.
+  const B85 = "!#$%'()*+,-./0123456789:;=?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[]^_`abcdefghijklmnopqrstuvwxyz";
+  const DIGIT = new Uint8Array(128);
+  for (let i = 0; i < 85; i++) DIGIT[B85.charCodeAt(i)] = i;
+  function base85(text) {
+    const n = text.length, full = Math.floor(n / 5), rest = n % 5;
+    if (rest === 1) throw new Error("truncated block");
+    const out = new Uint8Array(full * 4 + (rest ? rest - 1 : 0));
+    let o = 0;
+    for (let i = 0; i < n; i += 5) {
+      let v = 0;
+      for (let j = i; j < i + 5; j++) v = v * 85 + (j < n ? DIGIT[text.charCodeAt(j)] : 84);
+      for (let b = 0, m = Math.min(4, n - i - 1); b < m; b++) out[o++] = (v >>> (24 - 8 * b)) & 255;
+    }
+    return out;
+  }
+  // LEB128 (and zigzag for signed numbers) from a byte stream.
+  function stream(bytes) {
+    let at = 0;
+    const u = () => {
+      let v = 0, scale = 1, b;
+      do {
+        if (at >= bytes.length) throw new Error("truncated block");
+        b = bytes[at++];
+        v += (b & 127) * scale;
+        scale *= 128;
+      } while (b & 128);
+      return v;
+    };
+    return {
+      u, s: () => { const v = u(); return v % 2 ? -(v + 1) / 2 : v / 2; },
+      get at() { return at; }, set at(p) { at = p; },
+    };
+  }
+  const FORMS = 4;
+  // One outline as SVG path data, as the PDF's scene writes it.
+  function pathOf(kind, points, r) {
+    const [x, y] = points[0] || [];
+    if (kind === "rect") return `M${x},${y} H${points[1][0]} V${points[1][1]} H${x} Z`;
+    if (kind === "circle") return `M${x - r},${y} a${r},${r} 0 1,0 ${2 * r},0 a${r},${r} 0 1,0 -${2 * r},0 Z`;
+    const d = points.map(([px, py], i) => `${i ? " L" : "M"}${px},${py}`).join("");
+    return kind === "polygon" ? d + " Z" : d;
+  }
+  function readScene(st, tables) {
+    const { ops, xs, ys, texts } = st;
+    const width = ops.u(), height = ops.u(), shapes = [];
+    const forms = [];
+    let cx = 0, cy = 0;
+    const point = () => { cx += xs.s(); cy += ys.s(); return [cx, cy]; };
+    for (let n = ops.u(); n > 0; n--) {
+      const paint = tables.paints[ops.u()];
+      const parts = [];
+      for (let m = ops.u(); m > 0; m--) {
+        const op = ops.u();
+        let form;
+        if (op < FORMS) {
+          form = forms.splice(op, 1)[0];
+          forms.unshift(form);
+          const [ax, ay] = point();
+          parts.push(pathOf(form.kind, form.rel.map(([dx, dy]) => [ax + dx, ay + dy]), form.r));
+          continue;
+        }
+        const kind = ["line", "polygon", "rect", "circle"][op - FORMS];
+        let points, r;
+        if (kind === "line" || kind === "polygon") points = Array.from({ length: ops.u() }, point);
+        else if (kind === "rect") { const a = point(); points = [a, [a[0] + xs.s(), a[1] + ys.s()]]; }
+        else if (kind === "circle") { r = ops.u(); points = [point()]; }
+        else throw new Error("unknown op " + op);
+        parts.push(pathOf(kind, points, r));
+        if (!points.length) continue;
+        const [x0, y0] = points[0];
+        form = { kind, r, rel: points.map(([x, y]) => [x - x0, y - y0]) };
+        forms.unshift(form);
+        forms.length = Math.min(forms.length, FORMS);
+      }
+      shapes.push(Object.assign({}, paint, { d: parts.join(" ") }));
+    }
+    const out = [];
+    let tx = 0, ty = 0;
+    for (let n = texts.u(); n > 0; n--) {
+      const style = tables.styles[texts.u()];
+      tx += texts.s();
+      ty += texts.s();
+      out.push(Object.assign({}, style, { x: tx, y: ty, text: tables.strings[texts.u()] }));
+    }
+    return { width, height, shapes, texts: out };
+  }
+  // Reads past a scene without making it: the page makes only the opened test's charts.
+  function skipScene(st) {
+    const { ops, xs, ys, texts } = st;
+    const point = () => { xs.u(); ys.u(); };
+    ops.u(); ops.u();
+    for (let n = ops.u(); n > 0; n--) {
+      ops.u();
+      for (let m = ops.u(); m > 0; m--) {
+        const op = ops.u() - FORMS;
+        if (op < 0) point();
+        else if (op <= 1) for (let p = ops.u(); p > 0; p--) point();
+        else if (op === 2) { point(); point(); }
+        else if (op === 3) { ops.u(); point(); }
+        else throw new Error("unknown op " + (op + FORMS));
+      }
+    }
+    for (let n = texts.u() * 4; n > 0; n--) texts.u();
+  }
+  async function inflate(text) {
+    const inflated = new Blob([base85(text)]).stream().pipeThrough(new DecompressionStream("deflate"));
+    const bytes = new Uint8Array(await new Response(inflated).arrayBuffer());
+    const head = stream(bytes);
+    const lengths = [0, 0, 0, 0, 0].map(() => head.u());
+    let from = bytes.length - lengths.reduce((a, b) => a + b, 0);
+    if (from < 1) throw new Error("truncated block");
+    const parts = lengths.map((n) => bytes.subarray(from, (from += n)));
+    const block = JSON.parse(new TextDecoder().decode(parts[0]));
+    const st = { ops: stream(parts[1]), xs: stream(parts[2]), ys: stream(parts[3]), texts: stream(parts[4]) };
+    const names = ["ops", "xs", "ys", "texts"];
+    // Where each test's scenes start in the four streams; its charts are made when opened.
+    const starts = block.tests.map((d) => {
+      const at = names.map((name) => st[name].at);
+      for (let i = 0; i < d.charts.length; i++) skipScene(st);
+      return at;
+    });
+    return block.tests.map((d, i) => () => {
+      if (d.charts.length && !d.charts[0].scene) {
+        names.forEach((name, j) => { st[name].at = starts[i][j]; });
+        for (const ch of d.charts) ch.scene = readScene(st, block);
+      }
+      return d;
+    });
   }
   // The details follow this script in the page: read once the page is parsed.
   const parsed = new Promise((done) => {
@@ -303,9 +472,8 @@
       if (encoded === null) encoded = JSON.parse(document.getElementById("details-data").textContent);
       blocks.set(b, inflate(encoded[b]));
     }
-    return (await blocks.get(b))[k % data.block];
+    return (await blocks.get(b))[k % data.block]();
   }
-
   let opening = 0;
   async function open(k, focus) {
     if (k === undefined) return;
