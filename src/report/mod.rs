@@ -69,6 +69,32 @@ pub enum ReportError {
     },
 }
 
+/// `/words.json` of `lang`: `{"lang": …, "t": {key: message}}`, made once per language.
+fn words_json(lang: crate::lang::Lang) -> Vec<u8> {
+    use std::sync::LazyLock;
+    #[derive(serde::Serialize)]
+    struct WordsFile {
+        lang: &'static str,
+        t: &'static std::collections::BTreeMap<String, String>,
+    }
+    static ALL: LazyLock<Vec<(crate::lang::Lang, Vec<u8>)>> = LazyLock::new(|| {
+        (crate::lang::Lang::ALL.into_iter())
+            .map(|lang| {
+                let words = Words::new(lang);
+                let file = WordsFile {
+                    lang: lang.code(),
+                    t: words.all(),
+                };
+                let bytes = serde_json::to_vec(&file).expect("the catalogues serialise");
+                (lang, bytes)
+            })
+            .collect()
+    });
+    (ALL.iter().find(|(l, _)| *l == lang))
+        .map(|(_, bytes)| bytes.clone())
+        .expect("every language")
+}
+
 /// A document's files (virtual path → bytes) and charts (name → scene).
 #[derive(Default)]
 struct Files {
@@ -77,27 +103,24 @@ struct Files {
 }
 
 impl Files {
-    /// `/data.json`: `data` with the words of the document's language (`lang`, `t`: every
-    /// message of its catalogue, which the templates' `tr` reads).
+    /// `/data.json`: `data`; and `/words.json`: the document's language (`lang`) and its
+    /// words (`t`: every message of its catalogue, which the templates' `tr` reads).
+    ///
+    /// The words are a file of their own, the same bytes in every document of a language:
+    /// `style.typ` reads them, so Typst evaluates it once per language and reuses its
+    /// functions' layout from one report to the next. With the words in `/data.json`,
+    /// which differs in every report, it was evaluated again each time and every call of
+    /// `tr` hashed the whole catalogue: two thirds more time per report.
     fn data(
         document: &str,
         data: &impl serde::Serialize,
         words: &Words,
     ) -> Result<Files, ReportError> {
-        #[derive(serde::Serialize)]
-        struct WithWords<'a, T> {
-            #[serde(flatten)]
-            data: &'a T,
-            lang: &'static str,
-            t: &'a std::collections::BTreeMap<String, String>,
-        }
-        let with = WithWords {
-            data,
-            lang: words.lang().code(),
-            t: words.all(),
-        };
         let mut files = Files::default();
-        files.push(document, "/data.json".into(), &with)?;
+        files.push(document, "/data.json".into(), data)?;
+        files
+            .files
+            .push(("/words.json".into(), words_json(words.lang())));
         Ok(files)
     }
 

@@ -449,8 +449,8 @@ mod tests {
             ),
         ]);
         let typesetter = Typesetter::new(templates).unwrap();
-        // style.typ reads the report's words from /data.json (`t`, `lang`).
-        let data = vec![("/data.json".to_string(), b"{}".to_vec())];
+        // style.typ reads the report's words from /words.json (`t`, `lang`).
+        let data = vec![("/words.json".to_string(), b"{}".to_vec())];
         let world = DocumentWorld::new(&typesetter, "/main.typ", data, vec![], None).unwrap();
         let doc = typst::compile::<PagedDocument>(&world).output.unwrap();
         let mut all = Vec::new();
