@@ -64,7 +64,7 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.1f", a / b}'; }
 rows=()
 row() {
   local what=$1 axes=$2 jobs=$3 runs=$4; shift 4
-  read -r wall mb < <(measure "$runs" "$@")
+  read -r wall mb _ < <(measure "$runs" "$@")
   rows+=("| $what | $axes | $jobs | $wall | $mb | $runs |")
   echo "$what axes=$axes jobs=$jobs: median ${wall} s, peak ${mb} MB ($runs runs)" >&2
 }
@@ -146,9 +146,9 @@ if [ -n "${BASELINE:-}" ]; then
     local what=$1 axes=$2 runs=$3; shift 3
     local ratios=() ours_walls=() base_walls=() ours_mb=0 base_mb=0
     for _ in $(seq "$runs"); do
-      read -r ours mb < <(measure 1 "$BIN" "$@")
+      read -r ours mb _ < <(measure 1 "$BIN" "$@")
       [ "$mb" -gt "$ours_mb" ] && ours_mb=$mb
-      read -r base mb < <(measure 1 "$BASELINE" "$@")
+      read -r base mb _ < <(measure 1 "$BASELINE" "$@")
       [ "$mb" -gt "$base_mb" ] && base_mb=$mb
       ours_walls+=("$ours"); base_walls+=("$base")
       ratios+=("$(awk -v a="$base" -v b="$ours" 'BEGIN {printf "%.2f", a / b}')")
