@@ -85,7 +85,7 @@ fn targets_given_are_checked_by_the_rules() {
     let ids: Vec<&str> = few.findings.iter().map(|f| f.id).collect();
     assert_eq!(ids, ["iso-4.3.2-targets"]);
     assert_eq!(
-        few.findings[0].message,
+        &*few.findings[0].message,
         "4 targets over 600 mm of measurement travel; at least 5 per metre and 5 in all are needed (5): add 1 target(s)"
     );
 }
