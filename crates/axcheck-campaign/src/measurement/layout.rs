@@ -81,11 +81,12 @@ pub struct Recognised {
     pub layout: Layout,
     pub notes: Vec<String>,
     /// What the file says of its test beyond the readings (Renishaw USER-TEXT and
-    /// ENVIRONMENT), when it says anything.
-    pub info: Option<super::FileInfo>,
+    /// ENVIRONMENT), when it says anything. Boxed, as `reported`: most files say nothing,
+    /// and a 10 000-axis check holds one of these per axis.
+    pub info: Option<Box<super::FileInfo>>,
     /// The results the tool that wrote the file printed in it (the ecmc ISO 230 app's
     /// Status list), set beside axcheck's by [`crate::crosscheck`].
-    pub reported: Option<super::reported::ToolResults>,
+    pub reported: Option<Box<super::reported::ToolResults>>,
 }
 
 impl Serialize for Recognised {
@@ -114,7 +115,7 @@ impl Serialize for Recognised {
             sheet,
             table,
             notes: &self.notes,
-            file_info: self.info.as_ref(),
+            file_info: self.info.as_deref(),
         }
         .serialize(serializer)
     }

@@ -125,7 +125,7 @@ pub fn read_with<R: BufRead>(
                     layout: Layout::EcmcReport,
                     notes,
                     info: None,
-                    reported,
+                    reported: reported.map(Box::new),
                 },
             });
         }
@@ -193,7 +193,7 @@ fn read_ecmc_app<R: BufRead>(
             layout,
             notes,
             info: None,
-            reported,
+            reported: reported.map(Box::new),
         },
     })
 }
@@ -244,7 +244,7 @@ fn read_renishaw<R: BufRead>(reader: R, file: &str) -> Result<ReadTest, ReadErro
         recognised: Recognised {
             layout,
             notes: test.notes,
-            info,
+            info: info.map(Box::new),
             reported: None,
         },
     })
