@@ -22,15 +22,33 @@ pub(crate) const RULE: Rule = Rule {
 
 fn check(plan: &Plan) -> Option<String> {
     let missing = plan.ctx.unstated.as_deref()?;
-    (!missing.is_empty()).then(|| {
-        format!(
-            "{} of the test conditions of clause 7.1 not stated: {}; state them under the axis's `conditions:` (instrument, equipment, temperatures …), the machine's `model` and `type`, the axis's `travel` and the campaign's `date`",
-            missing.len(),
-            (missing.iter().map(|m| lower_first(m)))
-                .collect::<Vec<_>>()
-                .join(", ")
-        )
+    (!missing.is_empty()).then(|| remembered(missing))
+}
+
+/// The message for `missing`, formatted once per worker while the tests it judges one
+/// after another miss the same items (a fleet's axes mostly do).
+fn remembered(missing: &[&'static str]) -> String {
+    use std::cell::RefCell;
+    thread_local! {
+        static LAST: RefCell<(Vec<&'static str>, String)> = const { RefCell::new((Vec::new(), String::new())) };
+    }
+    LAST.with(|last| {
+        let mut last = last.borrow_mut();
+        if last.0 != missing || last.1.is_empty() {
+            *last = (missing.to_vec(), message(missing));
+        }
+        last.1.clone()
     })
+}
+
+fn message(missing: &[&'static str]) -> String {
+    format!(
+        "{} of the test conditions of clause 7.1 not stated: {}; state them under the axis's `conditions:` (instrument, equipment, temperatures …), the machine's `model` and `type`, the axis's `travel` and the campaign's `date`",
+        missing.len(),
+        (missing.iter().map(|m| lower_first(m)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
 }
 
 /// `position of the measuring instrument` from the report's `Position of …` (an
