@@ -73,6 +73,8 @@ fn integrate(terms: &[(f64, f64)], tolerance: f64) -> f64 {
 struct Distinct {
     lambdas: Vec<f64>,
     terms: Vec<(usize, f64)>,
+    /// (atan(λ u), log1p(λ² u²)) per distinct λ, refilled at each u.
+    values: std::cell::RefCell<Vec<(f64, f64)>>,
 }
 
 impl Distinct {
@@ -89,19 +91,17 @@ impl Distinct {
                 (k, h)
             })
             .collect();
-        Distinct { lambdas, terms }
+        let values = std::cell::RefCell::new(vec![(0.0, 0.0); lambdas.len()]);
+        Distinct {
+            lambdas,
+            terms,
+            values,
+        }
     }
 
     /// `add(h, atan(λ u), log1p(λ² u²))` for each term in order.
     fn each(&self, u: f64, mut add: impl FnMut(f64, f64, f64)) {
-        let mut values = [(0.0, 0.0); 64];
-        let mut spill = Vec::new();
-        let values: &mut [(f64, f64)] = if self.lambdas.len() <= values.len() {
-            &mut values[..self.lambdas.len()]
-        } else {
-            spill.resize(self.lambdas.len(), (0.0, 0.0));
-            &mut spill
-        };
+        let mut values = self.values.borrow_mut();
         for (v, &l) in values.iter_mut().zip(&self.lambdas) {
             *v = (libm::atan(l * u), libm::log1p(l * l * u * u));
         }
