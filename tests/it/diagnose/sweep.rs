@@ -627,6 +627,8 @@ fn sweep_of_each_pair_of_effects() {
         .collect();
     let only = std::env::var("SWEEP_ONLY").unwrap_or_default();
     let skip = std::env::var("SWEEP_SKIP").ok();
+    // SWEEP_GAINS=1: each judged term's held-out gain and threshold beside the seeds shown.
+    let gains = std::env::var_os("SWEEP_GAINS").is_some();
     let per_seed: Vec<Vec<Option<PairOutcome>>> = (0..SWEEP)
         .into_par_iter()
         .map(|s| {
@@ -690,11 +692,16 @@ fn sweep_of_each_pair_of_effects() {
                     let unconfirmed: Vec<&str> = (d.unconfirmed.iter())
                         .map(|u| u.finding.effect().name())
                         .collect();
-                    let label = format!(
+                    let mut label = format!(
                         "{}: {} (unconfirmed {unconfirmed:?})",
                         base.seed,
                         d.effects_label()
                     );
+                    if gains {
+                        for g in &d.term_gains {
+                            label += &format!("\n    {}", g.describe("µm"));
+                        }
+                    }
                     Some(PairOutcome {
                         right,
                         other,
@@ -729,10 +736,10 @@ fn sweep_of_each_pair_of_effects() {
             let wrong: Vec<&str> = (results.iter())
                 .filter(|r| !r.right || r.other)
                 .map(|r| r.label.as_str())
-                .take(10)
+                .take(if gains { 40 } else { 10 })
                 .collect();
             failures.push(format!(
-                "{name}: right {right:.1} %, other {other:.1} %: {wrong:?}"
+                "{name}: right {right:.1} %, other {other:.1} %: {wrong:#?}"
             ));
         }
     }
