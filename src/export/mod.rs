@@ -204,7 +204,7 @@ fn write_files(
     out: &crate::atomic::OutputDir,
     files: &[OutputFile<'_>],
 ) -> Result<Vec<(PathBuf, crate::atomic::OutputError)>, ExportError> {
-    let here = |work: &(dyn Fn() + Sync)| {
+    let here = |_thread: usize, work: &(dyn Fn() + Sync)| {
         work();
         Ok::<(), crate::atomic::OutputError>(())
     };

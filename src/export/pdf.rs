@@ -67,7 +67,8 @@ enum Job<'a> {
 /// one worker (stack overflow on 1 000 reports), and bounding that with chunks left cores
 /// idle at every chunk's end (about a fifth of the run). Here each worker is the single
 /// thread of a rayon pool of its own and runs a report from start to end, its page layout
-/// included (no hand-off to a shared pool, no other report to take up while it waits).
+/// included (no hand-off to a shared pool, no other report to take up while it waits),
+/// with fonts of its own ([`report::typeset::world::on_font_lane`]).
 /// Typst's caches are evicted after every [`REPORTS_PER_EVICTION`] finished reports,
 /// which keeps memory bounded; comemo's caches are safe to evict while others compile.
 fn typeset_all<'a>(
@@ -77,13 +78,13 @@ fn typeset_all<'a>(
 ) -> Result<Vec<OutputFile<'static>>, report::ReportError> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let finished = AtomicUsize::new(0);
-    let in_own_pool = |work: &(dyn Fn() + Sync)| match rayon::ThreadPoolBuilder::new()
+    let in_own_pool = |thread: usize, work: &(dyn Fn() + Sync)| match rayon::ThreadPoolBuilder::new()
         .num_threads(1)
         .stack_size(WORKER_STACK)
         .build()
     {
         Ok(pool) => {
-            pool.install(work);
+            pool.install(|| report::typeset::world::on_font_lane(thread, work));
             Ok(())
         }
         Err(e) => Err(report::ReportError::Typeset {

@@ -7,13 +7,13 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 /// Runs `task` on every item with up to `threads` scoped threads and returns the results
 /// in the items' order. After the first error no new item is started and that error is
-/// returned. `around` runs each thread's loop (called with it), e.g. inside a thread pool
-/// of its own, and may fail to (then its error is returned); a panic in a task is raised
-/// again here.
+/// returned. `around` runs each thread's loop (called with the thread's index, from 0, and
+/// the loop), e.g. inside a thread pool of its own, and may fail to (then its error is
+/// returned); a panic in a task is raised again here.
 pub(crate) fn map_in_order<T, R, E>(
     items: &[T],
     threads: usize,
-    around: impl Fn(&(dyn Fn() + Sync)) -> Result<(), E> + Sync,
+    around: impl Fn(usize, &(dyn Fn() + Sync)) -> Result<(), E> + Sync,
     task: impl Fn(&T) -> Result<R, E> + Sync,
 ) -> Result<Vec<R>, E>
 where
@@ -37,7 +37,10 @@ where
     };
     let started: Result<(), E> = std::thread::scope(|scope| {
         let handles: Vec<_> = (0..threads.clamp(1, items.len().max(1)))
-            .map(|_| scope.spawn(|| around(&work)))
+            .map(|thread| {
+                let (around, work) = (&around, &work);
+                scope.spawn(move || around(thread, work))
+            })
             .collect();
         let mut started = Ok(());
         for handle in handles {
@@ -62,7 +65,7 @@ where
 mod tests {
     use super::*;
 
-    fn run<E>(work: &(dyn Fn() + Sync)) -> Result<(), E> {
+    fn run<E>(_thread: usize, work: &(dyn Fn() + Sync)) -> Result<(), E> {
         work();
         Ok(())
     }

@@ -10,6 +10,7 @@
 use crate::report::typeset::drawing::chart_drawing;
 use crate::report::typeset::text_lines::{text_columns, text_lines, text_widths};
 use axcheck_charts::chart_kit::scene::Scene;
+use std::cell::Cell;
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 use typst::diag::{FileError, FileResult};
@@ -44,6 +45,9 @@ pub(crate) struct Typesetter {
     library: LazyHash<Library>,
     book: LazyHash<FontBook>,
     fonts: Vec<Font>,
+    /// Each further typesetting thread's own copies of the fonts (see [`on_font_lane`]),
+    /// made when a document of that thread first asks for one: lane 1's at index 0.
+    lanes: Vec<Vec<OnceLock<Font>>>,
     /// The templates by virtual path (`/axis-report.typ` …), parsed once: every document
     /// shares them (parsing them again for each report cost 3 % of its time), and Typst's
     /// caches see the same modules each time.
@@ -70,13 +74,59 @@ impl Typesetter {
         library.global.scope_mut().define_func::<text_lines>();
         library.global.scope_mut().define_func::<text_columns>();
         library.global.scope_mut().define_func::<text_widths>();
+        // At least one lane besides the fonts themselves, so that a test sees two.
+        let threads = std::thread::available_parallelism().map_or(2, |n| n.get().max(2));
+        let lanes = (1..threads)
+            .map(|_| fonts.iter().map(|_| OnceLock::new()).collect())
+            .collect();
         Some(Typesetter {
             library: LazyHash::new(library),
             book: LazyHash::new(FontBook::from_fonts(&fonts)),
             fonts,
+            lanes,
             sources,
         })
     }
+
+    /// Font `index` of the calling thread's lane.
+    fn font(&self, index: usize) -> Option<Font> {
+        let font = self.fonts.get(index)?;
+        let lane = LANE.get() % (self.lanes.len() + 1);
+        let Some(copies) = lane.checked_sub(1).and_then(|l| self.lanes.get(l)) else {
+            return Some(font.clone());
+        };
+        Some(copies[index].get_or_init(|| lane_copy(font, lane)).clone())
+    }
+}
+
+thread_local! {
+    /// The font lane of documents typeset on this thread.
+    static LANE: Cell<usize> = const { Cell::new(0) };
+}
+
+/// Runs `work` with the documents it typesets on this thread using the fonts of `lane`
+/// (e.g. the index of a typesetting thread; 0, the default, is the loaded fonts themselves).
+///
+/// Why: typst-pdf memoises the PDF font it builds for a Typst font, keyed by the font's
+/// bytes, so documents exported at once on several threads shared one font object and
+/// incremented and decremented its reference count for every glyph they wrote. On two
+/// cores that cache line moving between them cost a third more CPU for the reports
+/// (`bench/results.md`, "Reports: one font object per thread"). A lane's fonts are the
+/// same faces with `lane` zero bytes appended, which no table points to: other keys, so
+/// objects of their own, and the same glyphs, metrics and embedded subsets, so the same
+/// PDF whichever thread wrote it.
+pub fn on_font_lane<R>(lane: usize, work: impl FnOnce() -> R) -> R {
+    let before = LANE.replace(lane);
+    let result = work();
+    LANE.set(before);
+    result
+}
+
+/// `font`'s face over its bytes followed by `lane` zero bytes.
+fn lane_copy(font: &Font, lane: usize) -> Font {
+    let mut data = font.data().as_slice().to_vec();
+    data.resize(data.len() + lane, 0);
+    Font::new(Bytes::new(data), font.index()).unwrap_or_else(|| font.clone())
 }
 
 /// A virtual path's file id.
@@ -207,7 +257,7 @@ impl World for DocumentWorld<'_> {
     }
 
     fn font(&self, index: usize) -> Option<Font> {
-        self.typesetter.fonts.get(index).cloned()
+        self.typesetter.font(index)
     }
 
     fn today(&self, _offset: Option<typst::foundations::Duration>) -> Option<Datetime> {
@@ -218,6 +268,42 @@ impl World for DocumentWorld<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A document typeset with another lane's fonts is the same PDF, byte for byte, though
+    /// the fonts are other objects with other bytes.
+    #[test]
+    fn a_font_lane_gives_the_same_pdf_from_fonts_of_its_own() {
+        let main = "#set text(font: (\"Inter\", \"Droid Sans Fallback\"))\n\
+                    Станок 16К20Ф3, A↑ = 5.26 µm, 立式加工中心\n\n\
+                    #text(font: \"DejaVu Sans Mono\", weight: \"bold\")[X̄i↑ 0.0280]";
+        let templates = HashMap::from([("/main.typ".to_string(), main.to_string())]);
+        let typesetter = Typesetter::new(templates).unwrap();
+        let pdf_on = |lane: usize| {
+            on_font_lane(lane, || {
+                let world = DocumentWorld::new(&typesetter, "/main.typ", vec![], vec![], None);
+                let world = world.unwrap();
+                let doc = typst::compile::<typst_layout::PagedDocument>(&world);
+                let options = typst_pdf::PdfOptions {
+                    ident: typst::foundations::Smart::Custom("lane".into()),
+                    ..typst_pdf::PdfOptions::default()
+                };
+                let fonts: Vec<Font> = (0..typesetter.fonts.len())
+                    .filter_map(|i| world.font(i))
+                    .collect();
+                (typst_pdf::pdf(&doc.output.unwrap(), &options).unwrap(), fonts)
+            })
+        };
+        let (first, fonts_0) = pdf_on(0);
+        let (second, fonts_1) = pdf_on(1);
+        assert!(first.len() > 1000);
+        assert_eq!(first, second);
+        for (a, b) in fonts_0.iter().zip(&fonts_1) {
+            assert_ne!(a, b, "{}", a.info().family);
+            assert_eq!(a.data().len() + 1, b.data().len());
+            assert_eq!(a.info(), b.info());
+        }
+        assert_eq!(LANE.get(), 0, "the lane is the thread's again after the work");
+    }
 
     /// Every letter of the names campaign (tests/data/names/) and of GB/T 17421.2's terms
     /// (a report in simplified Chinese) has a glyph in an embedded face: the one the
