@@ -78,20 +78,21 @@ fn typeset_all<'a>(
 ) -> Result<Vec<OutputFile<'static>>, report::ReportError> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let finished = AtomicUsize::new(0);
-    let in_own_pool = |thread: usize, work: &(dyn Fn() + Sync)| match rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
-        .stack_size(WORKER_STACK)
-        .build()
-    {
-        Ok(pool) => {
-            pool.install(|| report::typeset::world::on_font_lane(thread, work));
-            Ok(())
-        }
-        Err(e) => Err(report::ReportError::Typeset {
-            document: "reports".into(),
-            message: format!("a typesetting thread could not be started: {e}"),
-        }),
-    };
+    let in_own_pool =
+        |thread: usize, work: &(dyn Fn() + Sync)| match rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .stack_size(WORKER_STACK)
+            .build()
+        {
+            Ok(pool) => {
+                pool.install(|| report::typeset::world::on_font_lane(thread, work));
+                Ok(())
+            }
+            Err(e) => Err(report::ReportError::Typeset {
+                document: "reports".into(),
+                message: format!("a typesetting thread could not be started: {e}"),
+            }),
+        };
     let files = super::workers::map_in_order(jobs, workers, in_own_pool, |job| {
         let file = typeset(job);
         if (finished.fetch_add(1, Ordering::Relaxed) + 1).is_multiple_of(REPORTS_PER_EVICTION) {

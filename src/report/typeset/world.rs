@@ -290,7 +290,10 @@ mod tests {
                 let fonts: Vec<Font> = (0..typesetter.fonts.len())
                     .filter_map(|i| world.font(i))
                     .collect();
-                (typst_pdf::pdf(&doc.output.unwrap(), &options).unwrap(), fonts)
+                (
+                    typst_pdf::pdf(&doc.output.unwrap(), &options).unwrap(),
+                    fonts,
+                )
             })
         };
         let (first, fonts_0) = pdf_on(0);
@@ -302,7 +305,11 @@ mod tests {
             assert_eq!(a.data().len() + 1, b.data().len());
             assert_eq!(a.info(), b.info());
         }
-        assert_eq!(LANE.get(), 0, "the lane is the thread's again after the work");
+        assert_eq!(
+            LANE.get(),
+            0,
+            "the lane is the thread's again after the work"
+        );
     }
 
     /// Every letter of the names campaign (tests/data/names/) and of GB/T 17421.2's terms
