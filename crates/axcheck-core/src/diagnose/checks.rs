@@ -113,9 +113,14 @@ impl std::ops::IndexMut<Statistic> for Statistics {
 
 /// The statistics of one test (NaN where one does not apply).
 pub(crate) fn statistics(data: &AxisData) -> Statistics {
+    statistics_with(data, None)
+}
+
+/// [`statistics`], the periodogram's F read after `steps` steps of its refine when given.
+fn statistics_with(data: &AxisData, steps: Option<usize>) -> Statistics {
     let layout = Layout::new(data);
     let x: Vec<f64> = layout.prep.rows.iter().map(|r| r.x).collect();
-    layout.statistics(&x)
+    layout.statistics_with(&x, steps)
 }
 
 /// What [`statistics`] needs of a test besides its deviations: the cells, runs and time
@@ -154,13 +159,8 @@ impl Layout {
         }
     }
 
-    /// The statistics of the deviations `x` (one per row).
-    fn statistics(&self, x: &[f64]) -> Statistics {
-        self.statistics_with(x, None)
-    }
-
-    /// [`Layout::statistics`], the periodogram's highest F read after `steps` steps of its
-    /// refine when given (see [`periodogram::Scanner::max_f`]).
+    /// The statistics of the deviations `x` (one per row), the periodogram's highest F read
+    /// after `steps` steps of its refine when given (see [`periodogram::Scanner::max_f`]).
     fn statistics_with(&self, x: &[f64], steps: Option<usize>) -> Statistics {
         let cells = Cells::of(&self.prep, x);
         let mut out = Statistics([f64::NAN; 8]);
@@ -478,12 +478,7 @@ pub(crate) fn run(
     // Test `s`'s statistics, the periodogram's F bounded after `steps` of its refine.
     let simulate = |s: usize, steps: Option<usize>| match &fast {
         Some(fast) => (fast.layout).statistics_with(&fast.deviations(sim_seed(seed, s)), steps),
-        None => {
-            let data = sim_test(sim, sim_seed(seed, s), strip_times);
-            let layout = Layout::new(&data);
-            let x: Vec<f64> = layout.prep.rows.iter().map(|r| r.x).collect();
-            layout.statistics_with(&x, steps)
-        }
+        None => statistics_with(&sim_test(sim, sim_seed(seed, s), strip_times), steps),
     };
     let mut sims: Vec<Statistics> = (0..count)
         .into_par_iter()
@@ -710,7 +705,7 @@ mod tests {
                     assert!(fast.layout.grid.is_some());
                     for s in 0..12 {
                         let seed = sim_seed(7, s);
-                        let a = fast.layout.statistics(&fast.deviations(seed));
+                        let a = fast.layout.statistics_with(&fast.deviations(seed), None);
                         let b = statistics(&sim_test(&sim, seed, strip));
                         let bits = |v: Statistics| v.0.map(f64::to_bits);
                         assert_eq!(bits(a), bits(b), "{cycle:?} strip {strip} test {s}");
@@ -755,11 +750,16 @@ mod tests {
         for cycle in [Cycle::Standard, Cycle::Pilgrim] {
             let sim = simulation(cycle, base_like());
             let fast = FastSim::new(&sim, 3, false).unwrap();
-            let measured = fast.layout.statistics(&fast.deviations(sim_seed(99, 0)));
+            let measured = fast
+                .layout
+                .statistics_with(&fast.deviations(sim_seed(99, 0)), None);
             let checks = run(&measured, &sim, 200, 3, false);
             let p = Statistic::PeriodogramMaxF;
             let mut full: Vec<f64> = (0..200)
-                .map(|s| fast.layout.statistics(&fast.deviations(sim_seed(3, s)))[p])
+                .map(|s| {
+                    fast.layout
+                        .statistics_with(&fast.deviations(sim_seed(3, s)), None)[p]
+                })
                 .collect();
             full.sort_by(f64::total_cmp);
             let check = checks.iter().find(|c| c.statistic == p.name()).unwrap();
