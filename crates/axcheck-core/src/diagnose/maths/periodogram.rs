@@ -411,11 +411,7 @@ impl Scanner<'_> {
 
     /// Golden-section search for the highest F in [a, b].
     pub(crate) fn refine(&self, a: f64, b: f64) -> f64 {
-        let mut search = Golden::new(self, a, b);
-        for _ in 0..REFINE_STEPS {
-            search.step(self);
-        }
-        search.middle()
+        Golden::after(self, a, b, REFINE_STEPS).middle()
     }
 
     /// The F at the refined frequency of [`Scanner::best`] (`None`), or the highest F the
@@ -426,10 +422,7 @@ impl Scanner<'_> {
         match steps {
             None => self.f_stat(self.refine(a, b)),
             Some(steps) => {
-                let mut search = Golden::new(self, a, b);
-                for _ in 0..steps.min(REFINE_STEPS) {
-                    search.step(self);
-                }
+                let search = Golden::after(self, a, b, steps.min(REFINE_STEPS));
                 search.fc.max(search.fd)
             }
         }
@@ -455,6 +448,8 @@ pub(crate) const PARTIAL_REL: f64 = 0.1;
 
 /// A golden-section search for the highest F, step by step.
 struct Golden {
+    /// (√5 − 1)/2.
+    g: f64,
     a: f64,
     b: f64,
     c: f64,
@@ -463,22 +458,30 @@ struct Golden {
     fd: f64,
 }
 
-/// (√5 − 1)/2.
-fn golden_ratio() -> f64 {
-    (5f64.sqrt() - 1.0) / 2.0
-}
-
 impl Golden {
-    fn new(scanner: &Scanner, a: f64, b: f64) -> Golden {
-        let g = golden_ratio();
+    /// The search on [a, b] after `steps` steps.
+    fn after(scanner: &Scanner, a: f64, b: f64, steps: usize) -> Golden {
+        let g = (5f64.sqrt() - 1.0) / 2.0;
         let c = b - g * (b - a);
         let d = a + g * (b - a);
         let (fc, fd) = (scanner.f_stat(c), scanner.f_stat(d));
-        Golden { a, b, c, d, fc, fd }
+        let mut search = Golden {
+            g,
+            a,
+            b,
+            c,
+            d,
+            fc,
+            fd,
+        };
+        for _ in 0..steps {
+            search.step(scanner);
+        }
+        search
     }
 
     fn step(&mut self, scanner: &Scanner) {
-        let g = golden_ratio();
+        let g = self.g;
         if self.fc > self.fd {
             self.b = self.d;
             self.d = self.c;
