@@ -210,7 +210,14 @@ pub fn finite(table: &Table) -> Result<(), Refused> {
 /// file gives them to the controller), else why the file cannot hold them.
 pub(crate) fn printed_increasing(positions: &[f64], decimals: usize) -> Result<(), Refused> {
     let scale = 10f64.powi(decimals as i32);
-    let printed = |p: f64| (p * scale).round();
+    // The value as printed, not (p · 10ⁿ).round(): that rounds the product, which may round
+    // the other way than the decimal expansion the file gets (25.0000005 is printed
+    // 25.000000, but 25.0000005 · 10⁶ is 25000000.5, rounded up).
+    let printed = |p: f64| {
+        crate::units::fmt_fixed(p, decimals)
+            .parse::<f64>()
+            .unwrap_or(f64::NAN)
+    };
     match positions
         .windows(2)
         .find(|w| printed(w[1]) <= printed(w[0]))
@@ -252,4 +259,21 @@ pub fn axis_name(table: &Table) -> Result<&str, Refused> {
 /// `notes` as comment lines starting with `mark`.
 pub(crate) fn commented(mark: &str, notes: &[String]) -> String {
     notes.iter().map(|n| format!("{mark}{n}\n")).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two positions printed alike are refused although their product with 10ⁿ rounds
+    /// apart (found by the `controllers` fuzz target: an ecmc table whose positions 25 and
+    /// 25.0000005 were both written as 25.000000, which ecmc refuses).
+    #[test]
+    fn positions_printed_alike_are_refused() {
+        assert_eq!(crate::units::fmt_fixed(25.0000005, 6), "25.000000");
+        assert!(printed_increasing(&[0.0, 25.0, 25.0000005, 100.0], 6).is_err());
+        assert!(printed_increasing(&[0.0, 25.0, 25.000001, 100.0], 6).is_ok());
+        assert!(printed_increasing(&[0.0, 0.00004, 1.0], 4).is_err());
+        assert!(printed_increasing(&[0.0, 0.0001, 1.0], 4).is_ok());
+    }
 }
