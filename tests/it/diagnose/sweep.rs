@@ -743,9 +743,11 @@ fn sweep_of_each_pair_of_effects() {
             "{name:<40} {:>6} {right:>14.1} {both:>12.1} {other:>16.1}",
             results.len()
         ));
-        let open = OPEN_PAIRS.contains(&(a, b));
+        let open = OPEN_PAIRS.iter().find(|p| (p.0, p.1) == (a, b));
         let held = right >= 96.0 && other <= 2.0;
-        if !held && (!open || std::env::var("SWEEP_SHOW").is_ok()) {
+        // An open pair is held to what it reached, so that it cannot slip back unseen.
+        let slipped = open.is_some_and(|p| right < p.2 || other > p.3);
+        if slipped || (!held && (open.is_none() || std::env::var("SWEEP_SHOW").is_ok())) {
             let wrong: Vec<&str> = (results.iter())
                 .filter(|r| !r.right || r.other)
                 .map(|r| r.label.as_str())
@@ -801,7 +803,9 @@ fn beyond(d: &Diagnosis, e: Effect, size: f64) -> bool {
 /// prints its seeds named wrong too. The periodic error beside run offsets left this list
 /// on 2026-11-30 (91 → 97 % right, 3 → 2 % other): the periodic term's block rounded to the
 /// nearest target and the run offsets' stated size calibrated to 80 % (see the README).
-const OPEN_PAIRS: &[(Effect, Effect)] = {
+/// Each pair with the rates it reached (named right %, at least; other findings %, at
+/// most), which the sweep holds it to until it meets the issue's.
+const OPEN_PAIRS: &[(Effect, Effect, f64, f64)] = {
     use Effect::*;
-    &[(WarmUp, RunOffset)]
+    &[(WarmUp, RunOffset, 97.5, 3.5)]
 };
