@@ -22,6 +22,11 @@
 //! [`lock`] and [`safe_text`] (input text made safe for each output); [`simulate`] writes
 //! simulation files and synthetic fleets.
 
+// The documentation is for the developers of this workspace and is built with its
+// private items (`cargo doc --document-private-items`), where a public item's doc may
+// link to the private item it is built on.
+#![allow(rustdoc::private_intra_doc_links)]
+
 pub mod export;
 pub mod history;
 #[cfg(feature = "pdf")]

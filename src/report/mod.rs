@@ -3,7 +3,7 @@
 //!
 //! Report data reach the templates only as virtual files, never spliced into markup:
 //! `/data.json` (read with `json(...)`; a machine named `#read("/etc/passwd")` is printed
-//! as those characters) and per chart its drawing and labels (see [`chart_files`]). Every
+//! as those characters) and per chart its drawing and labels (see [`Files::chart`]). Every
 //! document uses the same virtual paths, so Typst's global file-id table does not grow
 //! with the number of reports.
 

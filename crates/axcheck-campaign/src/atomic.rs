@@ -1,6 +1,6 @@
 //! Safe file output.
 //!
-//! [`write`] is atomic: the bytes go to a temporary file beside the target
+//! [`write()`] is atomic: the bytes go to a temporary file beside the target
 //! (`.NAME.axcheck-tmp-PID`), are synced, then renamed over it, so a reader (or a run
 //! killed part-way) sees the old complete file or the new complete one, never a part.
 //!
@@ -84,12 +84,12 @@ pub fn sync_dir(dir: &Path) -> std::io::Result<()> {
 
 const TEMP_MARK: &str = ".axcheck-tmp-";
 
-/// The temporary name [`write`] uses for `name` in process `pid`.
+/// The temporary name [`write()`] uses for `name` in process `pid`.
 fn temp_name(name: &str, pid: u32) -> String {
     format!(".{name}{TEMP_MARK}{pid}")
 }
 
-/// The output name and process id of a temporary file name of [`write`].
+/// The output name and process id of a temporary file name of [`write()`].
 fn parse_temp_name(file_name: &str) -> Option<(&str, u32)> {
     let rest = file_name.strip_prefix('.')?;
     let at = rest.rfind(TEMP_MARK)?;

@@ -12,6 +12,11 @@
 //! It draws no page and writes no Parquet; the core's modules are named here as
 //! `crate::evaluate` and the like through the private imports below.
 
+// The documentation is for the developers of this workspace and is built with its
+// private items (`cargo doc --document-private-items`), where a public item's doc may
+// link to the private item it is built on.
+#![allow(rustdoc::private_intra_doc_links)]
+
 pub mod atomic;
 pub mod batch;
 pub mod campaign;

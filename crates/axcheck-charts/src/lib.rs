@@ -4,6 +4,11 @@
 //! reports typeset these scenes with Typst, `summary.html` draws the same scenes in the
 //! browser: neither is needed to build them (no Typst, no polars here).
 
+// The documentation is for the developers of this workspace and is built with its
+// private items (`cargo doc --document-private-items`), where a public item's doc may
+// link to the private item it is built on.
+#![allow(rustdoc::private_intra_doc_links)]
+
 pub mod chart_kit;
 pub mod charts;
 pub mod data;

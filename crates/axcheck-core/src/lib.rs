@@ -13,6 +13,11 @@
 //! Nothing here opens a file, parses YAML or draws a page: readers, campaigns, outputs and
 //! the command line build on this crate.
 
+// The documentation is for the developers of this workspace and is built with its
+// private items (`cargo doc --document-private-items`), where a public item's doc may
+// link to the private item it is built on.
+#![allow(rustdoc::private_intra_doc_links)]
+
 pub mod axis_model;
 pub mod compensate;
 pub mod crosscheck;

@@ -464,7 +464,7 @@ pub fn write(data: &AxisData, comments: &[String]) -> String {
     write_in(data, comments, kind.position_unit(), kind.deviation_unit())
 }
 
-/// [`write`] for an angular test of a linear axis: angles (arcsec) at targets in mm.
+/// [`write()`] for an angular test of a linear axis: angles (arcsec) at targets in mm.
 pub fn write_angular(data: &AxisData, comments: &[String]) -> String {
     write_in(data, comments, "mm", "arcsec")
 }

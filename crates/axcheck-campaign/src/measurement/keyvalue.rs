@@ -332,7 +332,7 @@ impl Entries {
 
     /// The readings in the toolchain's measurement order: cycle j forward over the
     /// positions, then backward. Sorted from the entries themselves, so the work grows
-    /// with the readings, never with the largest index written (REF_DATA_FWD[1,4000000000]
+    /// with the readings, never with the largest index written (`REF_DATA_FWD[1,4000000000]`
     /// is one reading, not 4e9 cycles).
     fn readings(
         &self,

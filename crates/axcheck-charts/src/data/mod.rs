@@ -4,7 +4,7 @@
 //!
 //! [`axis`] is the test report of one axis (ISO 230-2 clause 7), [`conditions`] its test
 //! conditions (clause 7.1), [`compensation`] its compensation table and the parameters
-//! predicted with it, [`summary`] the campaign summary ([`inputs`]: the files its run
+//! predicted with it, [`summary`](mod@summary) the campaign summary ([`inputs`]: the files its run
 //! read, with their SHA-256); [`axis_chart`] gives the
 //! data of the figures of ISO 230-2 Fig. 2a/2b.
 

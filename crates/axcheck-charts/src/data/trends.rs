@@ -2,7 +2,7 @@
 //! the flagged ones first) and the history section of an axis report. Each series gets a
 //! row of formatted numbers and the data of its small chart ([`TrendChart`]).
 //!
-//! The numbers are those of [`crate::trend::fit`] (Theil–Sen slope, Sen's 95 % interval,
+//! The numbers are those of [`crate::trend::fit()`] (Theil–Sen slope, Sen's 95 % interval,
 //! forecast against the latest limit), formatted to the reports' 0.01 µm / 0.01″.
 
 use super::conditions::Row;

@@ -1,10 +1,10 @@
 //! The other laser tests of a linear axis, beside positioning: straightness
 //! ([`straightness`]), angular deviations ([`angular`]: roll, pitch, yaw), squareness
 //! between two axes ([`squareness`]), and the positioning deviation carried to the tool
-//! point through the angular deviations ([`abbe`]). [`line`] fits the reference straight
+//! point through the angular deviations ([`abbe`]). [`line`](mod@line) fits the reference straight
 //! lines they share.
 //!
-//! The readings are an [`AxisData`](crate::measurement::AxisData) as for positioning:
+//! The readings are an [`AxisData`] as for positioning:
 //! targets along the axis (mm), runs, both directions; the deviation is the test's own
 //! quantity (µm across the axis for straightness, arcsec for angular deviations). The
 //! notation is ISO 230-1's (EYX, EZX: straightness of X in Y and Z; EAX, EBX, ECX: roll,

@@ -11,7 +11,7 @@
 //! The statistical part (Type A, GUM 4.2) is computed for the parameters of ISO 230-2 and
 //! GOST 27843 from the per-target results: a mean X̄ of n readings has u = s/√n (GUM
 //! 4.2.3) and an estimate s of σ, distributed as σ·χ(n−1)/√(n−1), has the standard
-//! deviation σ·√(1 − c4²) with E[s] = c4·σ, so u(s) = s·√(1 − c4²)/c4 (GUM E.4.3 gives
+//! deviation σ·√(1 − c4²) with E\[s\] = c4·σ, so u(s) = s·√(1 − c4²)/c4 (GUM E.4.3 gives
 //! the first-order form 1/√(2(n−1))).
 //!
 //! With n = 1 (one run per direction: the long-axis tests of clauses 4.3.3 and 4.3.5)
@@ -72,7 +72,7 @@ impl Extent {
     }
 }
 
-/// c4(n) = √(2/(n−1))·Γ(n/2)/Γ((n−1)/2): E[s] = c4·σ for n normal readings (n ≥ 2).
+/// c4(n) = √(2/(n−1))·Γ(n/2)/Γ((n−1)/2): E\[s\] = c4·σ for n normal readings (n ≥ 2).
 pub(crate) fn c4(n: usize) -> f64 {
     let n = n as f64;
     (2.0 / (n - 1.0)).sqrt() * (libm::lgamma(n / 2.0) - libm::lgamma((n - 1.0) / 2.0)).exp()

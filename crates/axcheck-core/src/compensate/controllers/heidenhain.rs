@@ -23,7 +23,7 @@
 //!
 //! Sign: HEIDENHAIN has the axis error entered "with the correct sign": positive when the
 //! travel is too long (linear compensation MP720, TNC 407 Technical Manual §1.6.3), and its
-//! nonlinear example enters the plotted "Error in Z [mm]" curve (§1.6.4). That is the
+//! nonlinear example enters the plotted "Error in Z \[mm\]" curve (§1.6.4). That is the
 //! deviation e = actual − target, so the table holds −correction: −correction↑ in the axis
 //! column, −correction↓ in `BACKLASH`. Inferred for the TNC 620/640 tables, not stated.
 //!
@@ -47,7 +47,7 @@
 //! one column per compensated axis holding `.COM` names line by line, and an `ACTIVE`
 //! column whose line marked `*` is active ([axis column in .COM] = F(axis column in .CMA));
 //! several lines may exist, one active (MANUALplus 620 Technical Manual p. 718). Stored in
-//! the PLC partition [recalled]; the machine parameter that enables nonlinear compensation
+//! the PLC partition \[recalled\]; the machine parameter that enables nonlinear compensation
 //! on TNC 620/640 (MP730 on the TNC 407) was not found.
 //!
 //! Sources: HEIDENHAIN Technical Manual MANUALplus 620 (01/2012) §6.10.3 pp. 713–718

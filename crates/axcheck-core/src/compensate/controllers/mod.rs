@@ -1,4 +1,4 @@
-//! Controllers: each writes a [`Table`] in its own file format and reads it back as the
+//! Controllers: each writes a [`Table`](crate::compensate::table::Table) in its own file format and reads it back as the
 //! controller would load it, one file per controller (as the exporters are), and declares
 //! what its table can hold ([`Format`]): the spacing of its points, how many, one table per
 //! direction or one per axis, modulo tables, the unit its values are rounded to, and what

@@ -1,7 +1,7 @@
 //! Scatter variation: the scatter changes along the axis. VDI 3441 takes one scatter for
 //! the whole axis, NMTBA one per target; Hemingray et al. 1971, §5.1 ask whether the
 //! variation of the scatter along the axis is more than sampling explains.
-//! Test ([`test`]): the score test of a log-linear scatter in position on each
+//! Test ([`test()`]): the score test of a log-linear scatter in position on each
 //! cell's residual sum of squares (residuals of the full time model, so that drift or
 //! thermal growth do not pass for scatter), its tail exact for normal readings. Needs
 //! n ≥ 3 and m ≥ 3.
@@ -466,7 +466,7 @@ pub(crate) fn detectable(p: &Prep, fit: &TimeFit) -> Detectable {
 /// scatter with variance `variance(z)` (z the position about P̄), and its degrees of
 /// freedom. With the cell means free and the model's columns demeaned within the cells
 /// (orthonormal rows q_k, S = Σ σ²_k q_k q_kᵀ), a cell of c readings and leverage L
-/// keeps E[SS] = σ²(c − 1 − 2L) + Σ q_kᵀ S q_k over its rows, on c − 1 − L degrees of
+/// keeps E\[SS\] = σ²(c − 1 − 2L) + Σ q_kᵀ S q_k over its rows, on c − 1 − L degrees of
 /// freedom (with σ constant: σ² (c − 1 − L)).
 fn expected_squares(p: &Prep, fit: &TimeFit, variance: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
     let q: Vec<Vec<f64>> = (0..fit.rows.len()).map(|i| fit.ls.basis_row(i)).collect();

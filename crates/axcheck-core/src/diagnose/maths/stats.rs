@@ -331,8 +331,8 @@ pub(crate) fn quantile(values: &[f64], q: f64) -> f64 {
     quantile_sorted(&v, q)
 }
 
-/// [`quantile`] of values that are all finite and sorted ascending (so that several
-/// quantiles of one sample need one sort).
+/// The q-quantile (type 7, as `quantile` in the tests) of values that are all finite and
+/// sorted ascending (so that several quantiles of one sample need one sort).
 pub(crate) fn quantile_sorted(v: &[f64], q: f64) -> f64 {
     if v.is_empty() {
         return f64::NAN;

@@ -1,6 +1,6 @@
 //! `s_of_n`: the statistical uncertainty of the estimates S.
 //!
-//! S from n readings estimates σ with the chi distribution: E[S] = c4·σ and the standard
+//! S from n readings estimates σ with the chi distribution: E\[S\] = c4·σ and the standard
 //! deviation of S is σ·√(1 − c4²), so u(S) = S·√(1 − c4²)/c4 with
 //! c4 = √(2/(n−1))·Γ(n/2)/Γ((n−1)/2) (GUM E.4.3 gives the first-order 1/√(2(n−1))). An
 //! accuracy A = max(X̄ + kS) − min(X̄ − kS) carries k·u(S) at each end, a repeatability

@@ -14,7 +14,7 @@
 //! / 3624) + 1 (3621), the + end 3620 + distance / 3624 (3622) [recalled from the 16i
 //! manual's example, consistent with p. 100]; so the correction is zero at the reference
 //! and the running sum of the values elsewhere. Point numbers 0…1023 are shared by all axes
-//! of the control [recalled]; two tables per axis use two ranges of them, so axcheck holds
+//! of the control \[recalled\]; two tables per axis use two ranges of them, so axcheck holds
 //! at most 512 points per direction.
 //!
 //! **Numbering.** Point number = grid index: number i covers the section from grid point
@@ -46,7 +46,7 @@
 //!
 //! **Backlash.** Bidirectional compensation (3605#0 = 1, A-77810E) keeps a table per
 //! direction; backlash 1851/1852 is left as it was during the measurement (the − direction
-//! table corrects the reversal that remained) [recalled]. It assumes the reference return
+//! table corrects the reversal that remained) \[recalled\]. It assumes the reference return
 //! in + (1006#5 = 0) and an axis measured with its pitch error data cleared.
 //!
 //! **Loading.** Parameters on the parameter screen (PWE = 1); the data on the pitch error

@@ -9,7 +9,7 @@
 //! campaign `compensation: {axis: X1}`); without it the file says `<AXIS?>` and a comment
 //! (and the console) asks the user to replace it by the machine axis (X1, Y1, …). Not `AX1`,
 //! as before: K3 writes the index `<AXi>`, and `AX1` is the NC's name of machine axis 1
-//! ([recalled]: machine data archives address axes so; in any case a valid identifier), so
+//! (\[recalled\]: machine data archives address axes so; in any case a valid identifier), so
 //! an unedited file would load onto the first machine axis. An axis identifier is
 //! letters, digits and underscores, the first two letters or underscores, at most 8
 //! characters (SINUMERIK 840D Programming Manual Fundamentals, 10.2004, 6FC5298-7AB00-0BP1,

@@ -32,7 +32,7 @@
 //! are the same position (0° and 360°), with one value.
 //!
 //! Loading: the axis parameter list activates it (`lr_param.ssfk 1`, P-AXIS-00175), the
-//! start-up list [STUP] names it (`zahl_kw`, `achs_kw_log_ax_nr[i]`, `achs_kw[i]`; TwinCAT
+//! start-up list \[STUP\] names it (`zahl_kw`, `achs_kw_log_ax_nr[i]`, `achs_kw[i]`; TwinCAT
 //! XAE writes these when the list is configured there). `kopf.achs_nr` must be the axis's
 //! logical number (a mismatch aborts the list, error 110229): `--axis 2` (campaign
 //! `compensation: {axis: 2}`) gives it, else the active list's; without either the list
@@ -48,7 +48,7 @@
 //! infosys.beckhoff.com/content/1033/tf5200_axis_compensation/308683659.html; parameters
 //! P-COMP-00017…00025 and 00059 under content/1033/tf5200_axis_compensation_parameters/
 //! (113420683, 113422219, 113423755, 113425291, 113428363, 113432971, 113434507,
-//! 113436043, 654582667 .html); example list …/113439115.html; [STUP] lines and the
+//! 113436043, 654582667 .html); example list …/113439115.html; \[STUP\] lines and the
 //! backlash advice …/tf5200_axis_compensation/308682123.html; P-AXIS-00175/00243
 //! …/308693899.html; modulo entries …/tccncaxiscompensation/15274022795.html; comments
 //! …/tccncaxisparameter/15280429451.html; error 110229 …/tf5200_diagnosis/262657163.html.
