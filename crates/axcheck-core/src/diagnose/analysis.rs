@@ -137,7 +137,7 @@ impl Analysis<'_> {
             ),
             run_offset::Rule.find(b, t.runs.as_ref()),
             periodic::Rule.find(b, &self.periodic),
-            reversal_variation::Rule.find(b, self.reversal.as_ref()),
+            reversal_variation::Rule.find(b, self.reversal.as_ref(), untested_warm_up(t)),
             outlier::Rule.find(b, &self.hits),
             scatter_variation::Rule.find(b, self.scatter.as_ref()),
         ]
@@ -150,6 +150,14 @@ impl Analysis<'_> {
 fn unresolved_warm_up(tt: &TimeTests) -> Option<f64> {
     let w = tt.warm.as_ref().filter(|w| w.p >= ALPHA)?;
     w.smallest.map(|s| s.level)
+}
+
+/// Whether the run offsets are found and the warm-up, not found, could not be tested
+/// beside them (no level reaches the power: [`warm_up::detectable`] is none).
+fn untested_warm_up(tt: &TimeTests) -> bool {
+    let runs_real = tt.runs.as_ref().is_some_and(|r| r.p < ALPHA);
+    let untested = (tt.warm.as_ref()).is_some_and(|w| w.p >= ALPHA && w.smallest.is_none());
+    runs_real && untested
 }
 
 /// Whether the tests find a drift, a thermal growth or a warm-up.

@@ -44,7 +44,18 @@ pub struct ReversalVariation {
     pub fitted_shape: Option<Shape>,
     /// Bi per target: (position, Bi), as measured (corrected for the time effects).
     pub per_target: Vec<(f64, f64)>,
+    /// Beside real run offsets this plan could not test a warm-up, whose course within the
+    /// first runs would tilt Bi along the axis as well ([`UNTESTED_WARM_UP`]).
+    pub(crate) warm_up_untested: bool,
 }
+
+/// What a finding adds when the plan could not test a warm-up beside the run offsets. In
+/// the standard cycle a target's ↑ and ↓ approaches of one run lie apart in time by an
+/// interval that changes linearly along the axis, so a curve in time within the runs
+/// makes Bi change along the axis (ISO 230-2 Annex A shows it for a drift); beside real
+/// run offsets a warm-up is tested on what the offsets leave of it between the runs, which
+/// a few runs may not let reach the level (its `detectable` is then none).
+const UNTESTED_WARM_UP: &str = "; beside these run offsets this plan cannot test a warm-up, and a machine still warming up in the first runs would change Bi along the axis as well (its ↑ and ↓ approaches to a target lie apart in time by an interval that changes along the axis; ISO 230-2 Annex A)";
 
 impl ReversalVariation {
     /// The estimate in the shape the held-out prediction chose: its values at the first
@@ -73,9 +84,14 @@ impl ReversalVariation {
             _ => "along the axis on a curve",
         };
         f.message = format!(
-            "the reversal value changes {what}, range {} {ds}: Bi = {listed} (p = {})",
+            "the reversal value changes {what}, range {} {ds}: Bi = {listed} (p = {}){}",
             fmt(r.range),
-            fmt_p(f.evidence.p_value.unwrap_or(f64::NAN))
+            fmt_p(f.evidence.p_value.unwrap_or(f64::NAN)),
+            if r.warm_up_untested {
+                UNTESTED_WARM_UP
+            } else {
+                ""
+            }
         );
     }
 }
@@ -112,14 +128,22 @@ impl Fields for ReversalVariation {
         if let Some(fitted) = self.fitted_shape {
             labels.push(("fitted_shape", fitted.name()));
         }
+        if self.warm_up_untested {
+            labels.push(("warm_up", "untested beside the run offsets"));
+        }
         labels
     }
 
     /// A backlash compensation is one value per axis: it removes the mean reversal B̄ and
     /// leaves half the range of the Bi on either side.
     fn advice(&self, u: Units) -> String {
+        let first = if self.warm_up_untested {
+            "re-test the warm machine (ISO 230-2 3.3) before compensating a reversal that varies, since a warm-up this plan could not test would make Bi vary too; "
+        } else {
+            ""
+        };
         format!(
-            "a backlash compensation (one value for the axis) leaves up to ±{} {} of reversal here (half the range of Bi, {} {}); compensate per position where the control has direction-dependent pitch tables, or look for the mechanical cause (screw wear, guideway preload) where the reversal is largest",
+            "{first}a backlash compensation (one value for the axis) leaves up to ±{} {} of reversal here (half the range of Bi, {} {}); compensate per position where the control has direction-dependent pitch tables, or look for the mechanical cause (screw wear, guideway preload) where the reversal is largest",
             fmt(self.range / 2.0),
             u.symbol(),
             fmt(self.range),
@@ -132,7 +156,13 @@ pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
-    pub(crate) fn find(&self, a: &Basis, reversal: Option<&ReversalTest>) -> Vec<Finding> {
+    /// `warm_up_untested`: beside real run offsets the plan could not test a warm-up.
+    pub(crate) fn find(
+        &self,
+        a: &Basis,
+        reversal: Option<&ReversalTest>,
+        warm_up_untested: bool,
+    ) -> Vec<Finding> {
         let Some(r) = reversal else {
             return Vec::new();
         };
@@ -171,7 +201,7 @@ impl Rule {
             range
         };
         let message = format!(
-            "the reversal value changes along the axis: {} {ds} at {} to {} {ds} at {}{} (p = {})",
+            "the reversal value changes along the axis: {} {ds} at {} to {} {ds} at {}{} (p = {}){}",
             fmt(b_lo),
             fmt_target(u.kind, p.lo),
             fmt(b_hi),
@@ -184,7 +214,12 @@ impl Rule {
             } else {
                 String::new()
             },
-            fmt_p(p_value)
+            fmt_p(p_value),
+            if warm_up_untested {
+                UNTESTED_WARM_UP
+            } else {
+                ""
+            }
         );
         vec![Finding {
             estimate: ReversalVariation {
@@ -198,6 +233,7 @@ impl Rule {
                     .filter(|(_, b)| b.is_finite())
                     .map(|(p, b)| (*p, *b))
                     .collect(),
+                warm_up_untested,
             }
             .into(),
             units: u,
