@@ -811,12 +811,13 @@ const OPEN_PAIRS: &[(Effect, Effect, f64, f64)] = {
 };
 
 /// Beside run offsets a few runs may not let a warm-up be tested at all, and its course
-/// within the first runs changes Bi along the axis (issue 43): a reversal variation found
-/// there says so and asks for a warm re-test before compensating it; one found beside no
-/// run offsets does not.
+/// within the first runs changes Bi and the scatter along the axis (issue 43): a reversal
+/// or scatter variation found there says so and asks for a warm re-test first; one found
+/// beside no run offsets does not.
 #[test]
-fn a_reversal_beside_run_offsets_names_the_warm_up_it_could_not_test() {
-    let caveat = "cannot test a warm-up";
+fn variations_beside_run_offsets_name_the_warm_up_they_could_not_test() {
+    let caveat = "this plan cannot test a warm-up";
+    let along = [Effect::ReversalVariation, Effect::ScatterVariation];
     let beside: Vec<axcheck::diagnose::Finding> = (0..SWEEP)
         .into_par_iter()
         .flat_map_iter(|s| {
@@ -834,11 +835,17 @@ fn a_reversal_beside_run_offsets_names_the_warm_up_it_could_not_test() {
             let untested =
                 (d.detectable.iter()).any(|x| x.effect == Effect::WarmUp && x.size.is_none());
             (d.findings.into_iter())
-                .filter(move |f| untested && f.effect() == Effect::ReversalVariation)
+                .filter(move |f| untested && along.contains(&f.effect()))
                 .collect::<Vec<_>>()
         })
         .collect();
-    assert!(beside.len() >= 3, "{} reversal findings", beside.len());
+    let of = |e: Effect| beside.iter().filter(|f| f.effect() == e).count();
+    assert!(
+        of(Effect::ReversalVariation) >= 3 && of(Effect::ScatterVariation) >= 1,
+        "{} findings: {:?}",
+        beside.len(),
+        beside.iter().map(|f| f.effect()).collect::<Vec<_>>()
+    );
     for f in &beside {
         assert!(f.message.contains(caveat), "{}", f.message);
         assert!(
@@ -853,10 +860,12 @@ fn a_reversal_beside_run_offsets_names_the_warm_up_it_could_not_test() {
     }
     let alone: Vec<String> = (380_000..380_040)
         .into_par_iter()
-        .flat_map_iter(|s| run_case(&reversal_case(s)).1.findings)
-        .filter(|f| f.effect() == Effect::ReversalVariation)
+        .map(reversal_case)
+        .chain((400_000..400_040).into_par_iter().map(scatter_case))
+        .flat_map_iter(|c| run_case(&c).1.findings)
+        .filter(|f| along.contains(&f.effect()))
         .map(|f| f.message)
         .collect();
-    assert!(alone.len() >= 30, "{} reversal findings alone", alone.len());
+    assert!(alone.len() >= 60, "{} variations alone", alone.len());
     assert!(alone.iter().all(|m| !m.contains(caveat)), "{alone:#?}");
 }

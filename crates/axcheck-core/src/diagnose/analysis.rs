@@ -139,7 +139,7 @@ impl Analysis<'_> {
             periodic::Rule.find(b, &self.periodic),
             reversal_variation::Rule.find(b, self.reversal.as_ref(), untested_warm_up(t)),
             outlier::Rule.find(b, &self.hits),
-            scatter_variation::Rule.find(b, self.scatter.as_ref()),
+            scatter_variation::Rule.find(b, self.scatter.as_ref(), untested_warm_up(t)),
         ]
         .concat()
     }

@@ -28,7 +28,16 @@ pub struct ScatterVariation {
     pub end: f64,
     /// end / start.
     pub ratio: f64,
+    /// Beside real run offsets this plan could not test a warm-up, whose course within the
+    /// first runs would widen the scatter along the axis as well ([`UNTESTED_WARM_UP`]).
+    pub(crate) warm_up_untested: bool,
 }
+
+/// What a finding adds when the plan could not test a warm-up beside the run offsets: in
+/// the standard cycle the readings at a target lie at times that differ along the axis,
+/// so a curve in time within the first runs spreads them by amounts that change along it
+/// (the reversal variation's finding says the same of Bi).
+const UNTESTED_WARM_UP: &str = "; beside these run offsets this plan cannot test a warm-up, and a machine still warming up in the first runs would widen the scatter unevenly along the axis as well (its approaches to a target lie at times that differ along the axis)";
 
 impl Fields for ScatterVariation {
     fn params(&self, u: Units) -> Vec<(String, f64)> {
@@ -46,13 +55,25 @@ impl Fields for ScatterVariation {
         } else {
             ("first", 1.0 / self.ratio)
         };
+        let first = if self.warm_up_untested {
+            "re-test the warm machine (ISO 230-2 3.3) before looking for a mechanical cause, since a warm-up this plan could not test would make the scatter vary too; "
+        } else {
+            ""
+        };
         format!(
-            "the repeatability is {}× worse towards the {worse} target (σ {} → {} {}): look for a mechanical cause there (screw support bearing, guideway or its lubrication, scale mounting); no compensation reduces scatter",
+            "{first}the repeatability is {}× worse towards the {worse} target (σ {} → {} {}): look for a mechanical cause there (screw support bearing, guideway or its lubrication, scale mounting); no compensation reduces scatter",
             fmt(ratio),
             fmt(self.start),
             fmt(self.end),
             u.symbol()
         )
+    }
+
+    fn labels(&self) -> Vec<(&'static str, &'static str)> {
+        match self.warm_up_untested {
+            true => vec![("warm_up", "untested beside the run offsets")],
+            false => Vec::new(),
+        }
     }
 }
 
@@ -60,7 +81,13 @@ pub(crate) struct Rule;
 
 impl Rule {
     /// The findings of this effect from its test (each at level [`crate::diagnose::ALPHA`]).
-    pub(crate) fn find(&self, a: &Basis, scatter: Option<&ScatterTest>) -> Vec<Finding> {
+    /// `warm_up_untested`: beside real run offsets the plan could not test a warm-up.
+    pub(crate) fn find(
+        &self,
+        a: &Basis,
+        scatter: Option<&ScatterTest>,
+        warm_up_untested: bool,
+    ) -> Vec<Finding> {
         let Some(s) = scatter.filter(|s| s.p < ALPHA) else {
             return Vec::new();
         };
@@ -68,19 +95,25 @@ impl Rule {
         let ds = u.symbol();
         let ratio = s.sigma_hi / s.sigma_lo;
         let message = format!(
-            "the scatter changes along the axis: σ ≈ {} {ds} at {} to {} {ds} at {} (z = {}, p = {})",
+            "the scatter changes along the axis: σ ≈ {} {ds} at {} to {} {ds} at {} (z = {}, p = {}){}",
             fmt(s.sigma_lo),
             fmt_target(u.kind, p.lo),
             fmt(s.sigma_hi),
             fmt_target(u.kind, p.hi),
             fmt(s.z),
-            fmt_p(s.p)
+            fmt_p(s.p),
+            if warm_up_untested {
+                UNTESTED_WARM_UP
+            } else {
+                ""
+            }
         );
         vec![Finding {
             estimate: ScatterVariation {
                 start: s.sigma_lo,
                 end: s.sigma_hi,
                 ratio,
+                warm_up_untested,
             }
             .into(),
             units: u,
