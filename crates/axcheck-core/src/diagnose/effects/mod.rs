@@ -35,6 +35,11 @@ use crate::axis_model::ErrorModel;
 use serde::Serialize;
 use serde::ser::Serializer;
 
+/// The label of a finding along the axis beside run offsets where the plan could not test
+/// a warm-up, whose course within the first runs would make the same pattern (the
+/// reversal and the scatter variation; `untested_warm_up` in `analysis.rs` decides it).
+pub(crate) const WARM_UP_UNTESTED: (&str, &str) = ("warm_up", "untested beside the run offsets");
+
 /// The measure a term is judged on before the extended model takes it (it must lower it
 /// by more than unrelated terms of the same size do: [`super::confirm`]).
 #[derive(Clone, Copy)]

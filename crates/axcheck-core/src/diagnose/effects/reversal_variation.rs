@@ -13,7 +13,7 @@
 //! line leaves out what the line took of it. With n = 1 the slope is tested against the
 //! line's own residuals (df = m − 2).
 
-use super::{Effect, Estimate, Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Estimate, Finding, Rule as EffectRule, Term, Unrelated, WARM_UP_UNTESTED};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::detectable::{Detectable, plan_words, t_shift, with_unit};
@@ -57,6 +57,14 @@ pub struct ReversalVariation {
 /// a few runs may not let reach the level (its `detectable` is then none).
 const UNTESTED_WARM_UP: &str = "; beside these run offsets this plan cannot test a warm-up, and a machine still warming up in the first runs would change Bi along the axis as well (its ↑ and ↓ approaches to a target lie apart in time by an interval that changes along the axis; ISO 230-2 Annex A)";
 
+/// [`UNTESTED_WARM_UP`] where the plan could not test the warm-up, else nothing.
+fn untested_words(warm_up_untested: bool) -> &'static str {
+    match warm_up_untested {
+        true => UNTESTED_WARM_UP,
+        false => "",
+    }
+}
+
 impl ReversalVariation {
     /// The estimate in the shape the held-out prediction chose: its values at the first
     /// and last target from that shape; per target, the message lists every Bi.
@@ -87,11 +95,7 @@ impl ReversalVariation {
             "the reversal value changes {what}, range {} {ds}: Bi = {listed} (p = {}){}",
             fmt(r.range),
             fmt_p(f.evidence.p_value.unwrap_or(f64::NAN)),
-            if r.warm_up_untested {
-                UNTESTED_WARM_UP
-            } else {
-                ""
-            }
+            untested_words(r.warm_up_untested)
         );
     }
 }
@@ -129,7 +133,7 @@ impl Fields for ReversalVariation {
             labels.push(("fitted_shape", fitted.name()));
         }
         if self.warm_up_untested {
-            labels.push(("warm_up", "untested beside the run offsets"));
+            labels.push(WARM_UP_UNTESTED);
         }
         labels
     }
@@ -215,11 +219,7 @@ impl Rule {
                 String::new()
             },
             fmt_p(p_value),
-            if warm_up_untested {
-                UNTESTED_WARM_UP
-            } else {
-                ""
-            }
+            untested_words(warm_up_untested)
         );
         vec![Finding {
             estimate: ReversalVariation {

@@ -6,7 +6,7 @@
 //! thermal growth do not pass for scatter), its tail exact for normal readings. Needs
 //! n ≥ 3 and m ≥ 3.
 
-use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated};
+use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated, WARM_UP_UNTESTED};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::detectable::{Detectable, POWER, plan_words};
@@ -71,7 +71,7 @@ impl Fields for ScatterVariation {
 
     fn labels(&self) -> Vec<(&'static str, &'static str)> {
         match self.warm_up_untested {
-            true => vec![("warm_up", "untested beside the run offsets")],
+            true => vec![WARM_UP_UNTESTED],
             false => Vec::new(),
         }
     }
