@@ -13,6 +13,7 @@ use super::effects::outlier::{self, Hit};
 use super::effects::periodic::{self, Search};
 use super::effects::reversal_variation::{self, ReversalTest};
 use super::effects::scatter_variation::{self, ScatterTest};
+use super::effects::warm_up::fading::{self, Fading, Withheld};
 use super::effects::{Effect, Finding, drift, run_offset, thermal_growth, warm_up};
 use super::finding::Units;
 use super::options::{ALPHA, Options};
@@ -29,6 +30,9 @@ pub(crate) struct Analysis<'a> {
     pub scatter: Option<ScatterTest>,
     pub reversal: Option<ReversalTest>,
     pub periodic: Search,
+    /// Whether each run's Bi fade from run to run, as a warm-up's course within the runs
+    /// makes them: tested only beside real run offsets where the warm-up could not be.
+    pub fading: Option<Fading>,
 }
 
 impl<'a> Analysis<'a> {
@@ -74,6 +78,10 @@ impl<'a> Analysis<'a> {
                 .map(|i| (var_cell(2 * i) + var_cell(2 * i + 1)) / 4.0)
                 .collect()
         });
+        // Beside run offsets where the warm-up could not be tested: each run's Bi.
+        let fading = untested_warm_up(&tt)
+            .then(|| fading::test(&prep, &v, &active, &scale, tt.sigma2, tt.df))
+            .flatten();
         let ps = periodic::search(&prep.positions, &means, mvar.as_deref(), pitch, ALPHA);
         periodic::plan_notes(&ps.resolution, pitch, data.kind, notes);
         Analysis {
@@ -95,6 +103,7 @@ impl<'a> Analysis<'a> {
             scatter: sc,
             reversal: rev,
             periodic: ps,
+            fading,
         }
     }
 }
@@ -124,10 +133,29 @@ impl Analysis<'_> {
             .collect()
     }
 
-    /// Each effect's findings from its own test, in the order of the vocabulary.
-    pub fn findings(&self) -> Vec<Finding> {
+    /// Each effect's findings from its own test, in the order of the vocabulary, and
+    /// apart the reversal or scatter variations that the fading of each run's Bi puts
+    /// down to a warm-up (not findings; their notes say what they were read as).
+    pub fn findings(&self) -> (Vec<Finding>, Vec<Withheld>) {
         let (b, t) = (&self.basis, &self.time);
-        [
+        let untested = untested_warm_up(t);
+        let along_axis = [
+            reversal_variation::Rule.find(b, self.reversal.as_ref(), untested),
+            scatter_variation::Rule.find(b, self.scatter.as_ref(), untested),
+        ];
+        let mut withheld = Vec::new();
+        let faded = self.fading.as_ref().filter(|f| f.p < fading::LEVEL);
+        let [reversal, scatter] = match faded {
+            Some(f) => along_axis.map(|found| {
+                withheld.extend(found.iter().map(|x| Withheld {
+                    effect: x.effect(),
+                    note: fading::note(x, f),
+                }));
+                Vec::new()
+            }),
+            None => along_axis,
+        };
+        let findings = [
             drift::Rule.find(b, t.drift.as_ref(), unresolved_warm_up(t)),
             warm_up::Rule.find(b, t.warm.as_ref()),
             thermal_growth::Rule.find(
@@ -137,11 +165,12 @@ impl Analysis<'_> {
             ),
             run_offset::Rule.find(b, t.runs.as_ref()),
             periodic::Rule.find(b, &self.periodic),
-            reversal_variation::Rule.find(b, self.reversal.as_ref(), untested_warm_up(t)),
+            reversal,
             outlier::Rule.find(b, &self.hits),
-            scatter_variation::Rule.find(b, self.scatter.as_ref(), untested_warm_up(t)),
+            scatter,
         ]
-        .concat()
+        .concat();
+        (findings, withheld)
     }
 }
 

@@ -15,7 +15,7 @@
 //! `shapes` for a term along the axis: `line`, `curve` or `per_target`, each with its
 //! `parameters` and `heldout_rms`), `validation`, `checks`, `model_check` (`verdict`:
 //! `explained`, `effects_found`, `not_explained` or `not_checked`; `checks`; `outside`, each
-//! `statistic`, `side`, `points_to`, `accounted_for_by`, `seen_unconfirmed`; `sentence`), `detectable` (every effect: `effect`,
+//! `statistic`, `side`, `points_to`, `accounted_for_by`, `seen_unconfirmed`, and `read_as_warm_up` where some are; `sentence`), `detectable` (every effect: `effect`,
 //! `size` found in 80 % of tests with this plan, null when the plan cannot test it,
 //! `measure` with its unit, `assumed` (the period or time constant the size assumes,
 //! keyed with units), `more_targets` and `size_with_more_targets`, `advice`), `corrected`, `residuals`,

@@ -149,7 +149,8 @@ pub(crate) const VALIDATION: &str = "k-fold cross-validation over readings (10 f
 pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let mut notes = Vec::new();
     let a = Analysis::run(data, options, &mut notes);
-    let mut seen = a.findings();
+    let (mut seen, withheld) = a.findings();
+    notes.extend(withheld.iter().map(|w| w.note.clone()));
     seen.sort_by_key(Finding::effect);
     let selection = select::select(&a, &seen, options.seed);
     for g in &selection.term_gains {
@@ -166,7 +167,8 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let base_model = checks::base_model(&a, &fit.guess.plan, options.seed);
     let simulable = fit.guess.simulable;
     let checks = checks::check_base_model(&a, &base_model, simulable, options, &mut notes);
-    let model_check = verdict::verdict(&checks, &findings, &unconfirmed);
+    let read_as_warm_up: Vec<Effect> = withheld.iter().map(|w| w.effect).collect();
+    let model_check = verdict::verdict(&checks, &findings, &unconfirmed, &read_as_warm_up);
     let detectable = a.detectable();
     let residuals = residuals::residuals(&a, &fit, &selection.effects);
     let corrected =

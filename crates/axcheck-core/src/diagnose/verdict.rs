@@ -45,6 +45,10 @@ pub struct Outside {
     pub(crate) accounted_for_by: Vec<Effect>,
     /// Those seen by their test but not confirmed by prediction.
     pub(crate) seen_unconfirmed: Vec<Effect>,
+    /// Those seen by their test and put down to a warm-up by the fading of each run's Bi
+    /// (`warm_up::fading`; the notes say so). Written only when there are some.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub(crate) read_as_warm_up: Vec<Effect>,
 }
 
 /// The model check's verdict: its kind, the statistics outside their bands and the
@@ -101,14 +105,17 @@ pub(crate) fn points_to(s: Statistic) -> &'static [Effect] {
     }
 }
 
-/// The verdict of `checks` beside the `findings` (and the `unconfirmed` ones).
+/// The verdict of `checks` beside the `findings` (and the `unconfirmed` ones, and those
+/// put down to a warm-up, `read_as_warm_up`).
 pub(crate) fn verdict(
     checks: &[ModelCheck],
     findings: &[Finding],
     unconfirmed: &[Unconfirmed],
+    read_as_warm_up: &[Effect],
 ) -> ModelVerdict {
     let found = |e: &Effect| findings.iter().any(|f| f.effect() == *e);
     let seen = |e: &Effect| unconfirmed.iter().any(|u| u.finding.effect() == *e);
+    let warm = |e: &Effect| read_as_warm_up.contains(e);
     let outside: Vec<Outside> = checks
         .iter()
         .filter(|c| c.outside)
@@ -120,6 +127,7 @@ pub(crate) fn verdict(
                 points_to: to.to_vec(),
                 accounted_for_by: to.iter().copied().filter(found).collect(),
                 seen_unconfirmed: to.iter().copied().filter(seen).collect(),
+                read_as_warm_up: to.iter().copied().filter(warm).collect(),
             }
         })
         .collect();
@@ -156,6 +164,11 @@ fn describe(o: &Outside, name: Name) -> String {
     let mut text = format!("{} {} its band", name(&o.statistic), o.side);
     if !o.accounted_for_by.is_empty() {
         text += &format!(" (accounted for by {})", names(&o.accounted_for_by));
+    } else if !o.read_as_warm_up.is_empty() {
+        text += &format!(
+            " (points to {}, seen by its test and read as a warm-up's course within the runs: see the notes)",
+            names(&o.read_as_warm_up)
+        );
     } else if !o.seen_unconfirmed.is_empty() {
         text += &format!(
             " (points to {}, seen by its test but not confirmed)",
@@ -242,7 +255,7 @@ mod tests {
     #[test]
     fn explains_only_when_every_check_is_inside() {
         let inside = [check("R", None), check("reversal_range", None)];
-        let v = verdict(&inside, &[], &[]);
+        let v = verdict(&inside, &[], &[], &[]);
         assert_eq!(v.verdict, VerdictKind::Explained);
         assert!(
             v.sentence
@@ -250,7 +263,7 @@ mod tests {
         );
 
         let one_out = [check("R", None), check("reversal_range", Some("above"))];
-        let v = verdict(&one_out, &[], &[]);
+        let v = verdict(&one_out, &[], &[], &[]);
         assert_eq!(v.verdict, VerdictKind::NotExplained);
         assert!(!v.sentence.contains("explains the data"), "{}", v.sentence);
         assert!(
@@ -262,8 +275,32 @@ mod tests {
         assert_eq!(v.outside[0].points_to, [Effect::ReversalVariation]);
         assert!(v.outside[0].accounted_for_by.is_empty());
 
-        assert_eq!(verdict(&[], &[], &[]).verdict, VerdictKind::NotChecked);
-        assert!(!verdict(&[], &[], &[]).sentence.contains("none:"));
+        assert_eq!(verdict(&[], &[], &[], &[]).verdict, VerdictKind::NotChecked);
+        assert!(!verdict(&[], &[], &[], &[]).sentence.contains("none:"));
+    }
+
+    /// A variation put down to a warm-up accounts for nothing: its statistic stays
+    /// outside, named with what it was read as, and the JSON lists it.
+    #[test]
+    fn a_variation_read_as_a_warm_up_is_named_not_counted() {
+        let out = [check("reversal_range", Some("above"))];
+        let v = verdict(&out, &[], &[], &[Effect::ReversalVariation]);
+        assert_eq!(v.verdict, VerdictKind::NotExplained);
+        assert!(
+            v.sentence.contains(
+                "reversal_range above its band (points to reversal_variation, seen by its test and read as a warm-up's course within the runs: see the notes)"
+            ),
+            "{}",
+            v.sentence
+        );
+        let json = serde_json::to_string(&v.outside[0]).unwrap();
+        assert!(
+            json.contains(r#""read_as_warm_up":["reversal_variation"]"#),
+            "{json}"
+        );
+        let plain = verdict(&out, &[], &[], &[]);
+        let json = serde_json::to_string(&plain.outside[0]).unwrap();
+        assert!(!json.contains("read_as_warm_up"), "{json}");
     }
 
     /// Every statistic of the check points to at least one effect of the vocabulary.

@@ -37,6 +37,7 @@
 //! against a linear drift and against free run offsets.
 
 mod beside;
+pub(crate) mod fading;
 mod power;
 
 pub(crate) use beside::linear_tests;
