@@ -894,3 +894,51 @@ fn variations_beside_run_offsets_name_the_warm_up_they_could_not_test() {
     );
     assert!(alone.iter().all(|m| !m.contains(caveat)), "{alone:#?}");
 }
+
+/// Issue 43: the scatter variation's term takes the shape the data show. A scatter that
+/// changes in a step (3–5 times on one side of a point) is one σ per target on most axes,
+/// with σ at every target in the finding and as the extended model's knots; one that
+/// changes log-linearly stays a line or a smooth curve on most.
+#[test]
+fn the_scatter_variation_takes_the_shape_the_data_show() {
+    let shapes = |make: fn(u64) -> Case, seeds: std::ops::Range<u64>| -> Vec<String> {
+        seeds
+            .into_par_iter()
+            .filter_map(|s| {
+                let (_, d) = run_case(&make(s));
+                let f = d.of(Effect::ScatterVariation).next()?;
+                let labels = f.labels();
+                let shape = (labels.iter())
+                    .find(|l| l.0 == "fitted_shape")
+                    .map_or("line", |l| l.1);
+                if shape == "per_target" {
+                    let per: Vec<(String, f64)> = (f.params().into_iter())
+                        .filter(|p| p.0.starts_with("scatter_target_"))
+                        .collect();
+                    assert!(per.len() >= 3, "{per:?}");
+                    assert!(per.iter().all(|p| p.1 > 0.0), "{per:?}");
+                    let knots = &d.extended_model.model.scatter_knots;
+                    assert_eq!(knots.len(), per.len(), "{knots:?}");
+                    assert!(f.message.contains("from target to target"), "{}", f.message);
+                }
+                Some(shape.to_string())
+            })
+            .collect()
+    };
+    let share = |v: &[String], want: &[&str]| {
+        v.iter().filter(|s| want.contains(&s.as_str())).count() as f64 / v.len() as f64
+    };
+    let step = shapes(scatter_step_case, 560_000..560_100);
+    let smooth = shapes(scatter_case, 570_000..570_100);
+    eprintln!(
+        "step: per target {:.0} % of {}; log-linear: line or curve {:.0} % of {}",
+        100.0 * share(&step, &["per_target"]),
+        step.len(),
+        100.0 * share(&smooth, &["line", "curve"]),
+        smooth.len()
+    );
+    assert!(step.len() >= 90 && smooth.len() >= 90);
+    // Measured on 2026-12-01: 83 % and 100 %.
+    assert!(share(&step, &["per_target"]) >= 0.7, "{step:?}");
+    assert!(share(&smooth, &["line", "curve"]) >= 0.9, "{smooth:?}");
+}

@@ -4,12 +4,13 @@
 //! the fitted terms they read ([`Fitted`]) stand below them.
 
 use super::analysis::Analysis;
-use super::effects::Effect;
+use super::effects::{Effect, scatter_variation};
 use super::fitted::Fitted;
 use super::model::{self, r4};
 use super::model_terms::Predictor;
 use super::prep::TimeUnit;
 use super::select::Selection;
+use super::shape::Shape;
 use crate::axis_model::{ErrorModel, Simulation};
 use crate::units::Direction;
 
@@ -71,6 +72,18 @@ impl Fitted {
             train,
             outliers: a.hits.iter().map(|h| (h.row, h.size)).collect(),
             scatter_ends: a.scatter.as_ref().map(|s| (s.sigma_lo, s.sigma_hi)),
+            scatter_knots: (sel.terms.scatter && sel.terms.scatter_shape != Shape::Line)
+                .then(|| {
+                    let (tt, shape) = (&a.time, sel.terms.scatter_shape);
+                    scatter_variation::sigma_per_target(
+                        p,
+                        &tt.full.residuals,
+                        tt.sigma2,
+                        tt.df,
+                        shape,
+                    )
+                })
+                .flatten(),
             warm_growth: (a.time.warm.as_ref())
                 .and_then(|w| w.estimate.as_ref())
                 .is_some_and(|e| e.growth_found()),

@@ -33,6 +33,8 @@ pub(crate) struct Fitted {
     pub outliers: Vec<(usize, f64)>,
     /// The scatter σ at the first and last target, when the scatter test ran.
     pub(crate) scatter_ends: Option<(f64, f64)>,
+    /// The scatter σ at each target in the shape of the kept term, when it is not a line.
+    pub(crate) scatter_knots: Option<Vec<f64>>,
     /// Whether the warm-up's level changes along the axis (its growth term was found).
     pub(crate) warm_growth: bool,
 }

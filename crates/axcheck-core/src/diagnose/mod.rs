@@ -46,6 +46,7 @@ mod model_terms;
 mod options;
 mod prep;
 mod residuals;
+mod scheme;
 mod select;
 pub mod shape;
 mod shaped;
@@ -155,9 +156,14 @@ pub fn diagnose(data: &AxisData, options: &Options) -> Diagnosis {
     let selection = select::select(&a, &seen, options.seed);
     for g in &selection.term_gains {
         if let Some(shape) = g.shape {
-            (seen.iter_mut())
-                .filter(|f| f.effect() == g.effect)
-                .for_each(|f| effects::reversal_variation::ReversalVariation::reshape(f, shape));
+            for f in seen.iter_mut().filter(|f| f.effect() == g.effect) {
+                match g.effect {
+                    Effect::ScatterVariation => {
+                        effects::scatter_variation::ScatterVariation::reshape(f, shape)
+                    }
+                    _ => effects::reversal_variation::ReversalVariation::reshape(f, shape),
+                }
+            }
         }
     }
     let (findings, unconfirmed) = Unconfirmed::split(seen, &selection.term_gains);

@@ -21,6 +21,9 @@ pub(crate) struct ModelTerms {
     pub(crate) reversal_shape: Shape,
     pub outliers: bool,
     pub scatter: bool,
+    /// The scatter's shape along the axis (log σ² a line, a curve or one per target),
+    /// with `scatter`.
+    pub(crate) scatter_shape: Shape,
 }
 
 /// A model fitted to training rows: its time model and what it has at the targets.

@@ -15,46 +15,14 @@ use super::finding::{Evidence, Keyed, fmt};
 use super::maths::periodogram::Peak;
 use super::model_terms::ModelTerms;
 use super::prep::{Clocks, Prep};
+pub use super::scheme::Scheme;
+use super::scheme::gain_pct;
 use super::shape::Shape;
 use super::shaped::{self, ShapeScore};
 use super::validate::{self, Score};
 use crate::axis_model::rng::Rng;
 use serde::Serialize;
 use serde::ser::Serializer;
-
-/// The held-out scheme that can show a term's gain.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Scheme {
-    /// k-fold over readings (10 folds stratified by target and direction), RMS of the
-    /// held-out readings: terms that change the readings (time, reversal, outliers).
-    KFoldRms,
-    /// The same folds, mean negative log predictive density per reading: a scatter term
-    /// changes no prediction, only how sure it is.
-    KFoldDensity,
-    /// Leave-one-target-out on the target means, RMS: a periodic error costs between
-    /// the targets, which a free mean per target hides from the readings.
-    LeaveTargetsOut,
-}
-
-impl Scheme {
-    /// The measure of a score this scheme compares (RMS or log density).
-    fn measure(self, s: &Score) -> f64 {
-        match self {
-            Scheme::KFoldDensity => s.nlpd,
-            _ => s.rms,
-        }
-    }
-
-    /// The scheme in words, for the text and the report.
-    pub fn describe(self) -> &'static str {
-        match self {
-            Scheme::KFoldRms => "k-fold over readings, RMS",
-            Scheme::KFoldDensity => "k-fold over readings, log density",
-            Scheme::LeaveTargetsOut => "leave-targets-out (h-block), RMS of the target means",
-        }
-    }
-}
 
 /// How one found effect's term was judged.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -136,14 +104,6 @@ impl TermGain {
     }
 }
 
-/// The gain of the scheme's measure from `without` to `with`, %.
-fn gain_pct(scheme: Scheme, without: f64, with: f64) -> f64 {
-    match scheme {
-        Scheme::KFoldDensity => ((without - with).exp() - 1.0) * 100.0,
-        _ => (without - with) / without * 100.0,
-    }
-}
-
 /// The largest gain of the unrelated terms (NaN for none).
 fn largest_gain(scheme: Scheme, without: f64, unrelated: &[f64]) -> f64 {
     unrelated
@@ -199,7 +159,10 @@ impl Unconfirmed {
         } else {
             "not scored".to_string()
         };
-        let shaped = matches!(self.finding.effect().rule().term(), Term::Shaped(_));
+        let shaped = matches!(
+            self.finding.effect().rule().term(),
+            Term::Shaped(_) | Term::ShapedDensity(_)
+        );
         let compared = match self.null {
             Unrelated::SimulatedTests if shaped => {
                 "19 tests simulated without it, each in its best shape"
@@ -364,6 +327,7 @@ impl Judge<'_> {
         kept: ModelTerms,
         current: Score,
         set: fn(&mut ModelTerms, Shape),
+        scheme: Scheme,
     ) -> Option<(TermGain, ModelTerms, Score)> {
         let (p, x) = (&self.a.basis.prep, &self.a.basis.x);
         let left_out: Vec<bool> = (self.outlier.iter()).map(|&o| o && kept.outliers).collect();
@@ -381,11 +345,12 @@ impl Judge<'_> {
             },
             kept: fixed,
             set,
+            scheme,
         };
         let judged = shaped::judge(&setup, x, self.seed)?;
         let threshold = (judged.null_gains_pct.iter()).fold(f64::NAN, |a, &b| a.max(b));
-        let scheme = Scheme::KFoldRms;
-        let mut gain = TermGain::new(effect, scheme, current.rms, judged.score.rms, threshold);
+        let (now, with) = (scheme.measure(&current), scheme.measure(&judged.score));
+        let mut gain = TermGain::new(effect, scheme, now, with, threshold);
         gain.shape = Some(judged.shape);
         gain.shapes = judged.shapes;
         let mut terms = kept;
@@ -453,12 +418,16 @@ pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection
     let mut term_gains = Vec::new();
     let found = |e: Effect| findings.iter().any(|f| f.effect() == e);
     for &effect in Effect::ALL.iter().filter(|e| found(**e) && p.n >= 2) {
-        let (set, by_density): (fn(&mut ModelTerms), bool) = match effect.rule().term() {
-            Term::Readings(set) => (set, false),
-            Term::Density(set) => (set, true),
+        let shaped = match effect.rule().term() {
+            Term::Readings(set) => Err(set),
             Term::TargetMeans => continue,
-            Term::Shaped(set) => {
-                if let Some((gain, terms, s)) = judge.shaped(effect, kept, current, set) {
+            Term::Shaped(set) => Ok((set, Scheme::KFoldRms)),
+            Term::ShapedDensity(set) => Ok((set, Scheme::KFoldDensity)),
+        };
+        let set = match shaped {
+            Err(set) => set,
+            Ok((set, scheme)) => {
+                if let Some((gain, terms, s)) = judge.shaped(effect, kept, current, set, scheme) {
                     if gain.kept {
                         (kept, current) = (terms, s);
                         effects.push(effect);
@@ -470,11 +439,7 @@ pub(crate) fn select(a: &Analysis, findings: &[Finding], seed: u64) -> Selection
         };
         let mut terms = kept;
         set(&mut terms);
-        let scheme = if by_density {
-            Scheme::KFoldDensity
-        } else {
-            Scheme::KFoldRms
-        };
+        let scheme = Scheme::KFoldRms;
         let measure = |s: &Score| scheme.measure(s);
         let (s, threshold) = match effect.rule().unrelated() {
             Unrelated::SimulatedTests => {

@@ -1,7 +1,7 @@
-//! Judging a term that takes a shape along the axis (the reversal variation, issue 43):
-//! the shape chosen by held-out error among those the plan offers ([`Shape`]), and its
-//! gain compared with the same choice made on tests simulated from the model without the
-//! term.
+//! Judging a term that takes a shape along the axis (the reversal variation and the
+//! scatter variation, issue 43): the shape chosen by held-out error (RMS, or log density
+//! for the scatter) among those the plan offers ([`Shape`]), and its gain compared with
+//! the same choice made on tests simulated from the model without the term.
 //!
 //! Why simulated tests and not the targets in random orders ([`super::confirm`]): one
 //! value per target is the same term in every order of the targets, and with 5 targets a
@@ -23,6 +23,7 @@
 use super::confirm::UNRELATED;
 use super::model_terms::ModelTerms;
 use super::prep::Prep;
+use super::scheme::{Scheme, gain_pct};
 use super::shape::Shape;
 use super::validate::{self, Rows, Score};
 use crate::axis_model::rng::Rng;
@@ -35,6 +36,10 @@ pub struct ShapeScore {
     pub parameters: usize,
     /// Held-out RMS of the readings with the term in this shape.
     pub heldout_rms: f64,
+    /// Their held-out negative log density, nats per reading, where the shape is chosen
+    /// by it (a scatter's term).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heldout_nlpd: Option<f64>,
 }
 
 /// The judgement of a shaped term.
@@ -59,6 +64,8 @@ pub(crate) struct Setup<'a> {
     pub kept: ModelTerms,
     /// Turns the term on in a shape.
     pub set: fn(&mut ModelTerms, Shape),
+    /// What the shapes are scored by: held-out RMS, or log density for a scatter.
+    pub(crate) scheme: Scheme,
 }
 
 impl Setup<'_> {
@@ -77,13 +84,14 @@ impl Setup<'_> {
         validate::variants_scores(self.prep, x, self.fold, self.rows, self.kept, &variants)
     }
 
-    /// The best shape's gain over the model without the term, % of its held-out RMS, and
-    /// its index in `shapes` (a later shape must do strictly better than a simpler one).
+    /// The best shape's gain over the model without the term, % of its held-out RMS (or
+    /// density), and its index in `shapes` (a later shape must do strictly better than a
+    /// simpler one).
     fn best(&self, scores: &[Score]) -> (f64, usize) {
-        let without = scores[0].rms;
+        let without = self.scheme.measure(&scores[0]);
         let mut best = (f64::NEG_INFINITY, 0);
         for (j, s) in scores[1..].iter().enumerate() {
-            let gain = (without - s.rms) / without * 100.0;
+            let gain = gain_pct(self.scheme, without, self.scheme.measure(s));
             if gain > best.0 {
                 best = (gain, j);
             }
@@ -119,6 +127,7 @@ pub(crate) fn judge(setup: &Setup, x: &[f64], seed: u64) -> Option<Shaped> {
                 shape,
                 parameters: shape.parameters(setup.prep.m),
                 heldout_rms: s.rms,
+                heldout_nlpd: (setup.scheme == Scheme::KFoldDensity).then_some(s.nlpd),
             })
             .collect(),
         null_gains_pct,

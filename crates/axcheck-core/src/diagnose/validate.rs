@@ -80,7 +80,14 @@ impl Lines {
         let reversal = reversal_values(&b, along, terms);
         let s2 = time.sigma2();
         let sigma = match (terms.scatter, s2 > 0.0) {
-            (true, true) => match scatter::scale_along(prep, along, &time.residuals, s2, time.df) {
+            (true, true) => match scatter::scale_along(
+                prep,
+                along,
+                &time.residuals,
+                s2,
+                time.df,
+                terms.scatter_shape,
+            ) {
                 Some(rel) => rel.iter().map(|r| r * s2.sqrt()).collect(),
                 None => vec![s2.sqrt(); prep.cells()],
             },

@@ -46,15 +46,16 @@ pub(crate) const WARM_UP_UNTESTED: (&str, &str) = ("warm_up", "untested beside t
 pub(crate) enum Term {
     /// A term of the reading model: the held-out RMS of the readings.
     Readings(fn(&mut ModelTerms)),
-    /// A term of the reading model's scatter: the held-out negative log density (an RMS
-    /// cannot see it).
-    Density(fn(&mut ModelTerms)),
     /// A term of the target means: their leave-targets-out RMS.
     TargetMeans,
     /// A term of the reading model along the axis in a shape ([`super::shape::Shape`]):
     /// the held-out RMS of the readings, the shape chosen by it, compared with tests
     /// simulated without the term ([`super::shaped`]).
     Shaped(fn(&mut ModelTerms, super::shape::Shape)),
+    /// A term of the reading model's scatter along the axis in a shape: the held-out
+    /// negative log density (an RMS cannot see it), the shape chosen by it, compared with tests simulated without
+    /// the term.
+    ShapedDensity(fn(&mut ModelTerms, super::shape::Shape)),
 }
 
 /// One effect of the vocabulary. Its findings come from its own test (each effect's

@@ -4,19 +4,24 @@
 //! Test ([`test()`]): the score test of a log-linear scatter in position on each
 //! cell's residual sum of squares (residuals of the full time model, so that drift or
 //! thermal growth do not pass for scatter), its tail exact for normal readings. Needs
-//! n ≥ 3 and m ≥ 3.
+//! n ≥ 3 and m ≥ 3. The term that confirms it takes the shape the data show (a line of
+//! log σ², a curve, or one σ per target as NMTBA has it), chosen by held-out density
+//! ([`super::super::shaped`]); a scatter that is large at one end in a step is one σ per
+//! target, which a line smooths over.
 
-use super::{Effect, Finding, Rule as EffectRule, Term, Unrelated, WARM_UP_UNTESTED};
+use super::{Effect, Estimate, Finding, Rule as EffectRule, Term, Unrelated, WARM_UP_UNTESTED};
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::detectable::{Detectable, POWER, plan_words};
 use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::imhof;
+use crate::diagnose::maths::linalg::least_squares;
 use crate::diagnose::maths::stats::root_decreasing;
 use crate::diagnose::model::r4;
 use crate::diagnose::options::ALPHA;
 use crate::diagnose::prep::Prep;
+use crate::diagnose::shape::Shape;
 use crate::diagnose::time_fit::TimeFit;
 use crate::measurement::fmt_target;
 
@@ -28,6 +33,10 @@ pub struct ScatterVariation {
     pub end: f64,
     /// end / start.
     pub ratio: f64,
+    /// The shape the held-out prediction chose (None: not judged).
+    pub fitted_shape: Option<Shape>,
+    /// σ per target as measured: (position, σ), deviation unit.
+    pub per_target: Vec<(f64, f64)>,
     /// Beside real run offsets this plan could not test a warm-up, whose course within the
     /// first runs would widen the scatter along the axis as well ([`UNTESTED_WARM_UP`]).
     pub(crate) warm_up_untested: bool,
@@ -42,14 +51,23 @@ const UNTESTED_WARM_UP: &str = "; beside these run offsets this plan cannot test
 impl Fields for ScatterVariation {
     fn params(&self, u: Units) -> Vec<(String, f64)> {
         let du = u.dev();
+        let per_target = (self.per_target.iter().enumerate())
+            .filter(|_| self.fitted_shape == Some(Shape::PerTarget))
+            .map(|(i, (_, sigma))| (format!("scatter_target_{}_{du}", i + 1), *sigma));
         vec![
             (format!("scatter_start_{du}"), self.start),
             (format!("scatter_end_{du}"), self.end),
             ("ratio_end_to_start".into(), self.ratio),
         ]
+        .into_iter()
+        .chain(per_target)
+        .collect()
     }
 
     fn advice(&self, u: Units) -> String {
+        if self.fitted_shape == Some(Shape::PerTarget) {
+            return self.advice_per_target(u);
+        }
         let (worse, ratio) = if self.end >= self.start {
             ("last", self.ratio)
         } else {
@@ -70,10 +88,71 @@ impl Fields for ScatterVariation {
     }
 
     fn labels(&self) -> Vec<(&'static str, &'static str)> {
-        match self.warm_up_untested {
-            true => vec![WARM_UP_UNTESTED],
-            false => Vec::new(),
+        let mut labels = Vec::new();
+        if let Some(shape) = self.fitted_shape.filter(|s| *s != Shape::Line) {
+            labels.push(("fitted_shape", shape.name()));
         }
+        if self.warm_up_untested {
+            labels.push(WARM_UP_UNTESTED);
+        }
+        labels
+    }
+}
+
+impl ScatterVariation {
+    /// The estimate in the shape the held-out prediction chose; in a shape other than a
+    /// line the message lists σ at every target.
+    pub(crate) fn reshape(f: &mut Finding, shape: Shape) {
+        let Estimate::ScatterVariation(s) = &mut f.estimate else {
+            return;
+        };
+        s.fitted_shape = Some(shape);
+        if shape == Shape::Line {
+            return;
+        }
+        let u = f.units;
+        let ds = u.symbol();
+        let listed = (s.per_target.iter())
+            .map(|(p, sigma)| format!("{} {ds} at {}", fmt(*sigma), fmt_target(u.kind, *p)))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let what = match shape {
+            Shape::PerTarget => "from target to target",
+            _ => "along the axis on a curve",
+        };
+        f.message = format!(
+            "the scatter changes {what}: σ ≈ {listed} (z = {}, p = {}){}",
+            fmt(f.evidence.value),
+            fmt_p(f.evidence.p_value.unwrap_or(f64::NAN)),
+            if s.warm_up_untested {
+                UNTESTED_WARM_UP
+            } else {
+                ""
+            }
+        );
+    }
+
+    /// Where the scatter is one value per target: the worst target against the median.
+    fn advice_per_target(&self, u: Units) -> String {
+        let mut sigmas: Vec<f64> = self.per_target.iter().map(|t| t.1).collect();
+        sigmas.sort_by(f64::total_cmp);
+        let median = sigmas[sigmas.len() / 2];
+        let worst = (self.per_target.iter()).fold((f64::NAN, f64::NEG_INFINITY), |w, t| {
+            if t.1 > w.1 { *t } else { w }
+        });
+        let first = if self.warm_up_untested {
+            "re-test the warm machine (ISO 230-2 3.3) before looking for a mechanical cause, since a warm-up this plan could not test would make the scatter vary too; "
+        } else {
+            ""
+        };
+        format!(
+            "{first}the repeatability is worst at {} (σ {} {ds}, {}× the median target's {} {ds}): look for a mechanical cause there (screw support bearing, guideway or its lubrication, scale mounting); no compensation reduces scatter",
+            fmt_target(u.kind, worst.0),
+            fmt(worst.1),
+            fmt(worst.1 / median),
+            fmt(median),
+            ds = u.symbol()
+        )
     }
 }
 
@@ -113,6 +192,11 @@ impl Rule {
                 start: s.sigma_lo,
                 end: s.sigma_hi,
                 ratio,
+                fitted_shape: None,
+                per_target: (p.positions.iter().zip(&s.per_target))
+                    .filter(|(_, sigma)| sigma.is_finite())
+                    .map(|(p, sigma)| (*p, *sigma))
+                    .collect(),
                 warm_up_untested,
             }
             .into(),
@@ -132,17 +216,31 @@ impl Rule {
 }
 
 impl EffectRule for Rule {
+    /// log σ² along the axis on a line (the test's log-linear scatter), a curve, or one
+    /// value per target (NMTBA's scatter per target; Hemingray et al. 1971, §5.1),
+    /// whichever predicts held-out readings' density best.
     fn term(&self) -> Term {
-        Term::Density(|t| t.scatter = true)
+        Term::ShapedDensity(|t, shape| {
+            t.scatter = true;
+            t.scatter_shape = shape;
+        })
     }
 
-    /// A line through the targets: compared with tests simulated without it (on 5
-    /// targets a random order fits as the real one, or its reverse, one time in 60).
+    /// Compared with tests simulated without it, each in its best shape (on 5 targets a
+    /// random order fits a line as the real one, or its reverse, one time in 60, and one
+    /// value per target is the same term in every order).
     fn unrelated(&self) -> Unrelated {
         Unrelated::SimulatedTests
     }
 
-    fn extend(&self, _: &Basis, fit: &Fitted, model: &mut ErrorModel) {
+    /// A line as σ at both ends; another shape as σ at every target.
+    fn extend(&self, a: &Basis, fit: &Fitted, model: &mut ErrorModel) {
+        if let Some(knots) = &fit.scatter_knots {
+            model.scatter_knots = (a.prep.positions.iter().zip(knots))
+                .map(|(p, s)| [*p, r4(*s)])
+                .collect();
+            return;
+        }
         if let Some((lo, hi)) = fit.scatter_ends {
             model.scatter = r4(lo);
             model.scatter_end = Some(r4(hi));
@@ -168,6 +266,8 @@ pub(crate) struct ScatterTest {
     pub(crate) sigma_hi: f64,
     /// Relative scatter per cell (σ(P)/σ̄; mean square 1).
     pub(crate) rel_scale: Vec<f64>,
+    /// σ per target as measured (√(Σ SS / Σ ν) over its cells; NaN without one).
+    pub(crate) per_target: Vec<f64>,
 }
 
 /// The scatter per cell relative to √`sigma2` for the outlier test once a scatter variation
@@ -245,7 +345,16 @@ pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64, df: f64) -> Opti
     let upper = share_above(&sq.cells, &sq.d, share, |_| 1.0, imhof::TOLERANCE);
     let p = (2.0 * upper.min(1.0 - upper)).min(1.0);
     let (sigma_lo, sigma_hi, rel_scale) = sq.scale(prep, &prep.positions, sigma2);
+    let mut own = vec![(0.0, 0.0); prep.m];
+    for c in &sq.cells {
+        own[c.target].0 += c.ss;
+        own[c.target].1 += c.nu;
+    }
+    let per_target = (own.iter())
+        .map(|&(ss, nu)| if nu > 0.0 { (ss / nu).sqrt() } else { f64::NAN })
+        .collect();
     Some(ScatterTest {
+        per_target,
         z,
         p,
         cells: sq.cells.len(),
@@ -256,16 +365,127 @@ pub(crate) fn test(prep: &Prep, residuals: &[f64], sigma2: f64, df: f64) -> Opti
 }
 
 /// The fitted scatter per cell relative to √`sigma2` with the scatter along the targets
-/// at `along` (one per target): what the held-out model with the term predicts with.
+/// at `along` (one per target) in `shape`: what the held-out model with the term
+/// predicts with.
 pub(crate) fn scale_along(
     prep: &Prep,
     along: &[f64],
     residuals: &[f64],
     sigma2: f64,
     df: f64,
+    shape: Shape,
 ) -> Option<Vec<f64>> {
     let sq = Squares::along(prep, along, residuals, sigma2, df)?;
-    Some(sq.scale(prep, along, sigma2).2)
+    match shape {
+        Shape::Line => Some(sq.scale(prep, along, sigma2).2),
+        _ => Some(relative(&log_in_shape(&sq.cells, prep.m, shape))),
+    }
+}
+
+/// The fitted σ per target in `shape` from the `residuals` of a fit with pooled variance
+/// `sigma2` on `df` degrees of freedom: the scale of the held-out model with the term, at
+/// the targets (the extended model's scatter knots). None where the test cannot be made.
+pub(crate) fn sigma_per_target(
+    prep: &Prep,
+    residuals: &[f64],
+    sigma2: f64,
+    df: f64,
+    shape: Shape,
+) -> Option<Vec<f64>> {
+    let sq = Squares::along(prep, &prep.positions, residuals, sigma2, df)?;
+    let rel = match shape {
+        Shape::Line => sq.scale(prep, &prep.positions, sigma2).2,
+        _ => relative(&log_in_shape(&sq.cells, prep.m, shape)),
+    };
+    Some((0..prep.m).map(|i| rel[2 * i] * sigma2.sqrt()).collect())
+}
+
+/// σ per cell relative to the root mean square over the cells (mean square 1), from
+/// log σ² per target.
+fn relative(log_var: &[f64]) -> Vec<f64> {
+    let cells = 2 * log_var.len();
+    let var = |c: usize| libm::exp(log_var[c / 2]);
+    let mean = (0..cells).map(var).sum::<f64>() / cells as f64;
+    (0..cells).map(|c| (var(c) / mean).sqrt()).collect()
+}
+
+/// log σ² per target of `m` in a shape beyond the log-linear one: one value per target
+/// (the maximum-likelihood σ² of its cells, Σ SS / Σ ν; a target without one gets the
+/// mean of the others' logs), or a quadratic in position fitted by Fisher scoring as
+/// [`log_linear`] is.
+fn log_in_shape(cells: &[CellSquares], m: usize, shape: Shape) -> Vec<f64> {
+    let mut per = vec![(0.0, 0.0); m];
+    for c in cells {
+        per[c.target].0 += c.ss;
+        per[c.target].1 += c.nu;
+    }
+    let own: Vec<f64> = per
+        .iter()
+        .map(|&(ss, nu)| {
+            if nu > 0.0 && ss > 0.0 {
+                libm::log(ss / nu)
+            } else {
+                f64::NAN
+            }
+        })
+        .collect();
+    if shape == Shape::PerTarget {
+        let known: Vec<f64> = own.iter().copied().filter(|v| v.is_finite()).collect();
+        let mean = known.iter().sum::<f64>() / known.len().max(1) as f64;
+        return own
+            .iter()
+            .map(|v| if v.is_finite() { *v } else { mean })
+            .collect();
+    }
+    let z_of: Vec<f64> = (0..m)
+        .map(|i| {
+            cells
+                .iter()
+                .find(|c| c.target == i)
+                .map_or(f64::NAN, |c| c.z)
+        })
+        .collect();
+    let coef = log_quadratic(cells);
+    z_of.iter()
+        .zip(&own)
+        .map(|(z, o)| match z.is_finite() {
+            true => coef[0] + coef[1] * z + coef[2] * z * z,
+            false => *o,
+        })
+        .collect()
+}
+
+/// The maximum-likelihood log σ²(z) = c₀ + c₁z + c₂z² from the cells' squares: Fisher
+/// scoring of the gamma GLM with a log link (McCullagh & Nelder 1989, §8.3), weights ν,
+/// the linear predictor kept within a factor 10⁶ of the pooled variance.
+fn log_quadratic(cells: &[CellSquares]) -> [f64; 3] {
+    let nu: f64 = cells.iter().map(|c| c.nu).sum();
+    let pooled = libm::log(cells.iter().map(|c| c.ss).sum::<f64>() / nu);
+    let limit = libm::log(1e6);
+    let mut coef = [pooled, 0.0, 0.0];
+    for _ in 0..50 {
+        let eta = |z: f64| {
+            (coef[0] + coef[1] * z + coef[2] * z * z).clamp(pooled - limit, pooled + limit)
+        };
+        let w: Vec<f64> = cells.iter().map(|c| c.nu.sqrt()).collect();
+        let cols: Vec<Vec<f64>> = (0..3)
+            .map(|d| cells.iter().zip(&w).map(|(c, w)| w * c.z.powi(d)).collect())
+            .collect();
+        let y: Vec<f64> = (cells.iter().zip(&w))
+            .map(|(c, w)| {
+                let e = eta(c.z);
+                w * (e + (c.ss / c.nu) / libm::exp(e) - 1.0)
+            })
+            .collect();
+        let fit = least_squares(&cols, &y);
+        let next = [fit.coef[0], fit.coef[1], fit.coef[2]];
+        let done = (0..3).all(|d| (next[d] - coef[d]).abs() < 1e-10 * (1.0 + coef[d].abs()));
+        coef = next;
+        if done {
+            break;
+        }
+    }
+    coef
 }
 
 /// The cells' squares the test and the fit read, with z − z̄ and the information of b.
@@ -321,6 +541,8 @@ impl Squares {
 /// One cell's squares: its position about P̄, the sum of its squared residuals and its
 /// share ν of the residual degrees of freedom.
 struct CellSquares {
+    /// The cell's target.
+    target: usize,
     z: f64,
     ss: f64,
     nu: f64,
@@ -344,6 +566,7 @@ fn cell_squares(prep: &Prep, along: &[f64], residuals: &[f64], df: f64) -> Vec<C
     (0..prep.cells())
         .filter(|&c| count[c] >= 2)
         .map(|c| CellSquares {
+            target: c / 2,
             z: along[c / 2] - prep.pbar,
             ss: ss[c],
             nu: (count[c] - 1) as f64 * share,
@@ -542,6 +765,50 @@ mod tests {
     use crate::diagnose::time_fit::{Terms, fit};
     use crate::measurement::{AxisData, RawReading};
     use crate::units::{AxisKind, Direction};
+
+    fn cell(target: usize, z: f64, ss: f64, nu: f64) -> CellSquares {
+        CellSquares { target, z, ss, nu }
+    }
+
+    /// One σ per target is the maximum-likelihood σ² of its cells, Σ SS / Σ ν; a target
+    /// without cells takes the mean of the others' logs.
+    #[test]
+    fn per_target_is_each_targets_pooled_variance() {
+        let cells = [
+            cell(0, -1.0, 2.0, 2.0),
+            cell(0, -1.0, 6.0, 2.0),
+            cell(2, 1.0, 9.0, 1.0),
+        ];
+        let got = log_in_shape(&cells, 3, Shape::PerTarget);
+        let want = [libm::log(8.0 / 4.0), 0.0, libm::log(9.0)];
+        assert!((got[0] - want[0]).abs() < 1e-15 && (got[2] - want[2]).abs() < 1e-15);
+        assert!(
+            (got[1] - (want[0] + want[2]) / 2.0).abs() < 1e-15,
+            "{got:?}"
+        );
+        // Relative σ per cell: mean square 1.
+        let rel = relative(&got);
+        let ms = rel.iter().map(|r| r * r).sum::<f64>() / rel.len() as f64;
+        assert!((ms - 1.0).abs() < 1e-12, "{rel:?}");
+    }
+
+    /// Squares that lie on a log-quadratic exactly are its maximum-likelihood fit.
+    #[test]
+    fn a_log_quadratic_is_recovered() {
+        let q = |z: f64| 0.3 - 0.8 * z + 1.1 * z * z;
+        let cells: Vec<CellSquares> = (0..7)
+            .map(|i| {
+                let z = -1.5 + 0.5 * i as f64;
+                cell(i, z, 3.0 * libm::exp(q(z)), 3.0)
+            })
+            .collect();
+        let c = log_quadratic(&cells);
+        for (got, want) in c.iter().zip([0.3, -0.8, 1.1]) {
+            assert!((got - want).abs() < 1e-9, "{c:?}");
+        }
+        let curve = log_in_shape(&cells, 7, Shape::Curve);
+        assert!((curve[6] - q(1.5)).abs() < 1e-9, "{curve:?}");
+    }
 
     /// 5 targets, 3 runs under the standard cycle, a reading every 30 s.
     fn plan() -> AxisData {
