@@ -111,6 +111,21 @@ pub(crate) fn keyed<K: Serialize, V: Serialize>(pairs: Vec<(K, V)>) -> impl Seri
     Keyed(pairs)
 }
 
+/// Values at their targets as a finding lists them: `1.24 µm at 20 mm, 4.37 µm at 120 mm`.
+pub(crate) fn per_target_list(values: &[(f64, f64)], u: Units) -> String {
+    let ds = u.symbol();
+    (values.iter())
+        .map(|(p, v)| {
+            format!(
+                "{} {ds} at {}",
+                fmt(*v),
+                crate::measurement::fmt_target(u.kind, *p)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// A number in a message: more decimals for small values, `n/a` when not finite.
 pub(crate) fn fmt(v: f64) -> String {
     if v.is_finite() {

@@ -38,6 +38,15 @@ impl Shape {
         }
     }
 
+    /// How a value in this shape changes, in a finding's words.
+    pub(crate) fn changes(self) -> &'static str {
+        match self {
+            Shape::Line => "along the axis",
+            Shape::Curve => "along the axis on a curve",
+            Shape::PerTarget => "from target to target",
+        }
+    }
+
     /// Parameters of the shape over `m` targets.
     pub fn parameters(self, m: usize) -> usize {
         match self {

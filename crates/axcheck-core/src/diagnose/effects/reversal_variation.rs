@@ -17,7 +17,7 @@ use super::{Effect, Estimate, Finding, Rule as EffectRule, Term, Unrelated, WARM
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::detectable::{Detectable, plan_words, t_shift, with_unit};
-use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, relative};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, per_target_list, relative};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::linalg::least_squares;
 use crate::diagnose::maths::stats::{f_upper, t_two_sided};
@@ -81,19 +81,12 @@ impl ReversalVariation {
         if shape == Shape::Line {
             return;
         }
-        let u = f.units;
-        let ds = u.symbol();
-        let listed = (r.per_target.iter())
-            .map(|(p, b)| format!("{} {ds} at {}", fmt(*b), fmt_target(u.kind, *p)))
-            .collect::<Vec<_>>()
-            .join(", ");
-        let what = match shape {
-            Shape::PerTarget => "from target to target",
-            _ => "along the axis on a curve",
-        };
         f.message = format!(
-            "the reversal value changes {what}, range {} {ds}: Bi = {listed} (p = {}){}",
+            "the reversal value changes {}, range {} {}: Bi = {} (p = {}){}",
+            shape.changes(),
             fmt(r.range),
+            f.units.symbol(),
+            per_target_list(&r.per_target, f.units),
             fmt_p(f.evidence.p_value.unwrap_or(f64::NAN)),
             untested_words(r.warm_up_untested)
         );

@@ -13,7 +13,7 @@ use super::{Effect, Estimate, Finding, Rule as EffectRule, Term, Unrelated, WARM
 use crate::axis_model::ErrorModel;
 use crate::diagnose::basis::Basis;
 use crate::diagnose::detectable::{Detectable, POWER, plan_words};
-use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p};
+use crate::diagnose::finding::{Evidence, Fields, Units, fmt, fmt_p, per_target_list};
 use crate::diagnose::fitted::Fitted;
 use crate::diagnose::maths::imhof;
 use crate::diagnose::maths::linalg::least_squares;
@@ -110,18 +110,10 @@ impl ScatterVariation {
         if shape == Shape::Line {
             return;
         }
-        let u = f.units;
-        let ds = u.symbol();
-        let listed = (s.per_target.iter())
-            .map(|(p, sigma)| format!("{} {ds} at {}", fmt(*sigma), fmt_target(u.kind, *p)))
-            .collect::<Vec<_>>()
-            .join(", ");
-        let what = match shape {
-            Shape::PerTarget => "from target to target",
-            _ => "along the axis on a curve",
-        };
         f.message = format!(
-            "the scatter changes {what}: σ ≈ {listed} (z = {}, p = {}){}",
+            "the scatter changes {}: σ ≈ {} (z = {}, p = {}){}",
+            shape.changes(),
+            per_target_list(&s.per_target, f.units),
             fmt(f.evidence.value),
             fmt_p(f.evidence.p_value.unwrap_or(f64::NAN)),
             if s.warm_up_untested {
