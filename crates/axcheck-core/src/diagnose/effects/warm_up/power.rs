@@ -90,11 +90,14 @@ fn level_squared(df: f64, path: f64, alpha: f64, energy: f64, left: f64) -> f64 
 pub(crate) fn detectable(p: &Prep, u: Units, warm: Option<&WarmTest>) -> Detectable {
     let measure = format!("amplitude_{}", u.dev());
     let Some(s) = warm.and_then(|w| w.smallest) else {
-        return Detectable::untestable(
-            Effect::WarmUp,
-            measure,
-            "a warm-up needs at least two runs and readings left beyond the time model",
-        );
+        // Tested, yet no level reaches the power: free run offsets would take it.
+        let why = match warm {
+            Some(_) => {
+                "no warm-up reaches the power of its test: run offsets would take its part between the runs, and what is left within the runs is too little to tell (more runs would, or a re-test of the warm machine)"
+            }
+            None => "a warm-up needs at least two runs and readings left beyond the time model",
+        };
+        return Detectable::untestable(Effect::WarmUp, measure, why);
     };
     let advice = format!(
         "{} over {} a warm-up under {} (reached with a time constant of a quarter of the test) may go unconfirmed",
