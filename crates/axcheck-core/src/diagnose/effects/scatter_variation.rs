@@ -65,25 +65,17 @@ impl Fields for ScatterVariation {
     }
 
     fn advice(&self, u: Units) -> String {
-        if self.fitted_shape == Some(Shape::PerTarget) {
-            return self.advice_per_target(u);
-        }
-        let (worse, ratio) = if self.end >= self.start {
-            ("last", self.ratio)
-        } else {
-            ("first", 1.0 / self.ratio)
-        };
         let first = if self.warm_up_untested {
             "re-test the warm machine (ISO 230-2 3.3) before looking for a mechanical cause, since a warm-up this plan could not test would make the scatter vary too; "
         } else {
             ""
         };
+        let per_target = (self.fitted_shape == Some(Shape::PerTarget))
+            .then(|| self.worst_target(u))
+            .flatten();
         format!(
-            "{first}the repeatability is {}× worse towards the {worse} target (σ {} → {} {}): look for a mechanical cause there (screw support bearing, guideway or its lubrication, scale mounting); no compensation reduces scatter",
-            fmt(ratio),
-            fmt(self.start),
-            fmt(self.end),
-            u.symbol()
+            "{first}{}: look for a mechanical cause there (screw support bearing, guideway or its lubrication, scale mounting); no compensation reduces scatter",
+            per_target.unwrap_or_else(|| self.towards_an_end(u))
         )
     }
 
@@ -116,35 +108,51 @@ impl ScatterVariation {
             per_target_list(&s.per_target, f.units),
             fmt(f.evidence.value),
             fmt_p(f.evidence.p_value.unwrap_or(f64::NAN)),
-            if s.warm_up_untested {
-                UNTESTED_WARM_UP
-            } else {
-                ""
-            }
+            untested_words(s.warm_up_untested)
         );
     }
 
-    /// Where the scatter is one value per target: the worst target against the median.
-    fn advice_per_target(&self, u: Units) -> String {
+    /// Where the scatter is one value per target: the worst target against the median
+    /// (None without a value).
+    fn worst_target(&self, u: Units) -> Option<String> {
         let mut sigmas: Vec<f64> = self.per_target.iter().map(|t| t.1).collect();
         sigmas.sort_by(f64::total_cmp);
-        let median = sigmas[sigmas.len() / 2];
+        let median = *sigmas.get(sigmas.len() / 2)?;
         let worst = (self.per_target.iter()).fold((f64::NAN, f64::NEG_INFINITY), |w, t| {
             if t.1 > w.1 { *t } else { w }
         });
-        let first = if self.warm_up_untested {
-            "re-test the warm machine (ISO 230-2 3.3) before looking for a mechanical cause, since a warm-up this plan could not test would make the scatter vary too; "
-        } else {
-            ""
-        };
-        format!(
-            "{first}the repeatability is worst at {} (σ {} {ds}, {}× the median target's {} {ds}): look for a mechanical cause there (screw support bearing, guideway or its lubrication, scale mounting); no compensation reduces scatter",
+        Some(format!(
+            "the repeatability is worst at {} (σ {} {ds}, {}× the median target's {} {ds})",
             fmt_target(u.kind, worst.0),
             fmt(worst.1),
             fmt(worst.1 / median),
             fmt(median),
             ds = u.symbol()
+        ))
+    }
+
+    /// Where the scatter changes along a line or a curve: towards which end, how much.
+    fn towards_an_end(&self, u: Units) -> String {
+        let (worse, ratio) = if self.end >= self.start {
+            ("last", self.ratio)
+        } else {
+            ("first", 1.0 / self.ratio)
+        };
+        format!(
+            "the repeatability is {}× worse towards the {worse} target (σ {} → {} {})",
+            fmt(ratio),
+            fmt(self.start),
+            fmt(self.end),
+            u.symbol()
         )
+    }
+}
+
+/// [`UNTESTED_WARM_UP`] where the plan could not test the warm-up, else nothing.
+fn untested_words(warm_up_untested: bool) -> &'static str {
+    match warm_up_untested {
+        true => UNTESTED_WARM_UP,
+        false => "",
     }
 }
 
@@ -173,11 +181,7 @@ impl Rule {
             fmt_target(u.kind, p.hi),
             fmt(s.z),
             fmt_p(s.p),
-            if warm_up_untested {
-                UNTESTED_WARM_UP
-            } else {
-                ""
-            }
+            untested_words(warm_up_untested)
         );
         vec![Finding {
             estimate: ScatterVariation {
