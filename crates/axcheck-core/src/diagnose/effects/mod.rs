@@ -23,6 +23,8 @@ pub mod periodic;
 pub mod reversal_variation;
 pub mod run_offset;
 pub mod scatter_variation;
+#[cfg(test)]
+pub(crate) mod testing;
 pub mod thermal_growth;
 pub mod warm_up;
 

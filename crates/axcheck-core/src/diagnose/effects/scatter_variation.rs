@@ -757,10 +757,10 @@ fn expected_squares(p: &Prep, fit: &TimeFit, variance: impl Fn(f64) -> f64) -> V
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diagnose::effects::testing::standard_cycle;
     use crate::diagnose::maths::linalg::least_squares;
     use crate::diagnose::time_fit::{Terms, fit};
-    use crate::measurement::{AxisData, RawReading};
-    use crate::units::{AxisKind, Direction};
+    use crate::measurement::AxisData;
 
     fn cell(target: usize, z: f64, ss: f64, nu: f64) -> CellSquares {
         CellSquares { target, z, ss, nu }
@@ -809,25 +809,7 @@ mod tests {
     /// 5 targets, 3 runs under the standard cycle, a reading every 30 s.
     fn plan() -> AxisData {
         let targets: Vec<f64> = (0..5).map(|i| 100.0 * i as f64).collect();
-        let mut raw = Vec::new();
-        let mut k = 0.0;
-        for run in 1..=3 {
-            let up = targets.iter().map(|&p| (p, Direction::Up));
-            let down = targets.iter().rev().map(|&p| (p, Direction::Down));
-            for (p, direction) in up.chain(down) {
-                raw.push(RawReading {
-                    target: p,
-                    direction,
-                    run,
-                    deviation: 0.0,
-                    time_s: Some(30.0 * k),
-                    temps_c: Vec::new(),
-                    line: 0,
-                });
-                k += 1.0;
-            }
-        }
-        AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "plan").unwrap()
+        standard_cycle(&targets, 3, (0.0, 30.0), |_, _, _| 0.0)
     }
 
     /// The expected squares against the hat matrix of the whole design (cell indicators

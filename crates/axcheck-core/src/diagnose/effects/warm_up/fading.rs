@@ -184,33 +184,15 @@ pub(crate) fn note(found: &Finding, f: &Fading) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::measurement::{AxisData, RawReading};
-    use crate::units::{AxisKind, Direction};
+    use crate::diagnose::effects::testing::standard_cycle;
 
     /// A noiseless test in the standard cycle on targets 0, 100 and 200 mm, four runs, one
     /// reading every 40 s: `reversal(target)` split between ↑ and ↓, plus `w(minutes)`.
     fn cycle(reversal: impl Fn(f64) -> f64, w: impl Fn(f64) -> f64) -> Prep {
-        let targets = [0.0, 100.0, 200.0];
-        let mut raw = Vec::new();
-        let mut k = 0.0;
-        for run in 1..=4 {
-            let up = targets.iter().map(|&p| (p, Direction::Up));
-            let down = targets.iter().rev().map(|&p| (p, Direction::Down));
-            for (p, direction) in up.chain(down) {
-                let time_s = 40.0 * k;
-                k += 1.0;
-                raw.push(RawReading {
-                    target: p,
-                    direction,
-                    run,
-                    deviation: direction.sign() * reversal(p) / 2.0 + w(time_s / 60.0),
-                    time_s: Some(time_s),
-                    temps_c: Vec::new(),
-                    line: 0,
-                });
-            }
-        }
-        Prep::new(&AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "cycle").unwrap())
+        let data = standard_cycle(&[0.0, 100.0, 200.0], 4, (0.0, 40.0), |p, d, time_s| {
+            d.sign() * reversal(p) / 2.0 + w(time_s / 60.0)
+        });
+        Prep::new(&data)
     }
 
     fn fading(p: &Prep) -> Fading {

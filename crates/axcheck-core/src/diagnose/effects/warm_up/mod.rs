@@ -700,33 +700,16 @@ fn profiled(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::measurement::{AxisData, RawReading};
-    use crate::units::{AxisKind, Direction};
+    use crate::diagnose::effects::testing::standard_cycle;
+    use crate::measurement::AxisData;
 
     /// A noiseless test in the standard cycle, one reading every 40 s: cell effects (a
     /// shape and a reversal) plus `warm(position, time_s)`.
     fn noiseless(targets: &[f64], runs: u32, warm: impl Fn(f64, f64) -> f64) -> AxisData {
-        let mut raw = Vec::new();
-        let mut k = 0.0;
-        for run in 1..=runs {
-            let up = targets.iter().map(|&p| (p, Direction::Up));
-            let down = targets.iter().rev().map(|&p| (p, Direction::Down));
-            for (p, direction) in up.chain(down) {
-                let time_s = 12.0 + 40.0 * k;
-                k += 1.0;
-                let cell = 0.003 * p * p - 0.5 * p + direction.sign() * 1.5;
-                raw.push(RawReading {
-                    target: p,
-                    direction,
-                    run,
-                    deviation: cell + warm(p, time_s),
-                    time_s: Some(time_s),
-                    temps_c: Vec::new(),
-                    line: 0,
-                });
-            }
-        }
-        AxisData::from_raw(AxisKind::Linear, raw, Vec::new(), "noiseless").unwrap()
+        standard_cycle(targets, runs, (12.0, 40.0), |p, direction, time_s| {
+            let cell = 0.003 * p * p - 0.5 * p + direction.sign() * 1.5;
+            cell + warm(p, time_s)
+        })
     }
 
     /// By hand: A(1 − e^(−t/τ)) with τ = 9 min from t = 0, the first reading at 12 s,
